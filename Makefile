@@ -1,0 +1,45 @@
+# Entry points of the Tianracer simulation. See README.md.
+#   make sim    install what is missing, build, start the simulation
+#   make test   install what is missing, build, run the whole test suite
+SHELL := /bin/bash
+.DEFAULT_GOAL := help
+
+# Debian's interpreter: rospy and the other ROS 1 Python packages live there, not in the first
+# python3 on PATH.
+PYTHON := /usr/bin/python3
+# The catkin workspace lives in this ignored folder; its src/ links this package and compat/*.
+WS := .ws
+COMPAT_PACKAGES := $(notdir $(wildcard compat/*))
+# Everything ROS runs on loopback only.
+ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
+PYTEST_ARGS ?=
+
+.PHONY: help setup build test sim clean
+
+help:
+	@echo "make sim    install what is missing, build, start the simulation"
+	@echo "make test   install what is missing, build, run the whole test suite (PYTEST_ARGS=...)"
+	@echo "make setup  install what is missing (apt and pip); quiet when nothing is"
+	@echo "make build  build the catkin workspace in $(WS)/"
+	@echo "make clean  remove $(WS)/"
+
+setup:
+	@bash tools/setup.sh
+
+build: setup
+	@mkdir -p $(WS)/src
+	@ln -sfn ../.. $(WS)/src/tianracer_description
+	@for pkg in $(COMPAT_PACKAGES); do ln -sfn ../../compat/$$pkg $(WS)/src/$$pkg; done
+	@find $(WS)/src -maxdepth 1 -xtype l -delete
+	@cd $(WS) && catkin_make -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release \
+		> build.log 2>&1 || { tail -n 60 build.log; echo "make build: catkin_make failed; full log in $(WS)/build.log"; exit 1; }
+	@echo "built $(WS): source $(WS)/devel/setup.bash"
+
+test: build
+	@$(ROS_ENV) $(PYTHON) -m pytest $(PYTEST_ARGS)
+
+sim: build
+	@$(ROS_ENV) bash tools/sim.sh
+
+clean:
+	rm -rf $(WS)

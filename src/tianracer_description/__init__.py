@@ -1,0 +1,1 @@
+"""Python side of the Tianracer simulation: helpers the ROS scripts and tests import."""

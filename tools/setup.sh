@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Installs what the project needs and is missing: Debian's ROS 1 packages and build tools from apt,
+# xacro from PyPI for Debian's /usr/bin/python3. Idempotent; prints nothing when all is there.
+set -euo pipefail
+
+APT_PACKAGES=(
+  # build
+  g++ make cmake catkin python3-catkin-pkg python3-setuptools
+  ros-message-generation ros-message-runtime python3-genmsg python3-genpy python3-gencpp
+  # ROS 1 core: client libraries and the command-line tools the tutorial uses
+  libroscpp-dev python3-rospy python3-rospkg rospack-tools rosbash
+  python3-roslaunch python3-rosmaster python3-rosnode python3-rostopic python3-rosservice
+  python3-rosparam ros-robot-state-publisher
+  # messages: definitions (for catkin), C++ headers, Python modules
+  ros-std-msgs libstd-msgs-dev python3-std-msgs
+  ros-std-srvs libstd-srvs-dev python3-std-srvs
+  ros-sensor-msgs libsensor-msgs-dev python3-sensor-msgs
+  ros-geometry-msgs libgeometry-msgs-dev python3-geometry-msgs
+  ros-nav-msgs libnav-msgs-dev python3-nav-msgs
+  ros-rosgraph-msgs libros-rosgraph-msgs-dev python3-rosgraph-msgs
+  ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs
+  # the plant: physics, URDF parsing, XML, Python bindings
+  libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev
+  pybind11-dev python3-dev
+  # Python for nodes and tests
+  python3-numpy python3-yaml python3-pytest python3-pip
+)
+# xacro from PyPI (Debian has no xacro); compat/xacro runs it with rospack's $(find).
+PIP_PACKAGES=(xacro==2.1.1)
+PY=/usr/bin/python3
+
+SUDO=
+[ "$(id -u)" -eq 0 ] || SUDO=sudo
+
+missing=()
+for pkg in "${APT_PACKAGES[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Abbrev}' "$pkg" 2>/dev/null || true)
+  [ "${status:0:2}" = "ii" ] || missing+=("$pkg")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing from apt: ${missing[*]}"
+  $SUDO apt-get update -qq
+  $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+missing=()
+for req in "${PIP_PACKAGES[@]}"; do
+  name=${req%%[=<>]*}
+  installed=$($PY -c "import importlib.metadata as m; print(m.version('$name'))" 2>/dev/null || true)
+  [ "$req" = "$name" ] && [ -n "$installed" ] && continue
+  [ "$req" = "$name==$installed" ] || missing+=("$req")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing from PyPI for $PY: ${missing[*]}"
+  # Debian marks its Python as externally managed; these go to /usr/local, beside nothing of Debian's.
+  $SUDO $PY -m pip install -q --root-user-action=ignore --break-system-packages "${missing[@]}"
+fi
