@@ -20,7 +20,8 @@ APT_PACKAGES=(
   ros-rosgraph-msgs libros-rosgraph-msgs-dev python3-rosgraph-msgs
   ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs
   # the plant: physics, URDF parsing, XML, Python bindings
-  libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev
+  libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev libtinyxml-dev
+  libconsole-bridge-dev
   pybind11-dev python3-dev
   # Python for nodes and tests
   python3-numpy python3-yaml python3-pytest python3-pip

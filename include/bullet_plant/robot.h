@@ -1,0 +1,69 @@
+// A robot in the world: a Bullet multibody built from URDF, its gazebo_ros_control joint layer and
+// its sensors. Created by World::spawn.
+#pragma once
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bullet_plant/joint_layer.h"
+#include "bullet_plant/robot_description.h"
+#include "bullet_plant/sensors.h"
+
+namespace bullet_plant
+{
+class World;
+
+struct Twist
+{
+  std::array<double, 3> linear{{0, 0, 0}};   // m/s
+  std::array<double, 3> angular{{0, 0, 0}};  // rad/s
+};
+
+class Robot
+{
+public:
+  ~Robot();
+  Robot(const Robot&) = delete;
+  Robot& operator=(const Robot&) = delete;
+
+  const std::string& name() const;
+  // The gazebo_ros_control namespace: the plugin's robotNamespace, else the spawn namespace.
+  const std::string& controlNamespace() const;
+  const RobotDescription& description() const;
+
+  // gazebo_ros_control's joint handles, in transmission order.
+  std::vector<JointHandle>& handles();
+  JointHandle* handle(const std::string& joint);
+
+  // Every movable joint of the URDF (transmitted or not), in URDF order, and its state.
+  std::vector<std::string> jointNames() const;
+  bool jointState(const std::string& joint, double& position, double& velocity, double& effort) const;
+
+  // Pose of the URDF root link in the world, and the twist of its origin (world frame).
+  urdf::Pose basePose() const;
+  Twist baseTwist() const;
+  urdf::Pose linkPose(const std::string& link) const;  // throws std::out_of_range for an unknown link
+
+  // gazebo_ros_control's e-stop: while on, efforts are 0 and velocity commands 0.
+  void setEStop(bool on);
+  bool eStop() const;
+
+  std::vector<Lidar*> lidars();
+  Sensor* sensor(const std::string& name);
+
+  // Steps where the physics produced a non-finite state and the robot was put back to its last
+  // good state (the world keeps running).
+  long recoveries() const;
+
+  struct Internals;  // the plant's side, private to the library
+
+private:
+  friend class World;
+  explicit Robot(std::unique_ptr<Internals> internals);
+  std::unique_ptr<Internals> in_;
+};
+
+}  // namespace bullet_plant

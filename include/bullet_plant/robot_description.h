@@ -1,0 +1,94 @@
+// A robot as gazebo_ros reads it from URDF: urdfdom's kinematic tree plus the Gazebo extensions
+// (<gazebo reference> surface tags and sensors, the gazebo_ros_control plugin block) and the
+// <transmission> elements that gazebo_ros_control turns into joint handles.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <urdf_model/model.h>
+#include <urdf_world/types.h>
+
+namespace bullet_plant
+{
+// Thrown for input that cannot describe a robot or world; the message names the offending thing.
+class DescriptionError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Noise
+{
+  bool gaussian = false;
+  double mean = 0.0;
+  double stddev = 0.0;
+};
+
+// One <sensor> inside <gazebo reference="LINK">, with the plugin parameters gazebo_ros reads.
+struct SensorDescription
+{
+  std::string name;
+  std::string type;  // "ray", "gpu_ray", "camera", "depth"
+  std::string link;
+  urdf::Pose pose;   // in the link frame (<pose>)
+  double update_rate = 0.0;  // Hz; 0 = every physics step
+  // ray
+  int horizontal_samples = 1;
+  double horizontal_min_angle = 0.0, horizontal_max_angle = 0.0;
+  int vertical_samples = 1;
+  double vertical_min_angle = 0.0, vertical_max_angle = 0.0;
+  double range_min = 0.0, range_max = 0.0, range_resolution = 0.0;
+  // camera and depth
+  double horizontal_fov = 0.0;
+  int image_width = 0, image_height = 0;
+  std::string image_format;
+  double clip_near = 0.0, clip_far = 0.0;
+  Noise noise;
+  // the plugin block: filename and its child elements as text (topicName, frameName, cameraName, ...)
+  std::string plugin_name, plugin_filename;
+  std::map<std::string, std::string> plugin;
+  std::string pluginParam(const std::string& key, const std::string& fallback = "") const;
+};
+
+struct SurfaceDescription
+{
+  double mu1 = 1.0, mu2 = 1.0;  // Gazebo's defaults
+  double kp = 0.0, kd = 0.0;    // 0: not given
+  bool given = false;
+};
+
+struct TransmissionDescription
+{
+  std::string name;
+  std::string joint;
+  std::string hardware_interface;  // normalised to "hardware_interface/XJointInterface"
+};
+
+// The <gazebo><plugin filename="libgazebo_ros_control.so"> block.
+struct ControlPluginDescription
+{
+  bool present = false;
+  std::string robot_namespace;    // empty: use the spawn namespace
+  std::string robot_param = "robot_description";
+  double control_period = 0.0;    // s; 0: the physics step
+  std::string e_stop_topic;
+};
+
+struct RobotDescription
+{
+  urdf::ModelInterfaceSharedPtr model;
+  ControlPluginDescription control;
+  std::vector<TransmissionDescription> transmissions;
+  std::map<std::string, SurfaceDescription> surfaces;  // by link
+  std::vector<SensorDescription> sensors;
+  std::vector<std::string> warnings;                   // things read but not fully supported
+};
+
+// Parses URDF text. Throws DescriptionError with the parser's message for malformed input.
+RobotDescription parseRobotDescription(const std::string& urdf_xml);
+
+}  // namespace bullet_plant

@@ -1,0 +1,70 @@
+// Sensors built from the URDF's <gazebo reference> blocks. They do their work only while active
+// (someone subscribes), at their own update rate in simulated time.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bullet_plant/robot_description.h"
+
+namespace bullet_plant
+{
+namespace detail
+{
+struct SensorUpdate;  // fills sensors' outputs (robot.cpp)
+}
+
+// sensor_msgs/LaserScan's fields. Ranges follow REP 117: +inf where nothing is hit within
+// range_max, -inf where a hit is closer than range_min.
+struct LaserScan
+{
+  int64_t stamp_ns = 0;
+  std::string frame_id;
+  float angle_min = 0, angle_max = 0, angle_increment = 0;
+  float time_increment = 0, scan_time = 0;
+  float range_min = 0, range_max = 0;
+  int vertical_samples = 1;  // rows of `ranges` (1 for a planar lidar)
+  std::vector<float> ranges;
+};
+
+class Sensor
+{
+public:
+  explicit Sensor(const SensorDescription& d);
+  virtual ~Sensor() = default;
+  const SensorDescription& description() const { return description_; }
+  const std::string& name() const { return description_.name; }
+  // Topic and frame as the gazebo_ros plugin would publish them (topic relative to the robot namespace).
+  virtual std::string topic() const = 0;
+  std::string frameId() const;
+
+  void setActive(bool active) { active_ = active; }
+  bool active() const { return active_; }
+  uint64_t updates() const { return updates_; }
+  int64_t periodNs() const { return period_ns_; }
+  // True when an update is due at this simulated time (and marks it done).
+  bool due(int64_t time_ns);
+
+protected:
+  SensorDescription description_;
+  bool active_ = false;
+  uint64_t updates_ = 0;
+  int64_t period_ns_ = 0;
+  int64_t last_update_ns_ = -1;
+};
+
+class Lidar : public Sensor
+{
+public:
+  explicit Lidar(const SensorDescription& d);
+  std::string topic() const override { return description_.pluginParam("topicName", "scan"); }
+  bool hasScan() const { return updates_ > 0; }
+  const LaserScan& latest() const { return scan_; }
+
+private:
+  friend struct detail::SensorUpdate;
+  LaserScan scan_;
+};
+
+}  // namespace bullet_plant

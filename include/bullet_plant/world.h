@@ -1,0 +1,63 @@
+// The simulated world: static scene from SDF, robots from URDF, fixed-step Bullet physics.
+// Deterministic: the same description, spawns and commands give bit-identical trajectories.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bullet_plant/log.h"
+#include "bullet_plant/params.h"
+#include "bullet_plant/robot.h"
+#include "bullet_plant/world_description.h"
+
+namespace bullet_plant
+{
+class World
+{
+public:
+  explicit World(const WorldDescription& description = emptyWorldDescription());
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  const WorldDescription& description() const;
+  Log& log();
+  // Parameter tree read at spawn time (NS/gazebo_ros_control/pid_gains/<joint>/...): the node's
+  // copy of the parameter server.
+  Param& params();
+
+  double timeStep() const;        // s, the SDF's max_step_size
+  int64_t timeNs() const;         // simulated time
+  double time() const;
+  uint64_t steps() const;
+
+  // Adds a robot from URDF text with its root link at pose. robot_namespace is the spawn
+  // namespace (spawn_model -robot_namespace); initial_joints sets joint positions (-J).
+  // Throws DescriptionError (bad URDF, transmission naming a missing joint, duplicate name);
+  // the world is unchanged then.
+  Robot& spawn(const std::string& urdf_xml, const std::string& name, const urdf::Pose& pose,
+               const std::string& robot_namespace = "",
+               const std::map<std::string, double>& initial_joints = {});
+  bool remove(const std::string& name);
+  Robot* robot(const std::string& name);
+  std::vector<Robot*> robots();
+
+  void step(int n = 1);
+  void resetSimulation();  // time to 0, robots to their spawn poses and joint positions
+  void resetWorld();       // robots to their spawn poses; time goes on
+
+  // Ray casting against everything but `exclude` (may be null): distance along dir (unit) to the
+  // first hit within max_range, or +inf.
+  double castRay(const urdf::Vector3& origin, const urdf::Vector3& dir, double max_range,
+                 const Robot* exclude) const;
+
+  struct Internals;  // the plant's side, private to the library
+
+private:
+  std::unique_ptr<Internals> in_;
+};
+
+}  // namespace bullet_plant

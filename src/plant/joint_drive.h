@@ -1,0 +1,32 @@
+// One constraint row on a joint's velocity, solved together with the contacts:
+//   impulse = gain * (target_velocity - qd_end), clamped to [-max_impulse, max_impulse].
+// gain = infinity gives Bullet's rigid velocity motor; a finite gain is a soft (implicit) drive,
+// i.e. a spring-damper evaluated at the end of the step, stable for any gain and inertia.
+#pragma once
+
+#include <limits>
+
+#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+
+namespace bullet_plant
+{
+class JointDrive : public btMultiBodyJointMotor
+{
+public:
+  JointDrive(btMultiBody* body, int link);
+
+  void drive(double target_velocity, double gain, double max_impulse);
+  void disable() { enabled_ = false; }
+  bool enabled() const { return enabled_; }
+  // Impulse the last solve applied (0 when disabled).
+  double appliedImpulse() const;
+
+  void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                            const btContactSolverInfo& info) override;
+
+private:
+  bool enabled_ = false;
+  double gain_ = std::numeric_limits<double>::infinity();
+};
+
+}  // namespace bullet_plant

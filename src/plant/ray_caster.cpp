@@ -1,0 +1,311 @@
+#include "ray_caster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace bullet_plant
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kTwoPi = 2.0 * M_PI;
+
+double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+double intersectBox(const double o[3], const double d[3], const double h[3])
+{
+  double t_near = -kInf, t_far = kInf;
+  bool inside = true;
+  for (int i = 0; i < 3; ++i)
+  {
+    inside = inside && std::abs(o[i]) < h[i];
+    if (d[i] == 0.0)
+    {
+      if (std::abs(o[i]) > h[i])
+        return kInf;
+      continue;
+    }
+    double inv = 1.0 / d[i];
+    double t0 = (-h[i] - o[i]) * inv, t1 = (h[i] - o[i]) * inv;
+    if (t0 > t1)
+      std::swap(t0, t1);
+    t_near = std::max(t_near, t0);
+    t_far = std::min(t_far, t1);
+  }
+  if (inside || t_near > t_far || t_near < 0.0)
+    return kInf;
+  return t_near;
+}
+
+double intersectSphere(const double o[3], const double d[3], double r)
+{
+  double b = dot(o, d);
+  double c = dot(o, o) - r * r;
+  if (c <= 0.0)
+    return kInf;  // starts inside
+  double disc = b * b - c;
+  if (disc < 0.0 || b > 0.0)
+    return kInf;
+  return -b - std::sqrt(disc);
+}
+
+double intersectCylinder(const double o[3], const double d[3], double r, double half_length)
+{
+  if (o[0] * o[0] + o[1] * o[1] < r * r && std::abs(o[2]) < half_length)
+    return kInf;  // starts inside
+  double best = kInf;
+  // side: (ox + t dx)^2 + (oy + t dy)^2 = r^2
+  double a = d[0] * d[0] + d[1] * d[1];
+  if (a > 1e-18)
+  {
+    double b = o[0] * d[0] + o[1] * d[1];
+    double c = o[0] * o[0] + o[1] * o[1] - r * r;
+    double disc = b * b - a * c;
+    if (disc >= 0.0)
+    {
+      double t = (-b - std::sqrt(disc)) / a;
+      if (t >= 0.0 && std::abs(o[2] + t * d[2]) <= half_length)
+        best = t;
+    }
+  }
+  // caps
+  if (d[2] != 0.0)
+  {
+    for (double z : {-half_length, half_length})
+    {
+      double t = (z - o[2]) / d[2];
+      if (t >= 0.0 && t < best)
+      {
+        double x = o[0] + t * d[0], y = o[1] + t * d[1];
+        if (x * x + y * y <= r * r)
+          best = t;
+      }
+    }
+  }
+  return best;
+}
+
+double intersectPlane(const double o[3], const double d[3], const double n[3])
+{
+  double height = dot(o, n), approach = dot(d, n);
+  if (height <= 0.0 || approach >= 0.0)
+    return kInf;
+  return -height / approach;
+}
+
+double wrapAngle(double a)
+{
+  a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
+}  // namespace
+
+Frame Frame::fromPose(const urdf::Pose& p)
+{
+  Frame f;
+  double x = p.rotation.x, y = p.rotation.y, z = p.rotation.z, w = p.rotation.w;
+  double n = std::sqrt(x * x + y * y + z * z + w * w);
+  if (n > 0)
+  {
+    x /= n; y /= n; z /= n; w /= n;
+  }
+  f.R[0] = 1 - 2 * (y * y + z * z); f.R[1] = 2 * (x * y - z * w);     f.R[2] = 2 * (x * z + y * w);
+  f.R[3] = 2 * (x * y + z * w);     f.R[4] = 1 - 2 * (x * x + z * z); f.R[5] = 2 * (y * z - x * w);
+  f.R[6] = 2 * (x * z - y * w);     f.R[7] = 2 * (y * z + x * w);     f.R[8] = 1 - 2 * (x * x + y * y);
+  f.t[0] = p.position.x; f.t[1] = p.position.y; f.t[2] = p.position.z;
+  return f;
+}
+
+Frame Frame::operator*(const Frame& b) const
+{
+  Frame out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      out.R[3 * i + j] = R[3 * i] * b.R[j] + R[3 * i + 1] * b.R[3 + j] + R[3 * i + 2] * b.R[6 + j];
+  apply(b.t, out.t);
+  return out;
+}
+
+void Frame::rotate(const double in[3], double out[3]) const
+{
+  for (int i = 0; i < 3; ++i)
+    out[i] = R[3 * i] * in[0] + R[3 * i + 1] * in[1] + R[3 * i + 2] * in[2];
+}
+
+void Frame::apply(const double in[3], double out[3]) const
+{
+  rotate(in, out);
+  for (int i = 0; i < 3; ++i)
+    out[i] += t[i];
+}
+
+void Frame::inverseRotate(const double in[3], double out[3]) const
+{
+  for (int i = 0; i < 3; ++i)
+    out[i] = R[i] * in[0] + R[3 + i] * in[1] + R[6 + i] * in[2];
+}
+
+void Frame::inverseApply(const double in[3], double out[3]) const
+{
+  double v[3] = {in[0] - t[0], in[1] - t[1], in[2] - t[2]};
+  inverseRotate(v, out);
+}
+
+RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, const void* owner)
+{
+  RayPrimitive p;
+  p.kind = s.kind;
+  p.frame = Frame::fromPose(pose);
+  p.owner = owner;
+  switch (s.kind)
+  {
+    case Shape::Kind::Box:
+      for (int i = 0; i < 3; ++i)
+        p.half[i] = s.box_size[i] / 2.0;
+      p.bound_radius = std::sqrt(p.half[0] * p.half[0] + p.half[1] * p.half[1] + p.half[2] * p.half[2]);
+      break;
+    case Shape::Kind::Cylinder:
+      p.radius = s.radius;
+      p.half_length = s.length / 2.0;
+      p.bound_radius = std::sqrt(p.radius * p.radius + p.half_length * p.half_length);
+      break;
+    case Shape::Kind::Sphere:
+      p.radius = s.radius;
+      p.bound_radius = s.radius;
+      break;
+    case Shape::Kind::Plane:
+      p.normal[0] = s.normal.x; p.normal[1] = s.normal.y; p.normal[2] = s.normal.z;
+      p.bound_radius = kInf;
+      break;
+  }
+  return p;
+}
+
+double RayPrimitive::intersect(const double origin[3], const double dir[3]) const
+{
+  double o[3], d[3];
+  frame.inverseApply(origin, o);
+  frame.inverseRotate(dir, d);
+  switch (kind)
+  {
+    case Shape::Kind::Box: return intersectBox(o, d, half);
+    case Shape::Kind::Cylinder: return intersectCylinder(o, d, radius, half_length);
+    case Shape::Kind::Sphere: return intersectSphere(o, d, radius);
+    case Shape::Kind::Plane: return intersectPlane(o, d, normal);
+  }
+  return kInf;
+}
+
+RayCaster::RayCaster(const std::vector<RayPrimitive>& primitives, const void* exclude)
+{
+  primitives_.reserve(primitives.size());
+  for (const RayPrimitive& p : primitives)
+    if (exclude == nullptr || p.owner != exclude)
+      primitives_.push_back(&p);
+}
+
+double RayCaster::cast(const double origin[3], const double dir[3], double max_range) const
+{
+  double best = kInf;
+  for (const RayPrimitive* p : primitives_)
+  {
+    const double* c = p->frame.t;
+    double to_centre[3] = {c[0] - origin[0], c[1] - origin[1], c[2] - origin[2]};
+    if (!std::isinf(p->bound_radius))
+    {
+      double along = dot(to_centre, dir);
+      double dist2 = dot(to_centre, to_centre) - along * along;
+      if (dist2 > p->bound_radius * p->bound_radius || along + p->bound_radius < 0.0 ||
+          along - p->bound_radius > std::min(best, max_range))
+        continue;
+    }
+    best = std::min(best, p->intersect(origin, dir));
+  }
+  return best <= max_range ? best : kInf;
+}
+
+void RayCaster::castFan(const Frame& sensor, double a0, double da, int n_azimuth, const std::vector<double>& elevations,
+                        double max_range, std::vector<double>& out) const
+{
+  const size_t n_rows = elevations.size();
+  out.assign(n_rows * n_azimuth, kInf);
+  if (n_azimuth <= 0)
+    return;
+  // Ray directions in the world, once per scan.
+  std::vector<double> dirs(3 * n_rows * n_azimuth);
+  for (size_t row = 0; row < n_rows; ++row)
+  {
+    double ce = std::cos(elevations[row]), se = std::sin(elevations[row]);
+    for (int i = 0; i < n_azimuth; ++i)
+    {
+      double a = a0 + i * da;
+      // Gazebo's convention: positive elevation tilts the ray up (towards +z of the sensor).
+      double local[3] = {ce * std::cos(a), ce * std::sin(a), se};
+      sensor.rotate(local, &dirs[3 * (row * n_azimuth + i)]);
+    }
+  }
+  const double* origin = sensor.t;
+  for (const RayPrimitive* p : primitives_)
+  {
+    int first = 0, last = n_azimuth - 1;  // inclusive ranges of azimuth indices, possibly two
+    int first2 = 1, last2 = 0;
+    if (!std::isinf(p->bound_radius))
+    {
+      double c[3];
+      sensor.inverseApply(p->frame.t, c);
+      double dist = std::sqrt(dot(c, c));
+      if (dist - p->bound_radius > max_range)
+        continue;
+      double dist_xy = std::hypot(c[0], c[1]);
+      if (dist_xy > p->bound_radius && da != 0.0)
+      {
+        double centre = std::atan2(c[1], c[0]);
+        double half = std::asin(p->bound_radius / dist_xy);
+        double span = (n_azimuth - 1) * std::abs(da);
+        // Offsets from the fan's first ray, measured in the fan's direction of sweep.
+        double sign = da > 0 ? 1.0 : -1.0;
+        double lo = wrapAngle(sign * (centre - a0) - half);
+        double width = 2.0 * half;
+        double step = std::abs(da);
+        auto index = [&](double offset) { return static_cast<int>(std::floor(offset / step)); };
+        // The covered interval [lo, lo + width] (mod 2 pi) against the fan [0, span].
+        if (lo <= span)
+        {
+          first = static_cast<int>(std::ceil(lo / step));
+          last = std::min(n_azimuth - 1, index(lo + width));
+        }
+        else
+        {
+          first = 1;
+          last = 0;
+        }
+        if (lo + width > kTwoPi)  // wraps past the fan's start
+        {
+          first2 = 0;
+          last2 = std::min(n_azimuth - 1, index(lo + width - kTwoPi));
+        }
+      }
+    }
+    for (size_t row = 0; row < n_rows; ++row)
+    {
+      double* ranges = &out[row * n_azimuth];
+      const double* row_dirs = &dirs[3 * row * n_azimuth];
+      for (int pass = 0; pass < 2; ++pass)
+      {
+        int a = pass == 0 ? first : first2, b = pass == 0 ? last : last2;
+        for (int i = a; i <= b; ++i)
+        {
+          double t = p->intersect(origin, &row_dirs[3 * i]);
+          if (t < ranges[i])
+            ranges[i] = t;
+        }
+      }
+    }
+  }
+  for (double& r : out)
+    if (r > max_range)
+      r = kInf;
+}
+
+}  // namespace bullet_plant

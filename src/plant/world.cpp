@@ -1,0 +1,225 @@
+#include "bullet_plant/world.h"
+
+#include <cmath>
+#include <limits>
+
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+
+#include "internals.h"
+
+namespace bullet_plant
+{
+btTransform toBullet(const urdf::Pose& p)
+{
+  btQuaternion q(btScalar(p.rotation.x), btScalar(p.rotation.y), btScalar(p.rotation.z), btScalar(p.rotation.w));
+  if (q.length2() < btScalar(1e-12))
+    q = btQuaternion::getIdentity();
+  q.normalize();
+  return btTransform(q, btVector3(btScalar(p.position.x), btScalar(p.position.y), btScalar(p.position.z)));
+}
+
+urdf::Pose fromBullet(const btTransform& t)
+{
+  urdf::Pose p;
+  btQuaternion q = t.getRotation();
+  p.rotation = urdf::Rotation(q.x(), q.y(), q.z(), q.w());
+  p.position = urdf::Vector3(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
+  return p;
+}
+
+namespace
+{
+// Gazebo (ODE) combines the friction of two surfaces by taking the smaller; Bullet multiplies.
+btScalar smallerFriction(const btCollisionObject* a, const btCollisionObject* b)
+{
+  return std::min(a->getFriction(), b->getFriction());
+}
+}  // namespace
+
+World::World(const WorldDescription& description) : in_(new Internals)
+{
+  Internals& w = *in_;
+  w.description = description;
+  w.step_s = description.max_step_size;
+  w.step_ns = static_cast<int64_t>(std::llround(description.max_step_size * 1e9));
+  gCalculateCombinedFrictionCallback = &smallerFriction;
+
+  w.collision_config.reset(new btDefaultCollisionConfiguration());
+  // Several contact points per convex-plane pair, so a wheel's tread rests on two points.
+  w.collision_config->setPlaneConvexMultipointIterations(3, 3);
+  w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
+  w.broadphase.reset(new btDbvtBroadphase());
+  w.solver.reset(new btMultiBodyConstraintSolver());
+  w.dynamics.reset(new btMultiBodyDynamicsWorld(w.dispatcher.get(), w.broadphase.get(), w.solver.get(),
+                                                w.collision_config.get()));
+  const urdf::Vector3& g = description.gravity;
+  w.dynamics->setGravity(btVector3(btScalar(g.x), btScalar(g.y), btScalar(g.z)));
+  btContactSolverInfo& info = w.dynamics->getSolverInfo();
+  info.m_numIterations = 50;
+  info.m_timeStep = btScalar(w.step_s);
+
+  for (const StaticCollision& c : description.collisions)
+  {
+    btCollisionShape* shape = nullptr;
+    btTransform pose = toBullet(c.pose);
+    switch (c.shape.kind)
+    {
+      case Shape::Kind::Box:
+        shape = new btBoxShape(btVector3(btScalar(c.shape.box_size[0] / 2), btScalar(c.shape.box_size[1] / 2),
+                                         btScalar(c.shape.box_size[2] / 2)));
+        break;
+      case Shape::Kind::Cylinder:
+        shape = new btCylinderShapeZ(btVector3(btScalar(c.shape.radius), btScalar(c.shape.radius), btScalar(c.shape.length / 2)));
+        break;
+      case Shape::Kind::Sphere:
+        shape = new btSphereShape(btScalar(c.shape.radius));
+        break;
+      case Shape::Kind::Plane:
+        shape = new btStaticPlaneShape(btVector3(btScalar(c.shape.normal.x), btScalar(c.shape.normal.y),
+                                                 btScalar(c.shape.normal.z)), 0);
+        break;
+    }
+    if (c.shape.kind != Shape::Kind::Sphere && c.shape.kind != Shape::Kind::Plane)
+      shape->setMargin(btScalar(0.001));
+    w.static_shapes.emplace_back(shape);
+    w.static_objects.emplace_back(new btCollisionObject());
+    btCollisionObject* object = w.static_objects.back().get();
+    object->setCollisionShape(shape);
+    object->setWorldTransform(pose);
+    object->setFriction(btScalar(c.mu));
+    object->setRestitution(0);
+    w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
+                                   btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    w.static_ray_shapes.push_back(RayPrimitive::fromShape(c.shape, c.pose, nullptr));
+  }
+  for (const std::string& warning : description.warnings)
+    w.log.warn("world: " + warning);
+}
+
+World::~World()
+{
+  in_->robots.clear();  // removes each robot's pieces from the dynamics world first
+  for (auto& object : in_->static_objects)
+    in_->dynamics->removeCollisionObject(object.get());
+}
+
+const WorldDescription& World::description() const { return in_->description; }
+Log& World::log() { return in_->log; }
+Param& World::params() { return in_->params; }
+double World::timeStep() const { return in_->step_s; }
+int64_t World::timeNs() const { return in_->time_ns; }
+double World::time() const { return in_->time_ns * 1e-9; }
+uint64_t World::steps() const { return in_->steps; }
+
+Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const urdf::Pose& pose,
+                    const std::string& robot_namespace, const std::map<std::string, double>& initial_joints)
+{
+  if (name.empty())
+    throw DescriptionError("a robot needs a name (spawn_model -model NAME)");
+  if (robot(name))
+    throw DescriptionError("a model named '" + name + "' is already in the world; remove it or pick another -model name");
+  for (double v : {pose.position.x, pose.position.y, pose.position.z, pose.rotation.x, pose.rotation.y,
+                   pose.rotation.z, pose.rotation.w})
+    if (!std::isfinite(v))
+      throw DescriptionError("spawn pose of '" + name + "' is not finite");
+  for (const auto& kv : initial_joints)
+    if (!std::isfinite(kv.second))
+      throw DescriptionError("initial position of joint '" + kv.first + "' is not finite");
+
+  std::unique_ptr<Robot::Internals> internals(new Robot::Internals);
+  internals->world = in_.get();
+  internals->name = name;
+  internals->description = parseRobotDescription(urdf_xml);
+  for (const auto& kv : initial_joints)
+    if (!internals->description.model->getJoint(kv.first))
+      throw DescriptionError("initial position given for joint '" + kv.first + "', which '" + name + "' does not have");
+  const ControlPluginDescription& control = internals->description.control;
+  internals->control_namespace =
+      normaliseNamespace(control.robot_namespace.empty() ? robot_namespace : control.robot_namespace);
+
+  std::unique_ptr<Robot> robot(new Robot(std::move(internals)));
+  Robot::Internals& r = *robot->in_;
+  try
+  {
+    buildRobot(r, pose, initial_joints);
+  }
+  catch (...)
+  {
+    robot.reset();  // its destructor takes back whatever was added to the dynamics world
+    throw;
+  }
+  in_->robots.push_back(std::move(robot));
+  return *in_->robots.back();
+}
+
+bool World::remove(const std::string& name)
+{
+  for (auto it = in_->robots.begin(); it != in_->robots.end(); ++it)
+    if ((*it)->name() == name)
+    {
+      in_->robots.erase(it);
+      return true;
+    }
+  return false;
+}
+
+Robot* World::robot(const std::string& name)
+{
+  for (auto& r : in_->robots)
+    if (r->name() == name)
+      return r.get();
+  return nullptr;
+}
+
+std::vector<Robot*> World::robots()
+{
+  std::vector<Robot*> out;
+  for (auto& r : in_->robots)
+    out.push_back(r.get());
+  return out;
+}
+
+void World::step(int n)
+{
+  Internals& w = *in_;
+  for (int i = 0; i < n; ++i)
+  {
+    for (auto& r : w.robots)
+      r->in_->applyCommands(w.step_s);
+    w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
+    w.time_ns += w.step_ns;
+    ++w.steps;
+    for (auto& r : w.robots)
+      r->in_->readState(w.step_s);
+    for (auto& r : w.robots)
+      r->in_->updateSensors(w.time_ns);
+  }
+}
+
+void World::resetSimulation()
+{
+  in_->time_ns = 0;
+  resetWorld();
+}
+
+void World::resetWorld()
+{
+  for (auto& r : in_->robots)
+    r->in_->resetToSpawn();
+}
+
+double World::castRay(const urdf::Vector3& origin, const urdf::Vector3& dir, double max_range, const Robot* exclude) const
+{
+  std::vector<RayPrimitive> scene = in_->static_ray_shapes;
+  for (auto& r : in_->robots)
+    r->in_->appendRayPrimitives(scene);
+  RayCaster caster(scene, exclude ? exclude->in_.get() : nullptr);
+  double o[3] = {origin.x, origin.y, origin.z};
+  double norm = std::sqrt(dir.x * dir.x + dir.y * dir.y + dir.z * dir.z);
+  if (!(norm > 0) || !std::isfinite(norm))
+    return std::numeric_limits<double>::infinity();
+  double d[3] = {dir.x / norm, dir.y / norm, dir.z / norm};
+  return caster.cast(o, d, max_range);
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,275 @@
+// Python bindings of the plant: tianracer_description.bullet_plant. A thin layer: conversions only.
+#include <deque>
+#include <iostream>
+#include <mutex>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bullet_plant/world.h"
+
+namespace py = pybind11;
+using namespace bullet_plant;
+
+namespace
+{
+Param toParam(const py::handle& obj, const std::string& where)
+{
+  if (py::isinstance<py::bool_>(obj))
+    return Param::boolean(obj.cast<bool>());
+  if (py::isinstance<py::int_>(obj))
+    return Param::integer(obj.cast<long long>());
+  if (py::isinstance<py::float_>(obj))
+    return Param::real(obj.cast<double>());
+  if (py::isinstance<py::str>(obj))
+    return Param::string(obj.cast<std::string>());
+  if (py::isinstance<py::dict>(obj))
+  {
+    Param map = Param::map();
+    for (auto item : obj.cast<py::dict>())
+    {
+      std::string key = py::str(item.first);
+      map.set(key, toParam(item.second, where + "/" + key));
+    }
+    return map;
+  }
+  if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
+  {
+    std::vector<Param> items;
+    for (auto item : obj)
+      items.push_back(toParam(item, where));
+    return Param::list(items);
+  }
+  if (obj.is_none())
+    return Param();
+  throw py::type_error("parameter '" + where + "' has a type the parameter tree cannot hold: " +
+                       std::string(py::str(obj.get_type())));
+}
+
+urdf::Pose poseFromTuple(const std::vector<double>& v)
+{
+  if (v.size() != 6)
+    throw py::value_error("pose must be (x, y, z, roll, pitch, yaw)");
+  return poseFromXyzRpy(v[0], v[1], v[2], v[3], v[4], v[5]);
+}
+
+py::array_t<double> poseArray(const urdf::Pose& p)
+{
+  return py::array_t<double>(7, std::vector<double>{p.position.x, p.position.y, p.position.z, p.rotation.x,
+                                                    p.rotation.y, p.rotation.z, p.rotation.w}.data());
+}
+
+// A World plus the messages its log produced, kept for Python to read.
+struct PyWorld
+{
+  explicit PyWorld(const WorldDescription& d) : world(new World(d))
+  {
+    world->log().setSink([this](LogLevel level, const std::string& m) {
+      std::lock_guard<std::mutex> lock(mutex);
+      messages.emplace_back(levelName(level), m);
+      if (messages.size() > 10000)
+        messages.pop_front();
+      if (echo && level >= LogLevel::Warn)
+        std::cerr << "[" << levelName(level) << "] " << m << std::endl;
+    });
+  }
+  std::unique_ptr<World> world;
+  std::mutex mutex;
+  std::deque<std::pair<std::string, std::string>> messages;
+  bool echo = true;
+};
+
+JointHandle& handleOf(Robot& r, const std::string& joint)
+{
+  JointHandle* h = r.handle(joint);
+  if (!h)
+    throw py::key_error("robot '" + r.name() + "' has no joint handle '" + joint +
+                        "' (joints with a <transmission>: see Robot.handles)");
+  return *h;
+}
+
+Sensor& sensorOf(Robot& r, const std::string& name)
+{
+  Sensor* s = r.sensor(name);
+  if (!s)
+    throw py::key_error("robot '" + r.name() + "' has no simulated sensor '" + name + "'");
+  return *s;
+}
+}  // namespace
+
+PYBIND11_MODULE(bullet_plant, m)
+{
+  m.doc() = "The Bullet plant that stands in for Gazebo + gazebo_ros_control, driven from Python.";
+
+  py::register_exception<DescriptionError>(m, "DescriptionError", PyExc_ValueError);
+
+  py::class_<Robot, std::unique_ptr<Robot, py::nodelete>>(m, "Robot")
+      .def_property_readonly("name", &Robot::name)
+      .def_property_readonly("namespace", &Robot::controlNamespace, "gazebo_ros_control's robot namespace")
+      .def_property_readonly("handles", [](Robot& r) {
+        std::vector<std::string> names;
+        for (JointHandle& h : r.handles())
+          names.push_back(h.name());
+        return names;
+      }, "joints with a transmission, in transmission order")
+      .def("interface", [](Robot& r, const std::string& joint) { return std::string(interfaceName(handleOf(r, joint).interface())); })
+      .def("has_pid", [](Robot& r, const std::string& joint) { return handleOf(r, joint).pid() != nullptr; },
+           "whether the joint is driven by its gazebo_ros_control/pid_gains loop")
+      .def("set_command", [](Robot& r, const std::string& joint, double value) { return handleOf(r, joint).setCommand(value); },
+           py::arg("joint"), py::arg("value"),
+           "command in the joint interface's unit; a non-finite value is rejected (returns False, counted)")
+      .def("set_effort_law", [](Robot& r, const std::string& joint, double feedforward, double stiffness,
+                                double position_target, double damping, double velocity_target) {
+        JointHandle& h = handleOf(r, joint);
+        if (h.interface() != JointInterface::Effort)
+          throw py::value_error("joint '" + joint + "' is not an effort joint");
+        EffortLaw law;
+        law.feedforward = feedforward;
+        law.stiffness = stiffness;
+        law.position_target = position_target;
+        law.damping = damping;
+        law.velocity_target = velocity_target;
+        h.setEffortLaw(law);
+      }, py::arg("joint"), py::arg("feedforward") = 0.0, py::arg("stiffness") = 0.0, py::arg("position_target") = 0.0,
+         py::arg("damping") = 0.0, py::arg("velocity_target") = 0.0,
+         "effort = feedforward + stiffness*(position_target - q) + damping*(velocity_target - qd), evaluated at the "
+         "end of each step (what the PID controllers use); set_command replaces it")
+      .def("command", [](Robot& r, const std::string& joint) { return handleOf(r, joint).command(); })
+      .def("rejected_commands", [](Robot& r, const std::string& joint) { return handleOf(r, joint).rejectedCommands(); })
+      .def("limits", [](Robot& r, const std::string& joint) {
+        const JointLimits& l = handleOf(r, joint).limits();
+        py::dict d;
+        d["effort"] = l.effort;
+        d["velocity"] = l.velocity;
+        if (l.has_position)
+        {
+          d["lower"] = l.lower;
+          d["upper"] = l.upper;
+        }
+        return d;
+      })
+      .def_property_readonly("joint_names", &Robot::jointNames, "every movable joint of the URDF")
+      .def("joint_state", [](Robot& r, const std::string& joint) {
+        double p, v, e;
+        if (!r.jointState(joint, p, v, e))
+          throw py::key_error("robot '" + r.name() + "' has no movable joint '" + joint + "'");
+        return py::make_tuple(p, v, e);
+      }, "(position, velocity, effort) of a movable joint")
+      .def("base_pose", [](Robot& r) { return poseArray(r.basePose()); },
+           "root link pose in the world: x y z qx qy qz qw")
+      .def("base_twist", [](Robot& r) {
+        Twist t = r.baseTwist();
+        return py::make_tuple(py::array_t<double>(3, t.linear.data()), py::array_t<double>(3, t.angular.data()));
+      }, "(linear, angular) velocity of the root link origin, world frame")
+      .def("link_pose", [](Robot& r, const std::string& link) {
+        try
+        {
+          return poseArray(r.linkPose(link));
+        }
+        catch (const std::out_of_range& e)
+        {
+          throw py::key_error(e.what());
+        }
+      })
+      .def_property("e_stop", &Robot::eStop, &Robot::setEStop)
+      .def_property_readonly("recoveries", &Robot::recoveries)
+      .def_property_readonly("sensors", [](Robot& r) {
+        std::vector<std::string> names;
+        for (Lidar* l : r.lidars())
+          names.push_back(l->name());
+        return names;
+      })
+      .def("enable_sensor", [](Robot& r, const std::string& name, bool on) { sensorOf(r, name).setActive(on); },
+           py::arg("name"), py::arg("on") = true, "sensors work only while enabled (subscribed, in ROS)")
+      .def("sensor_updates", [](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); })
+      .def("sensor_topic", [](Robot& r, const std::string& name) { return sensorOf(r, name).topic(); })
+      .def("scan", [](Robot& r, const std::string& name) -> py::object {
+        auto* lidar = dynamic_cast<Lidar*>(&sensorOf(r, name));
+        if (!lidar)
+          throw py::key_error("sensor '" + name + "' is not a lidar");
+        if (!lidar->hasScan())
+          return py::none();
+        const LaserScan& s = lidar->latest();
+        py::dict d;
+        d["stamp"] = s.stamp_ns * 1e-9;
+        d["frame_id"] = s.frame_id;
+        d["angle_min"] = s.angle_min;
+        d["angle_max"] = s.angle_max;
+        d["angle_increment"] = s.angle_increment;
+        d["time_increment"] = s.time_increment;
+        d["scan_time"] = s.scan_time;
+        d["range_min"] = s.range_min;
+        d["range_max"] = s.range_max;
+        d["ranges"] = py::array_t<float>(s.ranges.size(), s.ranges.data());
+        return std::move(d);
+      }, "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first");
+
+  py::class_<PyWorld>(m, "World")
+      .def(py::init([]() { return new PyWorld(emptyWorldDescription()); }), "an empty world with a ground plane")
+      .def_static("from_sdf", [](const std::string& sdf) { return new PyWorld(parseWorldDescription(sdf)); },
+                  py::arg("sdf"), "a world from SDF text")
+      .def_property("echo", [](PyWorld& w) { return w.echo; }, [](PyWorld& w, bool on) { w.echo = on; },
+                    "print warnings and errors to stderr as they happen (default True)")
+      .def("messages", [](PyWorld& w, bool clear) {
+        std::lock_guard<std::mutex> lock(w.mutex);
+        std::vector<std::pair<std::string, std::string>> out(w.messages.begin(), w.messages.end());
+        if (clear)
+          w.messages.clear();
+        return out;
+      }, py::arg("clear") = false, "(level, text) of what the plant logged")
+      .def("load_params", [](PyWorld& w, py::dict tree, const std::string& ns) {
+        w.world->params().set(ns, toParam(tree, ns));
+      }, py::arg("tree"), py::arg("namespace") = "/",
+         "merge a dict (e.g. a loaded YAML file) into the parameter tree under namespace, as `rosparam load`")
+      .def("get_param", [](PyWorld& w, const std::string& path) -> py::object {
+        const Param* p = w.world->params().find(path);
+        if (!p)
+          return py::none();
+        switch (p->type())
+        {
+          case Param::Type::Bool: return py::bool_(p->asBool());
+          case Param::Type::Int: return py::int_(p->asInt());
+          case Param::Type::Double: return py::float_(p->asDouble());
+          case Param::Type::String: return py::str(p->asString());
+          default: return py::str(p->describe());
+        }
+      })
+      .def_property_readonly("time_step", [](PyWorld& w) { return w.world->timeStep(); })
+      .def_property_readonly("real_time_factor", [](PyWorld& w) { return w.world->description().real_time_factor; })
+      .def_property_readonly("time", [](PyWorld& w) { return w.world->time(); })
+      .def_property_readonly("steps", [](PyWorld& w) { return w.world->steps(); })
+      .def("spawn", [](PyWorld& w, const std::string& urdf, const std::string& name, std::vector<double> pose,
+                       const std::string& ns, std::map<std::string, double> joints) {
+        return &w.world->spawn(urdf, name, poseFromTuple(pose), ns, joints);
+      }, py::arg("urdf"), py::arg("name"), py::arg("pose") = std::vector<double>(6, 0.0), py::arg("namespace") = "",
+         py::arg("joints") = std::map<std::string, double>(), py::return_value_policy::reference_internal,
+         "add a robot from URDF text; raises DescriptionError naming what is wrong")
+      .def("remove", [](PyWorld& w, const std::string& name) { return w.world->remove(name); })
+      .def("robot", [](PyWorld& w, const std::string& name) {
+        Robot* r = w.world->robot(name);
+        if (!r)
+          throw py::key_error("no robot named '" + name + "'");
+        return r;
+      }, py::return_value_policy::reference_internal)
+      .def_property_readonly("robots", [](PyWorld& w) {
+        std::vector<std::string> names;
+        for (Robot* r : w.world->robots())
+          names.push_back(r->name());
+        return names;
+      })
+      .def("step", [](PyWorld& w, int n) {
+        if (n < 0)
+          throw py::value_error("step(n): n must not be negative");
+        py::gil_scoped_release release;
+        w.world->step(n);
+      }, py::arg("n") = 1, "advance n fixed physics steps")
+      .def("reset_simulation", [](PyWorld& w) { w.world->resetSimulation(); })
+      .def("reset_world", [](PyWorld& w) { w.world->resetWorld(); })
+      .def("cast_ray", [](PyWorld& w, std::vector<double> origin, std::vector<double> direction, double max_range) {
+        if (origin.size() != 3 || direction.size() != 3)
+          throw py::value_error("origin and direction are 3-vectors");
+        return w.world->castRay(urdf::Vector3(origin[0], origin[1], origin[2]),
+                                urdf::Vector3(direction[0], direction[1], direction[2]), max_range, nullptr);
+      });
+}
