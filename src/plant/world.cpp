@@ -56,6 +56,10 @@ World::World(const WorldDescription& description) : in_(new Internals)
   w.dynamics->setGravity(btVector3(btScalar(g.x), btScalar(g.y), btScalar(g.z)));
   btContactSolverInfo& info = w.dynamics->getSolverInfo();
   info.m_numIterations = 50;
+  // Correct position errors (joint limits, contact penetration) in the velocity solve. Bullet's
+  // split impulse does not act on multibodies, which would leave joints up to 4 cm or rad past
+  // their limits.
+  info.m_splitImpulse = false;
   info.m_timeStep = btScalar(w.step_s);
 
   for (const StaticCollision& c : description.collisions)

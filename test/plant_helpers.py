@@ -1,0 +1,55 @@
+"""Helpers for the tests that drive the plant through its Python module (no ROS master)."""
+import math
+
+import numpy as np
+
+from tianracer_description import bullet_plant
+
+REAR_WHEELS = ('left_rear_wheel_joint', 'right_rear_wheel_joint')
+STEERING = ('left_steering_hinge_joint', 'right_steering_hinge_joint')
+
+
+def sdf_world(models='', step=0.001):
+    """SDF text of a world with a ground plane, the given <model> elements and physics step."""
+    return f"""<?xml version="1.0"?>
+<sdf version="1.6"><world name="test">
+  <include><uri>model://ground_plane</uri></include>
+  <physics type="ode"><max_step_size>{step}</max_step_size><real_time_factor>1</real_time_factor></physics>
+  {models}
+</world></sdf>"""
+
+
+def box_model(name, size, xyz, yaw=0.0):
+    sx, sy, sz = size
+    x, y, z = xyz
+    return f"""<model name="{name}"><static>true</static><pose>{x} {y} {z} 0 0 {yaw}</pose>
+  <link name="link"><collision name="collision"><geometry><box><size>{sx} {sy} {sz}</size></box></geometry></collision></link>
+</model>"""
+
+
+def make_world(control_config, sdf=None):
+    world = bullet_plant.World.from_sdf(sdf) if sdf else bullet_plant.World()
+    world.echo = False
+    world.load_params(control_config)
+    return world
+
+
+def hold_steering(robot, angle=0.0):
+    """Hold both steering hinges with the tutorial's steering gains (p 4, d 1) as an implicit servo."""
+    for joint in STEERING:
+        robot.set_effort_law(joint, stiffness=4.0, position_target=angle, damping=1.0)
+
+
+def yaw_of(pose):
+    qx, qy, qz, qw = pose[3:7]
+    return math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
+
+
+def all_state(world, robot):
+    """Every number the plant reports for a robot, for finiteness and determinism checks."""
+    values = list(robot.base_pose())
+    linear, angular = robot.base_twist()
+    values += list(linear) + list(angular)
+    for joint in robot.joint_names:
+        values += list(robot.joint_state(joint))
+    return np.array(values + [world.time])

@@ -1,0 +1,269 @@
+"""The Bullet plant through its Python module, no ROS master: the car at rest and driving, the rear
+wheels' gazebo_ros_control velocity loop with the YAML's pid_gains, determinism, bad input, lidar."""
+import math
+
+import numpy as np
+import pytest
+
+from plant_helpers import (REAR_WHEELS, STEERING, all_state, box_model, hold_steering, make_world, sdf_world,
+                           yaw_of)
+from tianracer_description import bullet_plant
+
+COMMAND = 31.25  # rad/s: 1.0 m/s with the 0.032 m wheels
+
+
+@pytest.fixture
+def car(urdf_xml, control_config):
+    world = make_world(control_config)
+    return world, world.spawn(urdf_xml, 'tianracer')
+
+
+def test_spawn_reads_the_models_control_block_and_pid_gains(car):
+    world, robot = car
+    assert robot.namespace == '/tianracer'
+    assert robot.handles == ['left_rear_wheel_joint', 'right_rear_wheel_joint',
+                             'left_steering_hinge_joint', 'right_steering_hinge_joint']
+    assert [robot.interface(j) for j in robot.handles] == ['hardware_interface::VelocityJointInterface'] * 2 + \
+        ['hardware_interface::EffortJointInterface'] * 2
+    assert [robot.has_pid(j) for j in robot.handles] == [True, True, False, False]
+    assert robot.limits('left_steering_hinge_joint')['upper'] == pytest.approx(0.6)
+    assert robot.sensors == ['lidar']
+
+
+def test_spawn_pose_places_the_root_link(urdf_xml, control_config):
+    world = make_world(control_config)
+    robot = world.spawn(urdf_xml, 'tianracer', pose=(1.0, -2.0, 0.0, 0.0, 0.0, 1.2))
+    pose = robot.base_pose()
+    assert pose[:3] == pytest.approx([1.0, -2.0, 0.0], abs=1e-6)
+    assert yaw_of(pose) == pytest.approx(1.2, abs=1e-6)
+
+
+def test_at_rest_the_car_settles_and_stays(car):
+    world, robot = car
+    world.step(1000)
+    start = robot.base_pose()
+    heights = []
+    for _ in range(100):
+        world.step(100)
+        heights.append(robot.base_pose()[2])
+    end = robot.base_pose()
+    assert max(abs(h - start[2]) for h in heights) < 1e-3, 'height drift over 10 s'
+    assert np.hypot(*(end[:2] - start[:2])) < 0.01, 'creep over 10 s'
+    assert abs(start[2]) < 2e-3, 'the wheels rest on the ground'
+
+
+def test_both_rear_wheels_at_31_25_rad_s_drive_straight_at_1_m_s(car):
+    world, robot = car
+    hold_steering(robot)
+    for joint in REAR_WHEELS:
+        robot.set_command(joint, COMMAND)
+    world.step(3000)
+    linear, _ = robot.base_twist()
+    assert np.hypot(linear[0], linear[1]) == pytest.approx(1.0, abs=0.03)
+    start = robot.base_pose()
+    heading = yaw_of(start)
+    while np.hypot(*(robot.base_pose()[:2] - start[:2])) < 5.0:
+        world.step(10)
+        assert world.time < 10.0, 'the car did not cover 5 m'
+    offset = robot.base_pose()[:2] - start[:2]
+    lateral = -math.sin(heading) * offset[0] + math.cos(heading) * offset[1]
+    assert abs(lateral) < 0.02, 'lateral drift over 5 m'
+
+
+def wheel_step_response(world, robot, seconds=1.0):
+    """Command both rear wheels to 31.25 rad/s from rest; the left wheel's velocity every step."""
+    for joint in REAR_WHEELS:
+        robot.set_command(joint, COMMAND)
+    velocities = []
+    for _ in range(int(round(seconds / world.time_step))):
+        world.step()
+        velocities.append(robot.joint_state('left_rear_wheel_joint')[1])
+    return np.array(velocities)
+
+
+def check_velocity_loop(velocities, dt):
+    within = np.abs(velocities - COMMAND) <= 0.02 * COMMAND
+    # the first step from which the velocity stays within 2 %
+    settled = len(within) - np.argmin(within[::-1]) if not within.all() else 0
+    assert within[-1], 'the wheel never reached the command'
+    assert settled * dt <= 0.2, 'took %.3f s to stay within 2 %%' % (settled * dt)
+    steady = velocities[int(0.5 / dt):]
+    assert np.std(steady) < 0.01 * COMMAND, 'chatter: steady-state std %.4f rad/s' % np.std(steady)
+
+
+def test_wheel_velocity_loop_with_yaml_pid_gains_on_the_ground(car):
+    world, robot = car
+    hold_steering(robot)
+    world.step(200)
+    check_velocity_loop(wheel_step_response(world, robot), world.time_step)
+
+
+def test_wheel_velocity_loop_with_yaml_pid_gains_lifted_off_the_ground(urdf_xml, control_config):
+    # A stand under the chassis lifts the wheels 2 cm off the ground.
+    stand = box_model('stand', (0.2, 0.08, 0.04), (0.13, 0.0, 0.02))
+    world = make_world(control_config, sdf_world(stand))
+    robot = world.spawn(urdf_xml, 'tianracer', pose=(0, 0, 0.025, 0, 0, 0))
+    hold_steering(robot)
+    world.step(500)
+    assert robot.base_pose()[2] == pytest.approx(0.02, abs=2e-3), 'the car rests on the stand'
+    velocities = wheel_step_response(world, robot)
+    check_velocity_loop(velocities, world.time_step)
+    assert robot.base_pose()[:2] == pytest.approx([0, 0], abs=0.01), 'lifted wheels do not move the car'
+
+
+def drive_sequence(urdf_xml, control_config):
+    world = make_world(control_config)
+    robot = world.spawn(urdf_xml, 'tianracer', pose=(0.5, 0.2, 0.0, 0, 0, 0.3))
+    trajectory = []
+    for step, (speed, steer) in enumerate([(10.0, 0.0), (31.25, 0.3), (-15.0, -0.4), (0.0, 0.0)]):
+        for joint in REAR_WHEELS:
+            robot.set_command(joint, speed)
+        hold_steering(robot, steer)
+        for _ in range(50):
+            world.step(10)
+            trajectory.append(all_state(world, robot))
+    return np.array(trajectory)
+
+
+def test_same_commands_twice_give_bit_identical_trajectories(urdf_xml, control_config):
+    first = drive_sequence(urdf_xml, control_config)
+    second = drive_sequence(urdf_xml, control_config)
+    assert np.array_equal(first, second)
+    assert np.abs(first[-1, :2] - first[0, :2]).max() > 0.3, 'the car moved'
+
+
+@pytest.mark.parametrize('value', [math.nan, math.inf, -math.inf])
+def test_non_finite_commands_are_rejected_and_counted(car, value):
+    world, robot = car
+    robot.set_command('left_rear_wheel_joint', 5.0)
+    assert robot.set_command('left_rear_wheel_joint', value) is False
+    assert robot.set_command('left_steering_hinge_joint', value) is False
+    assert robot.rejected_commands('left_rear_wheel_joint') == 1
+    assert robot.command('left_rear_wheel_joint') == 5.0, 'the last good command stays'
+    world.step(500)
+    assert np.isfinite(all_state(world, robot)).all()
+    assert robot.joint_state('left_rear_wheel_joint')[1] == pytest.approx(5.0, rel=0.02)
+
+
+def test_huge_commands_are_held_to_the_urdf_limits(car):
+    world, robot = car
+    hold_steering(robot)
+    robot.set_command('left_rear_wheel_joint', 1e30)
+    robot.set_command('right_rear_wheel_joint', 1e30)
+    robot.set_command('left_steering_hinge_joint', -1e30)
+    world.step(1000)
+    state = all_state(world, robot)
+    assert np.isfinite(state).all()
+    assert robot.joint_state('left_rear_wheel_joint')[1] <= robot.limits('left_rear_wheel_joint')['velocity'] + 1e-3
+    assert abs(robot.joint_state('left_steering_hinge_joint')[2]) <= 1.0 + 1e-6, 'effort clamped to the limit'
+    assert robot.joint_state('left_steering_hinge_joint')[0] >= -0.6 - 0.01, 'position limit holds'
+
+
+def test_malformed_urdf_names_the_problem_and_the_world_goes_on(car):
+    world, robot = car
+    with pytest.raises(bullet_plant.DescriptionError, match='not well-formed'):
+        world.spawn('<robot name="x"><link name="a">', 'broken')
+    with pytest.raises(bullet_plant.DescriptionError, match='URDF parser'):
+        world.spawn('<robot name="x"><joint name="j" type="revolute"><parent link="a"/><child link="b"/></joint></robot>',
+                    'broken')
+    before = world.time
+    world.step(100)
+    assert world.time == pytest.approx(before + 0.1)
+    assert world.robots == ['tianracer']
+    assert np.isfinite(all_state(world, robot)).all()
+
+
+def test_transmission_naming_a_missing_joint_is_an_error_naming_it(car, urdf_xml):
+    world, robot = car
+    broken = urdf_xml.replace('<joint name="left_rear_wheel_joint">', '<joint name="no_such_joint">', 1)
+    assert broken != urdf_xml
+    with pytest.raises(bullet_plant.DescriptionError, match="no_such_joint"):
+        world.spawn(broken, 'second')
+    assert world.robots == ['tianracer']
+    world.step(10)
+
+
+def test_malformed_sdf_names_the_problem():
+    with pytest.raises(bullet_plant.DescriptionError, match='not well-formed'):
+        bullet_plant.World.from_sdf('<sdf><world name="w">')
+    with pytest.raises(bullet_plant.DescriptionError, match=r"wall::link::collision.*<box><size>"):
+        bullet_plant.World.from_sdf(sdf_world(box_model('wall', ('1', 'x', '1'), (0, 0, 0))))
+    with pytest.raises(bullet_plant.DescriptionError, match='max_step_size'):
+        bullet_plant.World.from_sdf(sdf_world(step=-1))
+
+
+def test_world_physics_comes_from_the_sdf(urdf_xml, control_config):
+    world = make_world(control_config, sdf_world(step=0.002))
+    assert world.time_step == pytest.approx(0.002)
+    world.step(10)
+    assert world.time == pytest.approx(0.02)
+
+
+# ---------------------------------------------------------------------------------------------- lidar
+
+WALL_X = 2.0  # the wall's face, in the world
+
+
+def lidar_world(urdf_xml, control_config, extra_models=''):
+    wall = box_model('wall', (0.2, 6.0, 1.0), (WALL_X + 0.1, 0.0, 0.5))
+    world = make_world(control_config, sdf_world(wall + extra_models))
+    robot = world.spawn(urdf_xml, 'tianracer')
+    world.step(200)  # settle
+    return world, robot
+
+
+def scan_angles(scan):
+    return scan['angle_min'] + scan['angle_increment'] * np.arange(len(scan['ranges']))
+
+
+def test_lidar_sees_a_wall_where_the_geometry_puts_it(urdf_xml, control_config):
+    world, robot = lidar_world(urdf_xml, control_config)
+    robot.enable_sensor('lidar')
+    world.step(25)
+    scan = robot.scan('lidar')
+    assert scan['frame_id'] == 'laser_link'
+    assert len(scan['ranges']) == 1081
+    assert scan['angle_min'] == pytest.approx(-2.356) and scan['angle_max'] == pytest.approx(2.356)
+    assert scan['range_min'] == pytest.approx(0.1) and scan['range_max'] == pytest.approx(10.0)
+    lidar_x = robot.link_pose('laser_link')[0]
+    angles = scan_angles(scan)
+    # rays that reach the wall's face within its 6 m width and the 10 m range
+    facing = np.abs(angles) < np.arctan(2.9 / (WALL_X - lidar_x))
+    expected = (WALL_X - lidar_x) / np.cos(angles[facing])
+    errors = scan['ranges'][facing] - expected
+    assert facing.sum() > 400
+    assert np.abs(errors).max() < 3 * 0.01, 'beyond 3 sigma of the configured noise'
+    assert 0.005 < np.std(errors) < 0.015, 'the configured gaussian noise (0.01 m)'
+    # nothing behind the car within 10 m: +inf (REP 117); and the car never sees itself
+    behind = np.abs(angles) > 1.7
+    assert np.isposinf(scan['ranges'][behind]).all()
+
+
+def test_lidar_reports_too_close_as_minus_inf_and_sees_other_robots(urdf_xml, control_config):
+    post = box_model('post', (0.02, 0.02, 0.3), (0.2, 0.07, 0.15))  # 6 cm left of the lidar
+    world, robot = lidar_world(urdf_xml, control_config, post)
+    other = world.spawn(urdf_xml, 'other', pose=(1.2, 0.0, 0.0, 0, 0, math.pi))
+    world.step(100)
+    robot.enable_sensor('lidar')
+    world.step(25)
+    scan = robot.scan('lidar')
+    angles = scan_angles(scan)
+    left = np.argmin(np.abs(angles - math.pi / 2))
+    assert np.isneginf(scan['ranges'][left])
+    ahead = scan['ranges'][np.argmin(np.abs(angles))]
+    other_lidar = other.link_pose('laser_link')[0]
+    assert 0.5 < ahead < other_lidar - robot.link_pose('laser_link')[0], 'the other car is in front of the wall'
+
+
+def test_lidar_works_only_while_enabled_at_its_rate_in_sim_time(urdf_xml, control_config):
+    world, robot = lidar_world(urdf_xml, control_config)
+    world.step(1000)
+    assert robot.scan('lidar') is None and robot.sensor_updates('lidar') == 0
+    robot.enable_sensor('lidar')
+    world.step(1000)
+    assert robot.sensor_updates('lidar') == 40
+    stamp = robot.scan('lidar')['stamp']
+    robot.enable_sensor('lidar', False)
+    world.step(1000)
+    assert robot.sensor_updates('lidar') == 40
+    assert robot.scan('lidar')['stamp'] == stamp
