@@ -1,6 +1,7 @@
 # Entry points of the Tianracer simulation. See README.md.
 #   make sim    install what is missing, build, start the simulation
 #   make test   install what is missing, build, run the whole test suite
+#   make bench  build, time the plant against MuJoCo and PyBullet (prints figures)
 SHELL := /bin/bash
 .DEFAULT_GOAL := help
 
@@ -14,13 +15,14 @@ COMPAT_PACKAGES := $(notdir $(wildcard compat/*))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim clean
+.PHONY: help setup build test sim bench clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
 	@echo "make test   install what is missing, build, run the whole test suite (PYTEST_ARGS=...)"
 	@echo "make setup  install what is missing (apt and pip); quiet when nothing is"
 	@echo "make build  build the catkin workspace in $(WS)/"
+	@echo "make bench  build, time the plant against MuJoCo and PyBullet (installs them from PyPI if missing)"
 	@echo "make clean  remove $(WS)/"
 
 setup:
@@ -40,6 +42,12 @@ test: build
 
 sim: build
 	@$(ROS_ENV) bash tools/sim.sh
+
+# The peers come from PyPI for $(PYTHON), like xacro in tools/setup.sh; only the benchmark needs them.
+bench: build
+	@$(PYTHON) -c 'import mujoco, pybullet' 2>/dev/null || { echo "bench: installing mujoco and pybullet from PyPI for $(PYTHON)"; \
+		$$([ "$$(id -u)" -eq 0 ] || echo sudo) $(PYTHON) -m pip install -q --root-user-action=ignore --break-system-packages mujoco pybullet; }
+	@$(ROS_ENV) $(PYTHON) bench/plant_vs_peers.py
 
 clean:
 	rm -rf $(WS)

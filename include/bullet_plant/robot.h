@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bullet_plant/controller_manager.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/robot_description.h"
 #include "bullet_plant/sensors.h"
@@ -50,6 +51,11 @@ public:
   // gazebo_ros_control's e-stop: while on, efforts are 0 and velocity commands 0.
   void setEStop(bool on);
   bool eStop() const;
+
+  // The controller manager gazebo_ros_control would host for this robot; null when the URDF has no
+  // gazebo_ros_control plugin block.
+  ControllerManager* controllerManager();
+  double controlPeriod() const;  // s
 
   std::vector<Lidar*> lidars();
   Sensor* sensor(const std::string& name);

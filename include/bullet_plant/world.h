@@ -46,6 +46,9 @@ public:
   std::vector<Robot*> robots();
 
   void step(int n = 1);
+  // Paused: the node stops stepping; controller switches then apply at once.
+  void setPaused(bool paused);
+  bool paused() const;
   void resetSimulation();  // time to 0, robots to their spawn poses and joint positions
   void resetWorld();       // robots to their spawn poses; time goes on
 

@@ -63,6 +63,7 @@ struct MovableJoint
 struct Robot::Internals
 {
   World::Internals* world = nullptr;
+  Robot* self = nullptr;
   std::string name;
   std::string control_namespace;
   RobotDescription description;
@@ -78,12 +79,16 @@ struct Robot::Internals
   std::vector<std::mt19937> sensor_noise;           // one generator per sensor
   btTransform spawn_pose;                           // of the URDF root link
   bool e_stop = false;
+  std::unique_ptr<ControllerManager> controller_manager;
+  int64_t control_period_ns = 0;
+  int64_t last_control_ns = 0;
   long recoveries = 0;
   // Last finite state, to fall back to if the physics diverges.
   std::vector<btScalar> good_q, good_qd;
   btTransform good_base;
   btVector3 good_base_vel{0, 0, 0}, good_base_omega{0, 0, 0};
 
+  void updateControllers(int64_t time_ns);
   void applyCommands(double dt);
   void readState(double dt);
   void updateSensors(int64_t time_ns);
@@ -105,6 +110,7 @@ struct World::Internals
   double step_s = 0.001;
   int64_t time_ns = 0;
   uint64_t steps = 0;
+  bool paused = false;
 
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;

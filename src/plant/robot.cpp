@@ -454,7 +454,22 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
       h.setPid(readPidGains(r.world->params, pid_ns));
   }
 
-  // 8. Sensors.
+  // 8. gazebo_ros_control's controller manager, updated every control period.
+  if (r.description.control.present)
+  {
+    r.control_period_ns = r.world->step_ns;
+    double period = r.description.control.control_period;
+    if (period > 0 && std::llround(period * 1e9) < r.world->step_ns)
+      log.warn("Desired controller update period (" + std::to_string(period) + " s) of '" + r.name +
+               "' is faster than the simulation period (" + std::to_string(r.world->step_s) + " s); using the latter");
+    else if (period > 0)
+      r.control_period_ns = std::llround(period * 1e9);
+    r.last_control_ns = r.world->time_ns;
+    r.controller_manager.reset(new ControllerManager(*r.self, r.world->params, log, r.control_namespace));
+    r.controller_manager->setPaused(r.world->paused);
+  }
+
+  // 9. Sensors.
   for (const SensorDescription& s : r.description.sensors)
   {
     if (s.type == "ray" || s.type == "gpu_ray")
@@ -477,6 +492,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
 
 void destroyRobot(Robot::Internals& r)
 {
+  r.controller_manager.reset();
   btMultiBodyDynamicsWorld* dynamics = r.world->dynamics.get();
   for (MovableJoint& j : r.joints)
   {
@@ -568,6 +584,9 @@ void Robot::Internals::restoreGoodState()
 
 void Robot::Internals::resetToSpawn()
 {
+  last_control_ns = world->time_ns;
+  if (controller_manager)
+    controller_manager->reset(world->time_ns);
   good_base = spawn_pose * bodies[0].urdf_from_com;
   for (size_t i = 0; i < joints.size(); ++i)
     good_q[i] = btScalar(joints[i].initial_position);
@@ -607,6 +626,14 @@ void driveRigid(MovableJoint& j, double target_velocity, double dt)
 
 
 void Robot::Internals::applyCommands(double dt) { detail::JointLayer::apply(*this, dt); }
+
+void Robot::Internals::updateControllers(int64_t time_ns)
+{
+  if (!controller_manager || time_ns - last_control_ns < control_period_ns)
+    return;
+  controller_manager->update(time_ns, (time_ns - last_control_ns) * 1e-9);
+  last_control_ns = time_ns;
+}
 void Robot::Internals::readState(double dt) { detail::JointLayer::read(*this, dt); }
 
 void detail::JointLayer::apply(Robot::Internals& r, double dt)
@@ -795,7 +822,10 @@ void Robot::Internals::updateSensors(int64_t time_ns)
 
 // ---------------------------------------------------------------------------------------- Robot
 
-Robot::Robot(std::unique_ptr<Internals> internals) : in_(std::move(internals)) {}
+Robot::Robot(std::unique_ptr<Internals> internals) : in_(std::move(internals)) { in_->self = this; }
+
+ControllerManager* Robot::controllerManager() { return in_->controller_manager.get(); }
+double Robot::controlPeriod() const { return in_->control_period_ns * 1e-9; }
 Robot::~Robot() { destroyRobot(*in_); }
 
 const std::string& Robot::name() const { return in_->name; }

@@ -189,6 +189,8 @@ void World::step(int n)
   for (int i = 0; i < n; ++i)
   {
     for (auto& r : w.robots)
+      r->in_->updateControllers(w.time_ns);
+    for (auto& r : w.robots)
       r->in_->applyCommands(w.step_s);
     w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
     w.time_ns += w.step_ns;
@@ -199,6 +201,16 @@ void World::step(int n)
       r->in_->updateSensors(w.time_ns);
   }
 }
+
+void World::setPaused(bool paused)
+{
+  in_->paused = paused;
+  for (auto& r : in_->robots)
+    if (ControllerManager* cm = r->controllerManager())
+      cm->setPaused(paused);
+}
+
+bool World::paused() const { return in_->paused; }
 
 void World::resetSimulation()
 {

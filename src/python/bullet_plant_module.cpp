@@ -89,6 +89,51 @@ JointHandle& handleOf(Robot& r, const std::string& joint)
   return *h;
 }
 
+ControllerManager& managerOf(Robot& r)
+{
+  ControllerManager* cm = r.controllerManager();
+  if (!cm)
+    throw py::value_error("robot '" + r.name() + "' has no gazebo_ros_control plugin block, so no controller manager");
+  return *cm;
+}
+
+Controller& controllerOf(ControllerManager& cm, const std::string& name)
+{
+  Controller* c = cm.controller(name);
+  if (!c)
+    throw py::key_error("no controller named '" + name + "' is loaded");
+  return *c;
+}
+
+py::dict jointStateDict(const JointStateSample& s)
+{
+  py::dict d;
+  d["stamp"] = s.stamp_ns * 1e-9;
+  d["name"] = s.name;
+  d["position"] = s.position;
+  d["velocity"] = s.velocity;
+  d["effort"] = s.effort;
+  return d;
+}
+
+py::dict controllerStateDict(const ControllerStateSample& s)
+{
+  py::dict d;
+  d["stamp"] = s.stamp_ns * 1e-9;
+  d["set_point"] = s.set_point;
+  d["process_value"] = s.process_value;
+  d["process_value_dot"] = s.process_value_dot;
+  d["error"] = s.error;
+  d["time_step"] = s.time_step;
+  d["command"] = s.command;
+  d["p"] = s.p;
+  d["i"] = s.i;
+  d["d"] = s.d;
+  d["i_clamp"] = s.i_clamp;
+  d["antiwindup"] = s.antiwindup;
+  return d;
+}
+
 Sensor& sensorOf(Robot& r, const std::string& name)
 {
   Sensor* s = r.sensor(name);
@@ -174,6 +219,9 @@ PYBIND11_MODULE(bullet_plant, m)
       })
       .def_property("e_stop", &Robot::eStop, &Robot::setEStop)
       .def_property_readonly("recoveries", &Robot::recoveries)
+      .def_property_readonly("controller_manager", [](Robot& r) { return &managerOf(r); },
+                             py::return_value_policy::reference_internal)
+      .def_property_readonly("control_period", &Robot::controlPeriod)
       .def_property_readonly("sensors", [](Robot& r) {
         std::vector<std::string> names;
         for (Lidar* l : r.lidars())
@@ -205,6 +253,66 @@ PYBIND11_MODULE(bullet_plant, m)
         return std::move(d);
       }, "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first");
 
+  py::class_<ControllerManager, std::unique_ptr<ControllerManager, py::nodelete>>(m, "ControllerManager",
+      "controller_manager's services for one robot (its namespace: .ns); errors go to World.messages()")
+      .def_property_readonly("ns", &ControllerManager::ns)
+      .def("load", &ControllerManager::loadController, py::arg("name"))
+      .def("unload", &ControllerManager::unloadController, py::arg("name"))
+      .def("switch", &ControllerManager::switchController, py::arg("start") = std::vector<std::string>(),
+           py::arg("stop") = std::vector<std::string>(), py::arg("strictness") = int(ControllerManager::STRICT),
+           py::arg("start_asap") = false, py::arg("timeout") = 0.0,
+           "validated at once; applied after the next control update's controller updates, or at once while paused")
+      .def("list", [](ControllerManager& cm) {
+        py::list out;
+        for (const ControllerInfo& info : cm.listControllers())
+        {
+          py::dict d;
+          d["name"] = info.name;
+          d["state"] = info.state;
+          d["type"] = info.type;
+          py::list claimed;
+          for (const ClaimedResources& c : info.claimed_resources)
+          {
+            py::dict r;
+            r["hardware_interface"] = c.hardware_interface;
+            r["resources"] = c.resources;
+            claimed.append(r);
+          }
+          d["claimed_resources"] = claimed;
+          out.append(d);
+        }
+        return out;
+      })
+      .def("list_types", [](ControllerManager& cm) {
+        std::vector<std::string> types = cm.listControllerTypes();
+        return py::make_tuple(types, std::vector<std::string>(types.size(), "controller_interface::ControllerBase"));
+      }, "(types, base_classes)")
+      .def("reload_libraries", &ControllerManager::reloadControllerLibraries, py::arg("force_kill") = false)
+      .def("spawn", [](ControllerManager& cm, const std::vector<std::string>& names) {
+        std::vector<std::string> loaded;
+        for (const std::string& n : names)
+          if (cm.loadController(n))
+            loaded.push_back(n);
+        bool started = cm.switchController(loaded, {}, ControllerManager::STRICT);
+        return py::make_tuple(loaded, started);
+      }, py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
+      .def("command", [](ControllerManager& cm, const std::string& name, double value) {
+        Controller& c = controllerOf(cm, name);
+        if (!c.hasCommand())
+          throw py::key_error("controller '" + name + "' takes no command");
+        return c.setCommand(value);
+      }, py::arg("name"), py::arg("value"), "what a Float64 on <controller>/command does; False for a non-finite value")
+      .def("joint_states", [](ControllerManager& cm, const std::string& name) -> py::object {
+        const JointStateSample* s = controllerOf(cm, name).latestJointState();
+        return s ? py::object(jointStateDict(*s)) : py::none();
+      }, py::arg("name") = "joint_state_controller", "the latest sensor_msgs/JointState a joint state controller produced")
+      .def("state", [](ControllerManager& cm, const std::string& name) -> py::object {
+        const ControllerStateSample* s = controllerOf(cm, name).latestControllerState();
+        return s ? py::object(controllerStateDict(*s)) : py::none();
+      }, py::arg("name"), "the latest control_msgs/JointControllerState of a PID controller")
+      .def("samples", [](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).samplesProduced(); },
+           py::arg("name"), "how many messages the controller has produced");
+
   py::class_<PyWorld>(m, "World")
       .def(py::init([]() { return new PyWorld(emptyWorldDescription()); }), "an empty world with a ground plane")
       .def_static("from_sdf", [](const std::string& sdf) { return new PyWorld(parseWorldDescription(sdf)); },
@@ -218,10 +326,23 @@ PYBIND11_MODULE(bullet_plant, m)
           w.messages.clear();
         return out;
       }, py::arg("clear") = false, "(level, text) of what the plant logged")
-      .def("load_params", [](PyWorld& w, py::dict tree, const std::string& ns) {
+      .def("load_params", [](PyWorld& w, py::object tree, const std::string& ns) {
+        if (py::isinstance<py::str>(tree))
+        {
+          py::object yaml = py::module_::import("yaml");
+          py::object file = py::module_::import("builtins").attr("open")(tree);
+          tree = yaml.attr("safe_load")(file);
+          file.attr("close")();
+        }
+        if (!py::isinstance<py::dict>(tree))
+          throw py::type_error("load_params takes a dict or the path of a YAML file holding one");
         w.world->params().set(ns, toParam(tree, ns));
       }, py::arg("tree"), py::arg("namespace") = "/",
-         "merge a dict (e.g. a loaded YAML file) into the parameter tree under namespace, as `rosparam load`")
+         "merge a dict or YAML file into the parameter tree under namespace, as `rosparam load`: its top "
+         "key (e.g. tianracer) is the robot namespace the controller manager reads")
+      .def_property("paused", [](PyWorld& w) { return w.world->paused(); },
+                    [](PyWorld& w, bool p) { w.world->setPaused(p); },
+                    "while paused, controller switches apply at once (step() still steps)")
       .def("get_param", [](PyWorld& w, const std::string& path) -> py::object {
         const Param* p = w.world->params().find(path);
         if (!p)

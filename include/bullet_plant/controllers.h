@@ -1,0 +1,92 @@
+// ros_controllers' controller types, hosted by the plant (ros_interfaces.md section 4). Each works
+// on the robot's joint handles; what the real ones publish is produced as samples that the ROS node
+// publishes and Python reads.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bullet_plant/joint_layer.h"
+#include "bullet_plant/pid.h"
+
+namespace bullet_plant
+{
+class Param;
+class Log;
+class Robot;
+
+struct ClaimedResources
+{
+  std::string hardware_interface;  // e.g. "hardware_interface::VelocityJointInterface"
+  std::vector<std::string> resources;
+};
+
+// sensor_msgs/JointState
+struct JointStateSample
+{
+  int64_t stamp_ns = 0;
+  std::vector<std::string> name;
+  std::vector<double> position, velocity, effort;
+};
+
+// control_msgs/JointControllerState
+struct ControllerStateSample
+{
+  int64_t stamp_ns = 0;
+  double set_point = 0, process_value = 0, process_value_dot = 0, error = 0, time_step = 0, command = 0;
+  double p = 0, i = 0, d = 0, i_clamp = 0;
+  bool antiwindup = false;
+};
+
+// What a controller gets to initialise itself: its parameters and the robot's handles.
+struct ControllerContext
+{
+  const Param& params;          // the whole parameter tree
+  std::string ns;               // the controller's namespace, e.g. "/tianracer/rear_left_velocity_controller"
+  Robot& robot;
+  Log& log;
+};
+
+class Controller
+{
+public:
+  virtual ~Controller() = default;
+  // Reads parameters and takes handles; false (with the reason logged) when it cannot run.
+  virtual bool init(ControllerContext& context) = 0;
+  virtual void starting(int64_t time_ns) {}
+  virtual void update(int64_t time_ns, double period) = 0;
+  virtual void stopping(int64_t time_ns) {}
+
+  virtual const std::vector<ClaimedResources>& claimedResources() const { return claimed_; }
+  // The Float64 on <controller>/command; false for a controller without one or a non-finite value.
+  virtual bool setCommand(double value) { return false; }
+  virtual bool hasCommand() const { return false; }
+  // Samples produced since the last take (joint_states for the joint state controller, state for
+  // the PID controllers); the latest is kept for readers that only look.
+  std::vector<JointStateSample> takeJointStates();
+  std::vector<ControllerStateSample> takeControllerStates();
+  const JointStateSample* latestJointState() const { return has_joint_state_ ? &latest_joint_state_ : nullptr; }
+  const ControllerStateSample* latestControllerState() const { return has_state_ ? &latest_state_ : nullptr; }
+  uint64_t samplesProduced() const { return samples_; }
+
+protected:
+  void emit(const JointStateSample& s);
+  void emit(const ControllerStateSample& s);
+  std::vector<ClaimedResources> claimed_;
+
+private:
+  std::vector<JointStateSample> joint_states_;
+  std::vector<ControllerStateSample> controller_states_;
+  JointStateSample latest_joint_state_;
+  ControllerStateSample latest_state_;
+  bool has_joint_state_ = false, has_state_ = false;
+  uint64_t samples_ = 0;
+};
+
+// The controller types this plant offers (list_controller_types), and a factory for them.
+const std::vector<std::string>& controllerTypes();
+std::unique_ptr<Controller> createController(const std::string& type);  // null for an unknown type
+
+}  // namespace bullet_plant
