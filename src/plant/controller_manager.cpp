@@ -196,6 +196,8 @@ bool ControllerManager::switchController(const std::vector<std::string>& start, 
       return false;
     }
 
+  if (to_start.empty() && to_stop.empty())
+    return true;  // nothing to wait for
   pending_start_ = to_start;
   pending_stop_ = to_stop;
   pending_ = true;

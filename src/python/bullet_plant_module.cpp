@@ -253,6 +253,45 @@ PYBIND11_MODULE(bullet_plant, m)
         return std::move(d);
       }, "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first");
 
+  py::class_<Pid>(m, "Pid", "control_toolbox::Pid, as the plant's controllers and pid_gains loops use it")
+      .def(py::init([](double p, double i, double d, double i_clamp, bool antiwindup) {
+        PidGains g;
+        g.p = p;
+        g.i = i;
+        g.d = d;
+        g.i_max = std::abs(i_clamp);
+        g.i_min = -std::abs(i_clamp);
+        g.antiwindup = antiwindup;
+        return Pid(g);
+      }), py::arg("p"), py::arg("i") = 0.0, py::arg("d") = 0.0, py::arg("i_clamp") = 0.0, py::arg("antiwindup") = false)
+      .def_static("from_params", [](PyWorld& w, const std::string& ns) {
+        try
+        {
+          return Pid(readPidGains(w.world->params(), ns));
+        }
+        catch (const std::runtime_error& e)
+        {
+          throw py::value_error(e.what());
+        }
+      }, py::arg("world"), py::arg("namespace"), "gains from p, i, d, i_clamp, i_clamp_min/max, antiwindup under namespace")
+      .def("compute_command", py::overload_cast<double, double>(&Pid::computeCommand), py::arg("error"), py::arg("dt"))
+      .def("compute_command", py::overload_cast<double, double, double>(&Pid::computeCommand), py::arg("error"),
+           py::arg("error_dot"), py::arg("dt"))
+      .def("reset", &Pid::reset)
+      .def_property_readonly("gains", [](Pid& pid) {
+        const PidGains& g = pid.gains();
+        py::dict d;
+        d["p"] = g.p;
+        d["i"] = g.i;
+        d["d"] = g.d;
+        d["i_max"] = g.i_max;
+        d["i_min"] = g.i_min;
+        d["antiwindup"] = g.antiwindup;
+        return d;
+      })
+      .def_property_readonly("i_error", &Pid::iError)
+      .def_property_readonly("command", &Pid::command);
+
   py::class_<ControllerManager, std::unique_ptr<ControllerManager, py::nodelete>>(m, "ControllerManager",
       "controller_manager's services for one robot (its namespace: .ns); errors go to World.messages()")
       .def_property_readonly("ns", &ControllerManager::ns)
