@@ -11,7 +11,6 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "bullet_plant/robot.h"
@@ -53,10 +52,11 @@ struct MovableJoint
   JointLimits limits;
   double damping = 0.0, friction = 0.0;
   std::unique_ptr<JointDrive> drive;           // the joint layer's motor / implicit PID
-  std::unique_ptr<JointDrive> damper;          // URDF <dynamics damping>, implicit
+  std::unique_ptr<JointDrive> damper;          // URDF <dynamics damping> where an explicit torque would be unstable
   std::unique_ptr<JointDrive> dry_friction;    // URDF <dynamics friction>
-  std::unique_ptr<btMultiBodyJointLimitConstraint> limit;
-  double explicit_effort = 0.0;                // applied as a joint torque this step
+  std::unique_ptr<JointDrive> lower_limit, upper_limit;  // rows only while the joint is at a limit
+  double axis_inertia = 0.0;                   // the child body's inertia about the joint axis
+  double explicit_effort = 0.0;                // actuator torque applied explicitly this step
   double initial_position = 0.0;
 };
 

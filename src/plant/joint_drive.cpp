@@ -13,8 +13,15 @@ void JointDrive::drive(double target_velocity, double gain, double max_impulse)
 {
   enabled_ = max_impulse > 0 && gain > 0;
   gain_ = gain;
+  side_ = 0;
   setVelocityTarget(btScalar(target_velocity), 1);
   setMaxAppliedImpulse(btScalar(max_impulse));
+}
+
+void JointDrive::bound(double target_velocity, bool lower)
+{
+  drive(target_velocity, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
+  side_ = lower ? 1 : -1;
 }
 
 double JointDrive::appliedImpulse() const
@@ -31,6 +38,11 @@ void JointDrive::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiB
     return;
   const int first = rows.size();
   btMultiBodyJointMotor::createConstraintRows(rows, data, info);
+  for (int i = first; side_ != 0 && i < rows.size(); ++i)
+  {
+    rows[i].m_lowerLimit = side_ > 0 ? 0 : -SIMD_INFINITY;
+    rows[i].m_upperLimit = side_ > 0 ? SIMD_INFINITY : 0;
+  }
   if (std::isinf(gain_))
     return;
   // Soften the rigid row: with cfm = 1/gain the converged impulse is gain * (target - qd_end).

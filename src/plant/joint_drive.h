@@ -4,6 +4,7 @@
 // i.e. a spring-damper evaluated at the end of the step, stable for any gain and inertia.
 #pragma once
 
+#include <cmath>
 #include <limits>
 
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
@@ -16,8 +17,12 @@ public:
   JointDrive(btMultiBody* body, int link);
 
   void drive(double target_velocity, double gain, double max_impulse);
+  // A one-sided rigid row: the joint velocity may not fall below (lower bound) or rise above
+  // (upper bound) target_velocity. Used for position limits.
+  void bound(double target_velocity, bool lower);
   void disable() { enabled_ = false; }
   bool enabled() const { return enabled_; }
+  bool soft() const { return enabled_ && !std::isinf(gain_); }
   // Impulse the last solve applied (0 when disabled).
   double appliedImpulse() const;
 
@@ -26,6 +31,7 @@ public:
 
 private:
   bool enabled_ = false;
+  int side_ = 0;  // 0: two-sided drive; +1: velocity >= target; -1: velocity <= target
   double gain_ = std::numeric_limits<double>::infinity();
 };
 

@@ -160,6 +160,9 @@ JointInterface parseInterface(const std::string& name, bool& ok)
   return JointInterface::Effort;
 }
 
+// URDF damping as a plain torque -c*qd is stable while c*dt stays well below the inertia it acts on.
+bool explicitDampingStable(const MovableJoint& j, double dt) { return j.damping * dt < 0.5 * j.axis_inertia; }
+
 uint32_t seedFor(const std::string& text)
 {
   uint32_t h = 2166136261u;  // FNV-1a: a seed that is the same on every run and machine
@@ -313,6 +316,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   const int n_links = int(r.bodies.size()) - 1;
   r.multibody.reset(new btMultiBody(n_links, btScalar(r.bodies[0].mass), r.bodies[0].inertia_diagonal, fixed_base, false));
   btMultiBody* mb = r.multibody.get();
+  std::vector<double> axis_inertia(r.bodies.size(), 0.0);
   for (int bi = 1; bi <= n_links; ++bi)
   {
     const Body& body = r.bodies[bi];
@@ -325,6 +329,12 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
     if (axis.length2() < btScalar(1e-12))
       axis = offset_in_child.getBasis() * btVector3(1, 0, 0);  // urdfdom's default axis
     axis.normalize();
+    // The body's own inertia about the joint axis: a lower bound of what the joint moves.
+    btVector3 pivot_to_com = -offset_in_child.getOrigin();
+    btVector3 lever = pivot_to_com - axis * axis.dot(pivot_to_com);
+    axis_inertia[bi] = joint.type == urdf::Joint::PRISMATIC
+                           ? body.mass
+                           : axis.dot(body.inertia_diagonal * axis) + body.mass * lever.length2();
     if (joint.type == urdf::Joint::PRISMATIC)
       mb->setupPrismatic(bi - 1, btScalar(body.mass), body.inertia_diagonal, body.parent - 1, parent_to_this, axis,
                          offset_in_parent.getOrigin(), -offset_in_child.getOrigin(), true);
@@ -374,22 +384,20 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
       j.initial_position = initial->second;
     mb->setJointPos(j.link, btScalar(j.initial_position));
 
-    j.drive.reset(new JointDrive(mb, j.link));
-    r.world->dynamics->addMultiBodyConstraint(j.drive.get());
-    if (j.damping > 0)
-    {
-      j.damper.reset(new JointDrive(mb, j.link));
-      r.world->dynamics->addMultiBodyConstraint(j.damper.get());
-    }
+    j.axis_inertia = axis_inertia[bi];
+    auto add = [&](std::unique_ptr<JointDrive>& drive) {
+      drive.reset(new JointDrive(mb, j.link));
+      r.world->dynamics->addMultiBodyConstraint(drive.get());
+    };
+    add(j.drive);
+    if (j.damping > 0 && !explicitDampingStable(j, r.world->step_s))
+      add(j.damper);
     if (j.friction > 0)
-    {
-      j.dry_friction.reset(new JointDrive(mb, j.link));
-      r.world->dynamics->addMultiBodyConstraint(j.dry_friction.get());
-    }
+      add(j.dry_friction);
     if (j.limits.has_position)
     {
-      j.limit.reset(new btMultiBodyJointLimitConstraint(mb, j.link, btScalar(j.limits.lower), btScalar(j.limits.upper)));
-      r.world->dynamics->addMultiBodyConstraint(j.limit.get());
+      add(j.lower_limit);
+      add(j.upper_limit);
     }
     r.joint_index[j.name] = r.joints.size();
     r.joints.push_back(std::move(j));
@@ -496,10 +504,7 @@ void destroyRobot(Robot::Internals& r)
   btMultiBodyDynamicsWorld* dynamics = r.world->dynamics.get();
   for (MovableJoint& j : r.joints)
   {
-    for (btMultiBodyConstraint* c : {static_cast<btMultiBodyConstraint*>(j.drive.get()),
-                                     static_cast<btMultiBodyConstraint*>(j.damper.get()),
-                                     static_cast<btMultiBodyConstraint*>(j.dry_friction.get()),
-                                     static_cast<btMultiBodyConstraint*>(j.limit.get())})
+    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
       if (c)
         dynamics->removeMultiBodyConstraint(c);
   }
@@ -612,10 +617,35 @@ void applyLaw(MovableJoint& j, const btMultiBody& mb, const EffortLaw& law, doub
     j.explicit_effort = clampAbs(law.feedforward, effort_limit);
     return;
   }
+  // The joint's own damping joins the law: effort - c*qd' folds into the same row.
   double q = mb.getJointPos(j.link);
-  double gain = law.stiffness * dt + law.damping;  // effort per unit of end-of-step velocity error
+  double gain = law.stiffness * dt + law.damping + j.damping;  // effort per unit of end-of-step velocity error
   double target = (law.feedforward + law.stiffness * (law.position_target - q) + law.damping * law.velocity_target) / gain;
   j.drive->drive(target, gain * dt, effort_limit * dt);
+}
+
+// The actuator's effort in the last step (the joint's own damping, folded into a soft drive, is not the actuator's).
+double actuatorEffort(const MovableJoint& j, double velocity, double dt)
+{
+  double effort = j.explicit_effort + j.drive->appliedImpulse() / dt;
+  return j.drive->soft() ? effort + j.damping * velocity : effort;
+}
+
+// One-sided rows keep a joint within [lower, upper], only while it is about to reach a limit; a
+// joint already past one is pushed back by a fifth of the overlap per step.
+void limitRows(MovableJoint& j, double q, double qd, double dt)
+{
+  constexpr double kMargin = 1e-3, kRecovery = 0.2;
+  const double next = q + qd * dt, reach = kMargin + std::abs(qd) * dt;
+  const double below = q - j.limits.lower, above = j.limits.upper - q;
+  if (next - j.limits.lower < reach)
+    j.lower_limit->bound((below >= 0 ? -below : -below * kRecovery) / dt, true);
+  else
+    j.lower_limit->disable();
+  if (j.limits.upper - next < reach)
+    j.upper_limit->bound((above >= 0 ? above : above * kRecovery) / dt, false);
+  else
+    j.upper_limit->disable();
 }
 
 void driveRigid(MovableJoint& j, double target_velocity, double dt)
@@ -644,13 +674,7 @@ void detail::JointLayer::apply(Robot::Internals& r, double dt)
   const bool e_stop = r.e_stop;
   const btMultiBody& mb = *r.multibody;
   for (MovableJoint& j : joints)
-  {
     j.explicit_effort = 0.0;
-    if (j.damper)
-      j.damper->drive(0.0, j.damping * dt, kInf);
-    if (j.dry_friction)
-      j.dry_friction->drive(0.0, kInf, j.friction * dt);
-  }
   for (size_t hi = 0; hi < handles.size(); ++hi)
   {
     JointHandle& h = handles[hi];
@@ -694,9 +718,27 @@ void detail::JointLayer::apply(Robot::Internals& r, double dt)
       }
     }
   }
+  // The joints' passive dynamics: damping (where no drive carries it), dry friction, limits.
   for (MovableJoint& j : joints)
-    if (j.explicit_effort != 0.0)
-      r.multibody->addJointTorque(j.link, btScalar(j.explicit_effort));
+  {
+    const double q = mb.getJointPos(j.link), qd = mb.getJointVel(j.link);
+    double torque = j.explicit_effort;
+    if (j.damping > 0 && !j.drive->enabled())
+    {
+      if (j.damper)
+        j.damper->drive(0.0, j.damping * dt, kInf);
+      else
+        torque -= j.damping * qd;
+    }
+    else if (j.damper)
+      j.damper->disable();
+    if (j.dry_friction)
+      j.dry_friction->drive(0.0, kInf, j.friction * dt);
+    if (j.limits.has_position)
+      limitRows(j, q, qd, dt);
+    if (torque != 0.0)
+      r.multibody->addJointTorque(j.link, btScalar(torque));
+  }
 }
 
 void detail::JointLayer::read(Robot::Internals& r, double dt)
@@ -720,7 +762,7 @@ void detail::JointLayer::read(Robot::Internals& r, double dt)
     const MovableJoint& j = joints[handle_joint[hi]];
     h.position_ = mb.getJointPos(j.link);
     h.velocity_ = mb.getJointVel(j.link);
-    h.effort_ = j.explicit_effort + j.drive->appliedImpulse() / dt;
+    h.effort_ = actuatorEffort(j, h.velocity_, dt);
     if (!h.pid())
       continue;
     double error_after = h.interface() == JointInterface::Velocity ? h.active_target_ - h.velocity_
@@ -858,7 +900,7 @@ bool Robot::jointState(const std::string& joint, double& position, double& veloc
   const MovableJoint& j = in_->joints[it->second];
   position = in_->multibody->getJointPos(j.link);
   velocity = in_->multibody->getJointVel(j.link);
-  effort = j.explicit_effort + j.drive->appliedImpulse() / in_->world->step_s;
+  effort = actuatorEffort(j, velocity, in_->world->step_s);
   return true;
 }
 
