@@ -160,9 +160,26 @@ private:
   int64_t publish_period_ns_ = 0, last_publish_ns_ = 0;
 };
 
+// A controller with a <controller>/command topic (std_msgs/Float64).
+class CommandedController : public Controller
+{
+public:
+  bool hasCommand() const override { return true; }
+  bool setCommand(double value) override
+  {
+    if (!std::isfinite(value))
+      return false;
+    command_ = value;
+    return true;
+  }
+
+protected:
+  double command_ = 0.0;
+};
+
 // ------------------------------------------------------------------ forward command controllers
 
-class ForwardCommandController : public Controller
+class ForwardCommandController : public CommandedController
 {
 public:
   explicit ForwardCommandController(JointInterface iface) : interface_(iface) {}
@@ -182,19 +199,10 @@ public:
 
   void update(int64_t, double) override { handle_->setCommand(command_); }
 
-  bool hasCommand() const override { return true; }
-  bool setCommand(double value) override
-  {
-    if (!std::isfinite(value))
-      return false;
-    command_ = value;
-    return true;
-  }
 
 private:
   JointInterface interface_;
   JointHandle* handle_ = nullptr;
-  double command_ = 0.0;
 };
 
 // ------------------------------------------------------------------ effort PID controllers
@@ -202,7 +210,7 @@ private:
 // effort_controllers/JointPositionController and JointVelocityController. The PID is control_toolbox's,
 // applied through the joint's implicit effort law (see Pid::implicitPositionLaw), which keeps the
 // tutorial's gains stable at the steering hinges' tiny inertia.
-class EffortPidController : public Controller
+class EffortPidController : public CommandedController
 {
 public:
   explicit EffortPidController(bool position) : position_(position) {}
@@ -272,14 +280,6 @@ public:
     ++loop_count_;
   }
 
-  bool hasCommand() const override { return true; }
-  bool setCommand(double value) override
-  {
-    if (!std::isfinite(value))
-      return false;
-    command_ = value;
-    return true;
-  }
 
 private:
   double limited(double target) const
@@ -295,7 +295,7 @@ private:
   bool position_;
   JointHandle* handle_ = nullptr;
   Pid pid_;
-  double command_ = 0.0, last_target_ = 0.0;
+  double last_target_ = 0.0;
   bool law_applied_ = false;
   uint64_t loop_count_ = 0;
 };
