@@ -5,6 +5,9 @@ Measured side by side in one run on this machine (`make bench`):
                    held by a stiffness 4 / damping 1 effort law) in an empty world, Python calling
                    `world.step()` once per step
   ours, batched    the same car, one `world.step(N)` call
+  ours, controllers  the full plant: the tutorial's five controllers (config/smart_control_config.yaml)
+                   spawned in the plant's controller manager and commanded like cmdvel2gazebo.py does,
+                   Python calling `world.step()` once per step
   mujoco           the same car in MJCF (bench/tianracer_mjcf.xml), `mujoco.mj_step` once per step
   pybullet         PyBullet's bundled racecar (racecar/racecar.urdf on plane.urdf, DIRECT mode), rear
                    wheels driven, front wheels free, steering held at 0, `stepSimulation` once per step
@@ -53,7 +56,10 @@ REAR_WHEELS = ('left_rear_wheel_joint', 'right_rear_wheel_joint')
 STEERING = ('left_steering_hinge_joint', 'right_steering_hinge_joint')
 # steps/s ratios, each taken within a round; the last shows what the per-step Python calls cost
 RATIOS = (('ours_per_step', 'mujoco'), ('ours_per_step', 'pybullet'), ('ours_batched', 'mujoco'),
-          ('ours_batched', 'pybullet'), ('ours_per_step', 'ours_batched'))
+          ('ours_batched', 'pybullet'), ('ours_controllers', 'mujoco'), ('ours_controllers', 'pybullet'),
+          ('ours_per_step', 'ours_batched'))
+TUTORIAL_CONTROLLERS = ('joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
+                        'front_right_steering_position_controller', 'front_left_steering_position_controller')
 
 
 def tianracer_urdf():
@@ -66,13 +72,20 @@ def tianracer_urdf():
 class OurCar:
     """The Tianracer in the Bullet plant, driving straight."""
 
-    def __init__(self, urdf, world_sdf=None):
+    def __init__(self, urdf, world_sdf=None, controllers=False):
         self.world = bullet_plant.World.from_sdf(world_sdf) if world_sdf else bullet_plant.World()
         self.world.echo = False
         with open(CONFIG_YAML) as f:
             self.world.load_params(yaml.safe_load(f))
         self.robot = self.world.spawn(urdf, 'tianracer', pose=(0, 0, 0, 0, 0, 0))
         wheel_rate = SPEED / ackermann_geometry(urdf).wheel_radius
+        if controllers:
+            manager = self.robot.controller_manager
+            manager.spawn(list(TUTORIAL_CONTROLLERS))
+            self.world.step(2)  # the switch happens in the control loop
+            for name in ('rear_left_velocity_controller', 'rear_right_velocity_controller'):
+                manager.command(name, wheel_rate)
+            return
         for joint in REAR_WHEELS:
             self.robot.set_command(joint, wheel_rate)
         for joint in STEERING:
@@ -189,11 +202,12 @@ def main():
         track_sdf = f.read()
     scanning_car, silent_car = OurCar(urdf, track_sdf), OurCar(urdf, track_sdf)
     scanning_car.robot.enable_sensor('lidar', True)
-    ours_per_step, ours_batched = OurCar(urdf), OurCar(urdf)
+    ours_per_step, ours_batched, ours_controllers = OurCar(urdf), OurCar(urdf), OurCar(urdf, controllers=True)
     mujoco_car, pybullet_car = MujocoCar(), PybulletRacecar()
     measurements = {  # name -> (car, how it is stepped)
         'ours_per_step': (ours_per_step, ours_per_step.step_per_call),
         'ours_batched': (ours_batched, ours_batched.step_batched),
+        'ours_controllers': (ours_controllers, ours_controllers.step_per_call),
         'mujoco': (mujoco_car, mujoco_car.step_per_call),
         'pybullet': (pybullet_car, pybullet_car.step_per_call),
     }
