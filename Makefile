@@ -15,7 +15,7 @@ COMPAT_PACKAGES := $(notdir $(wildcard compat/*))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim bench clean
+.PHONY: help setup build test sim bench figures clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
@@ -23,6 +23,7 @@ help:
 	@echo "make setup  install what is missing (apt and pip); quiet when nothing is"
 	@echo "make build  build the catkin workspace in $(WS)/"
 	@echo "make bench  build, time the plant against MuJoCo and PyBullet (installs them from PyPI if missing)"
+	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
 	@echo "make clean  remove $(WS)/"
 
 setup:
@@ -48,6 +49,9 @@ bench: build
 	@$(PYTHON) -c 'import mujoco, pybullet' 2>/dev/null || { echo "bench: installing mujoco and pybullet from PyPI for $(PYTHON)"; \
 		$$([ "$$(id -u)" -eq 0 ] || echo sudo) $(PYTHON) -m pip install -q --root-user-action=ignore --break-system-packages mujoco pybullet; }
 	@$(ROS_ENV) $(PYTHON) bench/plant_vs_peers.py
+
+figures: build
+	@$(ROS_ENV) $(PYTHON) bench/plant_figures.py
 
 clean:
 	rm -rf $(WS)
