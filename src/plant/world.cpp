@@ -7,6 +7,7 @@
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include "internals.h"
+#include "wheel_contact.h"
 
 namespace bullet_plant
 {
@@ -50,6 +51,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
 
   w.collision_config.reset(new btDefaultCollisionConfiguration());
   w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
+  registerWheelContact(*w.dispatcher);
   w.broadphase.reset(new btDbvtBroadphase());
   w.solver.reset(new btMultiBodyConstraintSolver());
   w.dynamics.reset(new btMultiBodyDynamicsWorld(w.dispatcher.get(), w.broadphase.get(), w.solver.get(),
