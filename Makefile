@@ -11,6 +11,7 @@ PYTHON := /usr/bin/python3
 # The catkin workspace lives in this ignored folder; its src/ links this package and compat/*.
 WS := .ws
 COMPAT_PACKAGES := $(notdir $(wildcard compat/*))
+PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 # Everything ROS runs on loopback only.
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
@@ -30,10 +31,13 @@ setup:
 	@bash tools/setup.sh
 
 build: setup
-	@mkdir -p $(WS)/src
-	@ln -sfn ../.. $(WS)/src/tianracer_description
+	@# The package is linked item by item, leaving out compat/ and $(WS)/ itself: a link to the whole
+	@# folder would make a loop that rosrun's `find -L` walks into.
+	@[ ! -L $(WS)/src/tianracer_description ] || rm $(WS)/src/tianracer_description
+	@mkdir -p $(WS)/src/tianracer_description
+	@for item in $(PACKAGE_ITEMS); do ln -sfn ../../../$$item $(WS)/src/tianracer_description/$$item; done
 	@for pkg in $(COMPAT_PACKAGES); do ln -sfn ../../compat/$$pkg $(WS)/src/$$pkg; done
-	@find $(WS)/src -maxdepth 1 -xtype l -delete
+	@find $(WS)/src $(WS)/src/tianracer_description -maxdepth 1 -xtype l -delete
 	@cd $(WS) && catkin_make -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release \
 		> build.log 2>&1 || { tail -n 60 build.log; echo "make build: catkin_make failed; full log in $(WS)/build.log"; exit 1; }
 	@echo "built $(WS): source $(WS)/devel/setup.bash"

@@ -63,6 +63,8 @@ public:
   // The Float64 on <controller>/command; false for a controller without one or a non-finite value.
   virtual bool setCommand(double value) { return false; }
   virtual bool hasCommand() const { return false; }
+  // Whether it reports control_msgs/JointControllerState on <controller>/state.
+  virtual bool hasState() const { return false; }
   // Samples produced since the last take (joint_states for the joint state controller, state for
   // the PID controllers); the latest is kept for readers that only look.
   std::vector<JointStateSample> takeJointStates();

@@ -215,6 +215,8 @@ class EffortPidController : public CommandedController
 public:
   explicit EffortPidController(bool position) : position_(position) {}
 
+  bool hasState() const override { return true; }
+
   bool init(ControllerContext& c) override
   {
     std::string joint;

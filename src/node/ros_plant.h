@@ -1,0 +1,69 @@
+// The plant as a ROS node: what gazebo_ros and gazebo_ros_control offer, around bullet_plant::World.
+// ROS callbacks never touch the world: they queue work that the simulation thread runs between
+// steps, and wait for its result when they must answer.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <ros/ros.h>
+
+#include "bullet_plant/world.h"
+
+namespace bullet_plant
+{
+class RosPlant
+{
+public:
+  RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  ~RosPlant();
+  // The simulation loop; returns when ROS shuts down.
+  void run();
+
+private:
+  struct RobotInterface;  // services, topics and publishers of one robot
+
+  // Runs `work` on the simulation thread and waits for its result.
+  template <class Result>
+  Result onSimThread(std::function<Result()> work);
+  void post(std::function<void()> work);
+  void runQueuedWork();
+
+  void stepAndPublish();
+  void publishClock();
+  void publishStatus();
+  void pace();
+  void applyPaused(bool paused);
+
+  bool spawn(const std::string& name, const std::string& urdf, const std::string& ns, const urdf::Pose& pose,
+             const std::map<std::string, double>& joints, std::string& message);
+  bool remove(const std::string& name, std::string& message);
+  void copyParams(const std::string& key);
+
+  ros::NodeHandle nh_, private_nh_;
+  std::unique_ptr<World> world_;
+  std::map<std::string, std::unique_ptr<RobotInterface>> robots_;
+  std::vector<ros::ServiceServer> simulator_services_;
+  ros::Publisher clock_pub_;
+
+  std::mutex queue_mutex_;
+  std::condition_variable queue_cv_;
+  std::deque<std::function<void()>> queue_;
+
+  std::atomic<bool> paused_{false};
+  double real_time_factor_ = 1.0;
+  int64_t clock_period_ns_ = 0, last_clock_ns_ = -1;
+  ros::WallTime pace_start_wall_;
+  int64_t pace_start_sim_ns_ = 0;
+  ros::WallTime last_status_;
+  int64_t status_start_sim_ns_ = 0;
+};
+
+}  // namespace bullet_plant
