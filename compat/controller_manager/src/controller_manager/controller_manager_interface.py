@@ -11,6 +11,7 @@ controller manager that is busy, paused or gone.
 """
 import sys
 import threading
+import time
 
 import rospy
 from controller_manager_msgs.srv import (ListControllerTypes, ListControllerTypesRequest,
@@ -39,13 +40,14 @@ class ServiceTimeout(rospy.ServiceException):
     """The controller manager did not answer in time (busy, paused simulation, or hung)."""
 
 
-def call_with_timeout(proxy, request, timeout):
-    """proxy.call(request), waiting at most timeout seconds (wall clock) for the answer.
+def call_with_timeout(proxy, request, timeout=None):
+    """proxy.call(request), waiting at most timeout seconds (wall clock) for the answer, and with
+    no timeout (None) as long as it takes but no longer than the node runs.
 
     rospy service calls have no timeout: a manager that accepted the connection but never answers
-    would keep the caller forever. The call runs in a daemon thread that is abandoned if it
-    overstays, so the process can still exit. Any failure is raised as rospy.ServiceException
-    (ServiceTimeout when time ran out).
+    would keep the caller forever, even after Ctrl-C. The call runs in a daemon thread that is
+    abandoned if it overstays, so the process can still exit. Any failure is raised as
+    rospy.ServiceException (ServiceTimeout when time ran out).
     """
     outcome = {}
 
@@ -57,9 +59,15 @@ def call_with_timeout(proxy, request, timeout):
 
     worker = threading.Thread(target=call, name='call %s' % proxy.resolved_name, daemon=True)
     worker.start()
-    worker.join(max(timeout, 0.0))
-    if worker.is_alive():
-        raise ServiceTimeout('%s did not answer within %.2g s' % (proxy.resolved_name, timeout))
+    deadline = None if timeout is None else time.monotonic() + timeout
+    while worker.is_alive():
+        if rospy.core.is_shutdown():
+            raise rospy.ServiceException('gave up waiting for %s: the node is shut down'
+                                         % proxy.resolved_name)
+        wait = 0.05 if deadline is None else min(0.05, deadline - time.monotonic())
+        if wait <= 0:
+            raise ServiceTimeout('%s did not answer within %.2g s' % (proxy.resolved_name, timeout))
+        worker.join(wait)
     if 'error' in outcome:
         error = outcome['error']
         if isinstance(error, rospy.ServiceException):

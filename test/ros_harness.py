@@ -1,0 +1,120 @@
+"""Real ROS processes for the integration tests: a ROS master on a free loopback port, roslaunch,
+rosrun and the command-line tools, each test with its own master. rospy binds a process to one
+master, so the tests talk to ROS through subprocesses (the tools, or short rospy snippets)."""
+import json
+import os
+import signal
+import socket
+import subprocess
+import tempfile
+import textwrap
+import time
+
+import yaml
+
+PYTHON = '/usr/bin/python3'
+
+
+def free_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+class Process:
+    """A background process in its own process group, stopped through its own pid."""
+
+    def __init__(self, args, env, log_path):
+        self.log_path = log_path
+        self._log = open(log_path, 'w')
+        self.popen = subprocess.Popen(args, env=env, stdout=self._log, stderr=subprocess.STDOUT,
+                                      stdin=subprocess.DEVNULL, start_new_session=True)
+
+    @property
+    def pid(self):
+        return self.popen.pid
+
+    def interrupt(self):
+        """SIGINT to the process group (as Ctrl-C in a terminal)."""
+        if self.popen.poll() is None:
+            os.killpg(self.popen.pid, signal.SIGINT)
+
+    def wait(self, timeout):
+        try:
+            return self.popen.wait(timeout)
+        except subprocess.TimeoutExpired:
+            return None
+
+    def stop(self, timeout=10.0):
+        if self.popen.poll() is None:
+            self.interrupt()
+            if self.wait(timeout) is None:
+                os.killpg(self.popen.pid, signal.SIGKILL)
+                self.popen.wait(5)
+        self._log.close()
+
+    def log(self):
+        self._log.flush()
+        with open(self.log_path, errors='replace') as f:
+            return f.read()
+
+
+class RosSystem:
+    """A ROS master of its own and the processes started against it."""
+
+    def __init__(self, workdir):
+        self.workdir = workdir
+        self.port = free_port()
+        self.env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % self.port, ROS_IP='127.0.0.1',
+                        ROS_HOME=os.path.join(workdir, 'ros_home'), PYTHONUNBUFFERED='1')
+        self.env.pop('ROS_HOSTNAME', None)
+        self.processes = []
+        self.master = self.start(['roscore', '-p', str(self.port)], 'roscore')
+        self.wait_until(lambda: self.run(['rosparam', 'list'], timeout=5).returncode == 0, 15, 'the ROS master')
+
+    def start(self, args, name):
+        process = Process(args, self.env, os.path.join(self.workdir, name + '.log'))
+        self.processes.append(process)
+        return process
+
+    def run(self, args, timeout=30, input=None):
+        return subprocess.run(args, env=self.env, capture_output=True, text=True, timeout=timeout, input=input)
+
+    def python(self, code, timeout=30):
+        """Runs a rospy snippet against this master; it prints one JSON value, which is returned."""
+        result = self.run([PYTHON, '-c', textwrap.dedent(code)], timeout=timeout)
+        assert result.returncode == 0, result.stderr
+        return json.loads(result.stdout.strip().splitlines()[-1])
+
+    def service(self, name, request_yaml='{}', timeout=15):
+        result = self.run(['rosservice', 'call', name, request_yaml], timeout=timeout)
+        assert result.returncode == 0, result.stderr + result.stdout
+        return yaml.safe_load(result.stdout)
+
+    @staticmethod
+    def wait_until(condition, timeout, what):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if condition():
+                return
+            time.sleep(0.1)
+        raise AssertionError('timed out after %g s waiting for %s' % (timeout, what))
+
+    def close(self):
+        for process in reversed(self.processes):
+            process.stop()
+
+
+def tianracer_plant(ros, urdf_path, world=None, paused=False):
+    """The plant with the car spawned and the tutorial's YAML loaded (no controllers yet)."""
+    args = ['roslaunch', 'tianracer_description', 'empty_world.launch', 'gui:=false', 'paused:=%s' % str(paused).lower()]
+    if world:
+        args.append('world_name:=' + world)
+    plant = ros.start(args, 'plant')
+    ros.run(['rosparam', 'set', '/robot_description', '--textfile', urdf_path])
+    ros.run(['rosparam', 'load', os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                              'config', 'smart_control_config.yaml')])
+    spawn = ros.run(['rosrun', 'tianracer_description', 'spawn_model', '-urdf', '-param', 'robot_description',
+                     '-model', 'tianracer'], timeout=60)
+    assert spawn.returncode == 0, spawn.stdout + spawn.stderr + plant.log()
+    return plant
