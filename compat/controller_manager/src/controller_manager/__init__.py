@@ -1,1 +1,1 @@
-"""Python side of the controller_manager command-line tools (spawner, unspawner, controller_manager)."""
+"""controller_manager command-line tools: spawner, unspawner, controller_manager."""

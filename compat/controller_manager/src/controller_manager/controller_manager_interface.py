@@ -1,4 +1,4 @@
-"""Calls the controller manager's ROS services (controller_manager_msgs), as ros_control's module does.
+"""Calls the controller manager's ROS services (controller_manager_msgs), like ros_control's module.
 
 The functions named like ros_control's (load_controller, unload_controller, start_controller,
 stop_controller, list_controllers, list_controller_types, reload_libraries) serve the
@@ -29,7 +29,8 @@ def service_name(service, namespace=''):
     """The name of one of the manager's services, e.g. 'load_controller'.
 
     With no namespace the name is relative ('controller_manager/load_controller') and resolves
-    against the caller's namespace, as in ros_control; with one it is NAMESPACE/controller_manager/...
+    against the caller's namespace, as in ros_control; with one it is
+    NAMESPACE/controller_manager/SERVICE.
     """
     if not namespace:
         return 'controller_manager/' + service
@@ -94,7 +95,8 @@ def _call(service, service_class, request):
 
 
 def _report_failure(service, error):
-    sys.stderr.write('Calling %s failed: %s\n' % (rospy.names.resolve_name(service_name(service)), error))
+    resolved_name = rospy.names.resolve_name(service_name(service))
+    sys.stderr.write('Calling %s failed: %s\n' % (resolved_name, error))
 
 
 def list_controller_types():
