@@ -16,7 +16,7 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim bench figures clean
+.PHONY: help setup build test sim bench bench-ros figures clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
@@ -24,6 +24,7 @@ help:
 	@echo "make setup  install what is missing (apt and pip); quiet when nothing is"
 	@echo "make build  build the catkin workspace in $(WS)/"
 	@echo "make bench  build, time the plant against MuJoCo and PyBullet (installs them from PyPI if missing)"
+	@echo "make bench-ros  build, time the ROS node: launch to running, real time factor, CPU, fastest"
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
 	@echo "make clean  remove $(WS)/"
 
@@ -53,6 +54,9 @@ bench: build
 	@$(PYTHON) -c 'import mujoco, pybullet' 2>/dev/null || { echo "bench: installing mujoco and pybullet from PyPI for $(PYTHON)"; \
 		$$([ "$$(id -u)" -eq 0 ] || echo sudo) $(PYTHON) -m pip install -q --root-user-action=ignore --break-system-packages mujoco pybullet; }
 	@$(ROS_ENV) $(PYTHON) bench/plant_vs_peers.py
+
+bench-ros: build
+	@$(ROS_ENV) $(PYTHON) bench/ros_plant_bench.py
 
 figures: build
 	@$(ROS_ENV) $(PYTHON) bench/plant_figures.py

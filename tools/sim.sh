@@ -1,15 +1,12 @@
 #!/usr/bin/env bash
-# `make sim`: starts the simulation. Until the plant node and launch files exist, it checks the
-# car's model and says what is still to come.
+# `make sim`: the tutorial's tianracer.launch, headless, with a note on how to drive.
 set -euo pipefail
-urdf=$(mktemp --suffix=.urdf)
-trap 'rm -f "$urdf"' EXIT
-"$(rospack find xacro)/xacro" --inorder "$(rospack find tianracer_description)/urdf/tianracer_description.xacro" > "$urdf"
-check_urdf "$urdf"
-cat <<'MSG'
-
-The car's model builds and parses. Not built yet: the Bullet plant (launch/empty_world.launch),
-the tutorial's launch files (launch/tianracer.launch, launch/control.launch) and the
-controller_manager scripts; `make sim` will start `roslaunch tianracer_description
-tianracer.launch` once they exist.
+cat <<MSG
+Starting the Tianracer simulation (roslaunch tianracer_description tianracer.launch gui:=false).
+In another terminal:
+    cd '$(pwd)'; source .ws/devel/setup.bash; export ROS_IP=127.0.0.1
+    rostopic pub /tianracer/cmd_vel -r 10 geometry_msgs/Twist "{linear: {x: 1.0}, angular: {z: 1.0}}"
+    rosservice call /tianracer/controller_manager/list_controllers
+Ctrl-C here stops it.
 MSG
+exec roslaunch tianracer_description tianracer.launch gui:=false headless:=true "$@"

@@ -1,0 +1,123 @@
+"""The plant as a ROS node, timed (`make bench-ros`): what issue 5 asks of it.
+
+  launch -> running   wall time from starting `roslaunch tianracer_description tianracer.launch
+                      gui:=false` until list_controllers shows the tutorial's five running
+  real time factor    simulated / wall time over WINDOW s at real time, with the five controllers
+                      running, the car driving a circle (cmd_vel at 10 Hz) and the lidar subscribed
+  CPU                 the plant process's user+system time over that window, as a share of one core
+  fastest             real time factor with real_time_factor:=0 (as fast as possible), same load
+
+Each figure is the median of ROUNDS rounds, each with its own ROS master. Uses the test harness
+(test/ros_harness.py): real roscore, roslaunch and tools on loopback.
+"""
+import os
+import statistics
+import sys
+import tempfile
+import time
+
+BENCH = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(BENCH), 'test'))
+from ros_harness import RosSystem  # noqa: E402
+
+ROUNDS = 3
+WINDOW = 60.0        # s of wall time for the real time factor at real time
+FAST_WINDOW = 10.0   # s of wall time as fast as possible
+CONTROLLERS = 5
+
+LOAD_PROBE = """
+import json, threading, time, rospy
+from geometry_msgs.msg import Twist
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import LaserScan
+rospy.init_node('bench_probe', anonymous=True)
+clock = []
+rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()))
+scans = []
+rospy.Subscriber('/tianracer/scan', LaserScan, lambda m: scans.append(1))
+drive = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
+def keep_driving():
+    twist = Twist()
+    twist.linear.x, twist.angular.z = 1.0, 0.5
+    while not rospy.is_shutdown():
+        drive.publish(twist)
+        time.sleep(0.1)
+threading.Thread(target=keep_driving, daemon=True).start()
+time.sleep(2.0)
+start_wall, start_sim, start_scans = time.monotonic(), clock[-1], len(scans)
+time.sleep({window})
+wall, sim = time.monotonic() - start_wall, clock[-1] - start_sim
+print(json.dumps(dict(rtf=sim / wall, scans_per_sim_s=(len(scans) - start_scans) / sim)))
+"""
+
+
+def plant_pid(launch_pid):
+    """The bullet_plant process that a roslaunch process started."""
+    for entry in os.listdir('/proc'):
+        if not entry.isdigit():
+            continue
+        try:
+            with open('/proc/%s/stat' % entry) as f:
+                fields = f.read().rsplit(')', 1)[1].split()
+            with open('/proc/%s/comm' % entry) as f:
+                name = f.read().strip()
+        except OSError:
+            continue
+        if int(fields[1]) == launch_pid and name == 'bullet_plant':
+            return int(entry)
+    raise RuntimeError('no bullet_plant process under roslaunch %d' % launch_pid)
+
+
+def cpu_seconds(pid):
+    with open('/proc/%d/stat' % pid) as f:
+        fields = f.read().rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+
+
+def running_controllers(ros):
+    result = ros.run(['rosservice', 'call', '/tianracer/controller_manager/list_controllers'], timeout=10)
+    return result.stdout.count('state: "running"') if result.returncode == 0 else 0
+
+
+def one_round(real_time_factor):
+    with tempfile.TemporaryDirectory() as workdir:
+        ros = RosSystem(workdir)
+        try:
+            args = ['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false']
+            if real_time_factor is not None:
+                args.append('real_time_factor:=%g' % real_time_factor)
+            start = time.monotonic()
+            launch = ros.start(args, 'launch')
+            ros.wait_until(lambda: running_controllers(ros) == CONTROLLERS, 60, 'the five controllers')
+            startup = time.monotonic() - start
+            pid = plant_pid(launch.pid)
+            window = WINDOW if real_time_factor is None else FAST_WINDOW
+            cpu_before, wall_before = cpu_seconds(pid), time.monotonic()
+            load = ros.python(LOAD_PROBE.format(window=window), timeout=window + 60)
+            cpu = (cpu_seconds(pid) - cpu_before) / (time.monotonic() - wall_before)
+            return dict(startup=startup, rtf=load['rtf'], cpu=cpu, scans_per_sim_s=load['scans_per_sim_s'])
+        finally:
+            ros.close()
+
+
+def main():
+    real_time, fastest = [], []
+    for r in range(ROUNDS):
+        real_time.append(one_round(None))
+        fastest.append(one_round(0))
+        print('round %d: launch->running %.2f s, rtf %.4f, plant cpu %.1f %% of a core, scans %.1f/sim s; '
+              'fastest rtf %.1f (cpu %.0f %%)' % (r + 1, real_time[-1]['startup'], real_time[-1]['rtf'],
+                                                  100 * real_time[-1]['cpu'], real_time[-1]['scans_per_sim_s'],
+                                                  fastest[-1]['rtf'], 100 * fastest[-1]['cpu']), flush=True)
+
+    def median(rounds, key):
+        return statistics.median(r[key] for r in rounds)
+    print('\nmedians over %d rounds (targets in brackets):' % ROUNDS)
+    print('  launch -> five controllers running  %.2f s      [<= 3 s]' % median(real_time + fastest, 'startup'))
+    print('  real time factor over %g s          %.4f       [0.99 .. 1.01]' % (WINDOW, median(real_time, 'rtf')))
+    print('  plant CPU at real time              %.1f %% of a core [< 20 %%]' % (100 * median(real_time, 'cpu')))
+    print('  fastest real time factor            %.1f        [>= 20]' % median(fastest, 'rtf'))
+
+
+if __name__ == '__main__':
+    main()
