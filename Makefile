@@ -16,11 +16,12 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim bench bench-ros figures clean
+.PHONY: help setup build test sim demo bench bench-ros figures clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
 	@echo "make test   install what is missing, build, run the whole test suite (PYTEST_ARGS=...)"
+	@echo "make demo   build, drive a figure-eight headless, print the figures, write figure_eight.png"
 	@echo "make setup  install what is missing (apt and pip); quiet when nothing is"
 	@echo "make build  build the catkin workspace in $(WS)/"
 	@echo "make bench  build, time the plant against MuJoCo and PyBullet (installs them from PyPI if missing)"
@@ -54,6 +55,9 @@ bench: build
 	@$(PYTHON) -c 'import mujoco, pybullet' 2>/dev/null || { echo "bench: installing mujoco and pybullet from PyPI for $(PYTHON)"; \
 		$$([ "$$(id -u)" -eq 0 ] || echo sudo) $(PYTHON) -m pip install -q --root-user-action=ignore --break-system-packages mujoco pybullet; }
 	@$(ROS_ENV) $(PYTHON) bench/plant_vs_peers.py
+
+demo: build
+	@$(ROS_ENV) $(PYTHON) tools/demo.py
 
 bench-ros: build
 	@$(ROS_ENV) $(PYTHON) bench/ros_plant_bench.py

@@ -24,7 +24,7 @@ APT_PACKAGES=(
   libconsole-bridge-dev
   pybind11-dev python3-dev
   # Python for nodes and tests
-  python3-numpy python3-yaml python3-pytest python3-pip
+  python3-numpy python3-yaml python3-pytest python3-pip python3-matplotlib
 )
 # xacro from PyPI (Debian has no xacro); compat/xacro runs it with rospack's $(find).
 PIP_PACKAGES=(xacro==2.1.1)

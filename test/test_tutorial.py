@@ -1,0 +1,159 @@
+"""The tutorial end to end on the plant: tianracer.launch, the rostopic pub line, the dead man's
+switch of cmdvel2gazebo.py, and teleop.py in a pseudo-terminal. Each test has its own ROS master."""
+import math
+import os
+import pty
+import subprocess
+import termios
+import time
+
+import pytest
+
+from ros_harness import RosSystem
+from tianracer_description.ackermann import max_ideal_steering
+from tianracer_description.urdf_geometry import ackermann_geometry
+
+TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
+                        'front_right_steering_position_controller', 'front_left_steering_position_controller']
+TOPICS = ['/tianracer/cmd_vel', '/tianracer/rear_left_velocity_controller/command',
+          '/tianracer/rear_right_velocity_controller/command',
+          '/tianracer/front_left_steering_position_controller/command',
+          '/tianracer/front_right_steering_position_controller/command',
+          '/tianracer/joint_states', '/tianracer/scan', '/tianracer/odom', '/tf', '/clock']
+
+
+@pytest.fixture
+def tutorial(tmp_path):
+    """roslaunch tianracer_description tianracer.launch gui:=false, once the five controllers run."""
+    ros = RosSystem(str(tmp_path))
+    started = time.monotonic()
+    launch = ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false'], 'tianracer_launch')
+    ros.python("""
+        import json, time, rospy
+        from controller_manager_msgs.srv import ListControllers
+        name = '/tianracer/controller_manager/list_controllers'
+        while True:
+            try:
+                rospy.wait_for_service(name, 0.05)
+                if [c.state for c in rospy.ServiceProxy(name, ListControllers)().controller].count('running') == 5:
+                    break
+            except (rospy.ROSException, rospy.ServiceException):
+                pass
+            time.sleep(0.02)
+        print(json.dumps(True))
+    """, timeout=60)
+    ros.startup_seconds = time.monotonic() - started
+    ros.launch = launch
+    yield ros
+    ros.close()
+
+
+def test_tianracer_launch_brings_up_the_tutorials_system(tutorial):
+    assert tutorial.startup_seconds < 5 + 1.5, 'within 5 s of wall time (plus the probe\'s own start)'
+    topics = tutorial.run(['rostopic', 'list']).stdout.split()
+    for topic in TOPICS:
+        assert topic in topics
+    assert 'Loaded controllers' in tutorial.launch.log() or 'running' in tutorial.run(
+        ['rosrun', 'controller_manager', 'controller_manager', 'list']).stdout
+
+
+DRIVE_AND_STOP = """
+    import json, math, time, rospy
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+    from std_msgs.msg import Float64
+    rospy.init_node('tutorial_probe', anonymous=True)
+    odom, wheel = [], []
+    rospy.Subscriber('/tianracer/odom', Odometry, lambda m: odom.append(
+        (m.header.stamp.to_sec(), m.pose.pose.position.x, m.pose.pose.position.y, m.twist.twist.linear.x)))
+    rospy.Subscriber('/tianracer/rear_left_velocity_controller/command', Float64,
+                     lambda m: wheel.append((rospy.get_rostime().to_sec(), m.data)))
+    pub = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
+    time.sleep(1.0)
+    twist = Twist()
+    twist.linear.x, twist.angular.z = 1.0, 1.0   # the tutorial's rostopic pub line, at 10 Hz
+    start = rospy.get_rostime().to_sec()
+    rate = rospy.Rate(10)
+    while rospy.get_rostime().to_sec() - start < 8.0:
+        pub.publish(twist)
+        last_twist = rospy.get_rostime().to_sec()
+        rate.sleep()
+    circle = [(x, y) for t, x, y, v in odom if start + 3.0 <= t <= last_twist]
+    time.sleep(2.5)
+    print(json.dumps(dict(circle=circle, last_twist=last_twist, wheel=wheel, odom_after=odom[-1])))
+"""
+
+
+def fitted_radius(points):
+    import numpy as np
+    p = np.array(points)
+    A = np.column_stack([2 * p[:, 0], 2 * p[:, 1], np.ones(len(p))])
+    cx, cy, c = np.linalg.lstsq(A, (p ** 2).sum(axis=1), rcond=None)[0]
+    return math.sqrt(c + cx * cx + cy * cy)
+
+
+def test_rostopic_pub_drives_the_circle_of_the_geometry_and_the_car_stops(tutorial, urdf_xml):
+    run = tutorial.python(DRIVE_AND_STOP, timeout=60)
+    g = ackermann_geometry(urdf_xml)
+    steering = max_ideal_steering(g.wheelbase, g.front_track, g.max_steer)  # angular.z 1.0 is clamped
+    expected = g.wheelbase / math.tan(steering)
+    assert len(run['circle']) > 100
+    assert fitted_radius(run['circle']) == pytest.approx(expected, rel=0.05)
+    # the dead man's switch: wheel commands go to 0 within 0.3 s of simulated time
+    stopped = [t for t, value in run['wheel'] if t > run['last_twist'] and value == 0.0]
+    assert stopped and stopped[0] - run['last_twist'] <= 0.3
+    assert abs(run['odom_after'][3]) < 0.05, 'the car stops'
+
+
+TELEOP_PROBE = """
+    import json, time, rospy
+    from geometry_msgs.msg import Twist
+    rospy.init_node('teleop_probe', anonymous=True)
+    got = []
+    rospy.Subscriber('/tianracer/cmd_vel', Twist, lambda m: got.append((time.time(), m.linear.x, m.angular.z)))
+    end = time.time() + {seconds}
+    while time.time() < end:
+        time.sleep(0.05)
+    print(json.dumps(got))
+"""
+
+
+def test_teleop_in_a_terminal(tutorial):
+    master, slave = pty.openpty()
+    sane = termios.tcgetattr(slave)
+    probe = subprocess.Popen(['/usr/bin/python3', '-c', __import__('textwrap').dedent(TELEOP_PROBE.format(seconds=14))],
+                             env=tutorial.env, stdout=subprocess.PIPE, text=True)
+    teleop = subprocess.Popen(['rosrun', 'tianracer_description', 'teleop.py'], env=tutorial.env,
+                              stdin=slave, stdout=slave, stderr=slave, start_new_session=True)
+    try:
+        time.sleep(3.0)
+        marks = {}
+        for key, hold in (('i', 3.0), ('j', 2.0), ('k', 1.5)):
+            marks[key] = time.time()
+            end = time.time() + hold
+            while time.time() < end:  # keys repeat while held, as a terminal sends them
+                os.write(master, key.encode())
+                time.sleep(0.1)
+        marks['quit'] = time.time()
+        os.write(master, b'\x03')
+        assert teleop.wait(10) == 0
+        assert termios.tcgetattr(slave) == sane, 'the terminal is left as it was'
+    finally:
+        if teleop.poll() is None:
+            teleop.kill()
+    twists = __import__('json').loads(probe.communicate(timeout=30)[0])
+    def during(start, stop):
+        return [(x, z) for t, x, z in twists if start + 0.5 < t < stop]
+    forward = during(marks['i'], marks['j'])
+    assert forward and forward[-1][0] > 0.5 and forward[-1][1] == 0.0, "'i' drives forward"
+    left = during(marks['j'], marks['k'])
+    assert left[-1][1] > 0.0, "'j' turns left"
+    stop = during(marks['k'], marks['quit'])
+    assert stop[-1] == (0.0, 0.0), "'k' stops"
+    assert twists[-1][1:] == [0.0, 0.0], 'Ctrl-C leaves the car commanded to 0'
+
+
+def test_teleop_refuses_a_stdin_that_is_not_a_terminal(tutorial):
+    result = tutorial.run(['rosrun', 'tianracer_description', 'teleop.py'], input='i')
+    assert result.returncode != 0
+    assert 'not one' in result.stderr and 'terminal' in result.stderr

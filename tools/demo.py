@@ -1,0 +1,31 @@
+#!/usr/bin/python3
+"""`make demo`: the Tianracer drives a figure-eight in worlds/arena.world, headless, on a ROS master
+of its own (a free loopback port); prints the figures and writes figure_eight.png here."""
+import os
+import sys
+import tempfile
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(REPO, 'test'))
+from ros_harness import RosSystem  # noqa: E402
+
+
+def main():
+    plot = os.path.join(os.getcwd(), 'figure_eight.png')
+    with tempfile.TemporaryDirectory() as workdir:
+        ros = RosSystem(workdir)
+        try:
+            ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false',
+                       'world_name:=' + os.path.join(REPO, 'worlds', 'arena.world')], 'tianracer_launch')
+            demo = ros.run(['rosrun', 'tianracer_description', 'figure_eight.py', '_plot:=' + plot], timeout=180)
+            print(demo.stdout.strip())
+            if demo.returncode != 0:
+                print(demo.stderr, file=sys.stderr)
+                return 1
+        finally:
+            ros.close()
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
