@@ -13,7 +13,7 @@ from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
-from tianracer_description.urdf_geometry import ackermann_geometry
+from tianracer_description.urdf_geometry import UrdfModel, ackermann_geometry
 
 
 def yaw(q):
@@ -34,7 +34,9 @@ class FigureEight:
         self.speed = rospy.get_param('~speed', 0.8)
         self.steering = rospy.get_param('~steering', 0.35)
         self.plot = rospy.get_param('~plot', 'figure_eight.png')
-        self.geometry = ackermann_geometry(rospy.get_param('robot_description'))
+        description = rospy.get_param('robot_description')
+        self.geometry = ackermann_geometry(description)
+        self.model = UrdfModel(description)
         self.odom = []
         self.scan = None
         rospy.Subscriber('/tianracer/odom', Odometry, self.on_odom)
@@ -94,8 +96,13 @@ class FigureEight:
         axes.plot(*zip(*actual), label='actual (odom)')
         if self.scan is not None and self.odom:
             _, px, py, heading = self.odom[-1]
-            points = [(px + r * math.cos(heading + self.scan.angle_min + i * self.scan.angle_increment),
-                       py + r * math.sin(heading + self.scan.angle_min + i * self.scan.angle_increment))
+            # the lidar's place on the car, from the URDF (the scan is in its frame)
+            joint = next(j for j, e in self.model.joints.items() if e.find('child').get('link') == self.scan.header.frame_id)
+            ox, oy = self.model.joint_position(joint)[:2]
+            lx = px + ox * math.cos(heading) - oy * math.sin(heading)
+            ly = py + ox * math.sin(heading) + oy * math.cos(heading)
+            points = [(lx + r * math.cos(heading + self.scan.angle_min + i * self.scan.angle_increment),
+                       ly + r * math.sin(heading + self.scan.angle_min + i * self.scan.angle_increment))
                       for i, r in enumerate(self.scan.ranges) if math.isfinite(r)]
             if points:
                 axes.scatter(*zip(*points), s=2, c='k', label='last lidar scan')
@@ -103,7 +110,7 @@ class FigureEight:
         axes.set_xlabel('x (m)')
         axes.set_ylabel('y (m)')
         axes.set_title('Tianracer figure-eight')
-        axes.legend()
+        axes.legend(loc='lower left')
         figure.savefig(self.plot, dpi=100)
 
 

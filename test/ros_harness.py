@@ -91,6 +91,23 @@ class RosSystem:
         assert result.returncode == 0, result.stderr + result.stdout
         return yaml.safe_load(result.stdout)
 
+    def wait_for_controllers(self, count, namespace='/tianracer', timeout=60):
+        """Until `count` controllers run in the namespace's controller manager (polled every 20 ms)."""
+        self.python("""
+            import json, time, rospy
+            from controller_manager_msgs.srv import ListControllers
+            name = '%s/controller_manager/list_controllers'
+            while True:
+                try:
+                    rospy.wait_for_service(name, 0.05)
+                    if [c.state for c in rospy.ServiceProxy(name, ListControllers)().controller].count('running') == %d:
+                        break
+                except (rospy.ROSException, rospy.ServiceException):
+                    pass
+                time.sleep(0.02)
+            print(json.dumps(True))
+        """ % (namespace, count), timeout=timeout)
+
     @staticmethod
     def wait_until(condition, timeout, what):
         deadline = time.monotonic() + timeout

@@ -28,20 +28,7 @@ def tutorial(tmp_path):
     ros = RosSystem(str(tmp_path))
     started = time.monotonic()
     launch = ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false'], 'tianracer_launch')
-    ros.python("""
-        import json, time, rospy
-        from controller_manager_msgs.srv import ListControllers
-        name = '/tianracer/controller_manager/list_controllers'
-        while True:
-            try:
-                rospy.wait_for_service(name, 0.05)
-                if [c.state for c in rospy.ServiceProxy(name, ListControllers)().controller].count('running') == 5:
-                    break
-            except (rospy.ROSException, rospy.ServiceException):
-                pass
-            time.sleep(0.02)
-        print(json.dumps(True))
-    """, timeout=60)
+    ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
     ros.startup_seconds = time.monotonic() - started
     ros.launch = launch
     yield ros
@@ -157,3 +144,15 @@ def test_teleop_refuses_a_stdin_that_is_not_a_terminal(tutorial):
     result = tutorial.run(['rosrun', 'tianracer_description', 'teleop.py'], input='i')
     assert result.returncode != 0
     assert 'not one' in result.stderr and 'terminal' in result.stderr
+
+
+def test_make_demo_prints_its_figures_and_writes_the_plot(tmp_path):
+    from conftest import REPO
+    result = subprocess.run(['/usr/bin/python3', os.path.join(REPO, 'tools', 'demo.py')], cwd=str(tmp_path),
+                            capture_output=True, text=True, timeout=240)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert 'left loop: radius' in result.stdout and 'path length' in result.stdout
+    errors = [float(line.split('error ')[1].split(' %')[0]) for line in result.stdout.splitlines() if 'error' in line]
+    assert len(errors) == 2 and all(abs(e) < 5 for e in errors)
+    with open(tmp_path / 'figure_eight.png', 'rb') as f:
+        assert f.read(8) == b'\x89PNG\r\n\x1a\n'

@@ -17,6 +17,7 @@ def main():
         try:
             ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false',
                        'world_name:=' + os.path.join(REPO, 'worlds', 'arena.world')], 'tianracer_launch')
+            ros.wait_for_controllers(5)
             demo = ros.run(['rosrun', 'tianracer_description', 'figure_eight.py', '_plot:=' + plot], timeout=180)
             print(demo.stdout.strip())
             if demo.returncode != 0:
