@@ -13,6 +13,7 @@ import numpy as np
 import rospkg
 
 from tianracer_description import bullet_plant
+from tianracer_description.path_metrics import circle_radius
 from tianracer_description.urdf_geometry import ackermann_geometry
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -120,10 +121,7 @@ def circle(urdf):
     for _ in range(600):
         world.step(10)
         points.append(robot.base_pose()[:2])
-    p = np.array(points)
-    A = np.column_stack([2 * p[:, 0], 2 * p[:, 1], np.ones(len(p))])
-    cx, cy, c = np.linalg.lstsq(A, (p ** 2).sum(axis=1), rcond=None)[0]
-    measured = math.sqrt(c + cx * cx + cy * cy)
+    measured = circle_radius(points)
     print('Ackermann at 0.3 rad, 0.5 m/s: radius %.4f m, geometry L/tan(0.3) %.4f m (%+.2f %%)' %
           (measured, radius, 100 * (measured / radius - 1)))
 

@@ -13,19 +13,12 @@ from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import LaserScan
 
+from tianracer_description.path_metrics import circle_radius
 from tianracer_description.urdf_geometry import UrdfModel, ackermann_geometry
 
 
 def yaw(q):
     return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
-
-
-def fitted_radius(points):
-    import numpy as np
-    p = np.array(points)
-    A = np.column_stack([2 * p[:, 0], 2 * p[:, 1], np.ones(len(p))])
-    cx, cy, c = np.linalg.lstsq(A, (p ** 2).sum(axis=1), rcond=None)[0]
-    return math.sqrt(c + cx * cx + cy * cy)
 
 
 class FigureEight:
@@ -80,7 +73,7 @@ class FigureEight:
         end_error = math.hypot(actual[-1][0] - start_pose[1], actual[-1][1] - start_pose[2])
         print('figure-eight at %.2f m/s, steering %.3f rad: ideal radius %.3f m' % (self.speed, self.steering, radius))
         for name, points in zip(('left loop', 'right loop'), loops):
-            measured = fitted_radius(points)
+            measured = circle_radius(points)
             print('  %s: radius %.3f m (error %+.1f %%)' % (name, measured, 100 * (measured / radius - 1)))
         print('  path length %.2f m (ideal %.2f m); back at the start within %.3f m'
               % (length, 2 * 2 * math.pi * radius, end_error))

@@ -62,3 +62,10 @@ def test_angular_z_as_a_steering_angle_or_a_yaw_rate():
 def test_yaw_rate_mode_turns_at_the_asked_rate():
     steering = ideal_steering(0.5, 0.4, YAW_RATE, L)
     assert 0.5 * math.tan(steering) / L == pytest.approx(0.4)
+
+
+def test_circle_radius_of_points_on_a_known_circle():
+    from tianracer_description.path_metrics import circle_radius
+    angles = [0.1 * i for i in range(40)]
+    points = [(2.0 + 0.7 * math.cos(a), -1.0 + 0.7 * math.sin(a)) for a in angles]
+    assert circle_radius(points) == pytest.approx(0.7, abs=1e-9)

@@ -8,6 +8,7 @@ import pytest
 
 from plant_helpers import all_state, make_world
 from tianracer_description import bullet_plant
+from tianracer_description.path_metrics import circle_radius
 from tianracer_description.urdf_geometry import ackermann_geometry
 
 TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
@@ -102,14 +103,6 @@ def test_steering_position_loop_with_the_tutorials_gains(car, speed):
     state = manager.state(STEERING_CONTROLLERS['left'])
     assert state['set_point'] == pytest.approx(0.3)
     assert (state['p'], state['i'], state['d']) == (4.0, 2.0, 1.0)
-
-
-def circle_radius(points):
-    """Least-squares circle through 2-D points (Kasa fit)."""
-    x, y = points[:, 0], points[:, 1]
-    A = np.column_stack([2 * x, 2 * y, np.ones_like(x)])
-    cx, cy, c = np.linalg.lstsq(A, x * x + y * y, rcond=None)[0]
-    return math.sqrt(c + cx * cx + cy * cy)
 
 
 def test_ackermann_commands_drive_the_geometrys_circle(car, urdf_xml):

@@ -11,6 +11,7 @@ import pytest
 
 from ros_harness import RosSystem
 from tianracer_description.ackermann import max_ideal_steering
+from tianracer_description.path_metrics import circle_radius
 from tianracer_description.urdf_geometry import ackermann_geometry
 
 TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
@@ -71,21 +72,13 @@ DRIVE_AND_STOP = """
 """
 
 
-def fitted_radius(points):
-    import numpy as np
-    p = np.array(points)
-    A = np.column_stack([2 * p[:, 0], 2 * p[:, 1], np.ones(len(p))])
-    cx, cy, c = np.linalg.lstsq(A, (p ** 2).sum(axis=1), rcond=None)[0]
-    return math.sqrt(c + cx * cx + cy * cy)
-
-
 def test_rostopic_pub_drives_the_circle_of_the_geometry_and_the_car_stops(tutorial, urdf_xml):
     run = tutorial.python(DRIVE_AND_STOP, timeout=60)
     g = ackermann_geometry(urdf_xml)
     steering = max_ideal_steering(g.wheelbase, g.front_track, g.max_steer)  # angular.z 1.0 is clamped
     expected = g.wheelbase / math.tan(steering)
     assert len(run['circle']) > 100
-    assert fitted_radius(run['circle']) == pytest.approx(expected, rel=0.05)
+    assert circle_radius(run['circle']) == pytest.approx(expected, rel=0.05)
     # the dead man's switch: wheel commands go to 0 within 0.3 s of simulated time
     stopped = [t for t, value in run['wheel'] if t > run['last_twist'] and value == 0.0]
     assert stopped and stopped[0] - run['last_twist'] <= 0.3
