@@ -16,6 +16,9 @@ Measured side by side in one run on this machine (`make bench`):
                    deterministic, so their turns differ only by the scan: a scan costs the median
                    difference, and rays/s = 1081 / that (the scan path: ray casting in C++ and filling
                    the scan, as the plant runs it; a Python loop of `world.cast_ray` would time Python)
+  all sensors      the same twins with the colour camera, the depth camera and the lidar on, in turns
+                   of 100 steps: their cost per simulated second is the share of one core they need at
+                   real time, and rays/s = all their rays (URDF sizes and rates) / that cost
 Every car drives straight at 1 m/s (rear wheel rate = 1 m/s / its wheel radius) on 1 ms steps.
 The machine is shared and noisy, so every measurement is repeated over ROUNDS rounds that visit the
 simulators in turn; the table gives medians over rounds, and each ratio is taken within a round, then
@@ -196,12 +199,47 @@ def lidar_round(scanning, silent):
             distance(start_xy, scanning.xy()), twins_agree)
 
 
+SENSOR_TURNS, SENSOR_STEPS = 20, 100   # 2 s of driving per round
+
+
+def sensors_round(sensing, silent):
+    """Both track cars from the spawn pose, in alternating turns; the sensing car's extra wall time
+    per simulated second (= the share of one core its sensors take at real time)."""
+    for car in (sensing, silent):
+        car.world.reset_world()
+    extra = 0.0
+    for turn in range(SENSOR_TURNS):
+        turn_time = {}
+        for car in ((sensing, silent) if turn % 2 == 0 else (silent, sensing)):
+            start = time.perf_counter()
+            car.world.step(SENSOR_STEPS)
+            turn_time[car] = time.perf_counter() - start
+        extra += turn_time[sensing] - turn_time[silent]
+    return extra / (SENSOR_TURNS * SENSOR_STEPS * TIME_STEP)
+
+
+def sensor_rays_per_sim_second(urdf):
+    """Rays all sensors of the URDF cast per simulated second, at their sizes and rates."""
+    import xml.etree.ElementTree as ET
+    rays = 0.0
+    for sensor in ET.fromstring(urdf).iter('sensor'):
+        rate = float(sensor.findtext('update_rate'))
+        if sensor.get('type') == 'ray':
+            rays += rate * int(sensor.findtext('ray/scan/horizontal/samples'))
+        else:
+            rays += rate * int(sensor.findtext('camera/image/width')) * int(sensor.findtext('camera/image/height'))
+    return rays
+
+
 def main():
     urdf = tianracer_urdf()
     with open(RACE_TRACK) as f:
         track_sdf = f.read()
     scanning_car, silent_car = OurCar(urdf, track_sdf), OurCar(urdf, track_sdf)
     scanning_car.robot.enable_sensor('lidar', True)
+    sensing_car = OurCar(urdf, track_sdf)
+    for sensor in sensing_car.robot.sensors:
+        sensing_car.robot.enable_sensor(sensor, True)
     ours_per_step, ours_batched, ours_controllers = OurCar(urdf), OurCar(urdf), OurCar(urdf, controllers=True)
     mujoco_car, pybullet_car = MujocoCar(), PybulletRacecar()
     measurements = {  # name -> (car, how it is stepped)
@@ -217,6 +255,7 @@ def main():
     steps_per_s = {name: [] for name in measurements}
     speeds = {name: [] for name in measurements}
     scan_times, scans_made, lidar_metres, twins_agreed = [], [], [], []
+    sensor_shares = []
     for _ in range(ROUNDS):
         for name, (car, step) in measurements.items():
             rate, speed = timed_window(car, step)
@@ -227,6 +266,9 @@ def main():
         scans_made.append(scans)
         lidar_metres.append(metres)
         twins_agreed.append(twins_agree)
+        sensor_shares.append(sensors_round(sensing_car, silent_car))
+    sensor_share = statistics.median(sensor_shares)
+    sensor_rays = sensor_rays_per_sim_second(urdf)
     rays_per_scan = len(scanning_car.robot.scan('lidar')['ranges'])
 
     medians = {name: statistics.median(rates) for name, rates in steps_per_s.items()}
@@ -261,6 +303,11 @@ def main():
               min(scans_made), max(scans_made), LIDAR_TURNS, min(lidar_metres), max(lidar_metres),
               'yes' if all(twins_agreed) else 'NO (the scan times compare different physics)'))
 
+    print('all sensors (%s) at the URDF sizes and rates: %.1f %% of one core at real time (median; min .. max '
+          '%.1f .. %.1f %%), %.2f M rays/s' % (', '.join(sensing_car.robot.sensors), 100 * sensor_share,
+                                               100 * min(sensor_shares), 100 * max(sensor_shares),
+                                               sensor_rays / sensor_share / 1e6 if sensor_share > 0 else float('inf')))
+
     os.makedirs(os.path.dirname(OUTPUT_JSON), exist_ok=True)
     with open(OUTPUT_JSON, 'w') as f:
         json.dump({
@@ -276,6 +323,8 @@ def main():
                       'median_scan_time_s': median_scan_time, 'scan_time_s': scan_times,
                       'scans_per_round': scans_made, 'metres_per_round': lidar_metres,
                       'twins_agreed': twins_agreed},
+            'all_sensors': {'median_share_of_a_core': sensor_share, 'share_of_a_core': sensor_shares,
+                            'rays_per_sim_second': sensor_rays},
         }, f, indent=2)
     print('\nwrote %s' % os.path.relpath(OUTPUT_JSON, REPO))
 

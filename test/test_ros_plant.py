@@ -211,3 +211,42 @@ def test_spawn_model_with_a_malformed_urdf_exits_1_with_the_parsers_message(ros,
     assert 'not well-formed' in result.stdout + result.stderr
     assert plant.popen.poll() is None
     assert ros.service(CM + 'load_controller', "name: 'joint_state_controller'") == {'ok': True}
+
+
+def test_cameras_publish_at_their_rates_only_while_subscribed(ros, plant):
+    rates = ros.python("""
+        import json, time, rospy
+        from sensor_msgs.msg import CameraInfo, Image, PointCloud2
+        rospy.init_node('camera_probe', anonymous=True)
+        got = {}
+        def keep(topic):
+            return lambda m: got.setdefault(topic, []).append(m)
+        topics = {'/tianracer/camera/image_raw': Image, '/tianracer/camera/camera_info': CameraInfo,
+                  '/tianracer/depth_camera/depth/image_raw': Image,
+                  '/tianracer/depth_camera/depth/camera_info': CameraInfo,
+                  '/tianracer/depth_camera/depth/points': PointCloud2}
+        subs = [rospy.Subscriber(t, cls, keep(t)) for t, cls in topics.items()]
+        time.sleep(4.0)
+        out = {}
+        for topic, msgs in got.items():
+            stamps = [m.header.stamp.to_sec() for m in msgs[2:]]
+            out[topic] = dict(rate=(len(stamps) - 1) / (stamps[-1] - stamps[0]), frame=msgs[-1].header.frame_id,
+                              size=[msgs[-1].width, msgs[-1].height],
+                              encoding=getattr(msgs[-1], 'encoding', None))
+        for s in subs:
+            s.unregister()
+        time.sleep(2.0)
+        print(json.dumps(out))
+    """, timeout=60)
+    camera, info = rates['/tianracer/camera/image_raw'], rates['/tianracer/camera/camera_info']
+    assert camera['rate'] == pytest.approx(30, rel=0.05) and camera['encoding'] == 'rgb8'
+    assert info['size'] == camera['size'] == [160, 120]
+    assert camera['frame'] == 'camera_optical_frame'
+    depth = rates['/tianracer/depth_camera/depth/image_raw']
+    assert depth['rate'] == pytest.approx(15, rel=0.05) and depth['encoding'] == '32FC1'
+    assert rates['/tianracer/depth_camera/depth/camera_info']['size'] == depth['size'] == [128, 96]
+    assert rates['/tianracer/depth_camera/depth/points']['size'] == [128, 96]
+    log = plant.log()
+    for sensor in ('camera', 'depth_camera'):
+        assert "tianracer sensor '%s': subscribed, computing" % sensor in log
+    ros.wait_until(lambda: "tianracer sensor 'camera': no subscribers, idle" in plant.log(), 5, 'the camera idle')

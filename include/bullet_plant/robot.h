@@ -57,7 +57,9 @@ public:
   ControllerManager* controllerManager();
   double controlPeriod() const;  // s
 
+  std::vector<Sensor*> sensors();
   std::vector<Lidar*> lidars();
+  std::vector<Camera*> cameras();
   Sensor* sensor(const std::string& name);
 
   // Steps where the physics produced a non-finite state and the robot was put back to its last

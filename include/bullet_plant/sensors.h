@@ -67,4 +67,40 @@ private:
   LaserScan scan_;
 };
 
+// A camera frame: sensor_msgs/Image (rgb8) and, for depth cameras, a 32FC1 depth image and the
+// points of a PointCloud2, all in the optical frame (z forward, x right, y down).
+struct CameraFrame
+{
+  int64_t stamp_ns = 0;
+  std::string frame_id;
+  int width = 0, height = 0;
+  double fx = 0, fy = 0, cx = 0, cy = 0;  // pinhole: u = cx + fx * x / z, v = cy + fy * y / z
+  std::vector<uint8_t> rgb;               // height * width * 3
+  std::vector<float> depth;               // depth cameras: metres along z, NaN where nothing is hit
+  std::vector<float> points;              // depth cameras: x y z per pixel, NaN where nothing is hit
+};
+
+// gazebo_ros_camera (type "camera") and gazebo_ros_openni_kinect (type "depth"). Pixels by ray
+// casting: the colour of what is hit, lit by one directional light, a sky colour elsewhere.
+class Camera : public Sensor
+{
+public:
+  explicit Camera(const SensorDescription& d);
+  bool depthSensor() const { return description_.type == "depth"; }
+  // Topics, relative to the robot namespace, as the plugins name them.
+  std::string topic() const override;   // the image
+  std::string cameraInfoTopic() const;
+  std::string depthTopic() const;        // depth cameras only
+  std::string depthCameraInfoTopic() const;
+  std::string pointsTopic() const;
+  bool hasFrame() const { return updates_ > 0; }
+  const CameraFrame& latest() const { return frame_; }
+  // Pinhole intrinsics from the horizontal field of view and the image size (square pixels).
+  void intrinsics(double& fx, double& fy, double& cx, double& cy) const;
+
+private:
+  friend struct detail::SensorUpdate;
+  CameraFrame frame_;
+};
+
 }  // namespace bullet_plant

@@ -207,7 +207,63 @@ RayCaster::RayCaster(const std::vector<RayPrimitive>& primitives, const void* ex
 
 double RayCaster::cast(const double origin[3], const double dir[3], double max_range) const
 {
+  return castHit(origin, dir, max_range).distance;
+}
+
+void RayPrimitive::normalAt(const double point[3], double out[3]) const
+{
+  double p[3], n[3] = {0, 0, 0};
+  frame.inverseApply(point, p);
+  switch (kind)
+  {
+    case Shape::Kind::Box:
+    {
+      // the face the point is closest to
+      int axis = 0;
+      double best = kInf;
+      for (int i = 0; i < 3; ++i)
+      {
+        double gap = std::abs(half[i] - std::abs(p[i]));
+        if (gap < best)
+        {
+          best = gap;
+          axis = i;
+        }
+      }
+      n[axis] = p[axis] >= 0 ? 1.0 : -1.0;
+      break;
+    }
+    case Shape::Kind::Cylinder:
+    {
+      double radial = std::hypot(p[0], p[1]);
+      if (std::abs(half_length - std::abs(p[2])) < std::abs(radius - radial))
+        n[2] = p[2] >= 0 ? 1.0 : -1.0;
+      else if (radial > 0)
+      {
+        n[0] = p[0] / radial;
+        n[1] = p[1] / radial;
+      }
+      break;
+    }
+    case Shape::Kind::Sphere:
+    {
+      double r = std::sqrt(dot(p, p));
+      for (int i = 0; r > 0 && i < 3; ++i)
+        n[i] = p[i] / r;
+      break;
+    }
+    case Shape::Kind::Plane:
+      for (int i = 0; i < 3; ++i)
+        n[i] = normal[i];
+      break;
+  }
+  frame.rotate(n, out);
+}
+
+RayHit RayCaster::castHit(const double origin[3], const double dir[3], double max_range) const
+{
   double best = kInf;
+  const RayPrimitive* hit = nullptr;
   for (const RayPrimitive* p : primitives_)
   {
     const double* c = p->frame.t;
@@ -220,9 +276,14 @@ double RayCaster::cast(const double origin[3], const double dir[3], double max_r
           along - p->bound_radius > std::min(best, max_range))
         continue;
     }
-    best = std::min(best, p->intersect(origin, dir));
+    double t = p->intersect(origin, dir);
+    if (t < best)
+    {
+      best = t;
+      hit = p;
+    }
   }
-  return best <= max_range ? best : kInf;
+  return best <= max_range ? RayHit{best, hit} : RayHit{kInf, nullptr};
 }
 
 void RayCaster::castFan(const Frame& sensor, double a0, double da, int n_azimuth, const std::vector<double>& elevations,

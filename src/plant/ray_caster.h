@@ -31,11 +31,20 @@ struct RayPrimitive
   Frame frame;                 // shape frame in its parent's frame
   const void* owner = nullptr; // the robot it belongs to (null: the world)
   double bound_radius = 0.0;   // bounding sphere about the shape origin; infinite for planes
+  Rgba colour;                 // what cameras see
 
   static RayPrimitive fromShape(const Shape& s, const urdf::Pose& pose, const void* owner);
   // Distance along the unit ray (origin, dir) in the primitive's parent frame to the first surface
   // hit ahead of an origin outside the shape; +inf if none.
   double intersect(const double origin[3], const double dir[3]) const;
+  // Outward unit normal at a point on the surface (parent frame).
+  void normalAt(const double point[3], double out[3]) const;
+};
+
+struct RayHit
+{
+  double distance;               // +inf: nothing within range
+  const RayPrimitive* primitive;
 };
 
 class RayCaster
@@ -45,6 +54,7 @@ public:
   RayCaster(const std::vector<RayPrimitive>& primitives, const void* exclude);
 
   double cast(const double origin[3], const double dir[3], double max_range) const;
+  RayHit castHit(const double origin[3], const double dir[3], double max_range) const;
 
   // A lidar: rays from origin in the sensor frame `sensor` (world), azimuth a_i = a0 + i*da for
   // i < n_azimuth, elevations e_j. Writes distances (+inf: nothing within max_range) row by row

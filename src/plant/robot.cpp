@@ -188,6 +188,7 @@ struct JointLayer
 struct SensorUpdate
 {
   static LaserScan& scan(Lidar& lidar) { return lidar.scan_; }
+  static CameraFrame& frame(Camera& camera) { return camera.frame_; }
 };
 }  // namespace detail
 
@@ -304,6 +305,11 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
       body.child_shapes.emplace_back(bulletShape(shape));
       body.shape->addChildShape(in_com, body.child_shapes.back().get());
       body.ray_shapes.push_back(RayPrimitive::fromShape(shape, fromBullet(in_com), &r));
+      if (link->visual && link->visual->material)
+      {
+        const urdf::Color& c = link->visual->material->color;
+        body.ray_shapes.back().colour = {c.r, c.g, c.b, c.a};
+      }
     }
     auto surface = r.description.surfaces.find(link->name);
     if (surface != r.description.surfaces.end() && surface->second.given &&
@@ -490,8 +496,18 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
       r.sensors.emplace_back(new Lidar(s));
       r.sensor_noise.emplace_back(seedFor(r.name + "/" + s.name));
     }
+    else if (s.type == "camera" || s.type == "depth")
+    {
+      if (s.image_width < 1 || s.image_height < 1 || !(s.horizontal_fov > 0 && s.horizontal_fov < M_PI))
+      {
+        log.warn("camera '" + s.name + "' of '" + r.name + "' has no image size or a field of view outside (0, pi); ignored");
+        continue;
+      }
+      r.sensors.emplace_back(new Camera(s));
+      r.sensor_noise.emplace_back(seedFor(r.name + "/" + s.name));
+    }
     else
-      log.info("sensor '" + s.name + "' (" + s.type + ") of '" + r.name + "' is not simulated yet");
+      log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name + "' is not simulated (ray, camera, depth are)");
   }
   for (const std::string& w : r.description.warnings)
     log.warn(r.name + ": " + w);
@@ -803,6 +819,74 @@ void Robot::Internals::appendRayPrimitives(std::vector<RayPrimitive>& out) const
   }
 }
 
+namespace
+{
+// One camera frame by ray casting through every pixel centre of a pinhole camera.
+void renderCamera(const Camera& camera, CameraFrame& out, const Frame& pose, const RayCaster& caster,
+                  const urdf::Vector3& light_direction, std::mt19937& rng, int64_t time_ns)
+{
+  const SensorDescription& d = camera.description();
+  const int w = d.image_width, h = d.image_height;
+  const bool depth = camera.depthSensor();
+  camera.intrinsics(out.fx, out.fy, out.cx, out.cy);
+  out.stamp_ns = time_ns;
+  out.frame_id = camera.frameId();
+  out.width = w;
+  out.height = h;
+  out.rgb.resize(size_t(w) * h * 3);
+  out.depth.assign(depth ? size_t(w) * h : 0, std::numeric_limits<float>::quiet_NaN());
+  out.points.assign(depth ? size_t(w) * h * 3 : 0, std::numeric_limits<float>::quiet_NaN());
+  const double near = d.clip_near > 0 ? d.clip_near : 0.0, far = d.clip_far > 0 ? d.clip_far : 100.0;
+  double light[3] = {-light_direction.x, -light_direction.y, -light_direction.z};  // towards the light
+  const double light_norm = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
+  for (double& l : light)
+    l = light_norm > 0 ? l / light_norm : 0.0;
+  static const float kSky[3] = {0.70f, 0.80f, 0.95f};
+  constexpr double kAmbient = 0.35;
+  const bool noisy = d.noise.gaussian && d.noise.stddev > 0;
+  std::normal_distribution<double> noise(d.noise.mean, noisy ? d.noise.stddev : 1.0);
+  for (int v = 0; v < h; ++v)
+    for (int u = 0; u < w; ++u)
+    {
+      // optical (x right, y down, z forward) -> camera link (x forward, y left, z up)
+      const double xo = (u - out.cx) / out.fx, yo = (v - out.cy) / out.fy;
+      const double length = std::sqrt(1.0 + xo * xo + yo * yo);
+      const double in_link[3] = {1.0 / length, -xo / length, -yo / length};
+      double dir[3];
+      pose.rotate(in_link, dir);
+      const RayHit hit = caster.castHit(pose.t, dir, far * length);
+      const double z = hit.distance / length;  // depth along the optical axis
+      const size_t pixel = size_t(v) * w + u;
+      float colour[3] = {kSky[0], kSky[1], kSky[2]};
+      if (hit.primitive && z >= near)
+      {
+        double point[3] = {pose.t[0] + dir[0] * hit.distance, pose.t[1] + dir[1] * hit.distance,
+                           pose.t[2] + dir[2] * hit.distance};
+        double normal[3];
+        hit.primitive->normalAt(point, normal);
+        const double diffuse = std::max(0.0, normal[0] * light[0] + normal[1] * light[1] + normal[2] * light[2]);
+        const double shade = kAmbient + (1.0 - kAmbient) * diffuse;
+        const Rgba& c = hit.primitive->colour;
+        colour[0] = float(c.r * shade);
+        colour[1] = float(c.g * shade);
+        colour[2] = float(c.b * shade);
+        if (depth)
+        {
+          out.depth[pixel] = float(z);
+          out.points[3 * pixel] = float(xo * z);
+          out.points[3 * pixel + 1] = float(yo * z);
+          out.points[3 * pixel + 2] = float(z);
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        double value = colour[k] + (noisy ? noise(rng) : 0.0);
+        out.rgb[3 * pixel + k] = uint8_t(std::lround(std::max(0.0, std::min(1.0, value)) * 255.0));
+      }
+    }
+}
+}  // namespace
+
 void Robot::Internals::updateSensors(int64_t time_ns)
 {
   std::vector<RayPrimitive> scene;
@@ -817,11 +901,18 @@ void Robot::Internals::updateSensors(int64_t time_ns)
       for (const auto& other : world->robots)
         other->in_->appendRayPrimitives(scene);
     }
+    const SensorDescription& d = sensor.description();
+    Frame frame = Frame::fromPose(fromBullet(linkWorldTransform(d.link))) * Frame::fromPose(d.pose);
+    if (auto* camera = dynamic_cast<Camera*>(&sensor))
+    {
+      // Cameras see everything, their own robot too (as Gazebo's do).
+      renderCamera(*camera, detail::SensorUpdate::frame(*camera), frame, RayCaster(scene, nullptr),
+                   world->description.light_direction, sensor_noise[si], time_ns);
+      continue;
+    }
     auto* lidar = dynamic_cast<Lidar*>(&sensor);
     if (!lidar)
       continue;
-    const SensorDescription& d = lidar->description();
-    Frame frame = Frame::fromPose(fromBullet(linkWorldTransform(d.link))) * Frame::fromPose(d.pose);
     RayCaster caster(scene, this);
     const int n = d.horizontal_samples;
     const double da = n > 1 ? (d.horizontal_max_angle - d.horizontal_min_angle) / (n - 1) : 0.0;
@@ -935,6 +1026,23 @@ void Robot::setEStop(bool on)
 }
 
 bool Robot::eStop() const { return in_->e_stop; }
+
+std::vector<Sensor*> Robot::sensors()
+{
+  std::vector<Sensor*> out;
+  for (auto& s : in_->sensors)
+    out.push_back(s.get());
+  return out;
+}
+
+std::vector<Camera*> Robot::cameras()
+{
+  std::vector<Camera*> out;
+  for (auto& s : in_->sensors)
+    if (auto* c = dynamic_cast<Camera*>(s.get()))
+      out.push_back(c);
+  return out;
+}
 
 std::vector<Lidar*> Robot::lidars()
 {

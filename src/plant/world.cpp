@@ -101,6 +101,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     w.static_ray_shapes.push_back(RayPrimitive::fromShape(c.shape, c.pose, nullptr));
+    w.static_ray_shapes.back().colour = c.colour;
   }
   for (const std::string& warning : description.warnings)
     w.log.warn("world: " + warning);

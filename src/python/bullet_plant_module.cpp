@@ -224,10 +224,10 @@ PYBIND11_MODULE(bullet_plant, m)
       .def_property_readonly("control_period", &Robot::controlPeriod)
       .def_property_readonly("sensors", [](Robot& r) {
         std::vector<std::string> names;
-        for (Lidar* l : r.lidars())
-          names.push_back(l->name());
+        for (Sensor* s : r.sensors())
+          names.push_back(s->name());
         return names;
-      })
+      }, "the simulated sensors of the URDF's <gazebo reference> blocks")
       .def("enable_sensor", [](Robot& r, const std::string& name, bool on) { sensorOf(r, name).setActive(on); },
            py::arg("name"), py::arg("on") = true, "sensors work only while enabled (subscribed, in ROS)")
       .def("sensor_updates", [](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); })
@@ -251,7 +251,29 @@ PYBIND11_MODULE(bullet_plant, m)
         d["range_max"] = s.range_max;
         d["ranges"] = py::array_t<float>(s.ranges.size(), s.ranges.data());
         return std::move(d);
-      }, "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first");
+      }, "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first")
+      .def("image", [](Robot& r, const std::string& name) -> py::object {
+        auto* camera = dynamic_cast<Camera*>(&sensorOf(r, name));
+        if (!camera)
+          throw py::key_error("sensor '" + name + "' is not a camera");
+        if (!camera->hasFrame())
+          return py::none();
+        const CameraFrame& f = camera->latest();
+        py::dict d;
+        d["stamp"] = f.stamp_ns * 1e-9;
+        d["frame_id"] = f.frame_id;
+        d["width"] = f.width;
+        d["height"] = f.height;
+        d["K"] = std::vector<double>{f.fx, 0, f.cx, 0, f.fy, f.cy, 0, 0, 1};
+        d["rgb"] = py::array_t<uint8_t>({f.height, f.width, 3}, f.rgb.data());
+        if (camera->depthSensor())
+        {
+          d["depth"] = py::array_t<float>({f.height, f.width}, f.depth.data());
+          d["points"] = py::array_t<float>({f.height, f.width, 3}, f.points.data());
+        }
+        return std::move(d);
+      }, "the latest camera frame: rgb (H x W x 3 uint8), for depth cameras depth (H x W, m, NaN: no hit) and "
+         "points (H x W x 3, optical frame); K the pinhole matrix; None before the first");
 
   py::class_<Pid>(m, "Pid", "control_toolbox::Pid, as the plant's controllers and pid_gains loops use it")
       .def(py::init([](double p, double i, double d, double i_clamp, bool antiwindup) {

@@ -1,0 +1,105 @@
+"""The colour and depth cameras of the URDF, by ray casting, through the Python module: a box of
+known size and colour at a known pose appears where the pinhole model puts it, in its colour; the
+depth camera measures its face; the point cloud lies on it."""
+import math
+
+import numpy as np
+import pytest
+
+from plant_helpers import make_world, sdf_world
+from tianracer_description.urdf_geometry import _rpy_matrix
+
+BOX_CENTRE = (2.0, 0.1, 0.15)
+BOX_SIZE = (0.2, 0.4, 0.3)
+FACE_X = BOX_CENTRE[0] - BOX_SIZE[0] / 2    # the face towards the car
+RED = (1.0, 0.0, 0.0)
+LIGHT = (0.5, 0.1, -0.9)                     # the sun shines along +x, onto the face
+
+
+@pytest.fixture
+def scene(urdf_xml, control_config):
+    box = f"""<model name="box"><static>true</static><pose>{' '.join(map(str, BOX_CENTRE))} 0 0 0</pose>
+      <link name="link">
+        <collision name="collision"><geometry><box><size>{' '.join(map(str, BOX_SIZE))}</size></box></geometry></collision>
+        <visual name="visual"><geometry><box><size>{' '.join(map(str, BOX_SIZE))}</size></box></geometry>
+          <material><diffuse>{' '.join(map(str, RED))} 1</diffuse></material></visual>
+      </link></model>
+      <light name="sun" type="directional"><direction>{' '.join(map(str, LIGHT))}</direction></light>"""
+    world = make_world(control_config, sdf_world(box))
+    robot = world.spawn(urdf_xml, 'tianracer')
+    world.step(300)  # settle
+    return world, robot
+
+
+def optical_pose(robot, camera):
+    """Rotation and position of a camera's optical frame in the world."""
+    pose = robot.link_pose(camera + '_optical_frame')
+    x, y, z, w = pose[3:]
+    roll = math.atan2(2 * (w * x + y * z), 1 - 2 * (x * x + y * y))
+    pitch = math.asin(max(-1.0, min(1.0, 2 * (w * y - z * x))))
+    yaw = math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+    return _rpy_matrix(roll, pitch, yaw), np.array(pose[:3])
+
+
+def expected_face_mask(frame, rotation, origin):
+    """Pixels whose centre ray meets the box's front face, by the pinhole model."""
+    fx, cx, fy, cy = frame['K'][0], frame['K'][2], frame['K'][4], frame['K'][5]
+    u, v = np.meshgrid(np.arange(frame['width']), np.arange(frame['height']))
+    rays = np.stack([(u - cx) / fx, (v - cy) / fy, np.ones_like(u, dtype=float)], axis=-1) @ rotation.T
+    t = (FACE_X - origin[0]) / rays[..., 0]
+    hit_y, hit_z = origin[1] + t * rays[..., 1], origin[2] + t * rays[..., 2]
+    return ((np.abs(hit_y - BOX_CENTRE[1]) <= BOX_SIZE[1] / 2) & (hit_z >= 0) & (hit_z <= BOX_SIZE[2])), t
+
+
+def test_colour_camera_sees_the_box_where_the_pinhole_model_puts_it(scene):
+    world, robot = scene
+    robot.enable_sensor('camera')
+    world.step(34)
+    frame = robot.image('camera')
+    assert (frame['width'], frame['height'], frame['frame_id']) == (160, 120, 'camera_optical_frame')
+    rotation, origin = optical_pose(robot, 'camera')
+    expected, _ = expected_face_mask(frame, rotation, origin)
+    rgb = frame['rgb'].astype(int)
+    seen = (rgb[..., 0] > 100) & (rgb[..., 1] < 40) & (rgb[..., 2] < 40)
+    assert expected.sum() > 200
+    rows, cols = np.nonzero(expected)
+    seen_rows, seen_cols = np.nonzero(seen)
+    for a, b in ((rows.min(), seen_rows.min()), (rows.max(), seen_rows.max()),
+                 (cols.min(), seen_cols.min()), (cols.max(), seen_cols.max())):
+        assert abs(int(a) - int(b)) <= 1, 'box bounds within 1 px of the pinhole model'
+    # its colour: red, lit by the sun on the face (ambient 0.35 + 0.65 * cos), noise stddev 0.007
+    light = -np.array(LIGHT) / np.linalg.norm(LIGHT)
+    shade = 0.35 + 0.65 * max(0.0, np.dot([-1, 0, 0], light))
+    inside = expected & seen
+    assert np.mean(rgb[inside][:, 0]) == pytest.approx(255 * shade, abs=2)
+    assert np.mean(rgb[inside][:, 1]) < 3 and np.mean(rgb[inside][:, 2]) < 3
+
+
+def test_depth_camera_measures_the_face_and_its_points_lie_on_it(scene):
+    world, robot = scene
+    robot.enable_sensor('depth_camera')
+    world.step(67)
+    frame = robot.image('depth_camera')
+    assert (frame['width'], frame['height']) == (128, 96)
+    rotation, origin = optical_pose(robot, 'depth_camera')
+    expected, t = expected_face_mask(frame, rotation, origin)
+    core = expected.copy()  # leave out the face's edge pixels, where a ray may meet the box's side
+    core[1:-1, 1:-1] = expected[1:-1, 1:-1] & expected[:-2, 1:-1] & expected[2:, 1:-1] & expected[1:-1, :-2] & expected[1:-1, 2:]
+    assert core.sum() > 100
+    depth = frame['depth']
+    assert np.abs(depth[core] - t[core]).max() < 1e-3, 'depth of the face within 1 mm (no noise)'
+    points = frame['points'][core] @ rotation.T + origin   # optical frame -> world
+    assert np.abs(points[:, 0] - FACE_X).max() < 1e-3, 'points on the face within 1 mm'
+    assert np.isnan(depth[0, 0]) or depth[0, 0] > 0.3, 'NaN where nothing is hit within the clip range'
+    assert np.isnan(depth).any()
+
+
+def test_cameras_work_only_while_enabled_at_their_rates(scene):
+    world, robot = scene
+    world.step(1000)
+    assert robot.image('camera') is None and robot.sensor_updates('camera') == 0
+    robot.enable_sensor('camera')
+    robot.enable_sensor('depth_camera')
+    world.step(1000)
+    assert robot.sensor_updates('camera') == 30
+    assert robot.sensor_updates('depth_camera') == 15
