@@ -27,7 +27,7 @@ def test_spawn_reads_the_models_control_block_and_pid_gains(car):
         ['hardware_interface::EffortJointInterface'] * 2
     assert [robot.has_pid(j) for j in robot.handles] == [True, True, False, False]
     assert robot.limits('left_steering_hinge_joint')['upper'] == pytest.approx(0.6)
-    assert robot.sensors == ['lidar']
+    assert robot.sensors == ['lidar', 'camera', 'depth_camera']
 
 
 def test_spawn_pose_places_the_root_link(urdf_xml, control_config):
