@@ -23,6 +23,8 @@ APT_PACKAGES=(
   libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev libtinyxml-dev
   libconsole-bridge-dev
   pybind11-dev python3-dev
+  # rviz: what gui:=true opens in place of gzclient
+  rviz
   # Python for nodes and tests
   python3-numpy python3-yaml python3-pytest python3-pip python3-matplotlib
 )
