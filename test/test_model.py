@@ -128,6 +128,9 @@ def test_transmissions_give_the_interfaces_the_tutorials_controllers_need(robot)
         'right_rear_wheel_joint': 'hardware_interface/VelocityJointInterface',
         'left_steering_hinge_joint': 'hardware_interface/EffortJointInterface',
         'right_steering_hinge_joint': 'hardware_interface/EffortJointInterface',
+        # passive: never commanded, there for their joint states (TF of the front wheels)
+        'left_front_wheel_joint': 'hardware_interface/EffortJointInterface',
+        'right_front_wheel_joint': 'hardware_interface/EffortJointInterface',
     }
 
 

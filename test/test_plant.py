@@ -21,11 +21,13 @@ def car(urdf_xml, control_config):
 def test_spawn_reads_the_models_control_block_and_pid_gains(car):
     world, robot = car
     assert robot.namespace == '/tianracer'
-    assert robot.handles == ['left_rear_wheel_joint', 'right_rear_wheel_joint',
-                             'left_steering_hinge_joint', 'right_steering_hinge_joint']
-    assert [robot.interface(j) for j in robot.handles] == ['hardware_interface::VelocityJointInterface'] * 2 + \
-        ['hardware_interface::EffortJointInterface'] * 2
-    assert [robot.has_pid(j) for j in robot.handles] == [True, True, False, False]
+    assert robot.handles == ['left_rear_wheel_joint', 'right_rear_wheel_joint', 'left_steering_hinge_joint',
+                             'left_front_wheel_joint', 'right_steering_hinge_joint', 'right_front_wheel_joint']
+    interfaces = {j: robot.interface(j) for j in robot.handles}
+    assert interfaces['left_rear_wheel_joint'] == interfaces['right_rear_wheel_joint'] == \
+        'hardware_interface::VelocityJointInterface'
+    assert set(interfaces[j] for j in robot.handles[2:]) == {'hardware_interface::EffortJointInterface'}
+    assert [robot.has_pid(j) for j in robot.handles] == [True, True, False, False, False, False]
     assert robot.limits('left_steering_hinge_joint')['upper'] == pytest.approx(0.6)
     assert robot.sensors == ['lidar', 'camera', 'depth_camera']
 
