@@ -1,21 +1,39 @@
 #include "joint_drive.h"
 
-#include <cmath>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 namespace bullet_plant
 {
-JointDrive::JointDrive(btMultiBody* body, int link) : btMultiBodyJointMotor(body, link, 0, 0, 0)
+JointDrive::JointDrive(btMultiBody* body, int link)
+  : btMultiBodyConstraint(body, nullptr, link, -1, 1, true, MULTIBODY_CONSTRAINT_1DOF_JOINT_MOTOR)
 {
-  setPositionTarget(0, 0);  // no position term: only the velocity target below
+}
+
+void JointDrive::finalizeMultiDof()
+{
+  allocateJacobiansMultiDof();
+  jacobianA(0)[6 + m_bodyA->getLink(m_linkA).m_dofOffset] = 1;  // the row is the joint's velocity
+  m_numDofsFinalized = m_jacSizeBoth;
+}
+
+int JointDrive::getIslandIdA() const
+{
+  if (const btMultiBodyLinkCollider* base = m_bodyA->getBaseCollider())
+    return base->getIslandTag();
+  for (int i = 0; i < m_bodyA->getNumLinks(); ++i)
+    if (const btMultiBodyLinkCollider* collider = m_bodyA->getLink(i).m_collider)
+      return collider->getIslandTag();
+  return -1;
 }
 
 void JointDrive::drive(double target_velocity, double gain, double max_impulse)
 {
   enabled_ = max_impulse > 0 && gain > 0;
+  target_velocity_ = target_velocity;
   gain_ = gain;
   side_ = 0;
-  setVelocityTarget(btScalar(target_velocity), 1);
-  setMaxAppliedImpulse(btScalar(max_impulse));
+  m_maxAppliedImpulse = btScalar(max_impulse);
 }
 
 void JointDrive::bound(double target_velocity, bool lower)
@@ -36,29 +54,44 @@ void JointDrive::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiB
 {
   if (!enabled_)
     return;
-  const int first = rows.size();
-  btMultiBodyJointMotor::createConstraintRows(rows, data, info);
-  for (int i = first; side_ != 0 && i < rows.size(); ++i)
+  if (m_numDofsFinalized != m_jacSizeBoth)
+    finalizeMultiDof();
+  btMultiBodySolverConstraint& row = rows.expandNonInitializing();
+  // The other side is the fixed world: no velocity, no response.
+  row.m_solverBodyIdA = data.m_fixedBodyId;
+  row.m_solverBodyIdB = data.m_fixedBodyId;
+  row.m_contactNormal1.setZero();
+  row.m_contactNormal2.setZero();
+  row.m_relpos1CrossNormal.setZero();
+  row.m_relpos2CrossNormal.setZero();
+  row.m_angularComponentA.setZero();
+  row.m_angularComponentB.setZero();
+  btScalar lower = -m_maxAppliedImpulse, upper = m_maxAppliedImpulse;
+  if (side_ > 0)
   {
-    rows[i].m_lowerLimit = side_ > 0 ? 0 : -SIMD_INFINITY;
-    rows[i].m_upperLimit = side_ > 0 ? SIMD_INFINITY : 0;
+    lower = 0;
+    upper = SIMD_INFINITY;
   }
-  if (std::isinf(gain_))
+  else if (side_ < 0)
+  {
+    lower = -SIMD_INFINITY;
+    upper = 0;
+  }
+  const btVector3 unused(0, 0, 0);
+  fillMultiBodyConstraint(row, data, jacobianA(0), nullptr, unused, unused, unused, unused, 0, info, lower, upper,
+                          false, 1, false, btScalar(target_velocity_));
+  row.m_orgConstraint = this;
+  row.m_orgDofIndex = 0;
+  if (std::isinf(gain_) || row.m_jacDiagABInv <= 0)
     return;
   // Soften the rigid row: with cfm = 1/gain the converged impulse is gain * (target - qd_end).
   // Bullet scales a row's cfm and rhs by its inverse effective mass, so rescale both.
-  for (int i = first; i < rows.size(); ++i)
-  {
-    btMultiBodySolverConstraint& row = rows[i];
-    if (row.m_jacDiagABInv <= 0)
-      continue;
-    const btScalar cfm = btScalar(1.0 / gain_);
-    const btScalar effective_inverse_mass = btScalar(1) / row.m_jacDiagABInv;
-    const btScalar soft = btScalar(1) / (effective_inverse_mass + cfm);
-    row.m_rhs *= soft / row.m_jacDiagABInv;
-    row.m_cfm = cfm * soft;
-    row.m_jacDiagABInv = soft;
-  }
+  const btScalar cfm = btScalar(1.0 / gain_);
+  const btScalar effective_inverse_mass = btScalar(1) / row.m_jacDiagABInv;
+  const btScalar soft = btScalar(1) / (effective_inverse_mass + cfm);
+  row.m_rhs *= soft / row.m_jacDiagABInv;
+  row.m_cfm = cfm * soft;
+  row.m_jacDiagABInv = soft;
 }
 
 }  // namespace bullet_plant

@@ -1,17 +1,19 @@
 // One constraint row on a joint's velocity, solved together with the contacts:
 //   impulse = gain * (target_velocity - qd_end), clamped to [-max_impulse, max_impulse].
-// gain = infinity gives Bullet's rigid velocity motor; a finite gain is a soft (implicit) drive,
-// i.e. a spring-damper evaluated at the end of the step, stable for any gain and inertia.
+// gain = infinity gives a rigid velocity motor; a finite gain is a soft (implicit) drive, i.e. a
+// spring-damper evaluated at the end of the step, stable for any gain and inertia.
+// The row acts on the joint's own multibody only (Bullet's joint motor also carries an all-zero
+// Jacobian for the same body as its second body, which doubles the work of every solver pass).
 #pragma once
 
 #include <cmath>
 #include <limits>
 
-#include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
+#include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 
 namespace bullet_plant
 {
-class JointDrive : public btMultiBodyJointMotor
+class JointDrive : public btMultiBodyConstraint
 {
 public:
   JointDrive(btMultiBody* body, int link);
@@ -26,12 +28,17 @@ public:
   // Impulse the last solve applied (0 when disabled).
   double appliedImpulse() const;
 
+  void finalizeMultiDof() override;
+  int getIslandIdA() const override;
+  int getIslandIdB() const override { return getIslandIdA(); }
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override;
+  void debugDraw(class btIDebugDraw*) override {}
 
 private:
   bool enabled_ = false;
   int side_ = 0;  // 0: two-sided drive; +1: velocity >= target; -1: velocity <= target
+  double target_velocity_ = 0.0;
   double gain_ = std::numeric_limits<double>::infinity();
 };
 
