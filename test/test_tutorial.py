@@ -25,7 +25,8 @@ TOPICS = ['/tianracer/cmd_vel', '/tianracer/rear_left_velocity_controller/comman
 
 @pytest.fixture
 def tutorial(tmp_path):
-    """roslaunch tianracer_description tianracer.launch gui:=false, once the five controllers run."""
+    """roslaunch tianracer_description tianracer.launch gui:=false, once the five controllers run
+    (list_controllers polled until all five are 'running'; a timeout fails the test)."""
     ros = RosSystem(str(tmp_path))
     started = time.monotonic()
     launch = ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false'], 'tianracer_launch')
@@ -41,8 +42,6 @@ def test_tianracer_launch_brings_up_the_tutorials_system(tutorial):
     topics = tutorial.run(['rostopic', 'list']).stdout.split()
     for topic in TOPICS:
         assert topic in topics
-    assert 'Loaded controllers' in tutorial.launch.log() or 'running' in tutorial.run(
-        ['rosrun', 'controller_manager', 'controller_manager', 'list']).stdout
 
 
 DRIVE_AND_STOP = """

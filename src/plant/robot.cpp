@@ -1035,23 +1035,21 @@ std::vector<Sensor*> Robot::sensors()
   return out;
 }
 
-std::vector<Camera*> Robot::cameras()
+namespace
 {
-  std::vector<Camera*> out;
-  for (auto& s : in_->sensors)
-    if (auto* c = dynamic_cast<Camera*>(s.get()))
-      out.push_back(c);
+template <class Kind>
+std::vector<Kind*> sensorsOfKind(const std::vector<std::unique_ptr<Sensor>>& sensors)
+{
+  std::vector<Kind*> out;
+  for (auto& s : sensors)
+    if (auto* kind = dynamic_cast<Kind*>(s.get()))
+      out.push_back(kind);
   return out;
 }
+}  // namespace
 
-std::vector<Lidar*> Robot::lidars()
-{
-  std::vector<Lidar*> out;
-  for (auto& s : in_->sensors)
-    if (auto* l = dynamic_cast<Lidar*>(s.get()))
-      out.push_back(l);
-  return out;
-}
+std::vector<Camera*> Robot::cameras() { return sensorsOfKind<Camera>(in_->sensors); }
+std::vector<Lidar*> Robot::lidars() { return sensorsOfKind<Lidar>(in_->sensors); }
 
 Sensor* Robot::sensor(const std::string& name)
 {

@@ -1,8 +1,6 @@
 #include "bullet_plant/robot_description.h"
 
-#include <cmath>
 #include <mutex>
-#include <sstream>
 
 #include <console_bridge/console.h>
 #include <tinyxml2.h>
