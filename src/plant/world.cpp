@@ -6,6 +6,7 @@
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
+#include "dense_row_solver.h"
 #include "internals.h"
 #include "wheel_contact.h"
 
@@ -53,7 +54,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
   w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
   registerWheelContact(*w.dispatcher);
   w.broadphase.reset(new btDbvtBroadphase());
-  w.solver.reset(new btMultiBodyConstraintSolver());
+  w.solver.reset(new DenseRowSolver());
   w.dynamics.reset(new btMultiBodyDynamicsWorld(w.dispatcher.get(), w.broadphase.get(), w.solver.get(),
                                                 w.collision_config.get()));
   const urdf::Vector3& g = description.gravity;
