@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <BulletCollision/NarrowPhaseCollision/btManifoldPoint.h>
+
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 
 namespace bullet_plant
@@ -150,6 +152,61 @@ void DenseRowSolver::buildBlocks()
   }
 }
 
+void DenseRowSolver::startAt(const Row& row, btScalar impulse)
+{
+  btMultiBodySolverConstraint& c = *row.constraint;
+  if (c.m_appliedImpulse != 0 || !(impulse != 0))  // already started by Bullet, or nothing to start from
+    return;
+  impulse = std::min(std::max(impulse, c.m_lowerLimit), c.m_upperLimit);
+  c.m_appliedImpulse = impulse;
+  const Group& g = groups_[row.group];
+  const btScalar* column = &delassus_[g.block + row.local * g.size];
+  btScalar* velocity = &row_velocity_[g.offset];
+  for (int k = 0; k < g.size; ++k)
+    velocity[k] += column[k] * impulse;
+  impulse_change_[g.offset + row.local] += impulse;
+}
+
+void DenseRowSolver::warmStart(const btContactSolverInfo& info)
+{
+  if (!(info.m_solverMode & SOLVER_USE_WARMSTARTING))
+    return;
+  const btScalar factor = info.m_warmstartingFactor;
+  const int non_contact = m_multiBodyNonContactConstraints.size();
+  const int normal = m_multiBodyNormalContactConstraints.size();
+  for (int j = 0; j < non_contact; ++j)
+  {
+    btMultiBodySolverConstraint& c = *rows_[j].constraint;
+    if (c.m_orgConstraint)
+      startAt(rows_[j], factor * c.m_orgConstraint->getAppliedImpulse(c.m_orgDofIndex));
+  }
+  // Friction rows follow their contact's normal row, one or two each (more when Bullet adds
+  // rolling friction rows to the same array: then friction starts cold).
+  const int per_contact = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) ? 2 : 1;
+  const bool friction_paired = m_multiBodyFrictionContactConstraints.size() == per_contact * normal;
+  for (int j = 0; j < normal; ++j)
+  {
+    const Row& row = rows_[non_contact + j];
+    const auto* point = static_cast<const btManifoldPoint*>(row.constraint->m_originalContactPoint);
+    if (!point)
+      continue;
+    startAt(row, factor * point->m_appliedImpulse);
+    if (!friction_paired)
+      continue;
+    const btScalar normal_impulse = row.constraint->m_appliedImpulse;
+    const btScalar lateral[2] = {point->m_appliedImpulseLateral1, point->m_appliedImpulseLateral2};
+    for (int d = 0; d < per_contact; ++d)
+    {
+      const Row& friction = rows_[non_contact + normal + row.constraint->m_frictionIndex + d];
+      btMultiBodySolverConstraint& f = *friction.constraint;
+      // Within the friction pyramid of the normal impulse just started.
+      f.m_lowerLimit = -f.m_friction * normal_impulse;
+      f.m_upperLimit = f.m_friction * normal_impulse;
+      startAt(friction, factor * lateral[d]);
+    }
+  }
+}
+
 btScalar DenseRowSolver::visit(const Row& row)
 {
   btMultiBodySolverConstraint& c = *row.constraint;
@@ -228,6 +285,7 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
                                                                           constraints, numConstraints, info, debugDrawer);
   collectRows();
   buildBlocks();
+  warmStart(info);
 
   const int non_contact = m_multiBodyNonContactConstraints.size();
   const int normal = m_multiBodyNormalContactConstraints.size();

@@ -8,9 +8,14 @@
 // rows; each visit is then one axpy over the rows of its group.
 //
 // Same rows, same order, same clamping, friction bounds and residual as Bullet's iterations;
-// only the arithmetic is regrouped. Setup and write-back (forces, warm-start impulses) are
-// Bullet's. Where the dense form does not apply (rigid bodies that move, cone friction), the
-// iterations are Bullet's own.
+// only the arithmetic is regrouped. Setup and write-back (forces, impulses kept for the next
+// step) are Bullet's. Where the dense form does not apply (rigid bodies that move, cone
+// friction), the iterations are Bullet's own.
+//
+// One addition: with SOLVER_USE_WARMSTARTING (Bullet's default) every row starts from its impulse
+// of the previous step times m_warmstartingFactor, friction included. Bullet's multibody solver
+// starts friction and joint motor rows from zero each step, so a wheel's traction and a drive's
+// torque had to be rebuilt from nothing by the iterations of every step.
 #pragma once
 
 #include <vector>
@@ -44,6 +49,8 @@ private:
   bool denseApplies(const btContactSolverInfo& info) const;
   void collectRows();
   void buildBlocks();
+  void warmStart(const btContactSolverInfo& info);
+  void startAt(const Row& row, btScalar impulse);
   // Bullet's resolveSingleConstraintRowGeneric on the dense block; returns Bullet's residual.
   btScalar visit(const Row& row);
   void applyVelocityChanges();

@@ -29,17 +29,35 @@ int JointDrive::getIslandIdA() const
 
 void JointDrive::drive(double target_velocity, double gain, double max_impulse)
 {
-  enabled_ = max_impulse > 0 && gain > 0;
-  target_velocity_ = target_velocity;
-  gain_ = gain;
-  side_ = 0;
-  m_maxAppliedImpulse = btScalar(max_impulse);
+  set(target_velocity, gain, max_impulse, 0);
 }
 
 void JointDrive::bound(double target_velocity, bool lower)
 {
-  drive(target_velocity, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
-  side_ = lower ? 1 : -1;
+  set(target_velocity, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), lower ? 1 : -1);
+}
+
+void JointDrive::set(double target_velocity, double gain, double max_impulse, int side)
+{
+  if (!enabled_ || side_ != side)
+    forgetImpulse();
+  enabled_ = max_impulse > 0 && gain > 0;
+  target_velocity_ = target_velocity;
+  gain_ = gain;
+  side_ = side;
+  m_maxAppliedImpulse = btScalar(max_impulse);
+}
+
+void JointDrive::disable()
+{
+  enabled_ = false;
+  forgetImpulse();
+}
+
+void JointDrive::forgetImpulse()
+{
+  if (m_data.size() > 0)
+    internalSetAppliedImpulse(0, 0);
 }
 
 double JointDrive::appliedImpulse() const

@@ -22,7 +22,7 @@ public:
   // A one-sided rigid row: the joint velocity may not fall below (lower bound) or rise above
   // (upper bound) target_velocity. Used for position limits.
   void bound(double target_velocity, bool lower);
-  void disable() { enabled_ = false; }
+  void disable();
   bool enabled() const { return enabled_; }
   bool soft() const { return enabled_ && !std::isinf(gain_); }
   // Impulse the last solve applied (0 when disabled).
@@ -36,6 +36,10 @@ public:
   void debugDraw(class btIDebugDraw*) override {}
 
 private:
+  void set(double target_velocity, double gain, double max_impulse, int side);
+  // The solver starts the row from its last impulse: only from one of the same kind of row.
+  void forgetImpulse();
+
   bool enabled_ = false;
   int side_ = 0;  // 0: two-sided drive; +1: velocity >= target; -1: velocity <= target
   double target_velocity_ = 0.0;

@@ -60,7 +60,9 @@ World::World(const WorldDescription& description) : in_(new Internals)
   const urdf::Vector3& g = description.gravity;
   w.dynamics->setGravity(btVector3(btScalar(g.x), btScalar(g.y), btScalar(g.z)));
   btContactSolverInfo& info = w.dynamics->getSolverInfo();
-  info.m_numIterations = 20;
+  // Ten passes: with every row warm started (DenseRowSolver) the car creeps 0.15 mm in 10 s at
+  // rest; Bullet's cold-started friction needed twenty passes for 0.45 mm.
+  info.m_numIterations = 10;
   // Pyramid friction, as ODE (Gazebo's default engine) uses; Bullet's default cone costs trigonometry per contact.
   info.m_solverMode |= SOLVER_DISABLE_IMPLICIT_CONE_FRICTION;
   // Correct position errors (joint limits, contact penetration) in the velocity solve. Bullet's
