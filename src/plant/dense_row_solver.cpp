@@ -4,7 +4,11 @@
 
 #include <BulletCollision/NarrowPhaseCollision/btManifoldPoint.h>
 
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
+#include "joint_drive.h"
 
 namespace bullet_plant
 {
@@ -38,6 +42,237 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
   return sum;
 }
 }  // namespace
+
+const JointSpaceInertia* DenseRowSolver::inertiaOf(btMultiBody* body)
+{
+  for (size_t k = 0; k < inertias_used_; ++k)
+    if (inertias_[k].first == body)
+      return inertias_[k].second.get();
+  if (inertias_used_ == inertias_.size())
+    inertias_.emplace_back(nullptr, new JointSpaceInertia);
+  auto& slot = inertias_[inertias_used_++];
+  slot.first = body;
+  if (!slot.second)
+    slot.second.reset(new JointSpaceInertia);
+  if (!slot.second->update(*body))
+  {
+    slot.second.reset();  // not positive definite: Bullet's passes answer for this body
+    return nullptr;
+  }
+  return slot.second.get();
+}
+
+// A contact between one multibody and the static world, with plain pyramid friction: what
+// convertMultiBodyContact handles without its rigid-body, rolling, spinning, anisotropic and
+// cached-direction cases.
+bool DenseRowSolver::contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info)
+{
+  const auto* a = btMultiBodyLinkCollider::upcast(manifold.getBody0());
+  const auto* b = btMultiBodyLinkCollider::upcast(manifold.getBody1());
+  if ((a != nullptr) == (b != nullptr))
+    return false;
+  const btCollisionObject* other = a ? manifold.getBody1() : manifold.getBody0();
+  if (!other->isStaticObject() || btRigidBody::upcast(other))
+    return false;
+  for (const btCollisionObject* object : {manifold.getBody0(), manifold.getBody1()})
+    if (object->hasAnisotropicFriction(btCollisionObject::CF_ANISOTROPIC_FRICTION |
+                                       btCollisionObject::CF_ANISOTROPIC_ROLLING_FRICTION))
+      return false;
+  if (info.m_solverMode & SOLVER_ENABLE_FRICTION_DIRECTION_CACHING)
+    return false;
+  for (int j = 0; j < manifold.getNumContacts(); ++j)
+  {
+    const btManifoldPoint& point = manifold.getContactPoint(j);
+    if (point.m_combinedRollingFriction > 0 || point.m_combinedSpinningFriction > 0)
+      return false;
+  }
+  return inertiaOf((a ? a : b)->m_multiBody) != nullptr;
+}
+
+// setupMultiBodyContactConstraint for a multibody on one side and the static world on the other.
+void DenseRowSolver::setupContactRow(btMultiBodySolverConstraint& row, const btVector3& direction, btManifoldPoint& point,
+                                     const btContactSolverInfo& info, bool friction)
+{
+  const bool on_a = row.m_multiBodyA != nullptr;
+  btMultiBody* body = on_a ? row.m_multiBodyA : row.m_multiBodyB;
+  const int link = on_a ? row.m_linkA : row.m_linkB;
+  const btVector3& position = on_a ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+  const btVector3 normal = on_a ? direction : -direction;  // the multibody's side of the row
+  const int n = body->getNumDofs() + 6;
+
+  btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
+  btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
+  if (!friction)
+  {
+    if (point.m_contactPointFlags & (BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP))
+    {
+      if (point.m_contactPointFlags & BT_CONTACT_FLAG_HAS_CONTACT_CFM)
+        cfm = point.m_contactCFM;
+      if (point.m_contactPointFlags & BT_CONTACT_FLAG_HAS_CONTACT_ERP)
+        erp = point.m_contactERP;
+    }
+    else if (point.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING)
+    {
+      const btScalar denominator = std::max(info.m_timeStep * point.m_combinedContactStiffness1 + point.m_combinedContactDamping1,
+                                            btScalar(SIMD_EPSILON));
+      cfm = btScalar(1) / denominator;
+      erp = info.m_timeStep * point.m_combinedContactStiffness1 / denominator;
+    }
+  }
+  cfm /= info.m_timeStep;
+
+  int& velocity_index = on_a ? row.m_deltaVelAindex : row.m_deltaVelBindex;
+  velocity_index = body->getCompanionId();
+  if (velocity_index < 0)
+  {
+    velocity_index = m_data.m_deltaVelocities.size();
+    body->setCompanionId(velocity_index);
+    m_data.m_deltaVelocities.resize(m_data.m_deltaVelocities.size() + n);
+  }
+  int& jacobian_index = on_a ? row.m_jacAindex : row.m_jacBindex;
+  jacobian_index = m_data.m_jacobians.size();
+  m_data.m_jacobians.resize(m_data.m_jacobians.size() + n);
+  m_data.m_deltaVelocitiesUnitImpulse.resize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
+  btScalar* jacobian = &m_data.m_jacobians[jacobian_index];
+  btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobian_index];
+  body->fillContactJacobianMultiDof(link, position, normal, jacobian, m_data.scratch_r, m_data.scratch_v, m_data.scratch_m);
+  inertiaOf(body)->solve(jacobian, response);
+
+  // Lever arms as Bullet keeps them: the multibody's from its link's centre of mass, the static
+  // side's from its solver body (whose velocity never changes).
+  const btVector3 origin = link < 0 ? body->getBasePos() : body->getLink(link).m_cachedWorldTransform.getOrigin();
+  const btSolverBody& fixed = m_tmpSolverBodyPool[on_a ? row.m_solverBodyIdB : row.m_solverBodyIdA];
+  const btVector3 arm_a = on_a ? position - origin : point.getPositionWorldOnA() - fixed.getWorldTransform().getOrigin();
+  const btVector3 arm_b = on_a ? point.getPositionWorldOnB() - fixed.getWorldTransform().getOrigin() : position - origin;
+  row.m_relpos1CrossNormal = arm_a.cross(direction);
+  row.m_contactNormal1 = direction;
+  row.m_relpos2CrossNormal = -arm_b.cross(direction);
+  row.m_contactNormal2 = -direction;
+  row.m_angularComponentA.setZero();
+  row.m_angularComponentB.setZero();
+
+  btScalar denominator = 0, relative_velocity = 0;
+  const btScalar* velocity = body->getVelocityVector();
+  for (int i = 0; i < n; ++i)
+  {
+    denominator += jacobian[i] * response[i];
+    relative_velocity += velocity[i] * jacobian[i];
+  }
+  const btScalar d = denominator + cfm;
+  row.m_jacDiagABInv = d > SIMD_EPSILON ? info.m_sor / d : btScalar(0);
+  row.m_friction = point.m_combinedFriction;
+
+  btScalar distance = 0, restitution = 0;
+  if (!friction)
+  {
+    distance = point.getDistance() + info.m_linearSlop;
+    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
+                                            info.m_restitutionVelocityThreshold), btScalar(0));
+  }
+  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
+  {
+    distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
+  }
+  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
+  if (!friction && distance > 0)
+    velocity_error -= distance / info.m_timeStep;
+  else
+    positional_error = -distance * erp / info.m_timeStep;
+  row.m_rhs = (positional_error + velocity_error) * row.m_jacDiagABInv;
+  row.m_rhsPenetration = 0;
+  row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
+  row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
+  row.m_cfm = cfm * row.m_jacDiagABInv;
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+}
+
+// convertMultiBodyContact's rows (a normal row, then one or two friction rows per point), built by
+// setupContactRow.
+void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info)
+{
+  auto* object_a = const_cast<btCollisionObject*>(manifold.getBody0());
+  auto* object_b = const_cast<btCollisionObject*>(manifold.getBody1());
+  const auto* collider_a = btMultiBodyLinkCollider::upcast(object_a);
+  const auto* collider_b = btMultiBodyLinkCollider::upcast(object_b);
+  const int solver_body_a = collider_a ? -1 : getOrInitSolverBody(*object_a, info.m_timeStep);
+  const int solver_body_b = collider_b ? -1 : getOrInitSolverBody(*object_b, info.m_timeStep);
+  auto start = [&](btMultiBodySolverConstraint& row, btManifoldPoint& point) {
+    row.m_orgConstraint = nullptr;
+    row.m_orgDofIndex = -1;
+    row.m_solverBodyIdA = solver_body_a;
+    row.m_solverBodyIdB = solver_body_b;
+    row.m_multiBodyA = collider_a ? collider_a->m_multiBody : nullptr;
+    row.m_multiBodyB = collider_b ? collider_b->m_multiBody : nullptr;
+    if (collider_a)
+      row.m_linkA = collider_a->m_link;
+    if (collider_b)
+      row.m_linkB = collider_b->m_link;
+    row.m_originalContactPoint = &point;
+  };
+  const bool two_directions = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
+  for (int j = 0; j < manifold.getNumContacts(); ++j)
+  {
+    btManifoldPoint& point = manifold.getContactPoint(j);
+    if (point.getDistance() > manifold.getContactProcessingThreshold())
+    {
+      point.m_appliedImpulse = 0;
+      point.m_prevRHS = 0;
+      continue;
+    }
+    const int normal_index = m_multiBodyNormalContactConstraints.size();
+    btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
+    start(normal, point);
+    setupContactRow(normal, point.m_normalWorldOnB, point, info, false);
+    normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
+
+    btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
+    point.m_lateralFrictionDir1.normalize();
+    point.m_lateralFrictionDir2.normalize();
+    for (int d = 0; d < (two_directions ? 2 : 1); ++d)
+    {
+      btMultiBodySolverConstraint& row = m_multiBodyFrictionContactConstraints.expandNonInitializing();
+      start(row, point);
+      row.m_frictionIndex = normal_index;
+      setupContactRow(row, d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, point, info, true);
+    }
+    if (two_directions && (info.m_solverMode & SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION))
+      point.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+  }
+}
+
+void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info)
+{
+  // Bullet's articulated warm starting moves velocities while it builds rows: left to Bullet.
+  if (info.m_solverMode & SOLVER_USE_ARTICULATED_WARMSTARTING)
+  {
+    btMultiBodyConstraintSolver::convertContacts(manifolds, numManifolds, info);
+    return;
+  }
+  inertias_used_ = 0;
+  for (int i = 0; i < numManifolds; ++i)
+  {
+    btPersistentManifold* manifold = manifolds[i];
+    if (!btMultiBodyLinkCollider::upcast(manifold->getBody0()) && !btMultiBodyLinkCollider::upcast(manifold->getBody1()))
+      convertContact(manifold, info);
+    else if (contactRowsApply(*manifold, info))
+      convertStaticContact(*manifold, info);
+    else
+      convertMultiBodyContact(manifold, info);
+  }
+  m_data.m_solverBodyPool = &m_tmpSolverBodyPool;
+  m_data.m_fixedBodyId = m_fixedBodyId;
+  for (int i = 0; i < m_tmpNumMultiBodyConstraints; ++i)
+  {
+    btMultiBodyConstraint* constraint = m_tmpMultiBodyConstraints[i];
+    if (auto* drive = dynamic_cast<JointDrive*>(constraint))
+      drive->createRows(m_multiBodyNonContactConstraints, m_data, info, inertiaOf(drive->getMultiBodyA()));
+    else
+      constraint->createConstraintRows(m_multiBodyNonContactConstraints, m_data, info);
+  }
+  for (int i = 0; i < m_multiBodyNonContactConstraints.size(); ++i)
+    m_multiBodyNonContactConstraints[i].m_appliedImpulse = 0;
+}
 
 bool DenseRowSolver::denseApplies(const btContactSolverInfo& info) const
 {

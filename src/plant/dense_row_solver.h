@@ -12,21 +12,30 @@
 // step) are Bullet's. Where the dense form does not apply (rigid bodies that move, cone
 // friction), the iterations are Bullet's own.
 //
+// The rows' responses M^-1 J^T come from each multibody's joint-space inertia, built and factored
+// once per step (JointSpaceInertia), for contacts between a multibody and the static world and for
+// JointDrive rows; other rows are Bullet's, with its articulated-body pass per row.
+//
 // One addition: with SOLVER_USE_WARMSTARTING (Bullet's default) every row starts from its impulse
 // of the previous step times m_warmstartingFactor, friction included. Bullet's multibody solver
 // starts friction and joint motor rows from zero each step, so a wheel's traction and a drive's
 // torque had to be rebuilt from nothing by the iterations of every step.
 #pragma once
 
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
+
+#include "joint_space_inertia.h"
 
 namespace bullet_plant
 {
 class DenseRowSolver : public btMultiBodyConstraintSolver
 {
 protected:
+  void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
   btScalar solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int numBodies,
                                              btPersistentManifold** manifolds, int numManifolds,
                                              btTypedConstraint** constraints, int numConstraints,
@@ -46,6 +55,13 @@ private:
     int block = 0;   // into the matrix storage
   };
 
+  // The factored inertia of a multibody for this step, or null where Bullet's passes must answer.
+  const JointSpaceInertia* inertiaOf(btMultiBody* body);
+  bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
+  void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
+  void setupContactRow(btMultiBodySolverConstraint& row, const btVector3& direction, btManifoldPoint& point,
+                       const btContactSolverInfo& info, bool friction);
+
   bool denseApplies(const btContactSolverInfo& info) const;
   void collectRows();
   void buildBlocks();
@@ -55,6 +71,8 @@ private:
   btScalar visit(const Row& row);
   void applyVelocityChanges();
 
+  std::vector<std::pair<btMultiBody*, std::unique_ptr<JointSpaceInertia>>> inertias_;  // this step's
+  size_t inertias_used_ = 0;
   std::vector<Row> rows_;  // non-contact rows, then normal contacts, then friction, as Bullet's arrays
   std::vector<Group> groups_;
   std::vector<int> members_;  // rows_ indices, group by group in block order

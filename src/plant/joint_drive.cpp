@@ -1,5 +1,7 @@
 #include "joint_drive.h"
 
+#include "joint_space_inertia.h"
+
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
@@ -70,6 +72,12 @@ double JointDrive::appliedImpulse() const
 void JointDrive::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                                       const btContactSolverInfo& info)
 {
+  createRows(rows, data, info, nullptr);
+}
+
+void JointDrive::createRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                            const btContactSolverInfo& info, const JointSpaceInertia* inertia)
+{
   if (!enabled_)
     return;
   if (m_numDofsFinalized != m_jacSizeBoth)
@@ -95,9 +103,14 @@ void JointDrive::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiB
     lower = -SIMD_INFINITY;
     upper = 0;
   }
-  const btVector3 unused(0, 0, 0);
-  fillMultiBodyConstraint(row, data, jacobianA(0), nullptr, unused, unused, unused, unused, 0, info, lower, upper,
-                          false, 1, false, btScalar(target_velocity_));
+  if (inertia)
+    fillRow(row, data, *inertia, lower, upper);
+  else
+  {
+    const btVector3 unused(0, 0, 0);
+    fillMultiBodyConstraint(row, data, jacobianA(0), nullptr, unused, unused, unused, unused, 0, info, lower, upper,
+                            false, 1, false, btScalar(target_velocity_));
+  }
   row.m_orgConstraint = this;
   row.m_orgDofIndex = 0;
   if (std::isinf(gain_) || row.m_jacDiagABInv <= 0)
@@ -110,6 +123,48 @@ void JointDrive::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiB
   row.m_rhs *= soft / row.m_jacDiagABInv;
   row.m_cfm = cfm * soft;
   row.m_jacDiagABInv = soft;
+}
+
+// What fillMultiBodyConstraint makes of this row (one multibody, the joint's velocity, no position
+// error), with the response from the factored joint-space inertia instead of an articulated pass.
+void JointDrive::fillRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data,
+                         const JointSpaceInertia& inertia, btScalar lower, btScalar upper)
+{
+  btMultiBody* body = m_bodyA;
+  const int n = body->getNumDofs() + 6;
+  row.m_multiBodyA = body;
+  row.m_multiBodyB = nullptr;
+  row.m_linkA = m_linkA;
+  row.m_linkB = -1;
+  row.m_deltaVelAindex = body->getCompanionId();
+  if (row.m_deltaVelAindex < 0)
+  {
+    row.m_deltaVelAindex = data.m_deltaVelocities.size();
+    body->setCompanionId(row.m_deltaVelAindex);
+    data.m_deltaVelocities.resize(data.m_deltaVelocities.size() + n);
+  }
+  row.m_jacAindex = data.m_jacobians.size();
+  data.m_jacobians.resize(data.m_jacobians.size() + n);
+  data.m_deltaVelocitiesUnitImpulse.resize(data.m_deltaVelocitiesUnitImpulse.size() + n);
+  btScalar* jacobian = &data.m_jacobians[row.m_jacAindex];
+  btScalar* response = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
+  const btScalar* source = jacobianA(0);
+  for (int i = 0; i < n; ++i)
+    jacobian[i] = source[i];
+  inertia.solve(jacobian, response);
+
+  const int dof = 6 + body->getLink(m_linkA).m_dofOffset;
+  const btScalar denominator = response[dof];  // J is the unit vector of the joint's velocity
+  row.m_jacDiagABInv = denominator > SIMD_EPSILON ? btScalar(1) / denominator : btScalar(0);
+  const btScalar velocity = body->getVelocityVector()[dof];
+  row.m_friction = 0;
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  row.m_rhs = (btScalar(target_velocity_) - velocity) * row.m_jacDiagABInv;
+  row.m_rhsPenetration = 0;
+  row.m_cfm = 0;
+  row.m_lowerLimit = lower;
+  row.m_upperLimit = upper;
 }
 
 }  // namespace bullet_plant

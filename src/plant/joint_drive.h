@@ -13,6 +13,8 @@
 
 namespace bullet_plant
 {
+class JointSpaceInertia;
+
 class JointDrive : public btMultiBodyConstraint
 {
 public:
@@ -33,9 +35,15 @@ public:
   int getIslandIdB() const override { return getIslandIdA(); }
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override;
+  // The same row; with the multibody's factored joint-space inertia of this step when given
+  // (DenseRowSolver), else with Bullet's articulated-body pass.
+  void createRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data, const btContactSolverInfo& info,
+                  const JointSpaceInertia* inertia);
   void debugDraw(class btIDebugDraw*) override {}
 
 private:
+  void fillRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data, const JointSpaceInertia& inertia,
+               btScalar lower, btScalar upper);
   void set(double target_velocity, double gain, double max_impulse, int side);
   // The solver starts the row from its last impulse: only from one of the same kind of row.
   void forgetImpulse();

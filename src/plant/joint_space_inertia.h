@@ -1,0 +1,44 @@
+// The joint-space inertia matrix M of a btMultiBody, in Bullet's generalized velocities (base
+// angular and linear velocity in the world frame, then the joint rates), and its Cholesky factor.
+//
+// Bullet answers "how does the multibody respond to this generalized impulse" (M^-1 f) with one
+// articulated-body pass per question; a constraint row asks once to set up and the car's sixteen
+// rows asked sixteen times per step. Building M from the links' kinematics (each body's 6 x n
+// Jacobian, M = sum J^T diag(I, m) J) and factoring it once per step answers each row with two
+// triangular solves.
+#pragma once
+
+#include <vector>
+
+#include <LinearMath/btScalar.h>
+
+class btMultiBody;
+
+namespace bullet_plant
+{
+class JointSpaceInertia
+{
+public:
+  // Rebuilds M from the multibody's cached link transforms (valid from Bullet's forward dynamics
+  // of this step on). Returns false if M is not positive definite (then use Bullet's own passes).
+  bool update(const btMultiBody& body);
+  int size() const { return n_; }
+
+  // half = L^-1 f for a generalized force f (size() entries): M^-1 = L^-T L^-1, so the velocity
+  // change per unit impulse of two rows i, j is half_i . half_j.
+  void halfSolve(const btScalar* f, double* half) const;
+  // out = L^-T half: the generalized velocity change (M^-1 f).
+  void finishSolve(const double* half, btScalar* out) const;
+  // out = M^-1 f.
+  void solve(const btScalar* f, btScalar* out) const;
+
+private:
+  int n_ = 0;
+  bool fixed_base_ = false;
+  std::vector<double> jacobians_;  // per body, 6 x n, row-major: angular rows, then linear rows
+  std::vector<double> lower_;      // Cholesky factor L of M, n x n row-major
+  std::vector<double> inertia_;     // M, lower triangle
+  mutable std::vector<double> scratch_, half_;
+};
+
+}  // namespace bullet_plant
