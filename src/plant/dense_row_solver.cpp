@@ -378,9 +378,16 @@ void DenseRowSolver::buildBlocks()
 
     btScalar* matrix = &delassus_[g.block];
     const int* members = &members_[g.offset];
+    // The common case, both rows acting on one multibody only, without the general bookkeeping.
+    const bool one_sided = c.m_multiBodyA && !c.m_multiBodyB;
+    const btScalar* jacobian = one_sided ? &m_data.m_jacobians[c.m_jacAindex] : nullptr;
+    const int n = one_sided ? degreesOfFreedom(c.m_multiBodyA) : 0;
     for (int other = 0; other <= row.local; ++other)
     {
-      const btScalar a = response(c, *rows_[members[other]].constraint, m_data);
+      const btMultiBodySolverConstraint& o = *rows_[members[other]].constraint;
+      const btScalar a = one_sided && o.m_multiBodyA == c.m_multiBodyA && !o.m_multiBodyB
+                           ? dot(jacobian, &m_data.m_deltaVelocitiesUnitImpulse[o.m_jacAindex], n)
+                           : response(c, o, m_data);
       matrix[row.local * g.size + other] = a;
       matrix[other * g.size + row.local] = a;
     }

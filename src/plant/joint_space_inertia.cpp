@@ -8,17 +8,11 @@ namespace bullet_plant
 {
 namespace
 {
-// A spatial motion vector (angular; linear at the body's centre of mass), in doubles.
-struct Motion
-{
-  double w[3], v[3];
-};
-
 // Bullet's parent-to-child motion transform: w' = R w, v' = R v + w' x r, with r the vector from
 // the parent's centre of mass to the child's, in the child's frame.
-Motion toChild(const btMatrix3x3& rotation, const btVector3& r, const Motion& m)
+JointSpaceInertia::Motion toChild(const btMatrix3x3& rotation, const btVector3& r, const JointSpaceInertia::Motion& m)
 {
-  Motion out;
+  JointSpaceInertia::Motion out;
   for (int a = 0; a < 3; ++a)
   {
     out.w[a] = rotation[a][0] * m.w[0] + rotation[a][1] * m.w[1] + rotation[a][2] * m.w[2];
@@ -36,36 +30,29 @@ bool JointSpaceInertia::update(const btMultiBody& body)
   const int links = body.getNumLinks();
   n_ = body.getNumDofs() + 6;
   fixed_base_ = body.hasFixedBase();
-  jacobians_.assign(size_t(links + 1) * 6 * n_, 0.0);
+  // Body b's Jacobian has non-zero columns only for the base and the joints between b and the
+  // base: columns_[b] lists them, motions_ holds those columns, body after body.
+  motions_.clear();
+  columns_.clear();
+  first_column_.assign(1, 0);
   inertia_.assign(size_t(n_) * n_, 0.0);
   std::vector<double>& m = inertia_;
 
-  auto column = [&](int b, int k) {
-    const double* J = &jacobians_[size_t(b) * 6 * n_];
-    return Motion{{J[0 * n_ + k], J[1 * n_ + k], J[2 * n_ + k]}, {J[3 * n_ + k], J[4 * n_ + k], J[5 * n_ + k]}};
-  };
-  auto setColumn = [&](int b, int k, const Motion& c) {
-    double* J = &jacobians_[size_t(b) * 6 * n_];
-    for (int a = 0; a < 3; ++a)
-    {
-      J[a * n_ + k] = c.w[a];
-      J[(3 + a) * n_ + k] = c.v[a];
-    }
-  };
-  // Adds J_b^T diag(inertia, mass) J_b to M.
+  // Adds J_b^T diag(inertia, mass) J_b to M (lower triangle) over b's columns.
   auto addBody = [&](int b, const btVector3& inertia, double mass) {
-    const double* J = &jacobians_[size_t(b) * 6 * n_];
-    const double weight[6] = {inertia.x(), inertia.y(), inertia.z(), mass, mass, mass};
-    for (int row = 0; row < 6; ++row)
+    const int begin = first_column_[b], end = first_column_[b + 1];
+    for (int p = begin; p < end; ++p)
     {
-      const double* Jr = J + row * n_;
-      for (int i = 0; i < n_; ++i)
+      const Motion& cp = motions_[p];
+      const double wp[3] = {inertia.x() * cp.w[0], inertia.y() * cp.w[1], inertia.z() * cp.w[2]};
+      for (int q = begin; q < end; ++q)
       {
-        if (Jr[i] == 0)
+        const int i = columns_[p], j = columns_[q];
+        if (j > i)
           continue;
-        const double wi = weight[row] * Jr[i];
-        for (int j = 0; j <= i; ++j)
-          m[size_t(i) * n_ + j] += wi * Jr[j];
+        const Motion& cq = motions_[q];
+        m[size_t(i) * n_ + j] += wp[0] * cq.w[0] + wp[1] * cq.w[1] + wp[2] * cq.w[2] +
+                                 mass * (cp.v[0] * cq.v[0] + cp.v[1] * cq.v[1] + cp.v[2] * cq.v[2]);
       }
     }
   };
@@ -74,39 +61,36 @@ bool JointSpaceInertia::update(const btMultiBody& body)
   if (!fixed_base_)
   {
     const btMatrix3x3 world_to_base(body.getWorldToBaseRot());
-    for (int a = 0; a < 3; ++a)
+    for (int a = 0; a < 6; ++a)
     {
       Motion c{};
       for (int r = 0; r < 3; ++r)
-        c.w[r] = world_to_base[r][a];
-      setColumn(0, a, c);
-      Motion d{};
-      for (int r = 0; r < 3; ++r)
-        d.v[r] = world_to_base[r][a];
-      setColumn(0, 3 + a, d);
+        (a < 3 ? c.w : c.v)[r] = world_to_base[r][a % 3];
+      motions_.push_back(c);
+      columns_.push_back(a);
     }
-    addBody(0, body.getBaseInertia(), body.getBaseMass());
   }
+  first_column_.push_back(int(columns_.size()));
+  addBody(0, body.getBaseInertia(), body.getBaseMass());
   for (int i = 0; i < links; ++i)
   {
     const btMultibodyLink& link = body.getLink(i);
     const int parent = link.m_parent + 1;  // body index: 0 is the base
     const btMatrix3x3 rotation(link.m_cachedRotParentToThis);
-    for (int k = 0; k < n_; ++k)
+    for (int p = first_column_[parent]; p < first_column_[parent + 1]; ++p)
     {
-      const Motion p = column(parent, k);
-      bool zero = true;
-      for (int a = 0; a < 3 && zero; ++a)
-        zero = p.w[a] == 0 && p.v[a] == 0;
-      if (!zero)
-        setColumn(i + 1, k, toChild(rotation, link.m_cachedRVector, p));
+      const Motion child = toChild(rotation, link.m_cachedRVector, motions_[p]);
+      motions_.push_back(child);
+      columns_.push_back(columns_[p]);
     }
     for (int d = 0; d < link.m_dofCount; ++d)
     {
       const btVector3& top = link.getAxisTop(d);
       const btVector3& bottom = link.getAxisBottom(d);
-      setColumn(i + 1, 6 + link.m_dofOffset + d, Motion{{top.x(), top.y(), top.z()}, {bottom.x(), bottom.y(), bottom.z()}});
+      motions_.push_back(Motion{{top.x(), top.y(), top.z()}, {bottom.x(), bottom.y(), bottom.z()}});
+      columns_.push_back(6 + link.m_dofOffset + d);
     }
+    first_column_.push_back(int(columns_.size()));
     addBody(i + 1, link.m_inertiaLocal, link.m_mass);
   }
   // A fixed base does not move: its six entries are decoupled (and ignored by the solves).
@@ -137,6 +121,14 @@ bool JointSpaceInertia::update(const btMultiBody& body)
       lower_[size_t(i) * n_ + j] = s / ljj;
     }
   }
+  upper_.resize(lower_.size());
+  inverse_diagonal_.resize(n_);
+  for (int i = 0; i < n_; ++i)
+  {
+    inverse_diagonal_[i] = 1.0 / lower_[size_t(i) * n_ + i];
+    for (int k = 0; k < n_; ++k)
+      upper_[size_t(i) * n_ + k] = lower_[size_t(k) * n_ + i];
+  }
   scratch_.resize(n_);
   half_.resize(n_);
   return true;
@@ -144,28 +136,37 @@ bool JointSpaceInertia::update(const btMultiBody& body)
 
 void JointSpaceInertia::halfSolve(const btScalar* f, double* half) const
 {
-  for (int i = 0; i < n_; ++i)
+  const int first = fixed_base_ ? 6 : 0;
+  for (int i = 0; i < first; ++i)
+    half[i] = 0;
+  const double* L = lower_.data();
+  for (int i = first; i < n_; ++i)
   {
-    double s = (fixed_base_ && i < 6) ? 0.0 : double(f[i]);
-    const double* Li = &lower_[size_t(i) * n_];
-    for (int k = 0; k < i; ++k)
+    const double* Li = L + size_t(i) * n_;
+    double s = f[i];
+    for (int k = first; k < i; ++k)
       s -= Li[k] * half[k];
-    half[i] = s / Li[i];
+    half[i] = s * inverse_diagonal_[i];
   }
 }
 
 void JointSpaceInertia::finishSolve(const double* half, btScalar* out) const
 {
+  const int first = fixed_base_ ? 6 : 0;
   double* x = scratch_.data();
-  for (int i = n_ - 1; i >= 0; --i)
+  const double* U = upper_.data();  // L^T, row-major
+  for (int i = n_ - 1; i >= first; --i)
   {
+    const double* Ui = U + size_t(i) * n_;
     double s = half[i];
     for (int k = i + 1; k < n_; ++k)
-      s -= lower_[size_t(k) * n_ + i] * x[k];
-    x[i] = s / lower_[size_t(i) * n_ + i];
+      s -= Ui[k] * x[k];
+    x[i] = s * inverse_diagonal_[i];
   }
-  for (int i = 0; i < n_; ++i)
-    out[i] = (fixed_base_ && i < 6) ? btScalar(0) : btScalar(x[i]);
+  for (int i = 0; i < first; ++i)
+    out[i] = 0;
+  for (int i = first; i < n_; ++i)
+    out[i] = btScalar(x[i]);
 }
 
 void JointSpaceInertia::solve(const btScalar* f, btScalar* out) const

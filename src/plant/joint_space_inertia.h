@@ -19,6 +19,12 @@ namespace bullet_plant
 class JointSpaceInertia
 {
 public:
+  // A spatial motion vector (angular; linear at a body's centre of mass, in its frame).
+  struct Motion
+  {
+    double w[3], v[3];
+  };
+
   // Rebuilds M from the multibody's cached link transforms (valid from Bullet's forward dynamics
   // of this step on). Returns false if M is not positive definite (then use Bullet's own passes).
   bool update(const btMultiBody& body);
@@ -35,8 +41,14 @@ public:
 private:
   int n_ = 0;
   bool fixed_base_ = false;
-  std::vector<double> jacobians_;  // per body, 6 x n, row-major: angular rows, then linear rows
+  // The bodies' Jacobians by non-zero column: body b's columns are motions_[first_column_[b] ..
+  // first_column_[b + 1]), for the generalized velocities columns_[...].
+  std::vector<Motion> motions_;
+  std::vector<int> columns_;
+  std::vector<int> first_column_;
   std::vector<double> lower_;      // Cholesky factor L of M, n x n row-major
+  std::vector<double> upper_;      // L^T, row-major
+  std::vector<double> inverse_diagonal_;
   std::vector<double> inertia_;     // M, lower triangle
   mutable std::vector<double> scratch_, half_;
 };
