@@ -3,7 +3,7 @@
 //
 // btMultiBodyConstraintSolver visits a row with three passes over its multibody's degrees of
 // freedom (J.dv, then dv += M^-1 J^T di, once into the solver's buffer and once into the
-// multibody): for the car (12 dof, 16 rows, 20 iterations) that was a third of a step. The rows'
+// multibody): for the car (12 dof, 16 rows, 20 passes) that was a third of a step. The rows'
 // J and M^-1 J^T are what Bullet's setup already computed, so A costs one dot product per pair of
 // rows; each visit is then one axpy over the rows of its group.
 //
