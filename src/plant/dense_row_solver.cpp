@@ -1,6 +1,7 @@
 #include "dense_row_solver.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <BulletCollision/NarrowPhaseCollision/btManifoldPoint.h>
 
@@ -49,7 +50,7 @@ const JointSpaceInertia* DenseRowSolver::inertiaOf(btMultiBody* body)
     if (inertias_[k].first == body)
       return inertias_[k].second.get();
   if (inertias_used_ == inertias_.size())
-    inertias_.emplace_back(nullptr, new JointSpaceInertia);
+    inertias_.emplace_back();
   auto& slot = inertias_[inertias_used_++];
   slot.first = body;
   if (!slot.second)
@@ -397,7 +398,7 @@ void DenseRowSolver::buildBlocks()
 void DenseRowSolver::startAt(const Row& row, btScalar impulse)
 {
   btMultiBodySolverConstraint& c = *row.constraint;
-  if (c.m_appliedImpulse != 0 || !(impulse != 0))  // already started by Bullet, or nothing to start from
+  if (c.m_appliedImpulse != 0 || impulse == 0 || !std::isfinite(impulse))  // started by Bullet, or nothing to start from
     return;
   impulse = std::min(std::max(impulse, c.m_lowerLimit), c.m_upperLimit);
   c.m_appliedImpulse = impulse;

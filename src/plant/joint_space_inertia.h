@@ -30,15 +30,14 @@ public:
   bool update(const btMultiBody& body);
   int size() const { return n_; }
 
-  // half = L^-1 f for a generalized force f (size() entries): M^-1 = L^-T L^-1, so the velocity
-  // change per unit impulse of two rows i, j is half_i . half_j.
-  void halfSolve(const btScalar* f, double* half) const;
-  // out = L^-T half: the generalized velocity change (M^-1 f).
-  void finishSolve(const double* half, btScalar* out) const;
   // out = M^-1 f.
   void solve(const btScalar* f, btScalar* out) const;
 
 private:
+  // The two halves of solve: half = L^-1 f, then out = L^-T half (M = L L^T).
+  void halfSolve(const btScalar* f, double* half) const;
+  void finishSolve(const double* half, btScalar* out) const;
+
   int n_ = 0;
   bool fixed_base_ = false;
   // The bodies' Jacobians by non-zero column: body b's columns are motions_[first_column_[b] ..
