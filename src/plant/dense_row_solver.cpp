@@ -44,23 +44,73 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
 }
 }  // namespace
 
-const JointSpaceInertia* DenseRowSolver::inertiaOf(btMultiBody* body)
+int DenseRowSolver::bodySlot(btMultiBody* body)
 {
-  for (size_t k = 0; k < inertias_used_; ++k)
-    if (inertias_[k].first == body)
-      return inertias_[k].second.get();
-  if (inertias_used_ == inertias_.size())
-    inertias_.emplace_back();
-  auto& slot = inertias_[inertias_used_++];
-  slot.first = body;
-  if (!slot.second)
-    slot.second.reset(new JointSpaceInertia);
-  if (!slot.second->update(*body))
+  for (size_t k = 0; k < bodies_used_; ++k)
+    if (body_rows_[k].body == body)
+      return body_rows_[k].inertia ? int(k) : -1;
+  if (bodies_used_ == body_rows_.size())
+    body_rows_.emplace_back();
+  BodyRows& slot = body_rows_[bodies_used_++];
+  slot.body = body;
+  slot.rows.clear();
+  if (!slot.inertia)
+    slot.inertia.reset(new JointSpaceInertia);
+  if (!slot.inertia->update(*body))
   {
-    slot.second.reset();  // not positive definite: Bullet's passes answer for this body
-    return nullptr;
+    slot.inertia.reset();  // not positive definite: Bullet's passes answer for this body
+    return -1;
   }
-  return slot.second.get();
+  return int(bodies_used_ - 1);
+}
+
+void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
+                                   btScalar cfm, btScalar sor)
+{
+  std::vector<int>& own = body_rows_[slot].rows;
+  own.push_back(int(deferred_.size()));
+  deferred_.push_back(DeferredRow{&rows, index, slot, int(own.size() - 1), velocity_error, cfm, sor});
+}
+
+// The responses M^-1 J^T of each multibody's deferred rows, all at once, and what Bullet derives
+// from them: m_jacDiagABInv = sor / (J M^-1 J^T + cfm), and the rhs and cfm scaled by it.
+void DenseRowSolver::finishDeferredRows()
+{
+  for (size_t s = 0; s < bodies_used_; ++s)
+  {
+    BodyRows& slot = body_rows_[s];
+    const int k = int(slot.rows.size());
+    if (k == 0)
+      continue;
+    const int n = slot.inertia->size();
+    const int padded = (k + JointSpaceInertia::kSides - 1) / JointSpaceInertia::kSides * JointSpaceInertia::kSides;
+    slot.columns.assign(size_t(n) * padded, 0.0);
+    slot.gram.resize(size_t(padded) * padded);
+    slot.stride = padded;
+    auto jacobianIndex = [&](const DeferredRow& d) {
+      const btMultiBodySolverConstraint& row = (*d.rows)[d.index];
+      return row.m_multiBodyA ? row.m_jacAindex : row.m_jacBindex;
+    };
+    for (int p = 0; p < k; ++p)
+    {
+      const btScalar* jacobian = &m_data.m_jacobians[jacobianIndex(deferred_[slot.rows[p]])];
+      for (int i = 0; i < n; ++i)
+        slot.columns[size_t(i) * padded + p] = jacobian[i];
+    }
+    slot.inertia->solveColumns(slot.columns.data(), padded, slot.gram.data());
+    for (int p = 0; p < k; ++p)
+    {
+      const DeferredRow& d = deferred_[slot.rows[p]];
+      btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobianIndex(d)];
+      for (int i = 0; i < n; ++i)
+        response[i] = btScalar(slot.columns[size_t(i) * padded + p]);
+      btMultiBodySolverConstraint& row = (*d.rows)[d.index];
+      const btScalar denominator = btScalar(slot.gram[size_t(p) * padded + p]) + d.cfm;
+      row.m_jacDiagABInv = denominator > SIMD_EPSILON ? d.sor / denominator : btScalar(0);
+      row.m_rhs = d.velocity_error * row.m_jacDiagABInv;
+      row.m_cfm = d.cfm * row.m_jacDiagABInv;
+    }
+  }
 }
 
 // A contact between one multibody and the static world, with plain pyramid friction: what
@@ -87,13 +137,14 @@ bool DenseRowSolver::contactRowsApply(const btPersistentManifold& manifold, cons
     if (point.m_combinedRollingFriction > 0 || point.m_combinedSpinningFriction > 0)
       return false;
   }
-  return inertiaOf((a ? a : b)->m_multiBody) != nullptr;
+  return bodySlot((a ? a : b)->m_multiBody) >= 0;
 }
 
 // setupMultiBodyContactConstraint for a multibody on one side and the static world on the other.
-void DenseRowSolver::setupContactRow(btMultiBodySolverConstraint& row, const btVector3& direction, btManifoldPoint& point,
-                                     const btContactSolverInfo& info, bool friction)
+void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
+                                     btManifoldPoint& point, const btContactSolverInfo& info, bool friction)
 {
+  btMultiBodySolverConstraint& row = rows[index];
   const bool on_a = row.m_multiBodyA != nullptr;
   btMultiBody* body = on_a ? row.m_multiBodyA : row.m_multiBodyB;
   const int link = on_a ? row.m_linkA : row.m_linkB;
@@ -135,9 +186,8 @@ void DenseRowSolver::setupContactRow(btMultiBodySolverConstraint& row, const btV
   m_data.m_jacobians.resize(m_data.m_jacobians.size() + n);
   m_data.m_deltaVelocitiesUnitImpulse.resize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
   btScalar* jacobian = &m_data.m_jacobians[jacobian_index];
-  btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobian_index];
-  body->fillContactJacobianMultiDof(link, position, normal, jacobian, m_data.scratch_r, m_data.scratch_v, m_data.scratch_m);
-  inertiaOf(body)->solve(jacobian, response);
+  const int slot = bodySlot(body);
+  body_rows_[slot].inertia->contactJacobian(link, position, normal, jacobian);
 
   // Lever arms as Bullet keeps them: the multibody's from its link's centre of mass, the static
   // side's from its solver body (whose velocity never changes).
@@ -152,15 +202,10 @@ void DenseRowSolver::setupContactRow(btMultiBodySolverConstraint& row, const btV
   row.m_angularComponentA.setZero();
   row.m_angularComponentB.setZero();
 
-  btScalar denominator = 0, relative_velocity = 0;
+  btScalar relative_velocity = 0;
   const btScalar* velocity = body->getVelocityVector();
   for (int i = 0; i < n; ++i)
-  {
-    denominator += jacobian[i] * response[i];
     relative_velocity += velocity[i] * jacobian[i];
-  }
-  const btScalar d = denominator + cfm;
-  row.m_jacDiagABInv = d > SIMD_EPSILON ? info.m_sor / d : btScalar(0);
   row.m_friction = point.m_combinedFriction;
 
   btScalar distance = 0, restitution = 0;
@@ -179,13 +224,12 @@ void DenseRowSolver::setupContactRow(btMultiBodySolverConstraint& row, const btV
     velocity_error -= distance / info.m_timeStep;
   else
     positional_error = -distance * erp / info.m_timeStep;
-  row.m_rhs = (positional_error + velocity_error) * row.m_jacDiagABInv;
   row.m_rhsPenetration = 0;
   row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
   row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
-  row.m_cfm = cfm * row.m_jacDiagABInv;
   row.m_appliedImpulse = 0;
   row.m_appliedPushImpulse = 0;
+  deferResponse(rows, index, slot, positional_error + velocity_error, cfm, info.m_sor);
 }
 
 // convertMultiBodyContact's rows (a normal row, then one or two friction rows per point), built by
@@ -224,8 +268,8 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
     const int normal_index = m_multiBodyNormalContactConstraints.size();
     btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
     start(normal, point);
-    setupContactRow(normal, point.m_normalWorldOnB, point, info, false);
     normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
+    setupContactRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false);
 
     btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
     point.m_lateralFrictionDir1.normalize();
@@ -235,7 +279,8 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
       btMultiBodySolverConstraint& row = m_multiBodyFrictionContactConstraints.expandNonInitializing();
       start(row, point);
       row.m_frictionIndex = normal_index;
-      setupContactRow(row, d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, point, info, true);
+      setupContactRow(m_multiBodyFrictionContactConstraints, m_multiBodyFrictionContactConstraints.size() - 1,
+                      d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, point, info, true);
     }
     if (two_directions && (info.m_solverMode & SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION))
       point.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
@@ -250,7 +295,8 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
     btMultiBodyConstraintSolver::convertContacts(manifolds, numManifolds, info);
     return;
   }
-  inertias_used_ = 0;
+  bodies_used_ = 0;
+  deferred_.clear();
   for (int i = 0; i < numManifolds; ++i)
   {
     btPersistentManifold* manifold = manifolds[i];
@@ -266,11 +312,19 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
   for (int i = 0; i < m_tmpNumMultiBodyConstraints; ++i)
   {
     btMultiBodyConstraint* constraint = m_tmpMultiBodyConstraints[i];
-    if (auto* drive = dynamic_cast<JointDrive*>(constraint))
-      drive->createRows(m_multiBodyNonContactConstraints, m_data, info, inertiaOf(drive->getMultiBodyA()));
-    else
+    auto* drive = dynamic_cast<JointDrive*>(constraint);
+    const int slot = drive ? bodySlot(drive->getMultiBodyA()) : -1;
+    if (slot < 0)
+    {
       constraint->createConstraintRows(m_multiBodyNonContactConstraints, m_data, info);
+      continue;
+    }
+    btScalar velocity_error = 0, cfm = 0;
+    const int index = drive->createRowWithoutResponse(m_multiBodyNonContactConstraints, m_data, velocity_error, cfm);
+    if (index >= 0)
+      deferResponse(m_multiBodyNonContactConstraints, index, slot, velocity_error, cfm, 1);
   }
+  finishDeferredRows();
   for (int i = 0; i < m_multiBodyNonContactConstraints.size(); ++i)
     m_multiBodyNonContactConstraints[i].m_appliedImpulse = 0;
 }
@@ -327,8 +381,15 @@ void DenseRowSolver::collectRows()
       const int b = c.m_multiBodyB ? node(c.m_multiBodyB) : -1;
       if (a >= 0 && b >= 0)
         parent_[root(a)] = root(b);
-      rows_.push_back(Row{&c, a >= 0 ? a : b, 0});
+      rows_.push_back(Row{&c, a >= 0 ? a : b, 0, -1});
     }
+  // Rows whose responses were computed together know their Delassus entries already.
+  const int first_of[3] = {0, m_multiBodyNonContactConstraints.size(),
+                           m_multiBodyNonContactConstraints.size() + m_multiBodyNormalContactConstraints.size()};
+  for (size_t d = 0; d < deferred_.size(); ++d)
+    for (int a = 0; a < 3; ++a)
+      if (deferred_[d].rows == arrays[a])
+        rows_[first_of[a] + deferred_[d].index].deferred = int(d);
 
   // Groups are the union-find roots, numbered in order of first appearance.
   std::vector<int> group_of_root(bodies_.size(), -1);
@@ -379,16 +440,16 @@ void DenseRowSolver::buildBlocks()
 
     btScalar* matrix = &delassus_[g.block];
     const int* members = &members_[g.offset];
-    // The common case, both rows acting on one multibody only, without the general bookkeeping.
-    const bool one_sided = c.m_multiBodyA && !c.m_multiBodyB;
-    const btScalar* jacobian = one_sided ? &m_data.m_jacobians[c.m_jacAindex] : nullptr;
-    const int n = one_sided ? degreesOfFreedom(c.m_multiBodyA) : 0;
+    const DeferredRow* deferred = row.deferred >= 0 ? &deferred_[row.deferred] : nullptr;
+    const BodyRows* body = deferred ? &body_rows_[deferred->body] : nullptr;
     for (int other = 0; other <= row.local; ++other)
     {
-      const btMultiBodySolverConstraint& o = *rows_[members[other]].constraint;
-      const btScalar a = one_sided && o.m_multiBodyA == c.m_multiBodyA && !o.m_multiBodyB
-                           ? dot(jacobian, &m_data.m_deltaVelocitiesUnitImpulse[o.m_jacAindex], n)
-                           : response(c, o, m_data);
+      const Row& o = rows_[members[other]];
+      btScalar a;
+      if (body && o.deferred >= 0 && deferred_[o.deferred].body == deferred->body)
+        a = btScalar(body->gram[size_t(deferred->position) * body->stride + deferred_[o.deferred].position]);
+      else
+        a = response(c, *o.constraint, m_data);
       matrix[row.local * g.size + other] = a;
       matrix[other * g.size + row.local] = a;
     }

@@ -46,7 +46,29 @@ private:
   {
     btMultiBodySolverConstraint* constraint;
     int group;
-    int local;  // index in the group's block
+    int local;     // index in the group's block
+    int deferred;  // index in deferred_, or -1
+  };
+  // A row whose response waits for the other rows of its multibody (finishDeferredRows).
+  struct DeferredRow
+  {
+    btMultiBodyConstraintArray* rows;
+    int index;     // in rows
+    int body;      // in body_rows_
+    int position;  // in the body's rows
+    btScalar velocity_error;  // the row's rhs, cfm and relaxation before Bullet's scaling by
+    btScalar cfm;             // its inverse effective mass
+    btScalar sor;
+  };
+  // A multibody with rows this step: its factored inertia, and its deferred rows' responses and
+  // Delassus block (gram).
+  struct BodyRows
+  {
+    btMultiBody* body = nullptr;
+    std::unique_ptr<JointSpaceInertia> inertia;
+    std::vector<int> rows;  // deferred_ indices
+    std::vector<double> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
+    int stride = 0;
   };
   struct Group
   {
@@ -55,11 +77,14 @@ private:
     int block = 0;   // into the matrix storage
   };
 
-  // The factored inertia of a multibody for this step, or null where Bullet's passes must answer.
-  const JointSpaceInertia* inertiaOf(btMultiBody* body);
+  // The multibody's slot in body_rows_ for this step, or -1 where Bullet's passes must answer.
+  int bodySlot(btMultiBody* body);
+  void deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error, btScalar cfm,
+                     btScalar sor);
+  void finishDeferredRows();
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
   void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
-  void setupContactRow(btMultiBodySolverConstraint& row, const btVector3& direction, btManifoldPoint& point,
+  void setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
                        const btContactSolverInfo& info, bool friction);
 
   bool denseApplies(const btContactSolverInfo& info) const;
@@ -71,8 +96,9 @@ private:
   btScalar visit(const Row& row);
   void applyVelocityChanges();
 
-  std::vector<std::pair<btMultiBody*, std::unique_ptr<JointSpaceInertia>>> inertias_;  // this step's
-  size_t inertias_used_ = 0;
+  std::vector<BodyRows> body_rows_;  // this step's first bodies_used_ are current
+  size_t bodies_used_ = 0;
+  std::vector<DeferredRow> deferred_;
   std::vector<Row> rows_;  // non-contact rows, then normal contacts, then friction, as Bullet's arrays
   std::vector<Group> groups_;
   std::vector<int> members_;  // rows_ indices, group by group in block order

@@ -1,6 +1,6 @@
 #include "joint_drive.h"
 
-#include "joint_space_inertia.h"
+#include <algorithm>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
@@ -72,14 +72,25 @@ double JointDrive::appliedImpulse() const
 void JointDrive::createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                                       const btContactSolverInfo& info)
 {
-  createRows(rows, data, info, nullptr);
-}
-
-void JointDrive::createRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
-                            const btContactSolverInfo& info, const JointSpaceInertia* inertia)
-{
   if (!enabled_)
     return;
+  btMultiBodySolverConstraint& row = startRow(rows, data);
+  const btVector3 unused(0, 0, 0);
+  fillMultiBodyConstraint(row, data, jacobianA(0), nullptr, unused, unused, unused, unused, 0, info, row.m_lowerLimit,
+                          row.m_upperLimit, false, 1, false, btScalar(target_velocity_));
+  if (std::isinf(gain_) || row.m_jacDiagABInv <= 0)
+    return;
+  // Soften the rigid row: with cfm = 1/gain the converged impulse is gain * (target - qd_end).
+  // Bullet scales a row's cfm and rhs by its inverse effective mass, so rescale both.
+  const btScalar cfm = btScalar(1.0 / gain_);
+  const btScalar soft = btScalar(1) / (btScalar(1) / row.m_jacDiagABInv + cfm);
+  row.m_rhs *= soft / row.m_jacDiagABInv;
+  row.m_cfm = cfm * soft;
+  row.m_jacDiagABInv = soft;
+}
+
+btMultiBodySolverConstraint& JointDrive::startRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data)
+{
   if (m_numDofsFinalized != m_jacSizeBoth)
     finalizeMultiDof();
   btMultiBodySolverConstraint& row = rows.expandNonInitializing();
@@ -92,44 +103,21 @@ void JointDrive::createRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobia
   row.m_relpos2CrossNormal.setZero();
   row.m_angularComponentA.setZero();
   row.m_angularComponentB.setZero();
-  btScalar lower = -m_maxAppliedImpulse, upper = m_maxAppliedImpulse;
-  if (side_ > 0)
-  {
-    lower = 0;
-    upper = SIMD_INFINITY;
-  }
-  else if (side_ < 0)
-  {
-    lower = -SIMD_INFINITY;
-    upper = 0;
-  }
-  if (inertia)
-    fillRow(row, data, *inertia, lower, upper);
-  else
-  {
-    const btVector3 unused(0, 0, 0);
-    fillMultiBodyConstraint(row, data, jacobianA(0), nullptr, unused, unused, unused, unused, 0, info, lower, upper,
-                            false, 1, false, btScalar(target_velocity_));
-  }
+  row.m_lowerLimit = side_ > 0 ? btScalar(0) : side_ < 0 ? -SIMD_INFINITY : -m_maxAppliedImpulse;
+  row.m_upperLimit = side_ < 0 ? btScalar(0) : side_ > 0 ? SIMD_INFINITY : m_maxAppliedImpulse;
   row.m_orgConstraint = this;
   row.m_orgDofIndex = 0;
-  if (std::isinf(gain_) || row.m_jacDiagABInv <= 0)
-    return;
-  // Soften the rigid row: with cfm = 1/gain the converged impulse is gain * (target - qd_end).
-  // Bullet scales a row's cfm and rhs by its inverse effective mass, so rescale both.
-  const btScalar cfm = btScalar(1.0 / gain_);
-  const btScalar effective_inverse_mass = btScalar(1) / row.m_jacDiagABInv;
-  const btScalar soft = btScalar(1) / (effective_inverse_mass + cfm);
-  row.m_rhs *= soft / row.m_jacDiagABInv;
-  row.m_cfm = cfm * soft;
-  row.m_jacDiagABInv = soft;
+  return row;
 }
 
 // What fillMultiBodyConstraint makes of this row (one multibody, the joint's velocity, no position
-// error), with the response from the factored joint-space inertia instead of an articulated pass.
-void JointDrive::fillRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data,
-                         const JointSpaceInertia& inertia, btScalar lower, btScalar upper)
+// error) up to the response.
+int JointDrive::createRowWithoutResponse(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                                         btScalar& velocity_error, btScalar& cfm)
 {
+  if (!enabled_)
+    return -1;
+  btMultiBodySolverConstraint& row = startRow(rows, data);
   btMultiBody* body = m_bodyA;
   const int n = body->getNumDofs() + 6;
   row.m_multiBodyA = body;
@@ -146,25 +134,16 @@ void JointDrive::fillRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianDa
   row.m_jacAindex = data.m_jacobians.size();
   data.m_jacobians.resize(data.m_jacobians.size() + n);
   data.m_deltaVelocitiesUnitImpulse.resize(data.m_deltaVelocitiesUnitImpulse.size() + n);
-  btScalar* jacobian = &data.m_jacobians[row.m_jacAindex];
-  btScalar* response = &data.m_deltaVelocitiesUnitImpulse[row.m_jacAindex];
-  const btScalar* source = jacobianA(0);
-  for (int i = 0; i < n; ++i)
-    jacobian[i] = source[i];
-  inertia.solve(jacobian, response);
-
-  const int dof = 6 + body->getLink(m_linkA).m_dofOffset;
-  const btScalar denominator = response[dof];  // J is the unit vector of the joint's velocity
-  row.m_jacDiagABInv = denominator > SIMD_EPSILON ? btScalar(1) / denominator : btScalar(0);
-  const btScalar velocity = body->getVelocityVector()[dof];
+  std::copy(jacobianA(0), jacobianA(0) + n, &data.m_jacobians[row.m_jacAindex]);
   row.m_friction = 0;
   row.m_appliedImpulse = 0;
   row.m_appliedPushImpulse = 0;
-  row.m_rhs = (btScalar(target_velocity_) - velocity) * row.m_jacDiagABInv;
   row.m_rhsPenetration = 0;
-  row.m_cfm = 0;
-  row.m_lowerLimit = lower;
-  row.m_upperLimit = upper;
+
+  velocity_error = btScalar(target_velocity_) - body->getVelocityVector()[6 + body->getLink(m_linkA).m_dofOffset];
+  // A soft drive: with cfm = 1/gain the converged impulse is gain * (target - qd_end).
+  cfm = std::isinf(gain_) ? btScalar(0) : btScalar(1.0 / gain_);
+  return rows.size() - 1;
 }
 
 }  // namespace bullet_plant

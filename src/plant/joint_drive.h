@@ -13,8 +13,6 @@
 
 namespace bullet_plant
 {
-class JointSpaceInertia;
-
 class JointDrive : public btMultiBodyConstraint
 {
 public:
@@ -35,15 +33,18 @@ public:
   int getIslandIdB() const override { return getIslandIdA(); }
   void createConstraintRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                             const btContactSolverInfo& info) override;
-  // The same row; with the multibody's factored joint-space inertia of this step when given
-  // (DenseRowSolver), else with Bullet's articulated-body pass.
-  void createRows(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data, const btContactSolverInfo& info,
-                  const JointSpaceInertia* inertia);
+  // The row without what depends on its response J M^-1 J^T (m_jacDiagABInv, m_rhs, m_cfm and
+  // the response vector), for a solver that computes the responses of all of a multibody's rows
+  // at once (DenseRowSolver): returns the row's index in `rows` (-1 when the drive is off), the
+  // velocity error the row removes and its constraint force mixing, both before Bullet's scaling
+  // by the row's inverse effective mass.
+  int createRowWithoutResponse(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
+                               btScalar& velocity_error, btScalar& cfm);
   void debugDraw(class btIDebugDraw*) override {}
 
 private:
-  void fillRow(btMultiBodySolverConstraint& row, btMultiBodyJacobianData& data, const JointSpaceInertia& inertia,
-               btScalar lower, btScalar upper);
+  // A new row with this drive's bounds and bookkeeping, acting against the fixed world.
+  btMultiBodySolverConstraint& startRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data);
   void set(double target_velocity, double gain, double max_impulse, int side);
   // The solver starts the row from its last impulse: only from one of the same kind of row.
   void forgetImpulse();

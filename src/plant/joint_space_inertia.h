@@ -4,13 +4,14 @@
 // Bullet answers "how does the multibody respond to this generalized impulse" (M^-1 f) with one
 // articulated-body pass per question; a constraint row asks once to set up and the car's sixteen
 // rows asked sixteen times per step. Building M from the links' kinematics (each body's 6 x n
-// Jacobian, M = sum J^T diag(I, m) J) and factoring it once per step answers each row with two
-// triangular solves.
+// Jacobian, M = sum J^T diag(I, m) J) and factoring it once per step answers all of a step's rows
+// with two triangular solves over all of them at once, and gives their Delassus block with it.
 #pragma once
 
 #include <vector>
 
 #include <LinearMath/btScalar.h>
+#include <LinearMath/btVector3.h>
 
 class btMultiBody;
 
@@ -19,37 +20,45 @@ namespace bullet_plant
 class JointSpaceInertia
 {
 public:
-  // A spatial motion vector (angular; linear at a body's centre of mass, in its frame).
-  struct Motion
-  {
-    double w[3], v[3];
-  };
-
   // Rebuilds M from the multibody's cached link transforms (valid from Bullet's forward dynamics
   // of this step on). Returns false if M is not positive definite (then use Bullet's own passes).
   bool update(const btMultiBody& body);
   int size() const { return n_; }
 
-  // out = M^-1 f.
-  void solve(const btScalar* f, btScalar* out) const;
+  // The row of a contact Jacobian: d/dq of the velocity, along `direction`, of the world point
+  // `point` moving with `link` (-1: the base); what btMultiBody::fillContactJacobianMultiDof gives.
+  void contactJacobian(int link, const btVector3& point, const btVector3& direction, btScalar* row) const;
+
+  // For `count` right-hand sides at once (a multiple of kSides: pad with zeros), stored degree
+  // of freedom by degree of freedom (x[i * count + r] is entry i of side r): x <- M^-1 x, and
+  // gram (count x count, row-major) <- x^T M^-1 x of the sides as given.
+  static constexpr int kSides = 4;
+  void solveColumns(double* x, int count, double* gram) const;
 
 private:
-  // The two halves of solve: half = L^-1 f, then out = L^-T half (M = L L^T).
-  void halfSolve(const btScalar* f, double* half) const;
-  void finishSolve(const double* half, btScalar* out) const;
+  // A spatial motion vector (angular; linear at a body's centre of mass), in the body's frame.
+  struct Motion
+  {
+    double w[3], v[3];
+  };
+  // Where a body is: the world-to-body rotation (row-major) and its centre of mass.
+  struct Frame
+  {
+    double rotation[9];
+    double com[3];
+  };
 
   int n_ = 0;
-  bool fixed_base_ = false;
+  int first_ = 0;  // 6 with a fixed base: its six velocities do not move
   // The bodies' Jacobians by non-zero column: body b's columns are motions_[first_column_[b] ..
   // first_column_[b + 1]), for the generalized velocities columns_[...].
   std::vector<Motion> motions_;
   std::vector<int> columns_;
   std::vector<int> first_column_;
-  std::vector<double> lower_;      // Cholesky factor L of M, n x n row-major
-  std::vector<double> upper_;      // L^T, row-major
+  std::vector<Frame> frames_;
+  std::vector<double> inertia_;  // M, lower triangle, n x n row-major
+  std::vector<double> lower_;    // its Cholesky factor L (M = L L^T), n x n row-major
   std::vector<double> inverse_diagonal_;
-  std::vector<double> inertia_;     // M, lower triangle
-  mutable std::vector<double> scratch_, half_;
 };
 
 }  // namespace bullet_plant
