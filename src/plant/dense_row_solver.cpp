@@ -381,7 +381,11 @@ void DenseRowSolver::collectRows()
       const int b = c.m_multiBodyB ? node(c.m_multiBodyB) : -1;
       if (a >= 0 && b >= 0)
         parent_[root(a)] = root(b);
-      rows_.push_back(Row{&c, a >= 0 ? a : b, 0, -1});
+      Row row{};
+      row.constraint = &c;
+      row.group = a >= 0 ? a : b;
+      row.deferred = -1;
+      rows_.push_back(row);
     }
   // Rows whose responses were computed together know their Delassus entries already.
   const int first_of[3] = {0, m_multiBodyNonContactConstraints.size(),
@@ -409,25 +413,30 @@ void DenseRowSolver::collectRows()
 
 void DenseRowSolver::buildBlocks()
 {
+  // Each group's block and velocities are padded to a multiple of kLanes rows (zeros), so a
+  // visit's update is whole Lanes.
   int offset = 0, block = 0;
   for (Group& g : groups_)
   {
     g.offset = offset;
     g.block = block;
-    offset += g.size;
-    block += g.size * g.size;
+    g.stride = (g.size + kLanes - 1) / kLanes * kLanes;
+    offset += g.stride;
+    block += g.stride * g.stride;
   }
   delassus_.assign(block, 0);
   row_velocity_.assign(offset, 0);
-  impulse_change_.assign(offset, 0);
   members_.resize(offset);
   for (size_t k = 0; k < rows_.size(); ++k)
     members_[groups_[rows_[k].group].offset + rows_[k].local] = int(k);
 
-  for (const Row& row : rows_)
+  for (Row& row : rows_)
   {
     const Group& g = groups_[row.group];
     const btMultiBodySolverConstraint& c = *row.constraint;
+    row.velocity = g.offset;
+    row.column = g.block + row.local * g.stride;
+    row.stride = g.stride;
     // Bullet's setup may already have moved the velocities (warm starting): start from there.
     btScalar velocity = 0;
     if (c.m_multiBodyA)
@@ -450,25 +459,48 @@ void DenseRowSolver::buildBlocks()
         a = btScalar(body->gram[size_t(deferred->position) * body->stride + deferred_[o.deferred].position]);
       else
         a = response(c, *o.constraint, m_data);
-      matrix[row.local * g.size + other] = a;
-      matrix[other * g.size + row.local] = a;
+      matrix[row.local * g.stride + other] = a;
+      matrix[other * g.stride + row.local] = a;
     }
   }
 }
 
-void DenseRowSolver::startAt(const Row& row, btScalar impulse)
+void DenseRowSolver::loadRows()
 {
-  btMultiBodySolverConstraint& c = *row.constraint;
-  if (c.m_appliedImpulse != 0 || impulse == 0 || !std::isfinite(impulse))  // started by Bullet, or nothing to start from
+  const int non_contact = m_multiBodyNonContactConstraints.size();
+  const int normal = m_multiBodyNormalContactConstraints.size();
+  for (size_t k = 0; k < rows_.size(); ++k)
+  {
+    Row& row = rows_[k];
+    const btMultiBodySolverConstraint& c = *row.constraint;
+    row.rhs = c.m_rhs;
+    row.cfm = c.m_cfm;
+    row.inverse_mass = c.m_jacDiagABInv;
+    row.lower = c.m_lowerLimit;
+    row.upper = c.m_upperLimit;
+    row.friction = c.m_friction;
+    row.impulse = row.start_impulse = c.m_appliedImpulse;
+    row.normal = int(k) >= non_contact + normal ? non_contact + c.m_frictionIndex : -1;
+  }
+}
+
+void DenseRowSolver::storeRows()
+{
+  for (const Row& row : rows_)
+  {
+    btMultiBodySolverConstraint& c = *row.constraint;
+    c.m_appliedImpulse = row.impulse;
+    c.m_lowerLimit = row.lower;
+    c.m_upperLimit = row.upper;
+  }
+}
+
+void DenseRowSolver::startAt(Row& row, btScalar impulse)
+{
+  if (row.impulse != 0 || impulse == 0 || !std::isfinite(impulse))  // started by Bullet, or nothing to start from
     return;
-  impulse = std::min(std::max(impulse, c.m_lowerLimit), c.m_upperLimit);
-  c.m_appliedImpulse = impulse;
-  const Group& g = groups_[row.group];
-  const btScalar* column = &delassus_[g.block + row.local * g.size];
-  btScalar* velocity = &row_velocity_[g.offset];
-  for (int k = 0; k < g.size; ++k)
-    velocity[k] += column[k] * impulse;
-  impulse_change_[g.offset + row.local] += impulse;
+  row.impulse = std::min(std::max(impulse, row.lower), row.upper);
+  addToVelocities(row, row.impulse);
 }
 
 void DenseRowSolver::warmStart(const btContactSolverInfo& info)
@@ -480,7 +512,7 @@ void DenseRowSolver::warmStart(const btContactSolverInfo& info)
   const int normal = m_multiBodyNormalContactConstraints.size();
   for (int j = 0; j < non_contact; ++j)
   {
-    btMultiBodySolverConstraint& c = *rows_[j].constraint;
+    const btMultiBodySolverConstraint& c = *rows_[j].constraint;
     if (c.m_orgConstraint)
       startAt(rows_[j], factor * c.m_orgConstraint->getAppliedImpulse(c.m_orgDofIndex));
   }
@@ -490,58 +522,58 @@ void DenseRowSolver::warmStart(const btContactSolverInfo& info)
   const bool friction_paired = m_multiBodyFrictionContactConstraints.size() == per_contact * normal;
   for (int j = 0; j < normal; ++j)
   {
-    const Row& row = rows_[non_contact + j];
+    Row& row = rows_[non_contact + j];
     const auto* point = static_cast<const btManifoldPoint*>(row.constraint->m_originalContactPoint);
     if (!point)
       continue;
     startAt(row, factor * point->m_appliedImpulse);
     if (!friction_paired)
       continue;
-    const btScalar normal_impulse = row.constraint->m_appliedImpulse;
     const btScalar lateral[2] = {point->m_appliedImpulseLateral1, point->m_appliedImpulseLateral2};
     for (int d = 0; d < per_contact; ++d)
     {
-      const Row& friction = rows_[non_contact + normal + row.constraint->m_frictionIndex + d];
-      btMultiBodySolverConstraint& f = *friction.constraint;
+      Row& friction = rows_[non_contact + normal + row.constraint->m_frictionIndex + d];
       // Within the friction pyramid of the normal impulse just started.
-      f.m_lowerLimit = -f.m_friction * normal_impulse;
-      f.m_upperLimit = f.m_friction * normal_impulse;
+      friction.lower = -friction.friction * row.impulse;
+      friction.upper = friction.friction * row.impulse;
       startAt(friction, factor * lateral[d]);
     }
   }
 }
 
-btScalar DenseRowSolver::visit(const Row& row)
+// velocities of the row's group += impulse * the row's column of the Delassus block.
+void DenseRowSolver::addToVelocities(const Row& row, btScalar impulse)
 {
-  btMultiBodySolverConstraint& c = *row.constraint;
-  const Group& g = groups_[row.group];
-  btScalar* velocity = &row_velocity_[g.offset];
-  const btScalar applied = c.m_appliedImpulse;
-  btScalar delta = c.m_rhs - applied * c.m_cfm - velocity[row.local] * c.m_jacDiagABInv;
+  Lanes* velocity = reinterpret_cast<Lanes*>(&row_velocity_[row.velocity]);
+  const Lanes* column = reinterpret_cast<const Lanes*>(&delassus_[row.column]);
+  const int lanes = row.stride / kLanes;
+  for (int q = 0; q < lanes; ++q)
+    velocity[q] += impulse * column[q];
+}
+
+btScalar DenseRowSolver::visit(Row& row)
+{
+  const btScalar applied = row.impulse;
+  btScalar delta = row.rhs - applied * row.cfm - row_velocity_[row.velocity + row.local] * row.inverse_mass;
   const btScalar sum = applied + delta;
-  if (sum < c.m_lowerLimit)
+  if (sum < row.lower)
   {
-    delta = c.m_lowerLimit - applied;
-    c.m_appliedImpulse = c.m_lowerLimit;
+    delta = row.lower - applied;
+    row.impulse = row.lower;
   }
-  else if (sum > c.m_upperLimit)
+  else if (sum > row.upper)
   {
-    delta = c.m_upperLimit - applied;
-    c.m_appliedImpulse = c.m_upperLimit;
+    delta = row.upper - applied;
+    row.impulse = row.upper;
   }
   else
   {
-    c.m_appliedImpulse = sum;
+    row.impulse = sum;
   }
   if (delta != 0)
-  {
-    const btScalar* column = &delassus_[g.block + row.local * g.size];
-    for (int k = 0; k < g.size; ++k)
-      velocity[k] += column[k] * delta;
-    impulse_change_[g.offset + row.local] += delta;
-  }
+    addToVelocities(row, delta);
   // Bullet's residual is the velocity change; a row Bullet disabled (no effective mass) has none.
-  return c.m_jacDiagABInv != 0 ? delta / c.m_jacDiagABInv : btScalar(0);
+  return row.inverse_mass != 0 ? delta / row.inverse_mass : btScalar(0);
 }
 
 void DenseRowSolver::applyVelocityChanges()
@@ -549,7 +581,7 @@ void DenseRowSolver::applyVelocityChanges()
   velocity_change_.assign(m_data.m_deltaVelocities.size(), 0);
   for (const Row& row : rows_)
   {
-    const btScalar impulse = impulse_change_[groups_[row.group].offset + row.local];
+    const btScalar impulse = row.impulse - row.start_impulse;
     if (impulse == 0)
       continue;
     const btMultiBodySolverConstraint& c = *row.constraint;
@@ -589,6 +621,7 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
                                                                           constraints, numConstraints, info, debugDrawer);
   collectRows();
   buildBlocks();
+  loadRows();
   warmStart(info);
 
   const int non_contact = m_multiBodyNonContactConstraints.size();
@@ -619,13 +652,12 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
       }
       for (int j = 0; j < friction; ++j)
       {
-        const Row& row = rows_[non_contact + normal + j];
-        btMultiBodySolverConstraint& c = *row.constraint;
-        const btScalar normal_impulse = m_multiBodyNormalContactConstraints[c.m_frictionIndex].m_appliedImpulse;
+        Row& row = rows_[non_contact + normal + j];
+        const btScalar normal_impulse = rows_[row.normal].impulse;
         if (normal_impulse > 0)
         {
-          c.m_lowerLimit = -c.m_friction * normal_impulse;
-          c.m_upperLimit = c.m_friction * normal_impulse;
+          row.lower = -row.friction * normal_impulse;
+          row.upper = row.friction * normal_impulse;
           const btScalar r = visit(row);
           residual = std::max(residual, r * r);
         }
@@ -643,6 +675,7 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
       break;
     }
   }
+  storeRows();
   applyVelocityChanges();
   return 0;
 }

@@ -42,12 +42,31 @@ protected:
                                              const btContactSolverInfo& info, btIDebugDraw* debugDrawer) override;
 
 private:
+  // kLanes scalars side by side (GCC/Clang vector extension: one SSE register of floats); a
+  // group's rows are padded to whole Lanes.
+  static constexpr int kLanes = 4;
+  typedef btScalar Lanes __attribute__((vector_size(kLanes * sizeof(btScalar)), aligned(sizeof(btScalar)), may_alias));
+
+  // A row during the iterations: Bullet's numbers, copied from its constraint and back.
   struct Row
   {
     btMultiBodySolverConstraint* constraint;
     int group;
     int local;     // index in the group's block
     int deferred;  // index in deferred_, or -1
+    int velocity;  // the group's first entry in row_velocity_
+    int column;    // the row's column of the group's block in delassus_
+    int stride;    // the group's padded size
+    int normal;    // friction rows: the rows_ index of their contact's normal row; others -1
+    btScalar rhs, cfm, inverse_mass, lower, upper, friction;
+    btScalar impulse, start_impulse;
+  };
+  struct Group
+  {
+    int size = 0;
+    int stride = 0;  // size padded to whole Lanes
+    int offset = 0;  // into row_velocity_ and members_
+    int block = 0;   // into delassus_
   };
   // A row whose response waits for the other rows of its multibody (finishDeferredRows).
   struct DeferredRow
@@ -70,13 +89,6 @@ private:
     std::vector<double> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
     int stride = 0;
   };
-  struct Group
-  {
-    int size = 0;
-    int offset = 0;  // into the per-row vectors
-    int block = 0;   // into the matrix storage
-  };
-
   // The multibody's slot in body_rows_ for this step, or -1 where Bullet's passes must answer.
   int bodySlot(btMultiBody* body);
   void deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error, btScalar cfm,
@@ -90,10 +102,13 @@ private:
   bool denseApplies(const btContactSolverInfo& info) const;
   void collectRows();
   void buildBlocks();
+  void loadRows();
+  void storeRows();
   void warmStart(const btContactSolverInfo& info);
-  void startAt(const Row& row, btScalar impulse);
+  void startAt(Row& row, btScalar impulse);
+  void addToVelocities(const Row& row, btScalar impulse);
   // Bullet's resolveSingleConstraintRowGeneric on the dense block; returns Bullet's residual.
-  btScalar visit(const Row& row);
+  btScalar visit(Row& row);
   void applyVelocityChanges();
 
   std::vector<BodyRows> body_rows_;  // this step's first bodies_used_ are current
@@ -106,7 +121,6 @@ private:
   std::vector<int> parent_;
   std::vector<btScalar> delassus_;           // each group's block, row-major (symmetric)
   std::vector<btScalar> row_velocity_;       // J.dv of each row, kept current
-  std::vector<btScalar> impulse_change_;     // impulse added to each row by the iterations
   std::vector<btScalar> velocity_change_;    // per degree of freedom, laid out as m_data.m_deltaVelocities
 };
 
