@@ -113,6 +113,27 @@ def test_wheel_velocity_loop_with_yaml_pid_gains_lifted_off_the_ground(urdf_xml,
     assert robot.base_pose()[:2] == pytest.approx([0, 0], abs=0.01), 'lifted wheels do not move the car'
 
 
+def test_a_car_driving_into_another_pushes_it(urdf_xml, control_config):
+    # Contacts between two robots take Bullet's own rows (and its articulated-body response),
+    # the rest of the step the joint-space path: both in one step.
+    world = make_world(control_config)
+    robot = world.spawn(urdf_xml, 'tianracer')
+    other = world.spawn(urdf_xml, 'other', pose=(0.9, 0.05, 0.0, 0, 0, 0.4))
+    world.step(200)
+    parked = other.base_pose()
+    hold_steering(robot)
+    for joint in REAR_WHEELS:
+        robot.set_command(joint, 40.0)
+    for _ in range(30):
+        world.step(100)
+        for r in (robot, other):
+            assert np.all(np.isfinite(all_state(world, r)))
+            assert abs(r.base_pose()[2]) < 0.02, 'both cars stay on the ground'
+    pushed = other.base_pose()[0] - parked[0]
+    assert pushed > 0.2, 'the parked car was pushed ahead'
+    assert robot.base_pose()[0] > parked[0] - 0.2, 'the driving car got to where the other one was'
+
+
 def drive_sequence(urdf_xml, control_config):
     world = make_world(control_config)
     robot = world.spawn(urdf_xml, 'tianracer', pose=(0.5, 0.2, 0.0, 0, 0, 0.3))

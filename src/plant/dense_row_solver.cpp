@@ -44,6 +44,12 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
 }
 }  // namespace
 
+void DenseRowSolver::prepareSolve(int numBodies, int numManifolds)
+{
+  btMultiBodyConstraintSolver::prepareSolve(numBodies, numManifolds);
+  bodies_used_ = 0;  // a new step: every multibody's inertia is rebuilt when first asked for
+}
+
 int DenseRowSolver::bodySlot(btMultiBody* body)
 {
   for (size_t k = 0; k < bodies_used_; ++k)
@@ -54,6 +60,7 @@ int DenseRowSolver::bodySlot(btMultiBody* body)
   BodyRows& slot = body_rows_[bodies_used_++];
   slot.body = body;
   slot.rows.clear();
+  slot.articulated_pass_pending = false;
   if (!slot.inertia)
     slot.inertia.reset(new JointSpaceInertia);
   if (!slot.inertia->update(*body))
@@ -62,6 +69,40 @@ int DenseRowSolver::bodySlot(btMultiBody* body)
     return -1;
   }
   return int(bodies_used_ - 1);
+}
+
+bool DenseRowSolver::integrateVelocities(btMultiBody& body, btScalar dt)
+{
+  // What the joint-space form does not cover: Bullet's RK4 integration, joint force feedback
+  // (computed by the articulated-body pass itself), kinematic bases and links.
+  if (body.isUsingRK4Integration() || (!body.hasFixedBase() && body.isBaseStaticOrKinematic()))
+    return false;
+  for (int i = 0; i < body.getNumLinks(); ++i)
+    if (body.getLink(i).m_jointFeedback || body.isLinkAndAllAncestorsKinematic(i))
+      return false;
+  const int slot = bodySlot(&body);
+  if (slot < 0)
+    return false;
+  accelerations_.resize(body.getNumDofs() + 6);
+  body_rows_[slot].inertia->accelerations(body, accelerations_.data());
+  body.applyDeltaVeeMultiDof(accelerations_.data(), dt);
+  body_rows_[slot].articulated_pass_pending = true;
+  return true;
+}
+
+void DenseRowSolver::needArticulatedPass(btMultiBody* body)
+{
+  if (!body)
+    return;
+  for (size_t k = 0; k < bodies_used_; ++k)
+    if (body_rows_[k].body == body && body_rows_[k].articulated_pass_pending)
+    {
+      // With dt = 0 the pass leaves the velocities alone and only fills its caches, which
+      // depend on the configuration alone.
+      body->computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, m_data.scratch_r, m_data.scratch_v,
+                                                                 m_data.scratch_m, false, false, false);
+      body_rows_[k].articulated_pass_pending = false;
+    }
 }
 
 void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
@@ -289,23 +330,36 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
 
 void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info)
 {
+  auto multiBody = [](const btCollisionObject* object) {
+    const btMultiBodyLinkCollider* collider = btMultiBodyLinkCollider::upcast(object);
+    return collider ? collider->m_multiBody : nullptr;
+  };
   // Bullet's articulated warm starting moves velocities while it builds rows: left to Bullet.
   if (info.m_solverMode & SOLVER_USE_ARTICULATED_WARMSTARTING)
   {
+    for (size_t k = 0; k < bodies_used_; ++k)
+      needArticulatedPass(body_rows_[k].body);
     btMultiBodyConstraintSolver::convertContacts(manifolds, numManifolds, info);
     return;
   }
-  bodies_used_ = 0;
+  for (size_t k = 0; k < bodies_used_; ++k)
+    body_rows_[k].rows.clear();
   deferred_.clear();
   for (int i = 0; i < numManifolds; ++i)
   {
     btPersistentManifold* manifold = manifolds[i];
-    if (!btMultiBodyLinkCollider::upcast(manifold->getBody0()) && !btMultiBodyLinkCollider::upcast(manifold->getBody1()))
+    btMultiBody* a = multiBody(manifold->getBody0());
+    btMultiBody* b = multiBody(manifold->getBody1());
+    if (!a && !b)
       convertContact(manifold, info);
     else if (contactRowsApply(*manifold, info))
       convertStaticContact(*manifold, info);
     else
+    {
+      needArticulatedPass(a);
+      needArticulatedPass(b);
       convertMultiBodyContact(manifold, info);
+    }
   }
   m_data.m_solverBodyPool = &m_tmpSolverBodyPool;
   m_data.m_fixedBodyId = m_fixedBodyId;
@@ -316,6 +370,8 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
     const int slot = drive ? bodySlot(drive->getMultiBodyA()) : -1;
     if (slot < 0)
     {
+      needArticulatedPass(constraint->getMultiBodyA());
+      needArticulatedPass(constraint->getMultiBodyB());
       constraint->createConstraintRows(m_multiBodyNonContactConstraints, m_data, info);
       continue;
     }
@@ -449,16 +505,17 @@ void DenseRowSolver::buildBlocks()
 
     btScalar* matrix = &delassus_[g.block];
     const int* members = &members_[g.offset];
+    // Rows of one multibody whose responses were computed together: their entry is in its gram.
     const DeferredRow* deferred = row.deferred >= 0 ? &deferred_[row.deferred] : nullptr;
-    const BodyRows* body = deferred ? &body_rows_[deferred->body] : nullptr;
+    const double* gram = deferred ? &body_rows_[deferred->body].gram[size_t(deferred->position) *
+                                                                     body_rows_[deferred->body].stride]
+                                  : nullptr;
     for (int other = 0; other <= row.local; ++other)
     {
       const Row& o = rows_[members[other]];
-      btScalar a;
-      if (body && o.deferred >= 0 && deferred_[o.deferred].body == deferred->body)
-        a = btScalar(body->gram[size_t(deferred->position) * body->stride + deferred_[o.deferred].position]);
-      else
-        a = response(c, *o.constraint, m_data);
+      const DeferredRow* od = o.deferred >= 0 ? &deferred_[o.deferred] : nullptr;
+      const btScalar a = gram && od && od->body == deferred->body ? btScalar(gram[od->position])
+                                                                  : response(c, *o.constraint, m_data);
       matrix[row.local * g.stride + other] = a;
       matrix[other * g.stride + row.local] = a;
     }

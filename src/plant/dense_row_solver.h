@@ -34,6 +34,16 @@ namespace bullet_plant
 {
 class DenseRowSolver : public btMultiBodyConstraintSolver
 {
+public:
+  // Called by the world once per step before any forward dynamics.
+  void prepareSolve(int numBodies, int numManifolds) override;
+
+  // The forward dynamics of one multibody from its joint-space inertia (the one the rows of this
+  // step are then built from): qd += dt * M^-1 (tau - C), in place of Bullet's articulated-body
+  // pass. Should a row of Bullet's own need that pass's caches later in the step, the pass runs
+  // then. Returns false where the pass must run now (see the cases in the function).
+  bool integrateVelocities(btMultiBody& body, btScalar dt);
+
 protected:
   void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
   btScalar solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int numBodies,
@@ -88,12 +98,15 @@ private:
     std::vector<int> rows;  // deferred_ indices
     std::vector<double> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
     int stride = 0;
+    bool articulated_pass_pending = false;  // its velocities came from integrateVelocities
   };
   // The multibody's slot in body_rows_ for this step, or -1 where Bullet's passes must answer.
   int bodySlot(btMultiBody* body);
   void deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error, btScalar cfm,
                      btScalar sor);
   void finishDeferredRows();
+  // Runs Bullet's articulated-body pass of the multibody if integrateVelocities skipped it.
+  void needArticulatedPass(btMultiBody* body);
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
   void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
   void setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
@@ -114,6 +127,7 @@ private:
   std::vector<BodyRows> body_rows_;  // this step's first bodies_used_ are current
   size_t bodies_used_ = 0;
   std::vector<DeferredRow> deferred_;
+  std::vector<btScalar> accelerations_;
   std::vector<Row> rows_;  // non-contact rows, then normal contacts, then friction, as Bullet's arrays
   std::vector<Group> groups_;
   std::vector<int> members_;  // rows_ indices, group by group in block order

@@ -74,6 +74,10 @@ bool JointSpaceInertia::update(const btMultiBody& body)
 
     const Frame& from = frames_[parent];
     Frame& to = frames_[i + 1];
+    std::copy(R, R + 9, to.from_parent);
+    to.offset[0] = r.x();
+    to.offset[1] = r.y();
+    to.offset[2] = r.z();
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 3; ++c)
         to.rotation[3 * a + c] = R[3 * a] * from.rotation[c] + R[3 * a + 1] * from.rotation[3 + c] +
@@ -132,6 +136,197 @@ bool JointSpaceInertia::update(const btMultiBody& body)
     }
   }
   return true;
+}
+
+namespace
+{
+void cross(const double* a, const double* b, double* out)
+{
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// y = R x and y = R^T x for a row-major 3 x 3 R.
+void rotate(const double* R, const double* x, double* y)
+{
+  for (int a = 0; a < 3; ++a)
+    y[a] = R[3 * a] * x[0] + R[3 * a + 1] * x[1] + R[3 * a + 2] * x[2];
+}
+
+void rotateBack(const double* R, const double* x, double* y)
+{
+  for (int a = 0; a < 3; ++a)
+    y[a] = R[a] * x[0] + R[3 + a] * x[1] + R[6 + a] * x[2];
+}
+
+double norm(const double* x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
+}  // namespace
+
+void JointSpaceInertia::accelerations(const btMultiBody& body, btScalar* qdd)
+{
+  const int links = body.getNumLinks();
+  velocity_.resize(links + 1);
+  acceleration_.resize(links + 1);
+  force_.resize(links + 1);
+  generalized_.assign(n_, 0.0);
+  const btScalar* qd = body.getVelocityVector();
+  const double linear_damping = body.getLinearDamping(), angular_damping = body.getAngularDamping();
+  const bool gyroscopic = body.getUseGyroTerm();
+
+  // f = I a + v x* I v + damping - applied, at the body's centre of mass in its frame (Bullet's
+  // "zero-acceleration force" plus the inertial force of the acceleration).
+  auto bodyForce = [&](int b, const btVector3& inertia, double mass, const btVector3& applied_torque,
+                       const btVector3& applied_force) {
+    const Motion& v = velocity_[b];
+    const Motion& a = acceleration_[b];
+    Motion& f = force_[b];
+    const double I[3] = {inertia.x(), inertia.y(), inertia.z()};
+    const double Iw[3] = {I[0] * v.w[0], I[1] * v.w[1], I[2] * v.w[2]};
+    const double torque_world[3] = {applied_torque.x(), applied_torque.y(), applied_torque.z()};
+    const double force_world[3] = {applied_force.x(), applied_force.y(), applied_force.z()};
+    double torque[3], force[3], gyro[3] = {0, 0, 0}, wv[3];
+    rotate(frames_[b].rotation, torque_world, torque);
+    rotate(frames_[b].rotation, force_world, force);
+    if (gyroscopic)
+      cross(v.w, Iw, gyro);
+    cross(v.w, v.v, wv);
+    const double angular = angular_damping * (1 + norm(v.w)), linear = linear_damping * (1 + norm(v.v));
+    for (int k = 0; k < 3; ++k)
+    {
+      f.w[k] = I[k] * a.w[k] + gyro[k] + Iw[k] * angular - torque[k];
+      f.v[k] = mass * (a.v[k] + wv[k] + v.v[k] * linear) - force[k];
+    }
+  };
+
+  // Outward: velocities, and accelerations with qdd = 0 in Bullet's coordinates. For the base
+  // that is a constant world-frame angular and centre-of-mass velocity, i.e. a body-frame
+  // spatial acceleration (0, -w x v).
+  Motion& v0 = velocity_[0];
+  Motion& a0 = acceleration_[0];
+  v0 = a0 = Motion{};
+  if (!first_)
+  {
+    const double w_world[3] = {qd[0], qd[1], qd[2]}, v_world[3] = {qd[3], qd[4], qd[5]};
+    rotate(frames_[0].rotation, w_world, v0.w);
+    rotate(frames_[0].rotation, v_world, v0.v);
+    cross(v0.v, v0.w, a0.v);
+  }
+  bodyForce(0, body.getBaseInertia(), body.getBaseMass(), body.getBaseTorque(), body.getBaseForce());
+  for (int i = 0; i < links; ++i)
+  {
+    const btMultibodyLink& link = body.getLink(i);
+    const int b = i + 1, p = link.m_parent + 1;
+    const Frame& frame = frames_[b];
+    // Parent to link: w' = R w, v' = R v + w' x r (the same for accelerations).
+    auto transform = [&](const Motion& in, Motion& out) {
+      rotate(frame.from_parent, in.w, out.w);
+      rotate(frame.from_parent, in.v, out.v);
+      double wr[3];
+      cross(out.w, frame.offset, wr);
+      for (int k = 0; k < 3; ++k)
+        out.v[k] += wr[k];
+    };
+    Motion joint{};  // the joint's own velocity S qd
+    for (int d = 0; d < link.m_dofCount; ++d)
+    {
+      const double rate = qd[6 + link.m_dofOffset + d];
+      const btVector3& top = link.getAxisTop(d);
+      const btVector3& bottom = link.getAxisBottom(d);
+      for (int k = 0; k < 3; ++k)
+      {
+        joint.w[k] += top[k] * rate;
+        joint.v[k] += bottom[k] * rate;
+      }
+    }
+    Motion& v = velocity_[b];
+    Motion& a = acceleration_[b];
+    transform(velocity_[p], v);
+    transform(acceleration_[p], a);
+    for (int k = 0; k < 3; ++k)
+    {
+      v.w[k] += joint.w[k];
+      v.v[k] += joint.v[k];
+    }
+    // The velocity-product acceleration v x S qd.
+    double ww[3], vw[3], wv[3];
+    cross(v.w, joint.w, ww);
+    cross(v.v, joint.w, vw);
+    cross(v.w, joint.v, wv);
+    for (int k = 0; k < 3; ++k)
+    {
+      a.w[k] += ww[k];
+      a.v[k] += vw[k] + wv[k];
+    }
+    bodyForce(b, link.m_inertiaLocal, link.m_mass, body.getLinkTorque(i), body.getLinkForce(i));
+  }
+
+  // Inward: each joint's share of the forces beyond it, and those forces moved to the parent:
+  // f_p += (R^T (n + r x f), R^T f).
+  for (int i = links - 1; i >= 0; --i)
+  {
+    const btMultibodyLink& link = body.getLink(i);
+    const int b = i + 1, p = link.m_parent + 1;
+    const Motion& f = force_[b];
+    for (int d = 0; d < link.m_dofCount; ++d)
+    {
+      const btVector3& top = link.getAxisTop(d);
+      const btVector3& bottom = link.getAxisBottom(d);
+      generalized_[6 + link.m_dofOffset + d] = top.x() * f.w[0] + top.y() * f.w[1] + top.z() * f.w[2] +
+                                               bottom.x() * f.v[0] + bottom.y() * f.v[1] + bottom.z() * f.v[2];
+    }
+    const Frame& frame = frames_[b];
+    double rf[3], moment[3], n[3], lin[3];
+    cross(frame.offset, f.v, rf);
+    for (int k = 0; k < 3; ++k)
+      moment[k] = f.w[k] + rf[k];
+    rotateBack(frame.from_parent, moment, n);
+    rotateBack(frame.from_parent, f.v, lin);
+    for (int k = 0; k < 3; ++k)
+    {
+      force_[p].w[k] += n[k];
+      force_[p].v[k] += lin[k];
+    }
+  }
+  if (!first_)
+  {
+    rotateBack(frames_[0].rotation, force_[0].w, &generalized_[0]);
+    rotateBack(frames_[0].rotation, force_[0].v, &generalized_[3]);
+  }
+
+  // qdd = M^-1 (tau - C)
+  for (int i = 0; i < n_; ++i)
+    generalized_[i] = -generalized_[i];
+  for (int i = 0; i < links; ++i)
+  {
+    const btMultibodyLink& link = body.getLink(i);
+    const btScalar* torque = const_cast<btMultiBody&>(body).getJointTorqueMultiDof(i);
+    for (int d = 0; d < link.m_dofCount; ++d)
+      generalized_[6 + link.m_dofOffset + d] += torque[d];
+  }
+  solve(generalized_.data());
+  for (int i = 0; i < n_; ++i)
+    qdd[i] = btScalar(generalized_[i]);
+}
+
+void JointSpaceInertia::solve(double* x) const
+{
+  const double* L = lower_.data();
+  for (int i = first_; i < n_; ++i)
+  {
+    double s = x[i];
+    for (int j = first_; j < i; ++j)
+      s -= L[size_t(i) * n_ + j] * x[j];
+    x[i] = s * inverse_diagonal_[i];
+  }
+  for (int i = n_ - 1; i >= first_; --i)
+  {
+    double s = x[i];
+    for (int j = i + 1; j < n_; ++j)
+      s -= L[size_t(j) * n_ + i] * x[j];
+    x[i] = s * inverse_diagonal_[i];
+  }
+  std::fill(x, x + first_, 0.0);
 }
 
 void JointSpaceInertia::contactJacobian(int link, const btVector3& point, const btVector3& direction, btScalar* row) const

@@ -25,6 +25,14 @@ public:
   bool update(const btMultiBody& body);
   int size() const { return n_; }
 
+  // Bullet's forward dynamics without its articulated-body pass: the accelerations
+  // qdd = M^-1 (tau - C) for the multibody's joint torques and applied forces and torques, with C
+  // the velocity-product (centripetal, Coriolis, gyroscopic) and damping forces as Bullet's
+  // computeAccelerationsArticulatedBodyAlgorithmMultiDof has them (recursive Newton-Euler). Laid
+  // out as Bullet's result: world-frame base angular and centre-of-mass acceleration, then the
+  // joints. Valid after update() for the same configuration.
+  void accelerations(const btMultiBody& body, btScalar* qdd);
+
   // The row of a contact Jacobian: d/dq of the velocity, along `direction`, of the world point
   // `point` moving with `link` (-1: the base); what btMultiBody::fillContactJacobianMultiDof gives.
   void contactJacobian(int link, const btVector3& point, const btVector3& direction, btScalar* row) const;
@@ -41,12 +49,18 @@ private:
   {
     double w[3], v[3];
   };
-  // Where a body is: the world-to-body rotation (row-major) and its centre of mass.
+  // Where a body is: the world-to-body rotation (row-major) and its centre of mass; for a link,
+  // also Bullet's parent-to-link rotation and the vector from the parent's centre of mass to the
+  // link's, in the link's frame.
   struct Frame
   {
     double rotation[9];
     double com[3];
+    double from_parent[9];
+    double offset[3];
   };
+
+  void solve(double* x) const;  // x <- M^-1 x
 
   int n_ = 0;
   int first_ = 0;  // 6 with a fixed base: its six velocities do not move
@@ -59,6 +73,8 @@ private:
   std::vector<double> inertia_;  // M, lower triangle, n x n row-major
   std::vector<double> lower_;    // its Cholesky factor L (M = L L^T), n x n row-major
   std::vector<double> inverse_diagonal_;
+  std::vector<Motion> velocity_, acceleration_, force_;  // per body, scratch of accelerations()
+  std::vector<double> generalized_;
 };
 
 }  // namespace bullet_plant

@@ -7,6 +7,7 @@
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include "dense_row_solver.h"
+#include "dynamics_world.h"
 #include "internals.h"
 #include "wheel_contact.h"
 
@@ -54,9 +55,9 @@ World::World(const WorldDescription& description) : in_(new Internals)
   w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
   registerWheelContact(*w.dispatcher);
   w.broadphase.reset(new btDbvtBroadphase());
-  w.solver.reset(new DenseRowSolver());
-  w.dynamics.reset(new btMultiBodyDynamicsWorld(w.dispatcher.get(), w.broadphase.get(), w.solver.get(),
-                                                w.collision_config.get()));
+  auto* solver = new DenseRowSolver();
+  w.solver.reset(solver);
+  w.dynamics.reset(new DynamicsWorld(w.dispatcher.get(), w.broadphase.get(), solver, w.collision_config.get()));
   const urdf::Vector3& g = description.gravity;
   w.dynamics->setGravity(btVector3(btScalar(g.x), btScalar(g.y), btScalar(g.z)));
   btContactSolverInfo& info = w.dynamics->getSolverInfo();
