@@ -37,7 +37,10 @@ struct Body
   double mass = 0.0;
   btVector3 inertia_diagonal{0, 0, 0};
   btTransform urdf_from_com = btTransform::getIdentity();
-  btCompoundShape* shape = nullptr;  // null when no member link has a collision
+  // The collider's shape: null when no member link has a collision; the compound of the
+  // member links' shapes, or its only child where that child sits in the COM frame as it is.
+  btCollisionShape* shape = nullptr;
+  std::unique_ptr<btCompoundShape> compound;
   std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
   std::vector<RayPrimitive> ray_shapes;  // the same shapes, in the COM frame, for sensors
   double mu = 1.0;

@@ -147,6 +147,67 @@ btCollisionShape* bulletShape(const Shape& s)
   return shape;
 }
 
+// The shape as Bullet's axis-aligned primitive where its pose in the body frame is one of its
+// symmetries (no offset; for a box a rotation that permutes its axes, for a cylinder one that puts
+// its axis on a body axis, for a sphere any): then the collider needs no compound, which costs
+// every contact pair a tree walk and a transform per step. Null where the compound is needed.
+// The tolerances absorb float rounding of the URDF's angles (cos(pi/2) is 4e-8 in float).
+btCollisionShape* alignedShape(const Shape& s, const btTransform& pose)
+{
+  constexpr btScalar kTolerance = btScalar(1e-6);
+  if (pose.getOrigin().length() > kTolerance)
+    return nullptr;
+  // The body axis that the shape's axis k lies along, or -1.
+  auto bodyAxisOf = [&](int k) {
+    for (int i = 0; i < 3; ++i)
+      if (btFabs(btFabs(pose.getBasis()[i][k]) - 1) < kTolerance)
+        return i;
+    return -1;
+  };
+  btCollisionShape* shape = nullptr;
+  switch (s.kind)
+  {
+    case Shape::Kind::Sphere:
+      return bulletShape(s);
+    case Shape::Kind::Box:
+    {
+      btVector3 half;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int i = bodyAxisOf(k);
+        if (i < 0)
+          return nullptr;
+        half[i] = btScalar(s.box_size[k] / 2);
+      }
+      shape = new btBoxShape(half);
+      break;
+    }
+    case Shape::Kind::Cylinder:
+    {
+      const btScalar r = btScalar(s.radius), h = btScalar(s.length / 2);
+      switch (bodyAxisOf(2))
+      {
+        case 0:
+          shape = new btCylinderShapeX(btVector3(h, r, r));
+          break;
+        case 1:
+          shape = new btCylinderShape(btVector3(r, h, r));
+          break;
+        case 2:
+          shape = new btCylinderShapeZ(btVector3(r, r, h));
+          break;
+        default:
+          return nullptr;
+      }
+      break;
+    }
+    case Shape::Kind::Plane:
+      return nullptr;
+  }
+  shape->setMargin(kCollisionMargin);
+  return shape;
+}
+
 JointInterface parseInterface(const std::string& name, bool& ok)
 {
   ok = true;
@@ -284,6 +345,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   }
 
   // 3. Collision shapes, in each body's COM frame.
+  std::vector<Shape> single_child(r.bodies.size());  // the last child of each body's compound
   for (const auto& kv : link_in_urdf_frame)
   {
     urdf::LinkConstSharedPtr link = model.getLink(kv.first);
@@ -300,10 +362,12 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
       if (!ok)
         continue;
       btTransform in_com = com_from_link * toBullet(c->origin) * mesh_offset;
-      if (!body.shape)
-        body.shape = new btCompoundShape(false, 4);
+      if (!body.compound)
+        body.compound.reset(new btCompoundShape(false, 4));
       body.child_shapes.emplace_back(bulletShape(shape));
-      body.shape->addChildShape(in_com, body.child_shapes.back().get());
+      body.compound->addChildShape(in_com, body.child_shapes.back().get());
+      body.shape = body.compound.get();
+      single_child[kv.second.first] = shape;
       body.ray_shapes.push_back(RayPrimitive::fromShape(shape, fromBullet(in_com), &r));
       if (link->visual && link->visual->material)
       {
@@ -315,6 +379,17 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
     if (surface != r.description.surfaces.end() && surface->second.given &&
         (link->name == body.link || !link->collision_array.empty()))
       body.mu = std::min(surface->second.mu1, surface->second.mu2);
+  }
+
+  for (size_t bi = 0; bi < r.bodies.size(); ++bi)
+  {
+    Body& body = r.bodies[bi];
+    if (body.compound && body.compound->getNumChildShapes() == 1)
+      if (btCollisionShape* aligned = alignedShape(single_child[bi], body.compound->getChildTransform(0)))
+      {
+        body.child_shapes.emplace_back(aligned);
+        body.shape = aligned;
+      }
   }
 
   // 4. The multibody.
@@ -528,8 +603,6 @@ void destroyRobot(Robot::Internals& r)
     dynamics->removeCollisionObject(col.get());
   if (r.multibody)
     dynamics->removeMultiBody(r.multibody.get());
-  for (Body& b : r.bodies)
-    delete b.shape;
 }
 
 // ---------------------------------------------------------------------------------------- state
