@@ -14,9 +14,18 @@ bool JointSpaceInertia::update(const btMultiBody& body)
   first_ = body.hasFixedBase() ? 6 : 0;
   // Body b's Jacobian has non-zero columns only for the base and the joints between b and the
   // base: columns_[b] lists them, motions_ holds those columns, body after body.
-  motions_.clear();
-  columns_.clear();
-  first_column_.assign(1, 0);
+  first_column_.resize(links + 2);
+  first_column_[0] = 0;
+  first_column_[1] = first_ ? 0 : 6;
+  for (int i = 0; i < links; ++i)
+  {
+    const btMultibodyLink& link = body.getLink(i);
+    const int parent = link.m_parent + 1;
+    first_column_[i + 2] =
+        first_column_[i + 1] + first_column_[parent + 1] - first_column_[parent] + link.m_dofCount;
+  }
+  motions_.resize(first_column_[links + 1]);
+  columns_.resize(first_column_[links + 1]);
   frames_.resize(links + 1);
   inertia_.assign(size_t(n_) * n_, 0.0);
   double* m = inertia_.data();
@@ -52,13 +61,14 @@ bool JointSpaceInertia::update(const btMultiBody& body)
   if (!first_)
     for (int a = 0; a < 6; ++a)
     {
-      Motion c{};
+      Motion& c = motions_[a];
       for (int r = 0; r < 3; ++r)
-        (a < 3 ? c.w : c.v)[r] = base.rotation[3 * r + a % 3];
-      motions_.push_back(c);
-      columns_.push_back(a);
+      {
+        c.w[r] = a < 3 ? base.rotation[3 * r + a] : 0.0;
+        c.v[r] = a < 3 ? 0.0 : base.rotation[3 * r + a - 3];
+      }
+      columns_[a] = a;
     }
-  first_column_.push_back(int(columns_.size()));
   addBody(0, body.getBaseInertia(), body.getBaseMass());
 
   for (int i = 0; i < links; ++i)
@@ -86,10 +96,11 @@ bool JointSpaceInertia::update(const btMultiBody& body)
       to.com[a] = from.com[a] + to.rotation[a] * r.x() + to.rotation[3 + a] * r.y() + to.rotation[6 + a] * r.z();
 
     // The parent's columns seen from this body: w' = R w, v' = R v + w' x r.
-    for (int p = first_column_[parent]; p < first_column_[parent + 1]; ++p)
+    int column = first_column_[i + 1];
+    for (int p = first_column_[parent]; p < first_column_[parent + 1]; ++p, ++column)
     {
       const Motion& in = motions_[p];
-      Motion out;
+      Motion& out = motions_[column];
       for (int a = 0; a < 3; ++a)
       {
         out.w[a] = R[3 * a] * in.w[0] + R[3 * a + 1] * in.w[1] + R[3 * a + 2] * in.w[2];
@@ -98,17 +109,20 @@ bool JointSpaceInertia::update(const btMultiBody& body)
       out.v[0] += out.w[1] * r.z() - out.w[2] * r.y();
       out.v[1] += out.w[2] * r.x() - out.w[0] * r.z();
       out.v[2] += out.w[0] * r.y() - out.w[1] * r.x();
-      motions_.push_back(out);
-      columns_.push_back(columns_[p]);
+      columns_[column] = columns_[p];
     }
-    for (int d = 0; d < link.m_dofCount; ++d)
+    for (int d = 0; d < link.m_dofCount; ++d, ++column)
     {
       const btVector3& top = link.getAxisTop(d);
       const btVector3& bottom = link.getAxisBottom(d);
-      motions_.push_back(Motion{{top.x(), top.y(), top.z()}, {bottom.x(), bottom.y(), bottom.z()}});
-      columns_.push_back(6 + link.m_dofOffset + d);
+      Motion& axis = motions_[column];
+      for (int a = 0; a < 3; ++a)
+      {
+        axis.w[a] = top[a];
+        axis.v[a] = bottom[a];
+      }
+      columns_[column] = 6 + link.m_dofOffset + d;
     }
-    first_column_.push_back(int(columns_.size()));
     addBody(i + 1, link.m_inertiaLocal, link.m_mass);
   }
 
