@@ -533,6 +533,7 @@ void DenseRowSolver::loadRows()
     row.rhs = c.m_rhs;
     row.cfm = c.m_cfm;
     row.inverse_mass = c.m_jacDiagABInv;
+    row.mass = c.m_jacDiagABInv != 0 ? 1 / c.m_jacDiagABInv : btScalar(0);
     row.lower = c.m_lowerLimit;
     row.upper = c.m_upperLimit;
     row.friction = c.m_friction;
@@ -599,7 +600,7 @@ void DenseRowSolver::warmStart(const btContactSolverInfo& info)
 }
 
 // velocities of the row's group += impulse * the row's column of the Delassus block.
-void DenseRowSolver::addToVelocities(const Row& row, btScalar impulse)
+inline void DenseRowSolver::addToVelocities(const Row& row, btScalar impulse)
 {
   Lanes* velocity = reinterpret_cast<Lanes*>(&row_velocity_[row.velocity]);
   const Lanes* column = reinterpret_cast<const Lanes*>(&delassus_[row.column]);
@@ -608,7 +609,7 @@ void DenseRowSolver::addToVelocities(const Row& row, btScalar impulse)
     velocity[q] += impulse * column[q];
 }
 
-btScalar DenseRowSolver::visit(Row& row)
+inline btScalar DenseRowSolver::visit(Row& row)
 {
   const btScalar applied = row.impulse;
   btScalar delta = row.rhs - applied * row.cfm - row_velocity_[row.velocity + row.local] * row.inverse_mass;
@@ -630,7 +631,7 @@ btScalar DenseRowSolver::visit(Row& row)
   if (delta != 0)
     addToVelocities(row, delta);
   // Bullet's residual is the velocity change; a row Bullet disabled (no effective mass) has none.
-  return row.inverse_mass != 0 ? delta / row.inverse_mass : btScalar(0);
+  return delta * row.mass;
 }
 
 void DenseRowSolver::applyVelocityChanges()

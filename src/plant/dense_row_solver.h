@@ -69,6 +69,7 @@ private:
     int stride;    // the group's padded size
     int normal;    // friction rows: the rows_ index of their contact's normal row; others -1
     btScalar rhs, cfm, inverse_mass, lower, upper, friction;
+    btScalar mass;  // 1 / inverse_mass, or 0 for a row Bullet disabled: the residual is delta * mass
     btScalar impulse, start_impulse;
   };
   struct Group
