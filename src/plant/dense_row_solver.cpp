@@ -125,7 +125,7 @@ void DenseRowSolver::finishDeferredRows()
       continue;
     const int n = slot.inertia->size();
     const int padded = (k + JointSpaceInertia::kSides - 1) / JointSpaceInertia::kSides * JointSpaceInertia::kSides;
-    slot.columns.assign(size_t(n) * padded, 0.0);
+    slot.columns.assign(size_t(n) * padded, btScalar(0));
     slot.gram.resize(size_t(padded) * padded);
     slot.stride = padded;
     auto jacobianIndex = [&](const DeferredRow& d) {
@@ -144,9 +144,9 @@ void DenseRowSolver::finishDeferredRows()
       const DeferredRow& d = deferred_[slot.rows[p]];
       btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobianIndex(d)];
       for (int i = 0; i < n; ++i)
-        response[i] = btScalar(slot.columns[size_t(i) * padded + p]);
+        response[i] = slot.columns[size_t(i) * padded + p];
       btMultiBodySolverConstraint& row = (*d.rows)[d.index];
-      const btScalar denominator = btScalar(slot.gram[size_t(p) * padded + p]) + d.cfm;
+      const btScalar denominator = slot.gram[size_t(p) * padded + p] + d.cfm;
       row.m_jacDiagABInv = denominator > SIMD_EPSILON ? d.sor / denominator : btScalar(0);
       row.m_rhs = d.velocity_error * row.m_jacDiagABInv;
       row.m_cfm = d.cfm * row.m_jacDiagABInv;
@@ -507,14 +507,14 @@ void DenseRowSolver::buildBlocks()
     const int* members = &members_[g.offset];
     // Rows of one multibody whose responses were computed together: their entry is in its gram.
     const DeferredRow* deferred = row.deferred >= 0 ? &deferred_[row.deferred] : nullptr;
-    const double* gram = deferred ? &body_rows_[deferred->body].gram[size_t(deferred->position) *
+    const btScalar* gram = deferred ? &body_rows_[deferred->body].gram[size_t(deferred->position) *
                                                                      body_rows_[deferred->body].stride]
                                   : nullptr;
     for (int other = 0; other <= row.local; ++other)
     {
       const Row& o = rows_[members[other]];
       const DeferredRow* od = o.deferred >= 0 ? &deferred_[o.deferred] : nullptr;
-      const btScalar a = gram && od && od->body == deferred->body ? btScalar(gram[od->position])
+      const btScalar a = gram && od && od->body == deferred->body ? gram[od->position]
                                                                   : response(c, *o.constraint, m_data);
       matrix[row.local * g.stride + other] = a;
       matrix[other * g.stride + row.local] = a;

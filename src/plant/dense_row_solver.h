@@ -97,7 +97,7 @@ private:
     btMultiBody* body = nullptr;
     std::unique_ptr<JointSpaceInertia> inertia;
     std::vector<int> rows;  // deferred_ indices
-    std::vector<double> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
+    std::vector<btScalar> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
     int stride = 0;
     bool articulated_pass_pending = false;  // its velocities came from integrateVelocities
   };

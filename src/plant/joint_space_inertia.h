@@ -41,7 +41,7 @@ public:
   // of freedom by degree of freedom (x[i * count + r] is entry i of side r): x <- M^-1 x, and
   // gram (count x count, row-major) <- x^T M^-1 x of the sides as given.
   static constexpr int kSides = 4;
-  void solveColumns(double* x, int count, double* gram) const;
+  void solveColumns(btScalar* x, int count, btScalar* gram) const;
 
 private:
   // A spatial motion vector (angular; linear at a body's centre of mass), in the body's frame.
@@ -73,6 +73,7 @@ private:
   std::vector<double> inertia_;  // M, lower triangle, n x n row-major
   std::vector<double> lower_;    // its Cholesky factor L (M = L L^T), n x n row-major
   std::vector<double> inverse_diagonal_;
+  std::vector<btScalar> lower_scalar_, inverse_diagonal_scalar_;  // the factor for solveColumns
   std::vector<Motion> velocity_, acceleration_, force_;  // per body, scratch of accelerations()
   std::vector<double> generalized_;
 };
