@@ -7,123 +7,184 @@
 
 namespace bullet_plant
 {
+namespace
+{
+void cross(const double* a, const double* b, double* out)
+{
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+// y = R x and y = R^T x for a row-major 3 x 3 R.
+void rotate(const double* R, const double* x, double* y)
+{
+  for (int a = 0; a < 3; ++a)
+    y[a] = R[3 * a] * x[0] + R[3 * a + 1] * x[1] + R[3 * a + 2] * x[2];
+}
+
+void rotateBack(const double* R, const double* x, double* y)
+{
+  for (int a = 0; a < 3; ++a)
+    y[a] = R[a] * x[0] + R[3 + a] * x[1] + R[6 + a] * x[2];
+}
+
+double norm(const double* x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
+}  // namespace
+
 bool JointSpaceInertia::update(const btMultiBody& body)
 {
   const int links = body.getNumLinks();
   n_ = body.getNumDofs() + 6;
   first_ = body.hasFixedBase() ? 6 : 0;
-  // Body b's Jacobian has non-zero columns only for the base and the joints between b and the
-  // base: columns_[b] lists them, motions_ holds those columns, body after body.
-  first_column_.resize(links + 2);
-  first_column_[0] = 0;
-  first_column_[1] = first_ ? 0 : 6;
-  for (int i = 0; i < links; ++i)
-  {
-    const btMultibodyLink& link = body.getLink(i);
-    const int parent = link.m_parent + 1;
-    first_column_[i + 2] =
-        first_column_[i + 1] + first_column_[parent + 1] - first_column_[parent] + link.m_dofCount;
-  }
-  motions_.resize(first_column_[links + 1]);
-  columns_.resize(first_column_[links + 1]);
   frames_.resize(links + 1);
+  composites_.resize(links + 1);
+  dofs_.resize(n_);
   inertia_.assign(size_t(n_) * n_, 0.0);
   double* m = inertia_.data();
 
-  // Adds J_b^T diag(inertia, mass) J_b to M (lower triangle) over b's columns.
-  auto addBody = [&](int b, const btVector3& inertia, double mass) {
-    const int begin = first_column_[b], end = first_column_[b + 1];
-    for (int p = begin; p < end; ++p)
-    {
-      const Motion& cp = motions_[p];
-      const double wp[3] = {inertia.x() * cp.w[0], inertia.y() * cp.w[1], inertia.z() * cp.w[2]};
-      const double vp[3] = {mass * cp.v[0], mass * cp.v[1], mass * cp.v[2]};
-      double* row = m + size_t(columns_[p]) * n_;
-      // A body's columns are in increasing generalized index: q <= p is the lower triangle.
-      for (int q = begin; q <= p; ++q)
-      {
-        const Motion& cq = motions_[q];
-        row[columns_[q]] += wp[0] * cq.w[0] + wp[1] * cq.w[1] + wp[2] * cq.w[2] + vp[0] * cq.v[0] + vp[1] * cq.v[1] +
-                            vp[2] * cq.v[2];
-      }
-    }
-  };
-
-  // The base: its spatial velocity is the world-frame angular and linear velocity, rotated in.
+  // Where the bodies are: rotations from the world and centres of mass, base outwards.
   const btMatrix3x3 world_to_base(body.getWorldToBaseRot());
   Frame& base = frames_[0];
+  base.parent = -1;
+  base.first_dof = 0;
+  base.dof_count = 0;
   for (int r = 0; r < 3; ++r)
   {
     for (int c = 0; c < 3; ++c)
       base.rotation[3 * r + c] = world_to_base[r][c];
     base.com[r] = body.getBasePos()[r];
   }
-  if (!first_)
-    for (int a = 0; a < 6; ++a)
-    {
-      Motion& c = motions_[a];
-      for (int r = 0; r < 3; ++r)
-      {
-        c.w[r] = a < 3 ? base.rotation[3 * r + a] : 0.0;
-        c.v[r] = a < 3 ? 0.0 : base.rotation[3 * r + a - 3];
-      }
-      columns_[a] = a;
-    }
-  addBody(0, body.getBaseInertia(), body.getBaseMass());
-
   for (int i = 0; i < links; ++i)
   {
     const btMultibodyLink& link = body.getLink(i);
-    const int parent = link.m_parent + 1;  // body index: 0 is the base
+    const Frame& from = frames_[link.m_parent + 1];
+    Frame& to = frames_[i + 1];
+    to.parent = link.m_parent + 1;
+    to.first_dof = 6 + link.m_dofOffset;
+    to.dof_count = link.m_dofCount;
     const btMatrix3x3 rotation(link.m_cachedRotParentToThis);
     const btVector3& r = link.m_cachedRVector;  // parent's centre of mass to this one's, in this frame
-    double R[9];
     for (int a = 0; a < 3; ++a)
+    {
       for (int c = 0; c < 3; ++c)
-        R[3 * a + c] = rotation[a][c];
-
-    const Frame& from = frames_[parent];
-    Frame& to = frames_[i + 1];
-    std::copy(R, R + 9, to.from_parent);
-    to.offset[0] = r.x();
-    to.offset[1] = r.y();
-    to.offset[2] = r.z();
+        to.from_parent[3 * a + c] = rotation[a][c];
+      to.offset[a] = r[a];
+    }
+    const double* R = to.from_parent;
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 3; ++c)
         to.rotation[3 * a + c] = R[3 * a] * from.rotation[c] + R[3 * a + 1] * from.rotation[3 + c] +
                                  R[3 * a + 2] * from.rotation[6 + c];
+    rotateBack(to.rotation, to.offset, to.com);
     for (int a = 0; a < 3; ++a)
-      to.com[a] = from.com[a] + to.rotation[a] * r.x() + to.rotation[3 + a] * r.y() + to.rotation[6 + a] * r.z();
+      to.com[a] += from.com[a];
+    // The joint's motions in world axes, at the link's centre of mass.
+    for (int d = 0; d < link.m_dofCount; ++d)
+    {
+      Dof& dof = dofs_[to.first_dof + d];
+      const double top[3] = {link.getAxisTop(d).x(), link.getAxisTop(d).y(), link.getAxisTop(d).z()};
+      const double bottom[3] = {link.getAxisBottom(d).x(), link.getAxisBottom(d).y(), link.getAxisBottom(d).z()};
+      rotateBack(to.rotation, top, dof.angular);
+      rotateBack(to.rotation, bottom, dof.linear);
+      dof.body = i + 1;
+    }
+  }
 
-    // The parent's columns seen from this body: w' = R w, v' = R v + w' x r.
-    int column = first_column_[i + 1];
-    for (int p = first_column_[parent]; p < first_column_[parent + 1]; ++p, ++column)
+  // Composite rigid bodies: each body with everything beyond it, as mass, first moment and
+  // rotational inertia about the body's centre of mass, in world axes (leaves inwards).
+  for (int b = 0; b <= links; ++b)
+  {
+    Composite& c = composites_[b];
+    const btVector3 own = b == 0 ? body.getBaseInertia() : body.getLink(b - 1).m_inertiaLocal;
+    c.mass = b == 0 ? body.getBaseMass() : body.getLink(b - 1).m_mass;
+    c.moment[0] = c.moment[1] = c.moment[2] = 0;
+    const double* R = frames_[b].rotation;  // world to body: I_world = R^T diag(own) R
+    for (int a = 0; a < 3; ++a)
+      for (int e = 0; e < 3; ++e)
+        c.inertia[3 * a + e] = R[a] * own.x() * R[e] + R[3 + a] * own.y() * R[3 + e] + R[6 + a] * own.z() * R[6 + e];
+  }
+  for (int b = links; b >= 1; --b)
+  {
+    const Composite& child = composites_[b];
+    Composite& parent = composites_[frames_[b].parent];
+    double d[3];  // the child's reference point from the parent's
+    for (int a = 0; a < 3; ++a)
+      d[a] = frames_[b].com[a] - frames_[frames_[b].parent].com[a];
+    // Moved from the child's point to the parent's: I += I_c + 2 (h.d) E - h d^T - d h^T + m (|d|^2 E - d d^T).
+    const double hd = child.moment[0] * d[0] + child.moment[1] * d[1] + child.moment[2] * d[2];
+    const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    for (int a = 0; a < 3; ++a)
+      for (int e = 0; e < 3; ++e)
+        parent.inertia[3 * a + e] += child.inertia[3 * a + e] - child.moment[a] * d[e] - d[a] * child.moment[e] -
+                                     child.mass * d[a] * d[e] + (a == e ? 2 * hd + child.mass * dd : 0.0);
+    for (int a = 0; a < 3; ++a)
+      parent.moment[a] += child.moment[a] + child.mass * d[a];
+    parent.mass += child.mass;
+  }
+
+  // M, lower triangle. A unit motion (w, v at point P) of a composite with first moment h and
+  // rotational inertia I about P meets the momentum (I w + h x v, m v - h x w).
+  if (!first_)
+  {
+    const Composite& all = composites_[0];
+    for (int k = 0; k < 3; ++k)
     {
-      const Motion& in = motions_[p];
-      Motion& out = motions_[column];
+      double e[3] = {0, 0, 0}, eh[3];
+      e[k] = 1;
+      cross(e, all.moment, eh);  // base angular column k: linear momentum e_k x h
+      for (int a = 0; a <= k; ++a)
+        m[size_t(a) * n_ + k] = m[size_t(k) * n_ + a] = all.inertia[3 * a + k];
+      for (int a = 0; a < 3; ++a)
+        m[size_t(3 + a) * n_ + k] = eh[a];
+      m[size_t(3 + k) * n_ + 3 + k] = all.mass;
+    }
+  }
+  for (int j = 6; j < n_; ++j)
+  {
+    const Dof& dof = dofs_[j];
+    const Composite& c = composites_[dof.body];
+    const double* com = frames_[dof.body].com;
+    double hv[3], hw[3], L[3], p[3];
+    cross(c.moment, dof.linear, hv);
+    cross(c.moment, dof.angular, hw);
+    rotate(c.inertia, dof.angular, L);
+    for (int a = 0; a < 3; ++a)
+    {
+      L[a] += hv[a];
+      p[a] = c.mass * dof.linear[a] - hw[a];
+    }
+    double* row = m + size_t(j) * n_;
+    // This joint and the ones between its body and the base (lower indices): their motions of
+    // the point com.
+    for (int b = dof.body; b > 0; b = frames_[b].parent)
+    {
+      const Frame& frame = frames_[b];
+      double d[3];
+      for (int a = 0; a < 3; ++a)
+        d[a] = com[a] - frame.com[a];
+      for (int i = frame.first_dof; i < frame.first_dof + frame.dof_count && i <= j; ++i)
+      {
+        const Dof& other = dofs_[i];
+        double wd[3];
+        cross(other.angular, d, wd);
+        row[i] = other.angular[0] * L[0] + other.angular[1] * L[1] + other.angular[2] * L[2] +
+                 (other.linear[0] + wd[0]) * p[0] + (other.linear[1] + wd[1]) * p[1] + (other.linear[2] + wd[2]) * p[2];
+      }
+    }
+    if (!first_)
+    {
+      // Base angular column k moves the point com by e_k x (com - base com): L + d x p.
+      double d[3], dp[3];
+      for (int a = 0; a < 3; ++a)
+        d[a] = com[a] - frames_[0].com[a];
+      cross(d, p, dp);
       for (int a = 0; a < 3; ++a)
       {
-        out.w[a] = R[3 * a] * in.w[0] + R[3 * a + 1] * in.w[1] + R[3 * a + 2] * in.w[2];
-        out.v[a] = R[3 * a] * in.v[0] + R[3 * a + 1] * in.v[1] + R[3 * a + 2] * in.v[2];
+        row[a] = L[a] + dp[a];
+        row[3 + a] = p[a];
       }
-      out.v[0] += out.w[1] * r.z() - out.w[2] * r.y();
-      out.v[1] += out.w[2] * r.x() - out.w[0] * r.z();
-      out.v[2] += out.w[0] * r.y() - out.w[1] * r.x();
-      columns_[column] = columns_[p];
     }
-    for (int d = 0; d < link.m_dofCount; ++d, ++column)
-    {
-      const btVector3& top = link.getAxisTop(d);
-      const btVector3& bottom = link.getAxisBottom(d);
-      Motion& axis = motions_[column];
-      for (int a = 0; a < 3; ++a)
-      {
-        axis.w[a] = top[a];
-        axis.v[a] = bottom[a];
-      }
-      columns_[column] = 6 + link.m_dofOffset + d;
-    }
-    addBody(i + 1, link.m_inertiaLocal, link.m_mass);
   }
 
   // Cholesky, M = L L^T, over the velocities that move.
@@ -154,30 +215,6 @@ bool JointSpaceInertia::update(const btMultiBody& body)
   return true;
 }
 
-namespace
-{
-void cross(const double* a, const double* b, double* out)
-{
-  out[0] = a[1] * b[2] - a[2] * b[1];
-  out[1] = a[2] * b[0] - a[0] * b[2];
-  out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-// y = R x and y = R^T x for a row-major 3 x 3 R.
-void rotate(const double* R, const double* x, double* y)
-{
-  for (int a = 0; a < 3; ++a)
-    y[a] = R[3 * a] * x[0] + R[3 * a + 1] * x[1] + R[3 * a + 2] * x[2];
-}
-
-void rotateBack(const double* R, const double* x, double* y)
-{
-  for (int a = 0; a < 3; ++a)
-    y[a] = R[a] * x[0] + R[3 + a] * x[1] + R[6 + a] * x[2];
-}
-
-double norm(const double* x) { return std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]); }
-}  // namespace
 
 void JointSpaceInertia::accelerations(const btMultiBody& body, btScalar* qdd)
 {
@@ -347,25 +384,35 @@ void JointSpaceInertia::solve(double* x) const
 
 void JointSpaceInertia::contactJacobian(int link, const btVector3& point, const btVector3& direction, btScalar* row) const
 {
-  const int b = link + 1;
-  const Frame& frame = frames_[b];
-  const double* R = frame.rotation;
-  const double arm[3] = {point.x() - frame.com[0], point.y() - frame.com[1], point.z() - frame.com[2]};
-  const double d[3] = {direction.x(), direction.y(), direction.z()};
-  double r[3], n[3];  // the arm and the direction in the body's frame
-  for (int a = 0; a < 3; ++a)
-  {
-    r[a] = R[3 * a] * arm[0] + R[3 * a + 1] * arm[1] + R[3 * a + 2] * arm[2];
-    n[a] = R[3 * a] * d[0] + R[3 * a + 1] * d[1] + R[3 * a + 2] * d[2];
-  }
-  // n . (v + w x r) = n . v + w . (r x n)
-  const double lever[3] = {r[1] * n[2] - r[2] * n[1], r[2] * n[0] - r[0] * n[2], r[0] * n[1] - r[1] * n[0]};
+  const double n[3] = {direction.x(), direction.y(), direction.z()};
   std::fill(row, row + n_, btScalar(0));
-  for (int p = first_column_[b]; p < first_column_[b + 1]; ++p)
+  // A motion (w, v at the centre of mass c) moves the point by v + w x (point - c); along n that
+  // is n . v + w . ((point - c) x n).
+  auto lever = [&](const double* com, double* out) {
+    const double arm[3] = {point.x() - com[0], point.y() - com[1], point.z() - com[2]};
+    cross(arm, n, out);
+  };
+  for (int b = link + 1; b > 0; b = frames_[b].parent)
   {
-    const Motion& c = motions_[p];
-    row[columns_[p]] = btScalar(n[0] * c.v[0] + n[1] * c.v[1] + n[2] * c.v[2] + lever[0] * c.w[0] +
-                                lever[1] * c.w[1] + lever[2] * c.w[2]);
+    const Frame& frame = frames_[b];
+    double l[3];
+    lever(frame.com, l);
+    for (int i = frame.first_dof; i < frame.first_dof + frame.dof_count; ++i)
+    {
+      const Dof& dof = dofs_[i];
+      row[i] = btScalar(n[0] * dof.linear[0] + n[1] * dof.linear[1] + n[2] * dof.linear[2] + l[0] * dof.angular[0] +
+                        l[1] * dof.angular[1] + l[2] * dof.angular[2]);
+    }
+  }
+  if (!first_)
+  {
+    double l[3];
+    lever(frames_[0].com, l);
+    for (int a = 0; a < 3; ++a)
+    {
+      row[a] = btScalar(l[a]);
+      row[3 + a] = btScalar(n[a]);
+    }
   }
 }
 

@@ -51,25 +51,37 @@ private:
   };
   // Where a body is: the world-to-body rotation (row-major) and its centre of mass; for a link,
   // also Bullet's parent-to-link rotation and the vector from the parent's centre of mass to the
-  // link's, in the link's frame.
+  // link's, in the link's frame; its parent body and its joint's generalized velocities.
   struct Frame
   {
     double rotation[9];
     double com[3];
     double from_parent[9];
     double offset[3];
+    int parent, first_dof, dof_count;
+  };
+  // A joint's unit motion in world axes: angular, and linear at its link's centre of mass.
+  struct Dof
+  {
+    double angular[3], linear[3];
+    int body;
+  };
+  // A body with everything beyond it: mass, first moment and rotational inertia about the body's
+  // centre of mass, in world axes.
+  struct Composite
+  {
+    double mass;
+    double moment[3];
+    double inertia[9];
   };
 
   void solve(double* x) const;  // x <- M^-1 x
 
   int n_ = 0;
   int first_ = 0;  // 6 with a fixed base: its six velocities do not move
-  // The bodies' Jacobians by non-zero column: body b's columns are motions_[first_column_[b] ..
-  // first_column_[b + 1]), for the generalized velocities columns_[...].
-  std::vector<Motion> motions_;
-  std::vector<int> columns_;
-  std::vector<int> first_column_;
-  std::vector<Frame> frames_;
+  std::vector<Frame> frames_;          // per body, 0 is the base
+  std::vector<Composite> composites_;  // per body
+  std::vector<Dof> dofs_;              // per generalized velocity (the joints' entries)
   std::vector<double> inertia_;  // M, lower triangle, n x n row-major
   std::vector<double> lower_;    // its Cholesky factor L (M = L L^T), n x n row-major
   std::vector<double> inverse_diagonal_;
