@@ -177,7 +177,10 @@ def test_huge_commands_are_held_to_the_urdf_limits(car):
     world.step(1000)
     state = all_state(world, robot)
     assert np.isfinite(state).all()
-    assert robot.joint_state('left_rear_wheel_joint')[1] <= robot.limits('left_rear_wheel_joint')['velocity'] + 1e-3
+    # The command is clamped to the limit and driven by a rigid velocity row; the friction rows
+    # solved after it in each pass leave a residual of a few 1e-5 of the speed (10 passes).
+    limit = robot.limits('left_rear_wheel_joint')['velocity']
+    assert robot.joint_state('left_rear_wheel_joint')[1] <= limit * (1 + 1e-4)
     assert abs(robot.joint_state('left_steering_hinge_joint')[2]) <= 1.0 + 1e-6, 'effort clamped to the limit'
     assert robot.joint_state('left_steering_hinge_joint')[0] >= -0.6 - 0.01, 'position limit holds'
 

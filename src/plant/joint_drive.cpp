@@ -3,13 +3,27 @@
 #include <algorithm>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 namespace bullet_plant
 {
-JointDrive::JointDrive(btMultiBody* body, int link)
-  : btMultiBodyConstraint(body, nullptr, link, -1, 1, true, MULTIBODY_CONSTRAINT_1DOF_JOINT_MOTOR)
+JointDrive::JointDrive(btMultiBodyDynamicsWorld* world, btMultiBody* body, int link)
+  : btMultiBodyConstraint(body, nullptr, link, -1, 1, true, MULTIBODY_CONSTRAINT_1DOF_JOINT_MOTOR), world_(world)
 {
+}
+
+JointDrive::~JointDrive() { setEnabled(false); }
+
+void JointDrive::setEnabled(bool enabled)
+{
+  if (enabled == enabled_)
+    return;
+  enabled_ = enabled;
+  if (enabled)
+    world_->addMultiBodyConstraint(this);
+  else
+    world_->removeMultiBodyConstraint(this);
 }
 
 void JointDrive::finalizeMultiDof()
@@ -43,7 +57,7 @@ void JointDrive::set(double target_velocity, double gain, double max_impulse, in
 {
   if (!enabled_ || side_ != side)
     forgetImpulse();
-  enabled_ = max_impulse > 0 && gain > 0;
+  setEnabled(max_impulse > 0 && gain > 0);
   target_velocity_ = target_velocity;
   gain_ = gain;
   side_ = side;
@@ -52,7 +66,7 @@ void JointDrive::set(double target_velocity, double gain, double max_impulse, in
 
 void JointDrive::disable()
 {
-  enabled_ = false;
+  setEnabled(false);
   forgetImpulse();
 }
 

@@ -11,12 +11,17 @@
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 
+class btMultiBodyDynamicsWorld;
+
 namespace bullet_plant
 {
 class JointDrive : public btMultiBodyConstraint
 {
 public:
-  JointDrive(btMultiBody* body, int link);
+  // The drive is in the world's constraints only while enabled: an idle drive costs the world's
+  // per-step sorting and island bookkeeping nothing.
+  JointDrive(btMultiBodyDynamicsWorld* world, btMultiBody* body, int link);
+  ~JointDrive() override;
 
   void drive(double target_velocity, double gain, double max_impulse);
   // A one-sided rigid row: the joint velocity may not fall below (lower bound) or rise above
@@ -45,10 +50,12 @@ public:
 private:
   // A new row with this drive's bounds and bookkeeping, acting against the fixed world.
   btMultiBodySolverConstraint& startRow(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data);
+  void setEnabled(bool enabled);
   void set(double target_velocity, double gain, double max_impulse, int side);
   // The solver starts the row from its last impulse: only from one of the same kind of row.
   void forgetImpulse();
 
+  btMultiBodyDynamicsWorld* world_;
   bool enabled_ = false;
   int side_ = 0;  // 0: two-sided drive; +1: velocity >= target; -1: velocity <= target
   double target_velocity_ = 0.0;

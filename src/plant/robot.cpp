@@ -466,10 +466,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
     mb->setJointPos(j.link, btScalar(j.initial_position));
 
     j.axis_inertia = axis_inertia[bi];
-    auto add = [&](std::unique_ptr<JointDrive>& drive) {
-      drive.reset(new JointDrive(mb, j.link));
-      r.world->dynamics->addMultiBodyConstraint(drive.get());
-    };
+    auto add = [&](std::unique_ptr<JointDrive>& drive) { drive.reset(new JointDrive(r.world->dynamics.get(), mb, j.link)); };
     add(j.drive);
     if (j.damping > 0 && !explicitDampingStable(j, r.world->step_s))
       add(j.damper);
@@ -597,7 +594,7 @@ void destroyRobot(Robot::Internals& r)
   {
     for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
       if (c)
-        dynamics->removeMultiBodyConstraint(c);
+        c->disable();  // leaves the world's constraints
   }
   for (auto& col : r.colliders)
     dynamics->removeCollisionObject(col.get());
