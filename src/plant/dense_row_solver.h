@@ -3,18 +3,20 @@
 //
 // btMultiBodyConstraintSolver visits a row with three passes over its multibody's degrees of
 // freedom (J.dv, then dv += M^-1 J^T di, once into the solver's buffer and once into the
-// multibody): for the car (12 dof, 16 rows, 20 passes) that was a third of a step. The rows'
-// J and M^-1 J^T are what Bullet's setup already computed, so A costs one dot product per pair of
-// rows; each visit is then one axpy over the rows of its group.
+// multibody): for the car (12 dof, 16 rows, 20 passes) that was a third of a step. With A, each
+// visit is one axpy over the rows of its group.
 //
 // Same rows, same order, same clamping, friction bounds and residual as Bullet's iterations;
 // only the arithmetic is regrouped. Setup and write-back (forces, impulses kept for the next
 // step) are Bullet's. Where the dense form does not apply (rigid bodies that move, cone
 // friction), the iterations are Bullet's own.
 //
-// The rows' responses M^-1 J^T come from each multibody's joint-space inertia, built and factored
-// once per step (JointSpaceInertia), for contacts between a multibody and the static world and for
-// JointDrive rows; other rows are Bullet's, with its articulated-body pass per row.
+// Contacts between a multibody and the static world and JointDrive rows are built here, from
+// each multibody's joint-space inertia (JointSpaceInertia, built and factored once per step):
+// their J, and their responses M^-1 J^T and block of A for all of the multibody's rows at once.
+// Other rows are Bullet's, with its articulated-body pass per row; A's entries between them and
+// the others are dot products of J and M^-1 J^T. The same inertia gives the multibody's forward
+// dynamics (integrateVelocities, used by DynamicsWorld).
 //
 // One addition: with SOLVER_USE_WARMSTARTING (Bullet's default) every row starts from its impulse
 // of the previous step times m_warmstartingFactor, friction included. Bullet's multibody solver

@@ -3,9 +3,10 @@
 //
 // Bullet answers "how does the multibody respond to this generalized impulse" (M^-1 f) with one
 // articulated-body pass per question; a constraint row asks once to set up and the car's sixteen
-// rows asked sixteen times per step. Building M from the links' kinematics (each body's 6 x n
-// Jacobian, M = sum J^T diag(I, m) J) and factoring it once per step answers all of a step's rows
-// with two triangular solves over all of them at once, and gives their Delassus block with it.
+// rows asked sixteen times per step, after one more pass for the forward dynamics. Building M from
+// the links' kinematics by composite rigid bodies and factoring it once per step answers all of a
+// step's rows with two triangular solves over all of them at once (giving their Delassus block
+// too), and the forward dynamics with one recursive Newton-Euler pass and one solve.
 #pragma once
 
 #include <vector>
