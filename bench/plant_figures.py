@@ -20,6 +20,8 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CONFIG_YAML = os.path.join(REPO, 'config', 'smart_control_config.yaml')
 CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
                'front_right_steering_position_controller', 'front_left_steering_position_controller']
+REAR = ('rear_left_velocity_controller', 'rear_right_velocity_controller')
+STEERING = ('front_left_steering_position_controller', 'front_right_steering_position_controller')
 STAND = """<?xml version="1.0"?><sdf version="1.6"><world name="stand">
   <include><uri>model://ground_plane</uri></include>
   <model name="stand"><static>true</static><pose>0.13 0 0.02 0 0 0</pose><link name="link">
@@ -45,6 +47,20 @@ def car(urdf, sdf=None, z=0.0):
     return world, robot, manager
 
 
+def command(manager, names, value):
+    for name in names:
+        manager.command(name, value)
+
+
+def record(world, robot, joint, index, steps):
+    """One entry of a joint's state (0 position, 1 velocity) after each of `steps` steps."""
+    values = []
+    for _ in range(steps):
+        world.step()
+        values.append(robot.joint_state(joint)[index])
+    return np.array(values)
+
+
 def settle_time(values, target, tolerance, dt):
     within = np.abs(np.asarray(values) - target) <= tolerance
     return 0.0 if within.all() else (len(within) - np.argmin(within[::-1])) * dt
@@ -65,8 +81,7 @@ def at_rest(urdf):
 
 def straight(urdf):
     world, robot, manager = car(urdf)
-    for name in ('rear_left_velocity_controller', 'rear_right_velocity_controller'):
-        manager.command(name, 31.25)
+    command(manager, REAR, 31.25)
     world.step(3000)
     speed = np.hypot(*robot.base_twist()[0][:2])
     start = robot.base_pose()
@@ -79,12 +94,8 @@ def straight(urdf):
 def wheel_loop(urdf, lifted):
     world, robot, manager = car(urdf, STAND, 0.025) if lifted else car(urdf)
     world.step(500)
-    for name in ('rear_left_velocity_controller', 'rear_right_velocity_controller'):
-        manager.command(name, 31.25)
-    velocities = []
-    for _ in range(1000):
-        world.step()
-        velocities.append(robot.joint_state('left_rear_wheel_joint')[1])
+    command(manager, REAR, 31.25)
+    velocities = record(world, robot, 'left_rear_wheel_joint', 1, 1000)
     print('rear wheel loop (pid_gains p 100), %s: within 2 %% after %.3f s, steady std %.3f %%' %
           ('lifted' if lifted else 'on the ground', settle_time(velocities, 31.25, 0.625, world.time_step),
            100 * np.std(velocities[500:]) / 31.25))
@@ -92,16 +103,10 @@ def wheel_loop(urdf, lifted):
 
 def steering(urdf, speed):
     world, robot, manager = car(urdf)
-    for name in ('rear_left_velocity_controller', 'rear_right_velocity_controller'):
-        manager.command(name, speed / 0.032)
+    command(manager, REAR, speed / 0.032)
     world.step(1500)
-    for name in ('front_left_steering_position_controller', 'front_right_steering_position_controller'):
-        manager.command(name, 0.3)
-    angles = []
-    for _ in range(2000):
-        world.step()
-        angles.append(robot.joint_state('left_steering_hinge_joint')[0])
-    angles = np.array(angles)
+    command(manager, STEERING, 0.3)
+    angles = record(world, robot, 'left_steering_hinge_joint', 0, 2000)
     print('steering step 0 -> 0.3 rad at %.1f m/s: 63 %% at %.3f s, within 0.01 rad after %.3f s, overshoot %.1f %%, '
           'final %.4f rad' % (speed, np.argmax(angles >= 0.189) * 0.001, settle_time(angles, 0.3, 0.01, 0.001),
                               100 * max(0.0, angles.max() - 0.3) / 0.3, angles[-1]))

@@ -25,7 +25,6 @@
 #pragma once
 
 #include <memory>
-#include <utility>
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>

@@ -38,7 +38,7 @@ struct Body
   btVector3 inertia_diagonal{0, 0, 0};
   btTransform urdf_from_com = btTransform::getIdentity();
   // The collider's shape: null when no member link has a collision; the compound of the
-  // member links' shapes, or its only child where that child sits in the COM frame as it is.
+  // member links' shapes, or (compound null) the only shape where it sits in the COM frame as it is.
   btCollisionShape* shape = nullptr;
   std::unique_ptr<btCompoundShape> compound;
   std::vector<std::unique_ptr<btCollisionShape>> child_shapes;

@@ -345,7 +345,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   }
 
   // 3. Collision shapes, in each body's COM frame.
-  std::vector<Shape> single_child(r.bodies.size());  // the last child of each body's compound
+  std::vector<Shape> last_child(r.bodies.size());  // the last shape added to each body's compound
   for (const auto& kv : link_in_urdf_frame)
   {
     urdf::LinkConstSharedPtr link = model.getLink(kv.first);
@@ -367,7 +367,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
       body.child_shapes.emplace_back(bulletShape(shape));
       body.compound->addChildShape(in_com, body.child_shapes.back().get());
       body.shape = body.compound.get();
-      single_child[kv.second.first] = shape;
+      last_child[kv.second.first] = shape;
       body.ray_shapes.push_back(RayPrimitive::fromShape(shape, fromBullet(in_com), &r));
       if (link->visual && link->visual->material)
       {
@@ -385,8 +385,10 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   {
     Body& body = r.bodies[bi];
     if (body.compound && body.compound->getNumChildShapes() == 1)
-      if (btCollisionShape* aligned = alignedShape(single_child[bi], body.compound->getChildTransform(0)))
+      if (btCollisionShape* aligned = alignedShape(last_child[bi], body.compound->getChildTransform(0)))
       {
+        body.compound.reset();
+        body.child_shapes.clear();  // the aligned shape in place of the compound's child
         body.child_shapes.emplace_back(aligned);
         body.shape = aligned;
       }
