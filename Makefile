@@ -16,7 +16,7 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim demo bench bench-ros figures clean
+.PHONY: help setup build test sim demo bench bench-ros figures step-cost clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
@@ -27,6 +27,7 @@ help:
 	@echo "make bench  build, time the plant against MuJoCo and PyBullet (installs them from PyPI if missing)"
 	@echo "make bench-ros  build, time the ROS node: launch to running, real time factor, CPU, fastest"
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
+	@echo "make step-cost  build, count instructions per physics step (callgrind) and print a trajectory digest"
 	@echo "make clean  remove $(WS)/"
 
 setup:
@@ -64,6 +65,11 @@ bench-ros: build
 
 figures: build
 	@$(ROS_ENV) $(PYTHON) bench/plant_figures.py
+
+# Instructions per step under callgrind (load-independent) and a digest that a pure refactoring keeps.
+step-cost: build
+	@command -v valgrind >/dev/null || { echo "step-cost: installing valgrind"; $$([ "$$(id -u)" -eq 0 ] || echo sudo) apt-get install -y -qq valgrind; }
+	@$(ROS_ENV) $(PYTHON) bench/step_cost.py
 
 clean:
 	rm -rf $(WS)

@@ -1,0 +1,45 @@
+"""The tutorial's car and files, named once for the tests, benchmarks and tools: the package's paths,
+the five controllers of config/smart_control_config.yaml and the car's URDF as xacro expands it."""
+import functools
+import os
+import subprocess
+
+import rospkg
+
+
+@functools.lru_cache(maxsize=None)
+def package_path(package='tianracer_description'):
+    """Where rospack finds a package (the workspace must be sourced: source .ws/devel/setup.bash)."""
+    try:
+        return rospkg.RosPack().get_path(package)
+    except rospkg.ResourceNotFound:
+        raise RuntimeError("rospack cannot find '%s': build and source the workspace "
+                           "(make build; source .ws/devel/setup.bash)" % package) from None
+
+
+PACKAGE = package_path()
+CONFIG_YAML = os.path.join(PACKAGE, 'config', 'smart_control_config.yaml')
+MODEL_XACRO = os.path.join(PACKAGE, 'urdf', 'tianracer_description.xacro')
+EMPTY_WORLD = os.path.join(PACKAGE, 'worlds', 'empty.world')
+RACE_TRACK_WORLD = os.path.join(PACKAGE, 'worlds', 'race_track.world')
+
+# What the tutorial's control.launch hands the spawner, in its order.
+TUTORIAL_CONTROLLERS = ('joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
+                        'front_right_steering_position_controller', 'front_left_steering_position_controller')
+REAR_WHEEL_CONTROLLERS = ('rear_left_velocity_controller', 'rear_right_velocity_controller')
+STEERING_CONTROLLERS = ('front_left_steering_position_controller', 'front_right_steering_position_controller')
+
+
+def run_xacro(xacro_file, *args):
+    """xacro as a launch file runs it: $(find xacro)/xacro --inorder FILE (a CompletedProcess)."""
+    return subprocess.run([os.path.join(package_path('xacro'), 'xacro'), '--inorder', xacro_file, *args],
+                          capture_output=True, text=True)
+
+
+@functools.lru_cache(maxsize=None)
+def tianracer_urdf():
+    """The car's URDF text, expanded from urdf/tianracer_description.xacro."""
+    result = run_xacro(MODEL_XACRO)
+    if result.returncode != 0:
+        raise RuntimeError('xacro failed on %s: %s' % (MODEL_XACRO, result.stderr.strip()))
+    return result.stdout
