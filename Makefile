@@ -41,7 +41,7 @@ build: setup
 	@for item in $(PACKAGE_ITEMS); do ln -sfn ../../../$$item $(WS)/src/tianracer_description/$$item; done
 	@for pkg in $(COMPAT_PACKAGES); do ln -sfn ../../compat/$$pkg $(WS)/src/$$pkg; done
 	@find $(WS)/src $(WS)/src/tianracer_description -maxdepth 1 -xtype l -delete
-	@cd $(WS) && catkin_make -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release \
+	@cd $(WS) && catkin_make -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release all tests \
 		> build.log 2>&1 || { tail -n 60 build.log; echo "make build: catkin_make failed; full log in $(WS)/build.log"; exit 1; }
 	@echo "built $(WS): source $(WS)/devel/setup.bash"
 
