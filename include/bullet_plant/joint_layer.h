@@ -10,10 +10,7 @@
 
 namespace bullet_plant
 {
-namespace detail
-{
-struct JointLayer;  // the plant side of the handles (robot.cpp)
-}
+class JointLayer;  // the plant side of the handles (joint_layer.cpp)
 
 enum class JointInterface { Effort, Velocity, Position };
 
@@ -63,7 +60,7 @@ public:
   double effort() const { return effort_; }
 
 private:
-  friend struct detail::JointLayer;
+  friend class JointLayer;
   std::string name_;
   JointType type_;
   JointInterface interface_;

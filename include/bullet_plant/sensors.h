@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@ namespace bullet_plant
 {
 namespace detail
 {
-struct SensorUpdate;  // fills sensors' outputs (robot.cpp)
+struct SensorRendering;  // casts the rays and fills sensors' outputs (sensors.cpp)
 }
 
 // sensor_msgs/LaserScan's fields. Ranges follow REP 117: +inf where nothing is hit within
@@ -31,7 +32,8 @@ struct LaserScan
 class Sensor
 {
 public:
-  explicit Sensor(const SensorDescription& d);
+  // noise_seed: the same on every run, so noisy sensors are deterministic too.
+  Sensor(const SensorDescription& d, uint32_t noise_seed);
   virtual ~Sensor() = default;
   const SensorDescription& description() const { return description_; }
   const std::string& name() const { return description_.name; }
@@ -48,6 +50,7 @@ public:
 
 protected:
   SensorDescription description_;
+  std::mt19937 noise_;
   bool active_ = false;
   uint64_t updates_ = 0;
   int64_t period_ns_ = 0;
@@ -57,13 +60,13 @@ protected:
 class Lidar : public Sensor
 {
 public:
-  explicit Lidar(const SensorDescription& d);
+  Lidar(const SensorDescription& d, uint32_t noise_seed);
   std::string topic() const override { return description_.pluginParam("topicName", "scan"); }
   bool hasScan() const { return updates_ > 0; }
   const LaserScan& latest() const { return scan_; }
 
 private:
-  friend struct detail::SensorUpdate;
+  friend struct detail::SensorRendering;
   LaserScan scan_;
 };
 
@@ -85,7 +88,7 @@ struct CameraFrame
 class Camera : public Sensor
 {
 public:
-  explicit Camera(const SensorDescription& d);
+  Camera(const SensorDescription& d, uint32_t noise_seed);
   bool depthSensor() const { return description_.type == "depth"; }
   // Topics, relative to the robot namespace, as the plugins name them.
   std::string topic() const override;   // the image
@@ -99,7 +102,7 @@ public:
   void intrinsics(double& fx, double& fy, double& cx, double& cy) const;
 
 private:
-  friend struct detail::SensorUpdate;
+  friend struct detail::SensorRendering;
   CameraFrame frame_;
 };
 

@@ -6,9 +6,11 @@
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
+#include "collision_shapes.h"
 #include "dense_row_solver.h"
 #include "dynamics_world.h"
 #include "internals.h"
+#include "robot_builder.h"
 #include "wheel_contact.h"
 
 namespace bullet_plant
@@ -74,27 +76,8 @@ World::World(const WorldDescription& description) : in_(new Internals)
 
   for (const StaticCollision& c : description.collisions)
   {
-    btCollisionShape* shape = nullptr;
+    btCollisionShape* shape = makeCollisionShape(c.shape);
     btTransform pose = toBullet(c.pose);
-    switch (c.shape.kind)
-    {
-      case Shape::Kind::Box:
-        shape = new btBoxShape(btVector3(btScalar(c.shape.box_size[0] / 2), btScalar(c.shape.box_size[1] / 2),
-                                         btScalar(c.shape.box_size[2] / 2)));
-        break;
-      case Shape::Kind::Cylinder:
-        shape = new btCylinderShapeZ(btVector3(btScalar(c.shape.radius), btScalar(c.shape.radius), btScalar(c.shape.length / 2)));
-        break;
-      case Shape::Kind::Sphere:
-        shape = new btSphereShape(btScalar(c.shape.radius));
-        break;
-      case Shape::Kind::Plane:
-        shape = new btStaticPlaneShape(btVector3(btScalar(c.shape.normal.x), btScalar(c.shape.normal.y),
-                                                 btScalar(c.shape.normal.z)), 0);
-        break;
-    }
-    if (c.shape.kind != Shape::Kind::Sphere && c.shape.kind != Shape::Kind::Plane)
-      shape->setMargin(btScalar(0.001));
     w.static_shapes.emplace_back(shape);
     w.static_objects.emplace_back(new btCollisionObject());
     btCollisionObject* object = w.static_objects.back().get();
@@ -194,6 +177,9 @@ std::vector<Robot*> World::robots()
   return out;
 }
 
+// gazebo_ros_control's order: the controllers of each robot whose control period has come, every
+// robot's joint layer writes its commands (writeSim), one physics step, then each robot's state is
+// checked and read back into its handles (readSim) and its sensors render what is due.
 void World::step(int n)
 {
   Internals& w = *in_;
@@ -202,12 +188,15 @@ void World::step(int n)
     for (auto& r : w.robots)
       r->in_->updateControllers(w.time_ns);
     for (auto& r : w.robots)
-      r->in_->applyCommands(w.step_s);
+      r->in_->joint_layer.writeSim(r->in_->multibody, w.step_s);
     w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
     w.time_ns += w.step_ns;
     ++w.steps;
     for (auto& r : w.robots)
-      r->in_->readState(w.step_s);
+    {
+      r->in_->recoverIfDiverged();
+      r->in_->joint_layer.readSim(r->in_->multibody, w.step_s);
+    }
     for (auto& r : w.robots)
       r->in_->updateSensors(w.time_ns);
   }
@@ -235,11 +224,17 @@ void World::resetWorld()
     r->in_->resetToSpawn();
 }
 
+std::vector<RayPrimitive> World::Internals::rayScene() const
+{
+  std::vector<RayPrimitive> scene = static_ray_shapes;
+  for (auto& r : robots)
+    r->in_->multibody.appendRayPrimitives(scene);
+  return scene;
+}
+
 double World::castRay(const urdf::Vector3& origin, const urdf::Vector3& dir, double max_range, const Robot* exclude) const
 {
-  std::vector<RayPrimitive> scene = in_->static_ray_shapes;
-  for (auto& r : in_->robots)
-    r->in_->appendRayPrimitives(scene);
+  const std::vector<RayPrimitive> scene = in_->rayScene();
   RayCaster caster(scene, exclude ? exclude->in_.get() : nullptr);
   double o[3] = {origin.x, origin.y, origin.z};
   double norm = std::sqrt(dir.x * dir.x + dir.y * dir.y + dir.z * dir.z);

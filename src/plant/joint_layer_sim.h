@@ -1,0 +1,44 @@
+// The plant side of gazebo_ros_control's joint layer (its DefaultRobotHWSim): the joint handles of
+// one robot, writeSim (the handles' commands into the physics: limits, pid_gains loops, motors,
+// e-stop, the joints' passive dynamics) before a step and readSim (the physics' state into the
+// handles) after it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bullet_plant/joint_layer.h"
+#include "robot_multibody.h"
+
+namespace bullet_plant
+{
+class JointLayer
+{
+public:
+  // A handle for a transmitted joint (joints[joint]); its pid_gains loop when gains are given.
+  JointHandle& addHandle(const MovableJoint& joint, size_t joint_index, JointInterface iface);
+  bool drives(size_t joint_index) const;
+
+  std::vector<JointHandle>& handles() { return handles_; }
+  JointHandle* handle(const std::string& joint);
+
+  // gazebo_ros_control's e-stop: while on, efforts are 0, velocity commands 0 and position commands
+  // the position the joint had when it came on.
+  void setEStop(bool on);
+  bool eStop() const { return e_stop_; }
+
+  void writeSim(RobotMultibody& robot, double dt);
+  void readSim(const RobotMultibody& robot, double dt);
+  // A restored state invalidates what the pid_gains loops remember.
+  void resetPids();
+
+private:
+  std::vector<JointHandle> handles_;   // transmission order
+  std::vector<size_t> handle_joint_;   // handle i drives joints[handle_joint_[i]]
+  bool e_stop_ = false;
+};
+
+// The actuator's effort on a joint in the last step (what its handle and joint_states report).
+double actuatorEffort(const MovableJoint& joint, double velocity, double dt);
+
+}  // namespace bullet_plant

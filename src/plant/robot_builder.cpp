@@ -1,0 +1,457 @@
+#include "robot_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "bullet_plant/params.h"
+#include "collision_shapes.h"
+
+namespace bullet_plant
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Bodies lighter than this get it (with a warning): the articulated-body algorithm needs mass.
+constexpr double kMinimumMass = 1e-3;
+constexpr double kMinimumInertia = 1e-9;
+
+btVector3 vec(const urdf::Vector3& v) { return btVector3(btScalar(v.x), btScalar(v.y), btScalar(v.z)); }
+
+// Inertia tensor of a link's <inertial> about its centre of mass, in the link frame.
+btMatrix3x3 inertiaInLink(const urdf::Inertial& in)
+{
+  btMatrix3x3 I(btScalar(in.ixx), btScalar(in.ixy), btScalar(in.ixz),
+                btScalar(in.ixy), btScalar(in.iyy), btScalar(in.iyz),
+                btScalar(in.ixz), btScalar(in.iyz), btScalar(in.izz));
+  btMatrix3x3 R = toBullet(in.origin).getBasis();
+  return R * I * R.transpose();
+}
+
+// The movable joint into each body (null for the base) and its frame in the parent body's URDF frame.
+struct BodyPlan
+{
+  const urdf::Joint* joint = nullptr;
+  btTransform joint_in_parent = btTransform::getIdentity();
+};
+
+// Each link's body and its frame in that body's URDF frame.
+using LinkPlacement = std::map<std::string, std::pair<int, btTransform>>;
+
+JointInterface parseInterface(const std::string& name, bool& ok)
+{
+  ok = true;
+  if (name == "hardware_interface/EffortJointInterface")
+    return JointInterface::Effort;
+  if (name == "hardware_interface/VelocityJointInterface")
+    return JointInterface::Velocity;
+  if (name == "hardware_interface/PositionJointInterface")
+    return JointInterface::Position;
+  ok = false;
+  return JointInterface::Effort;
+}
+
+// URDF damping as a plain torque -c*qd is stable while c*dt stays well below the inertia it acts on.
+bool explicitDampingStable(const MovableJoint& j, double dt) { return j.damping * dt < 0.5 * j.axis_inertia; }
+
+uint32_t seedFor(const std::string& text)
+{
+  uint32_t h = 2166136261u;  // FNV-1a: a seed that is the same on every run and machine
+  for (unsigned char c : text)
+    h = (h ^ c) * 16777619u;
+  return h;
+}
+
+// 1. Bodies: each movable joint starts one; fixed joints fold their child into the parent body.
+std::vector<BodyPlan> planBodies(Robot::Internals& r, const urdf::LinkConstSharedPtr& root, LinkPlacement& placement)
+{
+  const urdf::ModelInterface& model = *r.description.model;
+  std::vector<Body>& bodies = r.multibody.bodies;
+  std::vector<BodyPlan> plans(1);
+  bodies.resize(1);
+  bodies[0].link = root->name;
+  std::function<void(const urdf::Link&, int, const btTransform&)> visit =
+      [&](const urdf::Link& link, int body, const btTransform& in_body) {
+        placement[link.name] = {body, in_body};
+        for (const urdf::JointSharedPtr& joint : link.child_joints)
+        {
+          urdf::LinkConstSharedPtr child = model.getLink(joint->child_link_name);
+          btTransform joint_frame = in_body * toBullet(joint->parent_to_joint_origin_transform);
+          bool movable = joint->type == urdf::Joint::REVOLUTE || joint->type == urdf::Joint::CONTINUOUS ||
+                         joint->type == urdf::Joint::PRISMATIC;
+          if (!movable && joint->type != urdf::Joint::FIXED)
+            r.world->log.warn("joint '" + joint->name + "' of '" + r.name + "' is floating or planar, which the plant "
+                              "does not simulate; it is held fixed");
+          if (!movable)
+          {
+            visit(*child, body, joint_frame);
+            continue;
+          }
+          Body b;
+          b.link = child->name;
+          b.parent = body;
+          bodies.push_back(std::move(b));
+          BodyPlan plan;
+          plan.joint = joint.get();
+          plan.joint_in_parent = joint_frame;
+          plans.push_back(plan);
+          visit(*child, int(bodies.size()) - 1, btTransform::getIdentity());
+        }
+      };
+  visit(*root, 0, btTransform::getIdentity());
+  return plans;
+}
+
+// 2. Mass properties of each body (its links' inertials together), then its principal frame.
+void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool world_rooted)
+{
+  const urdf::ModelInterface& model = *r.description.model;
+  for (size_t bi = 0; bi < r.multibody.bodies.size(); ++bi)
+  {
+    Body& body = r.multibody.bodies[bi];
+    double mass = 0.0;
+    btVector3 weighted(0, 0, 0);
+    for (const auto& kv : placement)
+    {
+      urdf::LinkConstSharedPtr link = model.getLink(kv.first);
+      if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
+        continue;
+      mass += link->inertial->mass;
+      weighted += kv.second.second * vec(link->inertial->origin.position) * btScalar(link->inertial->mass);
+    }
+    btVector3 com = mass > 0 ? weighted / btScalar(mass) : btVector3(0, 0, 0);
+    btMatrix3x3 I(0, 0, 0, 0, 0, 0, 0, 0, 0);
+    for (const auto& kv : placement)
+    {
+      urdf::LinkConstSharedPtr link = model.getLink(kv.first);
+      if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
+        continue;
+      const btTransform& in_body = kv.second.second;
+      btMatrix3x3 R = in_body.getBasis();
+      btMatrix3x3 own = R * inertiaInLink(*link->inertial) * R.transpose();
+      btVector3 d = in_body * vec(link->inertial->origin.position) - com;
+      btScalar m = btScalar(link->inertial->mass);
+      btMatrix3x3 shift(d.dot(d) - d.x() * d.x(), -d.x() * d.y(), -d.x() * d.z(),
+                        -d.y() * d.x(), d.dot(d) - d.y() * d.y(), -d.y() * d.z(),
+                        -d.z() * d.x(), -d.z() * d.y(), d.dot(d) - d.z() * d.z());
+      for (int i = 0; i < 3; ++i)
+        I[i] += own[i] + shift[i] * m;
+    }
+    if (mass < kMinimumMass && !(bi == 0 && world_rooted))
+    {
+      r.world->log.warn("link '" + body.link + "' of '" + r.name + "' (with the links fixed to it) has no mass; "
+                        "the plant gives it " + std::to_string(kMinimumMass) + " kg");
+      mass = kMinimumMass;
+    }
+    btMatrix3x3 principal;
+    I.diagonalize(principal, btScalar(1e-12), 32);
+    body.mass = mass;
+    for (int i = 0; i < 3; ++i)
+      body.inertia_diagonal[i] = std::max(I[i][i], btScalar(kMinimumInertia));
+    body.urdf_from_com = btTransform(principal, com);
+  }
+}
+
+// 3. Collision shapes, in each body's COM frame: a compound of the links' shapes, or the only shape
+// itself where it is aligned with the body's frame. Surface friction per body.
+void collisionShapes(Robot::Internals& r, const LinkPlacement& placement)
+{
+  const urdf::ModelInterface& model = *r.description.model;
+  std::vector<Body>& bodies = r.multibody.bodies;
+  std::vector<Shape> last_child(bodies.size());  // the last shape added to each body's compound
+  for (const auto& kv : placement)
+  {
+    urdf::LinkConstSharedPtr link = model.getLink(kv.first);
+    Body& body = bodies[kv.second.first];
+    btTransform com_from_link = body.urdf_from_com.inverse() * kv.second.second;
+    r.multibody.link_in_body[kv.first] = {kv.second.first, com_from_link};
+    for (const urdf::CollisionSharedPtr& c : link->collision_array)
+    {
+      if (!c || !c->geometry)
+        continue;
+      Shape shape;
+      btTransform mesh_offset;
+      if (!shapeFromUrdf(*c->geometry, link->name, r.world->log, shape, mesh_offset))
+        continue;
+      btTransform in_com = com_from_link * toBullet(c->origin) * mesh_offset;
+      if (!body.compound)
+        body.compound.reset(new btCompoundShape(false, 4));
+      body.child_shapes.emplace_back(makeCollisionShape(shape));
+      body.compound->addChildShape(in_com, body.child_shapes.back().get());
+      body.shape = body.compound.get();
+      last_child[kv.second.first] = shape;
+      body.ray_shapes.push_back(RayPrimitive::fromShape(shape, fromBullet(in_com), &r));
+      if (link->visual && link->visual->material)
+      {
+        const urdf::Color& colour = link->visual->material->color;
+        body.ray_shapes.back().colour = {colour.r, colour.g, colour.b, colour.a};
+      }
+    }
+    auto surface = r.description.surfaces.find(link->name);
+    if (surface != r.description.surfaces.end() && surface->second.given &&
+        (link->name == body.link || !link->collision_array.empty()))
+      body.mu = std::min(surface->second.mu1, surface->second.mu2);
+  }
+
+  for (size_t bi = 0; bi < bodies.size(); ++bi)
+  {
+    Body& body = bodies[bi];
+    if (body.compound && body.compound->getNumChildShapes() == 1)
+      if (btCollisionShape* aligned = makeAlignedCollisionShape(last_child[bi], body.compound->getChildTransform(0)))
+      {
+        body.compound.reset();
+        body.child_shapes.clear();  // the aligned shape in place of the compound's child
+        body.child_shapes.emplace_back(aligned);
+        body.shape = aligned;
+      }
+  }
+}
+
+// 4. The multibody: one Bullet link per body after the base, jointed as the URDF says. Returns each
+// body's inertia about its joint axis (a lower bound of what the joint moves).
+std::vector<double> createMultibody(Robot::Internals& r, const std::vector<BodyPlan>& plans, bool fixed_base,
+                                    const urdf::Pose& pose)
+{
+  std::vector<Body>& bodies = r.multibody.bodies;
+  const int n_links = int(bodies.size()) - 1;
+  r.multibody.bullet.reset(new btMultiBody(n_links, btScalar(bodies[0].mass), bodies[0].inertia_diagonal, fixed_base, false));
+  btMultiBody* mb = r.multibody.bullet.get();
+  std::vector<double> axis_inertia(bodies.size(), 0.0);
+  for (int bi = 1; bi <= n_links; ++bi)
+  {
+    const Body& body = bodies[bi];
+    const Body& parent = bodies[body.parent];
+    const urdf::Joint& joint = *plans[bi].joint;
+    btTransform offset_in_parent = parent.urdf_from_com.inverse() * plans[bi].joint_in_parent;  // joint in parent COM
+    btTransform offset_in_child = body.urdf_from_com.inverse();                                  // joint in child COM
+    btQuaternion parent_to_this = offset_in_child.getRotation() * offset_in_parent.getRotation().inverse();
+    btVector3 axis = offset_in_child.getBasis() * vec(joint.axis);
+    if (axis.length2() < btScalar(1e-12))
+      axis = offset_in_child.getBasis() * btVector3(1, 0, 0);  // urdfdom's default axis
+    axis.normalize();
+    btVector3 pivot_to_com = -offset_in_child.getOrigin();
+    btVector3 lever = pivot_to_com - axis * axis.dot(pivot_to_com);
+    axis_inertia[bi] = joint.type == urdf::Joint::PRISMATIC
+                           ? body.mass
+                           : axis.dot(body.inertia_diagonal * axis) + body.mass * lever.length2();
+    if (joint.type == urdf::Joint::PRISMATIC)
+      mb->setupPrismatic(bi - 1, btScalar(body.mass), body.inertia_diagonal, body.parent - 1, parent_to_this, axis,
+                         offset_in_parent.getOrigin(), -offset_in_child.getOrigin(), true);
+    else
+      mb->setupRevolute(bi - 1, btScalar(body.mass), body.inertia_diagonal, body.parent - 1, parent_to_this, axis,
+                        offset_in_parent.getOrigin(), -offset_in_child.getOrigin(), true);
+  }
+  mb->finalizeMultiDof();
+  mb->setHasSelfCollision(false);
+  mb->setLinearDamping(0);
+  mb->setAngularDamping(0);
+  mb->setMaxCoordinateVelocity(btScalar(1e4));
+  mb->setCanSleep(false);
+  r.spawn_pose = toBullet(pose);
+  mb->setBaseWorldTransform(r.spawn_pose * bodies[0].urdf_from_com);
+  r.world->dynamics->addMultiBody(mb);
+  return axis_inertia;
+}
+
+// 5. Movable joints: limits, URDF dynamics, the drive the joint layer uses and the rows for
+// damping, dry friction and limits.
+void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const std::vector<double>& axis_inertia,
+                  const std::map<std::string, double>& initial_joints)
+{
+  btMultiBody* mb = r.multibody.bullet.get();
+  for (size_t bi = 1; bi < plans.size(); ++bi)
+  {
+    const urdf::Joint& uj = *plans[bi].joint;
+    MovableJoint j;
+    j.name = uj.name;
+    j.link = int(bi) - 1;
+    j.type = uj.type == urdf::Joint::PRISMATIC ? JointType::Prismatic
+             : uj.type == urdf::Joint::CONTINUOUS ? JointType::Continuous : JointType::Revolute;
+    j.limits.effort = kInf;
+    j.limits.velocity = kInf;
+    if (uj.limits)
+    {
+      j.limits.effort = std::abs(uj.limits->effort);
+      j.limits.velocity = uj.limits->velocity > 0 ? uj.limits->velocity : kInf;
+      if (j.type != JointType::Continuous && uj.limits->lower < uj.limits->upper)
+      {
+        j.limits.has_position = true;
+        j.limits.lower = uj.limits->lower;
+        j.limits.upper = uj.limits->upper;
+      }
+    }
+    if (uj.dynamics)
+    {
+      j.damping = std::max(0.0, uj.dynamics->damping);
+      j.friction = std::max(0.0, uj.dynamics->friction);
+    }
+    auto initial = initial_joints.find(j.name);
+    if (initial != initial_joints.end())
+      j.initial_position = initial->second;
+    mb->setJointPos(j.link, btScalar(j.initial_position));
+
+    j.axis_inertia = axis_inertia[bi];
+    auto add = [&](std::unique_ptr<JointDrive>& drive) { drive.reset(new JointDrive(r.world->dynamics.get(), mb, j.link)); };
+    add(j.drive);
+    if (j.damping > 0 && !explicitDampingStable(j, r.world->step_s))
+      add(j.damper);
+    if (j.friction > 0)
+      add(j.dry_friction);
+    if (j.limits.has_position)
+    {
+      add(j.lower_limit);
+      add(j.upper_limit);
+    }
+    r.multibody.joint_index[j.name] = r.multibody.joints.size();
+    r.multibody.joints.push_back(std::move(j));
+  }
+}
+
+// 6. Colliders: one per body with a shape, in the world's broadphase.
+void addColliders(Robot::Internals& r)
+{
+  btMultiBody* mb = r.multibody.bullet.get();
+  for (size_t bi = 0; bi < r.multibody.bodies.size(); ++bi)
+  {
+    Body& body = r.multibody.bodies[bi];
+    if (!body.shape)
+      continue;
+    r.multibody.colliders.emplace_back(new btMultiBodyLinkCollider(mb, int(bi) - 1));
+    btMultiBodyLinkCollider* col = r.multibody.colliders.back().get();
+    col->setCollisionShape(body.shape);
+    col->setFriction(btScalar(body.mu));
+    col->setRestitution(0);
+    col->setWorldTransform(r.multibody.bodyWorldTransform(int(bi)));
+    r.world->dynamics->addCollisionObject(col, btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
+    if (bi == 0)
+      mb->setBaseCollider(col);
+    else
+      mb->getLink(int(bi) - 1).m_collider = col;
+  }
+  r.multibody.updateKinematics();
+}
+
+// 7. gazebo_ros_control's joint handles, one per transmitted joint, with the pid_gains loops.
+void createHandles(Robot::Internals& r)
+{
+  const urdf::ModelInterface& model = *r.description.model;
+  for (const TransmissionDescription& t : r.description.transmissions)
+  {
+    if (!model.getJoint(t.joint))
+      throw DescriptionError("transmission '" + t.name + "' names joint '" + t.joint + "', which robot '" + r.name +
+                             "' does not have; fix the transmission or add the joint to the URDF");
+    auto index = r.multibody.joint_index.find(t.joint);
+    if (index == r.multibody.joint_index.end())
+      throw DescriptionError("transmission '" + t.name + "' names joint '" + t.joint +
+                             "', which is fixed; only revolute, continuous and prismatic joints can be actuated");
+    if (r.joint_layer.drives(index->second))
+    {
+      r.world->log.warn("joint '" + t.joint + "' appears in more than one transmission; the first one is used");
+      continue;
+    }
+    bool ok = false;
+    JointInterface iface = parseInterface(t.hardware_interface, ok);
+    if (!ok)
+    {
+      r.world->log.error("transmission '" + t.name + "' of joint '" + t.joint + "' uses '" + t.hardware_interface +
+                         "', which is not EffortJointInterface, VelocityJointInterface or PositionJointInterface; "
+                         "the joint gets no command handle");
+      continue;
+    }
+    JointHandle& h = r.joint_layer.addHandle(r.multibody.joints[index->second], index->second, iface);
+    std::string pid_ns = joinPath(r.control_namespace, "gazebo_ros_control/pid_gains/" + t.joint);
+    const Param* p = r.world->params.find(joinPath(pid_ns, "p"));
+    if (iface != JointInterface::Effort && p && p->isNumber())
+      h.setPid(readPidGains(r.world->params, pid_ns));
+  }
+}
+
+// 8. gazebo_ros_control's controller manager, updated every control period.
+void createControllerManager(Robot::Internals& r)
+{
+  if (!r.description.control.present)
+    return;
+  r.control_period_ns = r.world->step_ns;
+  double period = r.description.control.control_period;
+  if (period > 0 && std::llround(period * 1e9) < r.world->step_ns)
+    r.world->log.warn("Desired controller update period (" + std::to_string(period) + " s) of '" + r.name +
+                      "' is faster than the simulation period (" + std::to_string(r.world->step_s) +
+                      " s); using the latter");
+  else if (period > 0)
+    r.control_period_ns = std::llround(period * 1e9);
+  r.last_control_ns = r.world->time_ns;
+  r.controller_manager.reset(new ControllerManager(*r.self, r.world->params, r.world->log, r.control_namespace));
+  r.controller_manager->setPaused(r.world->paused);
+}
+
+// 9. Sensors, each with its own noise generator seeded from the robot's and the sensor's names.
+void createSensors(Robot::Internals& r)
+{
+  Log& log = r.world->log;
+  for (const SensorDescription& s : r.description.sensors)
+  {
+    const uint32_t seed = seedFor(r.name + "/" + s.name);
+    if (s.type == "ray" || s.type == "gpu_ray")
+    {
+      if (s.horizontal_samples < 1 || s.vertical_samples < 1 || s.range_max <= 0)
+      {
+        log.warn("sensor '" + s.name + "' of '" + r.name + "' has no samples or no range; ignored");
+        continue;
+      }
+      r.sensors.emplace_back(new Lidar(s, seed));
+    }
+    else if (s.type == "camera" || s.type == "depth")
+    {
+      if (s.image_width < 1 || s.image_height < 1 || !(s.horizontal_fov > 0 && s.horizontal_fov < M_PI))
+      {
+        log.warn("camera '" + s.name + "' of '" + r.name + "' has no image size or a field of view outside (0, pi); ignored");
+        continue;
+      }
+      r.sensors.emplace_back(new Camera(s, seed));
+    }
+    else
+      log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name + "' is not simulated (ray, camera, depth are)");
+  }
+}
+}  // namespace
+
+void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints)
+{
+  urdf::LinkConstSharedPtr root = r.description.model->getRoot();
+  if (!root)
+    throw DescriptionError("URDF of '" + r.name + "' has no root link");
+  const bool world_rooted = root->name == "world";
+
+  LinkPlacement placement;
+  const std::vector<BodyPlan> plans = planBodies(r, root, placement);
+  massProperties(r, placement, world_rooted);
+  collisionShapes(r, placement);
+  const std::vector<double> axis_inertia = createMultibody(r, plans, world_rooted, pose);
+  createJoints(r, plans, axis_inertia, initial_joints);
+  addColliders(r);
+  createHandles(r);
+  createControllerManager(r);
+  createSensors(r);
+  for (const std::string& w : r.description.warnings)
+    r.world->log.warn(r.name + ": " + w);
+  r.last_good.save(r.multibody);
+}
+
+void removeRobot(Robot::Internals& r)
+{
+  r.controller_manager.reset();
+  btMultiBodyDynamicsWorld* dynamics = r.world->dynamics.get();
+  for (MovableJoint& j : r.multibody.joints)
+  {
+    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
+      if (c)
+        c->disable();  // leaves the world's constraints
+  }
+  for (auto& col : r.multibody.colliders)
+    dynamics->removeCollisionObject(col.get());
+  if (r.multibody.bullet)
+    dynamics->removeMultiBody(r.multibody.bullet.get());
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,86 @@
+// A robot's Bullet multibody and what the plant keeps beside it: which URDF links make up each
+// rigid body, the movable joints with their limits and the constraint rows that act on them, and
+// the colliders. Built by robot_builder.cpp; read and driven by the joint layer, the sensors and
+// the Robot.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
+#include "bullet_plant/joint_layer.h"
+#include "joint_drive.h"
+#include "ray_caster.h"
+
+namespace bullet_plant
+{
+btTransform toBullet(const urdf::Pose& p);
+urdf::Pose fromBullet(const btTransform& t);
+
+// A rigid body of the multibody: one URDF link with a movable parent joint (or the root) and every
+// link fixed to it. Bullet wants each body's frame at its centre of mass along its principal axes;
+// urdf_from_com places that frame in the body's URDF link frame.
+struct Body
+{
+  Body() = default;
+  Body(Body&&) noexcept = default;
+  Body& operator=(Body&&) noexcept = default;
+
+  std::string link;              // the URDF link that owns the body
+  int parent = -2;               // index of the parent body (-1: the base); -2 for the base itself
+  double mass = 0.0;
+  btVector3 inertia_diagonal{0, 0, 0};
+  btTransform urdf_from_com = btTransform::getIdentity();
+  // The collider's shape: null when no member link has a collision; the compound of the
+  // member links' shapes, or (compound null) the only shape where it sits in the COM frame as it is.
+  btCollisionShape* shape = nullptr;
+  std::unique_ptr<btCompoundShape> compound;
+  std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
+  std::vector<RayPrimitive> ray_shapes;  // the same shapes, in the COM frame, for sensors
+  double mu = 1.0;
+};
+
+// A movable URDF joint and the Bullet pieces that act on it.
+struct MovableJoint
+{
+  std::string name;
+  JointType type = JointType::Revolute;
+  int link = -1;                 // Bullet link index (= body index - 1)
+  JointLimits limits;
+  double damping = 0.0, friction = 0.0;
+  std::unique_ptr<JointDrive> drive;           // the joint layer's motor / implicit PID
+  std::unique_ptr<JointDrive> damper;          // URDF <dynamics damping> where an explicit torque would be unstable
+  std::unique_ptr<JointDrive> dry_friction;    // URDF <dynamics friction>
+  std::unique_ptr<JointDrive> lower_limit, upper_limit;  // rows only while the joint is at a limit
+  double axis_inertia = 0.0;                   // the child body's inertia about the joint axis
+  double explicit_effort = 0.0;                // actuator torque applied explicitly this step
+  double initial_position = 0.0;
+};
+
+struct RobotMultibody
+{
+  std::vector<Body> bodies;                         // [0] is the base
+  std::map<std::string, std::pair<int, btTransform>> link_in_body;  // link -> (body, link frame in COM frame)
+  std::vector<MovableJoint> joints;                 // URDF order
+  std::map<std::string, size_t> joint_index;
+  std::unique_ptr<btMultiBody> bullet;
+  std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;
+
+  btTransform bodyWorldTransform(int body) const;
+  // Throws std::out_of_range naming the robot for an unknown link.
+  btTransform linkWorldTransform(const std::string& link, const std::string& robot) const;
+  // The URDF root link's pose in the world.
+  btTransform rootWorldTransform() const { return bullet->getBaseWorldTransform() * bodies[0].urdf_from_com.inverse(); }
+  // After positions were set by hand: link transforms and colliders follow.
+  void updateKinematics();
+  // The bodies' collision shapes as ray casting primitives in the world frame.
+  void appendRayPrimitives(std::vector<RayPrimitive>& out) const;
+};
+
+}  // namespace bullet_plant
