@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "internals.h"
-#include "robot_builder.h"
 #include "sensor_rendering.h"
 
 namespace bullet_plant
@@ -162,7 +161,7 @@ void Robot::Internals::resetToSpawn()
 // ---------------------------------------------------------------------------------------- Robot
 
 Robot::Robot(std::unique_ptr<Internals> internals) : in_(std::move(internals)) { in_->self = this; }
-Robot::~Robot() { removeRobot(*in_); }
+Robot::~Robot() = default;  // World takes its pieces out of the dynamics world first (removeRobot)
 
 ControllerManager* Robot::controllerManager() { return in_->controller_manager.get(); }
 double Robot::controlPeriod() const { return in_->control_period_ns * 1e-9; }

@@ -308,13 +308,21 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
   }
 }
 
-// 6. Colliders: one per body with a shape, in the world's broadphase.
+// 6. Colliders: one per body with a shape, in the world's broadphase. A robot without any collision
+// still gets one, shapeless, on its base: Bullet solves a multibody's constraint rows (the joint
+// layer's motors, limits, damping) within its simulation island, and only colliders make islands.
 void addColliders(Robot::Internals& r)
 {
   btMultiBody* mb = r.multibody.bullet.get();
-  for (size_t bi = 0; bi < r.multibody.bodies.size(); ++bi)
+  std::vector<Body>& bodies = r.multibody.bodies;
+  if (std::none_of(bodies.begin(), bodies.end(), [](const Body& b) { return b.shape != nullptr; }))
   {
-    Body& body = r.multibody.bodies[bi];
+    bodies[0].child_shapes.emplace_back(new btEmptyShape());
+    bodies[0].shape = bodies[0].child_shapes.back().get();
+  }
+  for (size_t bi = 0; bi < bodies.size(); ++bi)
+  {
+    Body& body = bodies[bi];
     if (!body.shape)
       continue;
     r.multibody.colliders.emplace_back(new btMultiBodyLinkCollider(mb, int(bi) - 1));

@@ -96,7 +96,9 @@ World::World(const WorldDescription& description) : in_(new Internals)
 
 World::~World()
 {
-  in_->robots.clear();  // removes each robot's pieces from the dynamics world first
+  for (auto& robot : in_->robots)
+    removeRobot(*robot->in_);
+  in_->robots.clear();
   for (auto& object : in_->static_objects)
     in_->dynamics->removeCollisionObject(object.get());
 }
@@ -143,7 +145,7 @@ Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const 
   }
   catch (...)
   {
-    robot.reset();  // its destructor takes back whatever was added to the dynamics world
+    removeRobot(r);  // takes back whatever was added to the dynamics world
     throw;
   }
   in_->robots.push_back(std::move(robot));
@@ -155,6 +157,7 @@ bool World::remove(const std::string& name)
   for (auto it = in_->robots.begin(); it != in_->robots.end(); ++it)
     if ((*it)->name() == name)
     {
+      removeRobot(*(*it)->in_);
       in_->robots.erase(it);
       return true;
     }

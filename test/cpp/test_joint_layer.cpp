@@ -24,16 +24,15 @@ JointHandle handle(JointType type, bool limited)
 
 // Two arms on a fixed base turning about z (no gravity torque): one on a velocity handle, one on an
 // effort handle, each with I = 0.01 kg m^2 about its axis, effort limit 0.5 N m, velocity limit 2 rad/s,
-// position limits +-1 rad. They have collisions: a multibody without any collider is in no
-// simulation island, and Bullet then solves none of its constraint rows (motors, limits).
+// position limits +-1 rad. They have no collision shapes: Bullet solves constraint rows (motors,
+// limits) per simulation island, and only colliders make islands, so the plant gives such a robot a
+// shapeless collider.
 const char* kArms = R"(<robot name="arms">
   <link name="world"/>
   <link name="velocity_arm"><inertial><mass value="1"/>
-    <inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><origin xyz="0.3 0 0"/><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+    <inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
   <link name="effort_arm"><inertial><mass value="1"/>
-    <inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
-    <collision><origin xyz="0.3 0 0"/><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+    <inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
   <joint name="velocity_joint" type="revolute"><parent link="world"/><child link="velocity_arm"/>
     <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="0.5" velocity="2"/></joint>
   <joint name="effort_joint" type="revolute"><parent link="world"/><child link="effort_arm"/>
