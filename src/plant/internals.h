@@ -15,7 +15,7 @@
 
 #include "bullet_plant/robot.h"
 #include "bullet_plant/world.h"
-#include "joint_drive.h"
+#include "physics/joint_drive.h"
 #include "ray_caster.h"
 
 namespace bullet_plant

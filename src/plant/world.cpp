@@ -6,10 +6,10 @@
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
-#include "dense_row_solver.h"
-#include "dynamics_world.h"
+#include "physics/dense_row_solver.h"
+#include "physics/dynamics_world.h"
 #include "internals.h"
-#include "wheel_contact.h"
+#include "physics/wheel_contact.h"
 
 namespace bullet_plant
 {
