@@ -127,6 +127,9 @@ struct World::Internals
   std::vector<std::unique_ptr<Robot>> robots;
 };
 
+// A robot's side of the plant (for the library and its tests).
+inline Robot::Internals& internalsOf(Robot& robot) { return *robot.in_; }
+
 // Builds the multibody, colliders, joints and sensors of a robot into the world (robot.cpp).
 void buildRobot(Robot::Internals& robot, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints);
 void destroyRobot(Robot::Internals& robot);

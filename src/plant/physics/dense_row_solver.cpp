@@ -472,6 +472,13 @@ void DenseRowSolver::buildBlocks()
   }
 }
 
+btScalar DenseRowSolver::delassusEntry(int i, int j) const
+{
+  const Row& a = rows_.at(i);
+  const Row& b = rows_.at(j);
+  return a.group == b.group ? delassus_[a.column + b.local] : btScalar(0);
+}
+
 void DenseRowSolver::loadRows()
 {
   const int non_contact = m_multiBodyNonContactConstraints.size();

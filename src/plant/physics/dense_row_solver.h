@@ -60,6 +60,10 @@ protected:
                                              btPersistentManifold** manifolds, int numManifolds,
                                              btTypedConstraint** constraints, int numConstraints,
                                              const btContactSolverInfo& info, btIDebugDraw* debugDrawer) override;
+  // For a subclass that checks the solve: A's entry between rows i and j of the last dense solve,
+  // the rows numbered through Bullet's arrays one after the other (non-contact, normal contact,
+  // friction); 0 between rows of different groups.
+  btScalar delassusEntry(int i, int j) const;
 
 private:
   // kLanes scalars side by side (GCC/Clang vector extension: one SSE register of floats); a

@@ -17,7 +17,7 @@
 
 namespace bullet_plant
 {
-class DynamicsWorld : public btMultiBodyDynamicsWorld, private MultibodyStates
+class DynamicsWorld : public btMultiBodyDynamicsWorld, public MultibodyStates
 {
 public:
   // The solver gets its multibodies' states from this world.
@@ -25,6 +25,10 @@ public:
                 btCollisionConfiguration* configuration);
 
   void solveExternalForces(btContactSolverInfo& info) override;
+
+  const MultibodyState* stateOf(btMultiBody& body) override;
+  void needArticulatedPass(btMultiBody& body) override;
+  void needArticulatedPasses() override;
 
 private:
   // A multibody's state in this step.
@@ -35,9 +39,6 @@ private:
     bool articulated_pass_pending = false;  // its velocities came from integrateVelocities
   };
   StepState& stepState(btMultiBody& body);  // built when first asked for in the step
-  const MultibodyState* stateOf(btMultiBody& body) override;
-  void needArticulatedPass(btMultiBody& body) override;
-  void needArticulatedPasses() override;
   void runArticulatedPass(StepState& step);
   // qd += dt * M^-1 (tau - C). Returns false where Bullet's pass must run instead (see the cases
   // in the function).

@@ -2,6 +2,7 @@
 // double[9], a rigid transform (Frame), and 6-vectors (SpatialVector) for the dynamics' motions
 // and forces. Plain arrays in double precision, so the dynamics and the ray caster can keep their
 // data flat and their arithmetic in one known order (the trajectory digest depends on that order).
+// An output never aliases an input (rotate(R, x, x) would read entries it has overwritten).
 #pragma once
 
 #include <cmath>
