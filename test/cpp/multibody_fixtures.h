@@ -1,5 +1,5 @@
-// Multibodies for the physics tests: random chains built with Bullet's own API, the Tianracer
-// through the plant, and the comparisons they share.
+// Multibodies and worlds for the physics tests: random chains built with Bullet's own API, the Tianracer
+// through the plant, hand-built worlds (the plant's or Bullet's), and the comparisons they share.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -14,9 +14,12 @@
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <btBulletDynamicsCommon.h>
 
 #include "bullet_plant/world.h"
 #include "internals.h"
+#include "physics/dense_row_solver.h"
+#include "physics/dynamics_world.h"
 
 namespace bullet_plant
 {
@@ -149,6 +152,38 @@ inline std::string tianracerUrdf()
     ADD_FAILURE() << "`" << command << "` failed: is the workspace sourced (rospack finds xacro)?";
   return urdf;
 }
+
+// A multibody world built by hand: the plant's (DynamicsWorld with DenseRowSolver) or Bullet's own
+// (btMultiBodyDynamicsWorld with btMultiBodyConstraintSolver), with the plant's solver settings.
+struct HandBuiltWorld
+{
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  std::unique_ptr<btMultiBodyDynamicsWorld> world;
+
+  HandBuiltWorld(bool plant, const btVector3& gravity)
+  {
+    if (plant)
+    {
+      auto* dense = new DenseRowSolver;
+      solver.reset(dense);
+      world.reset(new DynamicsWorld(&dispatcher, &broadphase, dense, &configuration));
+    }
+    else
+    {
+      solver.reset(new btMultiBodyConstraintSolver);
+      world.reset(new btMultiBodyDynamicsWorld(&dispatcher, &broadphase, solver.get(), &configuration));
+    }
+    world->setGravity(gravity);
+    btContactSolverInfo& info = world->getSolverInfo();
+    info.m_numIterations = 10;
+    info.m_solverMode |= SOLVER_DISABLE_IMPLICIT_CONE_FRICTION;
+    info.m_splitImpulse = false;
+    info.m_timeStep = btScalar(0.001);
+  }
+};
 
 inline btMultiBody& multibodyOf(Robot& robot) { return *internalsOf(robot).multibody; }
 

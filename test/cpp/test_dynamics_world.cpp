@@ -1,8 +1,9 @@
 // DynamicsWorld (physics/dynamics_world.cpp) against Bullet's own btMultiBodyDynamicsWorld with
 // btMultiBodyConstraintSolver: the same scene stepped in both. In the air the step is the forward
-// dynamics (the joint-space form against Bullet's articulated-body pass); on the ground it adds
-// contact rows (the dense solver's), a JointDrive row and a row of Bullet's own
-// (btMultiBodyJointMotor), which needs Bullet's articulated-body pass: the world must run it.
+// dynamics (the joint-space form against Bullet's articulated-body pass) and the chain's contacts
+// with itself (rows of Bullet's own, which need Bullet's articulated-body pass: the world must run
+// it); on the ground it adds contact rows (the dense solver's), a JointDrive row and a
+// btMultiBodyJointMotor row (Bullet's).
 // Float tolerance as in test_multibody_dynamics.cpp; the iterations add the solver's rounding.
 #include <gtest/gtest.h>
 
@@ -10,11 +11,8 @@
 #include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
-#include <btBulletDynamicsCommon.h>
 
 #include "multibody_fixtures.h"
-#include "physics/dense_row_solver.h"
-#include "physics/dynamics_world.h"
 #include "physics/joint_drive.h"
 
 namespace bullet_plant
@@ -25,13 +23,8 @@ using namespace test;
 
 // A random chain (spheres on its bodies) over the ground plane, in the plant's world or in
 // Bullet's, with the plant's solver settings.
-struct Scene
+struct Scene : HandBuiltWorld
 {
-  btDefaultCollisionConfiguration configuration;
-  btCollisionDispatcher dispatcher{&configuration};
-  btDbvtBroadphase broadphase;
-  std::unique_ptr<btMultiBodyConstraintSolver> solver;
-  std::unique_ptr<btMultiBodyDynamicsWorld> world;
   btStaticPlaneShape plane{btVector3(0, 0, 1), 0};
   btCollisionObject ground;
   btSphereShape sphere{btScalar(0.1)};
@@ -41,25 +34,8 @@ struct Scene
   std::unique_ptr<btMultiBodyJointMotor> motor;
 
   Scene(bool plant, bool fixed_base, bool on_ground, unsigned seed)
+    : HandBuiltWorld(plant, btVector3(0, 0, btScalar(-9.81)))
   {
-    if (plant)
-    {
-      auto* dense = new DenseRowSolver;
-      solver.reset(dense);
-      world.reset(new DynamicsWorld(&dispatcher, &broadphase, dense, &configuration));
-    }
-    else
-    {
-      solver.reset(new btMultiBodyConstraintSolver);
-      world.reset(new btMultiBodyDynamicsWorld(&dispatcher, &broadphase, solver.get(), &configuration));
-    }
-    world->setGravity(btVector3(0, 0, btScalar(-9.81)));
-    btContactSolverInfo& info = world->getSolverInfo();
-    info.m_numIterations = 10;
-    info.m_solverMode |= SOLVER_DISABLE_IMPLICIT_CONE_FRICTION;
-    info.m_splitImpulse = false;
-    info.m_timeStep = btScalar(0.001);
-
     std::mt19937 rng(seed);
     body = randomChain(rng, fixed_base, 6);
     updateKinematics(*body);
