@@ -70,6 +70,7 @@ public:
 
 private:
   friend class World;
+  friend Internals& internalsOf(Robot& robot);
   explicit Robot(std::unique_ptr<Internals> internals);
   std::unique_ptr<Internals> in_;
 };

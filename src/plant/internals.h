@@ -83,4 +83,7 @@ struct World::Internals
   std::vector<RayPrimitive> rayScene() const;
 };
 
+// A robot's side of the plant (for the library and its tests).
+inline Robot::Internals& internalsOf(Robot& robot) { return *robot.in_; }
+
 }  // namespace bullet_plant

@@ -11,8 +11,6 @@ namespace
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTwoPi = 2.0 * M_PI;
 
-double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 double intersectBox(const double o[3], const double d[3], const double h[3])
 {
   double t_near = -kInf, t_far = kInf;
@@ -101,57 +99,6 @@ double wrapAngle(double a)
 }
 }  // namespace
 
-Frame Frame::fromPose(const urdf::Pose& p)
-{
-  Frame f;
-  double x = p.rotation.x, y = p.rotation.y, z = p.rotation.z, w = p.rotation.w;
-  double n = std::sqrt(x * x + y * y + z * z + w * w);
-  if (n > 0)
-  {
-    x /= n; y /= n; z /= n; w /= n;
-  }
-  f.R[0] = 1 - 2 * (y * y + z * z); f.R[1] = 2 * (x * y - z * w);     f.R[2] = 2 * (x * z + y * w);
-  f.R[3] = 2 * (x * y + z * w);     f.R[4] = 1 - 2 * (x * x + z * z); f.R[5] = 2 * (y * z - x * w);
-  f.R[6] = 2 * (x * z - y * w);     f.R[7] = 2 * (y * z + x * w);     f.R[8] = 1 - 2 * (x * x + y * y);
-  f.t[0] = p.position.x; f.t[1] = p.position.y; f.t[2] = p.position.z;
-  return f;
-}
-
-Frame Frame::operator*(const Frame& b) const
-{
-  Frame out;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      out.R[3 * i + j] = R[3 * i] * b.R[j] + R[3 * i + 1] * b.R[3 + j] + R[3 * i + 2] * b.R[6 + j];
-  apply(b.t, out.t);
-  return out;
-}
-
-void Frame::rotate(const double in[3], double out[3]) const
-{
-  for (int i = 0; i < 3; ++i)
-    out[i] = R[3 * i] * in[0] + R[3 * i + 1] * in[1] + R[3 * i + 2] * in[2];
-}
-
-void Frame::apply(const double in[3], double out[3]) const
-{
-  rotate(in, out);
-  for (int i = 0; i < 3; ++i)
-    out[i] += t[i];
-}
-
-void Frame::inverseRotate(const double in[3], double out[3]) const
-{
-  for (int i = 0; i < 3; ++i)
-    out[i] = R[i] * in[0] + R[3 + i] * in[1] + R[6 + i] * in[2];
-}
-
-void Frame::inverseApply(const double in[3], double out[3]) const
-{
-  double v[3] = {in[0] - t[0], in[1] - t[1], in[2] - t[2]};
-  inverseRotate(v, out);
-}
-
 RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, const void* owner)
 {
   RayPrimitive p;
@@ -163,7 +110,7 @@ RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, con
     case Shape::Kind::Box:
       for (int i = 0; i < 3; ++i)
         p.half[i] = s.box_size[i] / 2.0;
-      p.bound_radius = std::sqrt(p.half[0] * p.half[0] + p.half[1] * p.half[1] + p.half[2] * p.half[2]);
+      p.bound_radius = norm(p.half);
       break;
     case Shape::Kind::Cylinder:
       p.radius = s.radius;
@@ -247,7 +194,7 @@ void RayPrimitive::normalAt(const double point[3], double out[3]) const
     }
     case Shape::Kind::Sphere:
     {
-      double r = std::sqrt(dot(p, p));
+      double r = norm(p);
       for (int i = 0; r > 0 && i < 3; ++i)
         n[i] = p[i] / r;
       break;
@@ -315,7 +262,7 @@ void RayCaster::castFan(const Frame& sensor, double a0, double da, int n_azimuth
     {
       double c[3];
       sensor.inverseApply(p->frame.t, c);
-      double dist = std::sqrt(dot(c, c));
+      double dist = norm(c);
       if (dist - p->bound_radius > max_range)
         continue;
       double dist_xy = std::hypot(c[0], c[1]);

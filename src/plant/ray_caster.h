@@ -6,21 +6,10 @@
 #include <vector>
 
 #include "bullet_plant/geometry.h"
+#include "physics/spatial.h"
 
 namespace bullet_plant
 {
-struct Frame
-{
-  double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // row-major rotation: world = R * local + t
-  double t[3] = {0, 0, 0};
-  static Frame fromPose(const urdf::Pose& p);
-  Frame operator*(const Frame& b) const;
-  void apply(const double in[3], double out[3]) const;         // R*in + t
-  void rotate(const double in[3], double out[3]) const;        // R*in
-  void inverseApply(const double in[3], double out[3]) const;  // R^T*(in - t)
-  void inverseRotate(const double in[3], double out[3]) const; // R^T*in
-};
-
 struct RayPrimitive
 {
   Shape::Kind kind = Shape::Kind::Box;

@@ -15,7 +15,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "bullet_plant/joint_layer.h"
-#include "joint_drive.h"
+#include "physics/joint_drive.h"
 #include "ray_caster.h"
 
 namespace bullet_plant

@@ -7,11 +7,11 @@
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include "collision_shapes.h"
-#include "dense_row_solver.h"
-#include "dynamics_world.h"
 #include "internals.h"
+#include "physics/dense_row_solver.h"
+#include "physics/dynamics_world.h"
+#include "physics/wheel_contact.h"
 #include "robot_builder.h"
-#include "wheel_contact.h"
 
 namespace bullet_plant
 {

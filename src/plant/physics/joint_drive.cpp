@@ -1,4 +1,4 @@
-#include "joint_drive.h"
+#include "physics/joint_drive.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "dense_row_solver.h"
+#include "physics/dense_row_solver.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,20 +9,12 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
-#include "joint_drive.h"
+#include "physics/joint_drive.h"
 
 namespace bullet_plant
 {
 namespace
 {
-btScalar dot(const btScalar* a, const btScalar* b, int n)
-{
-  btScalar sum = 0;
-  for (int i = 0; i < n; ++i)
-    sum += a[i] * b[i];
-  return sum;
-}
-
 int degreesOfFreedom(const btMultiBody* body) { return body->getNumDofs() + 6; }
 
 // Velocity change of row i per unit impulse on row j: J_i M^-1 J_j^T over the multibodies the two
@@ -44,65 +36,24 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
 }
 }  // namespace
 
-void DenseRowSolver::prepareSolve(int numBodies, int numManifolds)
-{
-  btMultiBodyConstraintSolver::prepareSolve(numBodies, numManifolds);
-  bodies_used_ = 0;  // a new step: every multibody's inertia is rebuilt when first asked for
-}
-
 int DenseRowSolver::bodySlot(btMultiBody* body)
 {
   for (size_t k = 0; k < bodies_used_; ++k)
     if (body_rows_[k].body == body)
-      return body_rows_[k].inertia ? int(k) : -1;
+      return body_rows_[k].state ? int(k) : -1;
   if (bodies_used_ == body_rows_.size())
     body_rows_.emplace_back();
   BodyRows& slot = body_rows_[bodies_used_++];
   slot.body = body;
+  slot.state = states_ ? states_->stateOf(*body) : nullptr;
   slot.rows.clear();
-  slot.articulated_pass_pending = false;
-  if (!slot.inertia)
-    slot.inertia.reset(new JointSpaceInertia);
-  if (!slot.inertia->update(*body))
-  {
-    slot.inertia.reset();  // not positive definite: Bullet's passes answer for this body
-    return -1;
-  }
-  return int(bodies_used_ - 1);
-}
-
-bool DenseRowSolver::integrateVelocities(btMultiBody& body, btScalar dt)
-{
-  // What the joint-space form does not cover: Bullet's RK4 integration, joint force feedback
-  // (computed by the articulated-body pass itself), kinematic bases and links.
-  if (body.isUsingRK4Integration() || (!body.hasFixedBase() && body.isBaseStaticOrKinematic()))
-    return false;
-  for (int i = 0; i < body.getNumLinks(); ++i)
-    if (body.getLink(i).m_jointFeedback || body.isLinkAndAllAncestorsKinematic(i))
-      return false;
-  const int slot = bodySlot(&body);
-  if (slot < 0)
-    return false;
-  accelerations_.resize(body.getNumDofs() + 6);
-  body_rows_[slot].inertia->accelerations(body, accelerations_.data());
-  body.applyDeltaVeeMultiDof(accelerations_.data(), dt);
-  body_rows_[slot].articulated_pass_pending = true;
-  return true;
+  return slot.state ? int(bodies_used_ - 1) : -1;
 }
 
 void DenseRowSolver::needArticulatedPass(btMultiBody* body)
 {
-  if (!body)
-    return;
-  for (size_t k = 0; k < bodies_used_; ++k)
-    if (body_rows_[k].body == body && body_rows_[k].articulated_pass_pending)
-    {
-      // With dt = 0 the pass leaves the velocities alone and only fills its caches, which
-      // depend on the configuration alone.
-      body->computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, m_data.scratch_r, m_data.scratch_v,
-                                                                 m_data.scratch_m, false, false, false);
-      body_rows_[k].articulated_pass_pending = false;
-    }
+  if (states_ && body)
+    states_->needArticulatedPass(*body);
 }
 
 void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
@@ -123,8 +74,8 @@ void DenseRowSolver::finishDeferredRows()
     const int k = int(slot.rows.size());
     if (k == 0)
       continue;
-    const int n = slot.inertia->size();
-    const int padded = (k + JointSpaceInertia::kSides - 1) / JointSpaceInertia::kSides * JointSpaceInertia::kSides;
+    const int n = slot.state->n;
+    const int padded = (k + kInertiaSides - 1) / kInertiaSides * kInertiaSides;
     slot.columns.assign(size_t(n) * padded, btScalar(0));
     slot.gram.resize(size_t(padded) * padded);
     slot.stride = padded;
@@ -138,7 +89,7 @@ void DenseRowSolver::finishDeferredRows()
       for (int i = 0; i < n; ++i)
         slot.columns[size_t(i) * padded + p] = jacobian[i];
     }
-    slot.inertia->solveColumns(slot.columns.data(), padded, slot.gram.data());
+    solveInertiaColumns(*slot.state, slot.columns.data(), padded, slot.gram.data());
     for (int p = 0; p < k; ++p)
     {
       const DeferredRow& d = deferred_[slot.rows[p]];
@@ -228,7 +179,7 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   m_data.m_deltaVelocitiesUnitImpulse.resize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
   btScalar* jacobian = &m_data.m_jacobians[jacobian_index];
   const int slot = bodySlot(body);
-  body_rows_[slot].inertia->contactJacobian(link, position, normal, jacobian);
+  contactJacobianRow(*body_rows_[slot].state, link, position, normal, jacobian);
 
   // Lever arms as Bullet keeps them: the multibody's from its link's centre of mass, the static
   // side's from its solver body (whose velocity never changes).
@@ -337,13 +288,12 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
   // Bullet's articulated warm starting moves velocities while it builds rows: left to Bullet.
   if (info.m_solverMode & SOLVER_USE_ARTICULATED_WARMSTARTING)
   {
-    for (size_t k = 0; k < bodies_used_; ++k)
-      needArticulatedPass(body_rows_[k].body);
+    if (states_)
+      states_->needArticulatedPasses();
     btMultiBodyConstraintSolver::convertContacts(manifolds, numManifolds, info);
     return;
   }
-  for (size_t k = 0; k < bodies_used_; ++k)
-    body_rows_[k].rows.clear();
+  bodies_used_ = 0;
   deferred_.clear();
   for (int i = 0; i < numManifolds; ++i)
   {
@@ -520,6 +470,13 @@ void DenseRowSolver::buildBlocks()
       matrix[other * g.stride + row.local] = a;
     }
   }
+}
+
+btScalar DenseRowSolver::delassusEntry(int i, int j) const
+{
+  const Row& a = rows_.at(i);
+  const Row& b = rows_.at(j);
+  return a.group == b.group ? delassus_[a.column + b.local] : btScalar(0);
 }
 
 void DenseRowSolver::loadRows()

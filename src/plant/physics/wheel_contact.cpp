@@ -1,4 +1,4 @@
-#include "wheel_contact.h"
+#include "physics/wheel_contact.h"
 
 #include <memory>
 

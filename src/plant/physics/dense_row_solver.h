@@ -12,11 +12,10 @@
 // friction), the iterations are Bullet's own.
 //
 // Contacts between a multibody and the static world and JointDrive rows are built here, from
-// each multibody's joint-space inertia (JointSpaceInertia, built and factored once per step):
-// their J, and their responses M^-1 J^T and block of A for all of the multibody's rows at once.
-// Other rows are Bullet's, with its articulated-body pass per row; A's entries between them and
-// the others are dot products of J and M^-1 J^T. The same inertia gives the multibody's forward
-// dynamics (integrateVelocities, used by DynamicsWorld).
+// the multibody's state of the step (MultibodyState, which DynamicsWorld builds and hands out
+// through MultibodyStates): their J, and their responses M^-1 J^T and block of A for all of the
+// multibody's rows at once. Other rows are Bullet's, with its articulated-body pass per row; A's
+// entries between them and the others are dot products of J and M^-1 J^T.
 //
 // One addition: with SOLVER_USE_WARMSTARTING (Bullet's default) every row starts from its impulse
 // of the previous step times m_warmstartingFactor, friction included. Bullet's multibody solver
@@ -24,26 +23,36 @@
 // torque had to be rebuilt from nothing by the iterations of every step.
 #pragma once
 
-#include <memory>
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 
-#include "joint_space_inertia.h"
+#include "physics/multibody_dynamics.h"
 
 namespace bullet_plant
 {
+// What the solver asks of the step's multibody dynamics (DynamicsWorld answers).
+class MultibodyStates
+{
+public:
+  // The multibody's state of this step (kinematics, M and its factor), built when first asked
+  // for; null where Bullet's own passes must answer for it (M not positive definite).
+  virtual const MultibodyState* stateOf(btMultiBody& body) = 0;
+  // Bullet's own rows of the multibody (of every multibody) are about to be built: they read the
+  // caches of Bullet's articulated-body pass, which must then have run this step.
+  virtual void needArticulatedPass(btMultiBody& body) = 0;
+  virtual void needArticulatedPasses() = 0;
+
+protected:
+  ~MultibodyStates() = default;
+};
+
 class DenseRowSolver : public btMultiBodyConstraintSolver
 {
 public:
-  // Called by the world once per step before any forward dynamics.
-  void prepareSolve(int numBodies, int numManifolds) override;
-
-  // The forward dynamics of one multibody from its joint-space inertia (the one the rows of this
-  // step are then built from): qd += dt * M^-1 (tau - C), in place of Bullet's articulated-body
-  // pass. Should a row of Bullet's own need that pass's caches later in the step, the pass runs
-  // then. Returns false where the pass must run now (see the cases in the function).
-  bool integrateVelocities(btMultiBody& body, btScalar dt);
+  // Where the rows of a multibody get its state from. Without (the default), every row is
+  // Bullet's own and only the iterations are dense.
+  void useStates(MultibodyStates* states) { states_ = states; }
 
 protected:
   void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
@@ -51,6 +60,10 @@ protected:
                                              btPersistentManifold** manifolds, int numManifolds,
                                              btTypedConstraint** constraints, int numConstraints,
                                              const btContactSolverInfo& info, btIDebugDraw* debugDrawer) override;
+  // For a subclass that checks the solve: A's entry between rows i and j of the last dense solve,
+  // the rows numbered through Bullet's arrays one after the other (non-contact, normal contact,
+  // friction); 0 between rows of different groups.
+  btScalar delassusEntry(int i, int j) const;
 
 private:
   // kLanes scalars side by side (GCC/Clang vector extension: one SSE register of floats); a
@@ -91,23 +104,22 @@ private:
     btScalar cfm;             // its inverse effective mass
     btScalar sor;
   };
-  // A multibody with rows this step: its factored inertia, and its deferred rows' responses and
-  // Delassus block (gram).
+  // A multibody with rows in this solve: its state, and its deferred rows' responses and Delassus
+  // block (gram).
   struct BodyRows
   {
     btMultiBody* body = nullptr;
-    std::unique_ptr<JointSpaceInertia> inertia;
+    const MultibodyState* state = nullptr;
     std::vector<int> rows;  // deferred_ indices
     std::vector<btScalar> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
     int stride = 0;
-    bool articulated_pass_pending = false;  // its velocities came from integrateVelocities
   };
-  // The multibody's slot in body_rows_ for this step, or -1 where Bullet's passes must answer.
+  // The multibody's slot in body_rows_ for this solve, or -1 where Bullet's passes must answer.
   int bodySlot(btMultiBody* body);
   void deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error, btScalar cfm,
                      btScalar sor);
   void finishDeferredRows();
-  // Runs Bullet's articulated-body pass of the multibody if integrateVelocities skipped it.
+  // Bullet's rows of `body` (none if null) are about to be built.
   void needArticulatedPass(btMultiBody* body);
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
   void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
@@ -126,10 +138,10 @@ private:
   btScalar visit(Row& row);
   void applyVelocityChanges();
 
-  std::vector<BodyRows> body_rows_;  // this step's first bodies_used_ are current
+  MultibodyStates* states_ = nullptr;
+  std::vector<BodyRows> body_rows_;  // this solve's first bodies_used_ are current
   size_t bodies_used_ = 0;
   std::vector<DeferredRow> deferred_;
-  std::vector<btScalar> accelerations_;
   std::vector<Row> rows_;  // non-contact rows, then normal contacts, then friction, as Bullet's arrays
   std::vector<Group> groups_;
   std::vector<int> members_;  // rows_ indices, group by group in block order

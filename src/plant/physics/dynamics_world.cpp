@@ -1,0 +1,144 @@
+#include "physics/dynamics_world.h"
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
+// solveExternalForces below restates Bullet 3.24's method of the same name.
+static_assert(BT_BULLET_VERSION == 324,
+              "DynamicsWorld::solveExternalForces restates Bullet 3.24's btMultiBodyDynamicsWorld::"
+              "solveExternalForces: compare the new version's method with it (the forward kinematics, "
+              "constraint sorting, island callback setup, prepareSolve and the per-multibody forward "
+              "dynamics) and update it, then this check. What it leaves out on purpose: the RK4 "
+              "integration path (handed to Bullet's method whole) and the gravity and force clearing that "
+              "BT_USE_VIRTUAL_CLEARFORCES_AND_GRAVITY moves to applyGravity and clearForces.");
+
+namespace bullet_plant
+{
+namespace
+{
+bool sleeping(const btMultiBody& body)
+{
+  if (body.getBaseCollider() && body.getBaseCollider()->getActivationState() == ISLAND_SLEEPING)
+    return true;
+  for (int i = 0; i < body.getNumLinks(); ++i)
+    if (body.getLink(i).m_collider && body.getLink(i).m_collider->getActivationState() == ISLAND_SLEEPING)
+      return true;
+  return false;
+}
+}  // namespace
+
+DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, DenseRowSolver* solver,
+                             btCollisionConfiguration* configuration)
+  : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration)
+{
+  solver->useStates(this);
+}
+
+DynamicsWorld::StepState& DynamicsWorld::stepState(btMultiBody& body)
+{
+  for (size_t k = 0; k < states_used_; ++k)
+    if (states_[k].body == &body)
+      return states_[k];
+  if (states_used_ == states_.size())
+    states_.emplace_back();
+  StepState& step = states_[states_used_++];
+  step.body = &body;
+  step.articulated_pass_pending = false;
+  if (!step.state)
+    step.state.reset(new MultibodyState);
+  if (!buildMultibodyState(body, *step.state))
+    step.state.reset();
+  return step;
+}
+
+const MultibodyState* DynamicsWorld::stateOf(btMultiBody& body) { return stepState(body).state.get(); }
+
+void DynamicsWorld::runArticulatedPass(StepState& step)
+{
+  if (!step.articulated_pass_pending)
+    return;
+  // With dt = 0 the pass leaves the velocities alone and only fills its caches, which depend on
+  // the configuration alone.
+  step.body->computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, m_scratch_r, m_scratch_v, m_scratch_m, false,
+                                                                  false, false);
+  step.articulated_pass_pending = false;
+}
+
+void DynamicsWorld::needArticulatedPass(btMultiBody& body)
+{
+  for (size_t k = 0; k < states_used_; ++k)
+    if (states_[k].body == &body)
+      runArticulatedPass(states_[k]);
+}
+
+void DynamicsWorld::needArticulatedPasses()
+{
+  for (size_t k = 0; k < states_used_; ++k)
+    runArticulatedPass(states_[k]);
+}
+
+bool DynamicsWorld::integrateVelocities(btMultiBody& body, btScalar dt)
+{
+  // What the joint-space form does not cover: Bullet's RK4 integration, joint force feedback
+  // (computed by the articulated-body pass itself), kinematic bases and links.
+  if (body.isUsingRK4Integration() || (!body.hasFixedBase() && body.isBaseStaticOrKinematic()))
+    return false;
+  for (int i = 0; i < body.getNumLinks(); ++i)
+    if (body.getLink(i).m_jointFeedback || body.isLinkAndAllAncestorsKinematic(i))
+      return false;
+  StepState& step = stepState(body);
+  if (!step.state)
+    return false;
+  accelerations_.resize(body.getNumDofs() + 6);
+  forwardDynamics(body, *step.state, accelerations_.data());
+  body.applyDeltaVeeMultiDof(accelerations_.data(), dt);
+  step.articulated_pass_pending = true;
+  return true;
+}
+
+// Bullet 3.24's btMultiBodyDynamicsWorld::solveExternalForces for bodies integrated with explicit
+// Euler (gravity and clearing of forces live in applyGravity and clearForces with
+// BT_USE_VIRTUAL_CLEARFORCES_AND_GRAVITY): the same preparation, then each awake multibody's
+// velocities from its joint-space state where it can, else from Bullet's pass.
+void DynamicsWorld::solveExternalForces(btContactSolverInfo& info)
+{
+  states_used_ = 0;  // a new step: every multibody's state is rebuilt when first asked for
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+    if (m_multiBodies[i]->isUsingRK4Integration())
+    {
+      btMultiBodyDynamicsWorld::solveExternalForces(info);
+      return;
+    }
+
+  forwardKinematics();
+  clearMultiBodyConstraintForces();
+  m_sortedConstraints.resize(m_constraints.size());
+  for (int i = 0; i < m_constraints.size(); ++i)
+    m_sortedConstraints[i] = m_constraints[i];
+  m_sortedConstraints.quickSort(btSortConstraintOnIslandPredicate2());
+  m_sortedMultiBodyConstraints.resize(m_multiBodyConstraints.size());
+  for (int i = 0; i < m_multiBodyConstraints.size(); ++i)
+    m_sortedMultiBodyConstraints[i] = m_multiBodyConstraints[i];
+  m_sortedMultiBodyConstraints.quickSort(btSortMultiBodyConstraintOnIslandPredicate());
+  m_solverMultiBodyIslandCallback->setup(&info, m_sortedConstraints.size() ? &m_sortedConstraints[0] : nullptr,
+                                         m_sortedConstraints.size(),
+                                         m_sortedMultiBodyConstraints.size() ? &m_sortedMultiBodyConstraints[0] : nullptr,
+                                         m_sortedMultiBodyConstraints.size(), getDebugDrawer());
+  m_constraintSolver->prepareSolve(getCollisionWorld()->getNumCollisionObjects(),
+                                   getCollisionWorld()->getDispatcher()->getNumManifolds());
+
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+  {
+    btMultiBody* body = m_multiBodies[i];
+    if (sleeping(*body) || integrateVelocities(*body, info.m_timeStep))
+      continue;
+    m_scratch_r.resize(body->getNumLinks() + 1);
+    m_scratch_v.resize(body->getNumLinks() + 1);
+    m_scratch_m.resize(body->getNumLinks() + 1);
+    body->computeAccelerationsArticulatedBodyAlgorithmMultiDof(info.m_timeStep, m_scratch_r, m_scratch_v, m_scratch_m,
+                                                               false, getSolverInfo().m_jointFeedbackInWorldSpace,
+                                                               getSolverInfo().m_jointFeedbackInJointFrame);
+  }
+}
+
+}  // namespace bullet_plant
