@@ -1,4 +1,4 @@
-// control_toolbox's PID (ros_interfaces.md section 4), plus the implicit form the plant uses to
+// control_toolbox's PID (docs/interfaces.md section 4), plus the implicit form the plant uses to
 // apply it stably to joints whose inertia is tiny compared to the gains.
 #pragma once
 

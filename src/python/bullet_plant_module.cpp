@@ -329,7 +329,7 @@ PYBIND11_MODULE(bullet_plant, m)
         {
           py::dict d;
           d["name"] = info.name;
-          d["state"] = info.state;
+          d["state"] = controllerStateName(info.state);
           d["type"] = info.type;
           py::list claimed;
           for (const ClaimedResources& c : info.claimed_resources)
