@@ -1,6 +1,7 @@
-// controller_manager::ControllerManager's semantics (ros_interfaces.md section 2) for one robot:
+// controller_manager::ControllerManager's semantics (docs/interfaces.md section 2) for one robot:
 // load, switch, unload, list, list types, reload, with the same states, resource rules and error
 // texts. Service calls from the ROS node and Python land here; update() runs in the control loop.
+// It sees the robot only through its joint handles (hardware_interface.h).
 #pragma once
 
 #include <cstdint>
@@ -14,11 +15,20 @@ namespace bullet_plant
 {
 class Param;
 class Log;
-class Robot;
+
+// A loaded controller's place in its lifecycle: load -> Initialized, a switch starts it (Running) or
+// stops it (Stopped), unload removes it (only when not Running).
+enum class ControllerState { Initialized, Running, Stopped };
+
+// The state as controller_manager_msgs/ControllerState.state has it: "initialized", "running",
+// "stopped" (docs/interfaces.md section 1).
+const char* controllerStateName(ControllerState state);
 
 struct ControllerInfo
 {
-  std::string name, state, type;  // state: "initialized", "running" or "stopped"
+  std::string name;
+  ControllerState state;
+  std::string type;
   std::vector<ClaimedResources> claimed_resources;
 };
 
@@ -27,7 +37,7 @@ class ControllerManager
 public:
   enum Strictness { BEST_EFFORT = 1, STRICT = 2 };
 
-  ControllerManager(Robot& robot, const Param& params, Log& log, std::string ns);
+  ControllerManager(JointHandles& joints, const Param& params, Log& log, std::string ns);
   ~ControllerManager();
   ControllerManager(const ControllerManager&) = delete;
   ControllerManager& operator=(const ControllerManager&) = delete;
@@ -62,7 +72,7 @@ private:
   Entry* find(const std::string& name);
   const Entry* find(const std::string& name) const;
 
-  Robot& robot_;
+  JointHandles& joints_;
   const Param& params_;
   Log& log_;
   std::string ns_;

@@ -1,6 +1,6 @@
-// ros_controllers' controller types, hosted by the plant (ros_interfaces.md section 4). Each works
-// on the robot's joint handles; what the real ones publish is produced as samples that the ROS node
-// publishes and Python reads.
+// ros_controllers' controller types, hosted by the plant (docs/interfaces.md section 4). Each works
+// on joint handles it looks up through JointHandles; what the real ones publish is produced as
+// samples that the ROS node publishes and Python reads.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/pid.h"
 
@@ -15,13 +16,6 @@ namespace bullet_plant
 {
 class Param;
 class Log;
-class Robot;
-
-struct ClaimedResources
-{
-  std::string hardware_interface;  // e.g. "hardware_interface::VelocityJointInterface"
-  std::vector<std::string> resources;
-};
 
 // sensor_msgs/JointState
 struct JointStateSample
@@ -40,12 +34,12 @@ struct ControllerStateSample
   bool antiwindup = false;
 };
 
-// What a controller gets to initialise itself: its parameters and the robot's handles.
+// What a controller gets to initialise itself: its parameters and the robot's joint handles.
 struct ControllerContext
 {
   const Param& params;          // the whole parameter tree
   std::string ns;               // the controller's namespace, e.g. "/tianracer/rear_left_velocity_controller"
-  Robot& robot;
+  JointHandles& joints;
   Log& log;
 };
 

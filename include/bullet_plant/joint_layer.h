@@ -1,4 +1,4 @@
-// gazebo_ros_control's DefaultRobotHWSim semantics (ros_interfaces.md section 5): one handle per
+// gazebo_ros_control's DefaultRobotHWSim semantics (docs/interfaces.md section 5): one handle per
 // transmitted joint, with the URDF limits, optional pid_gains, e-stop, and commands checked before
 // they reach the physics.
 #pragma once

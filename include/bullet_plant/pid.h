@@ -1,4 +1,4 @@
-// control_toolbox's PID (ros_interfaces.md section 4), plus the implicit form the plant uses to
+// control_toolbox's PID (docs/interfaces.md section 4), plus the implicit form the plant uses to
 // apply it stably to joints whose inertia is tiny compared to the gains.
 #pragma once
 
@@ -13,6 +13,9 @@ struct PidGains
   double p = 0.0, i = 0.0, d = 0.0;
   double i_max = 0.0, i_min = 0.0;  // bounds of the integral term
   bool antiwindup = false;          // clamp the integral itself instead of the term
+
+  // control_toolbox's i_clamp: the integral term is bounded to [-|i_clamp|, |i_clamp|].
+  static PidGains withIClamp(double p, double i, double d, double i_clamp, bool antiwindup = false);
 };
 
 // Reads p (required), i, d, i_clamp, i_clamp_min, i_clamp_max, antiwindup under ns in the tree.

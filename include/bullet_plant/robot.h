@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bullet_plant/controller_manager.h"
+#include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/robot_description.h"
 #include "bullet_plant/sensors.h"
@@ -23,7 +24,7 @@ struct Twist
   std::array<double, 3> angular{{0, 0, 0}};  // rad/s
 };
 
-class Robot
+class Robot : public JointHandles
 {
 public:
   ~Robot();
@@ -35,9 +36,9 @@ public:
   const std::string& controlNamespace() const;
   const RobotDescription& description() const;
 
-  // gazebo_ros_control's joint handles, in transmission order.
-  std::vector<JointHandle>& handles();
-  JointHandle* handle(const std::string& joint);
+  // gazebo_ros_control's joint handles, in transmission order: what its controllers see.
+  std::vector<JointHandle>& handles() override;
+  JointHandle* handle(const std::string& joint) override;
 
   // Every movable joint of the URDF (transmitted or not), in URDF order, and its state.
   std::vector<std::string> jointNames() const;

@@ -1,6 +1,8 @@
-// The plant as a ROS node: what gazebo_ros and gazebo_ros_control offer, around bullet_plant::World.
-// ROS callbacks never touch the world: they queue work that the simulation thread runs between
-// steps, and wait for its result when they must answer.
+// The plant as a ROS node: what gazebo_ros offers around bullet_plant::World (the simulation loop
+// and its pacing, /clock, the pause, reset, spawn and delete services), with one RobotInterface per
+// robot for what gazebo_ros_control and the sensor plugins offer. ROS callbacks never touch the
+// world: they queue work that the simulation thread runs between steps, and wait for its result
+// when they must answer.
 #pragma once
 
 #include <atomic>
@@ -19,6 +21,8 @@
 
 namespace bullet_plant
 {
+class RobotInterface;
+
 class RosPlant
 {
 public:
@@ -27,13 +31,16 @@ public:
   // The simulation loop; returns when ROS shuts down.
   void run();
 
-private:
-  struct RobotInterface;  // services, topics and publishers of one robot
-
-  // Runs `work` on the simulation thread and waits for its result.
+  // For ROS callbacks: runs `work` on the simulation thread and waits for its result.
   template <class Result>
   Result onSimThread(std::function<Result()> work);
+  // For ROS callbacks: queues `work` for the simulation thread without waiting.
   void post(std::function<void()> work);
+  // Copies `key` of the ROS parameter server (or its absence) into the world's parameter tree
+  // before any work queued after this call runs.
+  void copyParams(const std::string& key);
+
+private:
   void runQueuedWork();
 
   void stepAndPublish();
@@ -45,7 +52,6 @@ private:
   bool spawn(const std::string& name, const std::string& urdf, const std::string& ns, const urdf::Pose& pose,
              const std::map<std::string, double>& joints, std::string& message);
   bool remove(const std::string& name, std::string& message);
-  void copyParams(const std::string& key);
 
   ros::NodeHandle nh_, private_nh_;
   std::unique_ptr<World> world_;
@@ -65,5 +71,14 @@ private:
   ros::WallTime last_status_;
   int64_t status_start_sim_ns_ = 0;
 };
+
+template <class Result>
+Result RosPlant::onSimThread(std::function<Result()> work)
+{
+  auto task = std::make_shared<std::packaged_task<Result()>>(std::move(work));
+  std::future<Result> result = task->get_future();
+  post([task] { (*task)(); });
+  return result.get();
+}
 
 }  // namespace bullet_plant

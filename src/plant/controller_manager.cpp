@@ -6,18 +6,30 @@
 
 #include "bullet_plant/log.h"
 #include "bullet_plant/params.h"
-#include "bullet_plant/robot.h"
 
 namespace bullet_plant
 {
+const char* controllerStateName(ControllerState state)
+{
+  switch (state)
+  {
+    case ControllerState::Initialized: return "initialized";
+    case ControllerState::Running: return "running";
+    case ControllerState::Stopped: return "stopped";
+  }
+  return "unknown";
+}
+
 struct ControllerManager::Entry
 {
-  std::string name, type, state;
+  std::string name, type;
+  ControllerState state = ControllerState::Initialized;
   std::unique_ptr<Controller> controller;
+  bool running() const { return state == ControllerState::Running; }
 };
 
-ControllerManager::ControllerManager(Robot& robot, const Param& params, Log& log, std::string ns)
-  : robot_(robot), params_(params), log_(log), ns_(normaliseNamespace(ns))
+ControllerManager::ControllerManager(JointHandles& joints, const Param& params, Log& log, std::string ns)
+  : joints_(joints), params_(params), log_(log), ns_(normaliseNamespace(ns))
 {
 }
 
@@ -73,7 +85,7 @@ bool ControllerManager::loadController(const std::string& name)
     log_.error("Use 'rosservice call controller_manager/list_controller_types' to get the available types");
     return false;
   }
-  ControllerContext context{params_, controller_ns, robot_, log_};
+  ControllerContext context{params_, controller_ns, joints_, log_};
   if (!controller->init(context))
   {
     log_.error("Initializing controller '" + name + "' failed");
@@ -82,7 +94,6 @@ bool ControllerManager::loadController(const std::string& name)
   std::unique_ptr<Entry> entry(new Entry);
   entry->name = name;
   entry->type = type->asString();
-  entry->state = "initialized";
   entry->controller = std::move(controller);
   entries_.push_back(std::move(entry));
   log_.debug("Loaded controller '" + name + "'");
@@ -95,7 +106,7 @@ bool ControllerManager::unloadController(const std::string& name)
   {
     if ((*it)->name != name)
       continue;
-    if ((*it)->state == "running")
+    if ((*it)->running())
     {
       log_.error("Could not unload controller with name '" + name + "' because it is still running");
       return false;
@@ -142,7 +153,7 @@ bool ControllerManager::switchController(const std::vector<std::string>& start, 
       }
       log_.debug("Could not stop controller with name '" + name + "' because no controller with this name exists");
     }
-    else if (e->state != "running")
+    else if (!e->running())
     {
       if (strict)
       {
@@ -165,7 +176,7 @@ bool ControllerManager::switchController(const std::vector<std::string>& start, 
       }
       log_.debug("Could not start controller with name '" + name + "' because no controller with this name exists");
     }
-    else if (e->state == "running")
+    else if (e->running())
     {
       if (strict)
       {
@@ -181,7 +192,7 @@ bool ControllerManager::switchController(const std::vector<std::string>& start, 
   std::map<std::string, int> claims;
   for (const auto& e : entries_)
   {
-    bool stays = e->state == "running" && std::find(to_stop.begin(), to_stop.end(), e->name) == to_stop.end();
+    bool stays = e->running() && std::find(to_stop.begin(), to_stop.end(), e->name) == to_stop.end();
     bool starts = std::find(to_start.begin(), to_start.end(), e->name) != to_start.end();
     if (!stays && !starts)
       continue;
@@ -214,13 +225,13 @@ void ControllerManager::applyPendingSwitch(int64_t time_ns)
     if (Entry* e = find(name))
     {
       e->controller->stopping(time_ns);
-      e->state = "stopped";
+      e->state = ControllerState::Stopped;
     }
   for (const std::string& name : pending_start_)
     if (Entry* e = find(name))
     {
       e->controller->starting(time_ns);
-      e->state = "running";
+      e->state = ControllerState::Running;
     }
   pending_ = false;
   pending_start_.clear();
@@ -231,7 +242,7 @@ void ControllerManager::update(int64_t time_ns, double period)
 {
   last_time_ns_ = time_ns;
   for (auto& e : entries_)
-    if (e->state == "running")
+    if (e->running())
       e->controller->update(time_ns, period);
   applyPendingSwitch(time_ns);
 }
@@ -240,7 +251,7 @@ void ControllerManager::reset(int64_t time_ns)
 {
   last_time_ns_ = time_ns;
   for (auto& e : entries_)
-    if (e->state == "running")
+    if (e->running())
     {
       e->controller->stopping(time_ns);
       e->controller->starting(time_ns);
@@ -269,7 +280,7 @@ bool ControllerManager::reloadControllerLibraries(bool force_kill)
   if (!entries_.empty())
     log_.info("Controller manager: Killing all running controllers");
   for (auto& e : entries_)
-    if (e->state == "running")
+    if (e->running())
       e->controller->stopping(last_time_ns_);
   entries_.clear();
   pending_ = false;

@@ -9,7 +9,6 @@
 
 #include "bullet_plant/log.h"
 #include "bullet_plant/params.h"
-#include "bullet_plant/robot.h"
 
 namespace bullet_plant
 {
@@ -61,7 +60,7 @@ JointHandle* claimJoint(ControllerContext& c, JointInterface iface, std::string&
     return nullptr;
   }
   joint = p->asString();
-  JointHandle* h = c.robot.handle(joint);
+  JointHandle* h = c.joints.handle(joint);
   if (!h || h->interface() != iface)
   {
     c.log.error("Could not find resource '" + joint + "' in '" + interfaceName(iface) + "'.");
@@ -78,7 +77,6 @@ class JointStateController : public Controller
 public:
   bool init(ControllerContext& c) override
   {
-    robot_ = &c.robot;
     const Param* rate = param(c, "publish_rate");
     if (!rate || !rate->isNumber())
     {
@@ -88,7 +86,7 @@ public:
     publish_period_ns_ = rate->asDouble() > 0 ? int64_t(std::llround(1e9 / rate->asDouble())) : -1;
     // Default: every joint with a state handle, sorted by name as the hardware interface lists them.
     std::map<std::string, JointHandle*> by_name;
-    for (JointHandle& h : c.robot.handles())
+    for (JointHandle& h : c.joints.handles())
       by_name[h.name()] = &h;
     if (const Param* joints = param(c, "joints"))
     {
@@ -122,7 +120,7 @@ public:
         auto number = [&](const char* key) { const Param* v = e.find(key); return v && v->isNumber() ? v->asDouble() : 0.0; };
         extra_.push_back({name->asString(), number("position"), number("velocity"), number("effort")});
       }
-    claimed_.assign(1, ClaimedResources{"hardware_interface::JointStateInterface", {}});
+    claimed_.assign(1, ClaimedResources{kJointStateInterface, {}});
     return true;
   }
 
@@ -154,7 +152,6 @@ public:
 
 private:
   struct Extra { std::string name; double position, velocity, effort; };
-  Robot* robot_ = nullptr;
   std::vector<JointHandle*> joints_;
   std::vector<Extra> extra_;
   int64_t publish_period_ns_ = 0, last_publish_ns_ = 0;

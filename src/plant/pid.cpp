@@ -24,15 +24,24 @@ PidGains readPidGains(const Param& root, const std::string& ns)
   const Param* p = root.find(joinPath(ns, "p"));
   if (!p || !p->isNumber())
     throw std::runtime_error("No p gain specified for pid.  Namespace: " + normaliseNamespace(ns));
-  PidGains g;
-  g.p = p->asDouble();
-  g.i = number(root, joinPath(ns, "i"), 0.0);
-  g.d = number(root, joinPath(ns, "d"), 0.0);
-  double i_clamp = std::abs(number(root, joinPath(ns, "i_clamp"), 0.0));
-  g.i_max = number(root, joinPath(ns, "i_clamp_max"), i_clamp);
-  g.i_min = number(root, joinPath(ns, "i_clamp_min"), -i_clamp);
   const Param* antiwindup = root.find(joinPath(ns, "antiwindup"));
-  g.antiwindup = antiwindup && antiwindup->type() == Param::Type::Bool && antiwindup->asBool();
+  PidGains g = PidGains::withIClamp(p->asDouble(), number(root, joinPath(ns, "i"), 0.0),
+                                    number(root, joinPath(ns, "d"), 0.0), number(root, joinPath(ns, "i_clamp"), 0.0),
+                                    antiwindup && antiwindup->type() == Param::Type::Bool && antiwindup->asBool());
+  g.i_max = number(root, joinPath(ns, "i_clamp_max"), g.i_max);
+  g.i_min = number(root, joinPath(ns, "i_clamp_min"), g.i_min);
+  return g;
+}
+
+PidGains PidGains::withIClamp(double p, double i, double d, double i_clamp, bool antiwindup)
+{
+  PidGains g;
+  g.p = p;
+  g.i = i;
+  g.d = d;
+  g.i_max = std::abs(i_clamp);
+  g.i_min = -std::abs(i_clamp);
+  g.antiwindup = antiwindup;
   return g;
 }
 

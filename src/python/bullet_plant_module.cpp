@@ -277,14 +277,7 @@ PYBIND11_MODULE(bullet_plant, m)
 
   py::class_<Pid>(m, "Pid", "control_toolbox::Pid, as the plant's controllers and pid_gains loops use it")
       .def(py::init([](double p, double i, double d, double i_clamp, bool antiwindup) {
-        PidGains g;
-        g.p = p;
-        g.i = i;
-        g.d = d;
-        g.i_max = std::abs(i_clamp);
-        g.i_min = -std::abs(i_clamp);
-        g.antiwindup = antiwindup;
-        return Pid(g);
+        return Pid(PidGains::withIClamp(p, i, d, i_clamp, antiwindup));
       }), py::arg("p"), py::arg("i") = 0.0, py::arg("d") = 0.0, py::arg("i_clamp") = 0.0, py::arg("antiwindup") = false)
       .def_static("from_params", [](PyWorld& w, const std::string& ns) {
         try
@@ -329,7 +322,7 @@ PYBIND11_MODULE(bullet_plant, m)
         {
           py::dict d;
           d["name"] = info.name;
-          d["state"] = info.state;
+          d["state"] = controllerStateName(info.state);
           d["type"] = info.type;
           py::list claimed;
           for (const ClaimedResources& c : info.claimed_resources)

@@ -1,0 +1,28 @@
+// Ground-truth odometry of one robot: nav_msgs/Odometry on `odom` and the odom -> root link
+// transform on /tf, every 20 ms of simulated time. Runs on the simulation thread.
+#pragma once
+
+#include <cstdint>
+
+#include <ros/ros.h>
+
+namespace bullet_plant
+{
+class Robot;
+
+class OdometryPublisher
+{
+public:
+  OdometryPublisher(Robot& robot, ros::NodeHandle& nh);
+  // After a step: publishes when the period has passed (or time went back, after a reset).
+  void publish(int64_t time_ns);
+
+private:
+  void publishNow(int64_t time_ns);
+
+  Robot& robot_;
+  ros::Publisher odom_pub_, tf_pub_;
+  int64_t period_ns_ = 20000000, last_ns_ = -1;
+};
+
+}  // namespace bullet_plant

@@ -1,0 +1,34 @@
+#include "robot_interface.h"
+
+#include <std_msgs/Bool.h>
+
+#include "bullet_plant/robot.h"
+#include "ros_plant.h"
+
+namespace bullet_plant
+{
+RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
+  : nh_(robot.controlNamespace().empty() ? "/" : robot.controlNamespace()), odometry_(robot, nh_), sensors_(robot, nh_)
+{
+  const std::string& estop = robot.description().control.e_stop_topic;
+  if (!estop.empty())
+    estop_sub_ = nh_.subscribe<std_msgs::Bool>(estop, 1, [&plant, &robot](const std_msgs::BoolConstPtr& m) {
+      bool on = m->data;
+      plant.post([&robot, on] { robot.setEStop(on); });
+    });
+  if (ControllerManager* manager = robot.controllerManager())
+  {
+    controller_topics_.reset(new ControllerTopics(plant, *manager, nh_));
+    manager_services_.reset(new ControllerManagerServices(plant, *manager, *controller_topics_, nh_));
+  }
+}
+
+void RobotInterface::publish(int64_t time_ns)
+{
+  if (controller_topics_)
+    controller_topics_->publish();
+  odometry_.publish(time_ns);
+  sensors_.publish();
+}
+
+}  // namespace bullet_plant
