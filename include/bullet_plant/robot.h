@@ -24,7 +24,7 @@ struct Twist
   std::array<double, 3> angular{{0, 0, 0}};  // rad/s
 };
 
-class Robot : public JointHandles
+class Robot
 {
 public:
   ~Robot();
@@ -36,9 +36,10 @@ public:
   const std::string& controlNamespace() const;
   const RobotDescription& description() const;
 
-  // gazebo_ros_control's joint handles, in transmission order: what its controllers see.
-  std::vector<JointHandle>& handles() override;
-  JointHandle* handle(const std::string& joint) override;
+  // gazebo_ros_control's joint handles, in transmission order: what its controllers see (through
+  // the JointHandles interface of the robot's joint layer).
+  std::vector<JointHandle>& handles();
+  JointHandle* handle(const std::string& joint);
 
   // Every movable joint of the URDF (transmitted or not), in URDF order, and its state.
   std::vector<std::string> jointNames() const;

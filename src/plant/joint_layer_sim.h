@@ -7,20 +7,22 @@
 #include <string>
 #include <vector>
 
+#include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
 #include "robot_multibody.h"
 
 namespace bullet_plant
 {
-class JointLayer
+// The JointHandles controllers get: gazebo_ros_control registers the same handles with ros_control.
+class JointLayer : public JointHandles
 {
 public:
   // A handle for a transmitted joint (joints[joint]); its pid_gains loop when gains are given.
   JointHandle& addHandle(const MovableJoint& joint, size_t joint_index, JointInterface iface);
   bool drives(size_t joint_index) const;
 
-  std::vector<JointHandle>& handles() { return handles_; }
-  JointHandle* handle(const std::string& joint);
+  std::vector<JointHandle>& handles() override { return handles_; }
+  JointHandle* handle(const std::string& joint) override;
 
   // gazebo_ros_control's e-stop: while on, efforts are 0, velocity commands 0 and position commands
   // the position the joint had when it came on.

@@ -389,7 +389,7 @@ void createControllerManager(Robot::Internals& r)
   else if (period > 0)
     r.control_period_ns = std::llround(period * 1e9);
   r.last_control_ns = r.world->time_ns;
-  r.controller_manager.reset(new ControllerManager(*r.self, r.world->params, r.world->log, r.control_namespace));
+  r.controller_manager.reset(new ControllerManager(r.joint_layer, r.world->params, r.world->log, r.control_namespace));
   r.controller_manager->setPaused(r.world->paused);
 }
 
