@@ -8,6 +8,8 @@ import pytest
 
 from ros_harness import RosSystem, tianracer_plant
 
+pytestmark = pytest.mark.ros
+
 NS = '/tianracer'
 CM = NS + '/controller_manager/'
 TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',

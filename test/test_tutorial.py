@@ -14,6 +14,8 @@ from tianracer_description.ackermann import max_ideal_steering
 from tianracer_description.path_metrics import circle_radius
 from tianracer_description.urdf_geometry import ackermann_geometry
 
+pytestmark = pytest.mark.ros
+
 TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
                         'front_right_steering_position_controller', 'front_left_steering_position_controller']
 TOPICS = ['/tianracer/cmd_vel', '/tianracer/rear_left_velocity_controller/command',
