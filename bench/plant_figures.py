@@ -6,34 +6,20 @@ a stand), the steering controllers' step response (standing and at 1 m/s), and t
 for the tutorial's Ackermann commands at an ideal steering angle of 0.3 rad.
 """
 import math
-import os
-import subprocess
 
 import numpy as np
-import rospkg
 
 from tianracer_description import bullet_plant
 from tianracer_description.path_metrics import circle_radius
+from tianracer_description.tianracer import (CONFIG_YAML, REAR_WHEEL_CONTROLLERS, STEERING_CONTROLLERS,
+                                            TUTORIAL_CONTROLLERS, tianracer_urdf)
 from tianracer_description.urdf_geometry import ackermann_geometry
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CONFIG_YAML = os.path.join(REPO, 'config', 'smart_control_config.yaml')
-CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
-               'front_right_steering_position_controller', 'front_left_steering_position_controller']
-REAR = ('rear_left_velocity_controller', 'rear_right_velocity_controller')
-STEERING = ('front_left_steering_position_controller', 'front_right_steering_position_controller')
 STAND = """<?xml version="1.0"?><sdf version="1.6"><world name="stand">
   <include><uri>model://ground_plane</uri></include>
   <model name="stand"><static>true</static><pose>0.13 0 0.02 0 0 0</pose><link name="link">
     <collision name="collision"><geometry><box><size>0.2 0.08 0.04</size></box></geometry></collision>
   </link></model></world></sdf>"""
-
-
-def urdf_text():
-    packages = rospkg.RosPack()
-    xacro = os.path.join(packages.get_path('xacro'), 'xacro')
-    model = os.path.join(packages.get_path('tianracer_description'), 'urdf', 'tianracer_description.xacro')
-    return subprocess.run([xacro, model], capture_output=True, text=True, check=True).stdout
 
 
 def car(urdf, sdf=None, z=0.0):
@@ -42,7 +28,7 @@ def car(urdf, sdf=None, z=0.0):
     world.load_params(CONFIG_YAML)
     robot = world.spawn(urdf, 'tianracer', pose=(0, 0, z, 0, 0, 0))
     manager = robot.controller_manager
-    manager.spawn(CONTROLLERS)
+    manager.spawn(list(TUTORIAL_CONTROLLERS))
     world.step(2)
     return world, robot, manager
 
@@ -81,7 +67,7 @@ def at_rest(urdf):
 
 def straight(urdf):
     world, robot, manager = car(urdf)
-    command(manager, REAR, 31.25)
+    command(manager, REAR_WHEEL_CONTROLLERS, 31.25)
     world.step(3000)
     speed = np.hypot(*robot.base_twist()[0][:2])
     start = robot.base_pose()
@@ -94,7 +80,7 @@ def straight(urdf):
 def wheel_loop(urdf, lifted):
     world, robot, manager = car(urdf, STAND, 0.025) if lifted else car(urdf)
     world.step(500)
-    command(manager, REAR, 31.25)
+    command(manager, REAR_WHEEL_CONTROLLERS, 31.25)
     velocities = record(world, robot, 'left_rear_wheel_joint', 1, 1000)
     print('rear wheel loop (pid_gains p 100), %s: within 2 %% after %.3f s, steady std %.3f %%' %
           ('lifted' if lifted else 'on the ground', settle_time(velocities, 31.25, 0.625, world.time_step),
@@ -103,9 +89,9 @@ def wheel_loop(urdf, lifted):
 
 def steering(urdf, speed):
     world, robot, manager = car(urdf)
-    command(manager, REAR, speed / 0.032)
+    command(manager, REAR_WHEEL_CONTROLLERS, speed / 0.032)
     world.step(1500)
-    command(manager, STEERING, 0.3)
+    command(manager, STEERING_CONTROLLERS, 0.3)
     angles = record(world, robot, 'left_steering_hinge_joint', 0, 2000)
     print('steering step 0 -> 0.3 rad at %.1f m/s: 63 %% at %.3f s, within 0.01 rad after %.3f s, overshoot %.1f %%, '
           'final %.4f rad' % (speed, np.argmax(angles >= 0.189) * 0.001, settle_time(angles, 0.3, 0.01, 0.001),
@@ -132,7 +118,7 @@ def circle(urdf):
 
 
 def main():
-    urdf = urdf_text()
+    urdf = tianracer_urdf()
     at_rest(urdf)
     straight(urdf)
     wheel_loop(urdf, lifted=False)

@@ -29,23 +29,21 @@ import json
 import os
 import platform
 import statistics
-import subprocess
 import time
 
 import mujoco
 import pybullet
 import pybullet_data
-import rospkg
 import yaml
 
 from tianracer_description import bullet_plant
+from tianracer_description.tianracer import (CONFIG_YAML, RACE_TRACK_WORLD, REAR_WHEEL_CONTROLLERS, REAR_WHEEL_JOINTS,
+                                            STEERING_JOINTS, TUTORIAL_CONTROLLERS, tianracer_urdf)
 from tianracer_description.urdf_geometry import ackermann_geometry
 
 BENCH = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(BENCH)
 MJCF = os.path.join(BENCH, 'tianracer_mjcf.xml')
-CONFIG_YAML = os.path.join(REPO, 'config', 'smart_control_config.yaml')
-RACE_TRACK = os.path.join(REPO, 'worlds', 'race_track.world')
 OUTPUT_JSON = os.path.join(BENCH, 'out', 'plant_vs_peers.json')
 
 SPEED = 1.0            # m/s, every car
@@ -55,21 +53,10 @@ STEPS = 5000           # per timed window
 ROUNDS = 7             # odd, so a median is one round's figure
 LIDAR_PERIOD_STEPS = 25  # 40 Hz at 1 ms steps
 LIDAR_TURNS = 80         # per round: 2 s of driving, within the track's first straight
-REAR_WHEELS = ('left_rear_wheel_joint', 'right_rear_wheel_joint')
-STEERING = ('left_steering_hinge_joint', 'right_steering_hinge_joint')
 # steps/s ratios, each taken within a round; the last shows what the per-step Python calls cost
 RATIOS = (('ours_per_step', 'mujoco'), ('ours_per_step', 'pybullet'), ('ours_batched', 'mujoco'),
           ('ours_batched', 'pybullet'), ('ours_controllers', 'mujoco'), ('ours_controllers', 'pybullet'),
           ('ours_per_step', 'ours_batched'))
-TUTORIAL_CONTROLLERS = ('joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
-                        'front_right_steering_position_controller', 'front_left_steering_position_controller')
-
-
-def tianracer_urdf():
-    packages = rospkg.RosPack()
-    xacro = os.path.join(packages.get_path('xacro'), 'xacro')
-    model = os.path.join(packages.get_path('tianracer_description'), 'urdf', 'tianracer_description.xacro')
-    return subprocess.run([xacro, model], capture_output=True, text=True, check=True).stdout
 
 
 class OurCar:
@@ -86,12 +73,12 @@ class OurCar:
             manager = self.robot.controller_manager
             manager.spawn(list(TUTORIAL_CONTROLLERS))
             self.world.step(2)  # the switch happens in the control loop
-            for name in ('rear_left_velocity_controller', 'rear_right_velocity_controller'):
+            for name in REAR_WHEEL_CONTROLLERS:
                 manager.command(name, wheel_rate)
             return
-        for joint in REAR_WHEELS:
+        for joint in REAR_WHEEL_JOINTS:
             self.robot.set_command(joint, wheel_rate)
-        for joint in STEERING:
+        for joint in STEERING_JOINTS:
             self.robot.set_effort_law(joint, stiffness=4.0, damping=1.0)
 
     def step_per_call(self, n):
@@ -233,7 +220,7 @@ def sensor_rays_per_sim_second(urdf):
 
 def main():
     urdf = tianracer_urdf()
-    with open(RACE_TRACK) as f:
+    with open(RACE_TRACK_WORLD) as f:
         track_sdf = f.read()
     scanning_car, silent_car = OurCar(urdf, track_sdf), OurCar(urdf, track_sdf)
     scanning_car.robot.enable_sensor('lidar', True)

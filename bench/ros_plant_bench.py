@@ -8,7 +8,7 @@
   fastest             real time factor with real_time_factor:=0 (as fast as possible), same load
 
 Each figure is the median of ROUNDS rounds, each with its own ROS master. Uses the test harness
-(test/ros_harness.py): real roscore, roslaunch and tools on loopback.
+(tianracer_description.ros_harness): real roscore, roslaunch and tools on loopback.
 """
 import os
 import statistics
@@ -16,14 +16,13 @@ import sys
 import tempfile
 import time
 
-BENCH = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(BENCH), 'test'))
-from ros_harness import RosSystem  # noqa: E402
+from tianracer_description.ros_harness import RosSystem
+from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 ROUNDS = 3
 WINDOW = 60.0        # s of wall time for the real time factor at real time
 FAST_WINDOW = 10.0   # s of wall time as fast as possible
-CONTROLLERS = 5
+CONTROLLERS = len(TUTORIAL_CONTROLLERS)
 
 LOAD_PROBE = """
 import json, threading, time, rospy

@@ -24,7 +24,8 @@ import tempfile
 import numpy as np
 
 from tianracer_description import bullet_plant
-from tianracer_description.tianracer import CONFIG_YAML, RACE_TRACK_WORLD, TUTORIAL_CONTROLLERS, tianracer_urdf
+from tianracer_description.tianracer import (CONFIG_YAML, RACE_TRACK_WORLD, REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS,
+                                            tianracer_urdf)
 
 STEPS_SHORT, STEPS_LONG = 500, 1500
 DIGEST_STEPS = 6000
@@ -38,7 +39,7 @@ def driving_car(urdf, world_sdf=None):
     car = world.spawn(urdf, 'tianracer', pose=(0, 0, 0, 0, 0, 0))
     manager = car.controller_manager
     manager.spawn(list(TUTORIAL_CONTROLLERS))
-    for name in ('rear_left_velocity_controller', 'rear_right_velocity_controller'):
+    for name in REAR_WHEEL_CONTROLLERS:
         manager.command(name, WHEEL_RATE)
     return world, car, manager
 

@@ -1,23 +1,13 @@
 """Shared fixtures. The suite runs through `make test`, which builds the catkin workspace and
-sources it; run by hand, `source .ws/devel/setup.bash` first."""
+sources it; run by hand, `source .ws/devel/setup.bash` first. The car's files, controller names
+and URDF come from tianracer_description.tianracer, the ROS processes from
+tianracer_description.ros_harness (imported inside the fixtures: without a sourced workspace
+pytest_sessionstart says so instead of an import error)."""
 import os
 import shutil
-import subprocess
 
 import pytest
 import yaml
-
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CONFIG_YAML = os.path.join(REPO, 'config', 'smart_control_config.yaml')
-MODEL_XACRO = 'urdf/tianracer_description.xacro'
-
-
-def rospack_find(package):
-    result = subprocess.run(['rospack', 'find', package], capture_output=True, text=True)
-    if result.returncode != 0:
-        pytest.fail("rospack cannot find '%s': %s Build and source the workspace "
-                    "(make build; source .ws/devel/setup.bash)." % (package, result.stderr.strip()))
-    return result.stdout.strip()
 
 
 def pytest_sessionstart(session):
@@ -26,20 +16,34 @@ def pytest_sessionstart(session):
                     '`source .ws/devel/setup.bash` first.', returncode=2)
 
 
-def run_xacro(xacro_file, *args):
-    """Run xacro the way a launch file does: $(find xacro)/xacro --inorder FILE."""
-    return subprocess.run([os.path.join(rospack_find('xacro'), 'xacro'), '--inorder', xacro_file, *args],
-                          capture_output=True, text=True)
+@pytest.fixture(scope='session')
+def urdf_xml():
+    from tianracer_description.tianracer import tianracer_urdf
+    return tianracer_urdf()
 
 
 @pytest.fixture(scope='session')
-def urdf_xml():
-    result = run_xacro(os.path.join(rospack_find('tianracer_description'), MODEL_XACRO))
-    assert result.returncode == 0, result.stderr
-    return result.stdout
+def urdf_file(urdf_xml, tmp_path_factory):
+    """The car's URDF in a file, for `rosparam set --textfile` and spawn_model."""
+    path = tmp_path_factory.mktemp('model') / 'tianracer.urdf'
+    path.write_text(urdf_xml)
+    return str(path)
 
 
 @pytest.fixture(scope='session')
 def control_config():
+    from tianracer_description.tianracer import CONFIG_YAML
     with open(CONFIG_YAML) as f:
         return yaml.safe_load(f)
+
+
+@pytest.fixture
+def ros(request, tmp_path):
+    """A ROS master of the test's own on a free loopback port; its processes stop after the test."""
+    if request.node.get_closest_marker('ros') is None:
+        pytest.fail("%s starts a ROS master: mark it ros (pytestmark = pytest.mark.ros) so that "
+                    "-m 'not ros' leaves it out" % request.node.nodeid, pytrace=False)
+    from tianracer_description.ros_harness import RosSystem
+    system = RosSystem(str(tmp_path))
+    yield system
+    system.close()

@@ -4,9 +4,7 @@ import math
 import numpy as np
 
 from tianracer_description import bullet_plant
-
-REAR_WHEELS = ('left_rear_wheel_joint', 'right_rear_wheel_joint')
-STEERING = ('left_steering_hinge_joint', 'right_steering_hinge_joint')
+from tianracer_description.tianracer import STEERING_JOINTS
 
 
 def sdf_world(models='', step=0.001):
@@ -36,7 +34,7 @@ def make_world(control_config, sdf=None):
 
 def hold_steering(robot, angle=0.0):
     """Hold both steering hinges with the tutorial's steering gains (p 4, d 1) as an implicit servo."""
-    for joint in STEERING:
+    for joint in STEERING_JOINTS:
         robot.set_effort_law(joint, stiffness=4.0, position_target=angle, damping=1.0)
 
 

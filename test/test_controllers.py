@@ -9,13 +9,12 @@ import pytest
 from plant_helpers import all_state, make_world
 from tianracer_description import bullet_plant
 from tianracer_description.path_metrics import circle_radius
+from tianracer_description.tianracer import REAR_WHEEL_CONTROLLERS, STEERING_CONTROLLERS, TUTORIAL_CONTROLLERS
 from tianracer_description.urdf_geometry import ackermann_geometry
 
-TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
-                        'front_right_steering_position_controller', 'front_left_steering_position_controller']
-STEERING_CONTROLLERS = {'left': 'front_left_steering_position_controller',
-                        'right': 'front_right_steering_position_controller'}
-WHEEL_CONTROLLERS = {'left': 'rear_left_velocity_controller', 'right': 'rear_right_velocity_controller'}
+# The shared tuples are left before right.
+STEERING_OF_SIDE = dict(zip(('left', 'right'), STEERING_CONTROLLERS))
+WHEEL_OF_SIDE = dict(zip(('left', 'right'), REAR_WHEEL_CONTROLLERS))
 
 
 @pytest.fixture
@@ -24,8 +23,8 @@ def car(urdf_xml, control_config):
     world = make_world(control_config)
     robot = world.spawn(urdf_xml, 'tianracer')
     manager = robot.controller_manager
-    loaded, ok = manager.spawn(TUTORIAL_CONTROLLERS)
-    assert ok and loaded == TUTORIAL_CONTROLLERS
+    loaded, ok = manager.spawn(list(TUTORIAL_CONTROLLERS))
+    assert ok and loaded == list(TUTORIAL_CONTROLLERS)
     world.step(2)  # the switch happens in the control loop
     return world, robot, manager
 
@@ -37,7 +36,7 @@ def errors(world):
 def test_the_tutorials_five_controllers_run_with_their_resources(car):
     world, robot, manager = car
     listed = {c['name']: c for c in manager.list()}
-    assert [c['name'] for c in manager.list()] == TUTORIAL_CONTROLLERS, 'load order'
+    assert [c['name'] for c in manager.list()] == list(TUTORIAL_CONTROLLERS), 'load order'
     assert all(c['state'] == 'running' for c in listed.values())
     assert listed['rear_left_velocity_controller']['claimed_resources'] == [
         {'hardware_interface': 'hardware_interface::VelocityJointInterface', 'resources': ['left_rear_wheel_joint']}]
@@ -71,10 +70,10 @@ def reversals(signal, hysteresis=1e-4):
 
 
 def steering_step(world, robot, manager, speed):
-    for controller in WHEEL_CONTROLLERS.values():
+    for controller in REAR_WHEEL_CONTROLLERS:
         manager.command(controller, speed / 0.032)
     world.step(1500)
-    for controller in STEERING_CONTROLLERS.values():
+    for controller in STEERING_CONTROLLERS:
         manager.command(controller, 0.3)
     angles = []
     for _ in range(2000):
@@ -100,7 +99,7 @@ def test_steering_position_loop_with_the_tutorials_gains(car, speed):
     settled = (len(within) - np.argmin(within[::-1])) * dt
     assert settled <= 1.2, 'within 0.01 rad after %.2f s' % settled
     assert reversals(angles[int(0.3 / dt):]) <= 2, 'no sustained oscillation'
-    state = manager.state(STEERING_CONTROLLERS['left'])
+    state = manager.state(STEERING_OF_SIDE['left'])
     assert state['set_point'] == pytest.approx(0.3)
     assert (state['p'], state['i'], state['d']) == (4.0, 2.0, 1.0)
 
@@ -113,10 +112,10 @@ def test_ackermann_commands_drive_the_geometrys_circle(car, urdf_xml):
     radius = g.wheelbase / math.tan(steer)
     inner, outer = radius - g.rear_track / 2, radius + g.rear_track / 2  # turning left: left is inside
     wheel_speed = speed / g.wheel_radius
-    manager.command(WHEEL_CONTROLLERS['left'], wheel_speed * inner / radius)
-    manager.command(WHEEL_CONTROLLERS['right'], wheel_speed * outer / radius)
-    manager.command(STEERING_CONTROLLERS['left'], math.atan2(g.wheelbase, radius - g.front_track / 2))
-    manager.command(STEERING_CONTROLLERS['right'], math.atan2(g.wheelbase, radius + g.front_track / 2))
+    manager.command(WHEEL_OF_SIDE['left'], wheel_speed * inner / radius)
+    manager.command(WHEEL_OF_SIDE['right'], wheel_speed * outer / radius)
+    manager.command(STEERING_OF_SIDE['left'], math.atan2(g.wheelbase, radius - g.front_track / 2))
+    manager.command(STEERING_OF_SIDE['right'], math.atan2(g.wheelbase, radius + g.front_track / 2))
     world.step(3000)
     path = []
     for _ in range(600):  # 6 s: more than one lap of 5.3 m
@@ -164,7 +163,7 @@ def test_load_errors_have_the_real_managers_texts(car):
         assert text in logged, logged
         if name not in ('joint_state_controller', 'not_configured', 'unknown_type'):
             assert "Initializing controller '%s' failed" % name in logged
-    assert [c['name'] for c in manager.list()] == TUTORIAL_CONTROLLERS
+    assert [c['name'] for c in manager.list()] == list(TUTORIAL_CONTROLLERS)
     before = world.time
     world.step(100)
     assert world.time == pytest.approx(before + 0.1)

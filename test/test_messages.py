@@ -1,10 +1,9 @@
-"""The compat message packages generate the real packages' md5 sums (ros_interfaces.md section 1):
+"""The compat message packages generate the real packages' md5 sums (docs/interfaces.md section 1):
 a real rospy/roscpp client refuses a service whose md5 differs."""
 import os
+import subprocess
 
 import pytest
-
-from conftest import rospack_find
 
 # From the real controller_manager_msgs 0.20 and control_msgs 1.5.
 REAL_MD5 = {
@@ -40,6 +39,15 @@ def test_cpp_header_md5_matches_real_package(package, kind, name):
 def test_switch_controller_constants():
     from controller_manager_msgs.srv import SwitchControllerRequest
     assert (SwitchControllerRequest.BEST_EFFORT, SwitchControllerRequest.STRICT) == (1, 2)
+
+
+def rospack_find(package):
+    """`rospack find PACKAGE`, the command roslaunch's $(find) and rosrun rely on."""
+    result = subprocess.run(['rospack', 'find', package], capture_output=True, text=True)
+    if result.returncode != 0:
+        pytest.fail("rospack cannot find '%s': %s Build and source the workspace "
+                    "(make build; source .ws/devel/setup.bash)." % (package, result.stderr.strip()))
+    return result.stdout.strip()
 
 
 def test_every_compat_package_is_found_by_rospack():

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import yaml
 
-from conftest import REPO, run_xacro
+from tianracer_description.tianracer import PACKAGE, run_xacro
 from tianracer_description.urdf_geometry import UrdfModel, _rpy_matrix, ackermann_geometry
 
 WHEEL_JOINTS = ['left_rear_wheel_joint', 'right_rear_wheel_joint',
@@ -43,7 +43,7 @@ def sensor(robot, link, sensor_type):
 
 def test_launch_file_xacro_command_gives_robot_description():
     """The tutorial's <param command="$(find xacro)/xacro --inorder ..."/> line, evaluated by roslaunch."""
-    launch = os.path.join(REPO, 'test', 'launch', 'robot_description.launch')
+    launch = os.path.join(PACKAGE, 'test', 'launch', 'robot_description.launch')
     result = subprocess.run(['roslaunch', '--dump-params', launch], capture_output=True, text=True)
     assert result.returncode == 0, result.stderr
     description = yaml.safe_load(result.stdout)['/robot_description']

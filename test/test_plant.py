@@ -5,9 +5,9 @@ import math
 import numpy as np
 import pytest
 
-from plant_helpers import (REAR_WHEELS, STEERING, all_state, box_model, hold_steering, make_world, sdf_world,
-                           yaw_of)
+from plant_helpers import all_state, box_model, hold_steering, make_world, sdf_world, yaw_of
 from tianracer_description import bullet_plant
+from tianracer_description.tianracer import REAR_WHEEL_JOINTS
 
 COMMAND = 31.25  # rad/s: 1.0 m/s with the 0.032 m wheels
 
@@ -57,7 +57,7 @@ def test_at_rest_the_car_settles_and_stays(car):
 def test_both_rear_wheels_at_31_25_rad_s_drive_straight_at_1_m_s(car):
     world, robot = car
     hold_steering(robot)
-    for joint in REAR_WHEELS:
+    for joint in REAR_WHEEL_JOINTS:
         robot.set_command(joint, COMMAND)
     world.step(3000)
     linear, _ = robot.base_twist()
@@ -74,7 +74,7 @@ def test_both_rear_wheels_at_31_25_rad_s_drive_straight_at_1_m_s(car):
 
 def wheel_step_response(world, robot, seconds=1.0):
     """Command both rear wheels to 31.25 rad/s from rest; the left wheel's velocity every step."""
-    for joint in REAR_WHEELS:
+    for joint in REAR_WHEEL_JOINTS:
         robot.set_command(joint, COMMAND)
     velocities = []
     for _ in range(int(round(seconds / world.time_step))):
@@ -122,7 +122,7 @@ def test_a_car_driving_into_another_pushes_it(urdf_xml, control_config):
     world.step(200)
     parked = other.base_pose()
     hold_steering(robot)
-    for joint in REAR_WHEELS:
+    for joint in REAR_WHEEL_JOINTS:
         robot.set_command(joint, 40.0)
     for _ in range(30):
         world.step(100)
@@ -139,7 +139,7 @@ def drive_sequence(urdf_xml, control_config):
     robot = world.spawn(urdf_xml, 'tianracer', pose=(0.5, 0.2, 0.0, 0, 0, 0.3))
     trajectory = []
     for step, (speed, steer) in enumerate([(10.0, 0.0), (31.25, 0.3), (-15.0, -0.4), (0.0, 0.0)]):
-        for joint in REAR_WHEELS:
+        for joint in REAR_WHEEL_JOINTS:
             robot.set_command(joint, speed)
         hold_steering(robot, steer)
         for _ in range(50):

@@ -6,26 +6,13 @@ import time
 
 import pytest
 
-from ros_harness import RosSystem, tianracer_plant
+from tianracer_description.ros_harness import tianracer_plant
+from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
+
+pytestmark = pytest.mark.ros
 
 NS = '/tianracer'
 CM = NS + '/controller_manager/'
-TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
-                        'front_right_steering_position_controller', 'front_left_steering_position_controller']
-
-
-@pytest.fixture
-def ros(tmp_path):
-    system = RosSystem(str(tmp_path))
-    yield system
-    system.close()
-
-
-@pytest.fixture(scope='session')
-def urdf_file(urdf_xml, tmp_path_factory):
-    path = tmp_path_factory.mktemp('model') / 'tianracer.urdf'
-    path.write_text(urdf_xml)
-    return str(path)
 
 
 @pytest.fixture
@@ -44,7 +31,7 @@ def controller_states(ros):
 
 def wait_for_running(ros, names, timeout=20):
     ros.wait_until(lambda: all(controller_states(ros).get(n, {}).get('state') == 'running' for n in names),
-                   timeout, 'controllers %s running' % names)
+                   timeout, 'controllers %s running' % ', '.join(names))
 
 
 def echo(ros, topic, count=1, timeout=15):
@@ -79,7 +66,7 @@ def test_tutorial_spawner_starts_the_five_controllers(ros, plant):
     wait_for_running(ros, TUTORIAL_CONTROLLERS)
     started_in = time.monotonic() - start
     states = controller_states(ros)
-    assert list(states) == TUTORIAL_CONTROLLERS
+    assert list(states) == list(TUTORIAL_CONTROLLERS)
     assert states['rear_left_velocity_controller']['claimed_resources'] == [
         {'hardware_interface': 'hardware_interface::VelocityJointInterface', 'resources': ['left_rear_wheel_joint']}]
     assert states['front_left_steering_position_controller']['claimed_resources'][0]['resources'] == [

@@ -9,13 +9,13 @@ import time
 
 import pytest
 
-from ros_harness import RosSystem
 from tianracer_description.ackermann import max_ideal_steering
 from tianracer_description.path_metrics import circle_radius
+from tianracer_description.tianracer import PACKAGE, TUTORIAL_CONTROLLERS
 from tianracer_description.urdf_geometry import ackermann_geometry
 
-TUTORIAL_CONTROLLERS = ['joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',
-                        'front_right_steering_position_controller', 'front_left_steering_position_controller']
+pytestmark = pytest.mark.ros
+
 TOPICS = ['/tianracer/cmd_vel', '/tianracer/rear_left_velocity_controller/command',
           '/tianracer/rear_right_velocity_controller/command',
           '/tianracer/front_left_steering_position_controller/command',
@@ -24,17 +24,15 @@ TOPICS = ['/tianracer/cmd_vel', '/tianracer/rear_left_velocity_controller/comman
 
 
 @pytest.fixture
-def tutorial(tmp_path):
+def tutorial(ros):
     """roslaunch tianracer_description tianracer.launch gui:=false, once the five controllers run
     (list_controllers polled until all five are 'running'; a timeout fails the test)."""
-    ros = RosSystem(str(tmp_path))
     started = time.monotonic()
     launch = ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false'], 'tianracer_launch')
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
     ros.startup_seconds = time.monotonic() - started
     ros.launch = launch
-    yield ros
-    ros.close()
+    return ros
 
 
 def test_tianracer_launch_brings_up_the_tutorials_system(tutorial):
@@ -139,8 +137,7 @@ def test_teleop_refuses_a_stdin_that_is_not_a_terminal(tutorial):
 
 
 def test_make_demo_prints_its_figures_and_writes_the_plot(tmp_path):
-    from conftest import REPO
-    result = subprocess.run(['/usr/bin/python3', os.path.join(REPO, 'tools', 'demo.py')], cwd=str(tmp_path),
+    result = subprocess.run(['/usr/bin/python3', os.path.join(PACKAGE, 'tools', 'demo.py')], cwd=str(tmp_path),
                             capture_output=True, text=True, timeout=240)
     assert result.returncode == 0, result.stdout + result.stderr
     assert 'left loop: radius' in result.stdout and 'path length' in result.stdout

@@ -5,9 +5,8 @@ import os
 import sys
 import tempfile
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(REPO, 'test'))
-from ros_harness import RosSystem  # noqa: E402
+from tianracer_description.ros_harness import RosSystem
+from tianracer_description.tianracer import PACKAGE, TUTORIAL_CONTROLLERS
 
 
 def main():
@@ -16,8 +15,8 @@ def main():
         ros = RosSystem(workdir)
         try:
             ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false',
-                       'world_name:=' + os.path.join(REPO, 'worlds', 'arena.world')], 'tianracer_launch')
-            ros.wait_for_controllers(5)
+                       'world_name:=' + os.path.join(PACKAGE, 'worlds', 'arena.world')], 'tianracer_launch')
+            ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
             demo = ros.run(['rosrun', 'tianracer_description', 'figure_eight.py', '_plot:=' + plot], timeout=180)
             print(demo.stdout.strip())
             if demo.returncode != 0:

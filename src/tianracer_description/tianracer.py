@@ -1,5 +1,6 @@
 """The tutorial's car and files, named once for the tests, benchmarks and tools: the package's paths,
-the five controllers of config/smart_control_config.yaml and the car's URDF as xacro expands it."""
+the five controllers of config/smart_control_config.yaml, the joints they drive and the car's URDF
+as xacro expands it."""
 import functools
 import os
 import subprocess
@@ -28,6 +29,9 @@ TUTORIAL_CONTROLLERS = ('joint_state_controller', 'rear_right_velocity_controlle
                         'front_right_steering_position_controller', 'front_left_steering_position_controller')
 REAR_WHEEL_CONTROLLERS = ('rear_left_velocity_controller', 'rear_right_velocity_controller')
 STEERING_CONTROLLERS = ('front_left_steering_position_controller', 'front_right_steering_position_controller')
+# The URDF's joints those controllers command, left before right.
+REAR_WHEEL_JOINTS = ('left_rear_wheel_joint', 'right_rear_wheel_joint')
+STEERING_JOINTS = ('left_steering_hinge_joint', 'right_steering_hinge_joint')
 
 
 def run_xacro(xacro_file, *args):

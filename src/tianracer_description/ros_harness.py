@@ -1,16 +1,18 @@
-"""Real ROS processes for the integration tests: a ROS master on a free loopback port, roslaunch,
-rosrun and the command-line tools, each test with its own master. rospy binds a process to one
-master, so the tests talk to ROS through subprocesses (the tools, or short rospy snippets)."""
+"""Real ROS processes for the integration tests, the ROS benchmark and `make demo`: a ROS master on a
+free loopback port, roslaunch, rosrun and the command-line tools, each test with its own master.
+rospy binds a process to one master, so the tests talk to ROS through subprocesses (the tools, or
+short rospy snippets)."""
 import json
 import os
 import signal
 import socket
 import subprocess
-import tempfile
 import textwrap
 import time
 
 import yaml
+
+from tianracer_description.tianracer import CONFIG_YAML
 
 PYTHON = '/usr/bin/python3'
 
@@ -129,8 +131,7 @@ def tianracer_plant(ros, urdf_path, world=None, paused=False):
         args.append('world_name:=' + world)
     plant = ros.start(args, 'plant')
     ros.run(['rosparam', 'set', '/robot_description', '--textfile', urdf_path])
-    ros.run(['rosparam', 'load', os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                                              'config', 'smart_control_config.yaml')])
+    ros.run(['rosparam', 'load', CONFIG_YAML])
     spawn = ros.run(['rosrun', 'tianracer_description', 'spawn_model', '-urdf', '-param', 'robot_description',
                      '-model', 'tianracer'], timeout=60)
     assert spawn.returncode == 0, spawn.stdout + spawn.stderr + plant.log()

@@ -1,0 +1,112 @@
+"""The C++ unit tests (test/cpp/test_*.cpp), one pytest test per gtest case.
+
+CMakeLists.txt builds one gtest executable per source file, named after it, into the devel space
+(`make build` runs `catkin_make all tests`); this module finds each one with catkin's own lookup
+(the workspace on CMAKE_PREFIX_PATH, as catkin_find does), lists its cases with --gtest_list_tests
+and runs every case on its own with --gtest_filter, so a crash belongs to the case that crashed.
+A source without an executable, an executable that cannot list its cases, a crash or a case that
+does not report itself all fail: nothing here is skipped but what gtest itself skips (DISABLED_
+cases, GTEST_SKIP)."""
+import glob
+import os
+import signal
+import subprocess
+import xml.etree.ElementTree as ET
+
+import pytest
+from catkin.find_in_workspaces import find_in_workspaces
+
+PACKAGE = 'tianracer_description'
+SOURCES = sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), 'cpp', 'test_*.cpp')))
+CASE_TIMEOUT = 300  # s; a case that hangs fails instead of stalling the suite
+
+
+def gtest_executable(source):
+    """The executable catkin_add_gtest built from a source (same stem), or None."""
+    name = os.path.splitext(os.path.basename(source))[0]
+    found = find_in_workspaces(['libexec'], project=PACKAGE, path=name, first_match_only=True)
+    return found[0] if found else None
+
+
+def parse_test_list(listing):
+    """'Suite.Case' names from --gtest_list_tests output (suites flush left and ending in '.', cases
+    indented under them; '# GetParam() = ...' comments and gtest_main's banner dropped)."""
+    cases, suite = [], None
+    for line in listing.splitlines():
+        text = line.split('#', 1)[0].rstrip()
+        if not text:
+            continue
+        if not line[0].isspace():
+            suite = text if text.endswith('.') else None
+        elif suite:
+            cases.append(suite + text.strip())
+    return cases
+
+
+class Problem:
+    """A test/cpp source whose cases cannot be listed: its one pytest test fails with why."""
+
+    def __init__(self, message):
+        self.message = message
+
+
+def gtest_cases():
+    """(stem, executable, case or Problem) for every case of every test/cpp source."""
+    params = []
+    for source in SOURCES:
+        stem = os.path.splitext(os.path.basename(source))[0]
+        executable = gtest_executable(source)
+        if executable is None:
+            params.append(pytest.param(stem, None, Problem(
+                "no gtest executable '%s' for test/cpp/%s in the devel space of CMAKE_PREFIX_PATH (%s): run "
+                "`make build` (catkin_make all tests) and source the workspace" %
+                (stem, os.path.basename(source), os.environ.get('CMAKE_PREFIX_PATH', ''))), id=stem))
+            continue
+        try:
+            listing = subprocess.run([executable, '--gtest_list_tests'], capture_output=True, text=True,
+                                     timeout=60)
+        except subprocess.TimeoutExpired:
+            params.append(pytest.param(stem, executable, Problem(
+                '%s --gtest_list_tests did not finish within 60 s' % executable), id=stem))
+            continue
+        cases = parse_test_list(listing.stdout) if listing.returncode == 0 else []
+        if not cases:
+            params.append(pytest.param(stem, executable, Problem(
+                '%s --gtest_list_tests exited %d and listed no test cases:\n%s%s' %
+                (executable, listing.returncode, listing.stdout, listing.stderr)), id=stem))
+            continue
+        params += [pytest.param(stem, executable, case, id='%s:%s' % (stem, case)) for case in cases]
+    return params
+
+
+def gtest_result(report, case):
+    """The <testcase> element gtest wrote for 'Suite.Case', or None."""
+    suite, name = case.split('.', 1)
+    for testcase in ET.parse(report).getroot().iter('testcase'):
+        if testcase.get('classname') == suite and testcase.get('name') == name:
+            return testcase
+    return None
+
+
+@pytest.mark.parametrize('stem,executable,case', gtest_cases())
+def test_gtest_case(stem, executable, case, tmp_path):
+    if isinstance(case, Problem):
+        pytest.fail(case.message, pytrace=False)
+    report = tmp_path / 'gtest.xml'
+    try:
+        run = subprocess.run([executable, '--gtest_filter=' + case, '--gtest_output=xml:%s' % report],
+                             capture_output=True, text=True, timeout=CASE_TIMEOUT)
+    except subprocess.TimeoutExpired as timeout:
+        pytest.fail('%s %s did not finish within %d s:\n%s' % (stem, case, CASE_TIMEOUT, timeout.stdout or ''),
+                    pytrace=False)
+    output = run.stdout + run.stderr
+    result = gtest_result(report, case) if report.exists() else None
+    if run.returncode != 0 or result is None:
+        ended = ('was killed by %s' % signal.Signals(-run.returncode).name if run.returncode < 0
+                 else 'exited %d' % run.returncode)
+        pytest.fail('%s --gtest_filter=%s %s%s:\n%s' % (
+            executable, case, ended, '' if result is not None else ' without reporting the case', output),
+            pytrace=False)
+    if result.get('result') == 'skipped' or result.get('status') == 'notrun':
+        pytest.skip('gtest skipped %s (DISABLED_ or GTEST_SKIP)' % case)
+    assert result.find('failure') is None, output
