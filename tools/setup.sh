@@ -21,7 +21,7 @@ APT_PACKAGES=(
   ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs
   # the plant: physics, URDF parsing, XML, Python bindings
   libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev libtinyxml-dev
-  libconsole-bridge-dev
+  libconsole-bridge-dev libassimp-dev
   pybind11-dev python3-dev
   # rviz: what gui:=true opens in place of gzclient
   rviz

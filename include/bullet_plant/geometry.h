@@ -10,12 +10,15 @@ namespace bullet_plant
 {
 struct Shape
 {
-  enum class Kind { Box, Cylinder, Sphere, Plane };
+  enum class Kind { Box, Cylinder, Sphere, Plane, Mesh };
   Kind kind = Kind::Box;
   std::array<double, 3> box_size{{0, 0, 0}};  // full lengths x y z
   double radius = 0.0;                          // cylinder, sphere
   double length = 0.0;                          // cylinder, along its z axis
   urdf::Vector3 normal{0, 0, 1};                // plane, through the shape origin
+  std::string mesh_uri;                         // mesh: as written in the URDF/SDF (for messages)
+  std::string mesh_file;                        // mesh: the file it resolved to (resolveUri)
+  urdf::Vector3 scale{1, 1, 1};                 // mesh: <scale>
 };
 
 struct Rgba

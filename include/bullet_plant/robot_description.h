@@ -81,6 +81,7 @@ struct ControlPluginDescription
 struct RobotDescription
 {
   urdf::ModelInterfaceSharedPtr model;
+  bool is_static = false;  // <gazebo><static>true</static></gazebo>: the whole robot never moves
   ControlPluginDescription control;
   std::vector<TransmissionDescription> transmissions;
   std::map<std::string, SurfaceDescription> surfaces;  // by link
