@@ -16,7 +16,7 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim demo bench bench-ros figures step-cost clean
+.PHONY: help setup build test sim demo bench bench-ros bench-meshes figures step-cost clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
@@ -28,6 +28,7 @@ help:
 	@echo "make bench-ros  build, time the ROS node: launch to running, real time factor, CPU, fastest"
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
 	@echo "make step-cost  build, count instructions per physics step (callgrind) and print a trajectory digest"
+	@echo "make bench-meshes  build, the cost of a race track made of meshes (instructions per step, lidar rays/s)"
 	@echo "make clean  remove $(WS)/"
 
 setup:
@@ -46,7 +47,8 @@ build: setup
 	@echo "built $(WS): source $(WS)/devel/setup.bash"
 
 test: build
-	@$(ROS_ENV) $(PYTHON) -m pytest $(PYTEST_ARGS)
+	@# /usr/bin first: rostest's own nodes (hztest) start with `/usr/bin/env python3`.
+	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) -m pytest $(PYTEST_ARGS)
 
 sim: build
 	@$(ROS_ENV) bash tools/sim.sh
@@ -70,6 +72,10 @@ figures: build
 step-cost: build
 	@command -v valgrind >/dev/null || { echo "step-cost: installing valgrind"; $$([ "$$(id -u)" -eq 0 ] || echo sudo) apt-get install -y -qq valgrind; }
 	@$(ROS_ENV) $(PYTHON) bench/step_cost.py
+
+bench-meshes: build
+	@command -v valgrind >/dev/null || { echo "bench-meshes: installing valgrind"; $$([ "$$(id -u)" -eq 0 ] || echo sudo) apt-get install -y -qq valgrind; }
+	@$(ROS_ENV) $(PYTHON) bench/mesh_track.py
 
 clean:
 	rm -rf $(WS)

@@ -29,6 +29,8 @@ APT_PACKAGES=(
   python3-numpy python3-yaml python3-pytest python3-pip python3-matplotlib
   # C++ unit tests (catkin_add_gtest builds googletest from its sources)
   googletest libgtest-dev
+  # rostests (rostest, hztest) and recording simulations
+  python3-rostest librostest-dev python3-rosbag
 )
 # xacro from PyPI (Debian has no xacro); compat/xacro runs it with rospack's $(find).
 PIP_PACKAGES=(xacro==2.1.1)

@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""The plant node's simulator services (test/simulator.test): pause and unpause stop and restart
+simulated time, reset_simulation takes it back to 0, spawn_model and delete_model add and remove a
+car with gazebo_ros's success flags."""
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import Pose
+from rosgraph_msgs.msg import Clock
+from std_srvs.srv import Empty
+from tianracer_description.srv import DeleteModel, SpawnModel
+
+PLANT = '/bullet_plant/'
+
+
+class SimulatorServices(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('simulator_checks', anonymous=True)
+        cls.clock = []
+        rospy.Subscriber('/clock', Clock, lambda m: cls.clock.append(m.clock.to_sec()))
+        for name, kind in (('pause_physics', Empty), ('unpause_physics', Empty), ('reset_simulation', Empty),
+                           ('spawn_model', SpawnModel), ('delete_model', DeleteModel)):
+            rospy.wait_for_service(PLANT + name, 60.0)
+            setattr(cls, name, rospy.ServiceProxy(PLANT + name, kind))
+
+    def latest_clock_after(self, wall_seconds):
+        time.sleep(wall_seconds)
+        return self.clock[-1]
+
+    def spawn(self, name):
+        pose = Pose()
+        pose.orientation.w = 1.0
+        return self.spawn_model(model_name=name, model_xml=rospy.get_param('/robot_description'), robot_namespace='',
+                                initial_pose=pose, reference_frame='world', joint_names=[], joint_positions=[])
+
+    def test_1_pause_stops_simulated_time_and_unpause_restarts_it(self):
+        self.latest_clock_after(0.5)
+        self.pause_physics()
+        paused_at = self.latest_clock_after(0.3)
+        self.assertEqual(self.latest_clock_after(1.0), paused_at)
+        self.unpause_physics()
+        self.assertGreater(self.latest_clock_after(1.0), paused_at + 0.5)
+
+    def test_2_reset_simulation_takes_time_back_to_zero(self):
+        self.assertGreater(self.latest_clock_after(0.5), 1.0)
+        self.reset_simulation()
+        self.assertLess(self.latest_clock_after(0.2), 1.0)
+
+    def test_3_spawn_and_delete_with_their_flags(self):
+        first = self.spawn('car')
+        self.assertTrue(first.success, first.status_message)
+        again = self.spawn('car')
+        self.assertFalse(again.success)
+        self.assertIn("'car'", again.status_message)
+        self.assertTrue(self.delete_model(model_name='car').success)
+        gone = self.delete_model(model_name='car')
+        self.assertFalse(gone.success)
+        self.assertIn("'car'", gone.status_message)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('tianracer_description', 'simulator_services', SimulatorServices, sys.argv)

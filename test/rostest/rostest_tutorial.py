@@ -1,0 +1,89 @@
+#!/usr/bin/python3
+"""The tutorial's checks as a rostest node (test/tutorial.test): the five controllers run, the
+tutorial's Twist drives the circle of the car's geometry, and the dead man's switch stops the car."""
+import math
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+from controller_manager_msgs.srv import ListControllers
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+from std_msgs.msg import Float64
+
+from tianracer_description.ackermann import max_ideal_steering
+from tianracer_description.path_metrics import circle_radius
+from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
+from tianracer_description.urdf_geometry import ackermann_geometry
+
+
+def sim_now():
+    return rospy.get_rostime().to_sec()
+
+
+def wait_sim(seconds):
+    end = sim_now() + seconds
+    while not rospy.is_shutdown() and sim_now() < end:
+        rospy.sleep(0.01)
+
+
+class Tutorial(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('tutorial_checks', anonymous=True)
+        cls.odom, cls.wheel = [], []
+        rospy.Subscriber('/tianracer/odom', Odometry, lambda m: cls.odom.append(
+            (m.header.stamp.to_sec(), m.pose.pose.position.x, m.pose.pose.position.y, m.twist.twist.linear.x)))
+        rospy.Subscriber('/tianracer/rear_left_velocity_controller/command', Float64,
+                         lambda m: cls.wheel.append((sim_now(), m.data)))
+        cls.cmd_vel = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
+        cls.running = cls.wait_for_controllers(len(TUTORIAL_CONTROLLERS), timeout=60.0)
+
+    @staticmethod
+    def wait_for_controllers(count, timeout):
+        """The names of the running controllers once `count` run (or at the timeout, wall clock)."""
+        service = '/tianracer/controller_manager/list_controllers'
+        end = time.monotonic() + timeout
+        running = []
+        while time.monotonic() < end and not rospy.is_shutdown():
+            try:
+                rospy.wait_for_service(service, 1.0)
+                running = [c.name for c in rospy.ServiceProxy(service, ListControllers)().controller
+                           if c.state == 'running']
+                if len(running) >= count:
+                    break
+            except (rospy.ROSException, rospy.ServiceException):
+                pass
+            time.sleep(0.05)
+        return running
+
+    def test_1_the_five_controllers_run(self):
+        self.assertEqual(sorted(self.running), sorted(TUTORIAL_CONTROLLERS))
+
+    def test_2_the_tutorials_twist_drives_the_circle_and_the_dead_mans_switch_stops_the_car(self):
+        twist = Twist()
+        twist.linear.x, twist.angular.z = 1.0, 1.0   # the tutorial's rostopic pub line, at 10 Hz
+        start = sim_now()
+        rate = rospy.Rate(10)
+        while sim_now() - start < 8.0 and not rospy.is_shutdown():
+            self.cmd_vel.publish(twist)
+            last_twist = sim_now()
+            rate.sleep()
+        circle = [(x, y) for t, x, y, v in self.odom if start + 3.0 <= t <= last_twist]
+        wait_sim(2.0)
+
+        g = ackermann_geometry(rospy.get_param('/robot_description'))
+        expected = g.wheelbase / math.tan(max_ideal_steering(g.wheelbase, g.front_track, g.max_steer))
+        self.assertGreater(len(circle), 100)
+        radius = circle_radius(circle)
+        self.assertLess(abs(radius - expected) / expected, 0.05, 'radius %.3f m, geometry %.3f m' % (radius, expected))
+        stopped = [t for t, value in self.wheel if t > last_twist and value == 0.0]
+        self.assertTrue(stopped, 'the wheels were never commanded to 0')
+        self.assertLessEqual(stopped[0] - last_twist, 0.3, "the dead man's switch took %.2f s" % (stopped[0] - last_twist))
+        self.assertLess(abs(self.odom[-1][3]), 0.05, 'the car stops')
+
+
+if __name__ == '__main__':
+    rostest.rosrun('tianracer_description', 'tutorial_drive', Tutorial, sys.argv)

@@ -1,0 +1,68 @@
+#!/usr/bin/python3
+"""Two cars in one world (test/two_robots.test): each runs the tutorial's five controllers in its own
+namespace, and commanding one car's wheels moves that car only."""
+import math
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+from controller_manager_msgs.srv import ListControllers
+from nav_msgs.msg import Odometry
+from std_msgs.msg import Float64
+
+from tianracer_description.tianracer import REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS
+
+CARS = ('/car1/tianracer', '/car2/tianracer')
+
+
+def running(namespace, count, timeout=60.0):
+    service = namespace + '/controller_manager/list_controllers'
+    end = time.monotonic() + timeout
+    names = []
+    while time.monotonic() < end and not rospy.is_shutdown():
+        try:
+            rospy.wait_for_service(service, 1.0)
+            names = [c.name for c in rospy.ServiceProxy(service, ListControllers)().controller if c.state == 'running']
+            if len(names) >= count:
+                break
+        except (rospy.ROSException, rospy.ServiceException):
+            pass
+        time.sleep(0.05)
+    return names
+
+
+class TwoRobots(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node('two_robots_checks', anonymous=True)
+        cls.position = {}
+        for car in CARS:
+            rospy.Subscriber(car + '/odom', Odometry, lambda m, car=car: cls.position.__setitem__(
+                car, (m.pose.pose.position.x, m.pose.pose.position.y)))
+
+    def test_1_each_car_runs_the_five_controllers_in_its_namespace(self):
+        for car in CARS:
+            self.assertEqual(sorted(running(car, len(TUTORIAL_CONTROLLERS))), sorted(TUTORIAL_CONTROLLERS), car)
+
+    def test_2_commanding_one_car_moves_that_car_only(self):
+        for car in CARS:
+            running(car, len(TUTORIAL_CONTROLLERS))
+        publishers = [rospy.Publisher(CARS[0] + '/' + c + '/command', Float64, queue_size=1, latch=True)
+                      for c in REAR_WHEEL_CONTROLLERS]
+        while not all(car in self.position for car in CARS):
+            time.sleep(0.05)
+        start = dict(self.position)
+        for publisher in publishers:
+            publisher.publish(Float64(31.25))  # 1 m/s
+        end = rospy.get_rostime().to_sec() + 2.0
+        while rospy.get_rostime().to_sec() < end and not rospy.is_shutdown():
+            time.sleep(0.05)
+        moved = {car: math.dist(start[car], self.position[car]) for car in CARS}
+        self.assertGreater(moved[CARS[0]], 1.0, moved)
+        self.assertLess(moved[CARS[1]], 0.01, moved)
+
+
+if __name__ == '__main__':
+    rostest.rosrun('tianracer_description', 'two_robots', TwoRobots, sys.argv)
