@@ -156,15 +156,14 @@ std::string resolveUri(const std::string& uri, const std::string& base_dir, std:
   std::string path = uri;
   if (uri.rfind("model://", 0) == 0)
   {
-    std::string model, rest;
-    splitAuthority(uri.substr(8), model, rest);
-    const std::string dir = findModelDir(model, reason);
-    if (dir.empty())
-    {
-      reason = "'" + uri + "': " + reason;
-      return "";
-    }
-    path = dir + rest;
+    // Gazebo's rule: the first model path directory where the whole of NAME/rest exists.
+    const std::vector<std::string> search = modelSearchPath();
+    for (const std::string& dir : search)
+      if (isFile(dir + "/" + uri.substr(8)))
+        return dir + "/" + uri.substr(8);
+    reason = "'" + uri + "' is in none of GAZEBO_MODEL_PATH and the gazebo_model_path exports of the packages on "
+             "ROS_PACKAGE_PATH (looked in " + joined(search) + ")";
+    return "";
   }
   else if (uri.rfind("package://", 0) == 0)
   {

@@ -14,8 +14,9 @@ namespace bullet_plant
 // relative to the working directory).
 std::string resolveUri(const std::string& uri, const std::string& base_dir, std::string& reason);
 
-// The directory of Gazebo model `name` (model://name): the first GAZEBO_MODEL_PATH entry, then the
-// first gazebo_model_path export, holding a directory `name`; "" with `reason` when none does.
+// The directory of Gazebo model `name` (model://name): the first directory of modelSearchPath()
+// holding a directory `name`; "" with `reason` when none does. (model://name/file resolves to the
+// first one holding name/file, as Gazebo's resolver does.)
 std::string findModelDir(const std::string& name, std::string& reason);
 
 // Where model:// looks, in order: GAZEBO_MODEL_PATH's entries, then the gazebo_ros

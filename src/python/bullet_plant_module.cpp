@@ -73,6 +73,9 @@ struct PyWorld
       if (echo && level >= LogLevel::Warn)
         std::cerr << "[" << levelName(level) << "] " << m << std::endl;
     });
+    // The world logged its description's warnings while it was built, before this sink existed.
+    for (const std::string& warning : d.warnings)
+      messages.emplace_back(levelName(LogLevel::Warn), "world: " + warning);
   }
   std::unique_ptr<World> world;
   std::mutex mutex;
