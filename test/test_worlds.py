@@ -6,6 +6,7 @@ to the file naming them, and what is left out with one warning instead of stoppi
 Each test builds its own model and package directories in tmp_path. Mesh physics is not checked here
 (the meshes are never collided with): a mesh's description is checked through static_collisions()."""
 import math
+import re
 
 import pytest
 
@@ -277,3 +278,30 @@ def test_shipped_worlds_read_by_file_as_by_text():
         assert by_file.static_collisions().__repr__() == by_text.static_collisions().__repr__()
         assert len(warnings(by_file)) == len(warnings(by_text))
         assert math.isfinite(by_file.time_step)
+
+
+@pytest.mark.ros
+def test_node_stops_on_a_malformed_world_naming_file_and_line(ros, tmp_path):
+    bad = write(tmp_path / 'bad.world', '<sdf version="1.6">\n<world name="w">\n<model name="m">\n</world></sdf>\n')
+    node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + str(bad)], 'plant')
+    assert node.wait(30) == 1, node.log()
+    assert re.search(r"bad\.world' is not well-formed XML: line 3", node.log()), node.log()
+
+
+@pytest.mark.ros
+def test_node_resolves_a_launched_worlds_uris_against_its_file(ros, tmp_path):
+    models = tmp_path / 'models'
+    model_dir = make_model(models, 'statue', MESH_COLLISION.format(name='body', uri='meshes/statue.stl', scale='1 1 1'))
+    write(model_dir / 'meshes' / 'statue.stl', STL)
+    write(tmp_path / 'worlds' / 'meshes' / 'rock.stl', STL)
+    world = write(tmp_path / 'worlds' / 'w.world', world_sdf(f"""{include('model://statue')}
+<model name="rocks"><static>true</static><link name="link">
+  {MESH_COLLISION.format(name='rock', uri='meshes/rock.stl', scale='1 1 1')}
+  {MESH_COLLISION.format(name='lost', uri='meshes/lost.stl', scale='1 1 1')}
+</link></model>"""))
+    ros.env['GAZEBO_MODEL_PATH'] = str(models)
+    node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + str(world)], 'plant')
+    ros.wait_until(lambda: ros.run(['rosservice', 'list'], timeout=5).stdout.count('/bullet_plant/pause_physics'),
+                   30, 'the plant node')
+    not_found = [line for line in node.log().splitlines() if 'not found' in line]
+    assert len(not_found) == 1 and 'rocks::link::lost' in not_found[0], node.log()
