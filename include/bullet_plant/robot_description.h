@@ -87,9 +87,11 @@ struct RobotDescription
   std::map<std::string, SurfaceDescription> surfaces;  // by link
   std::vector<SensorDescription> sensors;
   std::vector<std::string> warnings;                   // things read but not fully supported
+  std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)
 };
 
 // Parses URDF text. Throws DescriptionError with the parser's message for malformed input.
-RobotDescription parseRobotDescription(const std::string& urdf_xml);
+// `base_dir`: the directory of the URDF file it came from, if any.
+RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::string& base_dir = "");
 
 }  // namespace bullet_plant

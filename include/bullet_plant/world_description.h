@@ -1,5 +1,7 @@
-// The part of an SDF world that Gazebo's own worlds use for static scenes: <physics>, <gravity>,
-// static models with box/cylinder/sphere/plane collisions, the ground_plane and sun includes.
+// The part of an SDF world that Gazebo's own worlds and their users' worlds use for static scenes:
+// <physics>, <gravity>, the sun's direction, static models with box/cylinder/sphere/plane/mesh
+// collisions, nested models, and <include>d models found by model:// (resource_uri.h). The plant's
+// own ground_plane and sun stand in for Gazebo's models of those names.
 #pragma once
 
 #include <string>
@@ -26,12 +28,17 @@ struct WorldDescription
   urdf::Vector3 gravity{0, 0, -9.8};
   urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
   std::vector<StaticCollision> collisions;
-  std::vector<std::string> warnings;
+  std::vector<std::string> warnings;  // each unsupported element once: what, where, left out
+  std::string file;      // the world file; "" when parsed from text
+  std::string base_dir;  // relative URIs of the world itself resolve against it ("": working directory)
 };
 
-// Parses SDF text (<sdf><world>...). Throws DescriptionError naming what is wrong. Adds a ground
-// plane when the world has none, as an empty Gazebo world has one.
-WorldDescription parseWorldDescription(const std::string& sdf_xml);
+// Parses SDF text (<sdf><world>...). Throws DescriptionError for XML that is not well-formed (with
+// the line) and for values that are not numbers; elements the plant does not support are left out
+// with a warning. Adds a ground plane when the world has none, as an empty Gazebo world has one.
+WorldDescription parseWorldDescription(const std::string& sdf_xml, const std::string& base_dir = "");
+// Reads and parses a world file; its relative URIs resolve against its directory.
+WorldDescription parseWorldFile(const std::string& path);
 // The empty world: default physics and a ground plane.
 WorldDescription emptyWorldDescription();
 

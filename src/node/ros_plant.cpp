@@ -1,7 +1,6 @@
 #include "ros_plant.h"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
@@ -44,15 +43,6 @@ Param toParam(XmlRpc::XmlRpcValue& v)
   }
 }
 
-std::string readFile(const std::string& path)
-{
-  std::ifstream in(path);
-  if (!in)
-    throw DescriptionError("cannot read world file '" + path + "'");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 }  // namespace
 
 void RosPlant::post(std::function<void()> work)
@@ -79,7 +69,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), 
 {
   std::string world_file;
   private_nh_.param<std::string>("world_name", world_file, "");
-  WorldDescription description = world_file.empty() ? emptyWorldDescription() : parseWorldDescription(readFile(world_file));
+  WorldDescription description = world_file.empty() ? emptyWorldDescription() : parseWorldFile(world_file);
   world_.reset(new World(description));
   world_->log().setSink([](LogLevel level, const std::string& m) {
     switch (level)

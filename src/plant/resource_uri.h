@@ -1,10 +1,11 @@
 // Files named in URDF and SDF, found as Gazebo and ROS find them: model://NAME/... through
 // GAZEBO_MODEL_PATH and the gazebo_model_path exports of the packages on ROS_PACKAGE_PATH,
 // package://PKG/... through ROS_PACKAGE_PATH, file://, absolute paths, and paths relative to the
-// directory of the file that names them.
+// directory of the file that names them. Only the environment is read (no ROS master, no rospack).
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace bullet_plant
 {
@@ -12,5 +13,15 @@ namespace bullet_plant
 // directory of the URDF/SDF file that names it ("" when it came as text: then relative paths are
 // relative to the working directory).
 std::string resolveUri(const std::string& uri, const std::string& base_dir, std::string& reason);
+
+// The directory of Gazebo model `name` (model://name): the first directory of modelSearchPath()
+// holding a directory `name`; "" with `reason` when none does. (model://name/file resolves to the
+// first one holding name/file, as Gazebo's resolver does.)
+std::string findModelDir(const std::string& name, std::string& reason);
+
+// Where model:// looks, in order: GAZEBO_MODEL_PATH's entries, then the gazebo_ros
+// gazebo_model_path exports (`${prefix}` = the exporting package's directory) of the packages on
+// ROS_PACKAGE_PATH, as gazebo_ros's launch scripts add them.
+std::vector<std::string> modelSearchPath();
 
 }  // namespace bullet_plant

@@ -176,6 +176,10 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     const char* reference = g->Attribute("reference");
     if (!reference)
     {
+      // The robot-level <static>, as Gazebo's URDF converter copies it to the model.
+      const std::string is_static = xml::childText(g, "static", "");
+      if (!is_static.empty())
+        out.is_static = is_static == "true" || is_static == "1";
       for (auto* p = g->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin"))
       {
         const char* filename = p->Attribute("filename");
@@ -206,7 +210,7 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
 
 }  // namespace
 
-RobotDescription parseRobotDescription(const std::string& urdf_xml)
+RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::string& base_dir)
 {
   tinyxml2::XMLDocument doc;
   if (doc.Parse(urdf_xml.c_str(), urdf_xml.size()) != tinyxml2::XML_SUCCESS)
@@ -216,6 +220,7 @@ RobotDescription parseRobotDescription(const std::string& urdf_xml)
     throw DescriptionError("URDF has no <robot> root element");
 
   RobotDescription out;
+  out.base_dir = base_dir;
   out.model = parseWithUrdfdom(urdf_xml);
   readTransmissions(robot, out);
   readGazeboExtensions(robot, out);

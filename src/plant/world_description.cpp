@@ -1,29 +1,90 @@
 #include "bullet_plant/world_description.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include <tinyxml2.h>
 
 #include "bullet_plant/robot_description.h"
+#include "resource_uri.h"
 #include "xml_util.h"
 
 namespace bullet_plant
 {
 namespace
 {
-StaticCollision groundPlane(const urdf::Pose& pose)
+// Where SDF elements come from: the file messages name, and the directory their relative URIs
+// resolve against (the world file's, or the included model's).
+struct Source
+{
+  std::string file;  // "" for SDF given as text
+  std::string dir;
+  std::string describe() const { return file.empty() ? "the SDF text" : "'" + file + "'"; }
+};
+
+// Where a model goes: its name (with the enclosing models' names, as Gazebo scopes them) and pose.
+struct Placement
+{
+  std::string name;
+  urdf::Pose pose;  // in the world
+  bool is_static = false;
+};
+
+// Nested includes deeper than this are a loop (a model including itself).
+constexpr int kMaxModelDepth = 16;
+
+StaticCollision groundPlane(const std::string& model_name, const urdf::Pose& pose)
 {
   StaticCollision ground;
-  ground.name = "ground_plane::link::collision";
+  ground.name = model_name + "::link::collision";
   ground.shape.kind = Shape::Kind::Plane;
   ground.pose = pose;
   ground.colour = {0.7f, 0.7f, 0.7f, 1.0f};
   return ground;
 }
 
-Shape readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where)
+void parseXml(tinyxml2::XMLDocument& doc, const std::string& text, const Source& source)
 {
-  Shape shape;
+  if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
+    throw DescriptionError("SDF " + source.describe() + " is not well-formed XML: line " +
+                           std::to_string(doc.ErrorLineNum()) + ": " + doc.ErrorStr());
+}
+
+std::string readFile(const std::string& path, const std::string& what)
+{
+  std::ifstream in(path);
+  if (!in)
+    throw DescriptionError("cannot read " + what + " '" + path + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string directoryOf(const std::string& path)
+{
+  return std::filesystem::absolute(path).parent_path().string();
+}
+
+bool readMesh(const tinyxml2::XMLElement* mesh, const std::string& where, const Source& source, Shape& shape,
+              WorldDescription& world)
+{
+  shape.kind = Shape::Kind::Mesh;
+  shape.mesh_uri = xml::childText(mesh, "uri", "");
+  std::vector<double> scale = xml::numbers(xml::childText(mesh, "scale", "1 1 1"), 3, where + " <mesh><scale>");
+  shape.scale = urdf::Vector3(scale[0], scale[1], scale[2]);
+  std::string reason;
+  shape.mesh_file = resolveUri(shape.mesh_uri, source.dir, reason);
+  if (shape.mesh_file.empty())
+    world.warnings.push_back(where + " in " + source.describe() + ": <mesh> " + reason + "; collision left out");
+  return !shape.mesh_file.empty();
+}
+
+// The shape of a <geometry>; false (with a warning) when the plant leaves it out.
+bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,
+                  WorldDescription& world)
+{
   if (auto* box = geometry->FirstChildElement("box"))
   {
     shape.kind = Shape::Kind::Box;
@@ -59,13 +120,17 @@ Shape readGeometry(const tinyxml2::XMLElement* geometry, const std::string& wher
       throw DescriptionError(where + ": plane normal must not be zero");
     shape.normal = urdf::Vector3(n[0] / norm, n[1] / norm, n[2] / norm);
   }
+  else if (auto* mesh = geometry->FirstChildElement("mesh"))
+    return readMesh(mesh, where, source, shape, world);
   else
   {
     const tinyxml2::XMLElement* first = geometry->FirstChildElement();
-    throw DescriptionError(where + ": geometry <" + std::string(first ? first->Name() : "") +
-                           "> is not supported (box, cylinder, sphere, plane)");
+    world.warnings.push_back(where + " in " + source.describe() + ": geometry <" +
+                             std::string(first ? first->Name() : "") +
+                             "> is not supported (box, cylinder, sphere, plane, mesh); collision left out");
+    return false;
   }
-  return shape;
+  return true;
 }
 
 Rgba readColour(const tinyxml2::XMLElement* visual)
@@ -81,66 +146,182 @@ Rgba readColour(const tinyxml2::XMLElement* visual)
   return {float(c[0]), float(c[1]), float(c[2]), float(c[3])};
 }
 
-void readModel(const tinyxml2::XMLElement* model, WorldDescription& world)
+bool isTrue(const std::string& text) { return text == "true" || text == "1"; }
+
+void readInclude(const tinyxml2::XMLElement* include, const Source& source, const std::string& scope,
+                 const urdf::Pose& parent, int depth, WorldDescription& world);
+
+void readLink(const tinyxml2::XMLElement* link, const Source& source, const Placement& model, WorldDescription& world)
 {
-  std::string model_name = model->Attribute("name") ? model->Attribute("name") : "model";
-  if (xml::childText(model, "static", "false") != "true" && xml::childText(model, "static", "0") != "1")
-    world.warnings.push_back("model '" + model_name + "' is not static; the plant keeps world models still");
-  urdf::Pose model_pose = xml::parseSdfPose(xml::childText(model, "pose", ""));
-  for (auto* link = model->FirstChildElement("link"); link; link = link->NextSiblingElement("link"))
+  std::string link_name = link->Attribute("name") ? link->Attribute("name") : "link";
+  urdf::Pose link_pose = compose(model.pose, xml::parseSdfPose(xml::childText(link, "pose", "")));
+  const tinyxml2::XMLElement* first_visual = link->FirstChildElement("visual");
+  for (auto* c = link->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
   {
-    std::string link_name = link->Attribute("name") ? link->Attribute("name") : "link";
-    urdf::Pose link_pose = compose(model_pose, xml::parseSdfPose(xml::childText(link, "pose", "")));
-    const tinyxml2::XMLElement* first_visual = link->FirstChildElement("visual");
-    for (auto* c = link->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
+    StaticCollision collision;
+    collision.name = model.name + "::" + link_name + "::" + (c->Attribute("name") ? c->Attribute("name") : "collision");
+    const std::string where = "collision '" + collision.name + "'";
+    const tinyxml2::XMLElement* geometry = c->FirstChildElement("geometry");
+    if (!geometry)
     {
-      StaticCollision collision;
-      collision.name = model_name + "::" + link_name + "::" + (c->Attribute("name") ? c->Attribute("name") : "collision");
-      const tinyxml2::XMLElement* geometry = c->FirstChildElement("geometry");
-      if (!geometry)
-        throw DescriptionError("collision '" + collision.name + "' has no <geometry>");
-      collision.shape = readGeometry(geometry, "collision '" + collision.name + "'");
-      collision.pose = compose(link_pose, xml::parseSdfPose(xml::childText(c, "pose", "")));
-      collision.mu = xml::childDouble(c, "surface/friction/ode/mu", 1.0);
-      collision.colour = readColour(first_visual);
-      world.collisions.push_back(collision);
+      world.warnings.push_back(where + " in " + source.describe() + " has no <geometry>; left out");
+      continue;
     }
+    if (!readGeometry(geometry, where, source, collision.shape, world))
+      continue;
+    collision.pose = compose(link_pose, xml::parseSdfPose(xml::childText(c, "pose", "")));
+    collision.mu = xml::childDouble(c, "surface/friction/ode/mu", 1.0);
+    collision.colour = readColour(first_visual);
+    world.collisions.push_back(collision);
   }
 }
 
-void readInclude(const tinyxml2::XMLElement* include, WorldDescription& world)
+// A <model>: its links, nested models and includes. `placement` is where the enclosing element
+// (the world, a parent model or an <include>) puts it; an include's name and pose replace the model's own.
+void readModel(const tinyxml2::XMLElement* model, const Source& source, const Placement& placement, int depth,
+               WorldDescription& world)
 {
-  std::string uri = xml::childText(include, "uri", "");
-  urdf::Pose pose = xml::parseSdfPose(xml::childText(include, "pose", ""));
-  if (uri == "model://ground_plane")
-    world.collisions.push_back(groundPlane(pose));
-  else if (uri == "model://sun")
-    ;  // the default light direction is the sun's
-  else
-    world.warnings.push_back("<include> of '" + uri + "' is not available here (only model://ground_plane and "
-                             "model://sun); skipped");
+  for (auto* link = model->FirstChildElement("link"); link; link = link->NextSiblingElement("link"))
+    readLink(link, source, placement, world);
+  for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
+  {
+    const std::string tag = e->Name();
+    if (tag == "model")
+    {
+      Placement nested;
+      nested.name = placement.name + "::" + (e->Attribute("name") ? e->Attribute("name") : "model");
+      nested.pose = compose(placement.pose, xml::parseSdfPose(xml::childText(e, "pose", "")));
+      nested.is_static = placement.is_static;
+      readModel(e, source, nested, depth + 1, world);
+    }
+    else if (tag == "include")
+      readInclude(e, source, placement.name + "::", placement.pose, depth + 1, world);
+  }
 }
 
-}  // namespace
-
-WorldDescription emptyWorldDescription()
+void warnIfNotStatic(const Placement& model, const Source& source, WorldDescription& world)
 {
-  WorldDescription world;
-  world.collisions.push_back(groundPlane(urdf::Pose()));
-  return world;
+  if (!model.is_static)
+    world.warnings.push_back("model '" + model.name + "' in " + source.describe() +
+                             " is not static; the plant keeps world models still");
 }
 
-WorldDescription parseWorldDescription(const std::string& sdf_xml)
+// The model file model.config names: the <sdf> of the newest version; model.sdf without a config.
+std::string modelFile(const std::string& model_dir)
+{
+  tinyxml2::XMLDocument config;
+  const std::string config_path = model_dir + "/model.config";
+  if (config.LoadFile(config_path.c_str()) != tinyxml2::XML_SUCCESS)
+  {
+    if (config.ErrorID() == tinyxml2::XML_ERROR_FILE_NOT_FOUND)
+      return model_dir + "/model.sdf";
+    throw DescriptionError("model config '" + config_path + "' is not well-formed XML: line " +
+                           std::to_string(config.ErrorLineNum()) + ": " + config.ErrorStr());
+  }
+  const tinyxml2::XMLElement* root = config.FirstChildElement("model");
+  std::string best = "model.sdf";
+  std::vector<double> best_version;
+  for (auto* sdf = root ? root->FirstChildElement("sdf") : nullptr; sdf; sdf = sdf->NextSiblingElement("sdf"))
+  {
+    std::vector<double> version;
+    std::stringstream parts(sdf->Attribute("version") ? sdf->Attribute("version") : "0");
+    for (std::string part; std::getline(parts, part, '.');)
+      version.push_back(std::atof(part.c_str()));
+    if (sdf->GetText() && (best_version.empty() || version > best_version))
+    {
+      best = xml::trimmed(sdf->GetText());
+      best_version = version;
+    }
+  }
+  return model_dir + "/" + best;
+}
+
+// The directory an <include><uri> names: model://NAME through the model path, or a path.
+std::string includedModelDir(const std::string& uri, const Source& source, std::string& reason)
+{
+  if (uri.rfind("model://", 0) == 0)
+  {
+    std::string name = uri.substr(8);
+    while (!name.empty() && name.back() == '/')
+      name.pop_back();
+    return findModelDir(name, reason);
+  }
+  std::string dir = uri.rfind("file://", 0) == 0 ? uri.substr(7) : uri;
+  if (!dir.empty() && dir[0] != '/' && !source.dir.empty())
+    dir = source.dir + "/" + dir;
+  std::error_code ec;
+  if (std::filesystem::is_directory(dir, ec))
+    return dir;
+  reason = "no model directory at '" + dir + "'";
+  return "";
+}
+
+// <include>: the model's files are found, then it is read as if written here, with the include's
+// <name>, <pose> and <static> in place of the model's own.
+void readInclude(const tinyxml2::XMLElement* include, const Source& source, const std::string& scope,
+                 const urdf::Pose& parent, int depth, WorldDescription& world)
+{
+  const std::string uri = xml::childText(include, "uri", "");
+  const urdf::Pose pose = compose(parent, xml::parseSdfPose(xml::childText(include, "pose", "")));
+  const std::string name_override = xml::childText(include, "name", "");
+  // The plant's own stand-ins, whether or not Gazebo's model database is installed, so a world runs
+  // the same everywhere.
+  if (uri == "model://ground_plane" || uri == "model://ground_plane/")
+  {
+    world.collisions.push_back(groundPlane(scope + (name_override.empty() ? "ground_plane" : name_override), pose));
+    return;
+  }
+  if (uri == "model://sun" || uri == "model://sun/")
+    return;  // the default light direction is the sun's
+  std::string reason;
+  const std::string dir = depth > kMaxModelDepth ? "" : includedModelDir(uri, source, reason);
+  if (dir.empty())
+  {
+    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + ": " +
+                             (depth > kMaxModelDepth ? "models nested too deep (an include loop?)" : reason) +
+                             "; skipped");
+    return;
+  }
+  Source model_source{modelFile(dir), dir};
+  tinyxml2::XMLDocument doc;
+  parseXml(doc, readFile(model_source.file, "model file"), model_source);
+  const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
+  const tinyxml2::XMLElement* model = sdf ? sdf->FirstChildElement("model") : nullptr;
+  if (!model)
+  {
+    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + ": " + model_source.describe() +
+                             " has no <sdf><model>; skipped");
+    return;
+  }
+  Placement placement;
+  placement.name = scope + (name_override.empty() ? (model->Attribute("name") ? model->Attribute("name") : "model")
+                                                  : name_override);
+  placement.pose = include->FirstChildElement("pose") ? pose
+                                                      : compose(pose, xml::parseSdfPose(xml::childText(model, "pose", "")));
+  placement.is_static = isTrue(xml::childText(include, "static", xml::childText(model, "static", "false")));
+  if (scope.empty())
+    warnIfNotStatic(placement, source, world);
+  readModel(model, model_source, placement, depth, world);
+}
+
+// World elements that put things into the scene which the plant does not build.
+bool isUnsupportedWorldElement(const std::string& tag)
+{
+  return tag == "actor" || tag == "population" || tag == "road";
+}
+
+WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
 {
   tinyxml2::XMLDocument doc;
-  if (doc.Parse(sdf_xml.c_str(), sdf_xml.size()) != tinyxml2::XML_SUCCESS)
-    throw DescriptionError(std::string("SDF is not well-formed XML: ") + doc.ErrorStr());
+  parseXml(doc, sdf_xml, source);
   const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
   const tinyxml2::XMLElement* w = sdf ? sdf->FirstChildElement("world") : nullptr;
   if (!w)
-    throw DescriptionError("SDF has no <sdf><world> element");
+    throw DescriptionError("SDF " + source.describe() + " has no <sdf><world> element");
 
   WorldDescription world;
+  world.file = source.file;
+  world.base_dir = source.dir;
   world.name = w->Attribute("name") ? w->Attribute("name") : "default";
   if (auto* physics = w->FirstChildElement("physics"))
   {
@@ -166,16 +347,44 @@ WorldDescription parseWorldDescription(const std::string& sdf_xml)
   {
     std::string tag = e->Name();
     if (tag == "model")
-      readModel(e, world);
+    {
+      Placement placement;
+      placement.name = e->Attribute("name") ? e->Attribute("name") : "model";
+      placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
+      placement.is_static = isTrue(xml::childText(e, "static", "false"));
+      warnIfNotStatic(placement, source, world);
+      readModel(e, source, placement, 0, world);
+    }
     else if (tag == "include")
-      readInclude(e, world);
+      readInclude(e, source, "", urdf::Pose(), 0, world);
+    else if (isUnsupportedWorldElement(tag))
+      world.warnings.push_back("<" + tag + "> in " + source.describe() + " is not supported; skipped");
   }
   bool has_plane = false;
   for (const StaticCollision& c : world.collisions)
     has_plane = has_plane || c.shape.kind == Shape::Kind::Plane;
   if (!has_plane)
-    world.collisions.push_back(groundPlane(urdf::Pose()));
+    world.collisions.push_back(groundPlane("ground_plane", urdf::Pose()));
   return world;
+}
+
+}  // namespace
+
+WorldDescription emptyWorldDescription()
+{
+  WorldDescription world;
+  world.collisions.push_back(groundPlane("ground_plane", urdf::Pose()));
+  return world;
+}
+
+WorldDescription parseWorldDescription(const std::string& sdf_xml, const std::string& base_dir)
+{
+  return parseWorld(sdf_xml, Source{"", base_dir});
+}
+
+WorldDescription parseWorldFile(const std::string& path)
+{
+  return parseWorld(readFile(path, "world file"), Source{path, directoryOf(path)});
 }
 
 }  // namespace bullet_plant

@@ -73,6 +73,9 @@ struct PyWorld
       if (echo && level >= LogLevel::Warn)
         std::cerr << "[" << levelName(level) << "] " << m << std::endl;
     });
+    // The world logged its description's warnings while it was built, before this sink existed.
+    for (const std::string& warning : d.warnings)
+      messages.emplace_back(levelName(LogLevel::Warn), "world: " + warning);
   }
   std::unique_ptr<World> world;
   std::mutex mutex;
@@ -370,7 +373,29 @@ PYBIND11_MODULE(bullet_plant, m)
   py::class_<PyWorld>(m, "World")
       .def(py::init([]() { return new PyWorld(emptyWorldDescription()); }), "an empty world with a ground plane")
       .def_static("from_sdf", [](const std::string& sdf) { return new PyWorld(parseWorldDescription(sdf)); },
-                  py::arg("sdf"), "a world from SDF text")
+                  py::arg("sdf"), "a world from SDF text (relative URIs: relative to the working directory)")
+      .def_static("from_file", [](const std::string& path) { return new PyWorld(parseWorldFile(path)); },
+                  py::arg("path"), "a world from an SDF file; its relative URIs resolve against the file's directory")
+      .def_property_readonly("file", [](PyWorld& w) { return w.world->description().file; },
+                             "the world file ('' for a world from text)")
+      .def("static_collisions", [](PyWorld& w) {
+        static const char* kind_names[] = {"box", "cylinder", "sphere", "plane", "mesh"};
+        py::list out;
+        for (const StaticCollision& c : w.world->description().collisions)
+        {
+          py::dict d;
+          d["name"] = c.name;
+          d["kind"] = kind_names[static_cast<int>(c.shape.kind)];
+          d["pose"] = poseArray(c.pose);
+          d["mesh_uri"] = c.shape.mesh_uri;
+          d["mesh_file"] = c.shape.mesh_file;
+          d["scale"] = std::vector<double>{c.shape.scale.x, c.shape.scale.y, c.shape.scale.z};
+          d["mu"] = c.mu;
+          out.append(d);
+        }
+        return out;
+      }, "the world's static collisions as described: name (model::link::collision), kind, pose (x y z qx qy qz qw), "
+         "mesh_uri and mesh_file (as written, as resolved), scale, mu")
       .def_property("echo", [](PyWorld& w) { return w.echo; }, [](PyWorld& w, bool on) { w.echo = on; },
                     "print warnings and errors to stderr as they happen (default True)")
       .def("messages", [](PyWorld& w, bool clear) {
