@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
-#include "mesh_bounds.h"
+#include <LinearMath/btConvexHullComputer.h>
+
+#include "resource_uri.h"
 
 namespace bullet_plant
 {
@@ -17,7 +20,96 @@ btCollisionShape* withMargin(btCollisionShape* shape, Shape::Kind kind)
     shape->setMargin(kCollisionMargin);
   return shape;
 }
+
+// Bullet's triangle mesh over the loaded file's arrays, which it keeps alive (copies of a mesh share
+// them). The arrays come first so they exist when the BVH is built.
+struct MeshArrays
+{
+  std::shared_ptr<const MeshData> mesh;
+  btTriangleIndexVertexArray triangles;
+  explicit MeshArrays(const std::shared_ptr<const MeshData>& m)
+    : mesh(m),
+      triangles(m->triangleCount(), const_cast<int*>(m->indices.data()), 3 * sizeof(int), m->vertexCount(),
+                const_cast<btScalar*>(m->vertices.data()), 3 * sizeof(btScalar))
+  {
+  }
+};
+
+class StaticMeshShape : private MeshArrays, public btBvhTriangleMeshShape
+{
+public:
+  explicit StaticMeshShape(const std::shared_ptr<const MeshData>& m)
+    : MeshArrays(m), btBvhTriangleMeshShape(&triangles, true, true)
+  {
+    setMargin(0);
+  }
+};
+
+// The convex hull of the vertices, each face moved in by the margin (Bullet adds it back outside).
+// Where it has more than kMaxHullVertices vertices it keeps its support points in that many
+// directions spread evenly over the sphere (a Fibonacci lattice): the extremes in every direction.
+btConvexHullShape* makeHull(const MeshData& mesh)
+{
+  btConvexHullComputer hull;
+  float extent = 1e30f;
+  for (int i = 0; i < 3; ++i)
+    extent = std::min(extent, mesh.max[i] - mesh.min[i]);
+  // A flat mesh keeps its plane: shrinking it would turn it inside out.
+  const btScalar shrink = extent > 4 * kCollisionMargin ? kCollisionMargin : btScalar(0);
+  hull.compute(mesh.vertices.data(), 3 * sizeof(float), mesh.vertexCount(), shrink, btScalar(0.25));
+  const int n = hull.vertices.size();
+  std::vector<bool> keep(n, n <= kMaxHullVertices);
+  if (n > kMaxHullVertices)
+  {
+    const double golden = M_PI * (3.0 - std::sqrt(5.0));
+    for (int k = 0; k < kMaxHullVertices; ++k)
+    {
+      const double z = 1.0 - (2.0 * k + 1.0) / kMaxHullVertices, r = std::sqrt(1.0 - z * z);
+      const btVector3 d(btScalar(r * std::cos(golden * k)), btScalar(r * std::sin(golden * k)), btScalar(z));
+      int best = 0;
+      for (int v = 1; v < n; ++v)
+        if (d.dot(hull.vertices[v]) > d.dot(hull.vertices[best]))
+          best = v;
+      keep[best] = true;
+    }
+  }
+  auto* shape = new btConvexHullShape();
+  for (int v = 0; v < n; ++v)
+    if (keep[v])
+      shape->addPoint(hull.vertices[v], false);
+  shape->recalcLocalAabb();
+  shape->setMargin(shrink > 0 ? kCollisionMargin : btScalar(0.0));
+  return shape;
+}
 }  // namespace
+
+btCollisionShape* makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh, Mobility mobility)
+{
+  if (mobility == Mobility::Static)
+    return new StaticMeshShape(mesh);
+  return makeHull(*mesh);
+}
+
+Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& pose, const void* owner)
+{
+  Collider c;
+  if (shape.kind != Shape::Kind::Mesh)
+  {
+    c.shape.reset(makeCollisionShape(shape));
+    c.ray = RayPrimitive::fromShape(shape, pose, owner);
+    return c;
+  }
+  std::shared_ptr<const MeshData> mesh = loadMesh(shape.mesh_file, shape.scale, c.reason);
+  if (!mesh)
+    return c;
+  c.shape.reset(makeMeshCollisionShape(mesh, mobility));
+  c.ray = RayPrimitive::fromMesh(mesh, pose, owner);
+  if (mobility == Mobility::Moving)
+    c.note = "collides as the convex hull of its " + std::to_string(mesh->triangleCount()) + " triangles (" +
+             std::to_string(static_cast<btConvexHullShape*>(c.shape.get())->getNumPoints()) +
+             " vertices); only static bodies collide with a mesh's exact triangles";
+  return c;
+}
 
 btCollisionShape* makeCollisionShape(const Shape& s)
 {
@@ -36,6 +128,8 @@ btCollisionShape* makeCollisionShape(const Shape& s)
     case Shape::Kind::Plane:
       shape = new btStaticPlaneShape(btVector3(btScalar(s.normal.x), btScalar(s.normal.y), btScalar(s.normal.z)), 0);
       break;
+    case Shape::Kind::Mesh:
+      return nullptr;  // makeCollider
   }
   return withMargin(shape, s.kind);
 }
@@ -85,15 +179,15 @@ btCollisionShape* makeAlignedCollisionShape(const Shape& s, const btTransform& p
       }
     }
     case Shape::Kind::Plane:
+    case Shape::Kind::Mesh:
       break;
   }
   return nullptr;
 }
 
-bool shapeFromUrdf(const urdf::Geometry& g, const std::string& link, const Log& log, Shape& s, btTransform& offset)
+bool shapeFromUrdf(const urdf::Geometry& g, const std::string& link, const Log& log, Shape& s)
 {
   s = Shape();
-  offset.setIdentity();
   switch (g.type)
   {
     case urdf::Geometry::BOX:
@@ -118,25 +212,18 @@ bool shapeFromUrdf(const urdf::Geometry& g, const std::string& link, const Log& 
     case urdf::Geometry::MESH:
     {
       const auto& mesh = static_cast<const urdf::Mesh&>(g);
-      MeshBounds b;
       std::string reason;
-      if (!readMeshBounds(mesh.filename, b, reason))
+      s.kind = Shape::Kind::Mesh;
+      s.mesh_uri = mesh.filename;
+      s.scale = mesh.scale;
+      s.mesh_file = resolveUri(mesh.filename, "", reason);
+      if (s.mesh_file.empty())
       {
-        log.warn("link '" + link + "': mesh collision " + reason + "; the link has no collision there");
+        log.warn("link '" + link + "': mesh collision '" + mesh.filename + "' not found (" + reason +
+                 "); the link has no collision there");
         return false;
       }
-      s.kind = Shape::Kind::Box;
-      double scale[3] = {mesh.scale.x, mesh.scale.y, mesh.scale.z};
-      btVector3 centre;
-      for (int i = 0; i < 3; ++i)
-      {
-        s.box_size[i] = std::max(1e-4, (b.max[i] - b.min[i]) * std::abs(scale[i]));
-        centre[i] = btScalar((b.max[i] + b.min[i]) / 2.0 * scale[i]);
-      }
-      offset.setOrigin(centre);
-      log.warn("link '" + link + "': mesh collision '" + mesh.filename +
-               "' is simulated as its bounding box; use box/cylinder/sphere collisions for accurate contact");
-      break;
+      return true;
     }
     default:
       return false;
