@@ -51,9 +51,13 @@ def run_steps(steps, urdf_path):
 
 
 def callgrind_instructions(steps, urdf_path, workdir):
-    out = os.path.join(workdir, 'callgrind.%d' % steps)
-    subprocess.run(['valgrind', '--tool=callgrind', '--callgrind-out-file=' + out, sys.executable, __file__,
-                    '--run', str(steps), '--urdf', urdf_path],
+    return callgrind_total([sys.executable, __file__, '--run', str(steps), '--urdf', urdf_path],
+                           os.path.join(workdir, 'callgrind.%d' % steps))
+
+
+def callgrind_total(command, out):
+    """The instructions `command` executes, counted by callgrind (its output file: `out`)."""
+    subprocess.run(['valgrind', '--tool=callgrind', '--callgrind-out-file=' + out] + command,
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     with open(out) as f:
         for line in f:

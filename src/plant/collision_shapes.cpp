@@ -35,13 +35,13 @@ struct MeshArrays
   }
 };
 
-class StaticMeshShape : private MeshArrays, public btBvhTriangleMeshShape
+class StaticMeshShape : private MeshArrays, public btBvhTriangleMeshShape  // margin: collision_shapes.h
 {
 public:
   explicit StaticMeshShape(const std::shared_ptr<const MeshData>& m)
     : MeshArrays(m), btBvhTriangleMeshShape(&triangles, true, true)
   {
-    setMargin(0);
+    setMargin(kCollisionMargin);
   }
 };
 

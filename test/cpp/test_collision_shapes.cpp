@@ -185,7 +185,7 @@ std::string sphereObj(const std::string& dir, double r, int rings, int segments)
 }
 }  // namespace
 
-TEST(MakeCollider, AStaticMeshIsItsExactTrianglesWithNoMargin)
+TEST(MakeCollider, AStaticMeshIsItsExactTrianglesWithTheHalfMillimetreMargin)
 {
   const std::string dir = mesh_fixtures::tempDir();
   const float lo[3] = {-1, -1, -0.1f}, hi[3] = {1, 1, 0};
@@ -194,12 +194,12 @@ TEST(MakeCollider, AStaticMeshIsItsExactTrianglesWithNoMargin)
   ASSERT_TRUE(c.shape) << c.reason;
   auto* mesh = dynamic_cast<btBvhTriangleMeshShape*>(c.shape.get());
   ASSERT_NE(mesh, nullptr) << "a static mesh collides as Bullet's BVH triangle mesh";
-  EXPECT_EQ(mesh->getMargin(), 0.0f);
+  EXPECT_FLOAT_EQ(mesh->getMargin(), kCollisionMargin);
   EXPECT_EQ(mesh->getMeshInterface()->getNumSubParts(), 1);
   btVector3 aabb_lo, aabb_hi;
   mesh->getAabb(btTransform::getIdentity(), aabb_lo, aabb_hi);
-  EXPECT_NEAR(aabb_hi.z(), 0.0f, 1e-6);
-  EXPECT_NEAR(aabb_lo.x(), -1.0f, 1e-6);
+  EXPECT_NEAR(aabb_hi.z(), kCollisionMargin, 1e-6);
+  EXPECT_NEAR(aabb_lo.x(), -1.0f - kCollisionMargin, 1e-6);
   EXPECT_TRUE(c.note.empty());
   EXPECT_EQ(c.ray.kind, Shape::Kind::Mesh);
 }
