@@ -104,6 +104,7 @@ Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& p
     return c;
   c.shape.reset(makeMeshCollisionShape(mesh, mobility));
   c.ray = RayPrimitive::fromMesh(mesh, pose, owner);
+  c.mesh = mesh;
   if (mobility == Mobility::Moving)
     c.note = "collides as the convex hull of its " + std::to_string(mesh->triangleCount()) + " triangles (" +
              std::to_string(static_cast<btConvexHullShape*>(c.shape.get())->getNumPoints()) +
@@ -132,6 +133,50 @@ btCollisionShape* makeCollisionShape(const Shape& s)
       return nullptr;  // makeCollider
   }
   return withMargin(shape, s.kind);
+}
+
+bool fitWheelCylinder(const MeshData& mesh, const btTransform& mesh_pose, const btVector3& axis, Shape& cylinder,
+                      btTransform& cylinder_pose)
+{
+  const btVector3 a = axis.normalized();
+  btVector3 u, v;
+  btPlaneSpace1(a, u, v);
+  constexpr int kDirections = 16;
+  btScalar reach[kDirections];
+  std::fill(reach, reach + kDirections, btScalar(-1e30));
+  btScalar along_lo = btScalar(1e30), along_hi = btScalar(-1e30), radius = 0;
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    const btVector3 p = mesh_pose * btVector3(mesh.vertices[3 * i], mesh.vertices[3 * i + 1], mesh.vertices[3 * i + 2]);
+    const btScalar along = p.dot(a);
+    along_lo = std::min(along_lo, along);
+    along_hi = std::max(along_hi, along);
+    const btScalar x = p.dot(u), y = p.dot(v);
+    radius = std::max(radius, btSqrt(x * x + y * y));
+    for (int k = 0; k < kDirections; ++k)
+    {
+      const btScalar angle = btScalar(2 * M_PI * k / kDirections);
+      reach[k] = std::max(reach[k], x * btCos(angle) + y * btSin(angle));
+    }
+  }
+  if (!(radius > 0) || !(along_hi > along_lo))
+    return false;
+  for (btScalar r : reach)
+    if (r < btScalar(0.95) * radius)
+      return false;
+  cylinder = Shape();
+  cylinder.kind = Shape::Kind::Cylinder;
+  cylinder.radius = radius;
+  cylinder.length = along_hi - along_lo;
+  // z onto the axis: the shortest rotation, or a half turn about u where the axis is -z.
+  const btVector3 z(0, 0, 1);
+  const btVector3 turn = z.cross(a);
+  const btQuaternion q = turn.length() > btScalar(1e-6)
+                             ? btQuaternion(turn.normalized(), btAcos(btMax(btScalar(-1), btMin(btScalar(1), z.dot(a)))))
+                         : z.dot(a) > 0 ? btQuaternion::getIdentity()
+                                        : btQuaternion(u, btScalar(M_PI));
+  cylinder_pose = btTransform(q, a * ((along_lo + along_hi) / 2));
+  return true;
 }
 
 // The tolerances absorb float rounding of the URDF's angles (cos(pi/2) is 4e-8 in float).

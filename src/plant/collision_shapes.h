@@ -45,6 +45,7 @@ struct Collider
 {
   std::unique_ptr<btCollisionShape> shape;  // null where a mesh cannot be loaded: see reason
   RayPrimitive ray;
+  std::shared_ptr<const MeshData> mesh;      // a mesh's triangles
   std::string reason;  // why the mesh could not be loaded ("cannot be read (...)", "has no triangles")
   std::string note;    // for the log: what a mesh became on a moving body, or ""
 };
@@ -55,6 +56,14 @@ Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& p
 // its axis on a body axis, for a sphere any): then the body's collider needs no compound, which
 // costs every contact pair a tree walk and a transform per step. Null where a compound is needed.
 btCollisionShape* makeAlignedCollisionShape(const Shape& shape, const btTransform& pose);
+
+// A wheel-shaped mesh as the cylinder about `axis` that it fills: the vertices' farthest reach from
+// the axis line (through the origin of the frame `mesh_pose` is given in) is the same, within 5 %, in
+// 16 directions around it. Such a mesh rolls smoothly as that cylinder where its hull's facets would
+// bump. False where the mesh is not wheel-shaped about that axis. `cylinder_pose`: in the same
+// frame, its z along the axis.
+bool fitWheelCylinder(const MeshData& mesh, const btTransform& mesh_pose, const btVector3& axis, Shape& cylinder,
+                      btTransform& cylinder_pose);
 
 // A URDF <collision>'s geometry as a Shape (a mesh's filename resolved with resolveUri, relative
 // paths against the working directory as URDF comes as text). False, with a warning naming the link,

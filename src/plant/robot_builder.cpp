@@ -153,10 +153,30 @@ void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool wo
   }
 }
 
+// A wheel-shaped mesh on the link of a continuous joint (whose frame is the joint's) becomes the
+// cylinder it fills about the joint axis, said in the collider's note; `shape` and `in_link` follow.
+bool fitWheelToJoint(const urdf::Joint* joint, Collider& collider, Shape& shape, btTransform& in_link)
+{
+  Shape wheel;
+  btTransform wheel_in_link;
+  if (!joint || joint->type != urdf::Joint::CONTINUOUS || vec(joint->axis).length2() == 0 ||
+      !fitWheelCylinder(*collider.mesh, in_link, vec(joint->axis), wheel, wheel_in_link))
+    return false;
+  collider.shape.reset(makeCollisionShape(wheel));
+  collider.note = "is wheel-shaped about continuous joint '" + joint->name + "': it collides as a cylinder of radius " +
+                  std::to_string(wheel.radius) + " m and length " + std::to_string(wheel.length) +
+                  " m about the joint axis, which rolls smoothly where its hull's facets would bump";
+  wheel.mesh_uri = shape.mesh_uri;
+  shape = wheel;
+  in_link = wheel_in_link;
+  return true;
+}
+
 // 3. Collision shapes, in each body's COM frame: a compound of the links' shapes, or the only shape
 // itself where it is aligned with the body's frame. Meshes on the base of a robot fixed in the world
 // are their triangles, elsewhere their convex hulls. Surface friction per body.
-void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, bool fixed_base)
+void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const std::vector<BodyPlan>& plans,
+                     bool fixed_base)
 {
   const urdf::ModelInterface& model = *r.description.model;
   std::vector<Body>& bodies = r.multibody.bodies;
@@ -182,6 +202,12 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, bool f
         r.world->log.warn("link '" + link->name + "': mesh collision '" + shape.mesh_uri + "' " + collider.reason +
                           "; the link has no collision there");
         continue;
+      }
+      if (collider.mesh && mobility == Mobility::Moving && link->name == body.link)
+      {
+        btTransform in_link = toBullet(c->origin);
+        if (fitWheelToJoint(plans[kv.second.first].joint, collider, shape, in_link))
+          in_com = com_from_link * in_link;
       }
       if (!collider.note.empty())
         r.world->log.info("link '" + link->name + "' of '" + r.name + "': mesh '" + shape.mesh_uri + "' " + collider.note);
@@ -446,7 +472,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   LinkPlacement placement;
   const std::vector<BodyPlan> plans = planBodies(r, root, placement);
   massProperties(r, placement, world_rooted);
-  collisionShapes(r, placement, fixed_base);
+  collisionShapes(r, placement, plans, fixed_base);
   const std::vector<double> axis_inertia = createMultibody(r, plans, fixed_base, pose);
   createJoints(r, plans, axis_inertia, initial_joints);
   addColliders(r);

@@ -1,6 +1,7 @@
 // Small mesh files written by the tests themselves into a fresh temporary directory.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -77,6 +78,28 @@ inline std::string colladaTriangle(const std::string& dir, const std::string& na
                "</instance_geometry></node></visual_scene></library_visual_scenes>\n"
                "  <scene><instance_visual_scene url=\"#scene\"/></scene>\n"
                "</COLLADA>\n");
+}
+
+// A wheel: an n-sided prism of circumradius r about the y axis, from y = -w/2 to w/2, as an OBJ.
+inline std::string wheelObj(const std::string& dir, const std::string& name, double r, double w, int n)
+{
+  std::string obj;
+  for (int k = 0; k < n; ++k)
+    for (double y : {-w / 2, w / 2})
+      obj += "v " + std::to_string(r * std::cos(2 * M_PI * k / n)) + " " + std::to_string(y) + " " +
+             std::to_string(r * std::sin(2 * M_PI * k / n)) + "\n";
+  for (int k = 0; k < n; ++k)
+  {
+    const int a = 2 * k + 1, b = 2 * ((k + 1) % n) + 1;  // the rim's quad k
+    obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(b + 1) + "\n";
+    obj += "f " + std::to_string(a) + " " + std::to_string(b + 1) + " " + std::to_string(a + 1) + "\n";
+    if (k >= 1 && k + 1 < n)  // the two sides as fans
+    {
+      obj += "f 1 " + std::to_string(b) + " " + std::to_string(a) + "\n";
+      obj += "f 2 " + std::to_string(a + 1) + " " + std::to_string(b + 1) + "\n";
+    }
+  }
+  return write(dir, name, obj);
 }
 
 }  // namespace mesh_fixtures

@@ -238,3 +238,28 @@ TEST(MakeCollider, AnUnreadableMeshHasNoShapeAndAReason)
   EXPECT_FALSE(c.shape);
   EXPECT_FALSE(c.reason.empty());
 }
+
+TEST(FitWheelCylinder, AWheelMeshIsTheCylinderAboutItsAxisAndABoxIsNot)
+{
+  const std::string dir = mesh_fixtures::tempDir();
+  std::string reason;
+  auto wheel = loadMesh(mesh_fixtures::wheelObj(dir, "wheel.obj", 0.05, 0.03, 24), urdf::Vector3(1, 1, 1), reason);
+  ASSERT_TRUE(wheel) << reason;
+  Shape cylinder;
+  btTransform pose;
+  ASSERT_TRUE(fitWheelCylinder(*wheel, btTransform::getIdentity(), btVector3(0, 1, 0), cylinder, pose));
+  EXPECT_EQ(cylinder.kind, Shape::Kind::Cylinder);
+  EXPECT_NEAR(cylinder.radius, 0.05, 1e-6);
+  EXPECT_NEAR(cylinder.length, 0.03, 1e-6);
+  EXPECT_NEAR(btFabs((pose.getBasis() * btVector3(0, 0, 1)).y()), 1.0f, 1e-6) << "its z along the axis";
+  EXPECT_NEAR(pose.getOrigin().length(), 0.0f, 1e-6);
+
+  // Not about another axis, nor about the wheel's axis moved off its centre.
+  EXPECT_FALSE(fitWheelCylinder(*wheel, btTransform::getIdentity(), btVector3(1, 0, 0), cylinder, pose));
+  EXPECT_FALSE(fitWheelCylinder(*wheel, btTransform(btQuaternion::getIdentity(), btVector3(0.02f, 0, 0)),
+                                btVector3(0, 1, 0), cylinder, pose));
+  // A square prism about the same axis is no wheel.
+  auto square = loadMesh(mesh_fixtures::wheelObj(dir, "square.obj", 0.05, 0.03, 4), urdf::Vector3(1, 1, 1), reason);
+  ASSERT_TRUE(square) << reason;
+  EXPECT_FALSE(fitWheelCylinder(*square, btTransform::getIdentity(), btVector3(0, 1, 0), cylinder, pose));
+}

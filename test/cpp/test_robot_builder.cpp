@@ -47,3 +47,33 @@ TEST(BuildRobot, AStaticRobotStaysWhereItIsSpawnedWhileABoxLandsOnItsMesh)
   EXPECT_NEAR(box.basePose().position.z, 0.5 + 0.1, 1e-3) << "rests on the slab's top at 0.5 m";
   removeRobot(slab);
 }
+
+TEST(BuildRobot, AWheelMeshOnAContinuousJointCollidesAsACylinderAboutItsAxle)
+{
+  const std::string dir = mesh_fixtures::tempDir();
+  const std::string wheel = mesh_fixtures::wheelObj(dir, "wheel.obj", 0.05, 0.03, 24);
+  const std::string inertial =
+      "<inertial><mass value='0.2'/><inertia ixx='0.0002' iyy='0.0002' izz='0.0002' ixy='0' ixz='0' iyz='0'/></inertial>";
+  // A wheel on an axle along y; the hub has no collision.
+  const std::string urdf =
+      "<robot name='unicycle'><link name='hub'>" + inertial + "</link>"
+      "<link name='wheel'>" + inertial + "<collision><geometry><mesh filename='" + wheel + "'/></geometry></collision></link>"
+      "<joint name='axle' type='continuous'><parent link='hub'/><child link='wheel'/><axis xyz='0 1 0'/></joint></robot>";
+  World world;
+  std::vector<std::string> infos;
+  world.log().setSink([&](LogLevel level, const std::string& m) {
+    if (level == LogLevel::Info)
+      infos.push_back(m);
+  });
+  Robot& robot = world.spawn(urdf, "unicycle", poseFromXyzRpy(0, 0, 0.05, 0, 0, 0));
+  Robot::Internals& r = internalsOf(robot);
+  ASSERT_EQ(r.multibody.bodies.size(), 2u);
+  auto* cylinder = dynamic_cast<btCylinderShape*>(r.multibody.bodies[1].shape);
+  ASSERT_NE(cylinder, nullptr) << "the wheel's collider is the cylinder itself, aligned with its body";
+  EXPECT_NEAR(cylinder->getRadius(), 0.05f, 1e-6);
+  bool said = false;
+  for (const std::string& m : infos)
+    said = said || (m.find("'wheel'") != std::string::npos && m.find("cylinder") != std::string::npos &&
+                    m.find("wheel.obj") != std::string::npos);
+  EXPECT_TRUE(said) << "the log says what the wheel became";
+}
