@@ -75,7 +75,7 @@ step-cost: build
 
 bench-meshes: build
 	@command -v valgrind >/dev/null || { echo "bench-meshes: installing valgrind"; $$([ "$$(id -u)" -eq 0 ] || echo sudo) apt-get install -y -qq valgrind; }
-	@$(ROS_ENV) $(PYTHON) bench/mesh_track.py
+	@$(ROS_ENV) $(PYTHON) bench/mesh_cost.py
 
 clean:
 	rm -rf $(WS)

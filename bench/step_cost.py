@@ -44,22 +44,20 @@ def driving_car(urdf, world_sdf=None):
     return world, car, manager
 
 
-def run_steps(steps, urdf_path, world_path=None):
-    world_sdf = None
-    if world_path:
-        with open(world_path) as f:
-            world_sdf = f.read()
+def run_steps(steps, urdf_path):
     with open(urdf_path) as f:
-        world, _, _ = driving_car(f.read(), world_sdf)
+        world, _, _ = driving_car(f.read())
     world.step(steps)
 
 
-def callgrind_instructions(steps, urdf_path, workdir, world_path=None):
-    """Instructions of a whole process that spawns the driving car (in world_path's world, else an
-    empty one) and steps it `steps` times."""
-    out = os.path.join(workdir, 'callgrind.%d.%d' % (steps, len(os.listdir(workdir))))
-    subprocess.run(['valgrind', '--tool=callgrind', '--callgrind-out-file=' + out, sys.executable, __file__,
-                    '--run', str(steps), '--urdf', urdf_path] + (['--world', world_path] if world_path else []),
+def callgrind_instructions(steps, urdf_path, workdir):
+    return callgrind_total([sys.executable, __file__, '--run', str(steps), '--urdf', urdf_path],
+                           os.path.join(workdir, 'callgrind.%d' % steps))
+
+
+def callgrind_total(command, out):
+    """The instructions `command` executes, counted by callgrind (its output file: `out`)."""
+    subprocess.run(['valgrind', '--tool=callgrind', '--callgrind-out-file=' + out] + command,
                    check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     with open(out) as f:
         for line in f:
@@ -97,11 +95,10 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--run', type=int, help=argparse.SUPPRESS)   # the process callgrind counts
     parser.add_argument('--urdf', help=argparse.SUPPRESS)
-    parser.add_argument('--world', help=argparse.SUPPRESS)
     parser.add_argument('--digest-only', action='store_true', help='print the trajectory digest only')
     args = parser.parse_args()
     if args.run is not None:
-        run_steps(args.run, args.urdf, args.world)
+        run_steps(args.run, args.urdf)
         return
     urdf = tianracer_urdf()
     print('trajectory digest (%d steps on the race track, sensors on): %s' % (DIGEST_STEPS, digest(urdf)))
@@ -111,14 +108,10 @@ def main():
         urdf_path = os.path.join(workdir, 'tianracer.urdf')
         with open(urdf_path, 'w') as f:
             f.write(urdf)
-        per_step = instructions_per_step(urdf_path, workdir)
-    print('instructions per step (callgrind, the car driving with the five controllers): %.1fk' % (per_step / 1000.0))
-
-
-def instructions_per_step(urdf_path, workdir, world_path=None):
-    short = callgrind_instructions(STEPS_SHORT, urdf_path, workdir, world_path)
-    long = callgrind_instructions(STEPS_LONG, urdf_path, workdir, world_path)
-    return (long - short) / (STEPS_LONG - STEPS_SHORT)
+        short = callgrind_instructions(STEPS_SHORT, urdf_path, workdir)
+        long = callgrind_instructions(STEPS_LONG, urdf_path, workdir)
+    print('instructions per step (callgrind, the car driving with the five controllers): %.1fk'
+          % ((long - short) / (STEPS_LONG - STEPS_SHORT) / 1000.0))
 
 
 if __name__ == '__main__':

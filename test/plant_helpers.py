@@ -1,5 +1,6 @@
 """Helpers for the tests that drive the plant through its Python module (no ROS master)."""
 import math
+import struct
 
 import numpy as np
 
@@ -51,3 +52,19 @@ def all_state(world, robot):
     for joint in robot.joint_names:
         values += list(robot.joint_state(joint))
     return np.array(values + [world.time])
+
+
+def box_stl(path, low, high):
+    """A box from corner `low` to corner `high` as a binary STL (12 triangles); returns path."""
+    (x0, y0, z0), (x1, y1, z1) = low, high
+    corners = [(x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]
+    faces = [(0, 1, 3), (0, 3, 2), (4, 6, 7), (4, 7, 5), (0, 4, 5), (0, 5, 1),
+             (2, 3, 7), (2, 7, 6), (0, 2, 6), (0, 6, 4), (1, 5, 7), (1, 7, 3)]
+    with open(path, 'wb') as f:
+        f.write(b'\0' * 80 + struct.pack('<I', len(faces)))
+        for face in faces:
+            f.write(struct.pack('<3f', 0, 0, 0))
+            for i in face:
+                f.write(struct.pack('<3f', *corners[i]))
+            f.write(b'\0\0')
+    return path

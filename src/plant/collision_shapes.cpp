@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
-#include "mesh_bounds.h"
+#include <LinearMath/btConvexHullComputer.h>
+
+#include "resource_uri.h"
 
 namespace bullet_plant
 {
@@ -17,7 +20,97 @@ btCollisionShape* withMargin(btCollisionShape* shape, Shape::Kind kind)
     shape->setMargin(kCollisionMargin);
   return shape;
 }
+
+// Bullet's triangle mesh over the loaded file's arrays, which it keeps alive (copies of a mesh share
+// them). The arrays come first so they exist when the BVH is built.
+struct MeshArrays
+{
+  std::shared_ptr<const MeshData> mesh;
+  btTriangleIndexVertexArray triangles;
+  explicit MeshArrays(const std::shared_ptr<const MeshData>& m)
+    : mesh(m),
+      triangles(m->triangleCount(), const_cast<int*>(m->indices.data()), 3 * sizeof(int), m->vertexCount(),
+                const_cast<btScalar*>(m->vertices.data()), 3 * sizeof(btScalar))
+  {
+  }
+};
+
+class StaticMeshShape : private MeshArrays, public btBvhTriangleMeshShape  // margin: collision_shapes.h
+{
+public:
+  explicit StaticMeshShape(const std::shared_ptr<const MeshData>& m)
+    : MeshArrays(m), btBvhTriangleMeshShape(&triangles, true, true)
+  {
+    setMargin(kCollisionMargin);
+  }
+};
+
+// The convex hull of the vertices, each face moved in by the margin (Bullet adds it back outside).
+// Where it has more than kMaxHullVertices vertices it keeps its support points in that many
+// directions spread evenly over the sphere (a Fibonacci lattice): the extremes in every direction.
+btConvexHullShape* makeHull(const MeshData& mesh)
+{
+  btConvexHullComputer hull;
+  float extent = 1e30f;
+  for (int i = 0; i < 3; ++i)
+    extent = std::min(extent, mesh.max[i] - mesh.min[i]);
+  // A flat mesh keeps its plane: shrinking it would turn it inside out.
+  const btScalar shrink = extent > 4 * kCollisionMargin ? kCollisionMargin : btScalar(0);
+  hull.compute(mesh.vertices.data(), 3 * sizeof(float), mesh.vertexCount(), shrink, btScalar(0.25));
+  const int n = hull.vertices.size();
+  std::vector<bool> keep(n, n <= kMaxHullVertices);
+  if (n > kMaxHullVertices)
+  {
+    const double golden = M_PI * (3.0 - std::sqrt(5.0));
+    for (int k = 0; k < kMaxHullVertices; ++k)
+    {
+      const double z = 1.0 - (2.0 * k + 1.0) / kMaxHullVertices, r = std::sqrt(1.0 - z * z);
+      const btVector3 d(btScalar(r * std::cos(golden * k)), btScalar(r * std::sin(golden * k)), btScalar(z));
+      int best = 0;
+      for (int v = 1; v < n; ++v)
+        if (d.dot(hull.vertices[v]) > d.dot(hull.vertices[best]))
+          best = v;
+      keep[best] = true;
+    }
+  }
+  auto* shape = new btConvexHullShape();
+  for (int v = 0; v < n; ++v)
+    if (keep[v])
+      shape->addPoint(hull.vertices[v], false);
+  shape->recalcLocalAabb();
+  shape->setMargin(shrink > 0 ? kCollisionMargin : btScalar(0.0));
+  return shape;
+}
 }  // namespace
+
+btCollisionShape* makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh, Mobility mobility)
+{
+  if (mobility == Mobility::Static)
+    return new StaticMeshShape(mesh);
+  return makeHull(*mesh);
+}
+
+Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& pose, const void* owner)
+{
+  Collider c;
+  if (shape.kind != Shape::Kind::Mesh)
+  {
+    c.shape.reset(makeCollisionShape(shape));
+    c.ray = RayPrimitive::fromShape(shape, pose, owner);
+    return c;
+  }
+  std::shared_ptr<const MeshData> mesh = loadMesh(shape.mesh_file, shape.scale, c.reason);
+  if (!mesh)
+    return c;
+  c.shape.reset(makeMeshCollisionShape(mesh, mobility));
+  c.ray = RayPrimitive::fromMesh(mesh, pose, owner);
+  c.mesh = mesh;
+  if (mobility == Mobility::Moving)
+    c.note = "collides as the convex hull of its " + std::to_string(mesh->triangleCount()) + " triangles (" +
+             std::to_string(static_cast<btConvexHullShape*>(c.shape.get())->getNumPoints()) +
+             " vertices); only static bodies collide with a mesh's exact triangles";
+  return c;
+}
 
 btCollisionShape* makeCollisionShape(const Shape& s)
 {
@@ -36,8 +129,54 @@ btCollisionShape* makeCollisionShape(const Shape& s)
     case Shape::Kind::Plane:
       shape = new btStaticPlaneShape(btVector3(btScalar(s.normal.x), btScalar(s.normal.y), btScalar(s.normal.z)), 0);
       break;
+    case Shape::Kind::Mesh:
+      return nullptr;  // makeCollider
   }
   return withMargin(shape, s.kind);
+}
+
+bool fitWheelCylinder(const MeshData& mesh, const btTransform& mesh_pose, const btVector3& axis, Shape& cylinder,
+                      btTransform& cylinder_pose)
+{
+  const btVector3 a = axis.normalized();
+  btVector3 u, v;
+  btPlaneSpace1(a, u, v);
+  constexpr int kDirections = 16;
+  btScalar reach[kDirections];
+  std::fill(reach, reach + kDirections, btScalar(-1e30));
+  btScalar along_lo = btScalar(1e30), along_hi = btScalar(-1e30), radius = 0;
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+  {
+    const btVector3 p = mesh_pose * btVector3(mesh.vertices[3 * i], mesh.vertices[3 * i + 1], mesh.vertices[3 * i + 2]);
+    const btScalar along = p.dot(a);
+    along_lo = std::min(along_lo, along);
+    along_hi = std::max(along_hi, along);
+    const btScalar x = p.dot(u), y = p.dot(v);
+    radius = std::max(radius, btSqrt(x * x + y * y));
+    for (int k = 0; k < kDirections; ++k)
+    {
+      const btScalar angle = btScalar(2 * M_PI * k / kDirections);
+      reach[k] = std::max(reach[k], x * btCos(angle) + y * btSin(angle));
+    }
+  }
+  if (!(radius > 0) || !(along_hi > along_lo))
+    return false;
+  for (btScalar r : reach)
+    if (r < btScalar(0.95) * radius)
+      return false;
+  cylinder = Shape();
+  cylinder.kind = Shape::Kind::Cylinder;
+  cylinder.radius = radius;
+  cylinder.length = along_hi - along_lo;
+  // z onto the axis: the shortest rotation, or a half turn about u where the axis is -z.
+  const btVector3 z(0, 0, 1);
+  const btVector3 turn = z.cross(a);
+  const btQuaternion q = turn.length() > btScalar(1e-6)
+                             ? btQuaternion(turn.normalized(), btAcos(btMax(btScalar(-1), btMin(btScalar(1), z.dot(a)))))
+                         : z.dot(a) > 0 ? btQuaternion::getIdentity()
+                                        : btQuaternion(u, btScalar(M_PI));
+  cylinder_pose = btTransform(q, a * ((along_lo + along_hi) / 2));
+  return true;
 }
 
 // The tolerances absorb float rounding of the URDF's angles (cos(pi/2) is 4e-8 in float).
@@ -85,15 +224,15 @@ btCollisionShape* makeAlignedCollisionShape(const Shape& s, const btTransform& p
       }
     }
     case Shape::Kind::Plane:
+    case Shape::Kind::Mesh:
       break;
   }
   return nullptr;
 }
 
-bool shapeFromUrdf(const urdf::Geometry& g, const std::string& link, const Log& log, Shape& s, btTransform& offset)
+bool shapeFromUrdf(const urdf::Geometry& g, const std::string& link, const Log& log, Shape& s)
 {
   s = Shape();
-  offset.setIdentity();
   switch (g.type)
   {
     case urdf::Geometry::BOX:
@@ -118,25 +257,18 @@ bool shapeFromUrdf(const urdf::Geometry& g, const std::string& link, const Log& 
     case urdf::Geometry::MESH:
     {
       const auto& mesh = static_cast<const urdf::Mesh&>(g);
-      MeshBounds b;
       std::string reason;
-      if (!readMeshBounds(mesh.filename, b, reason))
+      s.kind = Shape::Kind::Mesh;
+      s.mesh_uri = mesh.filename;
+      s.scale = mesh.scale;
+      s.mesh_file = resolveUri(mesh.filename, "", reason);
+      if (s.mesh_file.empty())
       {
-        log.warn("link '" + link + "': mesh collision " + reason + "; the link has no collision there");
+        log.warn("link '" + link + "': mesh collision '" + mesh.filename + "' not found (" + reason +
+                 "); the link has no collision there");
         return false;
       }
-      s.kind = Shape::Kind::Box;
-      double scale[3] = {mesh.scale.x, mesh.scale.y, mesh.scale.z};
-      btVector3 centre;
-      for (int i = 0; i < 3; ++i)
-      {
-        s.box_size[i] = std::max(1e-4, (b.max[i] - b.min[i]) * std::abs(scale[i]));
-        centre[i] = btScalar((b.max[i] + b.min[i]) / 2.0 * scale[i]);
-      }
-      offset.setOrigin(centre);
-      log.warn("link '" + link + "': mesh collision '" + mesh.filename +
-               "' is simulated as its bounding box; use box/cylinder/sphere collisions for accurate contact");
-      break;
+      return true;
     }
     default:
       return false;

@@ -2,6 +2,7 @@
 // and the robots, one margin rule, and the URDF geometry each collision is read from.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include <btBulletCollisionCommon.h>
@@ -9,16 +10,46 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/log.h"
+#include "mesh_loader.h"
+#include "ray_caster.h"
 
 namespace bullet_plant
 {
 // Bullet keeps a box's or cylinder's outer size and rounds its edges by the margin. Its 4 cm default
 // is larger than this car's wheels; half a millimetre keeps contacts on the true surface. A sphere's
-// margin is its radius and a plane has none: Bullet's own.
+// margin is its radius and a plane has none: Bullet's own. A mesh on a moving body is its convex hull
+// shrunk by the margin, so with the margin its outer surface is the mesh's (edges rounded by half a
+// millimetre). A mesh on a static body is its exact triangles with the same margin, so what rests on
+// it rests half a millimetre above them: with no margin every resting contact needs Bullet's
+// penetration solver (EPA), which doubled the cost of a step of the car on a mesh floor.
 constexpr btScalar kCollisionMargin = btScalar(0.0005);
 
-// The shape in its own frame (a cylinder along its z axis). The caller owns it.
+// A moving body's mesh is simplified to a convex hull of at most this many vertices: contact cost
+// grows with the vertices GJK walks.
+constexpr int kMaxHullVertices = 100;
+
+// Static bodies (world collisions, robots fixed in the world) take meshes as their triangles; moving
+// bodies as convex hulls (Bullet has no moving concave collision that is fast and robust).
+enum class Mobility { Static, Moving };
+
+// The shape in its own frame (a cylinder along its z axis). The caller owns it. Not for meshes
+// (makeCollider loads them).
 btCollisionShape* makeCollisionShape(const Shape& shape);
+
+// A mesh as a static triangle mesh (Bullet's BVH over the loaded triangles, which the shape keeps
+// alive) or as a moving body's convex hull. The caller owns it.
+btCollisionShape* makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh, Mobility mobility);
+
+// A shape for Bullet and for the sensors' ray caster, at `pose` in its body (or the world).
+struct Collider
+{
+  std::unique_ptr<btCollisionShape> shape;  // null where a mesh cannot be loaded: see reason
+  RayPrimitive ray;
+  std::shared_ptr<const MeshData> mesh;      // a mesh's triangles
+  std::string reason;  // why the mesh could not be loaded ("cannot be read (...)", "has no triangles")
+  std::string note;    // for the log: what a mesh became on a moving body, or ""
+};
+Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& pose, const void* owner);
 
 // The shape as Bullet's axis-aligned primitive where its pose in a body frame is one of its
 // symmetries (no offset; for a box a rotation that permutes its axes, for a cylinder one that puts
@@ -26,10 +57,17 @@ btCollisionShape* makeCollisionShape(const Shape& shape);
 // costs every contact pair a tree walk and a transform per step. Null where a compound is needed.
 btCollisionShape* makeAlignedCollisionShape(const Shape& shape, const btTransform& pose);
 
-// A URDF <collision>'s geometry as a Shape, and the offset of the Shape's frame in the collision's
-// (non-zero for a mesh, which stands in as its bounding box). False, with a warning naming the link,
-// where the geometry cannot be simulated (unreadable mesh, zero or negative size).
-bool shapeFromUrdf(const urdf::Geometry& geometry, const std::string& link, const Log& log, Shape& shape,
-                   btTransform& offset);
+// A wheel-shaped mesh as the cylinder about `axis` that it fills: the vertices' farthest reach from
+// the axis line (through the origin of the frame `mesh_pose` is given in) is the same, within 5 %, in
+// 16 directions around it. Such a mesh rolls smoothly as that cylinder where its hull's facets would
+// bump. False where the mesh is not wheel-shaped about that axis. `cylinder_pose`: in the same
+// frame, its z along the axis.
+bool fitWheelCylinder(const MeshData& mesh, const btTransform& mesh_pose, const btVector3& axis, Shape& cylinder,
+                      btTransform& cylinder_pose);
+
+// A URDF <collision>'s geometry as a Shape (a mesh's filename resolved with resolveUri, relative
+// paths against the working directory as URDF comes as text). False, with a warning naming the link,
+// where the geometry cannot be simulated (a mesh file not found, zero or negative size).
+bool shapeFromUrdf(const urdf::Geometry& geometry, const std::string& link, const Log& log, Shape& shape);
 
 }  // namespace bullet_plant

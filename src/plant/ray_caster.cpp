@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 
 namespace bullet_plant
 {
@@ -92,12 +94,221 @@ double intersectPlane(const double o[3], const double d[3], const double n[3])
   return -height / approach;
 }
 
+// Entry distance of the ray into the box, or +inf if it misses it or it lies beyond `limit`.
+double slabEntry(const float lo[3], const float hi[3], const double o[3], const double inv[3], double limit)
+{
+  double t_near = 0.0, t_far = limit;
+  for (int i = 0; i < 3; ++i)
+  {
+    double t0 = (lo[i] - o[i]) * inv[i], t1 = (hi[i] - o[i]) * inv[i];
+    if (t0 > t1)
+      std::swap(t0, t1);
+    t_near = t0 > t_near ? t0 : t_near;
+    t_far = t1 < t_far ? t1 : t_far;
+    if (t_near > t_far)
+      return kInf;
+  }
+  return t_near;
+}
+
 double wrapAngle(double a)
 {
   a = std::fmod(a, kTwoPi);
   return a < 0 ? a + kTwoPi : a;
 }
 }  // namespace
+
+TriangleBvh::TriangleBvh(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh))
+{
+  const MeshData& m = *mesh_;
+  const int n = m.triangleCount();
+  triangles_.resize(n);
+  std::vector<float> centroids(3 * n);
+  for (int t = 0; t < n; ++t)
+  {
+    Triangle& tri = triangles_[t];
+    const float* v[3];
+    for (int k = 0; k < 3; ++k)
+      v[k] = &m.vertices[3 * m.indices[3 * t + k]];
+    for (int i = 0; i < 3; ++i)
+    {
+      tri.v0[i] = v[0][i];
+      tri.e1[i] = double(v[1][i]) - v[0][i];
+      tri.e2[i] = double(v[2][i]) - v[0][i];
+      centroids[3 * t + i] = (v[0][i] + v[1][i] + v[2][i]) / 3.0f;
+    }
+    tri.index = t;
+  }
+  for (int v = 0; v < m.vertexCount(); ++v)
+  {
+    const double p[3] = {m.vertices[3 * v], m.vertices[3 * v + 1], m.vertices[3 * v + 2]};
+    bound_radius_ = std::max(bound_radius_, norm(p));
+  }
+  nodes_.reserve(2 * n);
+  build(0, n, centroids);
+}
+
+int TriangleBvh::build(int first, int count, std::vector<float>& centroids)
+{
+  const int index = int(nodes_.size());
+  nodes_.emplace_back();
+  Node node;
+  float c_lo[3] = {1e30f, 1e30f, 1e30f}, c_hi[3] = {-1e30f, -1e30f, -1e30f};
+  for (int i = 0; i < 3; ++i)
+  {
+    node.lo[i] = 1e30f;
+    node.hi[i] = -1e30f;
+  }
+  for (int t = first; t < first + count; ++t)
+  {
+    const Triangle& tri = triangles_[t];
+    for (int i = 0; i < 3; ++i)
+    {
+      for (double corner : {tri.v0[i], tri.v0[i] + tri.e1[i], tri.v0[i] + tri.e2[i]})
+      {
+        node.lo[i] = std::min(node.lo[i], std::nextafter(float(corner), -1e30f));
+        node.hi[i] = std::max(node.hi[i], std::nextafter(float(corner), 1e30f));
+      }
+      c_lo[i] = std::min(c_lo[i], centroids[3 * tri.index + i]);
+      c_hi[i] = std::max(c_hi[i], centroids[3 * tri.index + i]);
+    }
+  }
+  constexpr int kLeafSize = 4;
+  if (count <= kLeafSize)
+  {
+    node.first = first;
+    node.count = count;
+    nodes_[index] = node;
+    return index;
+  }
+  int axis = 0;
+  for (int i = 1; i < 3; ++i)
+    if (c_hi[i] - c_lo[i] > c_hi[axis] - c_lo[axis])
+      axis = i;
+  const int half = count / 2;
+  std::nth_element(triangles_.begin() + first, triangles_.begin() + first + half, triangles_.begin() + first + count,
+                   [&](const Triangle& a, const Triangle& b) {
+                     return centroids[3 * a.index + axis] < centroids[3 * b.index + axis];
+                   });
+  build(first, half, centroids);
+  node.first = build(first + half, count - half, centroids);
+  nodes_[index] = node;
+  return index;
+}
+
+std::shared_ptr<const TriangleBvh> TriangleBvh::of(const std::shared_ptr<const MeshData>& mesh)
+{
+  static std::mutex mutex;
+  static std::map<const MeshData*, std::weak_ptr<const TriangleBvh>> built;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::shared_ptr<const TriangleBvh> bvh = built[mesh.get()].lock();
+  if (!bvh)
+  {
+    bvh = std::make_shared<const TriangleBvh>(mesh);
+    built[mesh.get()] = bvh;
+  }
+  return bvh;
+}
+
+double TriangleBvh::intersect(const double o[3], const double d[3], int& triangle) const
+{
+  double inv[3];
+  for (int i = 0; i < 3; ++i)
+    inv[i] = 1.0 / d[i];  // +-inf along an axis the ray does not move on: the slab test still holds
+  double best = kInf;
+  int stack[64], depth = 0;
+  if (slabEntry(nodes_[0].lo, nodes_[0].hi, o, inv, best) == kInf)
+    return kInf;
+  stack[depth++] = 0;
+  while (depth > 0)
+  {
+    const Node& node = nodes_[stack[--depth]];
+    if (node.count > 0)
+    {
+      // Moeller-Trumbore, either side of the triangle
+      for (int k = node.first; k < node.first + node.count; ++k)
+      {
+        const Triangle& tri = triangles_[k];
+        double p[3];
+        cross(d, tri.e2, p);
+        const double det = dot(tri.e1, p);
+        if (std::abs(det) < 1e-300)
+          continue;
+        const double inv_det = 1.0 / det;
+        const double s[3] = {o[0] - tri.v0[0], o[1] - tri.v0[1], o[2] - tri.v0[2]};
+        const double u = dot(s, p) * inv_det;
+        if (u < 0.0 || u > 1.0)
+          continue;
+        double q[3];
+        cross(s, tri.e1, q);
+        const double v = dot(d, q) * inv_det;
+        if (v < 0.0 || u + v > 1.0)
+          continue;
+        const double t = dot(tri.e2, q) * inv_det;
+        if (t > 0.0 && t < best)
+        {
+          best = t;
+          triangle = tri.index;
+        }
+      }
+      continue;
+    }
+    const int a = int(&node - nodes_.data()) + 1, b = node.first;
+    const double ta = slabEntry(nodes_[a].lo, nodes_[a].hi, o, inv, best);
+    const double tb = slabEntry(nodes_[b].lo, nodes_[b].hi, o, inv, best);
+    // the nearer child on top of the stack, so hits there prune the other
+    if (ta <= tb)
+    {
+      if (tb != kInf)
+        stack[depth++] = b;
+      if (ta != kInf)
+        stack[depth++] = a;
+    }
+    else
+    {
+      if (ta != kInf)
+        stack[depth++] = a;
+      stack[depth++] = b;
+    }
+  }
+  return best;
+}
+
+void TriangleBvh::normal(int triangle, double out[3]) const
+{
+  const MeshData& m = *mesh_;
+  const float* v[3];
+  for (int k = 0; k < 3; ++k)
+    v[k] = &m.vertices[3 * m.indices[3 * triangle + k]];
+  const double e1[3] = {double(v[1][0]) - v[0][0], double(v[1][1]) - v[0][1], double(v[1][2]) - v[0][2]};
+  const double e2[3] = {double(v[2][0]) - v[0][0], double(v[2][1]) - v[0][1], double(v[2][2]) - v[0][2]};
+  cross(e1, e2, out);
+  const double length = norm(out);
+  for (int i = 0; length > 0 && i < 3; ++i)
+    out[i] /= length;
+}
+
+RayPrimitive RayPrimitive::fromMesh(const std::shared_ptr<const MeshData>& mesh, const urdf::Pose& pose, const void* owner)
+{
+  RayPrimitive p;
+  p.kind = Shape::Kind::Mesh;
+  p.frame = Frame::fromPose(pose);
+  p.owner = owner;
+  p.mesh = TriangleBvh::of(mesh);
+  p.bound_radius = p.mesh->boundRadius();
+  return p;
+}
+
+const Rgba& RayPrimitive::colourAt(int triangle) const
+{
+  if (mesh && triangle >= 0)
+  {
+    const MeshData::SubMesh& sub = mesh->mesh().subMeshOf(triangle);
+    if (sub.has_colour)
+      return sub.diffuse;
+  }
+  return colour;
+}
 
 RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, const void* owner)
 {
@@ -125,11 +336,13 @@ RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, con
       p.normal[0] = s.normal.x; p.normal[1] = s.normal.y; p.normal[2] = s.normal.z;
       p.bound_radius = kInf;
       break;
+    case Shape::Kind::Mesh:
+      break;  // fromMesh
   }
   return p;
 }
 
-double RayPrimitive::intersect(const double origin[3], const double dir[3]) const
+double RayPrimitive::intersect(const double origin[3], const double dir[3], int* triangle) const
 {
   double o[3], d[3];
   frame.inverseApply(origin, o);
@@ -140,6 +353,14 @@ double RayPrimitive::intersect(const double origin[3], const double dir[3]) cons
     case Shape::Kind::Cylinder: return intersectCylinder(o, d, radius, half_length);
     case Shape::Kind::Sphere: return intersectSphere(o, d, radius);
     case Shape::Kind::Plane: return intersectPlane(o, d, normal);
+    case Shape::Kind::Mesh:
+    {
+      int hit = -1;
+      const double t = mesh->intersect(o, d, hit);
+      if (triangle)
+        *triangle = hit;
+      return t;
+    }
   }
   return kInf;
 }
@@ -157,7 +378,7 @@ double RayCaster::cast(const double origin[3], const double dir[3], double max_r
   return castHit(origin, dir, max_range).distance;
 }
 
-void RayPrimitive::normalAt(const double point[3], double out[3]) const
+void RayPrimitive::normalAt(const double point[3], double out[3], int triangle) const
 {
   double p[3], n[3] = {0, 0, 0};
   frame.inverseApply(point, p);
@@ -203,6 +424,10 @@ void RayPrimitive::normalAt(const double point[3], double out[3]) const
       for (int i = 0; i < 3; ++i)
         n[i] = normal[i];
       break;
+    case Shape::Kind::Mesh:
+      if (triangle >= 0)
+        mesh->normal(triangle, n);
+      break;
   }
   frame.rotate(n, out);
 }
@@ -211,6 +436,7 @@ RayHit RayCaster::castHit(const double origin[3], const double dir[3], double ma
 {
   double best = kInf;
   const RayPrimitive* hit = nullptr;
+  int hit_triangle = -1;
   for (const RayPrimitive* p : primitives_)
   {
     const double* c = p->frame.t;
@@ -223,14 +449,16 @@ RayHit RayCaster::castHit(const double origin[3], const double dir[3], double ma
           along - p->bound_radius > std::min(best, max_range))
         continue;
     }
-    double t = p->intersect(origin, dir);
+    int triangle = -1;
+    double t = p->intersect(origin, dir, &triangle);
     if (t < best)
     {
       best = t;
       hit = p;
+      hit_triangle = triangle;
     }
   }
-  return best <= max_range ? RayHit{best, hit} : RayHit{kInf, nullptr};
+  return best <= max_range ? RayHit{best, hit, hit_triangle} : RayHit{kInf, nullptr, -1};
 }
 
 void RayCaster::castFan(const Frame& sensor, double a0, double da, int n_azimuth, const std::vector<double>& elevations,

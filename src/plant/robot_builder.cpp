@@ -153,9 +153,30 @@ void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool wo
   }
 }
 
+// A wheel-shaped mesh on the link of a continuous joint (whose frame is the joint's) becomes the
+// cylinder it fills about the joint axis, said in the collider's note; `shape` and `in_link` follow.
+bool fitWheelToJoint(const urdf::Joint* joint, Collider& collider, Shape& shape, btTransform& in_link)
+{
+  Shape wheel;
+  btTransform wheel_in_link;
+  if (!joint || joint->type != urdf::Joint::CONTINUOUS || vec(joint->axis).length2() == 0 ||
+      !fitWheelCylinder(*collider.mesh, in_link, vec(joint->axis), wheel, wheel_in_link))
+    return false;
+  collider.shape.reset(makeCollisionShape(wheel));
+  collider.note = "is wheel-shaped about continuous joint '" + joint->name + "': it collides as a cylinder of radius " +
+                  std::to_string(wheel.radius) + " m and length " + std::to_string(wheel.length) +
+                  " m about the joint axis, which rolls smoothly where its hull's facets would bump";
+  wheel.mesh_uri = shape.mesh_uri;
+  shape = wheel;
+  in_link = wheel_in_link;
+  return true;
+}
+
 // 3. Collision shapes, in each body's COM frame: a compound of the links' shapes, or the only shape
-// itself where it is aligned with the body's frame. Surface friction per body.
-void collisionShapes(Robot::Internals& r, const LinkPlacement& placement)
+// itself where it is aligned with the body's frame. Meshes on the base of a robot fixed in the world
+// are their triangles, elsewhere their convex hulls. Surface friction per body.
+void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const std::vector<BodyPlan>& plans,
+                     bool fixed_base)
 {
   const urdf::ModelInterface& model = *r.description.model;
   std::vector<Body>& bodies = r.multibody.bodies;
@@ -166,22 +187,37 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement)
     Body& body = bodies[kv.second.first];
     btTransform com_from_link = body.urdf_from_com.inverse() * kv.second.second;
     r.multibody.link_in_body[kv.first] = {kv.second.first, com_from_link};
+    const Mobility mobility = fixed_base && kv.second.first == 0 ? Mobility::Static : Mobility::Moving;
     for (const urdf::CollisionSharedPtr& c : link->collision_array)
     {
       if (!c || !c->geometry)
         continue;
       Shape shape;
-      btTransform mesh_offset;
-      if (!shapeFromUrdf(*c->geometry, link->name, r.world->log, shape, mesh_offset))
+      if (!shapeFromUrdf(*c->geometry, link->name, r.world->log, shape))
         continue;
-      btTransform in_com = com_from_link * toBullet(c->origin) * mesh_offset;
+      btTransform in_com = com_from_link * toBullet(c->origin);
+      Collider collider = makeCollider(shape, mobility, fromBullet(in_com), &r);
+      if (!collider.shape)
+      {
+        r.world->log.warn("link '" + link->name + "': mesh collision '" + shape.mesh_uri + "' " + collider.reason +
+                          "; the link has no collision there");
+        continue;
+      }
+      if (collider.mesh && mobility == Mobility::Moving && link->name == body.link)
+      {
+        btTransform in_link = toBullet(c->origin);
+        if (fitWheelToJoint(plans[kv.second.first].joint, collider, shape, in_link))
+          in_com = com_from_link * in_link;
+      }
+      if (!collider.note.empty())
+        r.world->log.info("link '" + link->name + "' of '" + r.name + "': mesh '" + shape.mesh_uri + "' " + collider.note);
       if (!body.compound)
         body.compound.reset(new btCompoundShape(false, 4));
-      body.child_shapes.emplace_back(makeCollisionShape(shape));
+      body.child_shapes.push_back(std::move(collider.shape));
       body.compound->addChildShape(in_com, body.child_shapes.back().get());
       body.shape = body.compound.get();
       last_child[kv.second.first] = shape;
-      body.ray_shapes.push_back(RayPrimitive::fromShape(shape, fromBullet(in_com), &r));
+      body.ray_shapes.push_back(std::move(collider.ray));
       if (link->visual && link->visual->material)
       {
         const urdf::Color& colour = link->visual->material->color;
@@ -430,12 +466,14 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   if (!root)
     throw DescriptionError("URDF of '" + r.name + "' has no root link");
   const bool world_rooted = root->name == "world";
+  // A static model (<gazebo><static>) never moves: its base is fixed where it is spawned.
+  const bool fixed_base = world_rooted || r.description.is_static;
 
   LinkPlacement placement;
   const std::vector<BodyPlan> plans = planBodies(r, root, placement);
   massProperties(r, placement, world_rooted);
-  collisionShapes(r, placement);
-  const std::vector<double> axis_inertia = createMultibody(r, plans, world_rooted, pose);
+  collisionShapes(r, placement, plans, fixed_base);
+  const std::vector<double> axis_inertia = createMultibody(r, plans, fixed_base, pose);
   createJoints(r, plans, axis_inertia, initial_joints);
   addColliders(r);
   createHandles(r);

@@ -167,10 +167,13 @@ void detail::SensorRendering::render(Camera& camera, const RayCaster& caster, co
         double point[3] = {pose.t[0] + dir[0] * hit.distance, pose.t[1] + dir[1] * hit.distance,
                            pose.t[2] + dir[2] * hit.distance};
         double normal[3];
-        hit.primitive->normalAt(point, normal);
+        hit.primitive->normalAt(point, normal, hit.triangle);
+        if (normal[0] * dir[0] + normal[1] * dir[1] + normal[2] * dir[2] > 0)  // a triangle seen from behind
+          for (double& n : normal)
+            n = -n;
         const double diffuse = std::max(0.0, normal[0] * light[0] + normal[1] * light[1] + normal[2] * light[2]);
         const double shade = kAmbient + (1.0 - kAmbient) * diffuse;
-        const Rgba& c = hit.primitive->colour;
+        const Rgba& c = hit.primitive->colourAt(hit.triangle);
         colour[0] = float(c.r * shade);
         colour[1] = float(c.g * shade);
         colour[2] = float(c.b * shade);

@@ -76,23 +76,23 @@ World::World(const WorldDescription& description) : in_(new Internals)
 
   for (const StaticCollision& c : description.collisions)
   {
-    if (c.shape.kind == Shape::Kind::Mesh)  // mesh physics comes with the meshes branch
+    Collider collider = makeCollider(c.shape, Mobility::Static, c.pose, nullptr);
+    if (!collider.shape)
     {
-      w.log.warn("world: collision '" + c.name + "': mesh '" + c.shape.mesh_file + "' is not built yet; left out");
+      w.log.warn("world: collision '" + c.name + "': mesh '" + c.shape.mesh_uri + "' " + collider.reason +
+                 "; it is left out");
       continue;
     }
-    btCollisionShape* shape = makeCollisionShape(c.shape);
-    btTransform pose = toBullet(c.pose);
-    w.static_shapes.emplace_back(shape);
+    w.static_shapes.push_back(std::move(collider.shape));
     w.static_objects.emplace_back(new btCollisionObject());
     btCollisionObject* object = w.static_objects.back().get();
-    object->setCollisionShape(shape);
-    object->setWorldTransform(pose);
+    object->setCollisionShape(w.static_shapes.back().get());
+    object->setWorldTransform(toBullet(c.pose));
     object->setFriction(btScalar(c.mu));
     object->setRestitution(0);
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    w.static_ray_shapes.push_back(RayPrimitive::fromShape(c.shape, c.pose, nullptr));
+    w.static_ray_shapes.push_back(std::move(collider.ray));
     w.static_ray_shapes.back().colour = c.colour;
   }
   for (const std::string& warning : description.warnings)

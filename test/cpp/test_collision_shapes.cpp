@@ -7,7 +7,11 @@
 #include <string>
 #include <vector>
 
+#include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+
 #include "collision_shapes.h"
+#include "mesh_fixtures.h"
 
 using namespace bullet_plant;
 
@@ -120,18 +124,17 @@ TEST(ShapeFromUrdf, ReadsPrimitivesAndRefusesNonPositiveSizesWithAWarning)
 {
   Captured c;
   Shape s;
-  btTransform offset;
   urdf::Cylinder wheel;
   wheel.radius = 0.032;
   wheel.length = 0.025;
-  ASSERT_TRUE(shapeFromUrdf(wheel, "wheel", c.log, s, offset));
+  ASSERT_TRUE(shapeFromUrdf(wheel, "wheel", c.log, s));
   EXPECT_EQ(s.kind, Shape::Kind::Cylinder);
   EXPECT_DOUBLE_EQ(s.radius, 0.032);
   EXPECT_TRUE(c.warnings.empty());
 
   urdf::Box flat;
   flat.dim = urdf::Vector3(0.1, 0.0, 0.1);
-  EXPECT_FALSE(shapeFromUrdf(flat, "chassis", c.log, s, offset));
+  EXPECT_FALSE(shapeFromUrdf(flat, "chassis", c.log, s));
   ASSERT_EQ(c.warnings.size(), 1u);
   EXPECT_NE(c.warnings[0].find("'chassis'"), std::string::npos) << c.warnings[0];
 }
@@ -140,10 +143,123 @@ TEST(ShapeFromUrdf, AMissingMeshFileIsAWarningNamingTheLink)
 {
   Captured c;
   Shape s;
-  btTransform offset;
   urdf::Mesh mesh;
   mesh.filename = "/nonexistent/track.stl";
-  EXPECT_FALSE(shapeFromUrdf(mesh, "track", c.log, s, offset));
+  EXPECT_FALSE(shapeFromUrdf(mesh, "track", c.log, s));
   ASSERT_EQ(c.warnings.size(), 1u);
   EXPECT_NE(c.warnings[0].find("'track'"), std::string::npos) << c.warnings[0];
+  EXPECT_NE(c.warnings[0].find("/nonexistent/track.stl"), std::string::npos) << c.warnings[0];
+}
+
+namespace
+{
+Shape meshShape(const std::string& file)
+{
+  Shape s;
+  s.kind = Shape::Kind::Mesh;
+  s.mesh_uri = "file://" + file;
+  s.mesh_file = file;
+  return s;
+}
+
+// A UV sphere of radius r with `rings` x `segments` quads, as an OBJ: many more vertices than a
+// moving body's hull keeps.
+std::string sphereObj(const std::string& dir, double r, int rings, int segments)
+{
+  std::string obj;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j)
+    {
+      const double polar = M_PI * i / rings, azimuth = 2 * M_PI * j / segments;
+      obj += "v " + std::to_string(r * std::sin(polar) * std::cos(azimuth)) + " " +
+             std::to_string(r * std::sin(polar) * std::sin(azimuth)) + " " + std::to_string(r * std::cos(polar)) + "\n";
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j)
+    {
+      const int a = i * segments + j + 1, b = i * segments + (j + 1) % segments + 1;
+      obj += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(b + segments) + "\n";
+      obj += "f " + std::to_string(a) + " " + std::to_string(b + segments) + " " + std::to_string(a + segments) + "\n";
+    }
+  return mesh_fixtures::write(dir, "ball.obj", obj);
+}
+}  // namespace
+
+TEST(MakeCollider, AStaticMeshIsItsExactTrianglesWithTheHalfMillimetreMargin)
+{
+  const std::string dir = mesh_fixtures::tempDir();
+  const float lo[3] = {-1, -1, -0.1f}, hi[3] = {1, 1, 0};
+  const Collider c = makeCollider(meshShape(mesh_fixtures::binaryBoxStl(dir, "slab.stl", lo, hi)), Mobility::Static,
+                                  urdf::Pose(), nullptr);
+  ASSERT_TRUE(c.shape) << c.reason;
+  auto* mesh = dynamic_cast<btBvhTriangleMeshShape*>(c.shape.get());
+  ASSERT_NE(mesh, nullptr) << "a static mesh collides as Bullet's BVH triangle mesh";
+  EXPECT_FLOAT_EQ(mesh->getMargin(), kCollisionMargin);
+  EXPECT_EQ(mesh->getMeshInterface()->getNumSubParts(), 1);
+  btVector3 aabb_lo, aabb_hi;
+  mesh->getAabb(btTransform::getIdentity(), aabb_lo, aabb_hi);
+  EXPECT_NEAR(aabb_hi.z(), kCollisionMargin, 1e-6);
+  EXPECT_NEAR(aabb_lo.x(), -1.0f - kCollisionMargin, 1e-6);
+  EXPECT_TRUE(c.note.empty());
+  EXPECT_EQ(c.ray.kind, Shape::Kind::Mesh);
+}
+
+TEST(MakeCollider, AMovingMeshIsItsConvexHullOfAtMostTheVertexBound)
+{
+  const std::string dir = mesh_fixtures::tempDir();
+  const Collider ball = makeCollider(meshShape(sphereObj(dir, 0.5, 24, 32)), Mobility::Moving, urdf::Pose(), nullptr);
+  ASSERT_TRUE(ball.shape) << ball.reason;
+  auto* hull = dynamic_cast<btConvexHullShape*>(ball.shape.get());
+  ASSERT_NE(hull, nullptr);
+  EXPECT_LE(hull->getNumPoints(), kMaxHullVertices);
+  EXPECT_GE(hull->getNumPoints(), 20);
+  // Still the ball: its support along any axis within a few millimetres of the radius.
+  for (const btVector3& d : {btVector3(1, 0, 0), btVector3(0, 0, -1), btVector3(1, 1, 1).normalized()})
+    EXPECT_NEAR(d.dot(hull->localGetSupportingVertex(d)), 0.5f, 0.02f);
+  EXPECT_NE(ball.note.find("convex hull"), std::string::npos) << ball.note;
+
+  // A box's hull is the box: its outer size with the margin is the mesh's.
+  const float lo[3] = {-0.1f, -0.05f, 0.0f}, hi[3] = {0.1f, 0.05f, 0.06f};
+  const Collider box = makeCollider(meshShape(mesh_fixtures::binaryBoxStl(dir, "slab.stl", lo, hi)), Mobility::Moving,
+                                    urdf::Pose(), nullptr);
+  auto* box_hull = dynamic_cast<btConvexHullShape*>(box.shape.get());
+  ASSERT_NE(box_hull, nullptr);
+  EXPECT_EQ(box_hull->getNumPoints(), 8);
+  EXPECT_FLOAT_EQ(box_hull->getMargin(), kCollisionMargin);
+  EXPECT_NEAR(box_hull->localGetSupportingVertex(btVector3(0, 0, -1)).z(), 0.0f, 2e-5);
+  EXPECT_NEAR(box_hull->localGetSupportingVertex(btVector3(1, 0, 0)).x(), 0.1f, 2e-5);
+}
+
+TEST(MakeCollider, AnUnreadableMeshHasNoShapeAndAReason)
+{
+  const std::string dir = mesh_fixtures::tempDir();
+  const Collider c = makeCollider(meshShape(mesh_fixtures::write(dir, "bad.stl", "not a mesh")), Mobility::Static,
+                                  urdf::Pose(), nullptr);
+  EXPECT_FALSE(c.shape);
+  EXPECT_FALSE(c.reason.empty());
+}
+
+TEST(FitWheelCylinder, AWheelMeshIsTheCylinderAboutItsAxisAndABoxIsNot)
+{
+  const std::string dir = mesh_fixtures::tempDir();
+  std::string reason;
+  auto wheel = loadMesh(mesh_fixtures::wheelObj(dir, "wheel.obj", 0.05, 0.03, 24), urdf::Vector3(1, 1, 1), reason);
+  ASSERT_TRUE(wheel) << reason;
+  Shape cylinder;
+  btTransform pose;
+  ASSERT_TRUE(fitWheelCylinder(*wheel, btTransform::getIdentity(), btVector3(0, 1, 0), cylinder, pose));
+  EXPECT_EQ(cylinder.kind, Shape::Kind::Cylinder);
+  EXPECT_NEAR(cylinder.radius, 0.05, 1e-6);
+  EXPECT_NEAR(cylinder.length, 0.03, 1e-6);
+  EXPECT_NEAR(btFabs((pose.getBasis() * btVector3(0, 0, 1)).y()), 1.0f, 1e-6) << "its z along the axis";
+  EXPECT_NEAR(pose.getOrigin().length(), 0.0f, 1e-6);
+
+  // Not about another axis, nor about the wheel's axis moved off its centre.
+  EXPECT_FALSE(fitWheelCylinder(*wheel, btTransform::getIdentity(), btVector3(1, 0, 0), cylinder, pose));
+  EXPECT_FALSE(fitWheelCylinder(*wheel, btTransform(btQuaternion::getIdentity(), btVector3(0.02f, 0, 0)),
+                                btVector3(0, 1, 0), cylinder, pose));
+  // A square prism about the same axis is no wheel.
+  auto square = loadMesh(mesh_fixtures::wheelObj(dir, "square.obj", 0.05, 0.03, 4), urdf::Vector3(1, 1, 1), reason);
+  ASSERT_TRUE(square) << reason;
+  EXPECT_FALSE(fitWheelCylinder(*square, btTransform::getIdentity(), btVector3(0, 1, 0), cylinder, pose));
 }

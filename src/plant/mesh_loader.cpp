@@ -1,0 +1,171 @@
+#include "mesh_loader.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include <assimp/Importer.hpp>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+namespace bullet_plant
+{
+namespace
+{
+bool isCollada(const std::string& file)
+{
+  if (file.size() < 4)
+    return false;
+  std::string ext = file.substr(file.size() - 4);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext == ".dae";
+}
+
+MeshData::SubMesh subMeshFor(const aiMaterial* material)
+{
+  MeshData::SubMesh s;
+  if (!material)
+    return s;
+  aiString name;
+  material->Get(AI_MATKEY_NAME, name);
+  aiColor4D colour;
+  // Assimp gives files without materials (STL, OBJ without .mtl) its default material.
+  if (std::string(name.C_Str()) != AI_DEFAULT_MATERIAL_NAME &&
+      material->Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+  {
+    s.has_colour = true;
+    s.diffuse = {colour.r, colour.g, colour.b, colour.a};
+  }
+  aiString texture;
+  if (material->GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS)
+    s.texture = texture.C_Str();
+  return s;
+}
+
+// Every mesh instance of the node tree, in the scene's frame, appended to `out`.
+void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, MeshData& out)
+{
+  const aiMatrix4x4 transform = parent * node.mTransformation;
+  for (unsigned k = 0; k < node.mNumMeshes; ++k)
+  {
+    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[k]];
+    const int first_vertex = out.vertexCount();
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v)
+    {
+      const aiVector3D p = transform * mesh.mVertices[v];
+      out.vertices.insert(out.vertices.end(), {p.x, p.y, p.z});
+    }
+    MeshData::SubMesh sub = subMeshFor(scene.mMaterials ? scene.mMaterials[mesh.mMaterialIndex] : nullptr);
+    sub.first_triangle = out.triangleCount();
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f)
+    {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3)
+        continue;  // points and lines: nothing to collide with
+      for (int i = 0; i < 3; ++i)
+        out.indices.push_back(first_vertex + int(face.mIndices[i]));
+    }
+    sub.triangle_count = out.triangleCount() - sub.first_triangle;
+    if (sub.triangle_count > 0)
+      out.submeshes.push_back(sub);
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    appendNode(scene, *node.mChildren[c], transform, out);
+}
+
+// One vertex per position: Assimp keeps a corner once per normal (an STL facet's, a hard edge's).
+void weldVertices(MeshData& mesh)
+{
+  std::map<std::array<float, 3>, int> index_of;
+  std::vector<int> remap(mesh.vertexCount());
+  std::vector<float> welded;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const std::array<float, 3> p{{mesh.vertices[3 * v], mesh.vertices[3 * v + 1], mesh.vertices[3 * v + 2]}};
+    auto inserted = index_of.emplace(p, int(welded.size() / 3));
+    if (inserted.second)
+      welded.insert(welded.end(), p.begin(), p.end());
+    remap[v] = inserted.first->second;
+  }
+  mesh.vertices.swap(welded);
+  for (int& i : mesh.indices)
+    i = remap[i];
+}
+
+std::shared_ptr<MeshData> readMesh(const std::string& file, const urdf::Vector3& scale, std::string& reason)
+{
+  Assimp::Importer importer;
+  // Points and lines are dropped below.
+  const aiScene* scene = importer.ReadFile(
+      file, aiProcess_Triangulate | aiProcess_SortByPType);
+  if (!scene || !scene->mRootNode)
+  {
+    reason = "cannot be read (" + std::string(importer.GetErrorString()) + ")";
+    return nullptr;
+  }
+  auto mesh = std::make_shared<MeshData>();
+  mesh->file = file;
+  appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), *mesh);
+  if (mesh->indices.empty())
+  {
+    reason = "has no triangles";
+    return nullptr;
+  }
+  // Assimp turns every Collada file y up (its <unit> applied); Gazebo's frame is z up.
+  const bool y_up = isCollada(file);
+  const double s[3] = {scale.x, scale.y, scale.z};
+  for (size_t v = 0; v < mesh->vertices.size(); v += 3)
+  {
+    float* p = &mesh->vertices[v];
+    if (y_up)
+    {
+      const float y = p[1];
+      p[1] = -p[2];
+      p[2] = y;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] = float(p[i] * s[i]);
+      mesh->min[i] = v == 0 ? p[i] : std::min(mesh->min[i], p[i]);
+      mesh->max[i] = v == 0 ? p[i] : std::max(mesh->max[i], p[i]);
+    }
+  }
+  weldVertices(*mesh);
+  return mesh;
+}
+}  // namespace
+
+const MeshData::SubMesh& MeshData::subMeshOf(int triangle) const
+{
+  auto after = std::upper_bound(submeshes.begin(), submeshes.end(), triangle,
+                                [](int t, const SubMesh& s) { return t < s.first_triangle; });
+  return *(after - 1);
+}
+
+std::shared_ptr<const MeshData> loadMesh(const std::string& file, const urdf::Vector3& scale, std::string& reason)
+{
+  if (!(scale.x != 0 && scale.y != 0 && scale.z != 0) ||
+      !std::isfinite(scale.x + scale.y + scale.z))
+  {
+    reason = "has a zero or non-finite scale";
+    return nullptr;
+  }
+  using Key = std::tuple<std::string, double, double, double>;
+  static std::mutex mutex;
+  static std::map<Key, std::weak_ptr<const MeshData>> cache;
+  const Key key(file, scale.x, scale.y, scale.z);
+  std::lock_guard<std::mutex> lock(mutex);
+  if (std::shared_ptr<const MeshData> loaded = cache[key].lock())
+    return loaded;
+  std::shared_ptr<const MeshData> mesh = readMesh(file, scale, reason);
+  if (mesh)
+    cache[key] = mesh;
+  return mesh;
+}
+
+}  // namespace bullet_plant

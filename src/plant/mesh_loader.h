@@ -1,0 +1,42 @@
+// Mesh files as the plant simulates them: STL (ASCII and binary), Collada (.dae) and OBJ read
+// through Assimp into one triangle list at a given scale, with each sub-mesh's diffuse colour and
+// texture for the cameras. Collada files come out z up in metres, as Gazebo reads them: the file's
+// <unit> is applied and a Y_UP (or X_UP) file is turned so its up axis is z.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bullet_plant/geometry.h"
+
+namespace bullet_plant
+{
+struct MeshData
+{
+  // A run of triangles drawn with one material.
+  struct SubMesh
+  {
+    int first_triangle = 0, triangle_count = 0;
+    bool has_colour = false;  // false: the file gives no diffuse colour (STL); use the visual's
+    Rgba diffuse;
+    std::string texture;      // the diffuse texture's file name as the file writes it, or ""
+  };
+  std::string file;
+  std::vector<float> vertices;  // x y z per vertex, scaled, in metres (Bullet's btScalar is float)
+  std::vector<int> indices;     // three vertex indices per triangle
+  std::vector<SubMesh> submeshes;
+  float min[3] = {0, 0, 0}, max[3] = {0, 0, 0};  // bounds of the vertices
+
+  int triangleCount() const { return int(indices.size() / 3); }
+  int vertexCount() const { return int(vertices.size() / 3); }
+  // The sub-mesh a triangle belongs to.
+  const SubMesh& subMeshOf(int triangle) const;
+};
+
+// The mesh in `file` (a resolved path) scaled by `scale`, loaded once per (file, scale) while any
+// copy is alive. Null with `reason` saying why (unreadable or unknown format, no triangles, a zero
+// scale).
+std::shared_ptr<const MeshData> loadMesh(const std::string& file, const urdf::Vector3& scale, std::string& reason);
+
+}  // namespace bullet_plant

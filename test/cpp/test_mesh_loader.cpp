@@ -1,0 +1,145 @@
+// mesh_loader.cpp: STL (ASCII, binary), Collada (unit, up axis) and OBJ through Assimp, at a scale,
+// with the sub-meshes' colours, cached per (file, scale), and failures with their reasons.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "mesh_fixtures.h"
+#include "mesh_loader.h"
+
+using namespace bullet_plant;
+using namespace mesh_fixtures;
+
+namespace
+{
+const urdf::Vector3 kUnit(1, 1, 1);
+
+std::shared_ptr<const MeshData> load(const std::string& file, const urdf::Vector3& scale = kUnit)
+{
+  std::string reason;
+  std::shared_ptr<const MeshData> mesh = loadMesh(file, scale, reason);
+  EXPECT_TRUE(mesh) << file << ": " << reason;
+  return mesh;
+}
+
+void expectBounds(const MeshData& m, float x0, float y0, float z0, float x1, float y1, float z1)
+{
+  EXPECT_NEAR(m.min[0], x0, 1e-6);
+  EXPECT_NEAR(m.min[1], y0, 1e-6);
+  EXPECT_NEAR(m.min[2], z0, 1e-6);
+  EXPECT_NEAR(m.max[0], x1, 1e-6);
+  EXPECT_NEAR(m.max[1], y1, 1e-6);
+  EXPECT_NEAR(m.max[2], z1, 1e-6);
+}
+}  // namespace
+
+TEST(LoadMesh, ReadsAnAsciiStl)
+{
+  const std::string dir = tempDir();
+  auto mesh = load(write(dir, "wedge.stl",
+                         "solid wedge\n"
+                         " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 2 0 0\n   vertex 0 3 0\n"
+                         "  endloop\n endfacet\n"
+                         " facet normal 0 -1 0\n  outer loop\n   vertex 0 0 0\n   vertex 0 0 1\n   vertex 2 0 0\n"
+                         "  endloop\n endfacet\n"
+                         "endsolid wedge\n"));
+  ASSERT_TRUE(mesh);
+  EXPECT_EQ(mesh->triangleCount(), 2);
+  EXPECT_EQ(mesh->vertexCount(), 4) << "shared corners are joined";
+  expectBounds(*mesh, 0, 0, 0, 2, 3, 1);
+  ASSERT_EQ(mesh->submeshes.size(), 1u);
+  EXPECT_FALSE(mesh->submeshes[0].has_colour) << "an STL has no colour of its own";
+}
+
+TEST(LoadMesh, ReadsABinaryStlAtAScale)
+{
+  const std::string dir = tempDir();
+  const float lo[3] = {-0.1f, -0.05f, 0.0f}, hi[3] = {0.1f, 0.05f, 0.06f};
+  const std::string file = binaryBoxStl(dir, "slab.stl", lo, hi);
+  auto mesh = load(file);
+  ASSERT_TRUE(mesh);
+  EXPECT_EQ(mesh->triangleCount(), 12);
+  EXPECT_EQ(mesh->vertexCount(), 8);
+  expectBounds(*mesh, -0.1f, -0.05f, 0, 0.1f, 0.05f, 0.06f);
+
+  auto scaled = load(file, urdf::Vector3(2, 3, 0.5));
+  ASSERT_TRUE(scaled);
+  expectBounds(*scaled, -0.2f, -0.15f, 0, 0.2f, 0.15f, 0.03f);
+}
+
+TEST(LoadMesh, LoadsAFileOncePerScaleWhileACopyIsAlive)
+{
+  const std::string dir = tempDir();
+  const float lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  const std::string file = binaryBoxStl(dir, "cube.stl", lo, hi);
+  auto first = load(file);
+  EXPECT_EQ(load(file).get(), first.get());
+  EXPECT_NE(load(file, urdf::Vector3(2, 2, 2)).get(), first.get());
+}
+
+TEST(LoadMesh, AppliesAColladaFilesUnitAndTurnsItsYUpToZUp)
+{
+  const std::string dir = tempDir();
+  // In centimetres, y up: the corner at y = 100 cm is 1 m above the others.
+  auto y_up = load(colladaTriangle(dir, "y_up.dae", "0.01", "Y_UP", "0 0 0 100 0 0 0 100 0"));
+  ASSERT_TRUE(y_up);
+  EXPECT_EQ(y_up->triangleCount(), 1);
+  expectBounds(*y_up, 0, 0, 0, 1, 0, 1);
+
+  // In metres, z up: as written.
+  auto z_up = load(colladaTriangle(dir, "z_up.dae", "1", "Z_UP", "0 0 0 2 0 0 0 0 3"));
+  ASSERT_TRUE(z_up);
+  expectBounds(*z_up, 0, 0, 0, 2, 0, 3);
+}
+
+TEST(LoadMesh, KeepsEachSubMeshsDiffuseColourAndTexture)
+{
+  const std::string dir = tempDir();
+  auto dae = load(colladaTriangle(dir, "green.dae", "1", "Z_UP", "0 0 0 1 0 0 0 1 0", "0.1 0.8 0.2 1"));
+  ASSERT_TRUE(dae);
+  ASSERT_EQ(dae->submeshes.size(), 1u);
+  EXPECT_TRUE(dae->submeshes[0].has_colour);
+  EXPECT_NEAR(dae->submeshes[0].diffuse.g, 0.8f, 1e-6);
+
+  write(dir, "paint.mtl",
+        "newmtl red\nKd 1 0 0\n"
+        "newmtl blue\nKd 0 0 1\nmap_Kd stripes.png\n");
+  auto obj = load(write(dir, "two.obj",
+                        "mtllib paint.mtl\n"
+                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\n"
+                        "usemtl red\nf 1 2 3\n"
+                        "usemtl blue\nf 1 2 4\nf 2 5 4\n"));
+  ASSERT_TRUE(obj);
+  EXPECT_EQ(obj->triangleCount(), 3);
+  ASSERT_EQ(obj->submeshes.size(), 2u);
+  const MeshData::SubMesh& red = obj->subMeshOf(obj->submeshes[0].first_triangle);
+  const MeshData::SubMesh& blue = obj->subMeshOf(obj->submeshes[1].first_triangle + 1);
+  EXPECT_EQ(red.triangle_count + blue.triangle_count, 3);
+  EXPECT_TRUE(red.has_colour && blue.has_colour);
+  // The order of the sub-meshes is Assimp's; the colours go with their own triangles.
+  const bool red_first = red.diffuse.r > 0.5f;
+  const MeshData::SubMesh& one = red_first ? red : blue;
+  const MeshData::SubMesh& two = red_first ? blue : red;
+  EXPECT_EQ(one.triangle_count, 1);
+  EXPECT_FLOAT_EQ(one.diffuse.r, 1.0f);
+  EXPECT_EQ(two.triangle_count, 2);
+  EXPECT_FLOAT_EQ(two.diffuse.b, 1.0f);
+  EXPECT_EQ(two.texture, "stripes.png");
+}
+
+TEST(LoadMesh, SaysWhyAMeshCannotBeLoaded)
+{
+  const std::string dir = tempDir();
+  std::string reason;
+  EXPECT_FALSE(loadMesh(dir + "/missing.stl", kUnit, reason));
+  EXPECT_NE(reason.find("cannot be read"), std::string::npos) << reason;
+
+  reason.clear();
+  EXPECT_FALSE(loadMesh(write(dir, "points.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n"), kUnit, reason));
+  EXPECT_FALSE(reason.empty());
+
+  reason.clear();
+  const float lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
+  EXPECT_FALSE(loadMesh(binaryBoxStl(dir, "box.stl", lo, hi), urdf::Vector3(1, 0, 1), reason));
+  EXPECT_NE(reason.find("scale"), std::string::npos) << reason;
+}
