@@ -1,0 +1,85 @@
+"""A Gazebo user's package as they ship it (test/fixtures/gazebo_pkg: a model found through the
+package's gazebo_ros export, with a Collada floor in centimetres and STL walls, and a world that
+includes it by model:// with its own name and pose), run through the Python module: the car lands on
+the mesh floor, drives along the mesh walls and stops against one; a static URDF body holds still
+under a landing car."""
+import os
+
+import numpy as np
+import pytest
+
+from plant_helpers import hold_steering
+from tianracer_description import bullet_plant
+
+FIXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'fixtures')
+TRACK_WORLD = os.path.join(FIXTURES, 'gazebo_pkg', 'worlds', 'track.world')
+FLOOR_TOP = 0.5   # the include's <pose> lifts the track by 0.5 m (the world adds a ground plane at 0)
+END_WALL = 11.0   # the end wall's near face, m along x
+COMMAND = 31.25   # rad/s on the rear wheels: 1 m/s
+
+
+@pytest.fixture
+def track(monkeypatch, urdf_xml, control_config):
+    # The fixture package on ROS_PACKAGE_PATH: model://race_track resolves through its export.
+    monkeypatch.setenv('ROS_PACKAGE_PATH', FIXTURES + os.pathsep + os.environ['ROS_PACKAGE_PATH'])
+    world = bullet_plant.World.from_file(TRACK_WORLD)
+    world.echo = False
+    world.load_params(control_config)
+    return world
+
+
+def test_the_included_model_is_the_newest_sdf_of_its_model_config_at_the_includes_pose(track):
+    # A ray down at x = 5 m meets the Collada floor at the include's height (the older SDF the
+    # model.config also lists has a 1 m box at the origin instead).
+    assert track.cast_ray((5.0, 0.0, 2.0), (0, 0, -1), 10.0) == pytest.approx(2.0 - FLOOR_TOP, abs=1e-4)
+    assert track.cast_ray((0.0, 0.0, 2.0), (0, 0, -1), 10.0) == pytest.approx(2.0 - FLOOR_TOP, abs=1e-4)
+    # The STL walls (relative URI in model.sdf) stand 0.6 m either side of the centre line.
+    assert track.cast_ray((5.0, 0.0, FLOOR_TOP + 0.1), (0, 1, 0), 10.0) == pytest.approx(0.6, abs=1e-4)
+    errors = [text for level, text in track.messages() if level in ('ERROR', 'WARN') and 'race_track' in text]
+    assert not errors, errors
+
+
+def test_a_car_dropped_onto_the_collada_floor_lands_drives_along_the_stl_walls_and_stops_at_one(track, urdf_xml):
+    car = track.spawn(urdf_xml, 'tianracer', pose=(0, 0, FLOOR_TOP + 1.0, 0, 0, 0))
+    hold_steering(car)
+    track.step(2000)
+    assert car.base_pose()[2] == pytest.approx(FLOOR_TOP, abs=1e-3), 'rests on the floor'
+    track.step(1000)
+    assert car.base_pose()[2] == pytest.approx(FLOOR_TOP, abs=1e-3), 'stays on it'
+
+    car.enable_sensor('lidar')
+    for joint in ('left_rear_wheel_joint', 'right_rear_wheel_joint'):
+        car.set_command(joint, COMMAND)
+    closest = np.inf
+    for _ in range(140):  # 14 s: 10 m along the walls, then against the end wall
+        track.step(100)
+        ranges = np.asarray(car.scan('lidar')['ranges'])
+        assert not np.any(ranges < 0), 'a lidar return inside a wall (-inf: closer than range_min)'
+        closest = min(closest, ranges[np.isfinite(ranges)].min())
+    x, y, z = car.base_pose()[:3]
+    assert x > 10.0, 'drove 10 m'
+    assert x < END_WALL, 'did not pass through the end wall'
+    assert abs(y) < 0.5 and z == pytest.approx(FLOOR_TOP, abs=0.02), 'between the walls, on the floor'
+    assert np.hypot(*car.base_twist()[0][:2]) < 0.05, 'stopped against the wall'
+    assert closest > 0.0
+
+
+def slab_urdf(is_static):
+    static = '<gazebo><static>true</static></gazebo>' if is_static else ''
+    return f"""<robot name="slab"><link name="slab">
+  <inertial><mass value="5"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+  <collision><geometry><box size="1.0 0.6 0.1"/></geometry></collision></link>{static}</robot>"""
+
+
+@pytest.mark.parametrize('is_static', [True, False])
+def test_a_static_urdf_body_holds_still_when_a_car_lands_on_it(urdf_xml, control_config, is_static):
+    world = bullet_plant.World()
+    world.echo = False
+    world.load_params(control_config)
+    slab = world.spawn(slab_urdf(is_static), 'slab', pose=(0, 0, 0.3, 0, 0, 0))  # in the air
+    world.spawn(urdf_xml, 'tianracer', pose=(-0.1, 0, 0.8, 0, 0, 0))
+    world.step(2000)
+    if is_static:
+        assert slab.base_pose()[:3] == pytest.approx([0, 0, 0.3], abs=1e-6)  # float: Bullet works in float
+    else:
+        assert slab.base_pose()[2] < 0.1, 'a body without <static> falls'
