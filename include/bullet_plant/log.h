@@ -26,5 +26,7 @@ private:
 };
 
 const char* levelName(LogLevel level);
+// A number as messages show it: 6 significant digits, no trailing zeros (printf's %g).
+std::string formatNumber(double value);
 
 }  // namespace bullet_plant

@@ -67,6 +67,10 @@ public:
   // Steps where the physics produced a non-finite state and the robot was put back to its last
   // good state (the world keeps running).
   long recoveries() const;
+  // A robot whose physics diverged on kRecoveriesBeforeDisabling steps within a simulated second is
+  // taken out of the physics (it stays in the world, frozen, until removed): said once, as an error.
+  static constexpr int kRecoveriesBeforeDisabling = 50;
+  bool disabled() const;
 
   struct Internals;  // the plant's side, private to the library
 

@@ -48,6 +48,9 @@ struct Robot::Internals
   btTransform spawn_pose;                                  // of the URDF root link
   LastGoodState last_good;
   long recoveries = 0;
+  int64_t recovery_window_start_ns = -1;  // the first recovery of the current simulated second
+  int recoveries_in_window = 0;
+  bool disabled = false;                  // out of the physics after diverging step after step
 
   // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
   // then recovery, readSim, sensors.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "joint_layer_sim.h"
 
@@ -73,7 +74,7 @@ void limitRows(MovableJoint& j, double q, double qd, double dt)
 
 void driveRigid(MovableJoint& j, double target_velocity, double dt)
 {
-  j.drive->drive(clampAbs(target_velocity, j.limits.velocity), kInf, j.limits.effort * dt);
+  j.drive->drive(clampAbs(target_velocity, std::min(j.limits.velocity, kMaxJointSpeed)), kInf, j.limits.effort * dt);
 }
 
 // The joints' passive dynamics: damping (where no drive carries it), dry friction, limits; and the
@@ -162,6 +163,7 @@ JointHandle& JointLayer::addHandle(const MovableJoint& joint, size_t joint_index
 {
   handles_.emplace_back(joint.name, joint.type, iface, joint.limits);
   handle_joint_.push_back(joint_index);
+  said_beyond_limit_.push_back(false);
   handles_.back().position_ = joint.initial_position;
   return handles_.back();
 }
@@ -187,6 +189,16 @@ void JointLayer::setEStop(bool on)
   e_stop_ = on;
 }
 
+void JointLayer::sayBeyondLimit(size_t hi, double command, double limit, const char* what)
+{
+  if (said_beyond_limit_[hi] || !(std::abs(command) > limit))
+    return;
+  said_beyond_limit_[hi] = true;
+  if (log_)
+    log_->warn("joint '" + handles_[hi].name() + "': command " + formatNumber(command) + " is beyond its " + what + " limit " +
+               formatNumber(limit) + "; held to the limit (said once per joint)");
+}
+
 void JointLayer::writeSim(RobotMultibody& robot, double dt)
 {
   const btMultiBody& mb = *robot.bullet;
@@ -207,13 +219,19 @@ void JointLayer::writeSim(RobotMultibody& robot, double dt)
         else if (h.has_law_)
           law = h.law_;
         else
+        {
           law.feedforward = h.command_;
+          sayBeyondLimit(hi, h.command_, j.limits.effort, "effort");
+        }
         applyLaw(j, mb, law, dt);
         break;
       }
       case JointInterface::Velocity:
       {
-        double target = e_stop_ ? 0.0 : clampAbs(h.command_, j.limits.velocity);
+        const double speed_limit = std::min(j.limits.velocity, kMaxJointSpeed);
+        if (!e_stop_)
+          sayBeyondLimit(hi, h.command_, speed_limit, "velocity");
+        double target = e_stop_ ? 0.0 : clampAbs(h.command_, speed_limit);
         h.active_target_ = target;
         if (h.pid())
           applyLaw(j, mb, h.pid()->implicitVelocityLaw(target, qd, dt), dt);

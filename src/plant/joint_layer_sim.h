@@ -9,6 +9,7 @@
 
 #include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
+#include "bullet_plant/log.h"
 #include "robot_multibody.h"
 
 namespace bullet_plant
@@ -16,9 +17,14 @@ namespace bullet_plant
 // The JointHandles controllers get: gazebo_ros_control registers the same handles with ros_control.
 class JointLayer : public JointHandles
 {
+  // Says once per handle that its command exceeds `limit` (and is held to it).
+  void sayBeyondLimit(size_t handle, double command, double limit, const char* what);
+
 public:
   // A handle for a transmitted joint (joints[joint]); its pid_gains loop when gains are given.
   JointHandle& addHandle(const MovableJoint& joint, size_t joint_index, JointInterface iface);
+  // Where a command beyond its joint's limits is said (once per joint).
+  void setLog(const Log* log) { log_ = log; }
   bool drives(size_t joint_index) const;
 
   std::vector<JointHandle>& handles() override { return handles_; }
@@ -37,6 +43,8 @@ public:
 private:
   std::vector<JointHandle> handles_;   // transmission order
   std::vector<size_t> handle_joint_;   // handle i drives joints[handle_joint_[i]]
+  std::vector<char> said_beyond_limit_;  // per handle
+  const Log* log_ = nullptr;
   bool e_stop_ = false;
 };
 

@@ -1,5 +1,6 @@
 #include "bullet_plant/log.h"
 
+#include <cstdio>
 #include <iostream>
 
 namespace bullet_plant
@@ -28,6 +29,13 @@ void Log::emit(LogLevel level, const std::string& m) const
 {
   if (sink_)
     sink_(level, m);
+}
+
+std::string formatNumber(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
 }
 
 }  // namespace bullet_plant

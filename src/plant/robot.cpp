@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "internals.h"
+#include "robot_builder.h"
 #include "sensor_rendering.h"
 
 namespace bullet_plant
@@ -109,6 +110,9 @@ void Robot::Internals::updateControllers(int64_t time_ns)
   last_control_ns = time_ns;
 }
 
+// The error is said at the first recovery of each simulated second with the count so far (a robot
+// that diverges every step would otherwise log a line per step); after kRecoveriesBeforeDisabling
+// within one second the robot is taken out of the physics, said once.
 void Robot::Internals::recoverIfDiverged()
 {
   if (stateFinite(multibody))
@@ -117,10 +121,25 @@ void Robot::Internals::recoverIfDiverged()
     return;
   }
   ++recoveries;
-  world->log.error("robot '" + name + "': the physics produced a non-finite state; restored the last good "
-                   "state with zero velocity (recovery " + std::to_string(recoveries) + ")");
   last_good.restore(multibody);
   joint_layer.resetPids();
+  const int64_t now = world->time_ns;
+  if (recovery_window_start_ns < 0 || now - recovery_window_start_ns >= 1000000000 || now < recovery_window_start_ns)
+  {
+    recovery_window_start_ns = now;
+    recoveries_in_window = 0;
+    world->log.error("robot '" + name + "': the physics produced a non-finite state; restored the last good state "
+                     "with zero velocity (" + std::to_string(recoveries) + " recoveries so far; further ones in "
+                     "this simulated second are counted, not logged)");
+  }
+  if (++recoveries_in_window < Robot::kRecoveriesBeforeDisabling)
+    return;
+  disabled = true;
+  detachFromPhysics(*this);
+  world->log.error("robot '" + name + "' is disabled: its physics diverged on " +
+                   std::to_string(recoveries_in_window) + " steps within one simulated second (" +
+                   std::to_string(recoveries) + " recoveries in all). Check its URDF's masses, inertias and "
+                   "limits and its gains; remove it (delete_model) and spawn it again once fixed");
 }
 
 void Robot::Internals::updateSensors(int64_t time_ns)
@@ -144,6 +163,8 @@ void Robot::Internals::updateSensors(int64_t time_ns)
 
 void Robot::Internals::resetToSpawn()
 {
+  if (disabled)  // out of the physics: it stays as it was until removed
+    return;
   last_control_ns = world->time_ns;
   if (controller_manager)
     controller_manager->reset(world->time_ns);
@@ -171,6 +192,7 @@ const RobotDescription& Robot::description() const { return in_->description; }
 std::vector<JointHandle>& Robot::handles() { return in_->joint_layer.handles(); }
 JointHandle* Robot::handle(const std::string& joint) { return in_->joint_layer.handle(joint); }
 long Robot::recoveries() const { return in_->recoveries; }
+bool Robot::disabled() const { return in_->disabled; }
 void Robot::setEStop(bool on) { in_->joint_layer.setEStop(on); }
 bool Robot::eStop() const { return in_->joint_layer.eStop(); }
 

@@ -16,6 +16,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bodies lighter than this get it (with a warning): the articulated-body algorithm needs mass.
 constexpr double kMinimumMass = 1e-3;
 constexpr double kMinimumInertia = 1e-9;
+// The effort limit of a joint whose URDF gives none, when no joint of the robot gives one either
+// (N m or N). Otherwise such a joint is as strong as the robot's strongest limited joint: an
+// unlimited effort on a light joint (a passive wheel) lets one command launch the robot.
+constexpr double kDefaultEffortLimit = 100.0;
 
 btVector3 vec(const urdf::Vector3& v) { return btVector3(btScalar(v.x), btScalar(v.y), btScalar(v.z)); }
 
@@ -282,12 +286,33 @@ std::vector<double> createMultibody(Robot::Internals& r, const std::vector<BodyP
   mb->setHasSelfCollision(false);
   mb->setLinearDamping(0);
   mb->setAngularDamping(0);
-  mb->setMaxCoordinateVelocity(btScalar(1e4));
+  mb->setMaxCoordinateVelocity(btScalar(kMaxJointSpeed));
   mb->setCanSleep(false);
   r.spawn_pose = toBullet(pose);
   mb->setBaseWorldTransform(r.spawn_pose * bodies[0].urdf_from_com);
   r.world->dynamics->addMultiBody(mb);
   return axis_inertia;
+}
+
+// Joints whose URDF gives no effort limit get the robot's largest one (or kDefaultEffortLimit),
+// said once per robot.
+void limitUnlimitedEfforts(Robot::Internals& r)
+{
+  double strongest = 0.0;
+  std::string unlimited;
+  for (const MovableJoint& j : r.multibody.joints)
+    if (std::isfinite(j.limits.effort))
+      strongest = std::max(strongest, j.limits.effort);
+    else
+      unlimited += (unlimited.empty() ? "'" : ", '") + j.name + "'";
+  if (unlimited.empty())
+    return;
+  const double limit = strongest > 0 ? strongest : kDefaultEffortLimit;
+  for (MovableJoint& j : r.multibody.joints)
+    if (!std::isfinite(j.limits.effort))
+      j.limits.effort = limit;
+  r.world->log.info("robot '" + r.name + "': joints " + unlimited + " have no URDF effort limit; they are limited to " +
+                    formatNumber(limit) + (strongest > 0 ? " (the robot's largest)" : " (the plant's default)"));
 }
 
 // 5. Movable joints: limits, URDF dynamics, the drive the joint layer uses and the rows for
@@ -342,6 +367,7 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
     r.multibody.joint_index[j.name] = r.multibody.joints.size();
     r.multibody.joints.push_back(std::move(j));
   }
+  limitUnlimitedEfforts(r);
 }
 
 // 6. Colliders: one per body with a shape, in the world's broadphase. A robot without any collision
@@ -403,6 +429,7 @@ void createHandles(Robot::Internals& r)
                          "the joint gets no command handle");
       continue;
     }
+    r.joint_layer.setLog(&r.world->log);
     JointHandle& h = r.joint_layer.addHandle(r.multibody.joints[index->second], index->second, iface);
     std::string pid_ns = joinPath(r.control_namespace, "gazebo_ros_control/pid_gains/" + t.joint);
     const Param* p = r.world->params.find(joinPath(pid_ns, "p"));
@@ -484,9 +511,8 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   r.last_good.save(r.multibody);
 }
 
-void removeRobot(Robot::Internals& r)
+void detachFromPhysics(Robot::Internals& r)
 {
-  r.controller_manager.reset();
   btMultiBodyDynamicsWorld* dynamics = r.world->dynamics.get();
   for (MovableJoint& j : r.multibody.joints)
   {
@@ -498,6 +524,13 @@ void removeRobot(Robot::Internals& r)
     dynamics->removeCollisionObject(col.get());
   if (r.multibody.bullet)
     dynamics->removeMultiBody(r.multibody.bullet.get());
+}
+
+void removeRobot(Robot::Internals& r)
+{
+  r.controller_manager.reset();
+  if (!r.disabled)
+    detachFromPhysics(r);
 }
 
 }  // namespace bullet_plant

@@ -14,5 +14,8 @@ namespace bullet_plant
 // missing or fixed joint); what was added to the world by then is taken back by removeRobot.
 void buildRobot(Robot::Internals& robot, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints);
 void removeRobot(Robot::Internals& robot);
+// Takes the robot's multibody, colliders and rows out of the dynamics world, leaving the rest (its
+// controller manager, handles, last state) in place; removeRobot may follow.
+void detachFromPhysics(Robot::Internals& robot);
 
 }  // namespace bullet_plant

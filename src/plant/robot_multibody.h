@@ -20,6 +20,10 @@
 
 namespace bullet_plant
 {
+// Bullet clamps every joint rate to this (btMultiBody::setMaxCoordinateVelocity), rad/s or m/s; the
+// joint layer holds velocity commands to it too.
+constexpr double kMaxJointSpeed = 1e4;
+
 btTransform toBullet(const urdf::Pose& p);
 urdf::Pose fromBullet(const btTransform& t);
 

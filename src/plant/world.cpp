@@ -194,19 +194,23 @@ void World::step(int n)
   for (int i = 0; i < n; ++i)
   {
     for (auto& r : w.robots)
-      r->in_->updateControllers(w.time_ns);
+      if (!r->in_->disabled)
+        r->in_->updateControllers(w.time_ns);
     for (auto& r : w.robots)
-      r->in_->joint_layer.writeSim(r->in_->multibody, w.step_s);
+      if (!r->in_->disabled)
+        r->in_->joint_layer.writeSim(r->in_->multibody, w.step_s);
     w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
     w.time_ns += w.step_ns;
     ++w.steps;
     for (auto& r : w.robots)
-    {
-      r->in_->recoverIfDiverged();
-      r->in_->joint_layer.readSim(r->in_->multibody, w.step_s);
-    }
+      if (!r->in_->disabled)
+      {
+        r->in_->recoverIfDiverged();
+        r->in_->joint_layer.readSim(r->in_->multibody, w.step_s);
+      }
     for (auto& r : w.robots)
-      r->in_->updateSensors(w.time_ns);
+      if (!r->in_->disabled)
+        r->in_->updateSensors(w.time_ns);
   }
 }
 

@@ -222,6 +222,7 @@ PYBIND11_MODULE(bullet_plant, m)
       })
       .def_property("e_stop", &Robot::eStop, &Robot::setEStop)
       .def_property_readonly("recoveries", &Robot::recoveries)
+      .def_property_readonly("disabled", &Robot::disabled, "taken out of the physics after diverging step after step")
       .def_property_readonly("controller_manager", [](Robot& r) { return &managerOf(r); },
                              py::return_value_policy::reference_internal)
       .def_property_readonly("control_period", &Robot::controlPeriod)

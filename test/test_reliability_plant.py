@@ -1,0 +1,69 @@
+"""What a user's mistake must not do to the plant (through the Python module): a robot whose physics
+diverges every step logs a line per simulated second, not per step, and is taken out of the physics
+after 50 recoveries in a second with one clear error while the rest of the world runs on; a huge or
+out-of-limit command is held to what the joint can take, said once; a joint without a URDF effort
+limit gets the robot's largest one."""
+import re
+
+import numpy as np
+import pytest
+
+from tianracer_description import bullet_plant
+
+
+def with_heavy_wheel(urdf):
+    """The car with its first wheel link at 1e30 kg: its physics goes non-finite every step."""
+    masses = iter(range(100))
+    return re.sub(r'<mass value="[^"]+"/>', lambda m: '<mass value="1e30"/>' if next(masses) == 1 else m.group(0), urdf)
+
+
+def errors(world):
+    return [text for level, text in world.messages() if level == 'ERROR']
+
+
+def test_a_diverging_robot_is_said_once_per_second_then_disabled_while_the_world_runs_on(urdf_xml):
+    world = bullet_plant.World()
+    world.echo = False
+    good = world.spawn(urdf_xml, 'good', pose=(0, 1, 0, 0, 0, 0))
+    heavy = world.spawn(with_heavy_wheel(urdf_xml), 'heavy')
+    world.step(10000)
+    logged = errors(world)
+    assert len(logged) == 2, logged
+    assert 'non-finite state' in logged[0] and "'heavy'" in logged[0]
+    assert "robot 'heavy' is disabled" in logged[1] and 'delete_model' in logged[1]
+    assert heavy.disabled and heavy.recoveries == 50
+    assert np.isfinite(heavy.base_pose()).all()
+    assert not good.disabled and good.recoveries == 0
+    assert good.base_pose()[:3] == pytest.approx([0, 1, 0], abs=2e-3), 'the other car rests where it was'
+    world.reset_world()
+    world.step(10)
+    assert world.remove('heavy')
+    world.step(10)
+
+
+def test_a_huge_effort_on_a_passive_wheel_is_held_to_the_robots_limit_and_said_once(urdf_xml):
+    world = bullet_plant.World()
+    world.echo = False
+    car = world.spawn(urdf_xml, 'car')
+    infos = [text for level, text in world.messages() if level == 'INFO']
+    assert any("'left_front_wheel_joint'" in t and 'no URDF effort limit' in t for t in infos), infos
+    assert car.limits('left_front_wheel_joint')['effort'] == 1.0, "the car's largest (its motors' 1 N m)"
+    for value in (1e308, 50.0):
+        car.set_command('left_front_wheel_joint', value)
+        world.step(1000)
+    assert car.recoveries == 0 and np.isfinite(car.base_pose()).all()
+    assert abs(car.base_pose()[2]) < 0.01, 'the car is not launched'
+    warned = [t for level, t in world.messages() if level == 'WARN' and 'beyond its effort limit' in t]
+    assert len(warned) == 1 and "'left_front_wheel_joint'" in warned[0] and '1e+308' in warned[0], warned
+
+
+def test_a_huge_velocity_command_is_held_to_the_urdf_limit_and_said_once(urdf_xml):
+    world = bullet_plant.World()
+    world.echo = False
+    car = world.spawn(urdf_xml, 'car')
+    car.set_command('left_rear_wheel_joint', 1e308)
+    world.step(500)
+    assert car.joint_state('left_rear_wheel_joint')[1] <= 125.0 + 1e-3
+    assert np.isfinite(car.base_pose()).all()
+    warned = [t for level, t in world.messages() if level == 'WARN' and 'beyond its velocity limit' in t]
+    assert len(warned) == 1 and 'limit 125' in warned[0], warned
