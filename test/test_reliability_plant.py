@@ -67,3 +67,14 @@ def test_a_huge_velocity_command_is_held_to_the_urdf_limit_and_said_once(urdf_xm
     assert np.isfinite(car.base_pose()).all()
     warned = [t for level, t in world.messages() if level == 'WARN' and 'beyond its velocity limit' in t]
     assert len(warned) == 1 and 'limit 125' in warned[0], warned
+
+
+def test_an_initial_joint_position_outside_the_urdf_limits_starts_at_the_limit_with_a_warning(urdf_xml):
+    world = bullet_plant.World()
+    world.echo = False
+    car = world.spawn(urdf_xml, 'car', joints={'left_steering_hinge_joint': 1e9})
+    world.step(1000)
+    assert car.joint_state('left_steering_hinge_joint')[0] == pytest.approx(0.6, abs=1e-3)
+    assert np.hypot(*car.base_twist()[0][:2]) < 0.01, 'the car is not flung'
+    warned = [t for level, t in world.messages() if level == 'WARN' and 'outside its URDF limits' in t]
+    assert len(warned) == 1 and "'left_steering_hinge_joint'" in warned[0] and 'starts at 0.6' in warned[0], warned
