@@ -78,3 +78,29 @@ def test_an_initial_joint_position_outside_the_urdf_limits_starts_at_the_limit_w
     assert np.hypot(*car.base_twist()[0][:2]) < 0.01, 'the car is not flung'
     warned = [t for level, t in world.messages() if level == 'WARN' and 'outside its URDF limits' in t]
     assert len(warned) == 1 and "'left_steering_hinge_joint'" in warned[0] and 'starts at 0.6' in warned[0], warned
+
+
+def test_a_negative_urdf_friction_is_taken_as_zero_with_a_warning():
+    urdf = """<robot name="block"><link name="block">
+  <inertial><mass value="1"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial>
+  <collision><geometry><box size="0.1 0.1 0.05"/></geometry></collision></link>
+  <gazebo reference="block"><mu1>-5</mu1><mu2>-5</mu2></gazebo></robot>"""
+    world = bullet_plant.World()
+    world.echo = False
+    block = world.spawn(urdf, 'block', pose=(0, 0, 0.03, 0, 0, 0))
+    world.step(1000)
+    assert np.isfinite(block.base_pose()).all() and abs(block.base_pose()[2] - 0.025) < 2e-3
+    warned = [t for level, t in world.messages() if level == 'WARN' and 'not a friction coefficient' in t]
+    assert len(warned) == 1 and "'block'" in warned[0] and '-5' in warned[0], warned
+
+
+@pytest.mark.parametrize('gain', [float('nan'), float('inf')])
+def test_a_non_finite_pid_gain_fails_the_controllers_load_naming_it(urdf_xml, control_config, gain):
+    world = bullet_plant.World()
+    world.echo = False
+    world.load_params(control_config)
+    world.load_params({'tianracer': {'front_left_steering_position_controller': {'pid': {'p': 4.0, 'd': gain}}}})
+    manager = world.spawn(urdf_xml, 'tianracer').controller_manager
+    assert manager.load('front_left_steering_position_controller') is False
+    logged = [t for level, t in world.messages() if level == 'ERROR']
+    assert any("PID gain 'd' of /tianracer/front_left_steering_position_controller/pid" in t for t in logged), logged

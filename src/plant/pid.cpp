@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bullet_plant/log.h"
 #include "bullet_plant/params.h"
 
 namespace bullet_plant
@@ -30,6 +31,13 @@ PidGains readPidGains(const Param& root, const std::string& ns)
                                     antiwindup && antiwindup->type() == Param::Type::Bool && antiwindup->asBool());
   g.i_max = number(root, joinPath(ns, "i_clamp_max"), g.i_max);
   g.i_min = number(root, joinPath(ns, "i_clamp_min"), g.i_min);
+  // A NaN or infinite gain would make the controller run and do nothing (or blow up): refuse it.
+  const std::pair<const char*, double> gains[] = {{"p", g.p}, {"i", g.i}, {"d", g.d}, {"i_clamp", g.i_max},
+                                                  {"i_clamp_min", g.i_min}};
+  for (const auto& gain : gains)
+    if (!std::isfinite(gain.second))
+      throw std::runtime_error("PID gain '" + std::string(gain.first) + "' of " + normaliseNamespace(ns) + " is " +
+                               formatNumber(gain.second) + "; gains must be finite numbers");
   return g;
 }
 

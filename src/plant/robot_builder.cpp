@@ -231,7 +231,16 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
     auto surface = r.description.surfaces.find(link->name);
     if (surface != r.description.surfaces.end() && surface->second.given &&
         (link->name == body.link || !link->collision_array.empty()))
+    {
       body.mu = std::min(surface->second.mu1, surface->second.mu2);
+      if (!(body.mu >= 0))  // negative or NaN: Bullet would push along the motion
+      {
+        r.world->log.warn("link '" + link->name + "' of '" + r.name + "': friction mu1/mu2 " +
+                          formatNumber(surface->second.mu1) + "/" + formatNumber(surface->second.mu2) +
+                          " is not a friction coefficient; it is taken as 0");
+        body.mu = 0;
+      }
+    }
   }
 
   for (size_t bi = 0; bi < bodies.size(); ++bi)
