@@ -44,3 +44,10 @@ def test_a_long_step_stops_on_ctrl_c():
             proc.wait()
     assert proc.returncode != 0
     assert 'KeyboardInterrupt' in err
+
+
+def test_a_step_below_a_nanosecond_is_refused():
+    from plant_helpers import sdf_world
+    with pytest.raises(bullet_plant.DescriptionError, match=r'max_step_size> 1e-10 is out of range'):
+        bullet_plant.World.from_sdf(sdf_world(step=1e-10))
+    assert bullet_plant.World.from_sdf(sdf_world(step=1e-9)).time_step == pytest.approx(1e-9)
