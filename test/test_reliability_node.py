@@ -49,3 +49,35 @@ def test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c(ros):
     plant.interrupt()
     assert plant.wait(5) is not None, plant.log()
     assert time.monotonic() - sent < 3
+
+
+@pytest.mark.ros
+@pytest.mark.parametrize('bad, what', [
+    ('<topicName>my scan</topicName>', "sensor 'lidar' topic: 'my scan'"),
+    ('<topicName>1scan</topicName>', "sensor 'lidar' topic: '1scan'"),
+    ('<robotNamespace>/tian racer</robotNamespace>', "robotNamespace: '/tian racer'"),
+    ('<robotNamespace>/tianracer</robotNamespace><eStopTopic>e stop</eStopTopic>', "eStopTopic: 'e stop'"),
+])
+def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, urdf_xml, bad, what):
+    import re
+    tag = re.match(r'<(\w+)>', bad).group(1)
+    original = '<topicName>scan</topicName>' if tag == 'topicName' else \
+        re.search(r'<robotNamespace>[^<]*</robotNamespace>', urdf_xml).group(0)
+    assert original in urdf_xml
+    bad_urdf = urdf_xml.replace(original, bad, 1)
+    plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0'], 'plant')
+    ros.run(['rosservice', 'call', '--wait', '/bullet_plant/pause_physics'], timeout=30)
+    spawn = ros.python("""
+        import json, rospy
+        from tianracer_description.srv import SpawnModel
+        call = rospy.ServiceProxy('/bullet_plant/spawn_model', SpawnModel)
+        bad = call(model_name='bad', model_xml=%r, robot_namespace='')
+        good = call(model_name='good', model_xml=%r, robot_namespace='')
+        print(json.dumps([bad.success, bad.status_message, good.success]))
+    """ % (bad_urdf, urdf_xml.replace(original, original, 1)), timeout=60)
+    assert spawn[0] is False and what in spawn[1], spawn
+    assert spawn[2] is True, plant.log()
+    ros.service('/bullet_plant/unpause_physics')
+    time.sleep(1.0)
+    assert plant.popen.poll() is None, plant.log()
+    assert ros.run(['rostopic', 'echo', '-n', '1', '/tianracer/odom'], timeout=20).returncode == 0, plant.log()

@@ -12,6 +12,7 @@
 #include <tianracer_description/SpawnModel.h>
 
 #include "robot_interface.h"
+#include "ros_names.h"
 #include "ros_time.h"
 
 namespace bullet_plant
@@ -204,8 +205,9 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
     RobotDescription d = parseRobotDescription(urdf);
     if (!d.control.robot_namespace.empty())
       control_ns = d.control.robot_namespace;
+    requireValidRosName(control_ns, "robot '" + name + "' robotNamespace");
   }
-  catch (const DescriptionError& e)
+  catch (const std::exception& e)
   {
     message = e.what();
     ROS_ERROR("Could not spawn '%s': %s", name.c_str(), message.c_str());
@@ -216,7 +218,18 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
     try
     {
       Robot& robot = world_->spawn(urdf, name, pose, ns, joints);
-      robots_[name].reset(new RobotInterface(*this, robot));
+      std::unique_ptr<RobotInterface> interface;
+      try
+      {
+        interface.reset(new RobotInterface(*this, robot));
+      }
+      catch (const std::exception&)
+      {
+        // A name ROS refuses (a sensor topic, the namespace): refuse the whole robot, as no half of it can run.
+        world_->remove(name);
+        throw;
+      }
+      robots_[name] = std::move(interface);
       robots_[name]->updateSubscriptions();
       message = "spawned '" + name + "'" + (robot.controllerManager() ? " with a controller manager in " + robot.controlNamespace() : "");
       ROS_INFO_STREAM(message);
