@@ -1,5 +1,6 @@
 // bullet_plant: the simulator node that stands in for gzserver + gazebo_ros + gazebo_ros_control.
 #include <cstdio>
+#include <cstring>
 
 #include <ros/ros.h>
 
@@ -9,6 +10,21 @@ int main(int argc, char** argv)
 {
   // One line at a time even into a log file or a pipe, so the status and errors show when they happen.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
+    {
+      std::printf(
+          "usage: bullet_plant [__name:=NAME] [_param:=value ...]\n"
+          "The Bullet simulator node standing in for gzserver + gazebo_ros + gazebo_ros_control.\n"
+          "Private parameters:\n"
+          "  ~world_name           world file (SDF) to load; empty for an empty world\n"
+          "  ~real_time_factor     simulated seconds per wall second (>= 0.001; 0 or less: as fast as possible);\n"
+          "                        default: the world's <real_time_factor>\n"
+          "  ~pub_clock_frequency  /clock rate in Hz (default 100)\n"
+          "  ~paused               start paused (default false)\n"
+          "Services: ~pause_physics ~unpause_physics ~reset_simulation ~reset_world ~spawn_model ~delete_model\n");
+      return 0;
+    }
   ros::init(argc, argv, "bullet_plant");
   ros::NodeHandle nh, private_nh("~");
   try

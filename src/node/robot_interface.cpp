@@ -3,16 +3,20 @@
 #include <std_msgs/Bool.h>
 
 #include "bullet_plant/robot.h"
+#include "ros_names.h"
 #include "ros_plant.h"
 
 namespace bullet_plant
 {
 RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
-  : nh_(robot.controlNamespace().empty() ? "/" : robot.controlNamespace()), odometry_(robot, nh_), sensors_(robot, nh_)
+  : nh_(robot.controlNamespace().empty()
+            ? "/"
+            : requireValidRosName(robot.controlNamespace(), "robot '" + robot.name() + "' robotNamespace")),
+    odometry_(robot, nh_), sensors_(robot, nh_)
 {
   const std::string& estop = robot.description().control.e_stop_topic;
   if (!estop.empty())
-    estop_sub_ = nh_.subscribe<std_msgs::Bool>(estop, 1, [&plant, &robot](const std_msgs::BoolConstPtr& m) {
+    estop_sub_ = nh_.subscribe<std_msgs::Bool>(requireValidRosName(estop, "robot '" + robot.name() + "' eStopTopic"), 1, [&plant, &robot](const std_msgs::BoolConstPtr& m) {
       bool on = m->data;
       plant.post([&robot, on] { robot.setEStop(on); });
     });

@@ -1,6 +1,9 @@
 #include "ros_plant.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <stdexcept>
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
@@ -9,6 +12,7 @@
 #include <tianracer_description/SpawnModel.h>
 
 #include "robot_interface.h"
+#include "ros_names.h"
 #include "ros_time.h"
 
 namespace bullet_plant
@@ -65,6 +69,40 @@ void RosPlant::runQueuedWork()
     w();
 }
 
+namespace
+{
+// Slower than this, one 1 ms step takes over a second of wall time: a typo, not a wish.
+constexpr double kSlowestRealTimeFactor = 1e-3;
+
+// roslaunch passes `real_time_factor:=1e-6` as a string; read it as the number it spells.
+double readRealTimeFactor(const ros::NodeHandle& private_nh, double world_value)
+{
+  const std::string name = private_nh.resolveName("real_time_factor");
+  XmlRpc::XmlRpcValue value;
+  if (!private_nh.getParam("real_time_factor", value))
+    return world_value;
+  double factor = 0;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble)
+    factor = static_cast<double>(value);
+  else if (value.getType() == XmlRpc::XmlRpcValue::TypeInt)
+    factor = static_cast<int>(value);
+  else if (value.getType() == XmlRpc::XmlRpcValue::TypeString)
+  {
+    const std::string text = static_cast<std::string>(value);
+    char* end = nullptr;
+    factor = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0')
+      throw std::runtime_error("parameter " + name + " is '" + text + "', not a number; give e.g. 1.0, or 0 to run as fast as possible");
+  }
+  else
+    throw std::runtime_error("parameter " + name + " must be a number (e.g. 1.0, or 0 to run as fast as possible)");
+  if (!std::isfinite(factor) || (factor > 0 && factor < kSlowestRealTimeFactor))
+    throw std::runtime_error("parameter " + name + " = " + std::to_string(factor) + " is too small: use at least " +
+                             std::to_string(kSlowestRealTimeFactor) + ", or 0 (or less) to run as fast as possible");
+  return factor;
+}
+}  // namespace
+
 RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), private_nh_(private_nh)
 {
   std::string world_file;
@@ -80,8 +118,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), 
       case LogLevel::Error: ROS_ERROR_STREAM(m); break;
     }
   });
-  real_time_factor_ = description.real_time_factor;
-  private_nh_.param("real_time_factor", real_time_factor_, real_time_factor_);
+  real_time_factor_ = readRealTimeFactor(private_nh_, description.real_time_factor);
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.
   double clock_rate = 100.0;
   private_nh_.param("pub_clock_frequency", clock_rate, clock_rate);
@@ -168,8 +205,9 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
     RobotDescription d = parseRobotDescription(urdf);
     if (!d.control.robot_namespace.empty())
       control_ns = d.control.robot_namespace;
+    requireValidRosName(control_ns, "robot '" + name + "' robotNamespace");
   }
-  catch (const DescriptionError& e)
+  catch (const std::exception& e)
   {
     message = e.what();
     ROS_ERROR("Could not spawn '%s': %s", name.c_str(), message.c_str());
@@ -180,7 +218,18 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
     try
     {
       Robot& robot = world_->spawn(urdf, name, pose, ns, joints);
-      robots_[name].reset(new RobotInterface(*this, robot));
+      std::unique_ptr<RobotInterface> interface;
+      try
+      {
+        interface.reset(new RobotInterface(*this, robot));
+      }
+      catch (const std::exception&)
+      {
+        // A name ROS refuses (a sensor topic, the namespace): refuse the whole robot, as no half of it can run.
+        world_->remove(name);
+        throw;
+      }
+      robots_[name] = std::move(interface);
       robots_[name]->updateSubscriptions();
       message = "spawned '" + name + "'" + (robot.controllerManager() ? " with a controller manager in " + robot.controlNamespace() : "");
       ROS_INFO_STREAM(message);
@@ -245,11 +294,18 @@ void RosPlant::pace()
 {
   if (real_time_factor_ <= 0)
     return;
+  // Sleep in short slices that keep serving the services and notice shutdown, however slow the pace.
+  const ros::WallDuration slice(0.01);
   ros::WallTime target = pace_start_wall_ + ros::WallDuration((world_->timeNs() - pace_start_sim_ns_) * 1e-9 / real_time_factor_);
   ros::WallTime now = ros::WallTime::now();
-  if (target > now)
-    (target - now).sleep();
-  else if ((now - target).toSec() > 0.5)
+  while (target > now && ros::ok() && !paused_)
+  {
+    std::min(target - now, slice).sleep();
+    runQueuedWork();
+    target = pace_start_wall_ + ros::WallDuration((world_->timeNs() - pace_start_sim_ns_) * 1e-9 / real_time_factor_);
+    now = ros::WallTime::now();
+  }
+  if ((now - target).toSec() > 0.5)
   {
     // Far behind (a slow machine, a debugger): start pacing afresh instead of racing to catch up.
     pace_start_wall_ = now;

@@ -1,5 +1,7 @@
 #include "sensor_publishers.h"
 
+#include "ros_names.h"
+
 #include <cstring>
 
 #include <sensor_msgs/CameraInfo.h>
@@ -64,18 +66,22 @@ sensor_msgs::PointCloud2 pointCloud(const CameraFrame& f, const std_msgs::Header
 SensorPublishers::SensorPublishers(Robot& robot, ros::NodeHandle& nh) : robot_(robot)
 {
   for (Lidar* lidar : robot_.lidars())
-    lidars_.push_back({lidar, nh.advertise<sensor_msgs::LaserScan>(lidar->topic(), 5)});
+  {
+    const std::string owner = "sensor '" + lidar->name() + "' topic";
+    lidars_.push_back({lidar, nh.advertise<sensor_msgs::LaserScan>(requireValidRosName(lidar->topic(), owner), 5)});
+  }
   for (Camera* camera : robot_.cameras())
   {
+    const std::string owner = "sensor '" + camera->name() + "' topic";
     CameraTopics t;
     t.camera = camera;
-    t.image = nh.advertise<sensor_msgs::Image>(camera->topic(), 2);
-    t.info = nh.advertise<sensor_msgs::CameraInfo>(camera->cameraInfoTopic(), 2);
+    t.image = nh.advertise<sensor_msgs::Image>(requireValidRosName(camera->topic(), owner), 2);
+    t.info = nh.advertise<sensor_msgs::CameraInfo>(requireValidRosName(camera->cameraInfoTopic(), owner), 2);
     if (camera->depthSensor())
     {
-      t.depth = nh.advertise<sensor_msgs::Image>(camera->depthTopic(), 2);
-      t.depth_info = nh.advertise<sensor_msgs::CameraInfo>(camera->depthCameraInfoTopic(), 2);
-      t.points = nh.advertise<sensor_msgs::PointCloud2>(camera->pointsTopic(), 2);
+      t.depth = nh.advertise<sensor_msgs::Image>(requireValidRosName(camera->depthTopic(), owner), 2);
+      t.depth_info = nh.advertise<sensor_msgs::CameraInfo>(requireValidRosName(camera->depthCameraInfoTopic(), owner), 2);
+      t.points = nh.advertise<sensor_msgs::PointCloud2>(requireValidRosName(camera->pointsTopic(), owner), 2);
     }
     cameras_.push_back(t);
   }

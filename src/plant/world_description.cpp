@@ -327,9 +327,13 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
   {
     world.max_step_size = xml::childDouble(physics, "max_step_size", world.max_step_size);
     world.real_time_factor = xml::childDouble(physics, "real_time_factor", world.real_time_factor);
-    if (world.max_step_size <= 0 || world.max_step_size > 0.1)
-      throw DescriptionError("<physics><max_step_size> " + std::to_string(world.max_step_size) +
-                             " is out of range (0, 0.1] s");
+    // Below a nanosecond the step rounds to zero simulated nanoseconds and time never advances.
+    if (!(world.max_step_size >= 1e-9 && world.max_step_size <= 0.1))
+    {
+      std::ostringstream text;
+      text << "<physics><max_step_size> " << world.max_step_size << " is out of range [1e-9, 0.1] s";
+      throw DescriptionError(text.str());
+    }
   }
   std::string gravity = xml::childText(w, "gravity", "");
   if (!gravity.empty())

@@ -1,4 +1,5 @@
 // Python bindings of the plant: tianracer_description.bullet_plant. A thin layer: conversions only.
+#include <algorithm>
 #include <deque>
 #include <iostream>
 #include <mutex>
@@ -459,12 +460,27 @@ PYBIND11_MODULE(bullet_plant, m)
           names.push_back(r->name());
         return names;
       })
-      .def("step", [](PyWorld& w, int n) {
+      .def("step", [](PyWorld& w, py::object count) {
+        // bool is a subclass of int in Python; step(True) is a mistake, not one step.
+        if (py::isinstance<py::bool_>(count) || !py::isinstance<py::int_>(count))
+          throw py::type_error("step(n): n must be an int, not " + std::string(py::str(count.get_type())));
+        long long n = count.cast<long long>();
         if (n < 0)
-          throw py::value_error("step(n): n must not be negative");
-        py::gil_scoped_release release;
-        w.world->step(n);
-      }, py::arg("n") = 1, "advance n fixed physics steps")
+          throw py::value_error("step(n): n must not be negative, got " + std::to_string(n));
+        // In chunks, so that Ctrl-C (checked between chunks, with the GIL held) stops a long run.
+        const long long chunk = 1000;
+        while (n > 0)
+        {
+          const int now = static_cast<int>(std::min(n, chunk));
+          {
+            py::gil_scoped_release release;
+            w.world->step(now);
+          }
+          n -= now;
+          if (PyErr_CheckSignals() != 0)
+            throw py::error_already_set();
+        }
+      }, py::arg("n") = 1, "advance n fixed physics steps; Ctrl-C interrupts between chunks of 1000")
       .def("reset_simulation", [](PyWorld& w) { w.world->resetSimulation(); })
       .def("reset_world", [](PyWorld& w) { w.world->resetWorld(); })
       .def("cast_ray", [](PyWorld& w, std::vector<double> origin, std::vector<double> direction, double max_range) {
