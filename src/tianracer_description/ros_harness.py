@@ -136,3 +136,24 @@ def tianracer_plant(ros, urdf_path, world=None, paused=False):
                      '-model', 'tianracer'], timeout=60)
     assert spawn.returncode == 0, spawn.stdout + spawn.stderr + plant.log()
     return plant
+
+
+def running_controllers(namespace, count, timeout=60.0):
+    """From inside a rospy node (the rostest nodes): the names of the controllers running in the
+    controller manager of `namespace` once `count` of them run, or at the timeout (wall clock)."""
+    import rospy
+    from controller_manager_msgs.srv import ListControllers
+    service = namespace + '/controller_manager/list_controllers'
+    end = time.monotonic() + timeout
+    running = []
+    while time.monotonic() < end and not rospy.is_shutdown():
+        try:
+            rospy.wait_for_service(service, 1.0)
+            running = [c.name for c in rospy.ServiceProxy(service, ListControllers)().controller
+                       if c.state == 'running']
+            if len(running) >= count:
+                break
+        except (rospy.ROSException, rospy.ServiceException):
+            pass
+        time.sleep(0.05)
+    return running

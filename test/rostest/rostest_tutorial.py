@@ -3,18 +3,17 @@
 tutorial's Twist drives the circle of the car's geometry, and the dead man's switch stops the car."""
 import math
 import sys
-import time
 import unittest
 
 import rospy
 import rostest
-from controller_manager_msgs.srv import ListControllers
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from std_msgs.msg import Float64
 
 from tianracer_description.ackermann import max_ideal_steering
 from tianracer_description.path_metrics import circle_radius
+from tianracer_description.ros_harness import running_controllers
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 from tianracer_description.urdf_geometry import ackermann_geometry
 
@@ -39,25 +38,7 @@ class Tutorial(unittest.TestCase):
         rospy.Subscriber('/tianracer/rear_left_velocity_controller/command', Float64,
                          lambda m: cls.wheel.append((sim_now(), m.data)))
         cls.cmd_vel = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
-        cls.running = cls.wait_for_controllers(len(TUTORIAL_CONTROLLERS), timeout=60.0)
-
-    @staticmethod
-    def wait_for_controllers(count, timeout):
-        """The names of the running controllers once `count` run (or at the timeout, wall clock)."""
-        service = '/tianracer/controller_manager/list_controllers'
-        end = time.monotonic() + timeout
-        running = []
-        while time.monotonic() < end and not rospy.is_shutdown():
-            try:
-                rospy.wait_for_service(service, 1.0)
-                running = [c.name for c in rospy.ServiceProxy(service, ListControllers)().controller
-                           if c.state == 'running']
-                if len(running) >= count:
-                    break
-            except (rospy.ROSException, rospy.ServiceException):
-                pass
-            time.sleep(0.05)
-        return running
+        cls.running = running_controllers('/tianracer', len(TUTORIAL_CONTROLLERS))
 
     def test_1_the_five_controllers_run(self):
         self.assertEqual(sorted(self.running), sorted(TUTORIAL_CONTROLLERS))

@@ -8,29 +8,13 @@ import unittest
 
 import rospy
 import rostest
-from controller_manager_msgs.srv import ListControllers
 from nav_msgs.msg import Odometry
 from std_msgs.msg import Float64
 
+from tianracer_description.ros_harness import running_controllers
 from tianracer_description.tianracer import REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS
 
 CARS = ('/car1/tianracer', '/car2/tianracer')
-
-
-def running(namespace, count, timeout=60.0):
-    service = namespace + '/controller_manager/list_controllers'
-    end = time.monotonic() + timeout
-    names = []
-    while time.monotonic() < end and not rospy.is_shutdown():
-        try:
-            rospy.wait_for_service(service, 1.0)
-            names = [c.name for c in rospy.ServiceProxy(service, ListControllers)().controller if c.state == 'running']
-            if len(names) >= count:
-                break
-        except (rospy.ROSException, rospy.ServiceException):
-            pass
-        time.sleep(0.05)
-    return names
 
 
 class TwoRobots(unittest.TestCase):
@@ -44,11 +28,11 @@ class TwoRobots(unittest.TestCase):
 
     def test_1_each_car_runs_the_five_controllers_in_its_namespace(self):
         for car in CARS:
-            self.assertEqual(sorted(running(car, len(TUTORIAL_CONTROLLERS))), sorted(TUTORIAL_CONTROLLERS), car)
+            self.assertEqual(sorted(running_controllers(car, len(TUTORIAL_CONTROLLERS))), sorted(TUTORIAL_CONTROLLERS), car)
 
     def test_2_commanding_one_car_moves_that_car_only(self):
         for car in CARS:
-            running(car, len(TUTORIAL_CONTROLLERS))
+            running_controllers(car, len(TUTORIAL_CONTROLLERS))
         publishers = [rospy.Publisher(CARS[0] + '/' + c + '/command', Float64, queue_size=1, latch=True)
                       for c in REAR_WHEEL_CONTROLLERS]
         while not all(car in self.position for car in CARS):
