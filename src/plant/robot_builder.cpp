@@ -424,6 +424,7 @@ void addColliders(Robot::Internals& r)
 void createHandles(Robot::Internals& r)
 {
   const urdf::ModelInterface& model = *r.description.model;
+  r.joint_layer.setLog(&r.world->log);
   for (const TransmissionDescription& t : r.description.transmissions)
   {
     if (!model.getJoint(t.joint))
@@ -447,7 +448,6 @@ void createHandles(Robot::Internals& r)
                          "the joint gets no command handle");
       continue;
     }
-    r.joint_layer.setLog(&r.world->log);
     JointHandle& h = r.joint_layer.addHandle(r.multibody.joints[index->second], index->second, iface);
     std::string pid_ns = joinPath(r.control_namespace, "gazebo_ros_control/pid_gains/" + t.joint);
     const Param* p = r.world->params.find(joinPath(pid_ns, "p"));
