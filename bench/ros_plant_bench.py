@@ -95,7 +95,7 @@ def one_round(real_time_factor):
     with tempfile.TemporaryDirectory() as workdir:
         ros = RosSystem(workdir)
         try:
-            args = ['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false']
+            args = ['roslaunch', 'tianracer_description', 'tianracer_world.launch', 'gui:=false']
             if real_time_factor is not None:
                 args.append('real_time_factor:=%g' % real_time_factor)
             probe = ros.start([sys.executable, '-c', STARTUP_PROBE.format(count=CONTROLLERS)], 'startup_probe')

@@ -24,7 +24,7 @@ def test_a_real_time_factor_too_small_or_not_a_number_is_refused(ros, value):
     # `_real_time_factor:=1e-6` arrives as a string (YAML 1.1 reads no float without a dot), as from roslaunch.
     plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=' + value], 'plant')
     assert plant.wait(15) == 1, plant.log()
-    assert '/bullet_plant/real_time_factor' in plant.log()
+    assert '/gazebo/real_time_factor' in plant.log()
 
 
 @pytest.mark.ros
@@ -34,8 +34,8 @@ def test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c(ros):
     latency = ros.python("""
         import json, time, rospy
         from std_srvs.srv import Empty
-        rospy.wait_for_service('/bullet_plant/reset_world', 20)
-        call = rospy.ServiceProxy('/bullet_plant/reset_world', Empty)
+        rospy.wait_for_service('/gazebo/reset_world', 20)
+        call = rospy.ServiceProxy('/gazebo/reset_world', Empty)
         call()
         worst = 0.0
         for _ in range(3):
@@ -66,18 +66,18 @@ def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, 
     assert original in urdf_xml
     bad_urdf = urdf_xml.replace(original, bad, 1)
     plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0'], 'plant')
-    ros.run(['rosservice', 'call', '--wait', '/bullet_plant/pause_physics'], timeout=30)
+    ros.run(['rosservice', 'call', '--wait', '/gazebo/pause_physics'], timeout=30)
     spawn = ros.python("""
         import json, rospy
-        from tianracer_description.srv import SpawnModel
-        call = rospy.ServiceProxy('/bullet_plant/spawn_model', SpawnModel)
+        from gazebo_msgs.srv import SpawnModel
+        call = rospy.ServiceProxy('/gazebo/spawn_urdf_model', SpawnModel)
         bad = call(model_name='bad', model_xml=%r, robot_namespace='')
         good = call(model_name='good', model_xml=%r, robot_namespace='')
         print(json.dumps([bad.success, bad.status_message, good.success]))
     """ % (bad_urdf, urdf_xml.replace(original, original, 1)), timeout=60)
     assert spawn[0] is False and what in spawn[1], spawn
     assert spawn[2] is True, plant.log()
-    ros.service('/bullet_plant/unpause_physics')
+    ros.service('/gazebo/unpause_physics')
     time.sleep(1.0)
     assert plant.popen.poll() is None, plant.log()
     assert ros.run(['rostopic', 'echo', '-n', '1', '/tianracer/odom'], timeout=20).returncode == 0, plant.log()

@@ -114,7 +114,7 @@ def test_controller_manager_errors_through_rosservice(ros, plant):
         assert text in log
     assert plant.popen.poll() is None
     # A switch while paused returns at once (the real manager would wait for a control loop that is stopped).
-    ros.service('/bullet_plant/pause_physics')
+    ros.service('/gazebo/pause_physics')
     start = time.monotonic()
     switch = "{start_controllers: [joint_state_controller], stop_controllers: [], strictness: 2, start_asap: false, timeout: 0.0}"
     assert ros.service(CM + 'switch_controller', switch, timeout=10) == {'ok': True}
@@ -164,16 +164,16 @@ def test_pause_unpause_and_reset_like_gazebo(ros, plant):
             time.sleep(seconds)
             return len(stamps)
         settle(1.0)
-        call('/bullet_plant/pause_physics')
+        call('/gazebo/pause_physics')
         n = settle(0.1)
         paused_at = stamps[-1]
         during_pause = settle(0.5) - n
-        call('/bullet_plant/unpause_physics')
+        call('/gazebo/unpause_physics')
         end = time.time() + 20  # generous: a loaded machine may take a while to publish again
         while len(stamps) <= n and time.time() < end:
             time.sleep(0.01)
         resumed = stamps[n]
-        call('/bullet_plant/reset_simulation')
+        call('/gazebo/reset_simulation')
         settle(0.3)
         print(json.dumps(dict(paused_at=paused_at, during_pause=during_pause, resumed=resumed, after_reset=stamps[-1])))
     """)
@@ -195,7 +195,7 @@ def test_scan_publishes_at_40_hz_of_simulated_time_in_the_lasers_frame(ros, plan
 def test_spawn_model_with_a_malformed_urdf_exits_1_with_the_parsers_message(ros, plant, tmp_path):
     broken = tmp_path / 'broken.urdf'
     broken.write_text('<robot name="broken"><link name="a"><joint></robot>')
-    result = ros.run(['rosrun', 'tianracer_description', 'spawn_model', '-urdf', '-file', str(broken), '-model', 'broken'])
+    result = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-file', str(broken), '-model', 'broken'])
     assert result.returncode == 1
     assert 'not well-formed' in result.stdout + result.stderr
     assert plant.popen.poll() is None

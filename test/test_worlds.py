@@ -301,7 +301,7 @@ def test_node_resolves_a_launched_worlds_uris_against_its_file(ros, tmp_path):
 </link></model>"""))
     ros.env['GAZEBO_MODEL_PATH'] = str(models)
     node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + str(world)], 'plant')
-    ros.wait_until(lambda: ros.run(['rosservice', 'list'], timeout=5).stdout.count('/bullet_plant/pause_physics'),
+    ros.wait_until(lambda: ros.run(['rosservice', 'list'], timeout=5).stdout.count('/gazebo/pause_physics'),
                    30, 'the plant node')
     not_found = [line for line in node.log().splitlines() if 'not found' in line]
     assert len(not_found) == 1 and 'rocks::link::lost' in not_found[0], node.log()

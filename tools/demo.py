@@ -14,7 +14,7 @@ def main():
     with tempfile.TemporaryDirectory() as workdir:
         ros = RosSystem(workdir)
         try:
-            ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false',
+            ros.start(['roslaunch', 'tianracer_description', 'tianracer_world.launch', 'gui:=false',
                        'world_name:=' + os.path.join(PACKAGE, 'worlds', 'arena.world')], 'tianracer_launch')
             ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
             demo = ros.run(['rosrun', 'tianracer_description', 'figure_eight.py', '_plot:=' + plot], timeout=180)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -49,6 +50,29 @@ public:
   urdf::Pose basePose() const;
   Twist baseTwist() const;
   urdf::Pose linkPose(const std::string& link) const;  // throws std::out_of_range for an unknown link
+
+  // What gazebo_ros's model and link services see and set (docs/interfaces.md section 10). Links
+  // are the URDF's, by name; an unknown link or joint throws std::out_of_range naming it and the
+  // robot, and nothing changes then.
+  std::vector<std::string> linkNames() const;
+  // The velocity of the link frame's origin and the link's angular velocity, world frame.
+  Twist linkTwist(const std::string& link) const;
+  // set_model_state / set_link_state: the whole robot moved rigidly so that `link` is at `pose`
+  // (world), every body moving with `twist` (of the link's origin, world frame): the joints keep
+  // their positions, at rest relative to each other. A plant multibody cannot pull one link away
+  // from its joints, as Gazebo's set_link_state does.
+  void setLinkState(const std::string& link, const urdf::Pose& pose, const Twist& twist);
+  // set_model_configuration (spawn_model -J): joint positions, held to the URDF limits with a
+  // warning, the joints at rest. reset_simulation goes back to the spawn positions.
+  void setJointPositions(const std::map<std::string, double>& positions);
+  // apply_body_wrench and apply_joint_effort: a force (at the link's body's centre of mass) and
+  // torque in world axes, or a joint effort, added every step from simulated time start_ns on
+  // for duration_ns (negative: until cleared), as gazebo_ros's wrench and effort jobs.
+  void applyLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque,
+                       int64_t start_ns, int64_t duration_ns);
+  void clearLinkWrenches(const std::string& link);
+  void applyJointEffort(const std::string& joint, double effort, int64_t start_ns, int64_t duration_ns);
+  void clearJointEfforts(const std::string& joint);
 
   // gazebo_ros_control's e-stop: while on, efforts are 0 and velocity commands 0.
   void setEStop(bool on);

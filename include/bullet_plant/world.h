@@ -30,6 +30,11 @@ public:
   Param& params();
 
   double timeStep() const;        // s, the SDF's max_step_size
+  // gazebo_ros's set_physics_properties: a new step (throws std::invalid_argument outside
+  // [1e-9, 0.1] s, naming the value) and gravity (m/s^2, world frame), from the next step on.
+  void setTimeStep(double seconds);
+  urdf::Vector3 gravity() const;
+  void setGravity(const urdf::Vector3& gravity);
   int64_t timeNs() const;         // simulated time
   double time() const;
   uint64_t steps() const;

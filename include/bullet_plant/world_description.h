@@ -20,10 +20,14 @@ struct StaticCollision
   Rgba colour;        // from the matching <visual>'s material, for cameras
 };
 
+// The physics step's range: below a nanosecond the step rounds to zero simulated nanoseconds and
+// time never advances; beyond 0.1 s nothing the plant simulates stays stable.
+constexpr double kMinStepSize = 1e-9, kMaxStepSize = 0.1;  // s
+
 struct WorldDescription
 {
   std::string name = "default";
-  double max_step_size = 0.001;      // s
+  double max_step_size = 0.001;      // s, within [kMinStepSize, kMaxStepSize]
   double real_time_factor = 1.0;
   urdf::Vector3 gravity{0, 0, -9.8};
   urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
@@ -37,8 +41,10 @@ struct WorldDescription
 // the line) and for values that are not numbers; elements the plant does not support are left out
 // with a warning. Adds a ground plane when the world has none, as an empty Gazebo world has one.
 WorldDescription parseWorldDescription(const std::string& sdf_xml, const std::string& base_dir = "");
-// Reads and parses a world file; its relative URIs resolve against its directory.
-WorldDescription parseWorldFile(const std::string& path);
+// Reads and parses a world file; its relative URIs resolve against its directory. A name that is not
+// a file is looked for as Gazebo looks for `worlds/empty.world`: in GAZEBO_RESOURCE_PATH, then in
+// the gazebo_media_path exports of the packages on ROS_PACKAGE_PATH (a DescriptionError names them).
+WorldDescription parseWorldFile(const std::string& name);
 // The empty world: default physics and a ground plane.
 WorldDescription emptyWorldDescription();
 

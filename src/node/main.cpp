@@ -14,18 +14,19 @@ int main(int argc, char** argv)
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
       std::printf(
-          "usage: bullet_plant [__name:=NAME] [_param:=value ...]\n"
+          "usage: bullet_plant [__name:=NAME (default gazebo)] [_param:=value ...]\n"
           "The Bullet simulator node standing in for gzserver + gazebo_ros + gazebo_ros_control.\n"
           "Private parameters:\n"
-          "  ~world_name           world file (SDF) to load; empty for an empty world\n"
+          "  ~world_name           world file (SDF) to load, as a path or as Gazebo finds it (worlds/empty.world);\n"
+          "                        empty for an empty world\n"
           "  ~real_time_factor     simulated seconds per wall second (>= 0.001; 0 or less: as fast as possible);\n"
           "                        default: the world's <real_time_factor>\n"
           "  ~pub_clock_frequency  /clock rate in Hz (default 100)\n"
           "  ~paused               start paused (default false)\n"
-          "Services: ~pause_physics ~unpause_physics ~reset_simulation ~reset_world ~spawn_model ~delete_model\n");
+          "Services and topics: gazebo_ros's (~spawn_urdf_model, ~get_model_state, ~model_states, ...; README)\n");
       return 0;
     }
-  ros::init(argc, argv, "bullet_plant");
+  ros::init(argc, argv, "gazebo");  // gazebo_ros's node name: its services are /gazebo/...
   ros::NodeHandle nh, private_nh("~");
   try
   {

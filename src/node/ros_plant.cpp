@@ -7,10 +7,7 @@
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
-#include <std_srvs/Empty.h>
-#include <tianracer_description/DeleteModel.h>
-#include <tianracer_description/SpawnModel.h>
-
+#include "gazebo_interface.h"
 #include "robot_interface.h"
 #include "ros_names.h"
 #include "ros_time.h"
@@ -128,52 +125,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), 
   applyPaused(paused);
 
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-  auto simulator_service = [this](const std::string& name, std::function<void()> action) {
-    simulator_services_.push_back(private_nh_.advertiseService<std_srvs::Empty::Request, std_srvs::Empty::Response>(
-        name, [this, action](std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
-          onSimThread<bool>([&] {
-            action();
-            return true;
-          });
-          return true;
-        }));
-  };
-  simulator_service("pause_physics", [this] { applyPaused(true); });
-  simulator_service("unpause_physics", [this] { applyPaused(false); });
-  simulator_service("reset_simulation", [this] {
-    world_->resetSimulation();
-    last_clock_ns_ = -1;
-    publishClock();
-    pace_start_wall_ = ros::WallTime::now();
-    pace_start_sim_ns_ = world_->timeNs();
-  });
-  simulator_service("reset_world", [this] { world_->resetWorld(); });
-
-  simulator_services_.push_back(private_nh_.advertiseService<tianracer_description::SpawnModel::Request,
-                                                             tianracer_description::SpawnModel::Response>(
-      "spawn_model", [this](tianracer_description::SpawnModel::Request& req, tianracer_description::SpawnModel::Response& res) {
-        if (!req.reference_frame.empty() && req.reference_frame != "world" && req.reference_frame != "map")
-        {
-          res.success = false;
-          res.status_message = "reference frame '" + req.reference_frame + "' is not supported; use world";
-          return true;
-        }
-        urdf::Pose pose;
-        pose.position = urdf::Vector3(req.initial_pose.position.x, req.initial_pose.position.y, req.initial_pose.position.z);
-        pose.rotation = urdf::Rotation(req.initial_pose.orientation.x, req.initial_pose.orientation.y,
-                                       req.initial_pose.orientation.z, req.initial_pose.orientation.w);
-        std::map<std::string, double> joints;
-        for (size_t i = 0; i < req.joint_names.size() && i < req.joint_positions.size(); ++i)
-          joints[req.joint_names[i]] = req.joint_positions[i];
-        res.success = spawn(req.model_name, req.model_xml, req.robot_namespace, pose, joints, res.status_message);
-        return true;
-      }));
-  simulator_services_.push_back(private_nh_.advertiseService<tianracer_description::DeleteModel::Request,
-                                                             tianracer_description::DeleteModel::Response>(
-      "delete_model", [this](tianracer_description::DeleteModel::Request& req, tianracer_description::DeleteModel::Response& res) {
-        res.success = remove(req.model_name, res.status_message);
-        return true;
-      }));
+  gazebo_.reset(new GazeboInterface(*this, private_nh_));
   ROS_INFO("Bullet plant ready: world '%s', %.4f s steps, real time factor %g%s", description.name.c_str(),
            world_->timeStep(), real_time_factor_, paused ? " (paused)" : "");
 }
@@ -266,6 +218,22 @@ void RosPlant::applyPaused(bool paused)
   pace_start_sim_ns_ = world_->timeNs();
 }
 
+void RosPlant::resetSimulation()
+{
+  world_->resetSimulation();
+  last_clock_ns_ = -1;
+  publishClock();
+  pace_start_wall_ = ros::WallTime::now();
+  pace_start_sim_ns_ = world_->timeNs();
+}
+
+void RosPlant::setRealTimeFactor(double factor)
+{
+  real_time_factor_ = factor;
+  pace_start_wall_ = ros::WallTime::now();
+  pace_start_sim_ns_ = world_->timeNs();
+}
+
 void RosPlant::publishClock()
 {
   if (last_clock_ns_ >= 0 && world_->timeNs() - last_clock_ns_ < clock_period_ns_ && world_->timeNs() >= last_clock_ns_)
@@ -288,6 +256,7 @@ void RosPlant::stepAndPublish()
       kv.second->updateSubscriptions();
     kv.second->publish(now);
   }
+  gazebo_->publish();
 }
 
 void RosPlant::pace()

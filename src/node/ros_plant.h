@@ -21,6 +21,7 @@
 
 namespace bullet_plant
 {
+class GazeboInterface;
 class RobotInterface;
 
 class RosPlant
@@ -41,6 +42,7 @@ public:
   void copyParams(const std::string& key);
 
 private:
+  friend class GazeboInterface;  // gazebo_ros's services: the world, spawning, pausing, pacing
   void runQueuedWork();
 
   void stepAndPublish();
@@ -48,6 +50,8 @@ private:
   void publishStatus();
   void pace();
   void applyPaused(bool paused);
+  void resetSimulation();
+  void setRealTimeFactor(double factor);
 
   bool spawn(const std::string& name, const std::string& urdf, const std::string& ns, const urdf::Pose& pose,
              const std::map<std::string, double>& joints, std::string& message);
@@ -56,7 +60,8 @@ private:
   ros::NodeHandle nh_, private_nh_;
   std::unique_ptr<World> world_;
   std::map<std::string, std::unique_ptr<RobotInterface>> robots_;
-  std::vector<ros::ServiceServer> simulator_services_;
+  std::unique_ptr<GazeboInterface> gazebo_;
+  std::map<std::string, uint32_t> get_model_state_count_;  // get_model_state's header.seq, per model
   ros::Publisher clock_pub_;
 
   std::mutex queue_mutex_;

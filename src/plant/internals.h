@@ -51,6 +51,23 @@ struct Robot::Internals
   int64_t recovery_window_start_ns = -1;  // the first recovery of the current simulated second
   int recoveries_in_window = 0;
   bool disabled = false;                  // out of the physics after diverging step after step
+  // gazebo_ros's wrench and effort jobs (Robot::applyLinkWrench, applyJointEffort); end_ns < 0: no end.
+  struct LinkWrench
+  {
+    std::string link;
+    int body;
+    btVector3 force, torque;
+    int64_t start_ns, end_ns;
+  };
+  struct JointEffort
+  {
+    std::string joint;
+    int link;
+    double effort;
+    int64_t start_ns, end_ns;
+  };
+  std::vector<LinkWrench> wrenches;
+  std::vector<JointEffort> joint_efforts;
 
   // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
   // then recovery, readSim, sensors.
@@ -58,6 +75,12 @@ struct Robot::Internals
   void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
   void resetToSpawn();
+  // The wrench and effort jobs due at time_ns, as forces and torques of the coming step; expired
+  // jobs are dropped.
+  void applyExternalEfforts(int64_t time_ns);
+  bool hasExternalEfforts() const { return !wrenches.empty() || !joint_efforts.empty(); }
+  // After positions or velocities were set by hand: kinematics, stale contact pairs, the last good state.
+  void settleAfterTeleport();
 };
 
 struct World::Internals

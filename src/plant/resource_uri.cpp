@@ -19,6 +19,7 @@ struct PackageDir
   std::string name;
   std::string dir;
   std::string model_path_export;  // <export><gazebo_ros gazebo_model_path="..."/>, as written
+  std::string media_path_export;  // <export><gazebo_ros gazebo_media_path="..."/>, as written
 };
 
 std::vector<std::string> pathList(const char* variable)
@@ -68,6 +69,8 @@ bool readPackage(const fs::path& dir, PackageDir& package)
   gazebo = gazebo ? gazebo->FirstChildElement("gazebo_ros") : nullptr;
   const char* model_path = gazebo ? gazebo->Attribute("gazebo_model_path") : nullptr;
   package.model_path_export = model_path ? model_path : "";
+  const char* media_path = gazebo ? gazebo->Attribute("gazebo_media_path") : nullptr;
+  package.media_path_export = media_path ? media_path : "";
   return true;
 }
 
@@ -106,9 +109,8 @@ std::string packagePath(const std::string& name)
 }
 
 // gazebo_ros's rule for the export: ${prefix} is the package's directory; several paths are ':'-separated.
-std::vector<std::string> exportedModelPaths(const PackageDir& package)
+std::vector<std::string> exportedPaths(const PackageDir& package, std::string text)
 {
-  std::string text = package.model_path_export;
   const std::string prefix = "${prefix}";
   for (size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at + package.dir.size()))
     text.replace(at, prefix.size(), package.dir);
@@ -134,7 +136,7 @@ std::vector<std::string> modelSearchPath()
 {
   std::vector<std::string> dirs = pathList("GAZEBO_MODEL_PATH");
   for (const PackageDir& package : packagesOnPath())
-    for (const std::string& dir : exportedModelPaths(package))
+    for (const std::string& dir : exportedPaths(package, package.model_path_export))
       dirs.push_back(dir);
   return dirs;
 }
@@ -148,6 +150,28 @@ std::string findModelDir(const std::string& name, std::string& reason)
         return dir + "/" + name;
   reason = "model '" + name + "' is in none of GAZEBO_MODEL_PATH and the gazebo_model_path exports of the "
            "packages on ROS_PACKAGE_PATH (looked in " + joined(search) + ")";
+  return "";
+}
+
+std::vector<std::string> resourceSearchPath()
+{
+  std::vector<std::string> dirs = pathList("GAZEBO_RESOURCE_PATH");
+  for (const PackageDir& package : packagesOnPath())
+    for (const std::string& dir : exportedPaths(package, package.media_path_export))
+      dirs.push_back(dir);
+  return dirs;
+}
+
+std::string findWorldFile(const std::string& name, std::string& reason)
+{
+  if (isFile(name))
+    return name;
+  const std::vector<std::string> search = fs::path(name).is_absolute() ? std::vector<std::string>() : resourceSearchPath();
+  for (const std::string& dir : search)
+    if (isFile(dir + "/" + name))
+      return dir + "/" + name;
+  reason = "world file '" + name + "' not found (as given, then in GAZEBO_RESOURCE_PATH and the gazebo_media_path "
+           "exports of the packages on ROS_PACKAGE_PATH: " + joined(search) + ")";
   return "";
 }
 

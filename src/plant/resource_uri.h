@@ -24,4 +24,13 @@ std::string findModelDir(const std::string& name, std::string& reason);
 // ROS_PACKAGE_PATH, as gazebo_ros's launch scripts add them.
 std::vector<std::string> modelSearchPath();
 
+// Where Gazebo looks for a world file named relatively (gazebo_ros's default `worlds/empty.world`):
+// GAZEBO_RESOURCE_PATH's entries, then the gazebo_media_path exports of the packages on
+// ROS_PACKAGE_PATH (gazebo_ros adds them to GAZEBO_RESOURCE_PATH).
+std::vector<std::string> resourceSearchPath();
+
+// The world file `name` names: itself when it exists (absolute, or relative to the working
+// directory), else the first resourceSearchPath() directory holding it; "" with `reason` when none does.
+std::string findWorldFile(const std::string& name, std::string& reason);
+
 }  // namespace bullet_plant

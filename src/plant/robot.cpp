@@ -1,9 +1,12 @@
 // Robot: a robot in the world, its state (poses, joints, the last good state it falls back to) and
 // the per-step work World::step asks of it. Built by robot_builder.cpp; its joint layer is in
 // joint_layer.cpp, its sensors in sensors.cpp.
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "internals.h"
+#include "physics/multibody_dynamics.h"
 #include "robot_builder.h"
 #include "sensor_rendering.h"
 
@@ -49,6 +52,17 @@ void RobotMultibody::appendRayPrimitives(std::vector<RayPrimitive>& out) const
       out.back().frame = body * p.frame;
     }
   }
+}
+
+double positionWithinLimits(const MovableJoint& j, double q, Log& log, const std::string& robot, const std::string& what)
+{
+  if (!j.limits.has_position || (q >= j.limits.lower && q <= j.limits.upper))
+    return q;
+  // Outside its limits, the limit rows would push the joint back at overlap / 5 dt per step.
+  const double within = std::max(j.limits.lower, std::min(q, j.limits.upper));
+  log.warn(what + " " + formatNumber(q) + " of joint '" + j.name + "' of '" + robot + "' is outside its URDF limits [" +
+           formatNumber(j.limits.lower) + ", " + formatNumber(j.limits.upper) + "]; it starts at " + formatNumber(within));
+  return within;
 }
 
 // ------------------------------------------------------------------------------ last good state
@@ -161,6 +175,47 @@ void Robot::Internals::updateSensors(int64_t time_ns)
   }
 }
 
+void Robot::Internals::settleAfterTeleport()
+{
+  multibody.updateKinematics();
+  joint_layer.resetPids();
+  for (auto& col : multibody.colliders)
+    world->dynamics->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(
+        col->getBroadphaseHandle(), world->dynamics->getDispatcher());
+  last_good.save(multibody);
+}
+
+// gazebo_ros's job rule: a job acts while start <= now <= start + duration (always with a negative
+// duration) and is dropped once now > start + duration.
+void Robot::Internals::applyExternalEfforts(int64_t time_ns)
+{
+  btMultiBody& mb = *multibody.bullet;
+  auto due = [time_ns](int64_t start, int64_t end) { return time_ns >= start && (end < 0 || time_ns <= end); };
+  auto expired = [time_ns](int64_t end) { return end >= 0 && time_ns > end; };
+  for (const LinkWrench& w : wrenches)
+    if (due(w.start_ns, w.end_ns))
+    {
+      if (w.body == 0)
+      {
+        mb.addBaseForce(w.force);
+        mb.addBaseTorque(w.torque);
+      }
+      else
+      {
+        mb.addLinkForce(w.body - 1, w.force);
+        mb.addLinkTorque(w.body - 1, w.torque);
+      }
+    }
+  for (const JointEffort& e : joint_efforts)
+    if (due(e.start_ns, e.end_ns))
+      mb.addJointTorque(e.link, btScalar(e.effort));
+  wrenches.erase(std::remove_if(wrenches.begin(), wrenches.end(), [&](const LinkWrench& w) { return expired(w.end_ns); }),
+                 wrenches.end());
+  joint_efforts.erase(std::remove_if(joint_efforts.begin(), joint_efforts.end(),
+                                     [&](const JointEffort& e) { return expired(e.end_ns); }),
+                      joint_efforts.end());
+}
+
 void Robot::Internals::resetToSpawn()
 {
   if (disabled)  // out of the physics: it stays as it was until removed
@@ -172,11 +227,7 @@ void Robot::Internals::resetToSpawn()
   for (size_t i = 0; i < multibody.joints.size(); ++i)
     last_good.q[i] = btScalar(multibody.joints[i].initial_position);
   last_good.restore(multibody);
-  joint_layer.resetPids();
-  for (auto& col : multibody.colliders)
-    world->dynamics->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(
-        col->getBroadphaseHandle(), world->dynamics->getDispatcher());
-  last_good.save(multibody);
+  settleAfterTeleport();
 }
 
 // ---------------------------------------------------------------------------------------- Robot
@@ -237,6 +288,133 @@ Twist Robot::baseTwist() const
 urdf::Pose Robot::linkPose(const std::string& link) const
 {
   return fromBullet(in_->multibody.linkWorldTransform(link, in_->name));
+}
+
+std::vector<std::string> Robot::linkNames() const
+{
+  std::vector<std::string> names;
+  for (const auto& kv : in_->multibody.link_in_body)
+    names.push_back(kv.first);
+  return names;
+}
+
+namespace
+{
+int bodyOfLink(const RobotMultibody& multibody, const std::string& link, const std::string& robot)
+{
+  auto it = multibody.link_in_body.find(link);
+  if (it == multibody.link_in_body.end())
+    throw std::out_of_range("robot '" + robot + "' has no link '" + link + "'");
+  return it->second.first;
+}
+
+const MovableJoint& movableJoint(const RobotMultibody& multibody, const std::string& joint, const std::string& robot)
+{
+  auto it = multibody.joint_index.find(joint);
+  if (it == multibody.joint_index.end())
+    throw std::out_of_range("robot '" + robot + "' has no movable joint '" + joint + "'");
+  return multibody.joints[it->second];
+}
+
+btVector3 toBullet(const urdf::Vector3& v) { return btVector3(btScalar(v.x), btScalar(v.y), btScalar(v.z)); }
+
+int64_t jobEnd(int64_t start_ns, int64_t duration_ns) { return duration_ns < 0 ? -1 : start_ns + duration_ns; }
+}  // namespace
+
+Twist Robot::linkTwist(const std::string& link) const
+{
+  const RobotMultibody& multibody = in_->multibody;
+  const int body = bodyOfLink(multibody, link, in_->name);
+  const btMultiBody& mb = *multibody.bullet;
+  MultibodyState state;
+  linkKinematics(mb, state);
+  const btScalar* qd = mb.getVelocityVector();
+  const btVector3 origin = multibody.linkWorldTransform(link, in_->name).getOrigin();
+  std::vector<btScalar> row(state.n);
+  Twist t;
+  const btVector3 axes[3] = {btVector3(1, 0, 0), btVector3(0, 1, 0), btVector3(0, 0, 1)};
+  for (int a = 0; a < 3; ++a)
+  {
+    contactJacobianRow(state, body - 1, origin, axes[a], row.data());
+    double v = 0;
+    for (int i = 0; i < state.n; ++i)
+      v += double(row[i]) * double(qd[i]);
+    t.linear[a] = v;
+  }
+  // The base's angular velocity plus each joint's between the base and the body.
+  const btVector3 omega = mb.getBaseOmega();
+  for (int a = 0; a < 3; ++a)
+    t.angular[a] = state.first ? 0.0 : double(omega[a]);
+  for (int b = body; b > 0; b = state.bodies[b].parent)
+    for (int i = state.bodies[b].first_dof; i < state.bodies[b].first_dof + state.bodies[b].dof_count; ++i)
+      for (int a = 0; a < 3; ++a)
+        t.angular[a] += state.dofs[i].angular[a] * double(qd[i]);
+  return t;
+}
+
+void Robot::setLinkState(const std::string& link, const urdf::Pose& pose, const Twist& twist)
+{
+  RobotMultibody& multibody = in_->multibody;
+  bodyOfLink(multibody, link, in_->name);
+  const btTransform root = multibody.rootWorldTransform();
+  const btTransform link_in_root = root.inverse() * multibody.linkWorldTransform(link, in_->name);
+  const btTransform new_root = toBullet(pose) * link_in_root.inverse();
+  btMultiBody& mb = *multibody.bullet;
+  const btTransform base = new_root * multibody.bodies[0].urdf_from_com;
+  mb.setBaseWorldTransform(base);
+  const btVector3 omega(btScalar(twist.angular[0]), btScalar(twist.angular[1]), btScalar(twist.angular[2]));
+  const btVector3 v(btScalar(twist.linear[0]), btScalar(twist.linear[1]), btScalar(twist.linear[2]));
+  mb.setBaseOmega(omega);
+  mb.setBaseVel(v + omega.cross(base.getOrigin() - toBullet(pose).getOrigin()));
+  for (const MovableJoint& j : multibody.joints)
+    mb.setJointVel(j.link, 0);
+  in_->settleAfterTeleport();
+}
+
+void Robot::setJointPositions(const std::map<std::string, double>& positions)
+{
+  RobotMultibody& multibody = in_->multibody;
+  for (const auto& kv : positions)
+  {
+    movableJoint(multibody, kv.first, in_->name);
+    if (!std::isfinite(kv.second))
+      throw std::invalid_argument("position of joint '" + kv.first + "' is not finite");
+  }
+  btMultiBody& mb = *multibody.bullet;
+  for (const auto& kv : positions)
+  {
+    const MovableJoint& j = movableJoint(multibody, kv.first, in_->name);
+    mb.setJointPos(j.link, btScalar(positionWithinLimits(j, kv.second, in_->world->log, in_->name, "position")));
+    mb.setJointVel(j.link, 0);
+  }
+  in_->settleAfterTeleport();
+}
+
+void Robot::applyLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque,
+                            int64_t start_ns, int64_t duration_ns)
+{
+  const int body = bodyOfLink(in_->multibody, link, in_->name);
+  in_->wrenches.push_back({link, body, toBullet(force), toBullet(torque), start_ns, jobEnd(start_ns, duration_ns)});
+}
+
+void Robot::clearLinkWrenches(const std::string& link)
+{
+  auto& w = in_->wrenches;
+  w.erase(std::remove_if(w.begin(), w.end(), [&](const Internals::LinkWrench& x) { return x.link == link; }), w.end());
+}
+
+void Robot::applyJointEffort(const std::string& joint, double effort, int64_t start_ns, int64_t duration_ns)
+{
+  const MovableJoint& j = movableJoint(in_->multibody, joint, in_->name);
+  if (!std::isfinite(effort))
+    throw std::invalid_argument("effort on joint '" + joint + "' is not finite");
+  in_->joint_efforts.push_back({joint, j.link, effort, start_ns, jobEnd(start_ns, duration_ns)});
+}
+
+void Robot::clearJointEfforts(const std::string& joint)
+{
+  auto& e = in_->joint_efforts;
+  e.erase(std::remove_if(e.begin(), e.end(), [&](const Internals::JointEffort& x) { return x.joint == joint; }), e.end());
 }
 
 std::vector<Sensor*> Robot::sensors()

@@ -359,15 +359,7 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
     auto initial = initial_joints.find(j.name);
     if (initial != initial_joints.end())
       j.initial_position = initial->second;
-    if (j.limits.has_position && (j.initial_position < j.limits.lower || j.initial_position > j.limits.upper))
-    {
-      // Started outside its limits, the limit rows would push the joint back at overlap / 5 dt per step.
-      const double within = std::max(j.limits.lower, std::min(j.initial_position, j.limits.upper));
-      r.world->log.warn("initial position " + formatNumber(j.initial_position) + " of joint '" + j.name + "' of '" +
-                        r.name + "' is outside its URDF limits [" + formatNumber(j.limits.lower) + ", " +
-                        formatNumber(j.limits.upper) + "]; it starts at " + formatNumber(within));
-      j.initial_position = within;
-    }
+    j.initial_position = positionWithinLimits(j, j.initial_position, r.world->log, r.name, "initial position");
     mb->setJointPos(j.link, btScalar(j.initial_position));
 
     j.axis_inertia = axis_inertia[bi];

@@ -15,6 +15,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include "bullet_plant/joint_layer.h"
+#include "bullet_plant/log.h"
 #include "physics/joint_drive.h"
 #include "ray_caster.h"
 
@@ -66,6 +67,10 @@ struct MovableJoint
   double explicit_effort = 0.0;                // actuator torque applied explicitly this step
   double initial_position = 0.0;
 };
+
+// q held to the joint's URDF position limits, with a warning naming `what` (initial position,
+// position), the joint and the robot when it was outside.
+double positionWithinLimits(const MovableJoint& j, double q, Log& log, const std::string& robot, const std::string& what);
 
 struct RobotMultibody
 {

@@ -1,6 +1,7 @@
 #include "bullet_plant/world.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <limits>
 
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
@@ -112,6 +113,29 @@ const WorldDescription& World::description() const { return in_->description; }
 Log& World::log() { return in_->log; }
 Param& World::params() { return in_->params; }
 double World::timeStep() const { return in_->step_s; }
+
+void World::setTimeStep(double seconds)
+{
+  if (!(seconds >= kMinStepSize && seconds <= kMaxStepSize))
+    throw std::invalid_argument("time step " + formatNumber(seconds) + " s is outside [" + formatNumber(kMinStepSize) +
+                                ", " + formatNumber(kMaxStepSize) + "] s");
+  in_->step_ns = std::llround(seconds * 1e9);
+  in_->step_s = in_->step_ns * 1e-9;
+  in_->dynamics->getSolverInfo().m_timeStep = btScalar(in_->step_s);
+}
+
+urdf::Vector3 World::gravity() const
+{
+  const btVector3 g = in_->dynamics->getGravity();
+  return urdf::Vector3(g.x(), g.y(), g.z());
+}
+
+void World::setGravity(const urdf::Vector3& g)
+{
+  if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z))
+    throw std::invalid_argument("gravity must be finite");
+  in_->dynamics->setGravity(btVector3(btScalar(g.x), btScalar(g.y), btScalar(g.z)));
+}
 int64_t World::timeNs() const { return in_->time_ns; }
 double World::time() const { return in_->time_ns * 1e-9; }
 uint64_t World::steps() const { return in_->steps; }
@@ -198,7 +222,11 @@ void World::step(int n)
         r->in_->updateControllers(w.time_ns);
     for (auto& r : w.robots)
       if (!r->in_->disabled)
+      {
         r->in_->joint_layer.writeSim(r->in_->multibody, w.step_s);
+        if (r->in_->hasExternalEfforts())
+          r->in_->applyExternalEfforts(w.time_ns);
+      }
     w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
     w.time_ns += w.step_ns;
     ++w.steps;

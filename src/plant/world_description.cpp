@@ -1,4 +1,5 @@
 #include "bullet_plant/world_description.h"
+#include "bullet_plant/log.h"
 
 #include <cmath>
 #include <filesystem>
@@ -327,11 +328,11 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
   {
     world.max_step_size = xml::childDouble(physics, "max_step_size", world.max_step_size);
     world.real_time_factor = xml::childDouble(physics, "real_time_factor", world.real_time_factor);
-    // Below a nanosecond the step rounds to zero simulated nanoseconds and time never advances.
-    if (!(world.max_step_size >= 1e-9 && world.max_step_size <= 0.1))
+    if (!(world.max_step_size >= kMinStepSize && world.max_step_size <= kMaxStepSize))
     {
       std::ostringstream text;
-      text << "<physics><max_step_size> " << world.max_step_size << " is out of range [1e-9, 0.1] s";
+      text << "<physics><max_step_size> " << world.max_step_size << " is out of range [" << formatNumber(kMinStepSize) << ", "
+           << formatNumber(kMaxStepSize) << "] s";
       throw DescriptionError(text.str());
     }
   }
@@ -386,8 +387,12 @@ WorldDescription parseWorldDescription(const std::string& sdf_xml, const std::st
   return parseWorld(sdf_xml, Source{"", base_dir});
 }
 
-WorldDescription parseWorldFile(const std::string& path)
+WorldDescription parseWorldFile(const std::string& name)
 {
+  std::string reason;
+  const std::string path = findWorldFile(name, reason);
+  if (path.empty())
+    throw DescriptionError(reason);
   return parseWorld(readFile(path, "world file"), Source{path, directoryOf(path)});
 }
 

@@ -126,13 +126,13 @@ class RosSystem:
 
 def tianracer_plant(ros, urdf_path, world=None, paused=False):
     """The plant with the car spawned and the tutorial's YAML loaded (no controllers yet)."""
-    args = ['roslaunch', 'tianracer_description', 'empty_world.launch', 'gui:=false', 'paused:=%s' % str(paused).lower()]
+    args = ['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=false', 'paused:=%s' % str(paused).lower()]
     if world:
         args.append('world_name:=' + world)
     plant = ros.start(args, 'plant')
     ros.run(['rosparam', 'set', '/robot_description', '--textfile', urdf_path])
     ros.run(['rosparam', 'load', CONFIG_YAML])
-    spawn = ros.run(['rosrun', 'tianracer_description', 'spawn_model', '-urdf', '-param', 'robot_description',
+    spawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'robot_description',
                      '-model', 'tianracer'], timeout=60)
     assert spawn.returncode == 0, spawn.stdout + spawn.stderr + plant.log()
     return plant

@@ -21,7 +21,6 @@ def package_path(package='tianracer_description'):
 PACKAGE = package_path()
 CONFIG_YAML = os.path.join(PACKAGE, 'config', 'smart_control_config.yaml')
 MODEL_XACRO = os.path.join(PACKAGE, 'urdf', 'tianracer_description.xacro')
-EMPTY_WORLD = os.path.join(PACKAGE, 'worlds', 'empty.world')
 RACE_TRACK_WORLD = os.path.join(PACKAGE, 'worlds', 'race_track.world')
 
 # What the tutorial's control.launch hands the spawner, in its order.

@@ -28,7 +28,10 @@ protected:
     // a workspace with a package whose directory is not its name, exporting a model path
     write("ws/src/group/pkg_dir/package.xml",
           "<package format=\"2\"><name>my_worlds</name><export>"
-          "<gazebo_ros gazebo_model_path=\"${prefix}/models:${prefix}/more_models\"/></export></package>");
+          "<gazebo_ros gazebo_model_path=\"${prefix}/models:${prefix}/more_models\" gazebo_media_path=\"${prefix}\"/>"
+          "</export></package>");
+    write("ws/src/group/pkg_dir/worlds/shipped.world", "<sdf/>");
+    write("media/worlds/shipped.world", "<sdf/>");
     write("ws/src/group/pkg_dir/meshes/part.dae", "<COLLADA/>");
     write("ws/src/group/pkg_dir/models/exported/meshes/e.stl", "solid e\nendsolid e\n");
     write("ws/src/group/pkg_dir/more_models/shared/meshes/from_export.stl", "solid b\nendsolid b\n");
@@ -145,4 +148,17 @@ TEST_F(ResourceUri, ADirectoryIsNotAFile)
 {
   EXPECT_NE(reasonFor("model://crate/meshes").find("looked in"), std::string::npos);
   EXPECT_NE(reasonFor(root + "/world/meshes").find("not found"), std::string::npos);
+}
+
+TEST_F(ResourceUri, WorldFileAsGivenThenResourcePathThenMediaPathExports)
+{
+  std::string reason;
+  EXPECT_EQ(findWorldFile(root + "/world/meshes/rock.obj", reason), root + "/world/meshes/rock.obj");
+  EXPECT_EQ(findWorldFile("worlds/shipped.world", reason), root + "/ws/src/group/pkg_dir/worlds/shipped.world");
+  setenv("GAZEBO_RESOURCE_PATH", (root + "/media").c_str(), 1);
+  EXPECT_EQ(findWorldFile("worlds/shipped.world", reason), root + "/media/worlds/shipped.world");
+  unsetenv("GAZEBO_RESOURCE_PATH");
+  EXPECT_EQ(findWorldFile("worlds/none.world", reason), "");
+  EXPECT_NE(reason.find("'worlds/none.world'"), std::string::npos) << reason;
+  EXPECT_NE(reason.find(root + "/ws/src/group/pkg_dir"), std::string::npos) << reason;
 }

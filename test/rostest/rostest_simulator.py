@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""The plant node's simulator services (test/simulator.test): pause and unpause stop and restart
-simulated time, reset_simulation takes it back to 0, spawn_model and delete_model add and remove a
-car with gazebo_ros's success flags."""
+"""The simulator's gazebo_ros services (test/simulator.test): pause and unpause stop and restart
+simulated time, reset_simulation takes it back to 0, spawn_urdf_model and delete_model add and
+remove a car with gazebo_ros's success flags and status messages."""
 import sys
 import time
 import unittest
@@ -11,9 +11,9 @@ import rostest
 from geometry_msgs.msg import Pose
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
-from tianracer_description.srv import DeleteModel, SpawnModel
+from gazebo_msgs.srv import DeleteModel, SpawnModel
 
-PLANT = '/bullet_plant/'
+GAZEBO = '/gazebo/'
 
 
 class SimulatorServices(unittest.TestCase):
@@ -23,9 +23,9 @@ class SimulatorServices(unittest.TestCase):
         cls.clock = []
         rospy.Subscriber('/clock', Clock, lambda m: cls.clock.append(m.clock.to_sec()))
         for name, kind in (('pause_physics', Empty), ('unpause_physics', Empty), ('reset_simulation', Empty),
-                           ('spawn_model', SpawnModel), ('delete_model', DeleteModel)):
-            rospy.wait_for_service(PLANT + name, 60.0)
-            setattr(cls, name, rospy.ServiceProxy(PLANT + name, kind))
+                           ('spawn_urdf_model', SpawnModel), ('delete_model', DeleteModel)):
+            rospy.wait_for_service(GAZEBO + name, 60.0)
+            setattr(cls, name, rospy.ServiceProxy(GAZEBO + name, kind))
 
     def latest_clock_after(self, wall_seconds):
         time.sleep(wall_seconds)
@@ -43,8 +43,8 @@ class SimulatorServices(unittest.TestCase):
     def spawn(self, name):
         pose = Pose()
         pose.orientation.w = 1.0
-        return self.spawn_model(model_name=name, model_xml=rospy.get_param('/robot_description'), robot_namespace='',
-                                initial_pose=pose, reference_frame='world', joint_names=[], joint_positions=[])
+        return self.spawn_urdf_model(model_name=name, model_xml=rospy.get_param('/robot_description'),
+                                     robot_namespace='', initial_pose=pose, reference_frame='world')
 
     def test_1_pause_stops_simulated_time_and_unpause_restarts_it(self):
         self.latest_clock_after(0.5)
@@ -62,13 +62,14 @@ class SimulatorServices(unittest.TestCase):
     def test_3_spawn_and_delete_with_their_flags(self):
         first = self.spawn('car')
         self.assertTrue(first.success, first.status_message)
+        self.assertEqual(first.status_message, 'SpawnModel: Successfully spawned entity')
         again = self.spawn('car')
         self.assertFalse(again.success)
-        self.assertIn("'car'", again.status_message)
+        self.assertEqual(again.status_message, 'SpawnModel: Failure - entity already exists.')
         self.assertTrue(self.delete_model(model_name='car').success)
         gone = self.delete_model(model_name='car')
         self.assertFalse(gone.success)
-        self.assertIn("'car'", gone.status_message)
+        self.assertEqual(gone.status_message, 'DeleteModel: model does not exist')
 
 
 if __name__ == '__main__':
