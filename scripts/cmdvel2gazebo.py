@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """cmdvel2gazebo: the tutorial's Twist -> Ackermann converter, in Python 3.
 
-Subscribes /tianracer/cmd_vel (geometry_msgs/Twist) and publishes, at 10 Hz, the two rear wheel
-speeds and the two steering angles to the tutorial's four controllers. Without a Twist for 0.2 s it
-commands the wheels to 0 and the steering straight (dead man's switch).
+Subscribes /tianracer/cmd_vel (geometry_msgs/Twist) and, for race car drivers, ~ackermann_topic
+(ackermann_msgs/AckermannDriveStamped: drive.speed in m/s, drive.steering_angle in rad of the ideal
+middle front wheel), and publishes, at 10 Hz, the two rear wheel speeds and the two steering angles
+to the tutorial's four controllers. Without a command for 0.2 s it commands the wheels to 0 and the
+steering straight (dead man's switch).
 
 Kept from the tutorial: the class, topics, rate, timeout, geometry and clamping. Fixed: the wheel
 speed is linear.x / wheel radius (the tutorial's `/ 0.3` belonged to the author's own model); the
@@ -13,11 +15,13 @@ angular.z means.
 Private parameters (defaults from robot_description):
   ~wheelbase, ~rear_track, ~front_track, ~wheel_radius (m), ~max_inside_steer (rad)
   ~angular_mode: steering_angle (default; the tutorial's) or yaw_rate (REP 103)
+  ~ackermann_topic: /tianracer/ackermann_cmd_stamped ('' for none)
   ~timeout: 0.2 s; ~rate: 10 Hz
 """
 import math
 
 import rospy
+from ackermann_msgs.msg import AckermannDriveStamped
 from geometry_msgs.msg import Twist
 from std_msgs.msg import Float64
 
@@ -36,6 +40,9 @@ class CmdVel2Gazebo:
         ideal_steering(0.0, 0.0, self.angular_mode, self.L)  # refuses an unknown mode early
 
         rospy.Subscriber('/tianracer/cmd_vel', Twist, self.callback, queue_size=1)
+        ackermann_topic = rospy.get_param('~ackermann_topic', '/tianracer/ackermann_cmd_stamped')
+        if ackermann_topic:
+            rospy.Subscriber(ackermann_topic, AckermannDriveStamped, self.ackermann_callback, queue_size=1)
 
         self.pub_steerL = rospy.Publisher('/tianracer/front_left_steering_position_controller/command', Float64, queue_size=1)
         self.pub_steerR = rospy.Publisher('/tianracer/front_right_steering_position_controller/command', Float64, queue_size=1)
@@ -80,9 +87,18 @@ class CmdVel2Gazebo:
         if not (math.isfinite(data.linear.x) and math.isfinite(data.angular.z)):
             rospy.logwarn_throttle(1.0, 'cmdvel2gazebo: ignored a Twist with non-finite linear.x or angular.z')
             return
-        self.x = data.linear.x
+        self.command(data.linear.x, ideal_steering(data.linear.x, data.angular.z, self.angular_mode, self.L))
+
+    def ackermann_callback(self, data):
+        if not (math.isfinite(data.drive.speed) and math.isfinite(data.drive.steering_angle)):
+            rospy.logwarn_throttle(1.0, 'cmdvel2gazebo: ignored an AckermannDriveStamped with non-finite speed or '
+                                   'steering_angle')
+            return
+        self.command(data.drive.speed, data.drive.steering_angle)
+
+    def command(self, speed, steer):
+        self.x = speed
         # constrain the ideal steering angle such that the ackermann steering is maxed out
-        steer = ideal_steering(data.linear.x, data.angular.z, self.angular_mode, self.L)
         self.z = max(-self.maxsteer, min(self.maxsteer, steer))
         self.lastMsg = rospy.Time.now()
 

@@ -254,7 +254,7 @@ def test_malformed_world_file_names_the_file_and_line(tmp_path):
                                         '<model name="m"><static>true</static>\n</world></sdf>\n')
     with pytest.raises(bullet_plant.DescriptionError, match=r"bad\.world.* line 4"):
         bullet_plant.World.from_file(str(bad))
-    with pytest.raises(bullet_plant.DescriptionError, match=r"cannot read world file .*nowhere\.world"):
+    with pytest.raises(bullet_plant.DescriptionError, match=r"world file '.*nowhere\.world' not found \(as given, then in GAZEBO_RESOURCE_PATH"):
         bullet_plant.World.from_file(str(tmp_path / 'nowhere.world'))
 
 
@@ -268,8 +268,8 @@ def test_malformed_model_file_names_the_model_file_and_line(tmp_path, model_path
 
 def test_shipped_worlds_read_by_file_as_by_text():
     import os
-    root = os.path.join(os.path.dirname(__file__), '..', 'worlds')
-    for name in ('empty.world', 'race_track.world'):
+    root = os.path.join(os.path.dirname(__file__), '..')
+    for name in ('compat/gazebo_ros/worlds/empty.world', 'worlds/race_track.world'):
         path = os.path.join(root, name)
         by_file = load(path)
         by_text = bullet_plant.World.from_sdf(open(path).read())

@@ -156,6 +156,7 @@ bool finite(const State& s)
 // gazebo_ros's jobs start no earlier than now.
 int64_t jobStart(const ros::Time& start, int64_t now_ns) { return std::max<int64_t>(int64_t(start.toNSec()), now_ns); }
 
+// The name of the XML's root element; "" when it is not well-formed.
 std::string rootElement(const std::string& xml)
 {
   tinyxml2::XMLDocument doc;
@@ -213,7 +214,9 @@ GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(
   // spawn_urdf_model refuses what is not URDF (gazebo_ros fails the call itself then).
   services_.push_back(nh.advertiseService<gazebo_msgs::SpawnModel::Request, gazebo_msgs::SpawnModel::Response>(
       "spawn_urdf_model", [spawn](gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res) {
-        if (rootElement(req.model_xml) != "robot")
+        // XML that is not well-formed goes on to the plant, whose error names the parser's complaint.
+        const std::string root = rootElement(req.model_xml);
+        if (!root.empty() && root != "robot")
         {
           ROS_ERROR("SpawnModel: Failure - entity format is invalid.");
           res.success = false;
@@ -271,7 +274,7 @@ GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(
             }
             state = relativeTo(state, linkState(frame));
           }
-          res.header.seq = ++plant_.get_model_state_count_[req.model_name];
+          res.header.seq = ++get_model_state_calls_[req.model_name];
           res.header.stamp = rosTime(world.timeNs());
           res.header.frame_id = req.relative_entity_name;
           res.pose = toMsg(state.pose);

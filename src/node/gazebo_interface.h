@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@ private:
   std::vector<ros::ServiceServer> services_;
   std::vector<ros::Subscriber> subscribers_;
   ros::Publisher model_states_pub_, link_states_pub_;
+  std::map<std::string, uint32_t> get_model_state_calls_;  // get_model_state's header.seq, per model
 };
 
 }  // namespace bullet_plant

@@ -61,7 +61,6 @@ private:
   std::unique_ptr<World> world_;
   std::map<std::string, std::unique_ptr<RobotInterface>> robots_;
   std::unique_ptr<GazeboInterface> gazebo_;
-  std::map<std::string, uint32_t> get_model_state_count_;  // get_model_state's header.seq, per model
   ros::Publisher clock_pub_;
 
   std::mutex queue_mutex_;
