@@ -200,13 +200,14 @@ print(json.dumps(out))
 @pytest.mark.ros
 def test_spawn_and_delete_with_gazebo_ros_messages(ros, paused_plant, urdf_xml):
     out = ros.python(PRELUDE + """
-urdf = %r
+template = %r
+urdf = lambda ns: template.replace('/tianracer', ns)   # each car its own controller namespace
 spawn = srv('spawn_urdf_model', SpawnModel)
 sdf_spawn = srv('spawn_sdf_model', SpawnModel)
-out['second'] = result(spawn('car2', urdf, '/car2', pose(0.0, 1.0), 'tianracer::base_footprint'))
+out['second'] = result(spawn('car2', urdf('/car2'), '/car2', pose(0.0, 1.0), 'tianracer::base_footprint'))
 out['second_at'] = srv('get_model_state', GetModelState)('car2', '').pose.position.y
-out['again'] = result(spawn('car2', urdf, '/car2', pose(), ''))
-out['bad_frame'] = result(spawn('car3', urdf, '/car3', pose(), 'nowhere'))
+out['again'] = result(spawn('car2', urdf('/car2b'), '/car2b', pose(), ''))
+out['bad_frame'] = result(spawn('car3', urdf('/car3'), '/car3', pose(), 'nowhere'))
 try:
     spawn('box', '<sdf version="1.6"><model name="box"/></sdf>', '', pose(), '')
     out['not_urdf'] = 'answered'
@@ -214,13 +215,13 @@ except rospy.ServiceException:
     out['not_urdf'] = 'call failed'
 sdf = sdf_spawn('box', '<sdf version="1.6"><model name="box"/></sdf>', '', pose(), '')
 out['sdf'] = result(sdf)
-out['sdf_takes_urdf'] = result(sdf_spawn('car4', urdf, '/car4', pose(0.0, -1.0), ''))
+out['sdf_takes_urdf'] = result(sdf_spawn('car4', urdf('/car4'), '/car4', pose(0.0, -1.0), ''))
 delete = srv('delete_model', DeleteModel)
 out['delete'] = result(delete('car2'))
 out['delete_again'] = result(delete('car2'))
 out['names'] = srv('get_world_properties', GetWorldProperties)().model_names
 print(json.dumps(out))
-""" % urdf_xml.replace('/tianracer', '/car_ns'), timeout=120)
+""" % urdf_xml, timeout=120)
     assert out['second'] == [True, 'SpawnModel: Successfully spawned entity']
     assert out['second_at'] == pytest.approx(1.0, abs=1e-3), 'spawned relative to tianracer::base_footprint'
     assert out['again'] == [False, 'SpawnModel: Failure - entity already exists.']
