@@ -43,6 +43,10 @@ struct ControllerContext
   Log& log;
 };
 
+// The message a controller's command topic carries: none, std_msgs/Float64 on <controller>/command,
+// std_msgs/Float64MultiArray on <controller>/command, geometry_msgs/Twist on <controller>/cmd_vel.
+enum class CommandTopic { None, Float64, Float64MultiArray, Twist };
+
 class Controller
 {
 public:
@@ -54,9 +58,13 @@ public:
   virtual void stopping(int64_t time_ns) {}
 
   virtual const std::vector<ClaimedResources>& claimedResources() const { return claimed_; }
-  // The Float64 on <controller>/command; false for a controller without one or a non-finite value.
+  // What the controller's command topic carries (docs/interfaces.md sections 4 and 12).
+  virtual CommandTopic commandTopic() const { return CommandTopic::None; }
+  // A Float64 on <controller>/command; false for a controller without one or a non-finite value.
   virtual bool setCommand(double value) { return false; }
-  virtual bool hasCommand() const { return false; }
+  // A Float64MultiArray on <controller>/command (the JointGroup controllers): false, with the reason
+  // logged, when its size is not the number of joints or a value is not finite.
+  virtual bool setCommands(const std::vector<double>& values) { return false; }
   // Whether it reports control_msgs/JointControllerState on <controller>/state.
   virtual bool hasState() const { return false; }
   // Samples produced since the last take (joint_states for the joint state controller, state for

@@ -1,8 +1,11 @@
 #include "controller_topics.h"
 
+#include <functional>
+
 #include <control_msgs/JointControllerState.h>
 #include <sensor_msgs/JointState.h>
 #include <std_msgs/Float64.h>
+#include <std_msgs/Float64MultiArray.h>
 
 #include "bullet_plant/controller_manager.h"
 #include "ros_plant.h"
@@ -62,7 +65,7 @@ void ControllerTopics::refresh()
   {
     Controller* c = manager_.controller(name);
     controllers_.emplace_back(name, c);
-    if (c->hasCommand())
+    if (c->commandTopic() != CommandTopic::None)
     {
       auto it = command_subs_.find(name);
       subs[name] = it != command_subs_.end() ? it->second : subscribeCommand(name);
@@ -83,15 +86,31 @@ void ControllerTopics::refresh()
 
 ros::Subscriber ControllerTopics::subscribeCommand(const std::string& name)
 {
-  return nh_.subscribe<std_msgs::Float64>(name + "/command", 1, [this, name](const std_msgs::Float64ConstPtr& m) {
-    double value = m->data;
-    plant_.post([this, name, value] {
+  // The controller may be gone (unloaded) when the posted work runs: look it up there.
+  auto post = [this, name](std::function<bool(Controller&)> apply, std::string what) {
+    plant_.post([this, name, apply, what] {
       Controller* c = manager_.controller(name);
-      if (c && !c->setCommand(value))
-        ROS_WARN_THROTTLE(1.0, "Rejected a non-finite command (%f) on %s/%s/command", value, manager_.ns().c_str(),
-                          name.c_str());
+      if (c && !apply(*c))
+        ROS_WARN_THROTTLE(1.0, "Rejected %s on %s/%s/command", what.c_str(), manager_.ns().c_str(), name.c_str());
     });
-  });
+  };
+  switch (manager_.controller(name)->commandTopic())
+  {
+    case CommandTopic::Float64:
+      return nh_.subscribe<std_msgs::Float64>(name + "/command", 1, [post](const std_msgs::Float64ConstPtr& m) {
+        double value = m->data;
+        post([value](Controller& c) { return c.setCommand(value); },
+             "a non-finite command (" + std::to_string(value) + ")");
+      });
+    case CommandTopic::Float64MultiArray:
+      return nh_.subscribe<std_msgs::Float64MultiArray>(
+          name + "/command", 1, [post](const std_msgs::Float64MultiArrayConstPtr& m) {
+            std::vector<double> values = m->data;
+            post([values](Controller& c) { return c.setCommands(values); }, "a command (the controller logs why)");
+          });
+    default:
+      return ros::Subscriber();
+  }
 }
 
 void ControllerTopics::publish()

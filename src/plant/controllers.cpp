@@ -161,7 +161,7 @@ private:
 class CommandedController : public Controller
 {
 public:
-  bool hasCommand() const override { return true; }
+  CommandTopic commandTopic() const override { return CommandTopic::Float64; }
   bool setCommand(double value) override
   {
     if (!std::isfinite(value))
@@ -204,9 +204,55 @@ private:
 
 // ------------------------------------------------------------------ effort PID controllers
 
-// effort_controllers/JointPositionController and JointVelocityController. The PID is control_toolbox's,
-// applied through the joint's implicit effort law (see Pid::implicitPositionLaw), which keeps the
-// tutorial's gains stable at the steering hinges' tiny inertia.
+// One effort joint driven by control_toolbox's PID toward a position or velocity target, applied
+// through the joint's implicit effort law (see Pid::implicitPositionLaw), which keeps the tutorial's
+// gains stable at the steering hinges' tiny inertia. Shared by the single and the group controllers.
+class EffortLoop
+{
+public:
+  EffortLoop(JointHandle* handle, bool position) : handle_(handle), position_(position) {}
+
+  JointHandle& handle() { return *handle_; }
+  Pid& pid() { return pid_; }
+  void reset()
+  {
+    pid_.reset();
+    law_applied_ = false;
+  }
+  // A position target within the joint's URDF limits (revolute and prismatic joints).
+  double limited(double target) const
+  {
+    const JointLimits& l = handle_->limits();
+    return position_ && l.has_position ? std::max(l.lower, std::min(target, l.upper)) : target;
+  }
+  // Closes the previous step's loop and sets the law for the coming one; returns the error it acts on.
+  double drive(double target, double period)
+  {
+    const double q = handle_->position(), qd = handle_->velocity();
+    if (law_applied_)
+      pid_.endImplicitStep(error(last_target_, q, qd), handle_->effort(), period);
+    const double e = error(target, q, qd);
+    handle_->setEffortLaw(position_ ? pid_.implicitPositionLaw(e, q, period)
+                                    : pid_.implicitVelocityLaw(target, qd, period));
+    law_applied_ = true;
+    last_target_ = target;
+    return e;
+  }
+
+private:
+  double error(double target, double q, double qd) const
+  {
+    return position_ ? handle_->positionError(target, q) : target - qd;
+  }
+
+  JointHandle* handle_;
+  bool position_;
+  Pid pid_;
+  double last_target_ = 0.0;
+  bool law_applied_ = false;
+};
+
+// effort_controllers/JointPositionController and JointVelocityController.
 class EffortPidController : public CommandedController
 {
 public:
@@ -217,12 +263,13 @@ public:
   bool init(ControllerContext& c) override
   {
     std::string joint;
-    handle_ = claimJoint(c, JointInterface::Effort, joint, claimed_);
-    if (!handle_)
+    JointHandle* handle = claimJoint(c, JointInterface::Effort, joint, claimed_);
+    if (!handle)
       return false;
+    loop_.reset(new EffortLoop(handle, position_));
     try
     {
-      pid_.setGains(readPidGains(c.params, joinPath(c.ns, "pid")));
+      loop_->pid().setGains(readPidGains(c.params, joinPath(c.ns, "pid")));
     }
     catch (const std::exception& e)
     {
@@ -234,29 +281,23 @@ public:
 
   void starting(int64_t) override
   {
-    command_ = position_ ? limited(handle_->position()) : 0.0;
-    pid_.reset();
+    command_ = position_ ? loop_->limited(loop_->handle().position()) : 0.0;
+    loop_->reset();
     loop_count_ = 0;
-    law_applied_ = false;
   }
 
   void stopping(int64_t) override
   {
     // As with the real controller, the joint keeps the last effort once nobody updates it.
-    handle_->setCommand(handle_->effort());
+    loop_->handle().setCommand(loop_->handle().effort());
   }
 
   void update(int64_t time_ns, double period) override
   {
-    const double q = handle_->position(), qd = handle_->velocity();
-    const double target = position_ ? limited(command_) : command_;
-    if (law_applied_)
-      pid_.endImplicitStep(error(last_target_, q, qd), handle_->effort(), period);
-    double e = error(target, q, qd);
-    EffortLaw law = position_ ? pid_.implicitPositionLaw(e, q, period) : pid_.implicitVelocityLaw(target, qd, period);
-    handle_->setEffortLaw(law);
-    law_applied_ = true;
-    last_target_ = target;
+    const JointHandle& h = loop_->handle();
+    const double q = h.position(), qd = h.velocity();
+    const double target = loop_->limited(command_);
+    const double e = loop_->drive(target, period);
 
     if (loop_count_ % 10 == 0)
     {
@@ -267,8 +308,8 @@ public:
       s.process_value_dot = position_ ? qd : 0.0;
       s.error = e;
       s.time_step = period;
-      s.command = handle_->effort();
-      const PidGains& g = pid_.gains();
+      s.command = h.effort();
+      const PidGains& g = loop_->pid().gains();
       s.p = g.p;
       s.i = g.i;
       s.d = g.d;
@@ -279,24 +320,151 @@ public:
     ++loop_count_;
   }
 
+private:
+  bool position_;
+  std::unique_ptr<EffortLoop> loop_;
+  uint64_t loop_count_ = 0;
+};
+
+// ------------------------------------------------------------------ joint group controllers
+
+// A controller of several joints commanded together by a Float64MultiArray on <controller>/command
+// (forward_command_controller's ForwardJointGroupCommandController and
+// effort_controllers/JointGroupPositionController, docs/interfaces.md section 12).
+class JointGroupController : public Controller
+{
+public:
+  CommandTopic commandTopic() const override { return CommandTopic::Float64MultiArray; }
+
+  bool setCommands(const std::vector<double>& values) override
+  {
+    if (values.size() != commands_.size())
+    {
+      log_->error("Dimension of command (" + std::to_string(values.size()) + ") does not match number of joints (" +
+                  std::to_string(commands_.size()) + ")! Not executing!");
+      return false;
+    }
+    for (double v : values)
+      if (!std::isfinite(v))
+      {
+        log_->error("Rejected a command with a non-finite value for " + ns_ + " (the joints keep the last one)");
+        return false;
+      }
+    commands_ = values;
+    return true;
+  }
+
+protected:
+  // The joints of the `joints` parameter on `iface`; false with upstream's error texts.
+  bool claimJoints(ControllerContext& c, JointInterface iface)
+  {
+    log_ = &c.log;
+    ns_ = c.ns;
+    const Param* names = param(c, "joints");
+    if (!names || names->type() != Param::Type::List)
+    {
+      c.log.error("Failed to getParam 'joints' (namespace: " + c.ns + ").");
+      return false;
+    }
+    if (names->asList().empty())
+    {
+      c.log.error("List of joint names is empty.");
+      return false;
+    }
+    ClaimedResources claimed{interfaceName(iface), {}};
+    for (const Param& name : names->asList())
+    {
+      JointHandle* h = name.type() == Param::Type::String ? c.joints.handle(name.asString()) : nullptr;
+      if (!h || h->interface() != iface)
+      {
+        c.log.error("Exception thrown: Could not find resource '" +
+                    (name.type() == Param::Type::String ? name.asString() : name.describe()) + "' in '" +
+                    interfaceName(iface) + "'.");
+        return false;
+      }
+      handles_.push_back(h);
+      claimed.resources.push_back(h->name());
+    }
+    claimed_.assign(1, claimed);
+    commands_.assign(handles_.size(), 0.0);
+    return true;
+  }
+
+  std::vector<JointHandle*> handles_;
+  std::vector<double> commands_;
 
 private:
-  double limited(double target) const
+  Log* log_ = nullptr;
+  std::string ns_;
+};
+
+// position_controllers/, velocity_controllers/ and effort_controllers/JointGroup*Controller that
+// forward each value to its joint: they start from the joints' positions (position) or from 0.
+class ForwardGroupController : public JointGroupController
+{
+public:
+  explicit ForwardGroupController(JointInterface iface) : interface_(iface) {}
+
+  bool init(ControllerContext& c) override { return claimJoints(c, interface_); }
+
+  void starting(int64_t) override
   {
-    const JointLimits& l = handle_->limits();
-    return l.has_position ? std::max(l.lower, std::min(target, l.upper)) : target;
-  }
-  double error(double target, double q, double qd) const
-  {
-    return position_ ? handle_->positionError(target, q) : target - qd;
+    for (size_t k = 0; k < handles_.size(); ++k)
+      commands_[k] = interface_ == JointInterface::Position ? handles_[k]->position() : 0.0;
   }
 
-  bool position_;
-  JointHandle* handle_ = nullptr;
-  Pid pid_;
-  double last_target_ = 0.0;
-  bool law_applied_ = false;
-  uint64_t loop_count_ = 0;
+  void update(int64_t, double) override
+  {
+    for (size_t k = 0; k < handles_.size(); ++k)
+      handles_[k]->setCommand(commands_[k]);
+  }
+
+private:
+  JointInterface interface_;
+};
+
+// effort_controllers/JointGroupPositionController: one PID per joint, gains in <controller>/<joint>/pid.
+class EffortGroupPositionController : public JointGroupController
+{
+public:
+  bool init(ControllerContext& c) override
+  {
+    if (!claimJoints(c, JointInterface::Effort))
+      return false;
+    for (JointHandle* h : handles_)
+    {
+      loops_.emplace_back(h, true);
+      try
+      {
+        loops_.back().pid().setGains(readPidGains(c.params, joinPath(c.ns, h->name() + "/pid")));
+      }
+      catch (const std::exception& e)
+      {
+        c.log.error(e.what());
+        c.log.error("Failed to load PID parameters from " + h->name() + "/pid");
+        return false;
+      }
+    }
+    return true;
+  }
+
+  void starting(int64_t) override
+  {
+    for (size_t k = 0; k < loops_.size(); ++k)
+    {
+      commands_[k] = loops_[k].limited(handles_[k]->position());
+      loops_[k].reset();
+    }
+  }
+
+  void update(int64_t, double period) override
+  {
+    for (size_t k = 0; k < loops_.size(); ++k)
+      loops_[k].drive(loops_[k].limited(commands_[k]), period);
+  }
+
+private:
+  std::vector<EffortLoop> loops_;
 };
 
 struct ControllerType
@@ -310,14 +478,22 @@ const std::vector<ControllerType>& registry()
   static const std::vector<ControllerType> types = {
       {"effort_controllers/JointEffortController",
        [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Effort)); }},
+      {"effort_controllers/JointGroupEffortController",
+       [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Effort)); }},
+      {"effort_controllers/JointGroupPositionController",
+       [] { return std::unique_ptr<Controller>(new EffortGroupPositionController()); }},
       {"effort_controllers/JointPositionController",
        [] { return std::unique_ptr<Controller>(new EffortPidController(true)); }},
       {"effort_controllers/JointVelocityController",
        [] { return std::unique_ptr<Controller>(new EffortPidController(false)); }},
       {"joint_state_controller/JointStateController",
        [] { return std::unique_ptr<Controller>(new JointStateController()); }},
+      {"position_controllers/JointGroupPositionController",
+       [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Position)); }},
       {"position_controllers/JointPositionController",
        [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Position)); }},
+      {"velocity_controllers/JointGroupVelocityController",
+       [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Velocity)); }},
       {"velocity_controllers/JointVelocityController",
        [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Velocity)); }},
   };

@@ -355,12 +355,17 @@ PYBIND11_MODULE(bullet_plant, m)
         bool started = cm.switchController(loaded, {}, ControllerManager::STRICT);
         return py::make_tuple(loaded, started);
       }, py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
-      .def("command", [](ControllerManager& cm, const std::string& name, double value) {
+      .def("command", [](ControllerManager& cm, const std::string& name, py::object value) {
         Controller& c = controllerOf(cm, name);
-        if (!c.hasCommand())
-          throw py::key_error("controller '" + name + "' takes no command");
-        return c.setCommand(value);
-      }, py::arg("name"), py::arg("value"), "what a Float64 on <controller>/command does; False for a non-finite value")
+        switch (c.commandTopic())
+        {
+          case CommandTopic::Float64: return c.setCommand(value.cast<double>());
+          case CommandTopic::Float64MultiArray: return c.setCommands(value.cast<std::vector<double>>());
+          default: throw py::key_error("controller '" + name + "' takes no command");
+        }
+      }, py::arg("name"), py::arg("value"),
+           "what a Float64 (a number) or a Float64MultiArray (a list: the JointGroup controllers) on "
+           "<controller>/command does; False for a rejected command")
       .def("joint_states", [](ControllerManager& cm, const std::string& name) -> py::object {
         const JointStateSample* s = controllerOf(cm, name).latestJointState();
         return s ? py::object(jointStateDict(*s)) : py::none();

@@ -54,7 +54,7 @@ protected:
 TEST(ControllerTypes, UnknownTypeMakesNothing)
 {
   EXPECT_EQ(createController("velocity_controllers/JointPositionController"), nullptr);
-  EXPECT_EQ(controllerTypes().size(), 6u);
+  EXPECT_EQ(controllerTypes().size(), 10u);
   for (const std::string& type : controllerTypes())
     EXPECT_NE(createController(type), nullptr) << type;
 }
@@ -73,7 +73,7 @@ TEST_F(ControllerTest, ForwardCommandControllersWriteTheirCommandEachUpdate)
     ASSERT_EQ(c->claimedResources().size(), 1u);
     EXPECT_EQ(c->claimedResources()[0].hardware_interface, interfaceName(h.interface())) << k.type;
     EXPECT_EQ(c->claimedResources()[0].resources, std::vector<std::string>{k.joint});
-    EXPECT_TRUE(c->hasCommand());
+    EXPECT_EQ(c->commandTopic(), CommandTopic::Float64);
     EXPECT_FALSE(c->hasState());
 
     h.setCommand(9.0);
@@ -99,7 +99,7 @@ TEST_F(ControllerTest, JointStateControllerSamplesAtItsPublishRate)
   std::unique_ptr<Controller> c = make("joint_state_controller/JointStateController", "jsc");
   ASSERT_EQ(c->claimedResources().size(), 1u);
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, std::string(kJointStateInterface));
-  EXPECT_FALSE(c->hasCommand());
+  EXPECT_EQ(c->commandTopic(), CommandTopic::None);
   c->starting(time_ns);
   run(*c, 1000);
   std::vector<JointStateSample> samples = c->takeJointStates();
@@ -158,7 +158,7 @@ TEST_F(ControllerTest, EffortPositionControllerReportsItsStateEveryTenthUpdate)
   params.set("/bot/steer/pid/d", Param::real(1.0));
   params.set("/bot/steer/pid/i_clamp", Param::real(0.5));
   std::unique_ptr<Controller> c = make("effort_controllers/JointPositionController", "steer");
-  EXPECT_TRUE(c->hasCommand());
+  EXPECT_EQ(c->commandTopic(), CommandTopic::Float64);
   EXPECT_TRUE(c->hasState());
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::EffortJointInterface");
   c->starting(time_ns);
@@ -194,4 +194,89 @@ TEST_F(ControllerTest, EffortVelocityControllerTracksTheWheelSpeed)
   EXPECT_EQ(states[0].process_value, 0.0);
   EXPECT_EQ(states[0].process_value_dot, 0.0);
   EXPECT_EQ(states[0].error, 3.0);
+}
+
+TEST_F(ControllerTest, JointGroupControllersForwardOneValuePerJoint)
+{
+  struct Case { const char* type; std::vector<std::string> joints; };
+  for (const Case& k : {Case{"velocity_controllers/JointGroupVelocityController", {"right_wheel", "left_wheel"}},
+                        Case{"effort_controllers/JointGroupEffortController", {"left_hinge", "right_hinge"}},
+                        Case{"position_controllers/JointGroupPositionController", {"mast"}}})
+  {
+    std::vector<Param> names;
+    for (const std::string& j : k.joints)
+      names.push_back(Param::string(j));
+    params.set("/bot/group/joints", Param::list(names));
+    std::unique_ptr<Controller> c = make(k.type, "group");
+    ASSERT_EQ(c->claimedResources().size(), 1u);
+    EXPECT_EQ(c->claimedResources()[0].hardware_interface, interfaceName(joints.handle(k.joints[0])->interface()));
+    EXPECT_EQ(c->claimedResources()[0].resources, k.joints) << "in the parameter's order";
+    EXPECT_EQ(c->commandTopic(), CommandTopic::Float64MultiArray);
+    EXPECT_FALSE(c->setCommand(1.0)) << "no Float64";
+
+    std::vector<double> values;
+    for (size_t i = 0; i < k.joints.size(); ++i)
+      values.push_back(0.1 * double(i + 1));
+    ASSERT_TRUE(c->setCommands(values));
+    c->starting(time_ns);
+    run(*c, 1);
+    for (const std::string& j : k.joints)
+      EXPECT_EQ(joints.handle(j)->command(), 0.0) << k.type << ": starts from 0 (or the joint's position, 0 here)";
+    ASSERT_TRUE(c->setCommands(values));
+    run(*c, 1);
+    for (size_t i = 0; i < k.joints.size(); ++i)
+      EXPECT_EQ(joints.handle(k.joints[i])->command(), values[i]) << k.type << " " << k.joints[i];
+
+    messages.clear();
+    std::vector<double> wrong(k.joints.size() + 1, 1.0);
+    EXPECT_FALSE(c->setCommands(wrong));
+    ASSERT_FALSE(messages.empty());
+    EXPECT_EQ(messages.back(), "Dimension of command (" + std::to_string(wrong.size()) +
+                                   ") does not match number of joints (" + std::to_string(k.joints.size()) +
+                                   ")! Not executing!");
+    std::vector<double> bad = values;
+    bad.back() = std::nan("");
+    EXPECT_FALSE(c->setCommands(bad));
+    run(*c, 1);
+    EXPECT_EQ(joints.handle(k.joints.back())->command(), values.back()) << "a refused command leaves the last one";
+  }
+}
+
+TEST_F(ControllerTest, JointGroupControllersRefuseBadJointLists)
+{
+  auto init = [&](const std::string& type) {
+    std::unique_ptr<Controller> c = createController(type);
+    ControllerContext context{params, "/bot/group", joints, log};
+    return c->init(context);
+  };
+  EXPECT_FALSE(init("velocity_controllers/JointGroupVelocityController"));
+  EXPECT_EQ(messages.back(), "Failed to getParam 'joints' (namespace: /bot/group).");
+  params.set("/bot/group/joints", Param::list({}));
+  EXPECT_FALSE(init("velocity_controllers/JointGroupVelocityController"));
+  EXPECT_EQ(messages.back(), "List of joint names is empty.");
+  params.set("/bot/group/joints", Param::list({Param::string("left_wheel"), Param::string("left_hinge")}));
+  EXPECT_FALSE(init("velocity_controllers/JointGroupVelocityController"));
+  EXPECT_EQ(messages.back(),
+            "Exception thrown: Could not find resource 'left_hinge' in 'hardware_interface::VelocityJointInterface'.");
+}
+
+TEST_F(ControllerTest, EffortJointGroupPositionControllerNeedsAPidPerJoint)
+{
+  params.set("/bot/group/joints", Param::list({Param::string("left_hinge"), Param::string("right_hinge")}));
+  params.set("/bot/group/left_hinge/pid/p", Param::real(4.0));
+  std::unique_ptr<Controller> c = createController("effort_controllers/JointGroupPositionController");
+  ControllerContext context{params, "/bot/group", joints, log};
+  EXPECT_FALSE(c->init(context));
+  ASSERT_GE(messages.size(), 2u);
+  EXPECT_EQ(messages[messages.size() - 2], "No p gain specified for pid.  Namespace: /bot/group/right_hinge/pid");
+  EXPECT_EQ(messages.back(), "Failed to load PID parameters from right_hinge/pid");
+
+  params.set("/bot/group/right_hinge/pid/p", Param::real(4.0));
+  c = make("effort_controllers/JointGroupPositionController", "group");
+  EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::EffortJointInterface");
+  EXPECT_EQ(c->commandTopic(), CommandTopic::Float64MultiArray);
+  c->starting(time_ns);
+  ASSERT_TRUE(c->setCommands({1.0, -0.2}));
+  run(*c, 2);
+  EXPECT_EQ(joints.handle("left_hinge")->rejectedCommands(), 0);
 }
