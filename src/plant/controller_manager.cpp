@@ -54,6 +54,14 @@ Controller* ControllerManager::controller(const std::string& name)
   return e ? e->controller.get() : nullptr;
 }
 
+bool ControllerManager::anyRunning(const std::function<bool(const Controller&)>& predicate) const
+{
+  for (const auto& e : entries_)
+    if (e->running() && predicate(*e->controller))
+      return true;
+  return false;
+}
+
 std::vector<std::string> ControllerManager::controllerNames() const
 {
   std::vector<std::string> names;

@@ -344,7 +344,12 @@ TEST_F(ControllerManagerTest, ListsTheTypesItOffers)
   const std::vector<std::string> types = manager.listControllerTypes();
   for (const std::string& type : {kVelocity, kEffortPosition, kJointState, std::string("effort_controllers/JointEffortController"),
                                   std::string("effort_controllers/JointVelocityController"),
-                                  std::string("position_controllers/JointPositionController")})
+                                  std::string("position_controllers/JointPositionController"),
+                                  std::string("position_controllers/JointGroupPositionController"),
+                                  std::string("velocity_controllers/JointGroupVelocityController"),
+                                  std::string("effort_controllers/JointGroupEffortController"),
+                                  std::string("effort_controllers/JointGroupPositionController"),
+                                  std::string("ackermann_steering_controller/AckermannSteeringController")})
     EXPECT_NE(std::find(types.begin(), types.end(), type), types.end()) << type;
-  EXPECT_EQ(types.size(), 6u);
+  EXPECT_EQ(types.size(), 11u);
 }
