@@ -17,20 +17,13 @@ def collect(ros, topics, seconds):
     """The messages of several topics over `seconds` of simulated time, as dicts per topic."""
     return ros.python(f"""
         import json, rospy, rostopic, time
+        from tianracer_description.ros_harness import message_to_dict
         rospy.init_node('probe', anonymous=True)
         got = {{t: [] for t in {list(topics)!r}}}
-        def to_dict(m):
-            if hasattr(m, 'to_sec'):
-                return m.to_sec()
-            if hasattr(m, '__slots__'):
-                return {{s: to_dict(getattr(m, s)) for s in m.__slots__}}
-            if isinstance(m, (list, tuple)):
-                return [to_dict(x) for x in m]
-            return m
         subs = []
         for topic in got:
             cls, name, _ = rostopic.get_topic_class(topic, blocking=True)
-            subs.append(rospy.Subscriber(name, cls, lambda m, t=topic: got[t].append(to_dict(m))))
+            subs.append(rospy.Subscriber(name, cls, lambda m, t=topic: got[t].append(message_to_dict(m))))
         while rospy.Time.now().is_zero():
             time.sleep(0.01)
         end = rospy.Time.now() + rospy.Duration({seconds})
