@@ -185,6 +185,8 @@ def test_switch_strictness(car):
     assert manager.switch(start=[running], strictness=BEST_EFFORT) is True
     assert manager.switch(stop=['ghost'], strictness=STRICT) is False
     assert manager.switch(start=[running], stop=[running], strictness=BEST_EFFORT) is False, 'in both lists'
+    assert ("Could no start or stop controller '%s' because of conflicting switching command" % running
+            in errors(world)), "ros_control 0.20's text, its typo included"
     assert manager.switch(stop=[running], strictness=STRICT) is True
     assert manager.switch(stop=['rear_right_velocity_controller'], strictness=STRICT) is False, 'one at a time'
     assert 'Could not switch controllers: the previous switch has not been applied yet' in errors(world)

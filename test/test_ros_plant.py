@@ -37,21 +37,12 @@ def wait_for_running(ros, names, timeout=20):
 def echo(ros, topic, count=1, timeout=15):
     """`count` messages of a topic as dicts (rospy snippet: no YAML guessing of nan/inf)."""
     return ros.python(f"""
-        import json, math, rospy, rostopic
+        import json, rospy, rostopic
+        from tianracer_description.ros_harness import message_to_dict
         rospy.init_node('probe', anonymous=True)
         cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
         got = []
-        def to_dict(m):
-            if hasattr(m, 'to_sec'):
-                return m.to_sec()
-            if hasattr(m, '__slots__'):
-                return {{s: to_dict(getattr(m, s)) for s in m.__slots__}}
-            if isinstance(m, (list, tuple)):
-                return [to_dict(x) for x in m]
-            if isinstance(m, float) and not math.isfinite(m):
-                return repr(m)
-            return m
-        sub = rospy.Subscriber(name, cls, lambda m: got.append(to_dict(m)))
+        sub = rospy.Subscriber(name, cls, lambda m: got.append(message_to_dict(m)))
         import time
         end = time.monotonic() + {timeout}
         while len(got) < {count} and time.monotonic() < end:

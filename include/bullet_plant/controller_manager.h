@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -59,6 +60,8 @@ public:
   bool reloadControllerLibraries(bool force_kill);
 
   Controller* controller(const std::string& name);
+  // Whether a running controller satisfies the predicate (no copies: the node asks after every step).
+  bool anyRunning(const std::function<bool(const Controller&)>& predicate) const;
   std::vector<std::string> controllerNames() const;
 
   // The control loop: update running controllers in load order, then apply a pending switch.

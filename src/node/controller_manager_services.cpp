@@ -54,6 +54,8 @@ bool ControllerManagerServices::load(Load::Request& req, Load::Response& res)
 {
   std::lock_guard<std::mutex> lock(mutex_);
   plant_.copyParams(manager_.ns() + "/" + req.name);
+  // Where ros_controllers read the URDF a controller may need (ackermann_steering_controller's geometry).
+  plant_.copyParams(manager_.ns() + "/robot_description");
   res.ok = changeControllers([&] { return manager_.loadController(req.name); });
   return true;
 }

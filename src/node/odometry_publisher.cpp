@@ -1,6 +1,5 @@
 #include "odometry_publisher.h"
 
-#include <nav_msgs/Odometry.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "bullet_plant/geometry.h"
@@ -15,22 +14,12 @@ OdometryPublisher::OdometryPublisher(Robot& robot, ros::NodeHandle& nh) : robot_
   tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
 }
 
-void OdometryPublisher::publish(int64_t time_ns)
+nav_msgs::Odometry odometryMessage(int64_t stamp_ns, const std::string& frame, const std::string& child,
+                                   const urdf::Pose& pose, const urdf::Vector3& linear, const urdf::Vector3& angular)
 {
-  if (last_ns_ >= 0 && time_ns - last_ns_ < period_ns_ && time_ns >= last_ns_)
-    return;
-  last_ns_ = time_ns;
-  publishNow(time_ns);
-}
-
-void OdometryPublisher::publishNow(int64_t time_ns)
-{
-  urdf::Pose pose = robot_.basePose();
-  Twist twist = robot_.baseTwist();
-  const std::string child = robot_.description().model->getRoot()->name;
   nav_msgs::Odometry odom;
-  odom.header.stamp = rosTime(time_ns);
-  odom.header.frame_id = "odom";
+  odom.header.stamp = rosTime(stamp_ns);
+  odom.header.frame_id = frame;
   odom.child_frame_id = child;
   odom.pose.pose.position.x = pose.position.x;
   odom.pose.pose.position.y = pose.position.y;
@@ -39,27 +28,50 @@ void OdometryPublisher::publishNow(int64_t time_ns)
   odom.pose.pose.orientation.y = pose.rotation.y;
   odom.pose.pose.orientation.z = pose.rotation.z;
   odom.pose.pose.orientation.w = pose.rotation.w;
-  // nav_msgs/Odometry's twist is in the child frame.
-  urdf::Rotation to_body = pose.rotation.GetInverse();
-  urdf::Vector3 v = rotate(to_body, urdf::Vector3(twist.linear[0], twist.linear[1], twist.linear[2]));
-  urdf::Vector3 w = rotate(to_body, urdf::Vector3(twist.angular[0], twist.angular[1], twist.angular[2]));
-  odom.twist.twist.linear.x = v.x;
-  odom.twist.twist.linear.y = v.y;
-  odom.twist.twist.linear.z = v.z;
-  odom.twist.twist.angular.x = w.x;
-  odom.twist.twist.angular.y = w.y;
-  odom.twist.twist.angular.z = w.z;
-  odom_pub_.publish(odom);
+  odom.twist.twist.linear.x = linear.x;
+  odom.twist.twist.linear.y = linear.y;
+  odom.twist.twist.linear.z = linear.z;
+  odom.twist.twist.angular.x = angular.x;
+  odom.twist.twist.angular.y = angular.y;
+  odom.twist.twist.angular.z = angular.z;
+  return odom;
+}
 
+geometry_msgs::TransformStamped odometryTransform(const nav_msgs::Odometry& odom)
+{
   geometry_msgs::TransformStamped tf;
   tf.header = odom.header;
-  tf.child_frame_id = child;
-  tf.transform.translation.x = pose.position.x;
-  tf.transform.translation.y = pose.position.y;
-  tf.transform.translation.z = pose.position.z;
+  tf.child_frame_id = odom.child_frame_id;
+  tf.transform.translation.x = odom.pose.pose.position.x;
+  tf.transform.translation.y = odom.pose.pose.position.y;
+  tf.transform.translation.z = odom.pose.pose.position.z;
   tf.transform.rotation = odom.pose.pose.orientation;
+  return tf;
+}
+
+void OdometryPublisher::publish(int64_t time_ns, bool tf)
+{
+  if (last_ns_ >= 0 && time_ns - last_ns_ < period_ns_ && time_ns >= last_ns_)
+    return;
+  last_ns_ = time_ns;
+  publishNow(time_ns, tf);
+}
+
+void OdometryPublisher::publishNow(int64_t time_ns, bool tf)
+{
+  urdf::Pose pose = robot_.basePose();
+  Twist twist = robot_.baseTwist();
+  // nav_msgs/Odometry's twist is in the child frame.
+  urdf::Rotation to_body = pose.rotation.GetInverse();
+  nav_msgs::Odometry odom = odometryMessage(
+      time_ns, "odom", robot_.description().model->getRoot()->name, pose,
+      rotate(to_body, urdf::Vector3(twist.linear[0], twist.linear[1], twist.linear[2])),
+      rotate(to_body, urdf::Vector3(twist.angular[0], twist.angular[1], twist.angular[2])));
+  odom_pub_.publish(odom);
+  if (!tf)
+    return;
   tf2_msgs::TFMessage msg;
-  msg.transforms.push_back(tf);
+  msg.transforms.push_back(odometryTransform(odom));
   tf_pub_.publish(msg);
 }
 

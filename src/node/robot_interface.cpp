@@ -31,7 +31,7 @@ void RobotInterface::publish(int64_t time_ns)
 {
   if (controller_topics_)
     controller_topics_->publish();
-  odometry_.publish(time_ns);
+  odometry_.publish(time_ns, !(controller_topics_ && controller_topics_->publishesOdometryTransform()));
   sensors_.publish();
 }
 

@@ -355,12 +355,36 @@ PYBIND11_MODULE(bullet_plant, m)
         bool started = cm.switchController(loaded, {}, ControllerManager::STRICT);
         return py::make_tuple(loaded, started);
       }, py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
-      .def("command", [](ControllerManager& cm, const std::string& name, double value) {
+      .def("command", [](ControllerManager& cm, const std::string& name, py::object value) {
         Controller& c = controllerOf(cm, name);
-        if (!c.hasCommand())
-          throw py::key_error("controller '" + name + "' takes no command");
-        return c.setCommand(value);
-      }, py::arg("name"), py::arg("value"), "what a Float64 on <controller>/command does; False for a non-finite value")
+        switch (c.commandTopic())
+        {
+          case CommandTopic::Float64: return c.setCommand(value.cast<double>());
+          case CommandTopic::Float64MultiArray: return c.setCommands(value.cast<std::vector<double>>());
+          case CommandTopic::Twist:
+          {
+            auto twist = value.cast<std::pair<double, double>>();
+            return c.setTwist(twist.first, twist.second);
+          }
+          default: throw py::key_error("controller '" + name + "' takes no command");
+        }
+      }, py::arg("name"), py::arg("value"),
+           "what a Float64 (a number) or a Float64MultiArray (a list: the JointGroup controllers) on "
+           "<controller>/command does, or a Twist (linear.x, angular.z) on <controller>/cmd_vel; False for a "
+           "rejected command")
+      .def("odometry", [](ControllerManager& cm, const std::string& name) -> py::object {
+        const OdometrySample* s = controllerOf(cm, name).latestOdometry();
+        if (!s)
+          return py::none();
+        py::dict d;
+        d["stamp"] = double(s->stamp_ns) * 1e-9;
+        d["x"] = s->x;
+        d["y"] = s->y;
+        d["heading"] = s->heading;
+        d["linear"] = s->linear;
+        d["angular"] = s->angular;
+        return d;
+      }, py::arg("name"), "the latest nav_msgs/Odometry a drive controller produced: stamp, x, y, heading, linear, angular")
       .def("joint_states", [](ControllerManager& cm, const std::string& name) -> py::object {
         const JointStateSample* s = controllerOf(cm, name).latestJointState();
         return s ? py::object(jointStateDict(*s)) : py::none();

@@ -3,6 +3,7 @@ free loopback port, roslaunch, rosrun and the command-line tools, each test with
 rospy binds a process to one master, so the tests talk to ROS through subprocesses (the tools, or
 short rospy snippets)."""
 import json
+import math
 import os
 import signal
 import socket
@@ -15,6 +16,20 @@ import yaml
 from tianracer_description.tianracer import CONFIG_YAML
 
 PYTHON = '/usr/bin/python3'
+
+
+def message_to_dict(message):
+    """A ROS message as plain JSON values, for the rospy snippets of the tests: times as seconds,
+    non-finite floats as their repr (JSON has none)."""
+    if hasattr(message, 'to_sec'):
+        return message.to_sec()
+    if hasattr(message, '__slots__'):
+        return {slot: message_to_dict(getattr(message, slot)) for slot in message.__slots__}
+    if isinstance(message, (list, tuple)):
+        return [message_to_dict(item) for item in message]
+    if isinstance(message, float) and not math.isfinite(message):
+        return repr(message)
+    return message
 
 
 def free_port():

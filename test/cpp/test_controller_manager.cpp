@@ -200,16 +200,40 @@ TEST_F(ControllerManagerTest, StrictnessZeroIsBestEffortWithAWarning)
   EXPECT_EQ(state("left_vel"), ControllerState::Running);
 }
 
-TEST_F(ControllerManagerTest, NameInBothListsIsRefused)
+// ros_control 0.20 (docs/interfaces.md section 9): a running controller in both lists is refused
+// whatever the strictness; a stopped one is started by BEST_EFFORT and refused by STRICT (as a double
+// stop); an unknown name in both is ignored by BEST_EFFORT.
+TEST_F(ControllerManagerTest, NameInBothListsAsRosControl020)
 {
   loadAndStart({"left_vel"});
   for (int strictness : {int(ControllerManager::BEST_EFFORT), int(ControllerManager::STRICT)})
   {
+    messages.clear();
     EXPECT_FALSE(manager.switchController({"left_vel"}, {"left_vel"}, strictness));
-    EXPECT_TRUE(loggedError("Could not switch controllers: controller 'left_vel' is in both the start and the stop list"));
+    EXPECT_TRUE(loggedError("Could no start or stop controller 'left_vel' because of conflicting switching command"));
+    EXPECT_FALSE(manager.switchPending());
+    EXPECT_EQ(state("left_vel"), ControllerState::Running);
   }
+
+  ASSERT_TRUE(manager.switchController({}, {"left_vel"}, ControllerManager::STRICT));
+  manager.update(time_ns += 1000000, 0.001);
+  ASSERT_EQ(state("left_vel"), ControllerState::Stopped);
+  messages.clear();
+  EXPECT_FALSE(manager.switchController({"left_vel"}, {"left_vel"}, ControllerManager::STRICT));
+  EXPECT_TRUE(loggedError("Could not stop controller 'left_vel' since it is not running"));
+  EXPECT_EQ(errorCount(), 1);
   EXPECT_FALSE(manager.switchPending());
+
+  EXPECT_TRUE(manager.switchController({"left_vel"}, {"left_vel"}, ControllerManager::BEST_EFFORT));
+  manager.update(time_ns += 1000000, 0.001);
   EXPECT_EQ(state("left_vel"), ControllerState::Running);
+
+  messages.clear();
+  EXPECT_TRUE(manager.switchController({"ghost"}, {"ghost"}, ControllerManager::BEST_EFFORT));
+  EXPECT_FALSE(manager.switchPending());
+  EXPECT_EQ(errorCount(), 0);
+  EXPECT_FALSE(manager.switchController({"ghost"}, {"ghost"}, ControllerManager::STRICT));
+  EXPECT_TRUE(loggedError("Could not stop controller with name 'ghost' because no controller with this name exists"));
 }
 
 TEST_F(ControllerManagerTest, TwoRunningControllersMayNotClaimOneJoint)
@@ -320,7 +344,12 @@ TEST_F(ControllerManagerTest, ListsTheTypesItOffers)
   const std::vector<std::string> types = manager.listControllerTypes();
   for (const std::string& type : {kVelocity, kEffortPosition, kJointState, std::string("effort_controllers/JointEffortController"),
                                   std::string("effort_controllers/JointVelocityController"),
-                                  std::string("position_controllers/JointPositionController")})
+                                  std::string("position_controllers/JointPositionController"),
+                                  std::string("position_controllers/JointGroupPositionController"),
+                                  std::string("velocity_controllers/JointGroupVelocityController"),
+                                  std::string("effort_controllers/JointGroupEffortController"),
+                                  std::string("effort_controllers/JointGroupPositionController"),
+                                  std::string("ackermann_steering_controller/AckermannSteeringController")})
     EXPECT_NE(std::find(types.begin(), types.end(), type), types.end()) << type;
-  EXPECT_EQ(types.size(), 6u);
+  EXPECT_EQ(types.size(), 11u);
 }

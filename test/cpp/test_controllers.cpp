@@ -54,7 +54,7 @@ protected:
 TEST(ControllerTypes, UnknownTypeMakesNothing)
 {
   EXPECT_EQ(createController("velocity_controllers/JointPositionController"), nullptr);
-  EXPECT_EQ(controllerTypes().size(), 6u);
+  EXPECT_EQ(controllerTypes().size(), 11u);
   for (const std::string& type : controllerTypes())
     EXPECT_NE(createController(type), nullptr) << type;
 }
@@ -73,7 +73,7 @@ TEST_F(ControllerTest, ForwardCommandControllersWriteTheirCommandEachUpdate)
     ASSERT_EQ(c->claimedResources().size(), 1u);
     EXPECT_EQ(c->claimedResources()[0].hardware_interface, interfaceName(h.interface())) << k.type;
     EXPECT_EQ(c->claimedResources()[0].resources, std::vector<std::string>{k.joint});
-    EXPECT_TRUE(c->hasCommand());
+    EXPECT_EQ(c->commandTopic(), CommandTopic::Float64);
     EXPECT_FALSE(c->hasState());
 
     h.setCommand(9.0);
@@ -99,7 +99,7 @@ TEST_F(ControllerTest, JointStateControllerSamplesAtItsPublishRate)
   std::unique_ptr<Controller> c = make("joint_state_controller/JointStateController", "jsc");
   ASSERT_EQ(c->claimedResources().size(), 1u);
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, std::string(kJointStateInterface));
-  EXPECT_FALSE(c->hasCommand());
+  EXPECT_EQ(c->commandTopic(), CommandTopic::None);
   c->starting(time_ns);
   run(*c, 1000);
   std::vector<JointStateSample> samples = c->takeJointStates();
@@ -158,7 +158,7 @@ TEST_F(ControllerTest, EffortPositionControllerReportsItsStateEveryTenthUpdate)
   params.set("/bot/steer/pid/d", Param::real(1.0));
   params.set("/bot/steer/pid/i_clamp", Param::real(0.5));
   std::unique_ptr<Controller> c = make("effort_controllers/JointPositionController", "steer");
-  EXPECT_TRUE(c->hasCommand());
+  EXPECT_EQ(c->commandTopic(), CommandTopic::Float64);
   EXPECT_TRUE(c->hasState());
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::EffortJointInterface");
   c->starting(time_ns);
@@ -194,4 +194,233 @@ TEST_F(ControllerTest, EffortVelocityControllerTracksTheWheelSpeed)
   EXPECT_EQ(states[0].process_value, 0.0);
   EXPECT_EQ(states[0].process_value_dot, 0.0);
   EXPECT_EQ(states[0].error, 3.0);
+}
+
+TEST_F(ControllerTest, JointGroupControllersForwardOneValuePerJoint)
+{
+  struct Case { const char* type; std::vector<std::string> joints; };
+  for (const Case& k : {Case{"velocity_controllers/JointGroupVelocityController", {"right_wheel", "left_wheel"}},
+                        Case{"effort_controllers/JointGroupEffortController", {"left_hinge", "right_hinge"}},
+                        Case{"position_controllers/JointGroupPositionController", {"mast"}}})
+  {
+    std::vector<Param> names;
+    for (const std::string& j : k.joints)
+      names.push_back(Param::string(j));
+    params.set("/bot/group/joints", Param::list(names));
+    std::unique_ptr<Controller> c = make(k.type, "group");
+    ASSERT_EQ(c->claimedResources().size(), 1u);
+    EXPECT_EQ(c->claimedResources()[0].hardware_interface, interfaceName(joints.handle(k.joints[0])->interface()));
+    EXPECT_EQ(c->claimedResources()[0].resources, k.joints) << "in the parameter's order";
+    EXPECT_EQ(c->commandTopic(), CommandTopic::Float64MultiArray);
+    EXPECT_FALSE(c->setCommand(1.0)) << "no Float64";
+
+    std::vector<double> values;
+    for (size_t i = 0; i < k.joints.size(); ++i)
+      values.push_back(0.1 * double(i + 1));
+    ASSERT_TRUE(c->setCommands(values));
+    c->starting(time_ns);
+    run(*c, 1);
+    for (const std::string& j : k.joints)
+      EXPECT_EQ(joints.handle(j)->command(), 0.0) << k.type << ": starts from 0 (or the joint's position, 0 here)";
+    ASSERT_TRUE(c->setCommands(values));
+    run(*c, 1);
+    for (size_t i = 0; i < k.joints.size(); ++i)
+      EXPECT_EQ(joints.handle(k.joints[i])->command(), values[i]) << k.type << " " << k.joints[i];
+
+    messages.clear();
+    std::vector<double> wrong(k.joints.size() + 1, 1.0);
+    EXPECT_FALSE(c->setCommands(wrong));
+    ASSERT_FALSE(messages.empty());
+    EXPECT_EQ(messages.back(), "Dimension of command (" + std::to_string(wrong.size()) +
+                                   ") does not match number of joints (" + std::to_string(k.joints.size()) +
+                                   ")! Not executing!");
+    std::vector<double> bad = values;
+    bad.back() = std::nan("");
+    EXPECT_FALSE(c->setCommands(bad));
+    run(*c, 1);
+    EXPECT_EQ(joints.handle(k.joints.back())->command(), values.back()) << "a refused command leaves the last one";
+  }
+}
+
+TEST_F(ControllerTest, JointGroupControllersRefuseBadJointLists)
+{
+  auto init = [&](const std::string& type) {
+    std::unique_ptr<Controller> c = createController(type);
+    ControllerContext context{params, "/bot/group", joints, log};
+    return c->init(context);
+  };
+  EXPECT_FALSE(init("velocity_controllers/JointGroupVelocityController"));
+  EXPECT_EQ(messages.back(), "Failed to getParam 'joints' (namespace: /bot/group).");
+  params.set("/bot/group/joints", Param::list({}));
+  EXPECT_FALSE(init("velocity_controllers/JointGroupVelocityController"));
+  EXPECT_EQ(messages.back(), "List of joint names is empty.");
+  params.set("/bot/group/joints", Param::list({Param::string("left_wheel"), Param::string("left_hinge")}));
+  EXPECT_FALSE(init("velocity_controllers/JointGroupVelocityController"));
+  EXPECT_EQ(messages.back(),
+            "Exception thrown: Could not find resource 'left_hinge' in 'hardware_interface::VelocityJointInterface'.");
+}
+
+TEST_F(ControllerTest, EffortJointGroupPositionControllerNeedsAPidPerJoint)
+{
+  params.set("/bot/group/joints", Param::list({Param::string("left_hinge"), Param::string("right_hinge")}));
+  params.set("/bot/group/left_hinge/pid/p", Param::real(4.0));
+  std::unique_ptr<Controller> c = createController("effort_controllers/JointGroupPositionController");
+  ControllerContext context{params, "/bot/group", joints, log};
+  EXPECT_FALSE(c->init(context));
+  ASSERT_GE(messages.size(), 2u);
+  EXPECT_EQ(messages[messages.size() - 2], "No p gain specified for pid.  Namespace: /bot/group/right_hinge/pid");
+  EXPECT_EQ(messages.back(), "Failed to load PID parameters from right_hinge/pid");
+
+  params.set("/bot/group/right_hinge/pid/p", Param::real(4.0));
+  c = make("effort_controllers/JointGroupPositionController", "group");
+  EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::EffortJointInterface");
+  EXPECT_EQ(c->commandTopic(), CommandTopic::Float64MultiArray);
+  c->starting(time_ns);
+  ASSERT_TRUE(c->setCommands({1.0, -0.2}));
+  run(*c, 2);
+  EXPECT_EQ(joints.handle("left_hinge")->rejectedCommands(), 0);
+}
+
+namespace
+{
+const char* kBicycleUrdf = R"(<robot name="bicycle">
+  <link name="base_link"/>
+  <link name="rear_wheel"><collision><geometry><cylinder radius="0.05" length="0.02"/></geometry></collision></link>
+  <link name="steer"/>
+  <link name="box_wheel"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <joint name="rear_wheel_joint" type="continuous"><parent link="base_link"/><child link="rear_wheel"/>
+    <origin xyz="-0.1 0 0"/><axis xyz="0 1 0"/></joint>
+  <joint name="front_steer_joint" type="revolute"><parent link="base_link"/><child link="steer"/>
+    <origin xyz="0.3 0 0"/><axis xyz="0 0 1"/><limit lower="-0.6" upper="0.6" effort="1" velocity="8"/></joint>
+  <joint name="box_wheel_joint" type="continuous"><parent link="base_link"/><child link="box_wheel"/>
+    <origin xyz="-0.1 0.2 0"/><axis xyz="0 1 0"/></joint>
+</robot>)";
+
+class AckermannTest : public ControllerTest
+{
+protected:
+  AckermannTest()
+  {
+    params.set("/bot/robot_description", Param::string(kBicycleUrdf));
+    params.set("/bot/ack/rear_wheel", Param::string("rear_wheel_joint"));
+    params.set("/bot/ack/front_steer", Param::string("front_steer_joint"));
+    std::vector<Param> diagonal;
+    for (double v : {0.001, 0.001, 1e6, 1e6, 1e6, 1000.0})
+      diagonal.push_back(Param::real(v));
+    params.set("/bot/ack/pose_covariance_diagonal", Param::list(diagonal));
+    params.set("/bot/ack/twist_covariance_diagonal", Param::list(diagonal));
+  }
+
+  std::unique_ptr<Controller> init(bool expect_ok = true)
+  {
+    std::unique_ptr<Controller> c = createController("ackermann_steering_controller/AckermannSteeringController");
+    ControllerContext context{params, "/bot/ack", bicycle, log};
+    EXPECT_EQ(c->init(context), expect_ok) << (messages.empty() ? "" : messages.back());
+    return c;
+  }
+
+  double wheelCommand() { return bicycle.handle("rear_wheel_joint")->command(); }
+  double steerCommand() { return bicycle.handle("front_steer_joint")->command(); }
+
+  // ros_controllers' bicycle test robot: one rear wheel (velocity) and one front steering joint (position).
+  JointList bicycle = std::move(JointList()
+                                    .add("rear_wheel_joint", JointType::Continuous, JointInterface::Velocity, wheelLimits())
+                                    .add("front_steer_joint", JointType::Revolute, JointInterface::Position, hingeLimits())
+                                    .add("effort_steer", JointType::Revolute, JointInterface::Effort, hingeLimits()));
+};
+}  // namespace
+
+TEST_F(AckermannTest, TwistDrivesTheRearWheelAndSteersWithGeometryFromTheUrdf)
+{
+  std::unique_ptr<Controller> c = init();
+  EXPECT_EQ(c->commandTopic(), CommandTopic::Twist);
+  ASSERT_EQ(c->claimedResources().size(), 2u);
+  EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::PositionJointInterface");
+  EXPECT_EQ(c->claimedResources()[0].resources, std::vector<std::string>{"front_steer_joint"});
+  EXPECT_EQ(c->claimedResources()[1].resources, std::vector<std::string>{"rear_wheel_joint"});
+  ASSERT_NE(c->odometryFrames(), nullptr);
+  EXPECT_EQ(c->odometryFrames()->odom_frame_id, "odom");
+  EXPECT_EQ(c->odometryFrames()->base_frame_id, "base_link");
+  EXPECT_TRUE(c->odometryFrames()->enable_odom_tf);
+  EXPECT_EQ(c->odometryFrames()->pose_covariance_diagonal[2], 1e6);
+
+  EXPECT_FALSE(c->setTwist(1.0, 0.2)) << "not running yet";
+  EXPECT_EQ(messages.back(), "Can't accept new commands. Controller is not running.");
+  c->starting(time_ns);
+  run(*c, 1);
+  ASSERT_TRUE(c->setTwist(1.0, 0.2));
+  run(*c, 1);
+  EXPECT_DOUBLE_EQ(wheelCommand(), 1.0 / 0.05) << "speed / the wheel link's cylinder radius";
+  EXPECT_EQ(steerCommand(), 0.2) << "angular.z is the steering angle";
+  EXPECT_FALSE(c->setTwist(std::nan(""), 0.0));
+  run(*c, 1);
+  EXPECT_DOUBLE_EQ(wheelCommand(), 20.0) << "a NaN command is ignored";
+
+  run(*c, 497);
+  EXPECT_DOUBLE_EQ(wheelCommand(), 20.0) << "within cmd_vel_timeout (0.5 s)";
+  run(*c, 2);
+  EXPECT_EQ(wheelCommand(), 0.0) << "older than cmd_vel_timeout: brake";
+  EXPECT_EQ(steerCommand(), 0.0);
+  c->stopping(time_ns);
+  EXPECT_FALSE(c->setTwist(1.0, 0.0));
+}
+
+TEST_F(AckermannTest, ParametersOverrideTheUrdfAndLimitTheCommands)
+{
+  params.erase("/bot/robot_description");
+  params.set("/bot/ack/wheel_radius", Param::real(0.1));
+  params.set("/bot/ack/wheel_separation_h", Param::real(0.4));
+  params.set("/bot/ack/linear/x/has_acceleration_limits", Param::boolean(true));
+  params.set("/bot/ack/linear/x/max_acceleration", Param::real(2.0));
+  params.set("/bot/ack/angular/z/has_velocity_limits", Param::boolean(true));
+  params.set("/bot/ack/angular/z/max_velocity", Param::real(0.3));
+  std::unique_ptr<Controller> c = init();
+  c->starting(time_ns);
+  ASSERT_TRUE(c->setTwist(1.0, -0.5));
+  run(*c, 100);
+  EXPECT_NEAR(wheelCommand(), 0.2 / 0.1, 1e-9) << "2 m/s^2 for 0.1 s: 0.2 m/s, through the radius parameter";
+  EXPECT_EQ(steerCommand(), -0.3) << "min_velocity defaults to -max_velocity";
+  run(*c, 400);
+  EXPECT_NEAR(wheelCommand(), 1.0 / 0.1, 1e-9);
+}
+
+TEST_F(AckermannTest, OpenLoopOdometryIntegratesTheCommandsAndPublishesAtItsRate)
+{
+  params.set("/bot/ack/open_loop", Param::boolean(true));
+  params.set("/bot/ack/publish_rate", Param::real(10.0));
+  std::unique_ptr<Controller> c = init();
+  c->starting(time_ns);
+  ASSERT_TRUE(c->setTwist(1.0, 0.0));
+  run(*c, 400);
+  std::vector<OdometrySample> odometry = c->takeOdometry();
+  ASSERT_EQ(odometry.size(), 3u) << "every 100 ms, strictly later than the period";
+  EXPECT_EQ(odometry.back().stamp_ns, 301000000);
+  EXPECT_NEAR(odometry.back().x, 0.3, 1e-9) << "the command reaches odometry one update later: 300 ms of 1 m/s";
+  EXPECT_EQ(odometry.back().y, 0.0);
+  EXPECT_EQ(odometry.back().linear, 1.0);
+}
+
+TEST_F(AckermannTest, InitErrorsNameWhatIsMissing)
+{
+  params.set("/bot/ack/front_steer", Param::string("effort_steer"));
+  init(false);
+  EXPECT_EQ(messages.back(), "effort_steer couldn't be retrieved from model description")
+      << "the URDF is read first, for wheel_separation_h";
+  params.set("/bot/ack/wheel_separation_h", Param::real(0.4));
+  init(false);
+  EXPECT_EQ(messages.back(), "Exception thrown while initializing controller 'ack'.\nCould not find resource "
+                             "'effort_steer' in 'hardware_interface::PositionJointInterface'.");
+  params.set("/bot/ack/front_steer", Param::string("front_steer_joint"));
+  params.set("/bot/ack/rear_wheel", Param::string("box_wheel_joint"));
+  init(false);
+  EXPECT_EQ(messages.back(), "Couldn't retrieve box_wheel_joint wheel radius");
+  EXPECT_EQ(messages[messages.size() - 2], "Wheel link box_wheel is NOT modeled as a cylinder!");
+  params.set("/bot/ack/rear_wheel", Param::string("rear_wheel_joint"));
+  params.erase("/bot/ack/wheel_separation_h");
+  params.erase("/bot/ack/twist_covariance_diagonal");
+  init(false);
+  EXPECT_EQ(messages.back().rfind("Parameter 'twist_covariance_diagonal' of /bot/ack must be a list of 6 numbers", 0), 0u);
+  params.erase("/bot/robot_description");
+  init(false);
+  EXPECT_EQ(messages.back(), "Robot descripion couldn't be retrieved from param server.");
 }

@@ -49,7 +49,16 @@ class ControllerManagerServices(unittest.TestCase):
         self.assertEqual(self.states()['joint_state_controller'], 'running')
         self.assertFalse(self.switch_ok(start=['joint_state_controller']), 'STRICT: already running')
         self.assertFalse(self.switch_ok(start=['joint_state_controller'], stop=['joint_state_controller'],
-                                        strictness=BEST_EFFORT), 'a name in both lists')
+                                        strictness=BEST_EFFORT), 'running and in both lists')
+        # ros_control 0.20 with a stopped controller in both lists: STRICT refuses (a double stop),
+        # BEST_EFFORT starts it.
+        self.assertTrue(self.switch_ok(stop=['joint_state_controller']))
+        self.assertFalse(self.switch_ok(start=['joint_state_controller'], stop=['joint_state_controller']),
+                         'STRICT: stopped and in both lists')
+        self.assertEqual(self.states()['joint_state_controller'], 'stopped')
+        self.assertTrue(self.switch_ok(start=['joint_state_controller'], stop=['joint_state_controller'],
+                                       strictness=BEST_EFFORT), 'BEST_EFFORT: stopped and in both lists')
+        self.assertEqual(self.states()['joint_state_controller'], 'running')
 
     def test_3_resource_conflicts(self):
         self.assertTrue(self.load('rear_right_velocity_controller').ok)
