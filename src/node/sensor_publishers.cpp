@@ -33,7 +33,6 @@ sensor_msgs::CameraInfo cameraInfo(const CameraFrame& f, const std_msgs::Header&
   return info;
 }
 
-// x y z float32 and rgb packed in a float32, as gazebo_ros_openni_kinect publishes
 // True once per update of the sensor: what it computed since `seen` was last set.
 bool takeUpdate(uint64_t& seen, const Sensor& sensor)
 {
@@ -46,6 +45,7 @@ bool takeUpdate(uint64_t& seen, const Sensor& sensor)
 // gazebo_ros_openni_kinect's pointCloudCutoff(Max): depths outside (near, far) are published as NaN.
 bool withinCutoff(float depth, double near, double far) { return depth > near && depth < far; }
 
+// x y z float32 and rgb packed in a float32, as gazebo_ros_openni_kinect publishes
 sensor_msgs::PointCloud2 pointCloud(const CameraFrame& f, const std_msgs::Header& header, double near, double far)
 {
   sensor_msgs::PointCloud2 cloud;
@@ -88,10 +88,11 @@ void applyTfPrefixParam(Sensor& sensor, const ros::NodeHandle& nh)
     sensor.setTfPrefix(prefix);
 }
 
-ros::NodeHandle sensorNodeHandle(Sensor& sensor, const std::string& what)
+// The node handle of the sensor's plugin, in its namespace.
+ros::NodeHandle sensorNodeHandle(Sensor& sensor)
 {
   const std::string& ns = sensor.rosNamespace();
-  return ros::NodeHandle(ns.empty() ? "/" : requireValidRosName(ns, "sensor '" + sensor.name() + "' " + what));
+  return ros::NodeHandle(ns.empty() ? "/" : requireValidRosName(ns, "sensor '" + sensor.name() + "' robotNamespace"));
 }
 }  // namespace
 
@@ -102,7 +103,7 @@ SensorPublishers::SensorPublishers(Robot& robot) : robot_(robot)
     if (!lidar->publishesOnRos())
       continue;
     const std::string owner = "sensor '" + lidar->name() + "' topic";
-    ros::NodeHandle nh = sensorNodeHandle(*lidar, "robotNamespace");
+    ros::NodeHandle nh = sensorNodeHandle(*lidar);
     applyTfPrefixParam(*lidar, nh);
     lidars_.push_back({lidar, nh.advertise<sensor_msgs::LaserScan>(requireValidRosName(lidar->topic(), owner), 5)});
   }
@@ -111,7 +112,7 @@ SensorPublishers::SensorPublishers(Robot& robot) : robot_(robot)
     if (!camera->publishesOnRos())
       continue;
     const std::string owner = "sensor '" + camera->name() + "' topic";
-    ros::NodeHandle nh = sensorNodeHandle(*camera, "robotNamespace");
+    ros::NodeHandle nh = sensorNodeHandle(*camera);
     const std::string camera_name = camera->description().pluginParam("cameraName");
     applyTfPrefixParam(*camera, camera_name.empty() ? nh : ros::NodeHandle(nh, camera_name));
     CameraTopics t;
@@ -130,12 +131,12 @@ SensorPublishers::SensorPublishers(Robot& robot) : robot_(robot)
   {
     if (!imu->publishesOnRos())
       continue;
-    ros::NodeHandle nh = sensorNodeHandle(*imu, "robotNamespace");
+    ros::NodeHandle nh = sensorNodeHandle(*imu);
     imus_.push_back({imu, nh.advertise<sensor_msgs::Imu>(requireValidRosName(imu->topic(), "sensor '" + imu->name() + "' topic"), 10)});
   }
   for (GroundTruthOdometry* odometry : robot_.groundTruths())
   {
-    ros::NodeHandle nh = sensorNodeHandle(*odometry, "robotNamespace");
+    ros::NodeHandle nh = sensorNodeHandle(*odometry);
     std::string prefix;  // gazebo_ros_p3d: getParam("tf_prefix") in its namespace, no search
     nh.getParam("tf_prefix", prefix);
     odometry->setTfPrefix(prefix);

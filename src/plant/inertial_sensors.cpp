@@ -6,6 +6,7 @@
 #include <random>
 
 #include "bullet_plant/geometry.h"
+#include "xml_util.h"
 
 namespace bullet_plant
 {
@@ -21,27 +22,10 @@ urdf::Vector3 scaled(const urdf::Vector3& a, double s) { return urdf::Vector3(a.
 urdf::Vector3 vectorParam(const SensorDescription& d, const std::string& key)
 {
   const std::string text = d.pluginParam(key);
-  urdf::Vector3 v;
-  if (!text.empty())
-  {
-    const std::vector<double> xyz = [&] {
-      std::vector<double> out;
-      size_t pos = 0;
-      while (pos < text.size())
-      {
-        size_t used = 0;
-        out.push_back(std::stod(text.substr(pos), &used));
-        pos += used;
-        while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos])))
-          ++pos;
-      }
-      return out;
-    }();
-    if (xyz.size() != 3)
-      throw DescriptionError("plugin '" + d.plugin_name + "': <" + key + "> '" + text + "' is not three numbers");
-    v = urdf::Vector3(xyz[0], xyz[1], xyz[2]);
-  }
-  return v;
+  if (text.empty())
+    return urdf::Vector3();
+  const std::vector<double> xyz = xml::numbers(text, 3, "<" + key + "> of plugin '" + d.plugin_name + "'");
+  return urdf::Vector3(xyz[0], xyz[1], xyz[2]);
 }
 
 urdf::Rotation rpyParam(const SensorDescription& d, const std::string& key)

@@ -21,18 +21,7 @@ double SensorDescription::pluginNumber(const std::string& key, double fallback) 
   auto it = plugin.find(key);
   if (it == plugin.end())
     return fallback;
-  try
-  {
-    size_t used = 0;
-    const double value = std::stod(it->second, &used);
-    if (used == it->second.size())
-      return value;
-  }
-  catch (const std::exception&)
-  {
-  }
-  throw DescriptionError("plugin '" + plugin_name + "' of sensor '" + name + "': <" + key + "> is '" + it->second +
-                         "', not a number");
+  return xml::numbers(it->second, 1, "<" + key + "> of plugin '" + plugin_name + "' of sensor '" + name + "'")[0];
 }
 
 PluginKind pluginKind(const std::string& filename)
