@@ -33,7 +33,7 @@ rospy.init_node('bench_probe', anonymous=True)
 clock = []
 rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()))
 scans = []
-rospy.Subscriber('/tianracer/scan', LaserScan, lambda m: scans.append(1))
+rospy.Subscriber('/scan', LaserScan, lambda m: scans.append(1))
 drive = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
 def keep_driving():
     twist = Twist()

@@ -33,7 +33,7 @@ class FigureEight:
         self.odom = []
         self.scan = None
         rospy.Subscriber('/tianracer/odom', Odometry, self.on_odom)
-        rospy.Subscriber('/tianracer/scan', LaserScan, self.on_scan)
+        rospy.Subscriber('/scan', LaserScan, self.on_scan)
         self.cmd = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
 
     def on_odom(self, m):

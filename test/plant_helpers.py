@@ -68,3 +68,37 @@ def box_stl(path, low, high):
                 f.write(struct.pack('<3f', *corners[i]))
             f.write(b'\0\0')
     return path
+
+
+# A robot with one plugin of each kind the plant reads, parameters set away from their defaults, and
+# one plugin it does not simulate (test_sensor_plugins.py, test_sensor_plugins_ros.py).
+PLUGIN_URDF = """<robot name="probe">
+  <link name="base_footprint"/>
+  <link name="scanner"><collision><geometry><box size="0.05 0.05 0.05"/></geometry></collision></link>
+  <joint name="scanner_joint" type="fixed"><parent link="base_footprint"/><child link="scanner"/>
+    <origin xyz="0 0 0.1"/></joint>
+  <gazebo reference="scanner">
+    <sensor type="ray" name="front_laser"><update_rate>10</update_rate>
+      <ray><scan><horizontal><samples>5</samples><min_angle>-1</min_angle><max_angle>1</max_angle></horizontal></scan>
+        <range><min>0.1</min><max>5</max></range></ray>
+      <plugin name="laser" filename="libgazebo_ros_gpu_laser.so">
+        <topicName>/shared/laser</topicName><frameName>/scanner</frameName></plugin>
+    </sensor>
+    <sensor type="camera" name="eye"><update_rate>30</update_rate>
+      <camera><horizontal_fov>1.0</horizontal_fov><image><width>8</width><height>6</height></image></camera>
+      <plugin name="eye_controller" filename="libgazebo_ros_camera.so">
+        <robotNamespace>/other</robotNamespace><cameraName>front</cameraName><imageTopicName>rgb</imageTopicName>
+        <frameName>eye_frame</frameName><updateRate>5</updateRate></plugin>
+    </sensor>
+    <sensor type="ray" name="sonar"><update_rate>10</update_rate>
+      <ray><scan><horizontal><samples>1</samples></horizontal></scan><range><min>0.1</min><max>2</max></range></ray>
+      <plugin name="sonar_plugin" filename="libgazebo_ros_range.so"><topicName>sonar</topicName></plugin>
+    </sensor>
+  </gazebo>
+  <gazebo>
+    <plugin name="truth" filename="libgazebo_ros_p3d.so">
+      <bodyName>base_footprint</bodyName><topicName>ground_truth</topicName><updateRate>50</updateRate></plugin>
+    <plugin name="body_imu" filename="libgazebo_ros_imu.so">
+      <bodyName>scanner</bodyName><topicName>imu_raw</topicName><updateRate>200</updateRate></plugin>
+  </gazebo>
+</robot>"""

@@ -174,7 +174,7 @@ def test_pause_unpause_and_reset_like_gazebo(ros, plant):
 
 
 def test_scan_publishes_at_40_hz_of_simulated_time_in_the_lasers_frame(ros, plant):
-    scans = echo(ros, NS + '/scan', count=20, timeout=20)
+    scans = echo(ros, '/scan', count=20, timeout=20)
     assert len(scans) == 20
     stamps = [s['header']['stamp'] for s in scans]
     periods = [b - a for a, b in zip(stamps, stamps[1:])]
@@ -201,10 +201,10 @@ def test_cameras_publish_at_their_rates_only_while_subscribed(ros, plant):
         got = {}
         def keep(topic):
             return lambda m: got.setdefault(topic, []).append(m)
-        topics = {'/tianracer/camera/image_raw': Image, '/tianracer/camera/camera_info': CameraInfo,
-                  '/tianracer/depth_camera/depth/image_raw': Image,
-                  '/tianracer/depth_camera/depth/camera_info': CameraInfo,
-                  '/tianracer/depth_camera/depth/points': PointCloud2}
+        topics = {'/camera/image_raw': Image, '/camera/camera_info': CameraInfo,
+                  '/depth_camera/depth/image_raw': Image,
+                  '/depth_camera/depth/camera_info': CameraInfo,
+                  '/depth_camera/depth/points': PointCloud2}
         subs = [rospy.Subscriber(t, cls, keep(t)) for t, cls in topics.items()]
         time.sleep(4.0)
         out = {}
@@ -218,14 +218,14 @@ def test_cameras_publish_at_their_rates_only_while_subscribed(ros, plant):
         time.sleep(2.0)
         print(json.dumps(out))
     """, timeout=60)
-    camera, info = rates['/tianracer/camera/image_raw'], rates['/tianracer/camera/camera_info']
+    camera, info = rates['/camera/image_raw'], rates['/camera/camera_info']
     assert camera['rate'] == pytest.approx(30, rel=0.05) and camera['encoding'] == 'rgb8'
     assert info['size'] == camera['size'] == [160, 120]
     assert camera['frame'] == 'camera_optical_frame'
-    depth = rates['/tianracer/depth_camera/depth/image_raw']
+    depth = rates['/depth_camera/depth/image_raw']
     assert depth['rate'] == pytest.approx(15, rel=0.05) and depth['encoding'] == '32FC1'
-    assert rates['/tianracer/depth_camera/depth/camera_info']['size'] == depth['size'] == [128, 96]
-    assert rates['/tianracer/depth_camera/depth/points']['size'] == [128, 96]
+    assert rates['/depth_camera/depth/camera_info']['size'] == depth['size'] == [128, 96]
+    assert rates['/depth_camera/depth/points']['size'] == [128, 96]
     log = plant.log()
     for sensor in ('camera', 'depth_camera'):
         assert "tianracer sensor '%s': subscribed, computing" % sensor in log

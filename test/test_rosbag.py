@@ -9,7 +9,7 @@ from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 pytestmark = pytest.mark.ros
 
-TOPICS = ['/tianracer/odom', '/tianracer/scan', '/tf']
+TOPICS = ['/tianracer/odom', '/scan', '/tf']
 
 COUNT_PLAYBACK = """
     import json, time, rospy
@@ -18,7 +18,7 @@ COUNT_PLAYBACK = """
     rospy.init_node('playback_probe', anonymous=True)
     counts = {'odom': 0, 'scan': 0}
     rospy.Subscriber('/tianracer/odom', Odometry, lambda m: counts.__setitem__('odom', counts['odom'] + 1))
-    rospy.Subscriber('/tianracer/scan', LaserScan, lambda m: counts.__setitem__('scan', counts['scan'] + 1))
+    rospy.Subscriber('/scan', LaserScan, lambda m: counts.__setitem__('scan', counts['scan'] + 1))
     end = time.time() + %f
     while time.time() < end:
         time.sleep(0.05)
@@ -40,7 +40,7 @@ def test_a_recorded_drive_plays_back_with_its_message_counts(ros, tmp_path):
     assert set(recorded) == set(TOPICS), recorded
     # 4 s of simulated time (real time factor 1): odom at 50 Hz, the lidar at 40 Hz.
     assert recorded['/tianracer/odom'] == pytest.approx(200, rel=0.15)
-    assert recorded['/tianracer/scan'] == pytest.approx(160, rel=0.15)
+    assert recorded['/scan'] == pytest.approx(160, rel=0.15)
 
     # Playback against a master with no simulation: every recorded message arrives again.
     ros.close()
@@ -57,4 +57,4 @@ def test_a_recorded_drive_plays_back_with_its_message_counts(ros, tmp_path):
         counts = yaml.safe_load(probe.log().strip().splitlines()[-1])
     finally:
         player_system.close()
-    assert counts == {'odom': recorded['/tianracer/odom'], 'scan': recorded['/tianracer/scan']}
+    assert counts == {'odom': recorded['/tianracer/odom'], 'scan': recorded['/scan']}

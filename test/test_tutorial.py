@@ -20,7 +20,7 @@ TOPICS = ['/tianracer/cmd_vel', '/tianracer/rear_left_velocity_controller/comman
           '/tianracer/rear_right_velocity_controller/command',
           '/tianracer/front_left_steering_position_controller/command',
           '/tianracer/front_right_steering_position_controller/command',
-          '/tianracer/joint_states', '/tianracer/scan', '/tianracer/odom', '/tf', '/clock']
+          '/tianracer/joint_states', '/scan', '/tianracer/odom', '/tf', '/clock']
 
 
 @pytest.fixture

@@ -18,7 +18,7 @@ APT_PACKAGES=(
   ros-geometry-msgs libgeometry-msgs-dev python3-geometry-msgs
   ros-nav-msgs libnav-msgs-dev python3-nav-msgs
   ros-rosgraph-msgs libros-rosgraph-msgs-dev python3-rosgraph-msgs
-  ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs
+  ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs python3-tf2-ros
   ros-trajectory-msgs libtrajectory-msgs-dev python3-trajectory-msgs   # gazebo_msgs/SetJointTrajectory
   # the plant: physics, URDF parsing, XML, Python bindings
   libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev libtinyxml-dev

@@ -11,6 +11,7 @@
 
 #include "bullet_plant/controller_manager.h"
 #include "bullet_plant/hardware_interface.h"
+#include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/robot_description.h"
 #include "bullet_plant/sensors.h"
@@ -86,6 +87,8 @@ public:
   std::vector<Sensor*> sensors();
   std::vector<Lidar*> lidars();
   std::vector<Camera*> cameras();
+  std::vector<Imu*> imus();
+  std::vector<GroundTruthOdometry*> groundTruths();
   Sensor* sensor(const std::string& name);
 
   // Steps where the physics produced a non-finite state and the robot was put back to its last

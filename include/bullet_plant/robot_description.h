@@ -28,11 +28,27 @@ struct Noise
   double stddev = 0.0;
 };
 
-// One <sensor> inside <gazebo reference="LINK">, with the plugin parameters gazebo_ros reads.
+// The gazebo_ros plugins the plant simulates (docs/interfaces.md section 11), by plugin file.
+enum class PluginKind
+{
+  None,          // a <sensor> without a plugin: rendered for the Python API, nothing on ROS
+  Laser,         // libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so
+  Camera,        // libgazebo_ros_camera.so
+  OpenniKinect,  // libgazebo_ros_openni_kinect.so
+  ImuSensor,     // libgazebo_ros_imu_sensor.so inside <sensor type="imu">
+  ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
+  P3d,           // libgazebo_ros_p3d.so, a model plugin
+  Unknown,       // any other file: warned about once, at spawn
+};
+PluginKind pluginKind(const std::string& filename);
+
+// One <sensor> inside <gazebo reference="LINK">, with the plugin parameters gazebo_ros reads; the
+// model plugins gazebo_ros_imu and gazebo_ros_p3d are described the same way (type "imu" or
+// "p3d", link = their bodyName).
 struct SensorDescription
 {
   std::string name;
-  std::string type;  // "ray", "gpu_ray", "camera", "depth"
+  std::string type;  // "ray", "gpu_ray", "camera", "depth", "imu", "p3d"
   std::string link;
   urdf::Pose pose;   // in the link frame (<pose>)
   double update_rate = 0.0;  // Hz; 0 = every physics step
@@ -51,7 +67,13 @@ struct SensorDescription
   // the plugin block: filename and its child elements as text (topicName, frameName, cameraName, ...)
   std::string plugin_name, plugin_filename;
   std::map<std::string, std::string> plugin;
+  PluginKind plugin_kind = PluginKind::None;
+  bool model_plugin = false;  // from <gazebo><plugin>, not from a <sensor>
   std::string pluginParam(const std::string& key, const std::string& fallback = "") const;
+  bool hasPluginParam(const std::string& key) const { return plugin.count(key) > 0; }
+  // A number from the plugin block, or fallback when absent; throws DescriptionError naming the
+  // sensor and the element when the text is not a number.
+  double pluginNumber(const std::string& key, double fallback) const;
 };
 
 struct SurfaceDescription
@@ -76,6 +98,11 @@ struct ControlPluginDescription
   std::string robot_param = "robot_description";
   double control_period = 0.0;    // s; 0: the physics step
   std::string e_stop_topic;
+  // legacyModeNS (default true, as gazebo_ros_control): pid_gains at /gazebo_ros_control/pid_gains
+  // in Gazebo; the plant reads them under the robot namespace either way (docs/interfaces.md section 11).
+  bool legacy_mode_ns = true;
+  bool legacy_mode_ns_given = false;
+  std::string sim_type = "gazebo_ros_control/DefaultRobotHWSim";  // robotSimType
 };
 
 struct RobotDescription
@@ -87,6 +114,7 @@ struct RobotDescription
   std::map<std::string, SurfaceDescription> surfaces;  // by link
   std::vector<SensorDescription> sensors;
   std::vector<std::string> warnings;                   // things read but not fully supported
+  std::vector<std::string> errors;                     // things refused (logged as errors at spawn)
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)
 };
 

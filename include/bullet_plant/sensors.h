@@ -29,6 +29,11 @@ struct LaserScan
   std::vector<float> ranges;
 };
 
+// tf::resolve(prefix, frame) of tf 1.13, as gazebo_ros's plugins use it for their frame ids: a
+// frame starting with '/' loses the '/', otherwise "prefix/frame" (the prefix without its leading
+// '/'), or the frame alone for an empty prefix (docs/interfaces.md section 11).
+std::string resolveTfFrame(const std::string& prefix, const std::string& frame);
+
 class Sensor
 {
 public:
@@ -37,9 +42,21 @@ public:
   virtual ~Sensor() = default;
   const SensorDescription& description() const { return description_; }
   const std::string& name() const { return description_.name; }
-  // Topic and frame as the gazebo_ros plugin would publish them (topic relative to the robot namespace).
+  // Topic as the gazebo_ros plugin names it, relative to rosNamespace().
   virtual std::string topic() const = 0;
-  std::string frameId() const;
+  // The frame id the plugin publishes, each plugin with its own rule (section 11).
+  virtual std::string frameId() const;
+
+  // The ROS namespace of the plugin's node handle: its <robotNamespace>, else the spawn namespace
+  // (gazebo_ros writes it into every plugin), else the plugin's own default. Set at spawn.
+  virtual void setNamespace(const std::string& spawn_namespace, const std::string& model_name);
+  const std::string& rosNamespace() const { return namespace_; }
+  // The tf_prefix of frame ids: the namespace without trailing '/', unless a tf_prefix parameter
+  // found from the namespace says otherwise (the ROS node sets it).
+  const std::string& tfPrefix() const { return tf_prefix_; }
+  void setTfPrefix(const std::string& prefix) { tf_prefix_ = prefix; }
+  // Whether the plugin publishes on ROS at all (a known gazebo_ros plugin that loaded).
+  bool publishesOnRos() const;
 
   void setActive(bool active) { active_ = active; }
   bool active() const { return active_; }
@@ -49,7 +66,11 @@ public:
   bool due(int64_t time_ns);
 
 protected:
+  // The plugin's namespace when it has no <robotNamespace> and the spawn gave none.
+  virtual std::string defaultNamespace(const std::string& model_name) const;
+
   SensorDescription description_;
+  std::string namespace_, tf_prefix_;
   std::mt19937 noise_;
   bool active_ = false;
   uint64_t updates_ = 0;
@@ -61,7 +82,9 @@ class Lidar : public Sensor
 {
 public:
   Lidar(const SensorDescription& d, uint32_t noise_seed);
-  std::string topic() const override { return description_.pluginParam("topicName", "scan"); }
+  // gazebo_ros_laser: no <topicName> means "/world" (sic).
+  std::string topic() const override { return description_.pluginParam("topicName", "/world"); }
+  std::string frameId() const override;
   bool hasScan() const { return updates_ > 0; }
   const LaserScan& latest() const { return scan_; }
 
@@ -96,6 +119,10 @@ public:
   std::string depthTopic() const;        // depth cameras only
   std::string depthCameraInfoTopic() const;
   std::string pointsTopic() const;
+  // gazebo_ros_openni_kinect publishes depths and points only within (pointCloudCutoff,
+  // pointCloudCutoffMax), NaN elsewhere (defaults 0.4 and 5.0 m).
+  double pointCloudCutoff() const;
+  double pointCloudCutoffMax() const;
   bool hasFrame() const { return updates_ > 0; }
   const CameraFrame& latest() const { return frame_; }
   // Pinhole intrinsics from the horizontal field of view and the image size (square pixels).

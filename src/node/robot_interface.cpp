@@ -12,7 +12,7 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
   : nh_(robot.controlNamespace().empty()
             ? "/"
             : requireValidRosName(robot.controlNamespace(), "robot '" + robot.name() + "' robotNamespace")),
-    odometry_(robot, nh_), sensors_(robot, nh_)
+    odometry_(robot, nh_), sensors_(robot)
 {
   const std::string& estop = robot.description().control.e_stop_topic;
   if (!estop.empty())

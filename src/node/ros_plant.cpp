@@ -166,6 +166,7 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
     return false;
   }
   copyParams(normaliseNamespace(control_ns) + "/gazebo_ros_control");
+  copyParams("/gazebo_ros_control");  // where legacyModeNS (the default) has Gazebo look for pid_gains
   return onSimThread<bool>([&] {
     try
     {

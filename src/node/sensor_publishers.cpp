@@ -3,8 +3,11 @@
 #include "ros_names.h"
 
 #include <cstring>
+#include <limits>
 
+#include <nav_msgs/Odometry.h>
 #include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Imu.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/PointCloud2.h>
@@ -30,8 +33,20 @@ sensor_msgs::CameraInfo cameraInfo(const CameraFrame& f, const std_msgs::Header&
   return info;
 }
 
+// True once per update of the sensor: what it computed since `seen` was last set.
+bool takeUpdate(uint64_t& seen, const Sensor& sensor)
+{
+  if (sensor.updates() == seen)
+    return false;
+  seen = sensor.updates();
+  return true;
+}
+
+// gazebo_ros_openni_kinect's pointCloudCutoff(Max): depths outside (near, far) are published as NaN.
+bool withinCutoff(float depth, double near, double far) { return depth > near && depth < far; }
+
 // x y z float32 and rgb packed in a float32, as gazebo_ros_openni_kinect publishes
-sensor_msgs::PointCloud2 pointCloud(const CameraFrame& f, const std_msgs::Header& header)
+sensor_msgs::PointCloud2 pointCloud(const CameraFrame& f, const std_msgs::Header& header, double near, double far)
 {
   sensor_msgs::PointCloud2 cloud;
   cloud.header = header;
@@ -55,24 +70,51 @@ sensor_msgs::PointCloud2 pointCloud(const CameraFrame& f, const std_msgs::Header
   for (size_t p = 0; p < size_t(f.width) * f.height; ++p)
   {
     uint8_t* out = &cloud.data[p * 16];
-    std::memcpy(out, &f.points[3 * p], 12);
+    static const float kNaN[3] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN(),
+                                  std::numeric_limits<float>::quiet_NaN()};
+    std::memcpy(out, withinCutoff(f.depth[p], near, far) ? &f.points[3 * p] : kNaN, 12);
     uint32_t rgb = (uint32_t(f.rgb[3 * p]) << 16) | (uint32_t(f.rgb[3 * p + 1]) << 8) | f.rgb[3 * p + 2];
     std::memcpy(out + 12, &rgb, 4);
   }
   return cloud;
 }
+
+// tf::getPrefixParam: a tf_prefix parameter found by searching up from the plugin's namespace
+// replaces the namespace as the prefix of laser and camera frame ids.
+void applyTfPrefixParam(Sensor& sensor, const ros::NodeHandle& nh)
+{
+  std::string key, prefix;
+  if (nh.searchParam("tf_prefix", key) && nh.getParam(key, prefix) && !prefix.empty())
+    sensor.setTfPrefix(prefix);
+}
+
+// The node handle of the sensor's plugin, in its namespace.
+ros::NodeHandle sensorNodeHandle(Sensor& sensor)
+{
+  const std::string& ns = sensor.rosNamespace();
+  return ros::NodeHandle(ns.empty() ? "/" : requireValidRosName(ns, "sensor '" + sensor.name() + "' robotNamespace"));
+}
 }  // namespace
 
-SensorPublishers::SensorPublishers(Robot& robot, ros::NodeHandle& nh) : robot_(robot)
+SensorPublishers::SensorPublishers(Robot& robot) : robot_(robot)
 {
   for (Lidar* lidar : robot_.lidars())
   {
+    if (!lidar->publishesOnRos())
+      continue;
     const std::string owner = "sensor '" + lidar->name() + "' topic";
+    ros::NodeHandle nh = sensorNodeHandle(*lidar);
+    applyTfPrefixParam(*lidar, nh);
     lidars_.push_back({lidar, nh.advertise<sensor_msgs::LaserScan>(requireValidRosName(lidar->topic(), owner), 5)});
   }
   for (Camera* camera : robot_.cameras())
   {
+    if (!camera->publishesOnRos())
+      continue;
     const std::string owner = "sensor '" + camera->name() + "' topic";
+    ros::NodeHandle nh = sensorNodeHandle(*camera);
+    const std::string camera_name = camera->description().pluginParam("cameraName");
+    applyTfPrefixParam(*camera, camera_name.empty() ? nh : ros::NodeHandle(nh, camera_name));
     CameraTopics t;
     t.camera = camera;
     t.image = nh.advertise<sensor_msgs::Image>(requireValidRosName(camera->topic(), owner), 2);
@@ -84,6 +126,22 @@ SensorPublishers::SensorPublishers(Robot& robot, ros::NodeHandle& nh) : robot_(r
       t.points = nh.advertise<sensor_msgs::PointCloud2>(requireValidRosName(camera->pointsTopic(), owner), 2);
     }
     cameras_.push_back(t);
+  }
+  for (Imu* imu : robot_.imus())
+  {
+    if (!imu->publishesOnRos())
+      continue;
+    ros::NodeHandle nh = sensorNodeHandle(*imu);
+    imus_.push_back({imu, nh.advertise<sensor_msgs::Imu>(requireValidRosName(imu->topic(), "sensor '" + imu->name() + "' topic"), 10)});
+  }
+  for (GroundTruthOdometry* odometry : robot_.groundTruths())
+  {
+    ros::NodeHandle nh = sensorNodeHandle(*odometry);
+    std::string prefix;  // gazebo_ros_p3d: getParam("tf_prefix") in its namespace, no search
+    nh.getParam("tf_prefix", prefix);
+    odometry->setTfPrefix(prefix);
+    ground_truths_.push_back(
+        {odometry, nh.advertise<nav_msgs::Odometry>(requireValidRosName(odometry->topic(), "plugin '" + odometry->name() + "' topicName"), 10)});
   }
 }
 
@@ -98,6 +156,10 @@ void SensorPublishers::updateSubscriptions()
       listeners += t.depth.getNumSubscribers() + t.depth_info.getNumSubscribers() + t.points.getNumSubscribers();
     setActive(t.camera, listeners > 0);
   }
+  for (ImuTopic& t : imus_)
+    setActive(t.imu, t.pub.getNumSubscribers() > 0);
+  for (GroundTruthTopic& t : ground_truths_)
+    setActive(t.odometry, t.pub.getNumSubscribers() > 0);
 }
 
 void SensorPublishers::setActive(Sensor* sensor, bool active)
@@ -112,15 +174,80 @@ void SensorPublishers::publish()
 {
   publishScans();
   publishCameras();
+  publishImus();
+  publishGroundTruth();
+}
+
+namespace
+{
+geometry_msgs::Vector3 vector(const urdf::Vector3& v)
+{
+  geometry_msgs::Vector3 out;
+  out.x = v.x;
+  out.y = v.y;
+  out.z = v.z;
+  return out;
+}
+
+geometry_msgs::Quaternion quaternion(const urdf::Rotation& q)
+{
+  geometry_msgs::Quaternion out;
+  out.x = q.x;
+  out.y = q.y;
+  out.z = q.z;
+  out.w = q.w;
+  return out;
+}
+}  // namespace
+
+void SensorPublishers::publishImus()
+{
+  for (ImuTopic& t : imus_)
+  {
+    if (!takeUpdate(t.updates, *t.imu) || !t.imu->hasReading())
+      continue;
+    const ImuReading& r = t.imu->latest();
+    sensor_msgs::Imu msg;
+    msg.header.stamp = rosTime(r.stamp_ns);
+    msg.header.frame_id = r.frame_id;
+    msg.orientation = quaternion(r.orientation);
+    msg.angular_velocity = vector(r.angular_velocity);
+    msg.linear_acceleration = vector(r.linear_acceleration);
+    for (int i : {0, 4, 8})
+      msg.orientation_covariance[i] = msg.angular_velocity_covariance[i] = msg.linear_acceleration_covariance[i] = r.variance;
+    t.pub.publish(msg);
+  }
+}
+
+void SensorPublishers::publishGroundTruth()
+{
+  for (GroundTruthTopic& t : ground_truths_)
+  {
+    if (!takeUpdate(t.updates, *t.odometry) || !t.odometry->hasReading())
+      continue;
+    const GroundTruthReading& r = t.odometry->latest();
+    nav_msgs::Odometry msg;
+    msg.header.stamp = rosTime(r.stamp_ns);
+    msg.header.frame_id = r.frame_id;
+    msg.child_frame_id = r.child_frame_id;
+    msg.pose.pose.position.x = r.pose.position.x;
+    msg.pose.pose.position.y = r.pose.position.y;
+    msg.pose.pose.position.z = r.pose.position.z;
+    msg.pose.pose.orientation = quaternion(r.pose.rotation);
+    msg.twist.twist.linear = vector(r.linear);
+    msg.twist.twist.angular = vector(r.angular);
+    for (int i : {0, 7, 14, 21, 28, 35})
+      msg.pose.covariance[i] = msg.twist.covariance[i] = r.variance;
+    t.pub.publish(msg);
+  }
 }
 
 void SensorPublishers::publishScans()
 {
   for (LidarTopic& t : lidars_)
   {
-    if (t.lidar->updates() == t.updates)
+    if (!takeUpdate(t.updates, *t.lidar))
       continue;
-    t.updates = t.lidar->updates();
     const LaserScan& s = t.lidar->latest();
     sensor_msgs::LaserScan msg;
     msg.header.stamp = rosTime(s.stamp_ns);
@@ -141,9 +268,8 @@ void SensorPublishers::publishCameras()
 {
   for (CameraTopics& t : cameras_)
   {
-    if (t.camera->updates() == t.updates)
+    if (!takeUpdate(t.updates, *t.camera))
       continue;
-    t.updates = t.camera->updates();
     const CameraFrame& f = t.camera->latest();
     std_msgs::Header header;
     header.stamp = rosTime(f.stamp_ns);
@@ -165,13 +291,18 @@ void SensorPublishers::publishCameras()
     depth.height = f.height;
     depth.encoding = "32FC1";
     depth.step = f.width * 4;
-    depth.data.resize(f.depth.size() * 4);
-    std::memcpy(depth.data.data(), f.depth.data(), depth.data.size());
+    const double near = t.camera->pointCloudCutoff(), far = t.camera->pointCloudCutoffMax();
+    std::vector<float> depths(f.depth);
+    for (float& d : depths)
+      if (!withinCutoff(d, near, far))
+        d = std::numeric_limits<float>::quiet_NaN();
+    depth.data.resize(depths.size() * 4);
+    std::memcpy(depth.data.data(), depths.data(), depth.data.size());
     t.depth.publish(depth);
     t.depth_info.publish(cameraInfo(f, header));
     if (t.points.getNumSubscribers() == 0)
       continue;
-    t.points.publish(pointCloud(f, header));
+    t.points.publish(pointCloud(f, header, near, far));
   }
 }
 

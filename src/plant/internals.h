@@ -11,6 +11,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 
+#include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/world.h"
 #include "joint_layer_sim.h"
@@ -38,6 +39,7 @@ struct Robot::Internals
   Robot* self = nullptr;
   std::string name;
   std::string control_namespace;
+  std::string spawn_namespace;  // spawn_model -robot_namespace, for plugins without <robotNamespace>
   RobotDescription description;
   RobotMultibody multibody;
   JointLayer joint_layer;
@@ -74,6 +76,8 @@ struct Robot::Internals
   void updateControllers(int64_t time_ns);
   void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
+  // A link frame's (or a point's of it, frame `offset` in the link) pose and velocities in the world.
+  LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const;
   void resetToSpawn();
   // The wrench and effort jobs due at time_ns, as forces and torques of the coming step; expired
   // jobs are dropped.

@@ -166,6 +166,20 @@ void Robot::Internals::updateSensors(int64_t time_ns)
     if (scene.empty())
       scene = world->rayScene();
     const SensorDescription& d = sensor->description();
+    if (auto* imu = dynamic_cast<Imu*>(sensor.get()))
+    {
+      imu->sample(linkMotion(d.link, d.pose), world->description.gravity, time_ns);
+      continue;
+    }
+    if (auto* odometry = dynamic_cast<GroundTruthOdometry*>(sensor.get()))
+    {
+      const std::string reference = odometry->referenceLink();
+      if (!reference.empty() && !multibody.link_in_body.count(reference))
+        continue;  // said at spawn: gazebo_ros_p3d publishes nothing then
+      const LinkMotion frame = reference.empty() ? LinkMotion() : linkMotion(reference, urdf::Pose());
+      odometry->sample(linkMotion(d.link, urdf::Pose()), reference.empty() ? nullptr : &frame, time_ns);
+      continue;
+    }
     const Frame pose = Frame::fromPose(fromBullet(multibody.linkWorldTransform(d.link, name))) * Frame::fromPose(d.pose);
     if (auto* camera = dynamic_cast<Camera*>(sensor.get()))
       detail::SensorRendering::render(*camera, RayCaster(scene, nullptr), pose, world->description.light_direction,
@@ -214,6 +228,37 @@ void Robot::Internals::applyExternalEfforts(int64_t time_ns)
   joint_efforts.erase(std::remove_if(joint_efforts.begin(), joint_efforts.end(),
                                      [&](const JointEffort& e) { return expired(e.end_ns); }),
                       joint_efforts.end());
+}
+
+LinkMotion Robot::Internals::linkMotion(const std::string& link, const urdf::Pose& offset) const
+{
+  const int body = multibody.link_in_body.at(link).first;
+  const btMultiBody& mb = *multibody.bullet;
+  // Bullet keeps each body's velocities at its centre of mass: the base's in the world frame, the
+  // links' (compTreeLinkVelocities) in their own frames.
+  btVector3 omega, v_com;
+  if (body == 0)
+  {
+    omega = mb.getBaseOmega();
+    v_com = mb.getBaseVel();
+  }
+  else
+  {
+    btAlignedObjectArray<btVector3> omegas, velocities;
+    omegas.resize(mb.getNumLinks() + 1);
+    velocities.resize(mb.getNumLinks() + 1);
+    mb.compTreeLinkVelocities(&omegas[0], &velocities[0]);
+    const btMatrix3x3& to_world = multibody.bodyWorldTransform(body).getBasis();
+    omega = to_world * omegas[body];
+    v_com = to_world * velocities[body];
+  }
+  const btTransform frame = multibody.linkWorldTransform(link, name) * toBullet(offset);
+  const btVector3 v = v_com + omega.cross(frame.getOrigin() - multibody.bodyWorldTransform(body).getOrigin());
+  LinkMotion m;
+  m.pose = fromBullet(frame);
+  m.velocity = urdf::Vector3(v.x(), v.y(), v.z());
+  m.angular_velocity = urdf::Vector3(omega.x(), omega.y(), omega.z());
+  return m;
 }
 
 void Robot::Internals::resetToSpawn()
@@ -440,6 +485,8 @@ std::vector<Kind*> sensorsOfKind(const std::vector<std::unique_ptr<Sensor>>& sen
 
 std::vector<Camera*> Robot::cameras() { return sensorsOfKind<Camera>(in_->sensors); }
 std::vector<Lidar*> Robot::lidars() { return sensorsOfKind<Lidar>(in_->sensors); }
+std::vector<Imu*> Robot::imus() { return sensorsOfKind<Imu>(in_->sensors); }
+std::vector<GroundTruthOdometry*> Robot::groundTruths() { return sensorsOfKind<GroundTruthOdometry>(in_->sensors); }
 
 Sensor* Robot::sensor(const std::string& name)
 {

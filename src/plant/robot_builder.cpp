@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 
+#include "bullet_plant/geometry.h"
 #include "bullet_plant/params.h"
 #include "collision_shapes.h"
 
@@ -441,8 +442,15 @@ void createHandles(Robot::Internals& r)
       continue;
     }
     JointHandle& h = r.joint_layer.addHandle(r.multibody.joints[index->second], index->second, iface);
-    std::string pid_ns = joinPath(r.control_namespace, "gazebo_ros_control/pid_gains/" + t.joint);
-    const Param* p = r.world->params.find(joinPath(pid_ns, "p"));
+    // legacyModeNS (gazebo_ros_control's default): Gazebo reads /gazebo_ros_control/pid_gains; the
+    // plant reads them there first and then under the robot namespace (docs/interfaces.md section 11).
+    std::string pid_ns = "/gazebo_ros_control/pid_gains/" + t.joint;
+    const Param* p = r.description.control.legacy_mode_ns ? r.world->params.find(joinPath(pid_ns, "p")) : nullptr;
+    if (!p)
+    {
+      pid_ns = joinPath(r.control_namespace, "gazebo_ros_control/pid_gains/" + t.joint);
+      p = r.world->params.find(joinPath(pid_ns, "p"));
+    }
     if (iface != JointInterface::Effort && p && p->isNumber())
       h.setPid(readPidGains(r.world->params, pid_ns));
   }
@@ -466,34 +474,51 @@ void createControllerManager(Robot::Internals& r)
   r.controller_manager->setPaused(r.world->paused);
 }
 
-// 9. Sensors, each with its own noise generator seeded from the robot's and the sensor's names.
-void createSensors(Robot::Internals& r)
+// 9. Sensors, each with its own noise generator seeded from the robot's and the sensor's names, in
+// the namespace its plugin publishes in.
+std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescription& s)
 {
   Log& log = r.world->log;
-  for (const SensorDescription& s : r.description.sensors)
+  const uint32_t seed = seedFor(r.name + "/" + s.name);
+  if (s.type == "ray" || s.type == "gpu_ray")
   {
-    const uint32_t seed = seedFor(r.name + "/" + s.name);
-    if (s.type == "ray" || s.type == "gpu_ray")
+    if (s.horizontal_samples < 1 || s.vertical_samples < 1 || s.range_max <= 0)
     {
-      if (s.horizontal_samples < 1 || s.vertical_samples < 1 || s.range_max <= 0)
-      {
-        log.warn("sensor '" + s.name + "' of '" + r.name + "' has no samples or no range; ignored");
-        continue;
-      }
-      r.sensors.emplace_back(new Lidar(s, seed));
+      log.warn("sensor '" + s.name + "' of '" + r.name + "' has no samples or no range; ignored");
+      return nullptr;
     }
-    else if (s.type == "camera" || s.type == "depth")
-    {
-      if (s.image_width < 1 || s.image_height < 1 || !(s.horizontal_fov > 0 && s.horizontal_fov < M_PI))
-      {
-        log.warn("camera '" + s.name + "' of '" + r.name + "' has no image size or a field of view outside (0, pi); ignored");
-        continue;
-      }
-      r.sensors.emplace_back(new Camera(s, seed));
-    }
-    else
-      log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name + "' is not simulated (ray, camera, depth are)");
+    return std::unique_ptr<Sensor>(new Lidar(s, seed));
   }
+  if (s.type == "camera" || s.type == "depth")
+  {
+    if (s.image_width < 1 || s.image_height < 1 || !(s.horizontal_fov > 0 && s.horizontal_fov < M_PI))
+    {
+      log.warn("camera '" + s.name + "' of '" + r.name + "' has no image size or a field of view outside (0, pi); ignored");
+      return nullptr;
+    }
+    return std::unique_ptr<Sensor>(new Camera(s, seed));
+  }
+  if (s.type == "imu")
+  {
+    std::unique_ptr<Imu> imu(new Imu(s, seed));
+    imu->setReference(compose(fromBullet(r.multibody.linkWorldTransform(s.link, r.name)), s.pose).rotation);
+    return std::move(imu);
+  }
+  if (s.type == "p3d")
+    return std::unique_ptr<Sensor>(new GroundTruthOdometry(s, seed));
+  log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name +
+           "' is not simulated (ray, gpu_ray, camera, depth, imu are)");
+  return nullptr;
+}
+
+void createSensors(Robot::Internals& r)
+{
+  for (const SensorDescription& s : r.description.sensors)
+    if (std::unique_ptr<Sensor> sensor = createSensor(r, s))
+    {
+      sensor->setNamespace(r.spawn_namespace, r.name);
+      r.sensors.push_back(std::move(sensor));
+    }
 }
 }  // namespace
 
@@ -518,6 +543,8 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   createSensors(r);
   for (const std::string& w : r.description.warnings)
     r.world->log.warn(r.name + ": " + w);
+  for (const std::string& e : r.description.errors)
+    r.world->log.error(r.name + ": " + e);
   r.last_good.save(r.multibody);
 }
 

@@ -16,6 +16,25 @@ std::string SensorDescription::pluginParam(const std::string& key, const std::st
   return it == plugin.end() || it->second.empty() ? fallback : it->second;
 }
 
+double SensorDescription::pluginNumber(const std::string& key, double fallback) const
+{
+  auto it = plugin.find(key);
+  if (it == plugin.end())
+    return fallback;
+  return xml::numbers(it->second, 1, "<" + key + "> of plugin '" + plugin_name + "' of sensor '" + name + "'")[0];
+}
+
+PluginKind pluginKind(const std::string& filename)
+{
+  static const std::map<std::string, PluginKind> kinds = {
+      {"libgazebo_ros_laser.so", PluginKind::Laser},          {"libgazebo_ros_gpu_laser.so", PluginKind::Laser},
+      {"libgazebo_ros_camera.so", PluginKind::Camera},        {"libgazebo_ros_openni_kinect.so", PluginKind::OpenniKinect},
+      {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
+      {"libgazebo_ros_p3d.so", PluginKind::P3d}};
+  auto it = kinds.find(filename);
+  return it == kinds.end() ? PluginKind::Unknown : it->second;
+}
+
 namespace
 {
 // urdfdom reports why it refused a document through console_bridge; collect those lines so the
@@ -98,9 +117,66 @@ void readControlPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out
   c.robot_param = xml::childText(plugin, "robotParam", "robot_description");
   c.control_period = xml::childDouble(plugin, "controlPeriod", 0.0);
   c.e_stop_topic = xml::childText(plugin, "eStopTopic", "");
-  std::string sim_type = xml::childText(plugin, "robotSimType", "gazebo_ros_control/DefaultRobotHWSim");
-  if (sim_type != "gazebo_ros_control/DefaultRobotHWSim")
-    out.warnings.push_back("robotSimType '" + sim_type + "' is not available; using the default joint layer");
+  c.legacy_mode_ns_given = plugin->FirstChildElement("legacyModeNS") != nullptr;
+  const std::string legacy = xml::childText(plugin, "legacyModeNS", "true");
+  c.legacy_mode_ns = legacy == "true" || legacy == "1";
+  c.sim_type = xml::childText(plugin, "robotSimType", c.sim_type);
+  if (c.sim_type != ControlPluginDescription().sim_type)
+  {
+    // gazebo_ros_control cannot load such a class and leaves the robot without a controller manager.
+    out.errors.push_back("gazebo_ros_control: robotSimType '" + c.sim_type + "' is not available (the plant has "
+                         "only gazebo_ros_control/DefaultRobotHWSim); the robot gets no controller manager. Remove "
+                         "<robotSimType> or set it to gazebo_ros_control/DefaultRobotHWSim");
+    c.present = false;
+  }
+}
+
+void readPluginBlock(const tinyxml2::XMLElement* plugin, SensorDescription& d)
+{
+  d.plugin_name = plugin->Attribute("name") ? plugin->Attribute("name") : "";
+  d.plugin_filename = plugin->Attribute("filename") ? plugin->Attribute("filename") : "";
+  d.plugin_kind = pluginKind(d.plugin_filename);
+  for (auto* p = plugin->FirstChildElement(); p; p = p->NextSiblingElement())
+    d.plugin[p->Name()] = p->GetText() ? xml::trimmed(p->GetText()) : "";
+}
+
+std::string unknownPluginWarning(const std::string& name, const std::string& filename, const std::string& where)
+{
+  return "plugin '" + name + "' (" + filename + ")" + where +
+         " is not simulated by the plant and is ignored (simulated: gazebo_ros_control, gazebo_ros_laser, "
+         "gazebo_ros_gpu_laser, gazebo_ros_camera, gazebo_ros_openni_kinect, gazebo_ros_imu_sensor, gazebo_ros_imu, "
+         "gazebo_ros_p3d)";
+}
+
+// gazebo_ros_imu and gazebo_ros_p3d: model plugins that follow one link (bodyName).
+void readModelPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
+{
+  SensorDescription d;
+  readPluginBlock(plugin, d);
+  d.model_plugin = true;
+  d.name = d.plugin_name.empty() ? d.plugin_filename : d.plugin_name;
+  d.type = d.plugin_kind == PluginKind::P3d ? "p3d" : "imu";
+  d.link = d.pluginParam("bodyName");
+  if (d.link.empty() || !out.model->getLink(d.link))
+  {
+    out.errors.push_back("plugin '" + d.name + "' (" + d.plugin_filename + ") " +
+                         (d.link.empty() ? "has no <bodyName>" : "names bodyName '" + d.link + "', which is no link of the robot") +
+                         "; it publishes nothing. Set <bodyName> to a link of the URDF");
+    return;
+  }
+  const std::string frame = d.pluginParam("frameName", "world");
+  if (d.plugin_kind == PluginKind::P3d && frame != "world" && frame != "/world" && frame != "map" && frame != "/map" &&
+      !out.model->getLink(frame))
+  {
+    out.errors.push_back("gazebo_ros_p3d plugin: frameName: " + frame + " does not exist, will not publish pose");
+    return;
+  }
+  if (d.plugin_kind == PluginKind::P3d && d.pluginParam("topicName").empty())
+  {
+    out.errors.push_back("plugin '" + d.name + "' (libgazebo_ros_p3d.so) has no <topicName>; it publishes nothing");
+    return;
+  }
+  out.sensors.push_back(d);
 }
 
 void readNoise(const tinyxml2::XMLElement* parent, Noise& noise)
@@ -160,12 +236,7 @@ SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& l
     readNoise(cam, d.noise);
   }
   if (auto* plugin = s->FirstChildElement("plugin"))
-  {
-    d.plugin_name = plugin->Attribute("name") ? plugin->Attribute("name") : "";
-    d.plugin_filename = plugin->Attribute("filename") ? plugin->Attribute("filename") : "";
-    for (auto* p = plugin->FirstChildElement(); p; p = p->NextSiblingElement())
-      d.plugin[p->Name()] = p->GetText() ? xml::trimmed(p->GetText()) : "";
-  }
+    readPluginBlock(plugin, d);
   return d;
 }
 
@@ -182,9 +253,14 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
         out.is_static = is_static == "true" || is_static == "1";
       for (auto* p = g->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin"))
       {
-        const char* filename = p->Attribute("filename");
-        if (filename && std::string(filename) == "libgazebo_ros_control.so")
+        const std::string filename = p->Attribute("filename") ? p->Attribute("filename") : "";
+        const PluginKind kind = pluginKind(filename);
+        if (filename == "libgazebo_ros_control.so")
           readControlPlugin(p, out);
+        else if (kind == PluginKind::ImuModel || kind == PluginKind::P3d)
+          readModelPlugin(p, out);
+        else
+          out.warnings.push_back(unknownPluginWarning(p->Attribute("name") ? p->Attribute("name") : "", filename, ""));
       }
       continue;
     }
@@ -204,7 +280,18 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     surface.kp = xml::childDouble(g, "kp", surface.kp);
     surface.kd = xml::childDouble(g, "kd", surface.kd);
     for (auto* s = g->FirstChildElement("sensor"); s; s = s->NextSiblingElement("sensor"))
+    {
       out.sensors.push_back(readSensor(s, link));
+      SensorDescription& d = out.sensors.back();
+      if (d.plugin_kind == PluginKind::Unknown || d.plugin_kind == PluginKind::ImuModel || d.plugin_kind == PluginKind::P3d)
+        out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));
+      if (d.type == "imu" && d.plugin_kind == PluginKind::ImuSensor && !d.hasPluginParam("frameName"))
+      {
+        out.errors.push_back("sensor '" + d.name + "': gazebo_ros_imu_sensor needs <frameName> (\"missing <frameName>, "
+                             "cannot proceed\"); it publishes nothing");
+        d.plugin_kind = PluginKind::None;
+      }
+    }
   }
 }
 

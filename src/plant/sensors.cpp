@@ -14,9 +14,43 @@ Sensor::Sensor(const SensorDescription& d, uint32_t noise_seed) : description_(d
   period_ns_ = d.update_rate > 0 ? static_cast<int64_t>(std::llround(1e9 / d.update_rate)) : 0;
 }
 
+std::string resolveTfFrame(const std::string& prefix, const std::string& frame)
+{
+  if (!frame.empty() && frame[0] == '/')
+    return frame.substr(1);
+  if (prefix.empty())
+    return frame;
+  return (prefix[0] == '/' ? prefix.substr(1) : prefix) + "/" + frame;
+}
+
+// Laser and camera plugins: tf::resolve(tf_prefix, frameName). A camera without <frameName> would
+// get "tf_prefix/" from gazebo_ros_camera, which no tf consumer accepts: the plant uses its link.
 std::string Sensor::frameId() const
 {
-  return description_.pluginParam("frameName", description_.link);
+  return resolveTfFrame(tf_prefix_, description_.pluginParam("frameName", description_.link));
+}
+
+void Sensor::setNamespace(const std::string& spawn_namespace, const std::string& model_name)
+{
+  if (description_.hasPluginParam("robotNamespace"))
+  {
+    namespace_ = description_.plugin.at("robotNamespace");
+    if (namespace_.empty())  // GetRobotNamespace: an empty element means the model's name
+      namespace_ = model_name;
+  }
+  else
+    namespace_ = spawn_namespace.empty() ? defaultNamespace(model_name) : spawn_namespace;
+  tf_prefix_ = namespace_;
+  while (!tf_prefix_.empty() && tf_prefix_.back() == '/')
+    tf_prefix_.pop_back();
+}
+
+std::string Sensor::defaultNamespace(const std::string&) const { return ""; }
+
+bool Sensor::publishesOnRos() const
+{
+  const PluginKind kind = description_.plugin_kind;
+  return kind != PluginKind::None && kind != PluginKind::Unknown;
 }
 
 bool Sensor::due(int64_t time_ns)
@@ -30,7 +64,16 @@ bool Sensor::due(int64_t time_ns)
 
 Lidar::Lidar(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed) {}
 
-Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed) {}
+// gazebo_ros_laser: no <frameName> means "/world".
+std::string Lidar::frameId() const { return resolveTfFrame(tf_prefix_, description_.pluginParam("frameName", "/world")); }
+
+Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
+{
+  // The plugin's <updateRate> throttles what the sensor renders (0: the sensor's rate).
+  const double plugin_rate = d.pluginNumber("updateRate", 0.0);
+  if (plugin_rate > 0)
+    period_ns_ = std::max(period_ns_, static_cast<int64_t>(std::llround(1e9 / plugin_rate)));
+}
 
 namespace
 {
@@ -42,35 +85,37 @@ std::string joinTopic(const std::string& camera, const std::string& topic)
 }
 }  // namespace
 
+// Topics of gazebo_ros_camera and gazebo_ros_openni_kinect: under <cameraName> (default empty),
+// with the defaults of their sources.
 std::string Camera::topic() const
 {
-  return joinTopic(description_.pluginParam("cameraName", name()),
-                   description_.pluginParam("imageTopicName", depthSensor() ? "rgb/image_raw" : "image_raw"));
+  return joinTopic(description_.pluginParam("cameraName"), description_.pluginParam("imageTopicName", "image_raw"));
 }
 
 std::string Camera::cameraInfoTopic() const
 {
-  return joinTopic(description_.pluginParam("cameraName", name()),
-                   description_.pluginParam("cameraInfoTopicName", depthSensor() ? "rgb/camera_info" : "camera_info"));
+  return joinTopic(description_.pluginParam("cameraName"), description_.pluginParam("cameraInfoTopicName", "camera_info"));
 }
 
 std::string Camera::depthTopic() const
 {
-  return joinTopic(description_.pluginParam("cameraName", name()),
+  return joinTopic(description_.pluginParam("cameraName"),
                    description_.pluginParam("depthImageTopicName", "depth/image_raw"));
 }
 
 std::string Camera::depthCameraInfoTopic() const
 {
-  return joinTopic(description_.pluginParam("cameraName", name()),
+  return joinTopic(description_.pluginParam("cameraName"),
                    description_.pluginParam("depthImageCameraInfoTopicName", "depth/camera_info"));
 }
 
 std::string Camera::pointsTopic() const
 {
-  return joinTopic(description_.pluginParam("cameraName", name()),
-                   description_.pluginParam("pointCloudTopicName", "depth/points"));
+  return joinTopic(description_.pluginParam("cameraName"), description_.pluginParam("pointCloudTopicName", "points"));
 }
+
+double Camera::pointCloudCutoff() const { return description_.pluginNumber("pointCloudCutoff", 0.4); }
+double Camera::pointCloudCutoffMax() const { return description_.pluginNumber("pointCloudCutoffMax", 5.0); }
 
 void Camera::intrinsics(double& fx, double& fy, double& cx, double& cy) const
 {

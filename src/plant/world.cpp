@@ -165,6 +165,7 @@ Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const 
   const ControlPluginDescription& control = internals->description.control;
   internals->control_namespace =
       normaliseNamespace(control.robot_namespace.empty() ? robot_namespace : control.robot_namespace);
+  internals->spawn_namespace = robot_namespace;
 
   std::unique_ptr<Robot> robot(new Robot(std::move(internals)));
   Robot::Internals& r = *robot->in_;

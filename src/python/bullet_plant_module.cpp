@@ -237,6 +237,43 @@ PYBIND11_MODULE(bullet_plant, m)
            py::arg("name"), py::arg("on") = true, "sensors work only while enabled (subscribed, in ROS)")
       .def("sensor_updates", [](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); })
       .def("sensor_topic", [](Robot& r, const std::string& name) { return sensorOf(r, name).topic(); })
+      .def("sensor_namespace", [](Robot& r, const std::string& name) { return sensorOf(r, name).rosNamespace(); },
+           "the namespace the sensor's gazebo_ros plugin publishes in")
+      .def("sensor_frame", [](Robot& r, const std::string& name) { return sensorOf(r, name).frameId(); },
+           "the frame id the sensor's plugin publishes (tf_prefix resolved)")
+      .def("imu", [](Robot& r, const std::string& name) -> py::object {
+        auto* imu = dynamic_cast<Imu*>(&sensorOf(r, name));
+        if (!imu)
+          throw py::key_error("sensor '" + name + "' is not an IMU");
+        if (!imu->hasReading())
+          return py::none();
+        const ImuReading& m = imu->latest();
+        py::dict d;
+        d["stamp"] = m.stamp_ns * 1e-9;
+        d["frame_id"] = m.frame_id;
+        d["orientation"] = std::vector<double>{m.orientation.x, m.orientation.y, m.orientation.z, m.orientation.w};
+        d["angular_velocity"] = std::vector<double>{m.angular_velocity.x, m.angular_velocity.y, m.angular_velocity.z};
+        d["linear_acceleration"] =
+            std::vector<double>{m.linear_acceleration.x, m.linear_acceleration.y, m.linear_acceleration.z};
+        return std::move(d);
+      }, "the latest sensor_msgs/Imu fields (x y z w; IMU frame), or None before the first")
+      .def("ground_truth", [](Robot& r, const std::string& name) -> py::object {
+        auto* odometry = dynamic_cast<GroundTruthOdometry*>(&sensorOf(r, name));
+        if (!odometry)
+          throw py::key_error("sensor '" + name + "' is not a gazebo_ros_p3d plugin");
+        if (!odometry->hasReading())
+          return py::none();
+        const GroundTruthReading& m = odometry->latest();
+        py::dict d;
+        d["stamp"] = m.stamp_ns * 1e-9;
+        d["frame_id"] = m.frame_id;
+        d["child_frame_id"] = m.child_frame_id;
+        d["position"] = std::vector<double>{m.pose.position.x, m.pose.position.y, m.pose.position.z};
+        d["orientation"] = std::vector<double>{m.pose.rotation.x, m.pose.rotation.y, m.pose.rotation.z, m.pose.rotation.w};
+        d["linear"] = std::vector<double>{m.linear.x, m.linear.y, m.linear.z};
+        d["angular"] = std::vector<double>{m.angular.x, m.angular.y, m.angular.z};
+        return std::move(d);
+      }, "the latest nav_msgs/Odometry fields of a gazebo_ros_p3d plugin, or None before the first")
       .def("scan", [](Robot& r, const std::string& name) -> py::object {
         auto* lidar = dynamic_cast<Lidar*>(&sensorOf(r, name));
         if (!lidar)

@@ -139,18 +139,49 @@ class RosSystem:
             process.stop()
 
 
-def tianracer_plant(ros, urdf_path, world=None, paused=False):
-    """The plant with the car spawned and the tutorial's YAML loaded (no controllers yet)."""
+def start_plant(ros, world=None, paused=False):
+    """The simulator, as empty_world.launch starts it (no robot yet)."""
     args = ['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=false', 'paused:=%s' % str(paused).lower()]
     if world:
         args.append('world_name:=' + world)
-    plant = ros.start(args, 'plant')
+    return ros.start(args, 'plant')
+
+
+def spawn_urdf(ros, plant, param, model, *options):
+    """spawn_model -urdf -param PARAM -model MODEL [options...], as a launch file's spawn_model node
+    runs it; asserts it succeeded (the plant's log in the message otherwise)."""
+    spawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', param, '-model', model,
+                     *options], timeout=60)
+    assert spawn.returncode == 0, spawn.stdout + spawn.stderr + plant.log()
+
+
+def tianracer_plant(ros, urdf_path, world=None, paused=False):
+    """The plant with the car spawned and the tutorial's YAML loaded (no controllers yet)."""
+    plant = start_plant(ros, world, paused)
     ros.run(['rosparam', 'set', '/robot_description', '--textfile', urdf_path])
     ros.run(['rosparam', 'load', CONFIG_YAML])
-    spawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'robot_description',
-                     '-model', 'tianracer'], timeout=60)
-    assert spawn.returncode == 0, spawn.stdout + spawn.stderr + plant.log()
+    spawn_urdf(ros, plant, 'robot_description', 'tianracer')
     return plant
+
+
+def frames_in(ros, target, topics, timeout=30):
+    """Through a tf2 buffer (tf2_ros, as rviz and navigation use it): one message of each topic, its
+    header's frame id and that frame's origin in `target` at the message's stamp.
+    {topic: {'frame': ..., 'xyz': [x, y, z]}}; a lookup that fails fails the snippet."""
+    return ros.python(f"""
+        import json, rospy, rostopic, tf2_ros
+        rospy.init_node('tf2_probe', anonymous=True)
+        buffer = tf2_ros.Buffer()
+        listener = tf2_ros.TransformListener(buffer)
+        out = {{}}
+        for topic in {list(topics)!r}:
+            cls, name, _ = rostopic.get_topic_class(topic, blocking=True)
+            msg = rospy.wait_for_message(topic, cls, timeout={timeout})
+            t = buffer.lookup_transform({target!r}, msg.header.frame_id, msg.header.stamp, rospy.Duration(10.0))
+            v = t.transform.translation
+            out[topic] = {{'frame': msg.header.frame_id, 'xyz': [v.x, v.y, v.z]}}
+        print(json.dumps(out))
+    """, timeout=timeout * len(topics) + 30)
 
 
 def running_controllers(namespace, count, timeout=60.0):

@@ -1,0 +1,95 @@
+// Sensors that read the motion of a link rather than cast rays: the IMU of gazebo_ros_imu_sensor
+// (inside <sensor type="imu">) and of the model plugin gazebo_ros_imu, and the ground-truth
+// odometry of gazebo_ros_p3d. Each plugin's parameters, defaults and frame rule:
+// docs/interfaces.md section 11.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <urdf_model/pose.h>
+
+#include "bullet_plant/sensors.h"
+
+namespace bullet_plant
+{
+// A link's motion at one instant, in the world frame.
+struct LinkMotion
+{
+  urdf::Pose pose;              // of the sensor frame
+  urdf::Vector3 velocity;       // of the sensor frame's origin
+  urdf::Vector3 angular_velocity;
+};
+
+// sensor_msgs/Imu's fields; the covariances' diagonals are all `variance` (gaussianNoise^2).
+struct ImuReading
+{
+  int64_t stamp_ns = 0;
+  std::string frame_id;
+  urdf::Rotation orientation;
+  urdf::Vector3 angular_velocity;     // rad/s, IMU frame
+  urdf::Vector3 linear_acceleration;  // m/s^2, IMU frame, the reaction to gravity included (+9.8 up at rest)
+  double variance = 0.0;
+};
+
+class Imu : public Sensor
+{
+public:
+  Imu(const SensorDescription& d, uint32_t noise_seed);
+  bool modelPlugin() const { return description_.model_plugin; }
+  std::string topic() const override;
+  // frameName as given (gazebo_ros_imu: default bodyName), without a leading '/' (tf2 refuses it).
+  std::string frameId() const override;
+  void setNamespace(const std::string& spawn_namespace, const std::string& model_name) override;
+  // gazebo_ros_imu_sensor reports the orientation relative to the IMU's orientation at spawn, as
+  // Gazebo's ImuSensor does; gazebo_ros_imu the world orientation.
+  void setReference(const urdf::Rotation& spawn_orientation) { reference_ = spawn_orientation.GetInverse(); }
+  // An update: the accelerometer differentiates the velocity since the previous sample (none
+  // before the first one after a pause in sampling: then only gravity's reaction).
+  void sample(const LinkMotion& motion, const urdf::Vector3& gravity, int64_t time_ns);
+  bool hasReading() const { return samples_ > 0; }
+  const ImuReading& latest() const { return reading_; }
+
+private:
+  double noise();
+  urdf::Rotation reference_, offset_;
+  double stddev_ = 0.0;
+  ImuReading reading_;
+  uint64_t samples_ = 0;
+  int64_t last_sample_ns_ = -1;
+  urdf::Vector3 last_velocity_;
+};
+
+// nav_msgs/Odometry of gazebo_ros_p3d: the pose and world-frame twist of bodyName, relative to
+// the link frameName unless that is world or map.
+struct GroundTruthReading
+{
+  int64_t stamp_ns = 0;
+  std::string frame_id, child_frame_id;
+  urdf::Pose pose;
+  urdf::Vector3 linear, angular;
+  double variance = 0.0;
+};
+
+class GroundTruthOdometry : public Sensor
+{
+public:
+  GroundTruthOdometry(const SensorDescription& d, uint32_t noise_seed);
+  std::string topic() const override { return description_.pluginParam("topicName"); }
+  // tf::resolve(tf_prefix parameter (default empty), frameName (default "world")).
+  std::string frameId() const override;
+  void setNamespace(const std::string& spawn_namespace, const std::string& model_name) override;
+  // The link poses are relative to; empty for the world.
+  std::string referenceLink() const;
+  void sample(const LinkMotion& body, const LinkMotion* reference, int64_t time_ns);
+  bool hasReading() const { return samples_ > 0; }
+  const GroundTruthReading& latest() const { return reading_; }
+
+private:
+  urdf::Pose offset_;
+  double stddev_ = 0.0;
+  GroundTruthReading reading_;
+  uint64_t samples_ = 0;
+};
+
+}  // namespace bullet_plant

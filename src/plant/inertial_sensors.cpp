@@ -1,0 +1,175 @@
+// The IMU (gazebo_ros_imu_sensor, gazebo_ros_imu) and ground-truth odometry (gazebo_ros_p3d) models.
+#include "bullet_plant/inertial_sensors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "bullet_plant/geometry.h"
+#include "xml_util.h"
+
+namespace bullet_plant
+{
+namespace
+{
+int64_t periodOfRate(double rate_hz) { return rate_hz > 0 ? static_cast<int64_t>(std::llround(1e9 / rate_hz)) : 0; }
+
+urdf::Vector3 sub(const urdf::Vector3& a, const urdf::Vector3& b) { return urdf::Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
+
+urdf::Vector3 scaled(const urdf::Vector3& a, double s) { return urdf::Vector3(a.x * s, a.y * s, a.z * s); }
+
+// "x y z" of an offset element; zeros when absent.
+urdf::Vector3 vectorParam(const SensorDescription& d, const std::string& key)
+{
+  const std::string text = d.pluginParam(key);
+  if (text.empty())
+    return urdf::Vector3();
+  const std::vector<double> xyz = xml::numbers(text, 3, "<" + key + "> of plugin '" + d.plugin_name + "'");
+  return urdf::Vector3(xyz[0], xyz[1], xyz[2]);
+}
+
+urdf::Rotation rpyParam(const SensorDescription& d, const std::string& key)
+{
+  const urdf::Vector3 rpy = vectorParam(d, key);
+  return poseFromXyzRpy(0, 0, 0, rpy.x, rpy.y, rpy.z).rotation;
+}
+
+// Model plugins (and gazebo_ros_imu_sensor) take "<robotNamespace>/" as their namespace, so an
+// empty element means the root, not the model's name as for laser and camera plugins.
+std::string namespaceOfModelPlugin(const SensorDescription& d, const std::string& spawn_namespace,
+                                   const std::string& fallback)
+{
+  if (d.hasPluginParam("robotNamespace"))
+    return d.plugin.at("robotNamespace").empty() ? "/" : d.plugin.at("robotNamespace");
+  return spawn_namespace.empty() ? fallback : spawn_namespace;
+}
+
+std::string withoutLeadingSlash(const std::string& name) { return !name.empty() && name[0] == '/' ? name.substr(1) : name; }
+}  // namespace
+
+// ------------------------------------------------------------------------------------------ Imu
+
+Imu::Imu(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
+{
+  stddev_ = std::abs(d.pluginNumber("gaussianNoise", 0.0));
+  offset_ = rpyParam(d, "rpyOffset");
+  if (d.model_plugin)  // gazebo_ros_imu: <updateRate>, 0 = every step (updateRateHZ accepted too)
+    period_ns_ = periodOfRate(d.pluginNumber("updateRate", d.pluginNumber("updateRateHZ", 0.0)));
+  else  // gazebo_ros_imu_sensor: <updateRateHZ>, default 1 Hz, within the sensor's <update_rate>
+    period_ns_ = std::max(period_ns_, periodOfRate(d.pluginNumber("updateRateHZ", 1.0)));
+}
+
+std::string Imu::topic() const
+{
+  if (modelPlugin())
+    return description_.pluginParam("topicName", "/default_imu");
+  // gazebo_ros_imu_sensor appends topicName to "<namespace>/": never absolute on its own.
+  return withoutLeadingSlash(description_.pluginParam("topicName", "imu_data"));
+}
+
+std::string Imu::frameId() const
+{
+  return withoutLeadingSlash(description_.pluginParam("frameName", modelPlugin() ? description_.link : ""));
+}
+
+void Imu::setNamespace(const std::string& spawn_namespace, const std::string& model_name)
+{
+  // gazebo_ros_imu_sensor without any namespace: "/<model name>/"; gazebo_ros_imu: the root.
+  namespace_ = namespaceOfModelPlugin(description_, spawn_namespace, modelPlugin() ? "" : "/" + model_name);
+  tf_prefix_.clear();  // neither plugin resolves its frame against a tf_prefix
+}
+
+double Imu::noise()
+{
+  if (stddev_ <= 0)
+    return 0.0;
+  return std::normal_distribution<double>(0.0, stddev_)(noise_);
+}
+
+void Imu::sample(const LinkMotion& motion, const urdf::Vector3& gravity, int64_t time_ns)
+{
+  const urdf::Rotation world_to_imu = motion.pose.rotation.GetInverse();
+  // Finite difference of the velocity, as Gazebo's ImuSensor, over consecutive samples only.
+  const int64_t gap = time_ns - last_sample_ns_;
+  const bool consecutive = last_sample_ns_ >= 0 && gap > 0 && gap <= period_ns_ + std::max<int64_t>(period_ns_ / 2, 2000000);
+  urdf::Vector3 acceleration = consecutive ? scaled(sub(motion.velocity, last_velocity_), 1e9 / double(gap)) : urdf::Vector3();
+  acceleration = rotate(world_to_imu, sub(acceleration, gravity));
+  const urdf::Vector3 rate = rotate(world_to_imu, motion.angular_velocity);
+  last_velocity_ = motion.velocity;
+  last_sample_ns_ = time_ns;
+
+  ImuReading& r = reading_;
+  r.stamp_ns = time_ns;
+  r.frame_id = frameId();
+  r.orientation = modelPlugin() ? offset_ * motion.pose.rotation : offset_ * (reference_ * motion.pose.rotation);
+  r.orientation.normalize();
+  if (!modelPlugin())  // gazebo_ros_imu_sensor adds its noise to the quaternion's components too
+  {
+    r.orientation.x += noise();
+    r.orientation.y += noise();
+    r.orientation.z += noise();
+    r.orientation.w += noise();
+  }
+  r.angular_velocity = urdf::Vector3(rate.x + noise(), rate.y + noise(), rate.z + noise());
+  r.linear_acceleration = urdf::Vector3(acceleration.x + noise(), acceleration.y + noise(), acceleration.z + noise());
+  r.variance = stddev_ * stddev_;
+  ++samples_;
+}
+
+// -------------------------------------------------------------------------- GroundTruthOdometry
+
+GroundTruthOdometry::GroundTruthOdometry(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
+{
+  stddev_ = std::abs(d.pluginNumber("gaussianNoise", 0.0));
+  offset_.position = vectorParam(d, "xyzOffset");
+  offset_.rotation = rpyParam(d, "rpyOffset");
+  period_ns_ = periodOfRate(d.pluginNumber("updateRate", 0.0));
+}
+
+std::string GroundTruthOdometry::frameId() const
+{
+  return resolveTfFrame(tf_prefix_, description_.pluginParam("frameName", "world"));
+}
+
+void GroundTruthOdometry::setNamespace(const std::string& spawn_namespace, const std::string& model_name)
+{
+  (void)model_name;
+  namespace_ = namespaceOfModelPlugin(description_, spawn_namespace, "");
+  tf_prefix_.clear();  // only a tf_prefix parameter (read by the node) prefixes the frame
+}
+
+std::string GroundTruthOdometry::referenceLink() const
+{
+  const std::string frame = description_.pluginParam("frameName", "world");
+  return frame == "world" || frame == "/world" || frame == "map" || frame == "/map" ? "" : frame;
+}
+
+void GroundTruthOdometry::sample(const LinkMotion& body, const LinkMotion* reference, int64_t time_ns)
+{
+  GroundTruthReading& r = reading_;
+  urdf::Pose pose = body.pose;
+  urdf::Vector3 v = body.velocity, w = body.angular_velocity;
+  if (reference)
+  {
+    // As gazebo_ros_p3d: the position in the reference frame, the rates rotated by its orientation.
+    pose.position = rotate(reference->pose.rotation.GetInverse(), sub(pose.position, reference->pose.position));
+    pose.rotation = pose.rotation * reference->pose.rotation.GetInverse();
+    v = rotate(reference->pose.rotation, sub(v, reference->velocity));
+    w = rotate(reference->pose.rotation, sub(w, reference->angular_velocity));
+  }
+  pose.position = urdf::Vector3(pose.position.x + offset_.position.x, pose.position.y + offset_.position.y,
+                                pose.position.z + offset_.position.z);
+  pose.rotation = offset_.rotation * pose.rotation;
+  pose.rotation.normalize();
+  auto noisy = [this](double x) { return stddev_ > 0 ? x + std::normal_distribution<double>(0.0, stddev_)(noise_) : x; };
+  r.stamp_ns = time_ns;
+  r.frame_id = frameId();
+  r.child_frame_id = description_.link;  // bodyName, as given
+  r.pose = pose;
+  r.linear = urdf::Vector3(noisy(v.x), noisy(v.y), noisy(v.z));
+  r.angular = urdf::Vector3(noisy(w.x), noisy(w.y), noisy(w.z));
+  r.variance = stddev_ * stddev_;
+  ++samples_;
+}
+
+}  // namespace bullet_plant

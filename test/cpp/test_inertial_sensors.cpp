@@ -1,0 +1,166 @@
+// inertial_sensors.cpp: the IMU and gazebo_ros_p3d models, and the plugins' namespace and frame
+// rules (sensors.cpp's resolveTfFrame, the parameters read by robot_description.cpp).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "bullet_plant/geometry.h"
+#include "bullet_plant/inertial_sensors.h"
+#include "bullet_plant/robot_description.h"
+
+using namespace bullet_plant;
+
+namespace
+{
+const urdf::Vector3 kGravity(0, 0, -9.8);
+
+SensorDescription imuSensor(std::map<std::string, std::string> plugin, bool model_plugin = false)
+{
+  SensorDescription d;
+  d.name = "imu";
+  d.type = "imu";
+  d.link = "imu_link";
+  d.model_plugin = model_plugin;
+  d.plugin_kind = model_plugin ? PluginKind::ImuModel : PluginKind::ImuSensor;
+  d.plugin = std::move(plugin);
+  return d;
+}
+
+LinkMotion at(const urdf::Pose& pose, urdf::Vector3 velocity = urdf::Vector3(), urdf::Vector3 omega = urdf::Vector3())
+{
+  LinkMotion m;
+  m.pose = pose;
+  m.velocity = velocity;
+  m.angular_velocity = omega;
+  return m;
+}
+}  // namespace
+
+TEST(ResolveTfFrame, AsTfResolve)
+{
+  EXPECT_EQ(resolveTfFrame("", "camera"), "camera");
+  EXPECT_EQ(resolveTfFrame("tianracer_01", "camera"), "tianracer_01/camera");
+  EXPECT_EQ(resolveTfFrame("/tianracer_01", "camera"), "tianracer_01/camera");
+  EXPECT_EQ(resolveTfFrame("tianracer_01", "/tianracer_01/base_footprint"), "tianracer_01/base_footprint");
+  EXPECT_EQ(resolveTfFrame("", "/world"), "world");
+}
+
+TEST(Imu, AtRestReadsTheReactionToGravityInItsOwnFrame)
+{
+  Imu imu(imuSensor({{"frameName", "imu_link"}, {"updateRateHZ", "100"}}), 1);
+  imu.sample(at(urdf::Pose()), kGravity, 0);
+  imu.sample(at(urdf::Pose()), kGravity, 10000000);
+  EXPECT_NEAR(imu.latest().linear_acceleration.z, 9.8, 1e-12);
+  EXPECT_NEAR(imu.latest().linear_acceleration.x, 0.0, 1e-12);
+  // Rolled 90 degrees about x, the IMU's y axis points up: the reaction reads along +y.
+  Imu rolled(imuSensor({{"frameName", "imu_link"}}), 1);
+  rolled.sample(at(poseFromXyzRpy(0, 0, 0, M_PI / 2, 0, 0)), kGravity, 0);
+  EXPECT_NEAR(rolled.latest().linear_acceleration.y, 9.8, 1e-9);
+  EXPECT_NEAR(rolled.latest().linear_acceleration.z, 0.0, 1e-9);
+}
+
+TEST(Imu, DifferentiatesVelocityBetweenConsecutiveSamplesOnly)
+{
+  Imu imu(imuSensor({{"frameName", "imu_link"}, {"updateRateHZ", "100"}}), 1);
+  imu.sample(at(urdf::Pose(), urdf::Vector3(1.0, 0, 0)), kGravity, 0);
+  EXPECT_NEAR(imu.latest().linear_acceleration.x, 0.0, 1e-12) << "no previous sample: gravity only";
+  imu.sample(at(urdf::Pose(), urdf::Vector3(1.02, 0, 0)), kGravity, 10000000);
+  EXPECT_NEAR(imu.latest().linear_acceleration.x, 2.0, 1e-9);
+  imu.sample(at(urdf::Pose(), urdf::Vector3(5.0, 0, 0)), kGravity, 1000000000);
+  EXPECT_NEAR(imu.latest().linear_acceleration.x, 0.0, 1e-12) << "after a pause in sampling: a fresh start";
+}
+
+TEST(Imu, RatesInTheImuFrameAndOrientationRelativeToSpawn)
+{
+  Imu imu(imuSensor({{"frameName", "/car1/imu_link"}}), 1);
+  const urdf::Pose spawn = poseFromXyzRpy(0, 0, 0, 0, 0, 0.3);
+  imu.setReference(spawn.rotation);
+  imu.sample(at(poseFromXyzRpy(0, 0, 0, 0, 0, 0.8), urdf::Vector3(), urdf::Vector3(0, 0, 1.5)), kGravity, 0);
+  const ImuReading& r = imu.latest();
+  EXPECT_NEAR(r.angular_velocity.z, 1.5, 1e-12);
+  EXPECT_NEAR(2 * std::atan2(r.orientation.z, r.orientation.w), 0.5, 1e-9) << "gazebo_ros_imu_sensor: since spawn";
+  EXPECT_EQ(r.frame_id, "car1/imu_link") << "frameName verbatim but for the leading '/'";
+
+  Imu model(imuSensor({{"bodyName", "imu_link"}}, true), 1);
+  model.sample(at(poseFromXyzRpy(0, 0, 0, 0, 0, 0.8)), kGravity, 0);
+  EXPECT_NEAR(2 * std::atan2(model.latest().orientation.z, model.latest().orientation.w), 0.8, 1e-9) << "gazebo_ros_imu: world";
+  EXPECT_EQ(model.latest().frame_id, "imu_link") << "frameName defaults to bodyName";
+}
+
+TEST(Imu, NoiseIsSeededAndHasTheGivenSpread)
+{
+  auto run = [](uint32_t seed) {
+    Imu imu(imuSensor({{"frameName", "f"}, {"gaussianNoise", "0.1"}}), seed);
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < 2000; ++i)
+    {
+      imu.sample(at(urdf::Pose()), kGravity, int64_t(i) * 1000000000);
+      const double e = imu.latest().angular_velocity.x;
+      sum += e;
+      sum2 += e * e;
+    }
+    return std::make_pair(sum / 2000, std::sqrt(sum2 / 2000));
+  };
+  EXPECT_EQ(run(7), run(7));
+  EXPECT_NEAR(run(7).first, 0.0, 0.01);
+  EXPECT_NEAR(run(7).second, 0.1, 0.01);
+}
+
+TEST(Imu, NamespacesAsTheirPluginsTakeThem)
+{
+  Imu sensor_plugin(imuSensor({{"frameName", "f"}, {"topicName", "/imu"}}), 1);
+  sensor_plugin.setNamespace("", "tianracer");
+  EXPECT_EQ(sensor_plugin.rosNamespace(), "/tianracer") << "gazebo_ros_imu_sensor without a namespace: the model's";
+  EXPECT_EQ(sensor_plugin.topic(), "imu") << "appended to the namespace";
+  sensor_plugin.setNamespace("/car1", "tianracer");
+  EXPECT_EQ(sensor_plugin.rosNamespace(), "/car1");
+  Imu model_plugin(imuSensor({{"bodyName", "imu_link"}}, true), 1);
+  model_plugin.setNamespace("", "tianracer");
+  EXPECT_EQ(model_plugin.rosNamespace(), "");
+  EXPECT_EQ(model_plugin.topic(), "/default_imu");
+}
+
+TEST(GroundTruthOdometry, PoseAndWorldTwistOfItsBodyInTheResolvedFrame)
+{
+  SensorDescription d;
+  d.name = "p3d";
+  d.type = "p3d";
+  d.link = "base_footprint";
+  d.model_plugin = true;
+  d.plugin_kind = PluginKind::P3d;
+  d.plugin = {{"bodyName", "base_footprint"}, {"topicName", "ground_truth"}, {"updateRate", "50"}};
+  GroundTruthOdometry p3d(d, 1);
+  p3d.setNamespace("/car1", "car1");
+  EXPECT_EQ(p3d.periodNs(), 20000000);
+  EXPECT_EQ(p3d.frameId(), "world") << "no tf_prefix parameter: the frame as given";
+  p3d.setTfPrefix("car1");
+  EXPECT_EQ(p3d.frameId(), "car1/world");
+  p3d.sample(at(poseFromXyzRpy(1, 2, 0, 0, 0, 0.5), urdf::Vector3(0.3, 0.4, 0), urdf::Vector3(0, 0, 0.7)), nullptr, 5);
+  const GroundTruthReading& r = p3d.latest();
+  EXPECT_EQ(r.child_frame_id, "base_footprint");
+  EXPECT_DOUBLE_EQ(r.pose.position.y, 2.0);
+  EXPECT_DOUBLE_EQ(r.linear.y, 0.4) << "world frame, as gazebo_ros_p3d";
+  EXPECT_DOUBLE_EQ(r.angular.z, 0.7);
+}
+
+TEST(RobotDescriptionPlugins, ModelPluginsUnknownPluginsAndRobotSimType)
+{
+  const std::string urdf =
+      "<robot name=\"r\"><link name=\"base\"/>"
+      "<gazebo><plugin name=\"truth\" filename=\"libgazebo_ros_p3d.so\"><bodyName>base</bodyName>"
+      "<topicName>odom_truth</topicName></plugin>"
+      "<plugin name=\"drive\" filename=\"libgazebo_ros_diff_drive.so\"/>"
+      "<plugin name=\"gazebo_ros_control\" filename=\"libgazebo_ros_control.so\"><robotSimType>my/Hw</robotSimType>"
+      "</plugin></gazebo></robot>";
+  RobotDescription d = parseRobotDescription(urdf);
+  ASSERT_EQ(d.sensors.size(), 1u);
+  EXPECT_EQ(d.sensors[0].type, "p3d");
+  EXPECT_EQ(d.sensors[0].link, "base");
+  ASSERT_EQ(d.warnings.size(), 1u);
+  EXPECT_NE(d.warnings[0].find("'drive' (libgazebo_ros_diff_drive.so)"), std::string::npos) << d.warnings[0];
+  ASSERT_EQ(d.errors.size(), 1u);
+  EXPECT_NE(d.errors[0].find("robotSimType 'my/Hw'"), std::string::npos);
+  EXPECT_FALSE(d.control.present) << "no controller manager, as when gazebo_ros_control cannot load the class";
+  EXPECT_TRUE(d.control.legacy_mode_ns) << "legacyModeNS defaults to true";
+}
