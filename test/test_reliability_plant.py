@@ -104,3 +104,54 @@ def test_a_non_finite_pid_gain_fails_the_controllers_load_naming_it(urdf_xml, co
     assert manager.load('front_left_steering_position_controller') is False
     logged = [t for level, t in world.messages() if level == 'ERROR']
     assert any("PID gain 'd' of /tianracer/front_left_steering_position_controller/pid" in t for t in logged), logged
+
+
+def with_max_correcting_vel(sdf, speed):
+    return sdf.replace('</physics>', '<ode><constraints><contact_max_correcting_vel>%s</contact_max_correcting_vel>'
+                                     '</constraints></ode></physics>' % speed)
+
+
+def fastest_in(world, robot, steps):
+    speeds = []
+    for _ in range(steps):
+        world.step(1)
+        speeds.append(np.linalg.norm(robot.base_twist()[0]))
+    return max(speeds)
+
+
+def test_a_robot_spawned_inside_a_box_is_said_and_pushed_out_no_faster_than_contact_max_correcting_vel(urdf_xml):
+    from plant_helpers import sdf_world, box_model
+    crate = sdf_world(box_model('crate', (4, 4, 2), (0, 0, 1)))
+    world = bullet_plant.World.from_sdf(crate)
+    world.echo = False
+    car = world.spawn(urdf_xml, 'car', pose=(0, 0, 1, 0, 0, 0))
+    deep = [text for level, text in world.messages() if 'deep inside' in text]
+    assert len(deep) == 1 and deep[0].startswith("robot 'car' starts "), deep
+    assert re.search(r"starts [\d.]+ m deep inside 'crate::link::collision' \(its link '\w+'\).* 100 m/s", deep[0])
+    # Uncapped, this start reaches 197 m/s; Gazebo's default cap holds it near 100 m/s.
+    assert fastest_in(world, car, 300) < 110
+    slow = bullet_plant.World.from_sdf(with_max_correcting_vel(crate, 2))
+    slow.echo = False
+    assert fastest_in(slow, slow.spawn(urdf_xml, 'car', pose=(0, 0, 1, 0, 0, 0)), 300) < 3
+    with pytest.raises(bullet_plant.DescriptionError, match=r'contact_max_correcting_vel> -1 must be a finite speed'):
+        bullet_plant.World.from_sdf(with_max_correcting_vel(crate, -1))
+
+
+def test_a_robot_spawned_clear_of_everything_is_not_said_to_be_inside(urdf_xml):
+    world = bullet_plant.World()
+    world.echo = False
+    world.spawn(urdf_xml, 'car')
+    assert not [text for level, text in world.messages() if 'deep inside' in text]
+
+
+def test_a_gravity_beyond_100_g_is_refused_naming_it(urdf_xml):
+    from plant_helpers import sdf_world
+    def with_gravity(g):
+        return sdf_world().replace('</physics>', '</physics><gravity>%s</gravity>' % g)
+    with pytest.raises(bullet_plant.DescriptionError, match=r'<gravity> 0 0 -1e30 is 1e\+30 m/s\^2; the plant takes at most 1000'):
+        bullet_plant.World.from_sdf(with_gravity('0 0 -1e30'))
+    world = bullet_plant.World.from_sdf(with_gravity('0 0 -1000'))
+    world.echo = False
+    car = world.spawn(urdf_xml, 'car')
+    world.step(1000)
+    assert car.recoveries == 0 and car.base_pose()[2] == pytest.approx(0, abs=0.01), 'the car stands at 100 g'

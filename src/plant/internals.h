@@ -78,10 +78,13 @@ struct World::Internals
   std::unique_ptr<btMultiBodyDynamicsWorld> dynamics;
   std::vector<std::unique_ptr<btCollisionShape>> static_shapes;
   std::vector<std::unique_ptr<btCollisionObject>> static_objects;
+  std::vector<std::string> static_names;  // of static_objects, model::link::collision
   std::vector<RayPrimitive> static_ray_shapes;
 
   std::vector<std::unique_ptr<Robot>> robots;
 
+  // "robot::link" or the static collision's name, for messages.
+  std::string nameOf(const btCollisionObject* object) const;
   // Everything sensors can see, in the world frame: the static scene and every robot's shapes.
   std::vector<RayPrimitive> rayScene() const;
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
@@ -40,7 +41,65 @@ btScalar smallerFriction(const btCollisionObject* a, const btCollisionObject* b)
 {
   return std::min(a->getFriction(), b->getFriction());
 }
+// How deep a link may start inside another body before the spawn warns: resting contacts are
+// well under a millimetre deep.
+constexpr btScalar kDeepAtSpawn = 0.01;  // m
+
+// The deepest contact between a robot's links and the rest of the world, by Bullet's contact test.
+struct DeepestContact : btCollisionWorld::ContactResultCallback
+{
+  const btMultiBody* own = nullptr;
+  const btCollisionObject* link = nullptr;
+  const btCollisionObject* other = nullptr;
+  btScalar depth = 0;
+
+  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                           const btCollisionObjectWrapper* b, int, int) override
+  {
+    const btCollisionObject* other_object = b->getCollisionObject();
+    const auto* collider = btMultiBodyLinkCollider::upcast(other_object);
+    if (collider && collider->m_multiBody == own)
+      return 0;  // a link touching its own robot
+    if (-point.getDistance() > depth)
+    {
+      depth = -point.getDistance();
+      link = a->getCollisionObject();
+      other = other_object;
+    }
+    return 0;
+  }
+};
+
+// Warns once when a robot starts deep inside something: the contacts then push it out at up to
+// contact_max_correcting_vel (DenseRowSolver), which a user should hear about.
+void warnIfSpawnedInside(World::Internals& w, Robot::Internals& r)
+{
+  DeepestContact deepest;
+  deepest.own = r.multibody.bullet.get();
+  for (auto& collider : r.multibody.colliders)
+    w.dynamics->contactTest(collider.get(), deepest);
+  if (deepest.depth <= kDeepAtSpawn)
+    return;
+  std::ostringstream text;
+  text << "robot '" << r.name << "' starts " << deepest.depth << " m deep inside '" << w.nameOf(deepest.other)
+       << "' (its link '" << r.multibody.bodies[size_t(btMultiBodyLinkCollider::upcast(deepest.link)->m_link + 1)].link
+       << "'): the contact pushes it out at up to " << w.description.contact_max_correcting_vel
+       << " m/s (Gazebo's contact_max_correcting_vel); spawn it clear of other bodies";
+  w.log.warn(text.str());
+}
 }  // namespace
+
+std::string World::Internals::nameOf(const btCollisionObject* object) const
+{
+  for (size_t i = 0; i < static_objects.size(); ++i)
+    if (static_objects[i].get() == object)
+      return static_names[i];
+  if (const auto* collider = btMultiBodyLinkCollider::upcast(object))
+    for (const auto& robot : robots)
+      if (internalsOf(*robot).multibody.bullet.get() == collider->m_multiBody)
+        return robot->name() + "::" + internalsOf(*robot).multibody.bodies[size_t(collider->m_link + 1)].link;
+  return "?";
+}
 
 World::World(const WorldDescription& description) : in_(new Internals)
 {
@@ -58,6 +117,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
   registerWheelContact(*w.dispatcher);
   w.broadphase.reset(new btDbvtBroadphase());
   auto* solver = new DenseRowSolver();
+  solver->setMaxCorrectingVelocity(btScalar(description.contact_max_correcting_vel));
   w.solver.reset(solver);
   w.dynamics.reset(new DynamicsWorld(w.dispatcher.get(), w.broadphase.get(), solver, w.collision_config.get()));
   const urdf::Vector3& g = description.gravity;
@@ -85,6 +145,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
     }
     w.static_shapes.push_back(std::move(collider.shape));
     w.static_objects.emplace_back(new btCollisionObject());
+    w.static_names.push_back(c.name);
     btCollisionObject* object = w.static_objects.back().get();
     object->setCollisionShape(w.static_shapes.back().get());
     object->setWorldTransform(toBullet(c.pose));
@@ -153,6 +214,7 @@ Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const 
     removeRobot(r);  // takes back whatever was added to the dynamics world
     throw;
   }
+  warnIfSpawnedInside(*in_, r);
   in_->robots.push_back(std::move(robot));
   return *in_->robots.back();
 }
