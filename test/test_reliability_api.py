@@ -83,3 +83,22 @@ def test_a_handle_keeps_its_world(urdf_xml):
     gc.collect()
     car.base_pose()
     assert not car.removed
+
+
+def test_load_params_refuses_a_dict_that_contains_itself_or_nests_too_deep():
+    world = bullet_plant.World()
+    looped = {'tianracer': {'gains': {}}}
+    looped['tianracer']['gains']['again'] = looped['tianracer']
+    with pytest.raises(ValueError, match=r"parameter '/tianracer/gains/again' contains itself"):
+        world.load_params(looped)
+    listed = [1]
+    listed.append(listed)
+    with pytest.raises(ValueError, match=r"parameter '/x' contains itself"):
+        world.load_params({'x': listed})
+    deep = {}
+    for _ in range(100000):
+        deep = {'a': deep}
+    with pytest.raises(ValueError, match='nested deeper than 100 levels'):
+        world.load_params(deep)
+    world.load_params({'tianracer': {'p': 1.0, 'shared': [1, 2], 'again': [1, 2]}})
+    assert world.get_param('/tianracer/p') == 1.0

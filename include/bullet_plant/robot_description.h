@@ -90,8 +90,12 @@ struct RobotDescription
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)
 };
 
-// Parses URDF text. Throws DescriptionError with the parser's message for malformed input.
-// `base_dir`: the directory of the URDF file it came from, if any.
+// The heaviest link the plant takes, kg: heavier, its contacts (single precision) lose it.
+constexpr double kMaxLinkMass = 1e6;
+
+// Parses URDF text. Throws DescriptionError with the parser's message for malformed input, for
+// what urdfdom reported and left out (a mass of nan), and for a negative or too large mass or a
+// negative moment of inertia. `base_dir`: the directory of the URDF file it came from, if any.
 RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::string& base_dir = "");
 
 }  // namespace bullet_plant

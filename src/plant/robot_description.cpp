@@ -1,6 +1,7 @@
 #include "bullet_plant/robot_description.h"
 
 #include <mutex>
+#include <sstream>
 
 #include <console_bridge/console.h>
 #include <tinyxml2.h>
@@ -18,20 +19,33 @@ std::string SensorDescription::pluginParam(const std::string& key, const std::st
 
 namespace
 {
-// urdfdom reports why it refused a document through console_bridge; collect those lines so the
-// error we raise carries the parser's own message.
+// urdfdom reports why it refused a document, or what it left out of one it still accepted (an
+// <inertial> with a mass of nan: the link then has none), through console_bridge; collect those
+// lines so that our errors and warnings carry the parser's own message.
 class CollectingOutputHandler : public console_bridge::OutputHandler
 {
 public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override
   {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN)
-      lines.push_back(text);
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR)
+      errors.push_back(text);
+    else if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN)
+      warnings.push_back(text);
   }
-  std::vector<std::string> lines;
+  std::vector<std::string> errors, warnings;
 };
 
-urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdf_xml)
+std::string joined(const std::vector<std::string>& lines)
+{
+  std::string out;
+  for (const std::string& line : lines)
+    out += (out.empty() ? "" : "; ") + line;
+  return out;
+}
+
+// Refuses a URDF urdfdom could not read in full: what it skipped (an <inertial>, a <collision>)
+// would silently change the robot.
+urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdf_xml, std::vector<std::string>& warnings)
 {
   static std::mutex console_mutex;  // console_bridge's output handler is process-wide
   std::lock_guard<std::mutex> lock(console_mutex);
@@ -40,13 +54,41 @@ urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdf_xml)
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
   console_bridge::restorePreviousOutputHandler();
   if (!model)
-  {
-    std::string reason = handler.lines.empty() ? "no reason given" : handler.lines.front();
-    for (size_t i = 1; i < handler.lines.size(); ++i)
-      reason += "; " + handler.lines[i];
-    throw DescriptionError("URDF parser: " + reason);
-  }
+    throw DescriptionError("URDF parser: " +
+                           (handler.errors.empty() && handler.warnings.empty() ? std::string("no reason given")
+                                                                               : joined(handler.errors.empty() ? handler.warnings : handler.errors)));
+  if (!handler.errors.empty())
+    throw DescriptionError("URDF parser: " + joined(handler.errors) +
+                           " (urdfdom went on without what it could not read; fix the URDF)");
+  for (const std::string& line : handler.warnings)
+    warnings.push_back("URDF parser: " + line);
   return model;
+}
+
+// What urdfdom accepts but no physics can use: a negative mass or moment of inertia, and a mass
+// so large that single-precision contacts lose it (1/m below Bullet's epsilon: it falls through
+// the floor).
+void checkInertials(const urdf::ModelInterface& model)
+{
+  for (const auto& kv : model.links_)
+  {
+    const urdf::InertialSharedPtr& inertial = kv.second->inertial;
+    if (!inertial)
+      continue;
+    std::ostringstream text;
+    text << "link '" << kv.first << "': ";
+    if (inertial->mass < 0)
+      text << "<mass value=\"" << inertial->mass << "\"/> is negative";
+    else if (inertial->mass > kMaxLinkMass)
+      text << "<mass value=\"" << inertial->mass << "\"/> is more than the plant can hold on its contacts ("
+           << kMaxLinkMass << " kg)";
+    else if (inertial->ixx < 0 || inertial->iyy < 0 || inertial->izz < 0)
+      text << "<inertia ixx=\"" << inertial->ixx << "\" iyy=\"" << inertial->iyy << "\" izz=\"" << inertial->izz
+           << "\"/> has a negative moment";
+    else
+      continue;
+    throw DescriptionError(text.str());
+  }
 }
 
 std::string normaliseInterface(const std::string& text, std::vector<std::string>& warnings)
@@ -221,7 +263,8 @@ RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::s
 
   RobotDescription out;
   out.base_dir = base_dir;
-  out.model = parseWithUrdfdom(urdf_xml);
+  out.model = parseWithUrdfdom(urdf_xml, out.warnings);
+  checkInertials(*out.model);
   readTransmissions(robot, out);
   readGazeboExtensions(robot, out);
   return out;

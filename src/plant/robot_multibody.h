@@ -37,7 +37,7 @@ struct Body
   Body& operator=(Body&&) noexcept = default;
 
   std::string link;              // the URDF link that owns the body
-  int parent = -2;               // index of the parent body (-1: the base); -2 for the base itself
+  int parent = -2;               // index of the parent body in RobotMultibody::bodies; -2 for the base itself
   double mass = 0.0;
   btVector3 inertia_diagonal{0, 0, 0};
   btTransform urdf_from_com = btTransform::getIdentity();

@@ -7,6 +7,7 @@
 
 #include <tinyxml2.h>
 
+#include "bullet_plant/log.h"
 #include "bullet_plant/robot_description.h"
 #include "resource_uri.h"
 #include "xml_util.h"
@@ -173,6 +174,12 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
       continue;
     collision.pose = compose(link_pose, xml::parseSdfPose(xml::childText(c, "pose", "")));
     collision.mu = xml::childDouble(c, "surface/friction/ode/mu", 1.0);
+    if (!(collision.mu >= 0))  // negative or NaN: Bullet would push along the motion
+    {
+      world.warnings.push_back(where + " in " + source.describe() + ": <mu> " + formatNumber(collision.mu) +
+                               " is not a friction coefficient; it is taken as 0");
+      collision.mu = 0;
+    }
     collision.colour = readColour(first_visual);
     world.collisions.push_back(collision);
   }

@@ -18,7 +18,12 @@ using namespace bullet_plant;
 
 namespace
 {
-Param toParam(const py::handle& obj, const std::string& where)
+// Deeper than this a parameter tree is a mistake (and its recursion would outgrow the stack).
+constexpr size_t kMaxParamDepth = 100;
+
+// `open`: the dicts and lists being converted on the way here, so that one holding itself is an
+// error instead of an endless recursion (a crash).
+Param toParam(const py::handle& obj, const std::string& where, std::vector<PyObject*>& open)
 {
   if (py::isinstance<py::bool_>(obj))
     return Param::boolean(obj.cast<bool>());
@@ -28,22 +33,32 @@ Param toParam(const py::handle& obj, const std::string& where)
     return Param::real(obj.cast<double>());
   if (py::isinstance<py::str>(obj))
     return Param::string(obj.cast<std::string>());
-  if (py::isinstance<py::dict>(obj))
+  const bool is_dict = py::isinstance<py::dict>(obj);
+  if (is_dict || py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
   {
-    Param map = Param::map();
-    for (auto item : obj.cast<py::dict>())
+    if (std::find(open.begin(), open.end(), obj.ptr()) != open.end())
+      throw py::value_error("parameter '" + where + "' contains itself (a dict or list holding a reference to "
+                            "one of its parents); the parameter tree holds plain trees only");
+    if (open.size() >= kMaxParamDepth)
+      throw py::value_error("parameter '" + where + "' is nested deeper than " + std::to_string(kMaxParamDepth) +
+                            " levels; the parameter tree takes no deeper");
+    open.push_back(obj.ptr());
+    Param out = Param::map();
+    if (is_dict)
+      for (auto item : obj.cast<py::dict>())
+      {
+        std::string key = py::str(item.first);
+        out.set(key, toParam(item.second, (where == "/" ? where : where + "/") + key, open));
+      }
+    else
     {
-      std::string key = py::str(item.first);
-      map.set(key, toParam(item.second, where + "/" + key));
+      std::vector<Param> items;
+      for (auto item : obj)
+        items.push_back(toParam(item, where, open));
+      out = Param::list(items);
     }
-    return map;
-  }
-  if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
-  {
-    std::vector<Param> items;
-    for (auto item : obj)
-      items.push_back(toParam(item, where));
-    return Param::list(items);
+    open.pop_back();
+    return out;
   }
   if (obj.is_none())
     return Param();
@@ -505,7 +520,8 @@ PYBIND11_MODULE(bullet_plant, m)
         }
         if (!py::isinstance<py::dict>(tree))
           throw py::type_error("load_params takes a dict or the path of a YAML file holding one");
-        w.world->params().set(ns, toParam(tree, ns));
+        std::vector<PyObject*> open;
+        w.world->params().set(ns, toParam(tree, ns, open));
       }, py::arg("tree"), py::arg("namespace") = "/",
          "merge a dict or YAML file into the parameter tree under namespace, as `rosparam load`: its top "
          "key (e.g. tianracer) is the robot namespace the controller manager reads")
