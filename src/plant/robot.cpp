@@ -36,6 +36,14 @@ void RobotMultibody::updateKinematics()
   bullet->updateCollisionObjectWorldTransforms(scratch_q, scratch_m);
 }
 
+void RobotMultibody::disableJointRows()
+{
+  for (MovableJoint& j : joints)
+    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
+      if (c)
+        c->disable();
+}
+
 void RobotMultibody::appendRayPrimitives(std::vector<RayPrimitive>& out) const
 {
   for (size_t bi = 0; bi < bodies.size(); ++bi)
@@ -173,6 +181,8 @@ void Robot::Internals::resetToSpawn()
     last_good.q[i] = btScalar(multibody.joints[i].initial_position);
   last_good.restore(multibody);
   joint_layer.resetPids();
+  // As built: the joint layer enables the rows again at the next step, in its order, starting cold.
+  multibody.disableJointRows();
   for (auto& col : multibody.colliders)
     world->dynamics->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(
         col->getBroadphaseHandle(), world->dynamics->getDispatcher());

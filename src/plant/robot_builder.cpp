@@ -565,12 +565,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
 void detachFromPhysics(Robot::Internals& r)
 {
   btMultiBodyDynamicsWorld* dynamics = r.world->dynamics.get();
-  for (MovableJoint& j : r.multibody.joints)
-  {
-    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
-      if (c)
-        c->disable();  // leaves the world's constraints
-  }
+  r.multibody.disableJointRows();
   for (auto& col : r.multibody.colliders)
     dynamics->removeCollisionObject(col.get());
   if (r.multibody.bullet)

@@ -83,6 +83,9 @@ struct RobotMultibody
   btTransform rootWorldTransform() const { return bullet->getBaseWorldTransform() * bodies[0].urdf_from_com.inverse(); }
   // After positions were set by hand: link transforms and colliders follow.
   void updateKinematics();
+  // Every JointDrive leaves the world's constraints with its impulse forgotten, as when built
+  // (the warm start and the world's constraint order would otherwise carry the past on).
+  void disableJointRows();
   // The bodies' collision shapes as ray casting primitives in the world frame.
   void appendRayPrimitives(std::vector<RayPrimitive>& out) const;
 };
