@@ -58,6 +58,8 @@ struct Robot::Internals
   void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
   void resetToSpawn();
+  // The joint rows' and contacts' impulses (the solver's warm start) and the contacts themselves.
+  void forgetSolverHistory();
 };
 
 struct World::Internals

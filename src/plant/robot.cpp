@@ -131,6 +131,7 @@ void Robot::Internals::recoverIfDiverged()
   ++recoveries;
   last_good.restore(multibody);
   joint_layer.resetPids();
+  forgetSolverHistory();  // the diverged step's impulses would seed the next one (and read as NaN efforts)
   const int64_t now = world->time_ns;
   if (recovery_window_start_ns < 0 || now - recovery_window_start_ns >= 1000000000 || now < recovery_window_start_ns)
   {
@@ -169,6 +170,15 @@ void Robot::Internals::updateSensors(int64_t time_ns)
   }
 }
 
+void Robot::Internals::forgetSolverHistory()
+{
+  // As built: the joint layer enables the rows again at the next step, in its order, starting cold.
+  multibody.disableJointRows();
+  for (auto& col : multibody.colliders)
+    world->dynamics->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(
+        col->getBroadphaseHandle(), world->dynamics->getDispatcher());
+}
+
 void Robot::Internals::resetToSpawn()
 {
   if (disabled)  // out of the physics: it stays as it was until removed
@@ -181,11 +191,7 @@ void Robot::Internals::resetToSpawn()
     last_good.q[i] = btScalar(multibody.joints[i].initial_position);
   last_good.restore(multibody);
   joint_layer.resetPids();
-  // As built: the joint layer enables the rows again at the next step, in its order, starting cold.
-  multibody.disableJointRows();
-  for (auto& col : multibody.colliders)
-    world->dynamics->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(
-        col->getBroadphaseHandle(), world->dynamics->getDispatcher());
+  forgetSolverHistory();
   last_good.save(multibody);
 }
 

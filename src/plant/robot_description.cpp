@@ -1,5 +1,7 @@
 #include "bullet_plant/robot_description.h"
 
+#include <algorithm>
+#include <cmath>
 #include <mutex>
 #include <sstream>
 
@@ -85,9 +87,54 @@ void checkInertials(const urdf::ModelInterface& model)
     else if (inertial->ixx < 0 || inertial->iyy < 0 || inertial->izz < 0)
       text << "<inertia ixx=\"" << inertial->ixx << "\" iyy=\"" << inertial->iyy << "\" izz=\"" << inertial->izz
            << "\"/> has a negative moment";
+    else if (std::max({inertial->ixx, inertial->iyy, inertial->izz, std::abs(inertial->ixy), std::abs(inertial->ixz),
+                       std::abs(inertial->iyz)}) > kMaxLinkMass * kMaxLength * kMaxLength)
+      text << "<inertia> has a component beyond " << kMaxLinkMass * kMaxLength * kMaxLength << " kg m^2";
     else
       continue;
     throw DescriptionError(text.str());
+  }
+}
+
+// Lengths beyond kMaxLength overflow the plant's single-precision arithmetic (1e308 is infinite
+// there, 1e30 squared too): the robot would start non-finite.
+void checkLength(const urdf::Vector3& v, const std::string& what)
+{
+  if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) <= kMaxLength)
+    return;
+  std::ostringstream text;
+  text << what << " " << v.x << " " << v.y << " " << v.z << " is beyond " << kMaxLength << " m";
+  throw DescriptionError(text.str());
+}
+
+void checkGeometry(const urdf::GeometrySharedPtr& geometry, const std::string& what)
+{
+  if (!geometry)
+    return;
+  if (auto box = std::dynamic_pointer_cast<urdf::Box>(geometry))
+    checkLength(box->dim, what + " <box size>");
+  else if (auto cylinder = std::dynamic_pointer_cast<urdf::Cylinder>(geometry))
+    checkLength(urdf::Vector3(cylinder->radius, cylinder->length, 0), what + " <cylinder radius length>");
+  else if (auto sphere = std::dynamic_pointer_cast<urdf::Sphere>(geometry))
+    checkLength(urdf::Vector3(sphere->radius, 0, 0), what + " <sphere radius>");
+  else if (auto mesh = std::dynamic_pointer_cast<urdf::Mesh>(geometry))
+    checkLength(mesh->scale, what + " <mesh scale>");
+}
+
+void checkLengths(const urdf::ModelInterface& model)
+{
+  for (const auto& kv : model.joints_)
+    checkLength(kv.second->parent_to_joint_origin_transform.position, "joint '" + kv.first + "': <origin xyz>");
+  for (const auto& kv : model.links_)
+  {
+    const std::string where = "link '" + kv.first + "': ";
+    if (kv.second->inertial)
+      checkLength(kv.second->inertial->origin.position, where + "<inertial><origin xyz>");
+    for (const urdf::CollisionSharedPtr& c : kv.second->collision_array)
+    {
+      checkLength(c->origin.position, where + "<collision><origin xyz>");
+      checkGeometry(c->geometry, where + "<collision>");
+    }
   }
 }
 
@@ -265,6 +312,7 @@ RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::s
   out.base_dir = base_dir;
   out.model = parseWithUrdfdom(urdf_xml, out.warnings);
   checkInertials(*out.model);
+  checkLengths(*out.model);
   readTransmissions(robot, out);
   readGazeboExtensions(robot, out);
   return out;

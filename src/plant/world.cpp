@@ -1,5 +1,6 @@
 #include "bullet_plant/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -188,6 +189,13 @@ Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const 
                    pose.rotation.z, pose.rotation.w})
     if (!std::isfinite(v))
       throw DescriptionError("spawn pose of '" + name + "' is not finite");
+  if (std::max({std::abs(pose.position.x), std::abs(pose.position.y), std::abs(pose.position.z)}) > kMaxLength)
+  {
+    std::ostringstream text;
+    text << "spawn position of '" << name << "' " << pose.position.x << " " << pose.position.y << " " << pose.position.z
+         << " is beyond " << kMaxLength << " m (the plant computes in single precision)";
+    throw DescriptionError(text.str());
+  }
   for (const auto& kv : initial_joints)
     if (!std::isfinite(kv.second))
       throw DescriptionError("initial position of joint '" + kv.first + "' is not finite");
