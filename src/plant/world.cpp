@@ -50,22 +50,27 @@ constexpr btScalar kDeepAtSpawn = 0.01;  // m
 struct DeepestContact : btCollisionWorld::ContactResultCallback
 {
   const btMultiBody* own = nullptr;
-  const btCollisionObject* link = nullptr;
+  const btMultiBodyLinkCollider* link = nullptr;
   const btCollisionObject* other = nullptr;
   btScalar depth = 0;
 
+  const btMultiBodyLinkCollider* ownLink(const btCollisionObjectWrapper* side) const
+  {
+    const auto* collider = btMultiBodyLinkCollider::upcast(side->getCollisionObject());
+    return collider && collider->m_multiBody == own ? collider : nullptr;
+  }
   btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
                            const btCollisionObjectWrapper* b, int, int) override
   {
-    const btCollisionObject* other_object = b->getCollisionObject();
-    const auto* collider = btMultiBodyLinkCollider::upcast(other_object);
-    if (collider && collider->m_multiBody == own)
+    const btMultiBodyLinkCollider* mine_a = ownLink(a);
+    const btMultiBodyLinkCollider* mine_b = ownLink(b);
+    if ((mine_a != nullptr) == (mine_b != nullptr))
       return 0;  // a link touching its own robot
     if (-point.getDistance() > depth)
     {
       depth = -point.getDistance();
-      link = a->getCollisionObject();
-      other = other_object;
+      link = mine_a ? mine_a : mine_b;
+      other = (mine_a ? b : a)->getCollisionObject();
     }
     return 0;
   }
@@ -83,7 +88,7 @@ void warnIfSpawnedInside(World::Internals& w, Robot::Internals& r)
     return;
   std::ostringstream text;
   text << "robot '" << r.name << "' starts " << deepest.depth << " m deep inside '" << w.nameOf(deepest.other)
-       << "' (its link '" << r.multibody.bodies[size_t(btMultiBodyLinkCollider::upcast(deepest.link)->m_link + 1)].link
+       << "' (its link '" << r.multibody.bodies[size_t(deepest.link->m_link + 1)].link
        << "'): the contact pushes it out at up to " << w.description.contact_max_correcting_vel
        << " m/s (Gazebo's contact_max_correcting_vel); spawn it clear of other bodies";
   w.log.warn(text.str());
