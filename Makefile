@@ -16,7 +16,7 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim demo bench bench-ros bench-meshes figures step-cost clean
+.PHONY: help setup build test sim demo bench bench-ros bench-meshes figures step-cost soak clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
@@ -29,6 +29,7 @@ help:
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
 	@echo "make step-cost  build, count instructions per physics step (callgrind) and print a trajectory digest"
 	@echo "make bench-meshes  build, the cost of a race track made of meshes (instructions per step, lidar rays/s)"
+	@echo "make soak   build, drive SOAK_MINUTES (default 10) at full speed with every sensor on: RSS growth, non-finite states"
 	@echo "make clean  remove $(WS)/"
 
 setup:
@@ -76,6 +77,10 @@ step-cost: build
 bench-meshes: build
 	@command -v valgrind >/dev/null || { echo "bench-meshes: installing valgrind"; $$([ "$$(id -u)" -eq 0 ] || echo sudo) apt-get install -y -qq valgrind; }
 	@$(ROS_ENV) $(PYTHON) bench/mesh_cost.py
+
+# Not part of `make test`: minutes long by design.
+soak: build
+	@$(ROS_ENV) $(PYTHON) bench/soak.py
 
 clean:
 	rm -rf $(WS)

@@ -51,3 +51,54 @@ def test_a_step_below_a_nanosecond_is_refused():
     with pytest.raises(bullet_plant.DescriptionError, match=r'max_step_size> 1e-10 is out of range'):
         bullet_plant.World.from_sdf(sdf_world(step=1e-10))
     assert bullet_plant.World.from_sdf(sdf_world(step=1e-9)).time_step == pytest.approx(1e-9)
+
+
+def test_handles_of_a_removed_robot_raise_naming_it(urdf_xml, control_config):
+    world = bullet_plant.World()
+    world.echo = False
+    world.load_params(control_config)
+    car = world.spawn(urdf_xml, 'car')
+    manager = car.controller_manager
+    assert manager.load('joint_state_controller')
+    assert world.remove('car')
+    assert car.removed and car.name == 'car'
+    uses = [car.base_pose, car.base_twist, lambda: car.joint_state(car.handles[0]), lambda: car.controller_manager,
+            lambda: car.set_command('rear_left_wheel_joint', 1.0), lambda: car.e_stop, lambda: car.sensors,
+            manager.list, lambda: manager.load('joint_state_controller'), lambda: manager.command('x', 1.0)]
+    for use in uses:
+        with pytest.raises(bullet_plant.RobotRemovedError, match=r"robot 'car' was removed from the world"):
+            use()
+    # A new robot of the same name is not the old handle's: it stays removed.
+    new_car = world.spawn(urdf_xml, 'car')
+    with pytest.raises(bullet_plant.RobotRemovedError):
+        car.base_pose()
+    assert not new_car.removed
+    world.step(10)
+    assert new_car.controller_manager.load('joint_state_controller')
+
+
+def test_a_handle_keeps_its_world(urdf_xml):
+    import gc
+    car = bullet_plant.World().spawn(urdf_xml, 'car')
+    gc.collect()
+    car.base_pose()
+    assert not car.removed
+
+
+def test_load_params_refuses_a_dict_that_contains_itself_or_nests_too_deep():
+    world = bullet_plant.World()
+    looped = {'tianracer': {'gains': {}}}
+    looped['tianracer']['gains']['again'] = looped['tianracer']
+    with pytest.raises(ValueError, match=r"parameter '/tianracer/gains/again' contains itself"):
+        world.load_params(looped)
+    listed = [1]
+    listed.append(listed)
+    with pytest.raises(ValueError, match=r"parameter '/x' contains itself"):
+        world.load_params({'x': listed})
+    deep = {}
+    for _ in range(100000):
+        deep = {'a': deep}
+    with pytest.raises(ValueError, match='nested deeper than 100 levels'):
+        world.load_params(deep)
+    world.load_params({'tianracer': {'p': 1.0, 'shared': [1, 2], 'again': [1, 2]}})
+    assert world.get_param('/tianracer/p') == 1.0

@@ -81,3 +81,28 @@ def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, 
     time.sleep(1.0)
     assert plant.popen.poll() is None, plant.log()
     assert ros.run(['rostopic', 'echo', '-n', '1', '/tianracer/odom'], timeout=20).returncode == 0, plant.log()
+
+
+@pytest.mark.ros
+def test_mistakes_through_spawn_model_and_the_controller_manager_get_answers_not_exceptions(ros, urdf_file):
+    from tianracer_description.ros_harness import tianracer_plant
+    plant = tianracer_plant(ros, urdf_file, paused=True)
+
+    def spawn_model(*args):
+        return ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'robot_description']
+                       + list(args), timeout=60)
+    yaw = spawn_model('-model', 'spun', '-Y', 'inf')
+    assert yaw.returncode == 1 and 'Traceback' not in yaw.stderr, yaw.stderr
+    assert "option '-Y' needs a finite number, not inf" in yaw.stdout + yaw.stderr
+    # The URDF's robotNamespace is /tianracer, where the first car's controller manager already is.
+    twin = spawn_model('-model', 'twin', '-y', '2')
+    assert twin.returncode == 1
+    assert ("robot 'twin': robotNamespace '/tianracer' already holds the controller manager of robot 'tianracer'"
+            in twin.stdout + twin.stderr), twin.stdout + twin.stderr
+    for name in ('a b', '../../etc', '~x'):
+        answer = ros.service('/tianracer/controller_manager/load_controller', "{name: '%s'}" % name)
+        assert answer == {'ok': False}, answer
+        ros.wait_until(lambda: "Exception thrown while constructing nodehandle for controller with name '%s'" % name
+                       in plant.log(), 10, 'the load error in the log')
+    assert ros.service('/tianracer/controller_manager/load_controller', '{name: joint_state_controller}') == {'ok': True}
+    assert plant.popen.poll() is None, plant.log()

@@ -118,8 +118,15 @@ struct RobotDescription
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)
 };
 
-// Parses URDF text. Throws DescriptionError with the parser's message for malformed input.
-// `base_dir`: the directory of the URDF file it came from, if any.
+// The heaviest link the plant takes, kg: heavier, its contacts (single precision) lose it.
+constexpr double kMaxLinkMass = 1e6;
+// The largest length (an origin, a size) a URDF may give, m: beyond it single precision overflows.
+constexpr double kMaxLength = 1e4;
+
+// Parses URDF text. Throws DescriptionError with the parser's message for malformed input, for
+// what urdfdom reported and left out (a mass of nan), for a negative or too large mass or a
+// negative moment of inertia, and for lengths beyond kMaxLength. `base_dir`: the directory of the
+// URDF file it came from, if any.
 RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::string& base_dir = "");
 
 }  // namespace bullet_plant

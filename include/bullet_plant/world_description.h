@@ -29,6 +29,9 @@ struct WorldDescription
   std::string name = "default";
   double max_step_size = 0.001;      // s, within [kMinStepSize, kMaxStepSize]
   double real_time_factor = 1.0;
+  // <physics><ode><constraints><contact_max_correcting_vel>: the fastest a contact corrects a
+  // penetration, m/s (Gazebo's default).
+  double contact_max_correcting_vel = 100.0;
   urdf::Vector3 gravity{0, 0, -9.8};
   urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
   std::vector<StaticCollision> collisions;

@@ -27,7 +27,7 @@ controller_manager_msgs::ControllerState controllerStateMessage(const Controller
 
 ControllerManagerServices::ControllerManagerServices(RosPlant& plant, ControllerManager& manager,
                                                      ControllerTopics& topics, ros::NodeHandle& nh)
-  : plant_(plant), manager_(manager), topics_(topics)
+  : plant_(plant), manager_(manager), topics_(topics), nh_(nh)
 {
   services_.push_back(nh.advertiseService("controller_manager/load_controller", &ControllerManagerServices::load, this));
   services_.push_back(
@@ -53,7 +53,21 @@ bool ControllerManagerServices::changeControllers(const std::function<bool()>& c
 bool ControllerManagerServices::load(Load::Request& req, Load::Response& res)
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  plant_.copyParams(manager_.ns() + "/" + req.name);
+  // As ros_control: a name ROS refuses as a namespace (`a b`, `../x`, `~x`) fails the load with
+  // the reason, not the service; every topic of a loaded controller is then a valid name too.
+  ros::NodeHandle controller_nh;
+  try
+  {
+    controller_nh = ros::NodeHandle(nh_, req.name);
+  }
+  catch (const std::exception& e)
+  {
+    ROS_ERROR("Exception thrown while constructing nodehandle for controller with name '%s':\n%s", req.name.c_str(),
+              e.what());
+    res.ok = false;
+    return true;
+  }
+  plant_.copyParams(controller_nh.getNamespace());
   // Where ros_controllers read the URDF a controller may need (ackermann_steering_controller's geometry).
   plant_.copyParams(manager_.ns() + "/robot_description");
   res.ok = changeControllers([&] { return manager_.loadController(req.name); });

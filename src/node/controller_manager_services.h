@@ -47,6 +47,7 @@ private:
   RosPlant& plant_;
   ControllerManager& manager_;
   ControllerTopics& topics_;
+  ros::NodeHandle nh_;  // the robot namespace's: controllers live under it
   std::mutex mutex_;  // one call at a time
   std::vector<ros::ServiceServer> services_;
 };

@@ -152,11 +152,13 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
 {
   // The robot namespace decides where its pid_gains live: read it before the sim thread spawns.
   std::string control_ns = ns;
+  bool has_controller_manager = false;
   try
   {
     RobotDescription d = parseRobotDescription(urdf);
     if (!d.control.robot_namespace.empty())
       control_ns = d.control.robot_namespace;
+    has_controller_manager = d.control.present;
     requireValidRosName(control_ns, "robot '" + name + "' robotNamespace");
   }
   catch (const std::exception& e)
@@ -170,6 +172,13 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
   return onSimThread<bool>([&] {
     try
     {
+      // Two controller managers cannot offer their services under one name: the second would be unreachable.
+      for (Robot* other : world_->robots())
+        if (has_controller_manager && other->controllerManager() &&
+            other->controlNamespace() == normaliseNamespace(control_ns))
+          throw std::invalid_argument("robot '" + name + "': robotNamespace '" + other->controlNamespace() +
+                                      "' already holds the controller manager of robot '" + other->name() +
+                                      "'; give each robot its own namespace (spawn_model -robot_namespace)");
       Robot& robot = world_->spawn(urdf, name, pose, ns, joints);
       std::unique_ptr<RobotInterface> interface;
       try

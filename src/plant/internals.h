@@ -85,6 +85,8 @@ struct Robot::Internals
   bool hasExternalEfforts() const { return !wrenches.empty() || !joint_efforts.empty(); }
   // After positions or velocities were set by hand: kinematics, stale contact pairs, the last good state.
   void settleAfterTeleport();
+  // The joint rows' and contacts' impulses (the solver's warm start) and the contacts themselves.
+  void forgetSolverHistory();
 };
 
 struct World::Internals
@@ -105,10 +107,13 @@ struct World::Internals
   std::unique_ptr<btMultiBodyDynamicsWorld> dynamics;
   std::vector<std::unique_ptr<btCollisionShape>> static_shapes;
   std::vector<std::unique_ptr<btCollisionObject>> static_objects;
+  std::vector<std::string> static_names;  // of static_objects, model::link::collision
   std::vector<RayPrimitive> static_ray_shapes;
 
   std::vector<std::unique_ptr<Robot>> robots;
 
+  // "robot::link" or the static collision's name, for messages.
+  std::string nameOf(const btCollisionObject* object) const;
   // Everything sensors can see, in the world frame: the static scene and every robot's shapes.
   std::vector<RayPrimitive> rayScene() const;
 };

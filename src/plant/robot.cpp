@@ -39,6 +39,14 @@ void RobotMultibody::updateKinematics()
   bullet->updateCollisionObjectWorldTransforms(scratch_q, scratch_m);
 }
 
+void RobotMultibody::disableJointRows()
+{
+  for (MovableJoint& j : joints)
+    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
+      if (c)
+        c->disable();
+}
+
 void RobotMultibody::appendRayPrimitives(std::vector<RayPrimitive>& out) const
 {
   for (size_t bi = 0; bi < bodies.size(); ++bi)
@@ -137,6 +145,7 @@ void Robot::Internals::recoverIfDiverged()
   ++recoveries;
   last_good.restore(multibody);
   joint_layer.resetPids();
+  forgetSolverHistory();  // the diverged step's impulses would seed the next one (and read as NaN efforts)
   const int64_t now = world->time_ns;
   if (recovery_window_start_ns < 0 || now - recovery_window_start_ns >= 1000000000 || now < recovery_window_start_ns)
   {
@@ -193,9 +202,7 @@ void Robot::Internals::settleAfterTeleport()
 {
   multibody.updateKinematics();
   joint_layer.resetPids();
-  for (auto& col : multibody.colliders)
-    world->dynamics->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(
-        col->getBroadphaseHandle(), world->dynamics->getDispatcher());
+  forgetSolverHistory();
   last_good.save(multibody);
 }
 
@@ -259,6 +266,15 @@ LinkMotion Robot::Internals::linkMotion(const std::string& link, const urdf::Pos
   m.velocity = urdf::Vector3(v.x(), v.y(), v.z());
   m.angular_velocity = urdf::Vector3(omega.x(), omega.y(), omega.z());
   return m;
+}
+
+void Robot::Internals::forgetSolverHistory()
+{
+  // As built: the joint layer enables the rows again at the next step, in its order, starting cold.
+  multibody.disableJointRows();
+  for (auto& col : multibody.colliders)
+    world->dynamics->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(
+        col->getBroadphaseHandle(), world->dynamics->getDispatcher());
 }
 
 void Robot::Internals::resetToSpawn()

@@ -108,6 +108,36 @@ std::vector<BodyPlan> planBodies(Robot::Internals& r, const urdf::LinkConstShare
   return plans;
 }
 
+// Joints between bodies whose masses differ by more than this hold loosely: the iterative solver
+// (Bullet's, as ODE's) converges slowly on them, and the robot drifts or jumps.
+constexpr double kLooseMassRatio = 1e4;
+
+// Says once which joint joins the most unequal masses, when beyond kLooseMassRatio.
+void warnOfMassRatio(Robot::Internals& r)
+{
+  const std::vector<Body>& bodies = r.multibody.bodies;
+  double worst = kLooseMassRatio;
+  size_t worst_body = 0;
+  for (size_t bi = 1; bi < bodies.size(); ++bi)
+  {
+    const double a = bodies[bi].mass, b = bodies[size_t(bodies[bi].parent)].mass;
+    if (a > 0 && b > 0 && std::max(a / b, b / a) > worst)
+    {
+      worst = std::max(a / b, b / a);
+      worst_body = bi;
+    }
+  }
+  if (worst_body == 0)
+    return;
+  const Body& child = bodies[worst_body];
+  const Body& parent = bodies[size_t(child.parent)];
+  std::ostringstream text;
+  text << "robot '" << r.name << "': link '" << child.link << "' (" << child.mass << " kg) and its parent '"
+       << parent.link << "' (" << parent.mass << " kg) differ " << worst << " times in mass; the solver holds "
+       << "their joint loosely (the robot may drift or jump): keep masses within " << kLooseMassRatio << " times";
+  r.world->log.warn(text.str());
+}
+
 // 2. Mass properties of each body (its links' inertials together), then its principal frame.
 void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool world_rooted)
 {
@@ -125,7 +155,9 @@ void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool wo
       mass += link->inertial->mass;
       weighted += kv.second.second * vec(link->inertial->origin.position) * btScalar(link->inertial->mass);
     }
-    btVector3 com = mass > 0 ? weighted / btScalar(mass) : btVector3(0, 0, 0);
+    // Below the minimum the body gets kMinimumMass at its frame: a mass of 1e-40 kg would divide
+    // by a single-precision zero.
+    btVector3 com = mass >= kMinimumMass ? weighted / btScalar(mass) : btVector3(0, 0, 0);
     btMatrix3x3 I(0, 0, 0, 0, 0, 0, 0, 0, 0);
     for (const auto& kv : placement)
     {
@@ -156,6 +188,7 @@ void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool wo
       body.inertia_diagonal[i] = std::max(I[i][i], btScalar(kMinimumInertia));
     body.urdf_from_com = btTransform(principal, com);
   }
+  warnOfMassRatio(r);
 }
 
 // A wheel-shaped mesh on the link of a continuous joint (whose frame is the joint's) becomes the
@@ -551,12 +584,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
 void detachFromPhysics(Robot::Internals& r)
 {
   btMultiBodyDynamicsWorld* dynamics = r.world->dynamics.get();
-  for (MovableJoint& j : r.multibody.joints)
-  {
-    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
-      if (c)
-        c->disable();  // leaves the world's constraints
-  }
+  r.multibody.disableJointRows();
   for (auto& col : r.multibody.colliders)
     dynamics->removeCollisionObject(col.get());
   if (r.multibody.bullet)

@@ -1,6 +1,9 @@
 #include "bullet_plant/robot_description.h"
 
+#include <algorithm>
+#include <cmath>
 #include <mutex>
+#include <sstream>
 
 #include <console_bridge/console.h>
 #include <tinyxml2.h>
@@ -37,20 +40,33 @@ PluginKind pluginKind(const std::string& filename)
 
 namespace
 {
-// urdfdom reports why it refused a document through console_bridge; collect those lines so the
-// error we raise carries the parser's own message.
+// urdfdom reports why it refused a document, or what it left out of one it still accepted (an
+// <inertial> with a mass of nan: the link then has none), through console_bridge; collect those
+// lines so that our errors and warnings carry the parser's own message.
 class CollectingOutputHandler : public console_bridge::OutputHandler
 {
 public:
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override
   {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN)
-      lines.push_back(text);
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR)
+      errors.push_back(text);
+    else if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN)
+      warnings.push_back(text);
   }
-  std::vector<std::string> lines;
+  std::vector<std::string> errors, warnings;
 };
 
-urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdf_xml)
+std::string joined(const std::vector<std::string>& lines)
+{
+  std::string out;
+  for (const std::string& line : lines)
+    out += (out.empty() ? "" : "; ") + line;
+  return out;
+}
+
+// Refuses a URDF urdfdom could not read in full: what it skipped (an <inertial>, a <collision>)
+// would silently change the robot.
+urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdf_xml, std::vector<std::string>& warnings)
 {
   static std::mutex console_mutex;  // console_bridge's output handler is process-wide
   std::lock_guard<std::mutex> lock(console_mutex);
@@ -59,13 +75,86 @@ urdf::ModelInterfaceSharedPtr parseWithUrdfdom(const std::string& urdf_xml)
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(urdf_xml);
   console_bridge::restorePreviousOutputHandler();
   if (!model)
-  {
-    std::string reason = handler.lines.empty() ? "no reason given" : handler.lines.front();
-    for (size_t i = 1; i < handler.lines.size(); ++i)
-      reason += "; " + handler.lines[i];
-    throw DescriptionError("URDF parser: " + reason);
-  }
+    throw DescriptionError("URDF parser: " +
+                           (handler.errors.empty() && handler.warnings.empty() ? std::string("no reason given")
+                                                                               : joined(handler.errors.empty() ? handler.warnings : handler.errors)));
+  if (!handler.errors.empty())
+    throw DescriptionError("URDF parser: " + joined(handler.errors) +
+                           " (urdfdom went on without what it could not read; fix the URDF)");
+  for (const std::string& line : handler.warnings)
+    warnings.push_back("URDF parser: " + line);
   return model;
+}
+
+// What urdfdom accepts but no physics can use: a negative mass or moment of inertia, and a mass
+// so large that single-precision contacts lose it (1/m below Bullet's epsilon: it falls through
+// the floor).
+void checkInertials(const urdf::ModelInterface& model)
+{
+  for (const auto& kv : model.links_)
+  {
+    const urdf::InertialSharedPtr& inertial = kv.second->inertial;
+    if (!inertial)
+      continue;
+    std::ostringstream text;
+    text << "link '" << kv.first << "': ";
+    if (inertial->mass < 0)
+      text << "<mass value=\"" << inertial->mass << "\"/> is negative";
+    else if (inertial->mass > kMaxLinkMass)
+      text << "<mass value=\"" << inertial->mass << "\"/> is more than the plant can hold on its contacts ("
+           << kMaxLinkMass << " kg)";
+    else if (inertial->ixx < 0 || inertial->iyy < 0 || inertial->izz < 0)
+      text << "<inertia ixx=\"" << inertial->ixx << "\" iyy=\"" << inertial->iyy << "\" izz=\"" << inertial->izz
+           << "\"/> has a negative moment";
+    else if (std::max({inertial->ixx, inertial->iyy, inertial->izz, std::abs(inertial->ixy), std::abs(inertial->ixz),
+                       std::abs(inertial->iyz)}) > kMaxLinkMass * kMaxLength * kMaxLength)
+      text << "<inertia> has a component beyond " << kMaxLinkMass * kMaxLength * kMaxLength << " kg m^2";
+    else
+      continue;
+    throw DescriptionError(text.str());
+  }
+}
+
+// Lengths beyond kMaxLength overflow the plant's single-precision arithmetic (1e308 is infinite
+// there, 1e30 squared too): the robot would start non-finite.
+void checkLength(const urdf::Vector3& v, const std::string& what)
+{
+  if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) <= kMaxLength)
+    return;
+  std::ostringstream text;
+  text << what << " " << v.x << " " << v.y << " " << v.z << " is beyond " << kMaxLength << " m";
+  throw DescriptionError(text.str());
+}
+
+void checkGeometry(const urdf::GeometrySharedPtr& geometry, const std::string& what)
+{
+  if (!geometry)
+    return;
+  if (auto box = std::dynamic_pointer_cast<urdf::Box>(geometry))
+    checkLength(box->dim, what + " <box size>");
+  else if (auto cylinder = std::dynamic_pointer_cast<urdf::Cylinder>(geometry))
+    checkLength(urdf::Vector3(cylinder->radius, cylinder->length, 0), what + " <cylinder radius length>");
+  else if (auto sphere = std::dynamic_pointer_cast<urdf::Sphere>(geometry))
+    checkLength(urdf::Vector3(sphere->radius, 0, 0), what + " <sphere radius>");
+  else if (auto mesh = std::dynamic_pointer_cast<urdf::Mesh>(geometry))
+    checkLength(mesh->scale, what + " <mesh scale>");
+}
+
+void checkLengths(const urdf::ModelInterface& model)
+{
+  for (const auto& kv : model.joints_)
+    checkLength(kv.second->parent_to_joint_origin_transform.position, "joint '" + kv.first + "': <origin xyz>");
+  for (const auto& kv : model.links_)
+  {
+    const std::string where = "link '" + kv.first + "': ";
+    if (kv.second->inertial)
+      checkLength(kv.second->inertial->origin.position, where + "<inertial><origin xyz>");
+    for (const urdf::CollisionSharedPtr& c : kv.second->collision_array)
+    {
+      checkLength(c->origin.position, where + "<collision><origin xyz>");
+      checkGeometry(c->geometry, where + "<collision>");
+    }
+  }
 }
 
 std::string normaliseInterface(const std::string& text, std::vector<std::string>& warnings)
@@ -308,7 +397,9 @@ RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::s
 
   RobotDescription out;
   out.base_dir = base_dir;
-  out.model = parseWithUrdfdom(urdf_xml);
+  out.model = parseWithUrdfdom(urdf_xml, out.warnings);
+  checkInertials(*out.model);
+  checkLengths(*out.model);
   readTransmissions(robot, out);
   readGazeboExtensions(robot, out);
   return out;

@@ -38,7 +38,7 @@ struct Body
   Body& operator=(Body&&) noexcept = default;
 
   std::string link;              // the URDF link that owns the body
-  int parent = -2;               // index of the parent body (-1: the base); -2 for the base itself
+  int parent = -2;               // index of the parent body in RobotMultibody::bodies; -2 for the base itself
   double mass = 0.0;
   btVector3 inertia_diagonal{0, 0, 0};
   btTransform urdf_from_com = btTransform::getIdentity();
@@ -88,6 +88,9 @@ struct RobotMultibody
   btTransform rootWorldTransform() const { return bullet->getBaseWorldTransform() * bodies[0].urdf_from_com.inverse(); }
   // After positions were set by hand: link transforms and colliders follow.
   void updateKinematics();
+  // Every JointDrive leaves the world's constraints with its impulse forgotten, as when built
+  // (the warm start and the world's constraint order would otherwise carry the past on).
+  void disableJointRows();
   // The bodies' collision shapes as ray casting primitives in the world frame.
   void appendRayPrimitives(std::vector<RayPrimitive>& out) const;
 };

@@ -1,8 +1,10 @@
 #include "bullet_plant/world.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <limits>
+#include <sstream>
 
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
@@ -41,7 +43,70 @@ btScalar smallerFriction(const btCollisionObject* a, const btCollisionObject* b)
 {
   return std::min(a->getFriction(), b->getFriction());
 }
+// How deep a link may start inside another body before the spawn warns: resting contacts are
+// well under a millimetre deep.
+constexpr btScalar kDeepAtSpawn = 0.01;  // m
+
+// The deepest contact between a robot's links and the rest of the world, by Bullet's contact test.
+struct DeepestContact : btCollisionWorld::ContactResultCallback
+{
+  const btMultiBody* own = nullptr;
+  const btMultiBodyLinkCollider* link = nullptr;
+  const btCollisionObject* other = nullptr;
+  btScalar depth = 0;
+
+  const btMultiBodyLinkCollider* ownLink(const btCollisionObjectWrapper* side) const
+  {
+    const auto* collider = btMultiBodyLinkCollider::upcast(side->getCollisionObject());
+    return collider && collider->m_multiBody == own ? collider : nullptr;
+  }
+  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper* a, int, int,
+                           const btCollisionObjectWrapper* b, int, int) override
+  {
+    const btMultiBodyLinkCollider* mine_a = ownLink(a);
+    const btMultiBodyLinkCollider* mine_b = ownLink(b);
+    if ((mine_a != nullptr) == (mine_b != nullptr))
+      return 0;  // a link touching its own robot
+    if (-point.getDistance() > depth)
+    {
+      depth = -point.getDistance();
+      link = mine_a ? mine_a : mine_b;
+      other = (mine_a ? b : a)->getCollisionObject();
+    }
+    return 0;
+  }
+};
+
+// Warns once when a robot starts deep inside something: the contacts then push it out at up to
+// contact_max_correcting_vel (DenseRowSolver), which a user should hear about.
+void warnIfSpawnedInside(World::Internals& w, Robot::Internals& r)
+{
+  DeepestContact deepest;
+  deepest.own = r.multibody.bullet.get();
+  for (auto& collider : r.multibody.colliders)
+    w.dynamics->contactTest(collider.get(), deepest);
+  if (deepest.depth <= kDeepAtSpawn)
+    return;
+  std::ostringstream text;
+  text << "robot '" << r.name << "' starts " << deepest.depth << " m deep inside '" << w.nameOf(deepest.other)
+       << "' (its link '" << r.multibody.bodies[size_t(deepest.link->m_link + 1)].link
+       << "'): the contact pushes it out at up to " << w.description.contact_max_correcting_vel
+       << " m/s (Gazebo's contact_max_correcting_vel); spawn it clear of other bodies";
+  w.log.warn(text.str());
+}
 }  // namespace
+
+std::string World::Internals::nameOf(const btCollisionObject* object) const
+{
+  for (size_t i = 0; i < static_objects.size(); ++i)
+    if (static_objects[i].get() == object)
+      return static_names[i];
+  if (const auto* collider = btMultiBodyLinkCollider::upcast(object))
+    for (const auto& robot : robots)
+      if (internalsOf(*robot).multibody.bullet.get() == collider->m_multiBody)
+        return robot->name() + "::" + internalsOf(*robot).multibody.bodies[size_t(collider->m_link + 1)].link;
+  return "?";
+}
 
 World::World(const WorldDescription& description) : in_(new Internals)
 {
@@ -59,6 +124,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
   registerWheelContact(*w.dispatcher);
   w.broadphase.reset(new btDbvtBroadphase());
   auto* solver = new DenseRowSolver();
+  solver->setMaxCorrectingVelocity(btScalar(description.contact_max_correcting_vel));
   w.solver.reset(solver);
   w.dynamics.reset(new DynamicsWorld(w.dispatcher.get(), w.broadphase.get(), solver, w.collision_config.get()));
   const urdf::Vector3& g = description.gravity;
@@ -86,6 +152,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
     }
     w.static_shapes.push_back(std::move(collider.shape));
     w.static_objects.emplace_back(new btCollisionObject());
+    w.static_names.push_back(c.name);
     btCollisionObject* object = w.static_objects.back().get();
     object->setCollisionShape(w.static_shapes.back().get());
     object->setWorldTransform(toBullet(c.pose));
@@ -151,6 +218,13 @@ Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const 
                    pose.rotation.z, pose.rotation.w})
     if (!std::isfinite(v))
       throw DescriptionError("spawn pose of '" + name + "' is not finite");
+  if (std::max({std::abs(pose.position.x), std::abs(pose.position.y), std::abs(pose.position.z)}) > kMaxLength)
+  {
+    std::ostringstream text;
+    text << "spawn position of '" << name << "' " << pose.position.x << " " << pose.position.y << " " << pose.position.z
+         << " is beyond " << kMaxLength << " m (the plant computes in single precision)";
+    throw DescriptionError(text.str());
+  }
   for (const auto& kv : initial_joints)
     if (!std::isfinite(kv.second))
       throw DescriptionError("initial position of joint '" + kv.first + "' is not finite");
@@ -178,6 +252,7 @@ Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const 
     removeRobot(r);  // takes back whatever was added to the dynamics world
     throw;
   }
+  warnIfSpawnedInside(*in_, r);
   in_->robots.push_back(std::move(robot));
   return *in_->robots.back();
 }

@@ -8,6 +8,7 @@
 
 #include <tinyxml2.h>
 
+#include "bullet_plant/log.h"
 #include "bullet_plant/robot_description.h"
 #include "resource_uri.h"
 #include "xml_util.h"
@@ -35,6 +36,8 @@ struct Placement
 
 // Nested includes deeper than this are a loop (a model including itself).
 constexpr int kMaxModelDepth = 16;
+// The strongest <gravity> the plant takes, m/s^2 (100 g): beyond it the robots only diverge.
+constexpr double kMaxGravity = 1000.0;
 
 StaticCollision groundPlane(const std::string& model_name, const urdf::Pose& pose)
 {
@@ -172,6 +175,12 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
       continue;
     collision.pose = compose(link_pose, xml::parseSdfPose(xml::childText(c, "pose", "")));
     collision.mu = xml::childDouble(c, "surface/friction/ode/mu", 1.0);
+    if (!(collision.mu >= 0))  // negative or NaN: Bullet would push along the motion
+    {
+      world.warnings.push_back(where + " in " + source.describe() + ": <mu> " + formatNumber(collision.mu) +
+                               " is not a friction coefficient; it is taken as 0");
+      collision.mu = 0;
+    }
     collision.colour = readColour(first_visual);
     world.collisions.push_back(collision);
   }
@@ -328,6 +337,15 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
   {
     world.max_step_size = xml::childDouble(physics, "max_step_size", world.max_step_size);
     world.real_time_factor = xml::childDouble(physics, "real_time_factor", world.real_time_factor);
+    world.contact_max_correcting_vel =
+        xml::childDouble(physics, "ode/constraints/contact_max_correcting_vel", world.contact_max_correcting_vel);
+    if (!(world.contact_max_correcting_vel >= 0 && std::isfinite(world.contact_max_correcting_vel)))
+    {
+      std::ostringstream text;
+      text << "<physics><ode><constraints><contact_max_correcting_vel> " << world.contact_max_correcting_vel
+           << " must be a finite speed >= 0 m/s (Gazebo's default: 100)";
+      throw DescriptionError(text.str());
+    }
     if (!(world.max_step_size >= kMinStepSize && world.max_step_size <= kMaxStepSize))
     {
       std::ostringstream text;
@@ -341,6 +359,14 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
   {
     std::vector<double> g = xml::numbers(gravity, 3, "<gravity>");
     world.gravity = urdf::Vector3(g[0], g[1], g[2]);
+    const double magnitude = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (!(magnitude <= kMaxGravity))
+    {
+      std::ostringstream text;
+      text << "<gravity> " << gravity << " is " << magnitude << " m/s^2; the plant takes at most " << kMaxGravity
+           << " m/s^2 (Earth: 9.8)";
+      throw DescriptionError(text.str());
+    }
   }
   for (auto* light = w->FirstChildElement("light"); light; light = light->NextSiblingElement("light"))
     if (light->Attribute("type") && std::string(light->Attribute("type")) == "directional")

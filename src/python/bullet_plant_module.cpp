@@ -2,6 +2,9 @@
 #include <algorithm>
 #include <deque>
 #include <iostream>
+#include <map>
+#include <memory>
+#include <stdexcept>
 #include <mutex>
 
 #include <pybind11/numpy.h>
@@ -15,7 +18,12 @@ using namespace bullet_plant;
 
 namespace
 {
-Param toParam(const py::handle& obj, const std::string& where)
+// Deeper than this a parameter tree is a mistake (and its recursion would outgrow the stack).
+constexpr size_t kMaxParamDepth = 100;
+
+// `open`: the dicts and lists being converted on the way here, so that one holding itself is an
+// error instead of an endless recursion (a crash).
+Param toParam(const py::handle& obj, const std::string& where, std::vector<PyObject*>& open)
 {
   if (py::isinstance<py::bool_>(obj))
     return Param::boolean(obj.cast<bool>());
@@ -25,22 +33,32 @@ Param toParam(const py::handle& obj, const std::string& where)
     return Param::real(obj.cast<double>());
   if (py::isinstance<py::str>(obj))
     return Param::string(obj.cast<std::string>());
-  if (py::isinstance<py::dict>(obj))
+  const bool is_dict = py::isinstance<py::dict>(obj);
+  if (is_dict || py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
   {
-    Param map = Param::map();
-    for (auto item : obj.cast<py::dict>())
+    if (std::find(open.begin(), open.end(), obj.ptr()) != open.end())
+      throw py::value_error("parameter '" + where + "' contains itself (a dict or list holding a reference to "
+                            "one of its parents); the parameter tree holds plain trees only");
+    if (open.size() >= kMaxParamDepth)
+      throw py::value_error("parameter '" + where + "' is nested deeper than " + std::to_string(kMaxParamDepth) +
+                            " levels; the parameter tree takes no deeper");
+    open.push_back(obj.ptr());
+    Param out = Param::map();
+    if (is_dict)
+      for (auto item : obj.cast<py::dict>())
+      {
+        std::string key = py::str(item.first);
+        out.set(key, toParam(item.second, (where == "/" ? where : where + "/") + key, open));
+      }
+    else
     {
-      std::string key = py::str(item.first);
-      map.set(key, toParam(item.second, where + "/" + key));
+      std::vector<Param> items;
+      for (auto item : obj)
+        items.push_back(toParam(item, where, open));
+      out = Param::list(items);
     }
-    return map;
-  }
-  if (py::isinstance<py::list>(obj) || py::isinstance<py::tuple>(obj))
-  {
-    std::vector<Param> items;
-    for (auto item : obj)
-      items.push_back(toParam(item, where));
-    return Param::list(items);
+    open.pop_back();
+    return out;
   }
   if (obj.is_none())
     return Param();
@@ -61,6 +79,53 @@ py::array_t<double> poseArray(const urdf::Pose& p)
                                                     p.rotation.y, p.rotation.z, p.rotation.w}.data());
 }
 
+// Raised by a Robot or ControllerManager handle whose robot World.remove took out.
+struct RobotRemoved : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// What Python holds for a robot. The robot may be removed while Python still holds the handle, so
+// the handle keeps no pointer of its own: it reads the robot from a cell its world empties on
+// World.remove (and when the world goes), and every call through it checks the cell first.
+struct RobotRef
+{
+  std::shared_ptr<Robot*> robot;
+  std::string name;
+
+  Robot& get() const
+  {
+    if (!*robot)
+      throw RobotRemoved("robot '" + name + "' was removed from the world (World.remove): this handle and its "
+                         "controller manager no longer refer to anything; spawn it again and use the new handle");
+    return **robot;
+  }
+};
+
+// The controller manager of a robot, reached through the robot's handle on every call.
+struct ManagerRef
+{
+  RobotRef robot;
+  ControllerManager& get() const;
+};
+
+// Binds f(Target&, args...) as a method of the handle type Ref: each call resolves the handle first.
+template <typename Ref, typename F, typename Ret, typename Target, typename... Args>
+auto throughHandle(F f, Ret (F::*)(Target&, Args...) const)
+{
+  return [f](const Ref& ref, Args... args) -> Ret { return f(ref.get(), std::forward<Args>(args)...); };
+}
+template <typename F>
+auto onRobot(F f)
+{
+  return throughHandle<RobotRef>(f, &F::operator());
+}
+template <typename F>
+auto onManager(F f)
+{
+  return throughHandle<ManagerRef>(f, &F::operator());
+}
+
 // A World plus the messages its log produced, kept for Python to read.
 struct PyWorld
 {
@@ -78,7 +143,32 @@ struct PyWorld
     for (const std::string& warning : d.warnings)
       messages.emplace_back(levelName(LogLevel::Warn), "world: " + warning);
   }
+  ~PyWorld()
+  {
+    for (auto& entry : handle_cells)
+      *entry.second = nullptr;
+  }
+
+  RobotRef handleTo(Robot& r)
+  {
+    std::shared_ptr<Robot*>& cell = handle_cells[r.name()];
+    if (!cell)
+      cell = std::make_shared<Robot*>(&r);
+    return RobotRef{cell, r.name()};
+  }
+  bool remove(const std::string& name)
+  {
+    auto it = handle_cells.find(name);
+    if (it != handle_cells.end())
+    {
+      *it->second = nullptr;
+      handle_cells.erase(it);
+    }
+    return world->remove(name);
+  }
+
   std::unique_ptr<World> world;
+  std::map<std::string, std::shared_ptr<Robot*>> handle_cells;  // robot name -> what its handles read
   std::mutex mutex;
   std::deque<std::pair<std::string, std::string>> messages;
   bool echo = true;
@@ -99,6 +189,11 @@ ControllerManager& managerOf(Robot& r)
   if (!cm)
     throw py::value_error("robot '" + r.name() + "' has no gazebo_ros_control plugin block, so no controller manager");
   return *cm;
+}
+
+ControllerManager& ManagerRef::get() const
+{
+  return managerOf(robot.get());
 }
 
 Controller& controllerOf(ControllerManager& cm, const std::string& name)
@@ -152,23 +247,25 @@ PYBIND11_MODULE(bullet_plant, m)
   m.doc() = "The Bullet plant that stands in for Gazebo + gazebo_ros_control, driven from Python.";
 
   py::register_exception<DescriptionError>(m, "DescriptionError", PyExc_ValueError);
+  py::register_exception<RobotRemoved>(m, "RobotRemovedError", PyExc_RuntimeError);
 
-  py::class_<Robot, std::unique_ptr<Robot, py::nodelete>>(m, "Robot")
-      .def_property_readonly("name", &Robot::name)
-      .def_property_readonly("namespace", &Robot::controlNamespace, "gazebo_ros_control's robot namespace")
-      .def_property_readonly("handles", [](Robot& r) {
+  py::class_<RobotRef>(m, "Robot")
+      .def_property_readonly("name", [](const RobotRef& ref) { return ref.name; }, "still readable after the robot was removed")
+      .def_property_readonly("removed", [](const RobotRef& ref) { return *ref.robot == nullptr; }, "whether World.remove took the robot out (every other use then raises RobotRemovedError)")
+      .def_property_readonly("namespace", onRobot([](Robot& r) { return r.controlNamespace(); }), "gazebo_ros_control's robot namespace")
+      .def_property_readonly("handles", onRobot([](Robot& r) {
         std::vector<std::string> names;
         for (JointHandle& h : r.handles())
           names.push_back(h.name());
         return names;
-      }, "joints with a transmission, in transmission order")
-      .def("interface", [](Robot& r, const std::string& joint) { return std::string(interfaceName(handleOf(r, joint).interface())); })
-      .def("has_pid", [](Robot& r, const std::string& joint) { return handleOf(r, joint).pid() != nullptr; },
+      }), "joints with a transmission, in transmission order")
+      .def("interface", onRobot([](Robot& r, const std::string& joint) { return std::string(interfaceName(handleOf(r, joint).interface())); }))
+      .def("has_pid", onRobot([](Robot& r, const std::string& joint) { return handleOf(r, joint).pid() != nullptr; }),
            "whether the joint is driven by its gazebo_ros_control/pid_gains loop")
-      .def("set_command", [](Robot& r, const std::string& joint, double value) { return handleOf(r, joint).setCommand(value); },
+      .def("set_command", onRobot([](Robot& r, const std::string& joint, double value) { return handleOf(r, joint).setCommand(value); }),
            py::arg("joint"), py::arg("value"),
            "command in the joint interface's unit; a non-finite value is rejected (returns False, counted)")
-      .def("set_effort_law", [](Robot& r, const std::string& joint, double feedforward, double stiffness,
+      .def("set_effort_law", onRobot([](Robot& r, const std::string& joint, double feedforward, double stiffness,
                                 double position_target, double damping, double velocity_target) {
         JointHandle& h = handleOf(r, joint);
         if (h.interface() != JointInterface::Effort)
@@ -180,13 +277,13 @@ PYBIND11_MODULE(bullet_plant, m)
         law.damping = damping;
         law.velocity_target = velocity_target;
         h.setEffortLaw(law);
-      }, py::arg("joint"), py::arg("feedforward") = 0.0, py::arg("stiffness") = 0.0, py::arg("position_target") = 0.0,
+      }), py::arg("joint"), py::arg("feedforward") = 0.0, py::arg("stiffness") = 0.0, py::arg("position_target") = 0.0,
          py::arg("damping") = 0.0, py::arg("velocity_target") = 0.0,
          "effort = feedforward + stiffness*(position_target - q) + damping*(velocity_target - qd), evaluated at the "
          "end of each step (what the PID controllers use); set_command replaces it")
-      .def("command", [](Robot& r, const std::string& joint) { return handleOf(r, joint).command(); })
-      .def("rejected_commands", [](Robot& r, const std::string& joint) { return handleOf(r, joint).rejectedCommands(); })
-      .def("limits", [](Robot& r, const std::string& joint) {
+      .def("command", onRobot([](Robot& r, const std::string& joint) { return handleOf(r, joint).command(); }))
+      .def("rejected_commands", onRobot([](Robot& r, const std::string& joint) { return handleOf(r, joint).rejectedCommands(); }))
+      .def("limits", onRobot([](Robot& r, const std::string& joint) {
         const JointLimits& l = handleOf(r, joint).limits();
         py::dict d;
         d["effort"] = l.effort;
@@ -197,21 +294,21 @@ PYBIND11_MODULE(bullet_plant, m)
           d["upper"] = l.upper;
         }
         return d;
-      })
-      .def_property_readonly("joint_names", &Robot::jointNames, "every movable joint of the URDF")
-      .def("joint_state", [](Robot& r, const std::string& joint) {
+      }))
+      .def_property_readonly("joint_names", onRobot([](Robot& r) { return r.jointNames(); }), "every movable joint of the URDF")
+      .def("joint_state", onRobot([](Robot& r, const std::string& joint) {
         double p, v, e;
         if (!r.jointState(joint, p, v, e))
           throw py::key_error("robot '" + r.name() + "' has no movable joint '" + joint + "'");
         return py::make_tuple(p, v, e);
-      }, "(position, velocity, effort) of a movable joint")
-      .def("base_pose", [](Robot& r) { return poseArray(r.basePose()); },
+      }), "(position, velocity, effort) of a movable joint")
+      .def("base_pose", onRobot([](Robot& r) { return poseArray(r.basePose()); }),
            "root link pose in the world: x y z qx qy qz qw")
-      .def("base_twist", [](Robot& r) {
+      .def("base_twist", onRobot([](Robot& r) {
         Twist t = r.baseTwist();
         return py::make_tuple(py::array_t<double>(3, t.linear.data()), py::array_t<double>(3, t.angular.data()));
-      }, "(linear, angular) velocity of the root link origin, world frame")
-      .def("link_pose", [](Robot& r, const std::string& link) {
+      }), "(linear, angular) velocity of the root link origin, world frame")
+      .def("link_pose", onRobot([](Robot& r, const std::string& link) {
         try
         {
           return poseArray(r.linkPose(link));
@@ -220,28 +317,30 @@ PYBIND11_MODULE(bullet_plant, m)
         {
           throw py::key_error(e.what());
         }
-      })
-      .def_property("e_stop", &Robot::eStop, &Robot::setEStop)
-      .def_property_readonly("recoveries", &Robot::recoveries)
-      .def_property_readonly("disabled", &Robot::disabled, "taken out of the physics after diverging step after step")
-      .def_property_readonly("controller_manager", [](Robot& r) { return &managerOf(r); },
-                             py::return_value_policy::reference_internal)
-      .def_property_readonly("control_period", &Robot::controlPeriod)
-      .def_property_readonly("sensors", [](Robot& r) {
+      }))
+      .def_property("e_stop", onRobot([](Robot& r) { return r.eStop(); }), onRobot([](Robot& r, bool on) { r.setEStop(on); }))
+      .def_property_readonly("recoveries", onRobot([](Robot& r) { return r.recoveries(); }))
+      .def_property_readonly("disabled", onRobot([](Robot& r) { return r.disabled(); }), "taken out of the physics after diverging step after step")
+      .def_property_readonly("controller_manager", py::cpp_function([](const RobotRef& ref) {
+        managerOf(ref.get());  // a robot without one says so here, not at first use
+        return ManagerRef{ref};
+      }, py::keep_alive<0, 1>()))
+      .def_property_readonly("control_period", onRobot([](Robot& r) { return r.controlPeriod(); }))
+      .def_property_readonly("sensors", onRobot([](Robot& r) {
         std::vector<std::string> names;
         for (Sensor* s : r.sensors())
           names.push_back(s->name());
         return names;
-      }, "the simulated sensors of the URDF's <gazebo reference> blocks")
-      .def("enable_sensor", [](Robot& r, const std::string& name, bool on) { sensorOf(r, name).setActive(on); },
+      }), "the simulated sensors of the URDF's <gazebo reference> blocks")
+      .def("enable_sensor", onRobot([](Robot& r, const std::string& name, bool on) { sensorOf(r, name).setActive(on); }),
            py::arg("name"), py::arg("on") = true, "sensors work only while enabled (subscribed, in ROS)")
-      .def("sensor_updates", [](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); })
-      .def("sensor_topic", [](Robot& r, const std::string& name) { return sensorOf(r, name).topic(); })
-      .def("sensor_namespace", [](Robot& r, const std::string& name) { return sensorOf(r, name).rosNamespace(); },
+      .def("sensor_updates", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); }))
+      .def("sensor_topic", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).topic(); }))
+      .def("sensor_namespace", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).rosNamespace(); }),
            "the namespace the sensor's gazebo_ros plugin publishes in")
-      .def("sensor_frame", [](Robot& r, const std::string& name) { return sensorOf(r, name).frameId(); },
+      .def("sensor_frame", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).frameId(); }),
            "the frame id the sensor's plugin publishes (tf_prefix resolved)")
-      .def("imu", [](Robot& r, const std::string& name) -> py::object {
+      .def("imu", onRobot([](Robot& r, const std::string& name) -> py::object {
         auto* imu = dynamic_cast<Imu*>(&sensorOf(r, name));
         if (!imu)
           throw py::key_error("sensor '" + name + "' is not an IMU");
@@ -256,8 +355,8 @@ PYBIND11_MODULE(bullet_plant, m)
         d["linear_acceleration"] =
             std::vector<double>{m.linear_acceleration.x, m.linear_acceleration.y, m.linear_acceleration.z};
         return std::move(d);
-      }, "the latest sensor_msgs/Imu fields (x y z w; IMU frame), or None before the first")
-      .def("ground_truth", [](Robot& r, const std::string& name) -> py::object {
+      }), "the latest sensor_msgs/Imu fields (x y z w; IMU frame), or None before the first")
+      .def("ground_truth", onRobot([](Robot& r, const std::string& name) -> py::object {
         auto* odometry = dynamic_cast<GroundTruthOdometry*>(&sensorOf(r, name));
         if (!odometry)
           throw py::key_error("sensor '" + name + "' is not a gazebo_ros_p3d plugin");
@@ -273,8 +372,8 @@ PYBIND11_MODULE(bullet_plant, m)
         d["linear"] = std::vector<double>{m.linear.x, m.linear.y, m.linear.z};
         d["angular"] = std::vector<double>{m.angular.x, m.angular.y, m.angular.z};
         return std::move(d);
-      }, "the latest nav_msgs/Odometry fields of a gazebo_ros_p3d plugin, or None before the first")
-      .def("scan", [](Robot& r, const std::string& name) -> py::object {
+      }), "the latest nav_msgs/Odometry fields of a gazebo_ros_p3d plugin, or None before the first")
+      .def("scan", onRobot([](Robot& r, const std::string& name) -> py::object {
         auto* lidar = dynamic_cast<Lidar*>(&sensorOf(r, name));
         if (!lidar)
           throw py::key_error("sensor '" + name + "' is not a lidar");
@@ -293,8 +392,8 @@ PYBIND11_MODULE(bullet_plant, m)
         d["range_max"] = s.range_max;
         d["ranges"] = py::array_t<float>(s.ranges.size(), s.ranges.data());
         return std::move(d);
-      }, "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first")
-      .def("image", [](Robot& r, const std::string& name) -> py::object {
+      }), "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first")
+      .def("image", onRobot([](Robot& r, const std::string& name) -> py::object {
         auto* camera = dynamic_cast<Camera*>(&sensorOf(r, name));
         if (!camera)
           throw py::key_error("sensor '" + name + "' is not a camera");
@@ -314,7 +413,7 @@ PYBIND11_MODULE(bullet_plant, m)
           d["points"] = py::array_t<float>({f.height, f.width, 3}, f.points.data());
         }
         return std::move(d);
-      }, "the latest camera frame: rgb (H x W x 3 uint8), for depth cameras depth (H x W, m, NaN: no hit) and "
+      }), "the latest camera frame: rgb (H x W x 3 uint8), for depth cameras depth (H x W, m, NaN: no hit) and "
          "points (H x W x 3, optical frame); K the pinhole matrix; None before the first");
 
   py::class_<Pid>(m, "Pid", "control_toolbox::Pid, as the plant's controllers and pid_gains loops use it")
@@ -349,16 +448,19 @@ PYBIND11_MODULE(bullet_plant, m)
       .def_property_readonly("i_error", &Pid::iError)
       .def_property_readonly("command", &Pid::command);
 
-  py::class_<ControllerManager, std::unique_ptr<ControllerManager, py::nodelete>>(m, "ControllerManager",
+  py::class_<ManagerRef>(m, "ControllerManager",
       "controller_manager's services for one robot (its namespace: .ns); errors go to World.messages()")
-      .def_property_readonly("ns", &ControllerManager::ns)
-      .def("load", &ControllerManager::loadController, py::arg("name"))
-      .def("unload", &ControllerManager::unloadController, py::arg("name"))
-      .def("switch", &ControllerManager::switchController, py::arg("start") = std::vector<std::string>(),
+      .def_property_readonly("ns", onManager([](ControllerManager& cm) { return cm.ns(); }))
+      .def("load", onManager([](ControllerManager& cm, const std::string& name) { return cm.loadController(name); }), py::arg("name"))
+      .def("unload", onManager([](ControllerManager& cm, const std::string& name) { return cm.unloadController(name); }), py::arg("name"))
+      .def("switch", onManager([](ControllerManager& cm, const std::vector<std::string>& start, const std::vector<std::string>& stop,
+                                   int strictness, bool start_asap, double timeout) {
+        return cm.switchController(start, stop, strictness, start_asap, timeout);
+      }), py::arg("start") = std::vector<std::string>(),
            py::arg("stop") = std::vector<std::string>(), py::arg("strictness") = int(ControllerManager::STRICT),
            py::arg("start_asap") = false, py::arg("timeout") = 0.0,
            "validated at once; applied after the next control update's controller updates, or at once while paused")
-      .def("list", [](ControllerManager& cm) {
+      .def("list", onManager([](ControllerManager& cm) {
         py::list out;
         for (const ControllerInfo& info : cm.listControllers())
         {
@@ -378,21 +480,22 @@ PYBIND11_MODULE(bullet_plant, m)
           out.append(d);
         }
         return out;
-      })
-      .def("list_types", [](ControllerManager& cm) {
+      }))
+      .def("list_types", onManager([](ControllerManager& cm) {
         std::vector<std::string> types = cm.listControllerTypes();
         return py::make_tuple(types, std::vector<std::string>(types.size(), "controller_interface::ControllerBase"));
-      }, "(types, base_classes)")
-      .def("reload_libraries", &ControllerManager::reloadControllerLibraries, py::arg("force_kill") = false)
-      .def("spawn", [](ControllerManager& cm, const std::vector<std::string>& names) {
+      }), "(types, base_classes)")
+      .def("reload_libraries", onManager([](ControllerManager& cm, bool force_kill) { return cm.reloadControllerLibraries(force_kill); }),
+           py::arg("force_kill") = false)
+      .def("spawn", onManager([](ControllerManager& cm, const std::vector<std::string>& names) {
         std::vector<std::string> loaded;
         for (const std::string& n : names)
           if (cm.loadController(n))
             loaded.push_back(n);
         bool started = cm.switchController(loaded, {}, ControllerManager::STRICT);
         return py::make_tuple(loaded, started);
-      }, py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
-      .def("command", [](ControllerManager& cm, const std::string& name, py::object value) {
+      }), py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
+      .def("command", onManager([](ControllerManager& cm, const std::string& name, py::object value) {
         Controller& c = controllerOf(cm, name);
         switch (c.commandTopic())
         {
@@ -405,11 +508,11 @@ PYBIND11_MODULE(bullet_plant, m)
           }
           default: throw py::key_error("controller '" + name + "' takes no command");
         }
-      }, py::arg("name"), py::arg("value"),
+      }), py::arg("name"), py::arg("value"),
            "what a Float64 (a number) or a Float64MultiArray (a list: the JointGroup controllers) on "
            "<controller>/command does, or a Twist (linear.x, angular.z) on <controller>/cmd_vel; False for a "
            "rejected command")
-      .def("odometry", [](ControllerManager& cm, const std::string& name) -> py::object {
+      .def("odometry", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
         const OdometrySample* s = controllerOf(cm, name).latestOdometry();
         if (!s)
           return py::none();
@@ -421,16 +524,16 @@ PYBIND11_MODULE(bullet_plant, m)
         d["linear"] = s->linear;
         d["angular"] = s->angular;
         return d;
-      }, py::arg("name"), "the latest nav_msgs/Odometry a drive controller produced: stamp, x, y, heading, linear, angular")
-      .def("joint_states", [](ControllerManager& cm, const std::string& name) -> py::object {
+      }), py::arg("name"), "the latest nav_msgs/Odometry a drive controller produced: stamp, x, y, heading, linear, angular")
+      .def("joint_states", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
         const JointStateSample* s = controllerOf(cm, name).latestJointState();
         return s ? py::object(jointStateDict(*s)) : py::none();
-      }, py::arg("name") = "joint_state_controller", "the latest sensor_msgs/JointState a joint state controller produced")
-      .def("state", [](ControllerManager& cm, const std::string& name) -> py::object {
+      }), py::arg("name") = "joint_state_controller", "the latest sensor_msgs/JointState a joint state controller produced")
+      .def("state", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
         const ControllerStateSample* s = controllerOf(cm, name).latestControllerState();
         return s ? py::object(controllerStateDict(*s)) : py::none();
-      }, py::arg("name"), "the latest control_msgs/JointControllerState of a PID controller")
-      .def("samples", [](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).samplesProduced(); },
+      }), py::arg("name"), "the latest control_msgs/JointControllerState of a PID controller")
+      .def("samples", onManager([](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).samplesProduced(); }),
            py::arg("name"), "how many messages the controller has produced");
 
   py::class_<PyWorld>(m, "World")
@@ -478,7 +581,8 @@ PYBIND11_MODULE(bullet_plant, m)
         }
         if (!py::isinstance<py::dict>(tree))
           throw py::type_error("load_params takes a dict or the path of a YAML file holding one");
-        w.world->params().set(ns, toParam(tree, ns));
+        std::vector<PyObject*> open;
+        w.world->params().set(ns, toParam(tree, ns, open));
       }, py::arg("tree"), py::arg("namespace") = "/",
          "merge a dict or YAML file into the parameter tree under namespace, as `rosparam load`: its top "
          "key (e.g. tianracer) is the robot namespace the controller manager reads")
@@ -504,17 +608,18 @@ PYBIND11_MODULE(bullet_plant, m)
       .def_property_readonly("steps", [](PyWorld& w) { return w.world->steps(); })
       .def("spawn", [](PyWorld& w, const std::string& urdf, const std::string& name, std::vector<double> pose,
                        const std::string& ns, std::map<std::string, double> joints) {
-        return &w.world->spawn(urdf, name, poseFromTuple(pose), ns, joints);
+        return w.handleTo(w.world->spawn(urdf, name, poseFromTuple(pose), ns, joints));
       }, py::arg("urdf"), py::arg("name"), py::arg("pose") = std::vector<double>(6, 0.0), py::arg("namespace") = "",
-         py::arg("joints") = std::map<std::string, double>(), py::return_value_policy::reference_internal,
+         py::arg("joints") = std::map<std::string, double>(), py::keep_alive<0, 1>(),
          "add a robot from URDF text; raises DescriptionError naming what is wrong")
-      .def("remove", [](PyWorld& w, const std::string& name) { return w.world->remove(name); })
+      .def("remove", [](PyWorld& w, const std::string& name) { return w.remove(name); }, py::arg("name"),
+           "take a robot out; its handles then raise RobotRemovedError")
       .def("robot", [](PyWorld& w, const std::string& name) {
         Robot* r = w.world->robot(name);
         if (!r)
           throw py::key_error("no robot named '" + name + "'");
-        return r;
-      }, py::return_value_policy::reference_internal)
+        return w.handleTo(*r);
+      }, py::keep_alive<0, 1>())
       .def_property_readonly("robots", [](PyWorld& w) {
         std::vector<std::string> names;
         for (Robot* r : w.world->robots())

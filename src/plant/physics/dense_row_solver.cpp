@@ -132,6 +132,45 @@ bool DenseRowSolver::contactRowsApply(const btPersistentManifold& manifold, cons
   return bodySlot((a ? a : b)->m_multiBody) >= 0;
 }
 
+// The error reduction and constraint force mixing of a contact's normal row, as Bullet's solvers
+// choose them from the point's flags (erp and cfm hold the solver's defaults on entry).
+static void normalRowSoftness(const btManifoldPoint& point, const btContactSolverInfo& info, btScalar& erp, btScalar& cfm)
+{
+  if (point.m_contactPointFlags & (BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP))
+  {
+    if (point.m_contactPointFlags & BT_CONTACT_FLAG_HAS_CONTACT_CFM)
+      cfm = point.m_contactCFM;
+    if (point.m_contactPointFlags & BT_CONTACT_FLAG_HAS_CONTACT_ERP)
+      erp = point.m_contactERP;
+  }
+  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING)
+  {
+    const btScalar denominator = std::max(info.m_timeStep * point.m_combinedContactStiffness1 + point.m_combinedContactDamping1,
+                                          btScalar(SIMD_EPSILON));
+    cfm = btScalar(1) / denominator;
+    erp = info.m_timeStep * point.m_combinedContactStiffness1 / denominator;
+  }
+}
+
+// ODE's contact_max_correcting_vel for every solver path (Bullet's rigid and multibody rows and
+// setupContactRow): each turns a penetration into the velocity (depth - slop) * erp / dt, so the
+// depth the rows see is held to what max_correcting_velocity_ corrects in one step. The manifold
+// recomputes its depths from the bodies' positions next step, so nothing of the real depth is lost.
+void DenseRowSolver::limitCorrectingVelocity(btPersistentManifold& manifold, const btContactSolverInfo& info) const
+{
+  for (int j = 0; j < manifold.getNumContacts(); ++j)
+  {
+    btManifoldPoint& point = manifold.getContactPoint(j);
+    btScalar erp = info.m_erp2, cfm = info.m_globalCfm;
+    normalRowSoftness(point, info, erp, cfm);
+    if (erp <= 0)
+      continue;
+    const btScalar deepest = -max_correcting_velocity_ * info.m_timeStep / erp - info.m_linearSlop;
+    if (point.m_distance1 < deepest)
+      point.m_distance1 = deepest;
+  }
+}
+
 // setupMultiBodyContactConstraint for a multibody on one side and the static world on the other.
 void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
                                      btManifoldPoint& point, const btContactSolverInfo& info, bool friction)
@@ -147,22 +186,7 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
   btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
   if (!friction)
-  {
-    if (point.m_contactPointFlags & (BT_CONTACT_FLAG_HAS_CONTACT_CFM | BT_CONTACT_FLAG_HAS_CONTACT_ERP))
-    {
-      if (point.m_contactPointFlags & BT_CONTACT_FLAG_HAS_CONTACT_CFM)
-        cfm = point.m_contactCFM;
-      if (point.m_contactPointFlags & BT_CONTACT_FLAG_HAS_CONTACT_ERP)
-        erp = point.m_contactERP;
-    }
-    else if (point.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING)
-    {
-      const btScalar denominator = std::max(info.m_timeStep * point.m_combinedContactStiffness1 + point.m_combinedContactDamping1,
-                                            btScalar(SIMD_EPSILON));
-      cfm = btScalar(1) / denominator;
-      erp = info.m_timeStep * point.m_combinedContactStiffness1 / denominator;
-    }
-  }
+    normalRowSoftness(point, info, erp, cfm);
   cfm /= info.m_timeStep;
 
   int& velocity_index = on_a ? row.m_deltaVelAindex : row.m_deltaVelBindex;
@@ -285,6 +309,8 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
     const btMultiBodyLinkCollider* collider = btMultiBodyLinkCollider::upcast(object);
     return collider ? collider->m_multiBody : nullptr;
   };
+  for (int i = 0; i < numManifolds; ++i)
+    limitCorrectingVelocity(*manifolds[i], info);
   // Bullet's articulated warm starting moves velocities while it builds rows: left to Bullet.
   if (info.m_solverMode & SOLVER_USE_ARTICULATED_WARMSTARTING)
   {
