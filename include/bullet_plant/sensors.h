@@ -104,6 +104,7 @@ public:
 private:
   friend struct detail::SensorRendering;
   CameraFrame frame_;
+  std::vector<float> rendered_rgb_, rendered_depth_;  // what the rays gave, before noise and rounding
 };
 
 }  // namespace bullet_plant

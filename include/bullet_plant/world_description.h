@@ -27,6 +27,10 @@ struct WorldDescription
   double real_time_factor = 1.0;
   urdf::Vector3 gravity{0, 0, -9.8};
   urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
+  // <scene>: what cameras see where nothing is hit, and the share of light a surface facing away
+  // from the sun still gets (the mean of <ambient>'s red, green and blue).
+  Rgba background{0.70f, 0.80f, 0.95f, 1.0f};
+  double ambient = 0.35;
   std::vector<StaticCollision> collisions;
   std::vector<std::string> warnings;  // each unsupported element once: what, where, left out
   std::string file;      // the world file; "" when parsed from text

@@ -51,6 +51,7 @@ struct Robot::Internals
   int64_t recovery_window_start_ns = -1;  // the first recovery of the current simulated second
   int recoveries_in_window = 0;
   bool disabled = false;                  // out of the physics after diverging step after step
+  std::vector<int> ray_bodies;            // each body's handle in the world's RayScene (-1: no shapes)
 
   // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
   // then recovery, readSim, sensors.
@@ -79,11 +80,14 @@ struct World::Internals
   std::vector<std::unique_ptr<btCollisionShape>> static_shapes;
   std::vector<std::unique_ptr<btCollisionObject>> static_objects;
   std::vector<RayPrimitive> static_ray_shapes;
+  std::unique_ptr<RayScene> ray_scene;  // built when a sensor first needs it
 
   std::vector<std::unique_ptr<Robot>> robots;
 
-  // Everything sensors can see, in the world frame: the static scene and every robot's shapes.
-  std::vector<RayPrimitive> rayScene() const;
+  // Everything sensors can see: the static scene and every robot's bodies where they are now
+  // (a robot's bodies are built into it once). `hidden_from_lidars` as RayScene::commit.
+  const RayScene& rayScene(const void* hidden_from_lidars);
+  Lighting lighting() const;
 };
 
 // A robot's side of the plant (for the library and its tests).

@@ -46,7 +46,7 @@ struct Body
   btCollisionShape* shape = nullptr;
   std::unique_ptr<btCompoundShape> compound;
   std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
-  std::vector<RayPrimitive> ray_shapes;  // the same shapes, in the COM frame, for sensors
+  std::vector<RayPrimitive> ray_shapes;  // for sensors, in the COM frame: the collisions (lidars) and visuals (cameras)
   double mu = 1.0;
 };
 
@@ -83,8 +83,6 @@ struct RobotMultibody
   btTransform rootWorldTransform() const { return bullet->getBaseWorldTransform() * bodies[0].urdf_from_com.inverse(); }
   // After positions were set by hand: link transforms and colliders follow.
   void updateKinematics();
-  // The bodies' collision shapes as ray casting primitives in the world frame.
-  void appendRayPrimitives(std::vector<RayPrimitive>& out) const;
 };
 
 }  // namespace bullet_plant

@@ -82,7 +82,7 @@ void Camera::intrinsics(double& fx, double& fy, double& cx, double& cy) const
 
 // ------------------------------------------------------------------------------------ rendering
 
-void detail::SensorRendering::scan(Lidar& lidar, const RayCaster& caster, const Frame& pose, int64_t time_ns)
+void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Frame& pose, int64_t time_ns)
 {
   const SensorDescription& d = lidar.description();
   const int n = d.horizontal_samples;
@@ -91,7 +91,7 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayCaster& caster, const 
   for (int v = 1; v < d.vertical_samples; ++v)
     elevations[v] = d.vertical_min_angle + v * (d.vertical_max_angle - d.vertical_min_angle) / (d.vertical_samples - 1);
   std::vector<double> distances;
-  caster.castFan(pose, d.horizontal_min_angle, da, n, elevations, d.range_max, distances);
+  scene.castFan(pose, d.horizontal_min_angle, da, n, elevations, 0.0, d.range_max, distances);
 
   LaserScan& scan = lidar.scan_;
   scan.stamp_ns = time_ns;
@@ -123,10 +123,11 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayCaster& caster, const 
   }
 }
 
-// Ray casting through every pixel centre of a pinhole camera: the colour of what is hit, lit by one
-// directional light with an ambient term, the sky where nothing is hit.
-void detail::SensorRendering::render(Camera& camera, const RayCaster& caster, const Frame& pose,
-                                     const urdf::Vector3& light_direction, int64_t time_ns)
+// Ray casting through every pixel centre of a pinhole camera (RayScene::castPinhole: lit colours
+// and depths, in parallel), then noise in pixel order from the camera's own generator, so frames are
+// the same whatever the number of threads.
+void detail::SensorRendering::render(Camera& camera, const RayScene& scene, const Frame& pose, const Lighting& lighting,
+                                     int64_t time_ns)
 {
   const SensorDescription& d = camera.description();
   CameraFrame& out = camera.frame_;
@@ -137,60 +138,45 @@ void detail::SensorRendering::render(Camera& camera, const RayCaster& caster, co
   out.frame_id = camera.frameId();
   out.width = w;
   out.height = h;
-  out.rgb.resize(size_t(w) * h * 3);
-  out.depth.assign(depth ? size_t(w) * h : 0, std::numeric_limits<float>::quiet_NaN());
-  out.points.assign(depth ? size_t(w) * h * 3 : 0, std::numeric_limits<float>::quiet_NaN());
-  const double near = d.clip_near > 0 ? d.clip_near : 0.0, far = d.clip_far > 0 ? d.clip_far : 100.0;
-  double light[3] = {-light_direction.x, -light_direction.y, -light_direction.z};  // towards the light
-  const double light_norm = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
-  for (double& l : light)
-    l = light_norm > 0 ? l / light_norm : 0.0;
-  static const float kSky[3] = {0.70f, 0.80f, 0.95f};
-  constexpr double kAmbient = 0.35;
+  PinholeRays rays;
+  rays.width = w;
+  rays.height = h;
+  rays.fx = out.fx;
+  rays.fy = out.fy;
+  rays.cx = out.cx;
+  rays.cy = out.cy;
+  rays.near = d.clip_near > 0 ? d.clip_near : 0.0;
+  rays.far = d.clip_far > 0 ? d.clip_far : 100.0;
+  PinholeImage image;  // the camera's buffers, kept from frame to frame
+  image.rgb.swap(camera.rendered_rgb_);
+  image.depth.swap(camera.rendered_depth_);
+  scene.castPinhole(pose, rays, lighting, image);
+
+  const size_t pixels = size_t(w) * h;
+  out.rgb.resize(pixels * 3);
   const bool noisy = d.noise.gaussian && d.noise.stddev > 0;
   std::normal_distribution<double> noise(d.noise.mean, noisy ? d.noise.stddev : 1.0);
-  for (int v = 0; v < h; ++v)
+  for (size_t k = 0; k < pixels * 3; ++k)
+  {
+    const double value = image.rgb[k] + (noisy ? noise(camera.noise_) : 0.0);
+    out.rgb[k] = uint8_t(std::lround(std::max(0.0, std::min(1.0, value)) * 255.0));
+  }
+  out.depth.assign(depth ? pixels : 0, std::numeric_limits<float>::quiet_NaN());
+  out.points.assign(depth ? pixels * 3 : 0, std::numeric_limits<float>::quiet_NaN());
+  for (int v = 0; depth && v < h; ++v)
     for (int u = 0; u < w; ++u)
     {
-      // optical (x right, y down, z forward) -> camera link (x forward, y left, z up)
-      const double xo = (u - out.cx) / out.fx, yo = (v - out.cy) / out.fy;
-      const double length = std::sqrt(1.0 + xo * xo + yo * yo);
-      const double in_link[3] = {1.0 / length, -xo / length, -yo / length};
-      double dir[3];
-      pose.rotate(in_link, dir);
-      const RayHit hit = caster.castHit(pose.t, dir, far * length);
-      const double z = hit.distance / length;  // depth along the optical axis
       const size_t pixel = size_t(v) * w + u;
-      float colour[3] = {kSky[0], kSky[1], kSky[2]};
-      if (hit.primitive && z >= near)
-      {
-        double point[3] = {pose.t[0] + dir[0] * hit.distance, pose.t[1] + dir[1] * hit.distance,
-                           pose.t[2] + dir[2] * hit.distance};
-        double normal[3];
-        hit.primitive->normalAt(point, normal, hit.triangle);
-        if (normal[0] * dir[0] + normal[1] * dir[1] + normal[2] * dir[2] > 0)  // a triangle seen from behind
-          for (double& n : normal)
-            n = -n;
-        const double diffuse = std::max(0.0, normal[0] * light[0] + normal[1] * light[1] + normal[2] * light[2]);
-        const double shade = kAmbient + (1.0 - kAmbient) * diffuse;
-        const Rgba& c = hit.primitive->colourAt(hit.triangle);
-        colour[0] = float(c.r * shade);
-        colour[1] = float(c.g * shade);
-        colour[2] = float(c.b * shade);
-        if (depth)
-        {
-          out.depth[pixel] = float(z);
-          out.points[3 * pixel] = float(xo * z);
-          out.points[3 * pixel + 1] = float(yo * z);
-          out.points[3 * pixel + 2] = float(z);
-        }
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        double value = colour[k] + (noisy ? noise(camera.noise_) : 0.0);
-        out.rgb[3 * pixel + k] = uint8_t(std::lround(std::max(0.0, std::min(1.0, value)) * 255.0));
-      }
+      const float z = image.depth[pixel];
+      if (std::isinf(z))
+        continue;
+      out.depth[pixel] = z;
+      out.points[3 * pixel] = float((u - out.cx) / out.fx * z);
+      out.points[3 * pixel + 1] = float((v - out.cy) / out.fy * z);
+      out.points[3 * pixel + 2] = z;
     }
+  camera.rendered_rgb_.swap(image.rgb);
+  camera.rendered_depth_.swap(image.depth);
 }
 
 }  // namespace bullet_plant

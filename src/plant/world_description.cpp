@@ -1,5 +1,6 @@
 #include "bullet_plant/world_description.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -131,6 +132,16 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
     return false;
   }
   return true;
+}
+
+// "r g b" or "r g b a", as SDF colours are written.
+std::vector<double> colourNumbers(const std::string& text, const std::string& what)
+{
+  std::istringstream words(text);
+  size_t count = 0;
+  for (std::string word; words >> word;)
+    ++count;
+  return xml::numbers(text, count == 4 ? 4 : 3, what);
 }
 
 Rgba readColour(const tinyxml2::XMLElement* visual)
@@ -347,6 +358,21 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
       std::vector<double> d = xml::numbers(xml::childText(light, "direction", "-0.5 0.1 -0.9"), 3, "<light><direction>");
       world.light_direction = urdf::Vector3(d[0], d[1], d[2]);
     }
+  if (const tinyxml2::XMLElement* scene = w->FirstChildElement("scene"))
+  {
+    const std::string background = xml::childText(scene, "background", "");
+    if (!background.empty())
+    {
+      std::vector<double> c = colourNumbers(background, "<scene><background>");
+      world.background = {float(c[0]), float(c[1]), float(c[2]), 1.0f};
+    }
+    const std::string ambient = xml::childText(scene, "ambient", "");
+    if (!ambient.empty())
+    {
+      std::vector<double> c = colourNumbers(ambient, "<scene><ambient>");
+      world.ambient = std::max(0.0, std::min(1.0, (c[0] + c[1] + c[2]) / 3.0));
+    }
+  }
   for (auto* e = w->FirstChildElement(); e; e = e->NextSiblingElement())
   {
     std::string tag = e->Name();
