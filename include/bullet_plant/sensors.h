@@ -68,6 +68,7 @@ public:
 private:
   friend struct detail::SensorRendering;
   LaserScan scan_;
+  std::vector<double> directions_;  // its rays in its frame, computed at the first scan
 };
 
 // A camera frame: sensor_msgs/Image (rgb8) and, for depth cameras, a 32FC1 depth image and the

@@ -21,56 +21,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPlaneHalfSize = 1000.0;
 constexpr double kPlaneTile = 100.0;
 
-// ------------------------------------------------------------------------ analytic intersections
-
-double intersectSphere(const double o[3], const double d[3], double r)
-{
-  double b = dot(o, d);
-  double c = dot(o, o) - r * r;
-  if (c <= 0.0)
-    return kInf;  // starts inside
-  double disc = b * b - c;
-  if (disc < 0.0 || b > 0.0)
-    return kInf;
-  return -b - std::sqrt(disc);
-}
-
-double intersectCylinder(const double o[3], const double d[3], double r, double half_length)
-{
-  if (o[0] * o[0] + o[1] * o[1] < r * r && std::abs(o[2]) < half_length)
-    return kInf;  // starts inside
-  double best = kInf;
-  // side: (ox + t dx)^2 + (oy + t dy)^2 = r^2
-  double a = d[0] * d[0] + d[1] * d[1];
-  if (a > 1e-18)
-  {
-    double b = o[0] * d[0] + o[1] * d[1];
-    double c = o[0] * o[0] + o[1] * o[1] - r * r;
-    double disc = b * b - a * c;
-    if (disc >= 0.0)
-    {
-      double t = (-b - std::sqrt(disc)) / a;
-      if (t >= 0.0 && std::abs(o[2] + t * d[2]) <= half_length)
-        best = t;
-    }
-  }
-  // caps
-  if (d[2] != 0.0)
-  {
-    for (double z : {-half_length, half_length})
-    {
-      double t = (z - o[2]) / d[2];
-      if (t >= 0.0 && t < best)
-      {
-        double x = o[0] + t * d[0], y = o[1] + t * d[1];
-        if (x * x + y * y <= r * r)
-          best = t;
-      }
-    }
-  }
-  return best;
-}
-
 // Outward unit normal of a sphere or cylinder at a point on it (shape frame).
 void curvedNormal(const RayPrimitive& p, const double q[3], double n[3])
 {
@@ -335,6 +285,56 @@ void frameToColumnMajor(const Frame& f, float out[12])
 
 }  // namespace
 
+// ------------------------------------------------------------------------ analytic intersections
+
+double intersectSphere(const double o[3], const double d[3], double r)
+{
+  double b = dot(o, d);
+  double c = dot(o, o) - r * r;
+  if (c <= 0.0)
+    return kInf;  // starts inside
+  double disc = b * b - c;
+  if (disc < 0.0 || b > 0.0)
+    return kInf;
+  return -b - std::sqrt(disc);
+}
+
+double intersectCylinder(const double o[3], const double d[3], double r, double half_length)
+{
+  if (o[0] * o[0] + o[1] * o[1] < r * r && std::abs(o[2]) < half_length)
+    return kInf;  // starts inside
+  double best = kInf;
+  // side: (ox + t dx)^2 + (oy + t dy)^2 = r^2
+  double a = d[0] * d[0] + d[1] * d[1];
+  if (a > 1e-18)
+  {
+    double b = o[0] * d[0] + o[1] * d[1];
+    double c = o[0] * o[0] + o[1] * o[1] - r * r;
+    double disc = b * b - a * c;
+    if (disc >= 0.0)
+    {
+      double t = (-b - std::sqrt(disc)) / a;
+      if (t >= 0.0 && std::abs(o[2] + t * d[2]) <= half_length)
+        best = t;
+    }
+  }
+  // caps
+  if (d[2] != 0.0)
+  {
+    for (double z : {-half_length, half_length})
+    {
+      double t = (z - o[2]) / d[2];
+      if (t >= 0.0 && t < best)
+      {
+        double x = o[0] + t * d[0], y = o[1] + t * d[1];
+        if (x * x + y * y <= r * r)
+          best = t;
+      }
+    }
+  }
+  return best;
+}
+
 void setRayThreads(int n)
 {
   std::lock_guard<std::mutex> lock(pool_mutex);
@@ -522,6 +522,9 @@ int RayScene::addBody(const void* owner, std::vector<RayPrimitive> shapes)
   instance.owner = owner;
   instances_.push_back(std::move(instance));
   attach(instances_.back());
+  if (owner == hidden_from_lidars_)
+    hidden_from_lidars_ = nullptr;  // the next commit hides it too
+  changed_ = true;
   return int(instances_.size()) - 1;
 }
 
@@ -535,7 +538,9 @@ void RayScene::removeOwner(const void* owner)
       instance.set.reset();
       instance.owner = nullptr;
     }
-  rtcCommitScene(top_);
+  if (owner == hidden_from_lidars_)
+    hidden_from_lidars_ = nullptr;
+  changed_ = true;
 }
 
 bool RayScene::hasOwner(const void* owner) const
@@ -547,26 +552,38 @@ bool RayScene::hasOwner(const void* owner) const
 void RayScene::setPose(int body, const Frame& world_from_body)
 {
   Instance& instance = instances_.at(size_t(body));
+  if (std::equal(world_from_body.R, world_from_body.R + 9, instance.pose.R) &&
+      std::equal(world_from_body.t, world_from_body.t + 3, instance.pose.t))
+    return;
   instance.pose = world_from_body;
+  std::copy(world_from_body.R, world_from_body.R + 9, instance.rotation);
   RTCGeometry g = rtcGetGeometry(top_, instance.geometry_id);
   float m[12];
   frameToColumnMajor(world_from_body, m);
   rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
   rtcCommitGeometry(g);
+  changed_ = true;
 }
 
 void RayScene::commit(const void* hidden_from_lidars)
 {
-  for (Instance& instance : instances_)
+  if (hidden_from_lidars != hidden_from_lidars_)
   {
-    if (!instance.set)
-      continue;
-    RTCGeometry g = rtcGetGeometry(top_, instance.geometry_id);
-    const bool hidden = hidden_from_lidars != nullptr && instance.owner == hidden_from_lidars;
-    rtcSetGeometryMask(g, hidden ? kSeenByAll & ~kSeenByLidars : kSeenByAll);
-    rtcCommitGeometry(g);
+    for (Instance& instance : instances_)
+    {
+      if (!instance.set || instance.owner == nullptr ||
+          (instance.owner != hidden_from_lidars && instance.owner != hidden_from_lidars_))
+        continue;
+      RTCGeometry g = rtcGetGeometry(top_, instance.geometry_id);
+      rtcSetGeometryMask(g, instance.owner == hidden_from_lidars ? kSeenByAll & ~kSeenByLidars : kSeenByAll);
+      rtcCommitGeometry(g);
+    }
+    hidden_from_lidars_ = hidden_from_lidars;
+    changed_ = true;
   }
-  rtcCommitScene(top_);
+  if (changed_)
+    rtcCommitScene(top_);
+  changed_ = false;
 }
 
 // ------------------------------------------------------------------------------------- casting
@@ -670,16 +687,26 @@ struct alignas(64) Packet
 };
 }  // namespace
 
-void RayScene::castFan(const Frame& sensor, double a0, double da, int n_azimuth, const std::vector<double>& elevations,
-                       double near, double far, std::vector<double>& out) const
+std::vector<double> fanDirections(double a0, double da, int n_azimuth, const std::vector<double>& elevations)
 {
-  const int n_rows = int(elevations.size());
-  const int n = n_rows * std::max(0, n_azimuth);
+  std::vector<double> out;
+  out.reserve(3 * elevations.size() * size_t(std::max(0, n_azimuth)));
+  for (double e : elevations)
+    for (int i = 0; i < n_azimuth; ++i)
+    {
+      const double a = a0 + i * da;
+      out.insert(out.end(), {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)});
+    }
+  return out;
+}
+
+void RayScene::castRays(const Frame& sensor, const std::vector<double>& directions, double near, double far,
+                        std::vector<double>& out) const
+{
+  const int n = int(directions.size() / 3);
   out.assign(size_t(n), kInf);
-  if (n == 0)
-    return;
   const float origin[3] = {float(sensor.t[0]), float(sensor.t[1]), float(sensor.t[2])};
-  constexpr int kPacketsPerTask = 8;
+  constexpr int kPacketsPerTask = 16;
   const int packets = (n + kPacket - 1) / kPacket;
   parallelTasks((packets + kPacketsPerTask - 1) / kPacketsPerTask, [&](int task) {
     RTCIntersectContext context;
@@ -690,12 +717,8 @@ void RayScene::castFan(const Frame& sensor, double a0, double da, int n_azimuth,
       packet.clear();
       for (int lane = 0; lane < kPacket && k * kPacket + lane < n; ++lane)
       {
-        const int ray = k * kPacket + lane;
-        const double e = elevations[size_t(ray / n_azimuth)], a = a0 + (ray % n_azimuth) * da;
-        // Gazebo's convention: positive elevation tilts the ray up (towards +z of the sensor).
-        const double local[3] = {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
         double dir[3];
-        sensor.rotate(local, dir);
+        sensor.rotate(&directions[3 * size_t(k * kPacket + lane)], dir);
         packet.set(lane, origin, dir, float(near), float(far), kSeenByLidars);
       }
       rtcIntersect16(packet.valid, top_, &context, &packet.rh);
@@ -706,12 +729,31 @@ void RayScene::castFan(const Frame& sensor, double a0, double da, int n_azimuth,
   });
 }
 
+namespace
+{
+uint8_t toByte(float value)
+{
+  // value >= 0 after the clamp, where rounding half up is lround's rounding half away from zero
+  return uint8_t(int(std::max(0.0f, std::min(1.0f, value)) * 255.0f + 0.5f));
+}
+}  // namespace
+
 void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const
 {
   const int w = rays.width, h = rays.height;
-  out.rgb.resize(size_t(w) * h * 3);
+  out.rgb8.resize(size_t(w) * h * 3);
+  out.rgb.resize(rays.linear_rgb ? size_t(w) * h * 3 : 0);
   out.depth.resize(size_t(w) * h);
   const float origin[3] = {float(pose.t[0]), float(pose.t[1]), float(pose.t[2])};
+  // A pixel's ray (unnormalised): forward - xo * left - yo * up in the camera link's axes (x
+  // forward, y left, z up), so its distance parameter is the depth along the optical axis.
+  double axes[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int r = 0; r < 3; ++r)
+      axes[i][r] = pose.R[3 * r + i];
+  const float light[3] = {float(lighting.towards_light[0]), float(lighting.towards_light[1]),
+                          float(lighting.towards_light[2])};
+  const float ambient = float(lighting.ambient);
   // 4 x 4 pixel blocks make a packet; a task is a band of 4 rows.
   const int bands = (h + 3) / 4;
   parallelTasks(bands, [&](int band) {
@@ -719,7 +761,6 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     Packet packet;
-    double length[kPacket];
     for (int u0 = 0; u0 < w; u0 += 4)
     {
       packet.clear();
@@ -728,13 +769,11 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
         const int u = u0 + lane % 4, v = 4 * band + lane / 4;
         if (u >= w || v >= h)
           continue;
-        // optical (x right, y down, z forward) -> camera link (x forward, y left, z up)
         const double xo = (u - rays.cx) / rays.fx, yo = (v - rays.cy) / rays.fy;
-        length[lane] = std::sqrt(1.0 + xo * xo + yo * yo);
-        const double in_link[3] = {1.0 / length[lane], -xo / length[lane], -yo / length[lane]};
-        double dir[3];
-        pose.rotate(in_link, dir);
-        packet.set(lane, origin, dir, float(rays.near * length[lane]), float(rays.far * length[lane]), kSeenByCameras);
+        const double dir[3] = {axes[0][0] - xo * axes[1][0] - yo * axes[2][0],
+                               axes[0][1] - xo * axes[1][1] - yo * axes[2][1],
+                               axes[0][2] - xo * axes[1][2] - yo * axes[2][2]};
+        packet.set(lane, origin, dir, float(rays.near), float(rays.far), kSeenByCameras);
       }
       rtcIntersect16(packet.valid, top_, &context, &packet.rh);
       for (int lane = 0; lane < kPacket; ++lane)
@@ -742,22 +781,41 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
         if (packet.valid[lane] != -1)
           continue;
         const size_t pixel = size_t(4 * band + lane / 4) * w + u0 + lane % 4;
-        float* rgb = &out.rgb[3 * pixel];
+        float rgb[3];
         if (!packet.hit(lane))
         {
           std::copy(lighting.background, lighting.background + 3, rgb);
           out.depth[pixel] = std::numeric_limits<float>::infinity();
-          continue;
         }
-        RayHit hit;
-        resolve(packet.lane(lane), hit);
-        const double diffuse = std::max(0.0, dot(hit.normal, lighting.towards_light));
-        const double light = lighting.ambient + (1.0 - lighting.ambient) * diffuse;
-        const Rgba c = hit.primitive->surfaceColour(hit.triangle, hit.u, hit.v);
-        rgb[0] = float(c.r * light);
-        rgb[1] = float(c.g * light);
-        rgb[2] = float(c.b * light);
-        out.depth[pixel] = float(hit.distance / length[lane]);
+        else
+        {
+          const Instance& instance = instances_[size_t(instance_of_geometry_[packet.rh.hit.instID[0][lane]])];
+          const ShapeSet& set = *instance.set;
+          const RayPrimitive& p = set.shapes[size_t(set.shape_of_geometry[packet.rh.hit.geomID[lane]])];
+          // the surface normal in the world, turned towards the camera; lambert over ambient
+          const float ng[3] = {packet.rh.hit.Ng_x[lane], packet.rh.hit.Ng_y[lane], packet.rh.hit.Ng_z[lane]};
+          const float dir[3] = {packet.rh.ray.dir_x[lane], packet.rh.ray.dir_y[lane], packet.rh.ray.dir_z[lane]};
+          float n[3];
+          for (int r = 0; r < 3; ++r)
+            n[r] = instance.rotation[3 * r] * ng[0] + instance.rotation[3 * r + 1] * ng[1] +
+                   instance.rotation[3 * r + 2] * ng[2];
+          const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+          float towards_light = n[0] * light[0] + n[1] * light[1] + n[2] * light[2];
+          if (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] > 0)
+            towards_light = -towards_light;
+          const float diffuse = length > 0 ? std::max(0.0f, towards_light / length) : 0.0f;
+          const float lit = ambient + (1.0f - ambient) * diffuse;
+          const int triangle = p.kind == Shape::Kind::Mesh ? int(packet.rh.hit.primID[lane]) : -1;
+          const Rgba c = triangle < 0 ? p.colour : p.surfaceColour(triangle, packet.rh.hit.u[lane], packet.rh.hit.v[lane]);
+          rgb[0] = c.r * lit;
+          rgb[1] = c.g * lit;
+          rgb[2] = c.b * lit;
+          out.depth[pixel] = packet.rh.ray.tfar[lane];
+        }
+        for (int k = 0; k < 3; ++k)
+          out.rgb8[3 * pixel + k] = toByte(rgb[k]);
+        if (rays.linear_rgb)
+          std::copy(rgb, rgb + 3, &out.rgb[3 * pixel]);
       }
     }
   });

@@ -75,12 +75,23 @@ struct PinholeRays
   int width = 0, height = 0;
   double fx = 0, fy = 0, cx = 0, cy = 0;
   double near = 0, far = 100;  // clip distances along the optical axis
+  bool linear_rgb = false;     // also give the colours before rounding (to add noise to)
 };
 struct PinholeImage
 {
-  std::vector<float> rgb;    // lit colour per pixel, 0..1, background where nothing is hit
-  std::vector<float> depth;  // along the optical axis, +inf where nothing is hit within the clip range
+  std::vector<uint8_t> rgb8;  // lit colour per pixel, rounded to 0..255, background where nothing is hit
+  std::vector<float> rgb;     // the same, 0..1 before rounding (PinholeRays::linear_rgb only)
+  std::vector<float> depth;   // along the optical axis, +inf where nothing is hit within the clip range
 };
+
+// Distance along the unit ray (o, d), in the shape's frame (a cylinder along z), to a sphere's or a
+// cylinder's surface; +inf if it misses or starts inside.
+double intersectSphere(const double o[3], const double d[3], double radius);
+double intersectCylinder(const double o[3], const double d[3], double radius, double half_length);
+
+// A lidar's ray directions in its frame: azimuth a_i = a0 + i*da for i < n_azimuth, elevations e_j
+// (up towards +z, Gazebo's convention), row by row (elevation major).
+std::vector<double> fanDirections(double a0, double da, int n_azimuth, const std::vector<double>& elevations);
 
 // The number of threads that cast camera and lidar rays (the calling thread and n - 1 workers);
 // by default the machine's hardware threads. Results do not depend on it.
@@ -97,22 +108,22 @@ public:
 
   // A robot body's shapes in the body frame, built once; returns its handle for setPose.
   int addBody(const void* owner, std::vector<RayPrimitive> shapes);
-  // Takes out every body of `owner`.
+  // Takes out every body of `owner` (at the next commit).
   void removeOwner(const void* owner);
   bool hasOwner(const void* owner) const;
   void setPose(int body, const Frame& world_from_body);
-  // Makes the poses set so far take effect. `hidden_from_lidars`: a robot whose shapes lidar rays
+  // Makes the bodies added or removed and the poses set so far take effect (the top level is
+  // rebuilt only when something changed). `hidden_from_lidars`: a robot whose shapes lidar rays
   // pass through until the next commit (a lidar does not see its own robot), or null.
   void commit(const void* hidden_from_lidars);
 
   // One ray (unit dir) from `near` to `far` against what `seen_by` sees.
   RayHit castHit(const double origin[3], const double dir[3], double near, double far, unsigned seen_by) const;
   double cast(const double origin[3], const double dir[3], double far, unsigned seen_by) const;
-  // A lidar: rays from the sensor frame's origin, azimuth a_i = a0 + i*da for i < n_azimuth,
-  // elevations e_j (up towards the sensor's +z). Distances (+inf: nothing in [near, far]) row by
-  // row (elevation major).
-  void castFan(const Frame& sensor, double a0, double da, int n_azimuth, const std::vector<double>& elevations,
-               double near, double far, std::vector<double>& out) const;
+  // Rays from the sensor frame's origin along `directions` (unit, in the sensor frame, x y z each):
+  // distances (+inf: nothing in [near, far]) in the same order.
+  void castRays(const Frame& sensor, const std::vector<double>& directions, double near, double far,
+                std::vector<double>& out) const;
   // A camera at `pose` (x forward, y left, z up; the optical frame is z forward, x right, y down).
   void castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const;
 
@@ -124,6 +135,7 @@ private:
     const void* owner = nullptr;
     unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
     Frame pose;
+    float rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // pose.R, row major, for shading
   };
   void attach(Instance& instance);
   // The primitive, triangle and world normal (facing the ray) of an Embree hit.
@@ -132,6 +144,8 @@ private:
   RTCScene top_ = nullptr;
   std::vector<Instance> instances_;  // [0]: the world's static shapes; the rest robots' bodies (null set: removed)
   std::vector<int> instance_of_geometry_;  // top-level geometry id -> index in instances_
+  const void* hidden_from_lidars_ = nullptr;  // as the last commit hid it
+  bool changed_ = true;                       // since the last commit: the top level needs one
 };
 
 }  // namespace bullet_plant

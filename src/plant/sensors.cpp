@@ -87,11 +87,15 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
   const SensorDescription& d = lidar.description();
   const int n = d.horizontal_samples;
   const double da = n > 1 ? (d.horizontal_max_angle - d.horizontal_min_angle) / (n - 1) : 0.0;
-  std::vector<double> elevations(d.vertical_samples, d.vertical_min_angle);
-  for (int v = 1; v < d.vertical_samples; ++v)
-    elevations[v] = d.vertical_min_angle + v * (d.vertical_max_angle - d.vertical_min_angle) / (d.vertical_samples - 1);
+  if (lidar.directions_.empty())
+  {
+    std::vector<double> elevations(d.vertical_samples, d.vertical_min_angle);
+    for (int v = 1; v < d.vertical_samples; ++v)
+      elevations[v] = d.vertical_min_angle + v * (d.vertical_max_angle - d.vertical_min_angle) / (d.vertical_samples - 1);
+    lidar.directions_ = fanDirections(d.horizontal_min_angle, da, n, elevations);
+  }
   std::vector<double> distances;
-  scene.castFan(pose, d.horizontal_min_angle, da, n, elevations, 0.0, d.range_max, distances);
+  scene.castRays(pose, lidar.directions_, 0.0, d.range_max, distances);
 
   LaserScan& scan = lidar.scan_;
   scan.stamp_ns = time_ns;
@@ -147,18 +151,20 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
   rays.cy = out.cy;
   rays.near = d.clip_near > 0 ? d.clip_near : 0.0;
   rays.far = d.clip_far > 0 ? d.clip_far : 100.0;
+  const bool noisy = d.noise.gaussian && d.noise.stddev > 0;
+  rays.linear_rgb = noisy;
   PinholeImage image;  // the camera's buffers, kept from frame to frame
+  image.rgb8.swap(out.rgb);
   image.rgb.swap(camera.rendered_rgb_);
   image.depth.swap(camera.rendered_depth_);
   scene.castPinhole(pose, rays, lighting, image);
+  out.rgb.swap(image.rgb8);
 
   const size_t pixels = size_t(w) * h;
-  out.rgb.resize(pixels * 3);
-  const bool noisy = d.noise.gaussian && d.noise.stddev > 0;
   std::normal_distribution<double> noise(d.noise.mean, noisy ? d.noise.stddev : 1.0);
-  for (size_t k = 0; k < pixels * 3; ++k)
+  for (size_t k = 0; noisy && k < pixels * 3; ++k)
   {
-    const double value = image.rgb[k] + (noisy ? noise(camera.noise_) : 0.0);
+    const double value = image.rgb[k] + noise(camera.noise_);
     out.rgb[k] = uint8_t(std::lround(std::max(0.0, std::min(1.0, value)) * 255.0));
   }
   out.depth.assign(depth ? pixels : 0, std::numeric_limits<float>::quiet_NaN());

@@ -126,7 +126,7 @@ TEST(MeshRays, ALidarInARoomOfMeshWallsMeasuresTheWalls)
   const int n = 720;
   const double a0 = -M_PI, da = 2 * M_PI / n;
   std::vector<double> ranges;
-  scene.castFan(sensor, a0, da, n, {0.0, 0.1}, 0.0, 30.0, ranges);
+  scene.castRays(sensor, fanDirections(a0, da, n, {0.0, 0.1}), 0.0, 30.0, ranges);
   ASSERT_EQ(ranges.size(), size_t(2 * n));
   for (int row = 0; row < 2; ++row)
     for (int i = 0; i < n; ++i)
@@ -303,7 +303,8 @@ TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
   light.towards_light[0] = 1, light.towards_light[1] = 0, light.towards_light[2] = 0;
   light.ambient = 0.0;
   PinholeImage image;
-  const PinholeRays rays = squareImage(64);
+  PinholeRays rays = squareImage(64);
+  rays.linear_rgb = true;
   scene.castPinhole(Frame::fromPose(poseFromXyzRpy(1.5, 0.5, 0.5, 0, 0, M_PI)), rays, light, image);
   int checked = 0;
   for (int v = 0; v < rays.height; ++v)
@@ -322,6 +323,7 @@ TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
         continue;  // a pixel on a texel border
       EXPECT_NEAR(image.rgb[3 * pixel] * 255, 16 * int(s) + 8, 1e-3) << u << ", " << v;
       EXPECT_NEAR(image.rgb[3 * pixel + 1] * 255, 16 * int(t) + 8, 1e-3) << u << ", " << v;
+      EXPECT_EQ(image.rgb8[3 * pixel], 16 * int(s) + 8) << u << ", " << v;
       EXPECT_NEAR(image.depth[pixel], 1.5, kFloatTolerance);
       ++checked;
     }
@@ -353,9 +355,9 @@ TEST(CameraRays, FramesAreTheSameOnEveryRunAndForAnyNumberOfThreads)
   setRayThreads(0);
   for (size_t k = 1; k < images.size(); ++k)
   {
-    EXPECT_TRUE(images[k].rgb == images[0].rgb) << "image " << k;
+    EXPECT_TRUE(images[k].rgb8 == images[0].rgb8) << "image " << k;
     EXPECT_TRUE(images[k].depth == images[0].depth) << "image " << k;
   }
-  std::set<float> colours(images[0].rgb.begin(), images[0].rgb.end());
+  std::set<uint8_t> colours(images[0].rgb8.begin(), images[0].rgb8.end());
   EXPECT_GT(colours.size(), 20u) << "the scene is in the picture";
 }
