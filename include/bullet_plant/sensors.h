@@ -105,7 +105,8 @@ public:
 private:
   friend struct detail::SensorRendering;
   CameraFrame frame_;
-  std::vector<float> rendered_rgb_, rendered_depth_;  // what the rays gave, before noise and rounding
+  std::vector<float> rendered_depth_;  // what the rays gave, kept from frame to frame
+  std::vector<float> noise_table_;     // gaussian samples of the image noise, drawn at the first frame
 };
 
 }  // namespace bullet_plant

@@ -731,6 +731,14 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
 
 namespace
 {
+// splitmix64's finaliser: 64 well mixed bits from a counter.
+uint64_t mixBits(uint64_t x)
+{
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
 uint8_t toByte(float value)
 {
   // value >= 0 after the clamp, where rounding half up is lround's rounding half away from zero
@@ -742,7 +750,6 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
 {
   const int w = rays.width, h = rays.height;
   out.rgb8.resize(size_t(w) * h * 3);
-  out.rgb.resize(rays.linear_rgb ? size_t(w) * h * 3 : 0);
   out.depth.resize(size_t(w) * h);
   const float origin[3] = {float(pose.t[0]), float(pose.t[1]), float(pose.t[2])};
   // A pixel's ray (unnormalised): forward - xo * left - yo * up in the camera link's axes (x
@@ -812,10 +819,14 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
           rgb[2] = c.b * lit;
           out.depth[pixel] = packet.rh.ray.tfar[lane];
         }
+        if (rays.noise)
+        {
+          const uint64_t bits = mixBits(rays.noise_seed + pixel);
+          for (int k = 0; k < 3; ++k)
+            rgb[k] += rays.noise[(bits >> (16 * k)) & (PinholeRays::kNoiseTableSize - 1)];
+        }
         for (int k = 0; k < 3; ++k)
           out.rgb8[3 * pixel + k] = toByte(rgb[k]);
-        if (rays.linear_rgb)
-          std::copy(rgb, rgb + 3, &out.rgb[3 * pixel]);
       }
     }
   });

@@ -9,6 +9,7 @@
 // thread pool; every pixel is computed alone, so frames do not depend on the number of threads.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -75,12 +76,16 @@ struct PinholeRays
   int width = 0, height = 0;
   double fx = 0, fy = 0, cx = 0, cy = 0;
   double near = 0, far = 100;  // clip distances along the optical axis
-  bool linear_rgb = false;     // also give the colours before rounding (to add noise to)
+  // Gaussian noise added to each colour value before rounding: kNoiseTableSize samples of it (null:
+  // none), picked by a hash of the frame's seed, the pixel and the channel, so that a frame does
+  // not depend on the order or the threads its pixels are computed in.
+  static constexpr int kNoiseTableSize = 1 << 16;
+  const float* noise = nullptr;
+  uint64_t noise_seed = 0;
 };
 struct PinholeImage
 {
-  std::vector<uint8_t> rgb8;  // lit colour per pixel, rounded to 0..255, background where nothing is hit
-  std::vector<float> rgb;     // the same, 0..1 before rounding (PinholeRays::linear_rgb only)
+  std::vector<uint8_t> rgb8;  // lit colour per pixel (plus noise), rounded to 0..255, background where nothing is hit
   std::vector<float> depth;   // along the optical axis, +inf where nothing is hit within the clip range
 };
 

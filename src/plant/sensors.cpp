@@ -128,8 +128,9 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
 }
 
 // Ray casting through every pixel centre of a pinhole camera (RayScene::castPinhole: lit colours
-// and depths, in parallel), then noise in pixel order from the camera's own generator, so frames are
-// the same whatever the number of threads.
+// with noise, and depths, in parallel); the noise comes from a table of gaussian samples drawn once
+// from the camera's own generator and a per-frame seed from it, so frames are the same on every run
+// whatever the number of threads.
 void detail::SensorRendering::render(Camera& camera, const RayScene& scene, const Frame& pose, const Lighting& lighting,
                                      int64_t time_ns)
 {
@@ -151,22 +152,25 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
   rays.cy = out.cy;
   rays.near = d.clip_near > 0 ? d.clip_near : 0.0;
   rays.far = d.clip_far > 0 ? d.clip_far : 100.0;
-  const bool noisy = d.noise.gaussian && d.noise.stddev > 0;
-  rays.linear_rgb = noisy;
+  if (d.noise.gaussian && d.noise.stddev > 0)
+  {
+    if (camera.noise_table_.empty())
+    {
+      std::normal_distribution<float> noise(float(d.noise.mean), float(d.noise.stddev));
+      camera.noise_table_.resize(PinholeRays::kNoiseTableSize);
+      for (float& n : camera.noise_table_)
+        n = noise(camera.noise_);
+    }
+    rays.noise = camera.noise_table_.data();
+    rays.noise_seed = (uint64_t(camera.noise_()) << 32) ^ camera.noise_();
+  }
   PinholeImage image;  // the camera's buffers, kept from frame to frame
   image.rgb8.swap(out.rgb);
-  image.rgb.swap(camera.rendered_rgb_);
   image.depth.swap(camera.rendered_depth_);
   scene.castPinhole(pose, rays, lighting, image);
   out.rgb.swap(image.rgb8);
 
   const size_t pixels = size_t(w) * h;
-  std::normal_distribution<double> noise(d.noise.mean, noisy ? d.noise.stddev : 1.0);
-  for (size_t k = 0; noisy && k < pixels * 3; ++k)
-  {
-    const double value = image.rgb[k] + noise(camera.noise_);
-    out.rgb[k] = uint8_t(std::lround(std::max(0.0, std::min(1.0, value)) * 255.0));
-  }
   out.depth.assign(depth ? pixels : 0, std::numeric_limits<float>::quiet_NaN());
   out.points.assign(depth ? pixels * 3 : 0, std::numeric_limits<float>::quiet_NaN());
   for (int v = 0; depth && v < h; ++v)
@@ -181,7 +185,6 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
       out.points[3 * pixel + 1] = float((v - out.cy) / out.fy * z);
       out.points[3 * pixel + 2] = z;
     }
-  camera.rendered_rgb_.swap(image.rgb);
   camera.rendered_depth_.swap(image.depth);
 }
 

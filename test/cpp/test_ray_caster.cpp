@@ -303,8 +303,7 @@ TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
   light.towards_light[0] = 1, light.towards_light[1] = 0, light.towards_light[2] = 0;
   light.ambient = 0.0;
   PinholeImage image;
-  PinholeRays rays = squareImage(64);
-  rays.linear_rgb = true;
+  const PinholeRays rays = squareImage(64);
   scene.castPinhole(Frame::fromPose(poseFromXyzRpy(1.5, 0.5, 0.5, 0, 0, M_PI)), rays, light, image);
   int checked = 0;
   for (int v = 0; v < rays.height; ++v)
@@ -316,14 +315,14 @@ TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
       if (y <= 0 || y >= 1 || z <= 0 || z >= 1)
       {
         if (y < -0.01 || y > 1.01 || z < -0.01 || z > 1.01)
-          EXPECT_EQ(image.rgb[3 * pixel], light.background[0]) << "background at " << u << ", " << v;
+          EXPECT_EQ(image.rgb8[3 * pixel], std::lround(light.background[0] * 255)) << "background at " << u << ", " << v;
         continue;
       }
       if (std::abs(s - std::round(s)) < 0.05 || std::abs(t - std::round(t)) < 0.05)
         continue;  // a pixel on a texel border
-      EXPECT_NEAR(image.rgb[3 * pixel] * 255, 16 * int(s) + 8, 1e-3) << u << ", " << v;
-      EXPECT_NEAR(image.rgb[3 * pixel + 1] * 255, 16 * int(t) + 8, 1e-3) << u << ", " << v;
       EXPECT_EQ(image.rgb8[3 * pixel], 16 * int(s) + 8) << u << ", " << v;
+      EXPECT_EQ(image.rgb8[3 * pixel + 1], 16 * int(t) + 8) << u << ", " << v;
+      EXPECT_EQ(image.rgb8[3 * pixel + 2], 200) << u << ", " << v;
       EXPECT_NEAR(image.depth[pixel], 1.5, kFloatTolerance);
       ++checked;
     }
@@ -352,7 +351,36 @@ TEST(CameraRays, FramesAreTheSameOnEveryRunAndForAnyNumberOfThreads)
     images.emplace_back();
     scene.castPinhole(camera, rays, Lighting(), images.back());
   }
+  // With noise (a table of gaussian samples picked by a hash of seed and pixel): the same again.
+  std::vector<float> table(PinholeRays::kNoiseTableSize);
+  std::mt19937 rng(3);
+  std::normal_distribution<float> gaussian(0.0f, 0.02f);
+  for (float& n : table)
+    n = gaussian(rng);
+  PinholeRays noisy = rays;
+  noisy.noise = table.data();
+  noisy.noise_seed = 42;
+  std::vector<PinholeImage> noisy_images(2);
+  for (int threads : {1, 3})
+  {
+    setRayThreads(threads);
+    scene.castPinhole(camera, noisy, Lighting(), noisy_images[threads == 1 ? 0 : 1]);
+  }
   setRayThreads(0);
+  EXPECT_TRUE(noisy_images[0].rgb8 == noisy_images[1].rgb8);
+  double sum = 0, sum2 = 0;
+  int count = 0;
+  for (size_t k = 0; k < images[0].rgb8.size(); ++k)
+    if (images[0].rgb8[k] > 30 && images[0].rgb8[k] < 225)
+    {
+      const double e = double(noisy_images[0].rgb8[k]) - images[0].rgb8[k];
+      sum += e;
+      sum2 += e * e;
+      ++count;
+    }
+  ASSERT_GT(count, 10000);
+  EXPECT_NEAR(sum / count, 0.0, 0.1) << "unbiased";
+  EXPECT_NEAR(std::sqrt(sum2 / count), 0.02 * 255, 0.3) << "of the table's spread (5.1 levels)";
   for (size_t k = 1; k < images.size(); ++k)
   {
     EXPECT_TRUE(images[k].rgb8 == images[0].rgb8) << "image " << k;
