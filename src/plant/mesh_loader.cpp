@@ -171,13 +171,27 @@ const MeshData::SubMesh& MeshData::subMeshOf(int triangle) const
   return *(after - 1);
 }
 
+namespace
+{
+// floor(x) mod n, for the texel a repeating coordinate falls on (without libm's floor: this runs per pixel).
+int wrapIndex(float x, int n)
+{
+  if (!(std::abs(x) < 1e9f))
+    return 0;
+  int i = int(x);
+  i -= x < float(i);
+  i %= n;
+  return i < 0 ? i + n : i;
+}
+}  // namespace
+
 Rgba Texture::at(float s, float t) const
 {
-  const float x = s - std::floor(s), y = 1.0f - (t - std::floor(t));  // y down from the top row
-  const int column = std::min(width - 1, int(x * float(width)));
-  const int row = std::min(height - 1, int(y * float(height)));
+  const int column = wrapIndex(s * float(width), width);
+  const int row = wrapIndex((1.0f - t) * float(height), height);  // rows from the top, t up from the bottom
   const uint8_t* texel = &rgb[3 * (size_t(row) * size_t(width) + size_t(column))];
-  return {texel[0] / 255.0, texel[1] / 255.0, texel[2] / 255.0, 1.0};
+  constexpr float kScale = 1.0f / 255.0f;
+  return {texel[0] * kScale, texel[1] * kScale, texel[2] * kScale, 1.0f};
 }
 
 std::shared_ptr<const Texture> loadTexture(const std::string& file, std::string& reason)

@@ -437,7 +437,6 @@ struct RayScene::ShapeSet
   {
     scene = rtcNewScene(device());
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);  // watertight: a ray along an edge hits one of its faces
     for (size_t k = 0; k < shapes.size(); ++k)
     {
       const RayPrimitive& p = shapes[k];
@@ -484,7 +483,7 @@ struct RayScene::ShapeSet
 RayScene::RayScene(const std::vector<RayPrimitive>& world_shapes)
 {
   top_ = rtcNewScene(device());
-  rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC | RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC);
   rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
   instances_.emplace_back();
   instances_[0].set = std::make_shared<ShapeSet>(world_shapes);

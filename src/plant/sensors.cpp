@@ -174,6 +174,8 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
   out.depth.assign(depth ? pixels : 0, std::numeric_limits<float>::quiet_NaN());
   out.points.assign(depth ? pixels * 3 : 0, std::numeric_limits<float>::quiet_NaN());
   for (int v = 0; depth && v < h; ++v)
+  {
+    const float y = float((v - out.cy) / out.fy);
     for (int u = 0; u < w; ++u)
     {
       const size_t pixel = size_t(v) * w + u;
@@ -181,10 +183,11 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
       if (std::isinf(z))
         continue;
       out.depth[pixel] = z;
-      out.points[3 * pixel] = float((u - out.cx) / out.fx * z);
-      out.points[3 * pixel + 1] = float((v - out.cy) / out.fy * z);
+      out.points[3 * pixel] = float((u - out.cx) / out.fx) * z;
+      out.points[3 * pixel + 1] = y * z;
       out.points[3 * pixel + 2] = z;
     }
+  }
   camera.rendered_depth_.swap(image.depth);
 }
 
