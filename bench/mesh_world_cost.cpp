@@ -76,7 +76,7 @@ int main(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   for (int k = 0; k < fans; ++k)
   {
-    scene.castRays(sensor, directions, 0.0, 10.0, ranges);
+    scene.castRays(sensor, directions, 0.0, 10.0, kSeenByLidars, ranges);
     for (double d : ranges)
       hits += d < 10.0;
   }

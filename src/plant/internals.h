@@ -85,8 +85,8 @@ struct World::Internals
   std::vector<std::unique_ptr<Robot>> robots;
 
   // Everything sensors can see: the static scene and every robot's bodies where they are now
-  // (a robot's bodies are built into it once). `hidden_from_lidars` as RayScene::commit.
-  const RayScene& rayScene(const void* hidden_from_lidars);
+  // (a robot's bodies are built into it once). `hidden` as RayScene::commit.
+  const RayScene& rayScene(const void* hidden);
   Lighting lighting() const;
 };
 

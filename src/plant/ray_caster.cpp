@@ -521,8 +521,8 @@ int RayScene::addBody(const void* owner, std::vector<RayPrimitive> shapes)
   instance.owner = owner;
   instances_.push_back(std::move(instance));
   attach(instances_.back());
-  if (owner == hidden_from_lidars_)
-    hidden_from_lidars_ = nullptr;  // the next commit hides it too
+  if (owner == hidden_)
+    hidden_ = nullptr;  // the next commit hides it too
   changed_ = true;
   return int(instances_.size()) - 1;
 }
@@ -537,8 +537,8 @@ void RayScene::removeOwner(const void* owner)
       instance.set.reset();
       instance.owner = nullptr;
     }
-  if (owner == hidden_from_lidars_)
-    hidden_from_lidars_ = nullptr;
+  if (owner == hidden_)
+    hidden_ = nullptr;
   changed_ = true;
 }
 
@@ -564,20 +564,19 @@ void RayScene::setPose(int body, const Frame& world_from_body)
   changed_ = true;
 }
 
-void RayScene::commit(const void* hidden_from_lidars)
+void RayScene::commit(const void* hidden)
 {
-  if (hidden_from_lidars != hidden_from_lidars_)
+  if (hidden != hidden_)
   {
     for (Instance& instance : instances_)
     {
-      if (!instance.set || instance.owner == nullptr ||
-          (instance.owner != hidden_from_lidars && instance.owner != hidden_from_lidars_))
+      if (!instance.set || instance.owner == nullptr || (instance.owner != hidden && instance.owner != hidden_))
         continue;
       RTCGeometry g = rtcGetGeometry(top_, instance.geometry_id);
-      rtcSetGeometryMask(g, instance.owner == hidden_from_lidars ? kSeenByAll & ~kSeenByLidars : kSeenByAll);
+      rtcSetGeometryMask(g, instance.owner == hidden ? 0u : unsigned(kSeenByAll));
       rtcCommitGeometry(g);
     }
-    hidden_from_lidars_ = hidden_from_lidars;
+    hidden_ = hidden;
     changed_ = true;
   }
   if (changed_)
@@ -700,7 +699,7 @@ std::vector<double> fanDirections(double a0, double da, int n_azimuth, const std
 }
 
 void RayScene::castRays(const Frame& sensor, const std::vector<double>& directions, double near, double far,
-                        std::vector<double>& out) const
+                        unsigned seen_by, std::vector<double>& out) const
 {
   const int n = int(directions.size() / 3);
   out.assign(size_t(n), kInf);
@@ -718,7 +717,7 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
       {
         double dir[3];
         sensor.rotate(&directions[3 * size_t(k * kPacket + lane)], dir);
-        packet.set(lane, origin, dir, float(near), float(far), kSeenByLidars);
+        packet.set(lane, origin, dir, float(near), float(far), seen_by);
       }
       rtcIntersect16(packet.valid, top_, &context, &packet.rh);
       for (int lane = 0; lane < kPacket && k * kPacket + lane < n; ++lane)

@@ -21,8 +21,9 @@
 
 namespace bullet_plant
 {
-// Who sees a shape: cameras see visuals, lidars collisions (Gazebo's cameras render the visual
-// geometry; its ray and gpu_ray sensors hit the collision geometry). These are Embree ray masks.
+// Who sees a shape: cameras see visuals, lidars collisions (Gazebo's cameras and gpu_ray lidars
+// render the visual geometry; its ray lidars hit the collision geometry). These are Embree ray
+// masks.
 enum SeenBy : unsigned
 {
   kSeenByCameras = 1u,
@@ -118,9 +119,9 @@ public:
   bool hasOwner(const void* owner) const;
   void setPose(int body, const Frame& world_from_body);
   // Makes the bodies added or removed and the poses set so far take effect (the top level is
-  // rebuilt only when something changed). `hidden_from_lidars`: a robot whose shapes lidar rays
-  // pass through until the next commit (a lidar does not see its own robot), or null.
-  void commit(const void* hidden_from_lidars);
+  // rebuilt only when something changed). `hidden`: a robot whose shapes every ray passes through
+  // until the next commit (a lidar does not see its own robot), or null.
+  void commit(const void* hidden);
 
   // One ray (unit dir) from `near` to `far` against what `seen_by` sees.
   RayHit castHit(const double origin[3], const double dir[3], double near, double far, unsigned seen_by) const;
@@ -128,7 +129,7 @@ public:
   // Rays from the sensor frame's origin along `directions` (unit, in the sensor frame, x y z each):
   // distances (+inf: nothing in [near, far]) in the same order.
   void castRays(const Frame& sensor, const std::vector<double>& directions, double near, double far,
-                std::vector<double>& out) const;
+                unsigned seen_by, std::vector<double>& out) const;
   // A camera at `pose` (x forward, y left, z up; the optical frame is z forward, x right, y down).
   void castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const;
 
@@ -149,7 +150,7 @@ private:
   RTCScene top_ = nullptr;
   std::vector<Instance> instances_;  // [0]: the world's static shapes; the rest robots' bodies (null set: removed)
   std::vector<int> instance_of_geometry_;  // top-level geometry id -> index in instances_
-  const void* hidden_from_lidars_ = nullptr;  // as the last commit hid it
+  const void* hidden_ = nullptr;  // as the last commit hid it
   bool changed_ = true;                       // since the last commit: the top level needs one
 };
 

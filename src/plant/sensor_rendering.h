@@ -13,7 +13,7 @@ namespace detail
 {
 struct SensorRendering
 {
-  // scene: committed with the lidar's own robot hidden from lidars (a lidar does not see its robot).
+  // scene: committed with the lidar's own robot hidden (a lidar does not see its robot).
   static void scan(Lidar& lidar, const RayScene& scene, const Frame& pose, int64_t time_ns);
   // Cameras see their own robot, as Gazebo's do.
   static void render(Camera& camera, const RayScene& scene, const Frame& pose, const Lighting& lighting,

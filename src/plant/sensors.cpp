@@ -95,7 +95,9 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
     lidar.directions_ = fanDirections(d.horizontal_min_angle, da, n, elevations);
   }
   std::vector<double> distances;
-  scene.castRays(pose, lidar.directions_, 0.0, d.range_max, distances);
+  // Gazebo's gpu_ray renders the visuals, its ray lidar hits the collisions.
+  scene.castRays(pose, lidar.directions_, 0.0, d.range_max, d.type == "gpu_ray" ? kSeenByCameras : kSeenByLidars,
+                 distances);
 
   LaserScan& scan = lidar.scan_;
   scan.stamp_ns = time_ns;

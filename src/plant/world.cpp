@@ -238,7 +238,7 @@ void World::resetWorld()
     r->in_->resetToSpawn();
 }
 
-const RayScene& World::Internals::rayScene(const void* hidden_from_lidars)
+const RayScene& World::Internals::rayScene(const void* hidden)
 {
   if (!ray_scene)
     ray_scene.reset(new RayScene(static_ray_shapes));
@@ -257,7 +257,7 @@ const RayScene& World::Internals::rayScene(const void* hidden_from_lidars)
       if (r.ray_bodies[b] >= 0)
         ray_scene->setPose(r.ray_bodies[b], Frame::fromPose(fromBullet(r.multibody.bodyWorldTransform(int(b)))));
   }
-  ray_scene->commit(hidden_from_lidars);
+  ray_scene->commit(hidden);
   return *ray_scene;
 }
 

@@ -126,7 +126,7 @@ TEST(MeshRays, ALidarInARoomOfMeshWallsMeasuresTheWalls)
   const int n = 720;
   const double a0 = -M_PI, da = 2 * M_PI / n;
   std::vector<double> ranges;
-  scene.castRays(sensor, fanDirections(a0, da, n, {0.0, 0.1}), 0.0, 30.0, ranges);
+  scene.castRays(sensor, fanDirections(a0, da, n, {0.0, 0.1}), 0.0, 30.0, kSeenByLidars, ranges);
   ASSERT_EQ(ranges.size(), size_t(2 * n));
   for (int row = 0; row < 2; ++row)
     for (int i = 0; i < n; ++i)
@@ -228,8 +228,10 @@ TEST(ShapeRays, BodiesAreWhereTheirLastPoseIsAndHiddenFromTheirOwnLidar)
     EXPECT_NEAR(scene.cast(o, x, 10, kSeenByLidars), at + 0.5, kFloatTolerance);
   }
   scene.commit(&robot);
-  EXPECT_EQ(scene.cast(o, x, 10, kSeenByLidars), kInf) << "the robot's own lidar does not see it";
-  EXPECT_NEAR(scene.cast(o, x, 10, kSeenByCameras), 6.5, kFloatTolerance) << "its cameras do";
+  EXPECT_EQ(scene.cast(o, x, 10, kSeenByLidars), kInf) << "hidden for the robot's own lidar";
+  EXPECT_EQ(scene.cast(o, x, 10, kSeenByCameras), kInf) << "also for its own gpu_ray lidar";
+  scene.commit(nullptr);
+  EXPECT_NEAR(scene.cast(o, x, 10, kSeenByCameras), 6.5, kFloatTolerance) << "its cameras see it";
   scene.removeOwner(&robot);
   scene.commit(nullptr);
   EXPECT_EQ(scene.cast(o, x, 10, kSeenByAll), kInf);
