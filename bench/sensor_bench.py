@@ -170,8 +170,9 @@ def real_car_run(world_file, urdf):
     print('the real car\'s sensors on the mesh race track, all subscribed, driving at %.2f m/s, %.0f s simulated:'
           % (SPEED, sim))
     print('  ' + ', '.join('%s %.0f Hz' % (s, updates[s] / sim) for s in sensors))
-    print('  simulated seconds per wall second (unpaced): %.2f -> real time factor held: %.2f'
-          % (sim / wall, min(1.0, sim / wall)))
+    print('  simulated seconds per wall second (unpaced): %.2f -> real time factor held: %.2f '
+          '(load average %.1f on %d cores: other jobs take their share)'
+          % (sim / wall, min(1.0, sim / wall), os.getloadavg()[0], os.cpu_count()))
     print('  process CPU time / simulated time: %.2f (cores busy at real time; %.2f of it without sensors)'
           % (cpu / sim, bare[1] / sim))
     return {'speed': sim / wall, 'cpu_per_sim_second': cpu / sim, 'bare_cpu_per_sim_second': bare[1] / sim}
