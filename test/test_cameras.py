@@ -113,13 +113,22 @@ POST_URDF = """<robot name="post"><link name="post_link">
 </link><gazebo><static>true</static></gazebo></robot>"""
 
 
+POST_SDF = f"""<model name="post"><static>true</static><pose>{POST_X} 0 0.5 0 0 0</pose><link name="link">
+  <collision name="collision"><geometry><box><size>0.1 0.1 1</size></box></geometry></collision>
+  <visual name="visual"><geometry><box><size>0.5 0.5 1</size></box></geometry>
+    <material><diffuse>0 0 1 1</diffuse></material></visual></link></model>"""
+
+
+@pytest.mark.parametrize('post_of', ['robot', 'world'])
 @pytest.mark.parametrize('lidar_type', ['ray', 'gpu_ray'])
-def test_cameras_and_gpu_ray_see_visuals_ray_lidars_collisions(urdf_xml, control_config, lidar_type):
-    """A post whose visual (0.5 m square, blue) is wider than its collision (0.1 m): Gazebo's
-    cameras and gpu_ray lidars render visuals, its ray lidars hit collisions."""
-    world = make_world(control_config)
+def test_cameras_and_gpu_ray_see_visuals_ray_lidars_collisions(urdf_xml, control_config, lidar_type, post_of):
+    """A post (a static robot, or a model of the world) whose visual (0.5 m square, blue) is wider
+    than its collision (0.1 m): Gazebo's cameras and gpu_ray lidars render visuals, its ray lidars
+    hit collisions."""
+    world = make_world(control_config, sdf_world(POST_SDF) if post_of == 'world' else None)
     robot = world.spawn(urdf_xml.replace('type="ray"', 'type="%s"' % lidar_type), 'tianracer')
-    world.spawn(POST_URDF, 'post', pose=(POST_X, 0, 0.5, 0, 0, 0))
+    if post_of == 'robot':
+        world.spawn(POST_URDF, 'post', pose=(POST_X, 0, 0.5, 0, 0, 0))
     world.step(300)
     for sensor in ('lidar', 'camera', 'depth_camera'):
         robot.enable_sensor(sensor)

@@ -17,7 +17,15 @@ struct StaticCollision
   Shape shape;
   urdf::Pose pose;    // in the world
   double mu = 1.0;    // Gazebo's default friction
-  Rgba colour;        // from the matching <visual>'s material, for cameras
+};
+
+// What cameras (and gpu_ray lidars) see of a static model: one of its links' <visual>s.
+struct StaticVisual
+{
+  std::string name;   // model::link::visual
+  Shape shape;
+  urdf::Pose pose;    // in the world
+  Rgba colour;        // <material><diffuse> (or <ambient>)
 };
 
 struct WorldDescription
@@ -32,6 +40,7 @@ struct WorldDescription
   Rgba background{0.70f, 0.80f, 0.95f, 1.0f};
   double ambient = 0.35;
   std::vector<StaticCollision> collisions;
+  std::vector<StaticVisual> visuals;
   std::vector<std::string> warnings;  // each unsupported element once: what, where, left out
   std::string file;      // the world file; "" when parsed from text
   std::string base_dir;  // relative URIs of the world itself resolve against it ("": working directory)

@@ -93,7 +93,23 @@ World::World(const WorldDescription& description) : in_(new Internals)
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     w.static_ray_shapes.push_back(std::move(collider.ray));
-    w.static_ray_shapes.back().colour = c.colour;
+    w.static_ray_shapes.back().seen_by = kSeenByLidars;
+  }
+  for (const StaticVisual& v : description.visuals)
+  {
+    std::string reason;
+    std::shared_ptr<const MeshData> mesh =
+        v.shape.kind == Shape::Kind::Mesh ? loadMesh(v.shape.mesh_file, v.shape.scale, reason) : nullptr;
+    if (v.shape.kind == Shape::Kind::Mesh && !mesh)
+    {
+      w.log.warn("world: visual '" + v.name + "': mesh '" + v.shape.mesh_uri + "' " + reason +
+                 "; cameras do not see it");
+      continue;
+    }
+    w.static_ray_shapes.push_back(mesh ? RayPrimitive::fromMesh(mesh, v.pose, nullptr)
+                                       : RayPrimitive::fromShape(v.shape, v.pose, nullptr));
+    w.static_ray_shapes.back().seen_by = kSeenByCameras;
+    w.static_ray_shapes.back().colour = v.colour;
   }
   for (const std::string& warning : description.warnings)
     w.log.warn("world: " + warning);
