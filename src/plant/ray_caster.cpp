@@ -704,7 +704,7 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
   const int n = int(directions.size() / 3);
   out.assign(size_t(n), kInf);
   const float origin[3] = {float(sensor.t[0]), float(sensor.t[1]), float(sensor.t[2])};
-  constexpr int kPacketsPerTask = 16;
+  constexpr int kPacketsPerTask = 128;  // 2048 rays: a planar scan stays on the calling thread, waking no worker
   const int packets = (n + kPacket - 1) / kPacket;
   parallelTasks((packets + kPacketsPerTask - 1) / kPacketsPerTask, [&](int task) {
     RTCIntersectContext context;
