@@ -9,7 +9,8 @@
 2. The real car's sensor set at its rates (800 x 800 colour at 30 Hz, 640 x 480 depth at 20 Hz, the
    1081-ray lidar at 40 Hz, all subscribed) on the mesh race track while the car drives: simulated
    seconds per wall second unpaced (the real time factor the node can hold is the smaller of that and
-   1) and process CPU seconds per simulated second (at real time: the cores' worth of CPU it takes).
+   1) and process CPU seconds per simulated second (at real time: the cores' worth of CPU it takes);
+   then the same through the ROS node, paced at real time, with every sensor topic subscribed.
 """
 import math
 import os
@@ -25,7 +26,9 @@ import matplotlib.image  # noqa: E402 (after choosing the backend)
 import numpy as np  # noqa: E402
 
 from mesh_cost import write_obj  # beside this file
+from ros_plant_bench import plant_pid
 from tianracer_description import bullet_plant  # noqa: E402
+from tianracer_description.ros_harness import RosSystem, tianracer_plant  # noqa: E402
 from tianracer_description.tianracer import (CONFIG_YAML, RACE_TRACK_WORLD, REAR_WHEEL_CONTROLLERS,  # noqa: E402
                                              TUTORIAL_CONTROLLERS, tianracer_urdf)
 
@@ -35,6 +38,39 @@ SPEED = 0.25  # m/s: the car stays on the start straight for the whole run
 WHEEL_RADIUS = 0.032
 REAL_CAR = {'camera': (800, 800, 30.0), 'depth': (640, 480, 20.0)}  # width, height, Hz
 FLOOR_TOP = 0.002  # above the ground plane the world gets anyway
+NODE_WINDOW = 20.0  # s of wall time
+
+# Subscribes to every sensor topic of the car (a Python subscriber, as rviz or a user's node would),
+# waits until the sensors run, then measures over NODE_WINDOW s: simulated / wall time, the plant
+# process's CPU time (from /proc) per simulated second and the rates received.
+NODE_PROBE = """
+import json, os, time, rospy
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import Image, LaserScan, PointCloud2
+def cpu():
+    with open('/proc/{pid}/stat') as f:
+        fields = f.read().rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+rospy.init_node('sensor_probe', anonymous=True)
+clock = []
+rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()))
+topics = {{'/tianracer/camera/image_raw': Image, '/tianracer/depth_camera/depth/image_raw': Image,
+          '/tianracer/depth_camera/rgb/image_raw': Image, '/tianracer/depth_camera/depth/points': PointCloud2,
+          '/tianracer/scan': LaserScan}}
+counts = dict.fromkeys(topics, 0)
+def counter(topic):
+    def count(message):
+        counts[topic] += 1
+    return count
+for topic, kind in topics.items():
+    rospy.Subscriber(topic, kind, counter(topic), queue_size=2, buff_size=2 ** 25)
+time.sleep(5.0)
+wall0, sim0, cpu0, counts0 = time.monotonic(), clock[-1], cpu(), dict(counts)
+time.sleep({window})
+wall, sim, used = time.monotonic() - wall0, clock[-1] - sim0, cpu() - cpu0
+print(json.dumps(dict(rtf=sim / wall, cpu_per_sim_s=used / sim,
+                      rates={{t: (counts[t] - counts0[t]) / sim for t in topics}})))
+"""
 
 
 def binary():
@@ -178,6 +214,25 @@ def real_car_run(world_file, urdf):
     return {'speed': sim / wall, 'cpu_per_sim_second': cpu / sim, 'bare_cpu_per_sim_second': bare[1] / sim}
 
 
+def node_run(world_file, urdf_file):
+    """The same sensor set through the ROS node, paced at real time, every topic subscribed."""
+    with tempfile.TemporaryDirectory() as workdir:
+        ros = RosSystem(workdir)
+        try:
+            plant = tianracer_plant(ros, urdf_file, world=world_file)
+            result = ros.python(NODE_PROBE.format(pid=plant_pid(plant.pid), window=NODE_WINDOW),
+                                timeout=NODE_WINDOW + 60)
+        finally:
+            ros.close()
+    print('the same through the ROS node (bullet_plant), paced, each topic subscribed by a Python node, %.0f s:'
+          % NODE_WINDOW)
+    print('  real time factor %.3f, plant process CPU time / simulated time %.2f (load average %.1f)'
+          % (result['rtf'], result['cpu_per_sim_s'], os.getloadavg()[0]))
+    print('  received per simulated second: ' + ', '.join('%s %.1f' % (topic.replace('/tianracer/', ''), rate)
+                                                         for topic, rate in result['rates'].items()))
+    return result
+
+
 def main():
     urdf = real_car_urdf()
     with tempfile.TemporaryDirectory() as directory:
@@ -190,6 +245,7 @@ def main():
         print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor):'
                     % (walls, 12 * walls), *rays_per_second(urdf_file, mesh_world))
         real_car_run(mesh_world, urdf)
+        node_run(mesh_world, urdf_file)
 
 
 if __name__ == '__main__':
