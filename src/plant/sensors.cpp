@@ -173,8 +173,10 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
   out.rgb.swap(image.rgb8);
 
   const size_t pixels = size_t(w) * h;
-  out.depth.assign(depth ? pixels : 0, std::numeric_limits<float>::quiet_NaN());
-  out.points.assign(depth ? pixels * 3 : 0, std::numeric_limits<float>::quiet_NaN());
+  // Every pixel written once: its depth and point, or NaN where nothing is within the clip range.
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  out.depth.resize(depth ? pixels : 0);
+  out.points.resize(depth ? pixels * 3 : 0);
   for (int v = 0; depth && v < h; ++v)
   {
     const float y = float((v - out.cy) / out.fy);
@@ -182,12 +184,11 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
     {
       const size_t pixel = size_t(v) * w + u;
       const float z = image.depth[pixel];
-      if (std::isinf(z))
-        continue;
-      out.depth[pixel] = z;
-      out.points[3 * pixel] = float((u - out.cx) / out.fx) * z;
-      out.points[3 * pixel + 1] = y * z;
-      out.points[3 * pixel + 2] = z;
+      const bool hit = !std::isinf(z);
+      out.depth[pixel] = hit ? z : kNaN;
+      out.points[3 * pixel] = hit ? float((u - out.cx) / out.fx) * z : kNaN;
+      out.points[3 * pixel + 1] = hit ? y * z : kNaN;
+      out.points[3 * pixel + 2] = hit ? z : kNaN;
     }
   }
   camera.rendered_depth_.swap(image.depth);
