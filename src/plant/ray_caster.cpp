@@ -665,23 +665,6 @@ struct alignas(64) Packet
   }
   void clear() { std::fill(valid, valid + kPacket, 0); }
   bool hit(int lane) const { return valid[lane] == -1 && rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID; }
-  RTCRayHit lane(int i) const
-  {
-    RTCRayHit one;
-    one.ray.dir_x = rh.ray.dir_x[i];
-    one.ray.dir_y = rh.ray.dir_y[i];
-    one.ray.dir_z = rh.ray.dir_z[i];
-    one.ray.tfar = rh.ray.tfar[i];
-    one.hit.Ng_x = rh.hit.Ng_x[i];
-    one.hit.Ng_y = rh.hit.Ng_y[i];
-    one.hit.Ng_z = rh.hit.Ng_z[i];
-    one.hit.u = rh.hit.u[i];
-    one.hit.v = rh.hit.v[i];
-    one.hit.primID = rh.hit.primID[i];
-    one.hit.geomID = rh.hit.geomID[i];
-    one.hit.instID[0] = rh.hit.instID[0][i];
-    return one;
-  }
 };
 }  // namespace
 
