@@ -59,6 +59,7 @@ bench: build
 	@$(PYTHON) -c 'import mujoco, pybullet' 2>/dev/null || { echo "bench: installing mujoco and pybullet from PyPI for $(PYTHON)"; \
 		$$([ "$$(id -u)" -eq 0 ] || echo sudo) $(PYTHON) -m pip install -q --root-user-action=ignore --break-system-packages mujoco pybullet; }
 	@$(ROS_ENV) $(PYTHON) bench/plant_vs_peers.py
+	@$(ROS_ENV) $(PYTHON) bench/sensor_bench.py
 
 demo: build
 	@$(ROS_ENV) $(PYTHON) tools/demo.py

@@ -66,17 +66,17 @@ int main(int argc, char** argv)
   world.step(500);
   const int fans = std::stoi(argv[3]);
   Robot::Internals& r = internalsOf(car);
-  const std::vector<RayPrimitive> scene = r.world->rayScene();
-  RayCaster caster(scene, &r);
+  const RayScene& scene = r.world->rayScene(&r);
   const Frame sensor = Frame::fromPose(compose(car.basePose(), poseFromXyzRpy(0.1, 0, 0.15, 0, 0, 0)));
   const int samples = 1081;
   const double span = 270.0 * M_PI / 180.0;
+  const std::vector<double> directions = fanDirections(-span / 2, span / (samples - 1), samples, {0.0});
   std::vector<double> ranges;
   long hits = 0;
   const auto start = std::chrono::steady_clock::now();
   for (int k = 0; k < fans; ++k)
   {
-    caster.castFan(sensor, -span / 2, span / (samples - 1), samples, {0.0}, 10.0, ranges);
+    scene.castRays(sensor, directions, 0.0, 10.0, kSeenByLidars, ranges);
     for (double d : ranges)
       hits += d < 10.0;
   }

@@ -103,3 +103,44 @@ def test_cameras_work_only_while_enabled_at_their_rates(scene):
     world.step(1000)
     assert robot.sensor_updates('camera') == 30
     assert robot.sensor_updates('depth_camera') == 15
+
+
+POST_X = 1.5
+POST_URDF = """<robot name="post"><link name="post_link">
+  <visual><geometry><box size="0.5 0.5 1"/></geometry><material name="blue"><color rgba="0 0 1 1"/></material></visual>
+  <collision><geometry><box size="0.1 0.1 1"/></geometry></collision>
+  <inertial><mass value="1"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>
+</link><gazebo><static>true</static></gazebo></robot>"""
+
+
+POST_SDF = f"""<model name="post"><static>true</static><pose>{POST_X} 0 0.5 0 0 0</pose><link name="link">
+  <collision name="collision"><geometry><box><size>0.1 0.1 1</size></box></geometry></collision>
+  <visual name="visual"><geometry><box><size>0.5 0.5 1</size></box></geometry>
+    <material><diffuse>0 0 1 1</diffuse></material></visual></link></model>"""
+
+
+@pytest.mark.parametrize('post_of', ['robot', 'world'])
+@pytest.mark.parametrize('lidar_type', ['ray', 'gpu_ray'])
+def test_cameras_and_gpu_ray_see_visuals_ray_lidars_collisions(urdf_xml, control_config, lidar_type, post_of):
+    """A post (a static robot, or a model of the world) whose visual (0.5 m square, blue) is wider
+    than its collision (0.1 m): Gazebo's cameras and gpu_ray lidars render visuals, its ray lidars
+    hit collisions."""
+    world = make_world(control_config, sdf_world(POST_SDF) if post_of == 'world' else None)
+    robot = world.spawn(urdf_xml.replace('type="ray"', 'type="%s"' % lidar_type), 'tianracer')
+    if post_of == 'robot':
+        world.spawn(POST_URDF, 'post', pose=(POST_X, 0, 0.5, 0, 0, 0))
+    world.step(300)
+    for sensor in ('lidar', 'camera', 'depth_camera'):
+        robot.enable_sensor(sensor)
+    world.step(67)
+    scan = robot.scan('lidar')
+    ahead = scan['ranges'][np.argmin(np.abs(scan['angle_min'] + scan['angle_increment'] * np.arange(len(scan['ranges']))))]
+    face = 0.25 if lidar_type == 'gpu_ray' else 0.05
+    assert ahead == pytest.approx(POST_X - face - robot.link_pose('laser_link')[0], abs=0.05)  # noise 0.01 m
+    colour = robot.image('camera')
+    centre = colour['rgb'][colour['height'] // 2, colour['width'] // 2].astype(int)
+    assert centre[2] > 80 and centre[0] < 10 and centre[1] < 10, 'the blue visual'
+    depth = robot.image('depth_camera')
+    rotation, origin = optical_pose(robot, 'depth_camera')
+    along_x = (POST_X - 0.25 - origin[0]) / rotation[0, 2]  # the optical axis meets the visual's face
+    assert depth['depth'][depth['height'] // 2, depth['width'] // 2] == pytest.approx(along_x, abs=0.02)

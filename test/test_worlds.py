@@ -80,7 +80,8 @@ def warnings(world):
     return [text for level, text in world.messages() if level == 'WARN']
 
 
-def range_along_x(world, y=0.0, z=0.5):
+def range_along_x(world, y=0.0, z=0.25):
+    # z within the 1 m walls' height (they span z -0.5 .. 0.5), not along a face's edge
     return world.cast_ray([0.0, y, z], [1.0, 0.0, 0.0], 20.0)
 
 

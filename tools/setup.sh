@@ -23,6 +23,8 @@ APT_PACKAGES=(
   # the plant: physics, URDF parsing, XML, Python bindings
   libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev libtinyxml-dev
   libconsole-bridge-dev libassimp-dev
+  # the sensors: ray casting (Embree) and mesh textures (stb_image)
+  libembree-dev libstb-dev
   pybind11-dev python3-dev
   # rviz: what gui:=true opens in place of gzclient
   rviz

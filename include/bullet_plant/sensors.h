@@ -91,6 +91,7 @@ public:
 private:
   friend struct detail::SensorRendering;
   LaserScan scan_;
+  std::vector<double> directions_;  // its rays in its frame, computed at the first scan
 };
 
 // A camera frame: sensor_msgs/Image (rgb8) and, for depth cameras, a 32FC1 depth image and the
@@ -131,6 +132,8 @@ public:
 private:
   friend struct detail::SensorRendering;
   CameraFrame frame_;
+  std::vector<float> rendered_depth_;  // what the rays gave, kept from frame to frame
+  std::vector<float> noise_table_;     // gaussian samples of the image noise, drawn at the first frame
 };
 
 }  // namespace bullet_plant

@@ -17,7 +17,15 @@ struct StaticCollision
   Shape shape;
   urdf::Pose pose;    // in the world
   double mu = 1.0;    // Gazebo's default friction
-  Rgba colour;        // from the matching <visual>'s material, for cameras
+};
+
+// What cameras (and gpu_ray lidars) see of a static model: one of its links' <visual>s.
+struct StaticVisual
+{
+  std::string name;   // model::link::visual
+  Shape shape;
+  urdf::Pose pose;    // in the world
+  Rgba colour;        // <material><diffuse> (or <ambient>)
 };
 
 // The physics step's range: below a nanosecond the step rounds to zero simulated nanoseconds and
@@ -34,7 +42,12 @@ struct WorldDescription
   double contact_max_correcting_vel = 100.0;
   urdf::Vector3 gravity{0, 0, -9.8};
   urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
+  // <scene>: what cameras see where nothing is hit, and the share of light a surface facing away
+  // from the sun still gets (the mean of <ambient>'s red, green and blue).
+  Rgba background{0.70f, 0.80f, 0.95f, 1.0f};
+  double ambient = 0.35;
   std::vector<StaticCollision> collisions;
+  std::vector<StaticVisual> visuals;
   std::vector<std::string> warnings;  // each unsupported element once: what, where, left out
   std::string file;      // the world file; "" when parsed from text
   std::string base_dir;  // relative URIs of the world itself resolve against it ("": working directory)

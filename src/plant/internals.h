@@ -70,6 +70,7 @@ struct Robot::Internals
   };
   std::vector<LinkWrench> wrenches;
   std::vector<JointEffort> joint_efforts;
+  std::vector<int> ray_bodies;            // each body's handle in the world's RayScene (-1: no shapes)
 
   // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
   // then recovery, readSim, sensors.
@@ -109,13 +110,16 @@ struct World::Internals
   std::vector<std::unique_ptr<btCollisionObject>> static_objects;
   std::vector<std::string> static_names;  // of static_objects, model::link::collision
   std::vector<RayPrimitive> static_ray_shapes;
+  std::unique_ptr<RayScene> ray_scene;  // built when a sensor first needs it
 
   std::vector<std::unique_ptr<Robot>> robots;
 
   // "robot::link" or the static collision's name, for messages.
   std::string nameOf(const btCollisionObject* object) const;
-  // Everything sensors can see, in the world frame: the static scene and every robot's shapes.
-  std::vector<RayPrimitive> rayScene() const;
+  // Everything sensors can see: the static scene and every robot's bodies where they are now
+  // (a robot's bodies are built into it once). `hidden` as RayScene::commit.
+  const RayScene& rayScene(const void* hidden);
+  Lighting lighting() const;
 };
 
 // A robot's side of the plant (for the library and its tests).

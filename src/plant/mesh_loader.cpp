@@ -12,6 +12,7 @@
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <stb/stb_image.h>
 
 namespace bullet_plant
 {
@@ -47,6 +48,17 @@ MeshData::SubMesh subMeshFor(const aiMaterial* material)
   return s;
 }
 
+// A texture file name as a mesh file writes it, resolved against the mesh file's directory.
+std::string texturePath(const std::string& mesh_file, std::string name)
+{
+  if (name.compare(0, 7, "file://") == 0)
+    name = name.substr(7);
+  if (!name.empty() && name[0] == '/')
+    return name;
+  const size_t slash = mesh_file.rfind('/');
+  return slash == std::string::npos ? name : mesh_file.substr(0, slash + 1) + name;
+}
+
 // Every mesh instance of the node tree, in the scene's frame, appended to `out`.
 void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, MeshData& out)
 {
@@ -59,8 +71,14 @@ void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& par
     {
       const aiVector3D p = transform * mesh.mVertices[v];
       out.vertices.insert(out.vertices.end(), {p.x, p.y, p.z});
+      const aiVector3D uv = mesh.HasTextureCoords(0) ? mesh.mTextureCoords[0][v] : aiVector3D(0, 0, 0);
+      out.uvs.insert(out.uvs.end(), {uv.x, uv.y});
     }
     MeshData::SubMesh sub = subMeshFor(scene.mMaterials ? scene.mMaterials[mesh.mMaterialIndex] : nullptr);
+    if (!sub.texture.empty() && mesh.HasTextureCoords(0))
+      sub.image = loadTexture(texturePath(out.file, sub.texture), sub.texture_problem);
+    else if (!sub.texture.empty())
+      sub.texture_problem = "the mesh has no texture coordinates";
     sub.first_triangle = out.triangleCount();
     for (unsigned f = 0; f < mesh.mNumFaces; ++f)
     {
@@ -78,21 +96,27 @@ void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& par
     appendNode(scene, *node.mChildren[c], transform, out);
 }
 
-// One vertex per position: Assimp keeps a corner once per normal (an STL facet's, a hard edge's).
+// One vertex per position and texture coordinate: Assimp keeps a corner once per normal (an STL
+// facet's, a hard edge's).
 void weldVertices(MeshData& mesh)
 {
-  std::map<std::array<float, 3>, int> index_of;
+  std::map<std::array<float, 5>, int> index_of;
   std::vector<int> remap(mesh.vertexCount());
-  std::vector<float> welded;
+  std::vector<float> welded, welded_uvs;
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    const std::array<float, 3> p{{mesh.vertices[3 * v], mesh.vertices[3 * v + 1], mesh.vertices[3 * v + 2]}};
+    const std::array<float, 5> p{{mesh.vertices[3 * v], mesh.vertices[3 * v + 1], mesh.vertices[3 * v + 2],
+                                  mesh.uvs[2 * v], mesh.uvs[2 * v + 1]}};
     auto inserted = index_of.emplace(p, int(welded.size() / 3));
     if (inserted.second)
-      welded.insert(welded.end(), p.begin(), p.end());
+    {
+      welded.insert(welded.end(), p.begin(), p.begin() + 3);
+      welded_uvs.insert(welded_uvs.end(), p.begin() + 3, p.end());
+    }
     remap[v] = inserted.first->second;
   }
   mesh.vertices.swap(welded);
+  mesh.uvs.swap(welded_uvs);
   for (int& i : mesh.indices)
     i = remap[i];
 }
@@ -145,6 +169,52 @@ const MeshData::SubMesh& MeshData::subMeshOf(int triangle) const
   auto after = std::upper_bound(submeshes.begin(), submeshes.end(), triangle,
                                 [](int t, const SubMesh& s) { return t < s.first_triangle; });
   return *(after - 1);
+}
+
+namespace
+{
+// floor(x) mod n, for the texel a repeating coordinate falls on (without libm's floor: this runs per pixel).
+int wrapIndex(float x, int n)
+{
+  if (!(std::abs(x) < 1e9f))
+    return 0;
+  int i = int(x);
+  i -= x < float(i);
+  i %= n;
+  return i < 0 ? i + n : i;
+}
+}  // namespace
+
+Rgba Texture::at(float s, float t) const
+{
+  const int column = wrapIndex(s * float(width), width);
+  const int row = wrapIndex((1.0f - t) * float(height), height);  // rows from the top, t up from the bottom
+  const uint8_t* texel = &rgb[3 * (size_t(row) * size_t(width) + size_t(column))];
+  constexpr float kScale = 1.0f / 255.0f;
+  return {texel[0] * kScale, texel[1] * kScale, texel[2] * kScale, 1.0f};
+}
+
+std::shared_ptr<const Texture> loadTexture(const std::string& file, std::string& reason)
+{
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<const Texture>> cache;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (std::shared_ptr<const Texture> loaded = cache[file].lock())
+    return loaded;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(file.c_str(), &width, &height, &channels, 3);
+  if (!pixels)
+  {
+    reason = "texture '" + file + "' cannot be read (" + std::string(stbi_failure_reason()) + ")";
+    return nullptr;
+  }
+  auto texture = std::make_shared<Texture>();
+  texture->width = width;
+  texture->height = height;
+  texture->rgb.assign(pixels, pixels + size_t(width) * size_t(height) * 3);
+  stbi_image_free(pixels);
+  cache[file] = texture;
+  return texture;
 }
 
 std::shared_ptr<const MeshData> loadMesh(const std::string& file, const urdf::Vector3& scale, std::string& reason)

@@ -4,6 +4,7 @@
 // <unit> is applied and a Y_UP (or X_UP) file is turned so its up axis is z.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,19 @@
 
 namespace bullet_plant
 {
+// A diffuse texture as 8-bit RGB, rows from the top of the image.
+struct Texture
+{
+  int width = 0, height = 0;
+  std::vector<uint8_t> rgb;
+  // The texel at texture coordinates (s, t), t up from the image's bottom row as OBJ and Collada
+  // give them, repeating beyond [0, 1); the nearest texel.
+  Rgba at(float s, float t) const;
+};
+
+// A PNG or JPEG (stb_image), once per file while any copy is alive. Null with `reason` saying why.
+std::shared_ptr<const Texture> loadTexture(const std::string& file, std::string& reason);
+
 struct MeshData
 {
   // A run of triangles drawn with one material.
@@ -21,10 +35,13 @@ struct MeshData
     bool has_colour = false;  // false: the file gives no diffuse colour (STL); use the visual's
     Rgba diffuse;
     std::string texture;      // the diffuse texture's file name as the file writes it, or ""
+    std::shared_ptr<const Texture> image;  // that texture (relative to the mesh file), null if none or unreadable
+    std::string texture_problem;           // why a named texture is not used, or ""
   };
   std::string file;
   std::vector<float> vertices;  // x y z per vertex, scaled, in metres (Bullet's btScalar is float)
   std::vector<int> indices;     // three vertex indices per triangle
+  std::vector<float> uvs;       // texture coordinates s t per vertex (first channel), or empty
   std::vector<SubMesh> submeshes;
   float min[3] = {0, 0, 0}, max[3] = {0, 0, 0};  // bounds of the vertices
 

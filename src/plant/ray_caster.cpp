@@ -1,42 +1,291 @@
 #include "ray_caster.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <condition_variable>
+#include <functional>
 #include <limits>
-#include <map>
 #include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
 
 namespace bullet_plant
 {
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kTwoPi = 2.0 * M_PI;
+// A plane is a square of this half size (m) in tiles of kPlaneTile: far beyond any sensor's range,
+// and small tiles keep Embree's float hit distances within 1e-5 m of the exact plane.
+constexpr double kPlaneHalfSize = 1000.0;
+constexpr double kPlaneTile = 100.0;
 
-double intersectBox(const double o[3], const double d[3], const double h[3])
+// Outward unit normal of a sphere or cylinder at a point on it (shape frame).
+void curvedNormal(const RayPrimitive& p, const double q[3], double n[3])
 {
-  double t_near = -kInf, t_far = kInf;
-  bool inside = true;
-  for (int i = 0; i < 3; ++i)
+  n[0] = n[1] = n[2] = 0.0;
+  if (p.kind == Shape::Kind::Sphere)
   {
-    inside = inside && std::abs(o[i]) < h[i];
-    if (d[i] == 0.0)
-    {
-      if (std::abs(o[i]) > h[i])
-        return kInf;
-      continue;
-    }
-    double inv = 1.0 / d[i];
-    double t0 = (-h[i] - o[i]) * inv, t1 = (h[i] - o[i]) * inv;
-    if (t0 > t1)
-      std::swap(t0, t1);
-    t_near = std::max(t_near, t0);
-    t_far = std::min(t_far, t1);
+    const double r = norm(q);
+    for (int i = 0; r > 0 && i < 3; ++i)
+      n[i] = q[i] / r;
+    return;
   }
-  if (inside || t_near > t_far || t_near < 0.0)
-    return kInf;
-  return t_near;
+  const double radial = std::hypot(q[0], q[1]);
+  if (std::abs(p.half_length - std::abs(q[2])) < std::abs(p.radius - radial))
+    n[2] = q[2] >= 0 ? 1.0 : -1.0;
+  else if (radial > 0)
+  {
+    n[0] = q[0] / radial;
+    n[1] = q[1] / radial;
+  }
 }
+
+// ------------------------------------------------------------------------------- Embree device
+
+RTCDevice device()
+{
+  static RTCDevice d = [] {
+    RTCDevice created = rtcNewDevice(nullptr);
+    if (!created)
+      throw std::runtime_error("Embree: cannot create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) +
+                               ")");
+    return created;
+  }();
+  return d;
+}
+
+// ---------------------------------------------------------------------------------- thread pool
+
+// Runs tasks 0..n-1 on the calling thread and its workers; returns when all are done.
+class RayThreadPool
+{
+public:
+  explicit RayThreadPool(int threads)
+  {
+    for (int i = 1; i < threads; ++i)
+      workers_.emplace_back([this] { work(); });
+  }
+  ~RayThreadPool()
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : workers_)
+      t.join();
+  }
+  int threads() const { return int(workers_.size()) + 1; }
+
+  void run(int tasks, const std::function<void(int)>& task)
+  {
+    if (workers_.empty() || tasks <= 1)
+    {
+      for (int i = 0; i < tasks; ++i)
+        task(i);
+      return;
+    }
+    std::unique_lock<std::mutex> lock(mutex_);
+    job_ = &task;
+    tasks_ = tasks;
+    next_ = 0;
+    busy_ = int(workers_.size());
+    ++generation_;
+    lock.unlock();
+    wake_.notify_all();
+    drain();
+    lock.lock();
+    done_.wait(lock, [this] { return busy_ == 0; });
+    job_ = nullptr;
+  }
+
+private:
+  void drain()
+  {
+    for (int i = next_++; i < tasks_; i = next_++)
+      (*job_)(i);
+  }
+  void work()
+  {
+    uint64_t seen = 0;
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;)
+    {
+      wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      if (stop_)
+        return;
+      seen = generation_;
+      lock.unlock();
+      drain();
+      lock.lock();
+      if (--busy_ == 0)
+        done_.notify_one();
+    }
+  }
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(int)>* job_ = nullptr;
+  int tasks_ = 0;
+  std::atomic<int> next_{0};
+  int busy_ = 0;
+  uint64_t generation_ = 0;
+  bool stop_ = false;
+};
+
+std::mutex pool_mutex;  // one job at a time; guards the pool's replacement too
+std::unique_ptr<RayThreadPool> pool;
+int requested_threads = 0;  // 0: the hardware's
+
+RayThreadPool& threadPool()
+{
+  if (!pool)
+  {
+    int n = requested_threads > 0 ? requested_threads : int(std::thread::hardware_concurrency());
+    pool.reset(new RayThreadPool(std::max(1, n)));
+  }
+  return *pool;
+}
+
+void parallelTasks(int tasks, const std::function<void(int)>& task)
+{
+  std::lock_guard<std::mutex> lock(pool_mutex);
+  threadPool().run(tasks, task);
+}
+
+// ------------------------------------------------------------------------------ geometry builders
+
+void transformedVertices(const Frame& frame, const float* vertices, int count, RTCGeometry g)
+{
+  float* out = static_cast<float*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), size_t(count)));
+  for (int v = 0; v < count; ++v)
+  {
+    const double p[3] = {vertices[3 * v], vertices[3 * v + 1], vertices[3 * v + 2]};
+    double q[3];
+    frame.apply(p, q);
+    for (int i = 0; i < 3; ++i)
+      out[3 * v + i] = float(q[i]);
+  }
+}
+
+RTCGeometry triangleGeometry(const Frame& frame, const std::vector<float>& vertices, const std::vector<int>& indices)
+{
+  RTCGeometry g = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  transformedVertices(frame, vertices.data(), int(vertices.size() / 3), g);
+  unsigned* out = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                 3 * sizeof(unsigned), indices.size() / 3));
+  std::copy(indices.begin(), indices.end(), out);
+  return g;
+}
+
+void boxTriangles(const double half[3], std::vector<float>& vertices, std::vector<int>& indices)
+{
+  for (int c = 0; c < 8; ++c)
+    for (int i = 0; i < 3; ++i)
+      vertices.push_back(float((c >> (2 - i)) & 1 ? half[i] : -half[i]));
+  indices = {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+}
+
+void planeTriangles(const double normal[3], std::vector<float>& vertices, std::vector<int>& indices)
+{
+  // two unit vectors across the plane
+  double a[3] = {1, 0, 0};
+  if (std::abs(normal[0]) > 0.9)
+    a[0] = 0, a[1] = 1;
+  double s[3], t[3];
+  cross(normal, a, s);
+  const double ls = norm(s);
+  for (double& x : s)
+    x /= ls;
+  cross(normal, s, t);
+  const int n = int(2 * kPlaneHalfSize / kPlaneTile);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+    {
+      const double x = -kPlaneHalfSize + i * kPlaneTile, y = -kPlaneHalfSize + j * kPlaneTile;
+      for (int k = 0; k < 3; ++k)
+        vertices.push_back(float(x * s[k] + y * t[k]));
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+    {
+      const int v = i * (n + 1) + j;
+      indices.insert(indices.end(), {v, v + n + 1, v + n + 2, v, v + n + 2, v + 1});
+    }
+}
+
+void curvedBounds(const RTCBoundsFunctionArguments* args)
+{
+  const RayPrimitive& p = *static_cast<const RayPrimitive*>(args->geometryUserPtr);
+  const double r = p.kind == Shape::Kind::Sphere ? p.radius : std::hypot(p.radius, p.half_length);
+  RTCBounds* b = args->bounds_o;
+  b->lower_x = float(p.frame.t[0] - r) - 1e-4f;
+  b->lower_y = float(p.frame.t[1] - r) - 1e-4f;
+  b->lower_z = float(p.frame.t[2] - r) - 1e-4f;
+  b->upper_x = float(p.frame.t[0] + r) + 1e-4f;
+  b->upper_y = float(p.frame.t[1] + r) + 1e-4f;
+  b->upper_z = float(p.frame.t[2] + r) + 1e-4f;
+}
+
+// Spheres and cylinders, exactly, in double precision: the nearest hit within the ray's
+// [tnear, tfar], with its normal in the shape set's frame.
+void curvedIntersect(const RTCIntersectFunctionNArguments* args)
+{
+  const RayPrimitive& p = *static_cast<const RayPrimitive*>(args->geometryUserPtr);
+  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+  RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+  const unsigned N = args->N;
+  for (unsigned i = 0; i < N; ++i)
+  {
+    if (args->valid[i] != -1 || !(RTCRayN_mask(ray, N, i) & p.seen_by))
+      continue;
+    const double origin[3] = {RTCRayN_org_x(ray, N, i), RTCRayN_org_y(ray, N, i), RTCRayN_org_z(ray, N, i)};
+    double dir[3] = {RTCRayN_dir_x(ray, N, i), RTCRayN_dir_y(ray, N, i), RTCRayN_dir_z(ray, N, i)};
+    const double length = norm(dir);
+    if (!(length > 0))
+      continue;
+    for (double& x : dir)
+      x /= length;
+    double o[3], d[3];
+    p.frame.inverseApply(origin, o);
+    p.frame.inverseRotate(dir, d);
+    const double along = p.kind == Shape::Kind::Sphere ? intersectSphere(o, d, p.radius)
+                                                       : intersectCylinder(o, d, p.radius, p.half_length);
+    const double t = along / length;  // in the ray's own units
+    if (!(t >= RTCRayN_tnear(ray, N, i) && t < RTCRayN_tfar(ray, N, i)))
+      continue;
+    const double q[3] = {o[0] + along * d[0], o[1] + along * d[1], o[2] + along * d[2]};
+    double n_shape[3], n[3];
+    curvedNormal(p, q, n_shape);
+    p.frame.rotate(n_shape, n);
+    RTCRayN_tfar(ray, N, i) = float(t);
+    RTCHitN_Ng_x(hit, N, i) = float(n[0]);
+    RTCHitN_Ng_y(hit, N, i) = float(n[1]);
+    RTCHitN_Ng_z(hit, N, i) = float(n[2]);
+    RTCHitN_u(hit, N, i) = 0.0f;
+    RTCHitN_v(hit, N, i) = 0.0f;
+    RTCHitN_primID(hit, N, i) = args->primID;
+    RTCHitN_geomID(hit, N, i) = args->geomID;
+    RTCHitN_instID(hit, N, i, 0) = args->context->instID[0];
+  }
+}
+
+void frameToColumnMajor(const Frame& f, float out[12])
+{
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r)
+      out[3 * c + r] = float(f.R[3 * r + c]);
+  for (int r = 0; r < 3; ++r)
+    out[9 + r] = float(f.t[r]);
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------------ analytic intersections
 
 double intersectSphere(const double o[3], const double d[3], double r)
 {
@@ -86,207 +335,20 @@ double intersectCylinder(const double o[3], const double d[3], double r, double 
   return best;
 }
 
-double intersectPlane(const double o[3], const double d[3], const double n[3])
+void setRayThreads(int n)
 {
-  double height = dot(o, n), approach = dot(d, n);
-  if (height <= 0.0 || approach >= 0.0)
-    return kInf;
-  return -height / approach;
+  std::lock_guard<std::mutex> lock(pool_mutex);
+  requested_threads = n;
+  pool.reset();
 }
 
-// Entry distance of the ray into the box, or +inf if it misses it or it lies beyond `limit`.
-double slabEntry(const float lo[3], const float hi[3], const double o[3], const double inv[3], double limit)
+int rayThreads()
 {
-  double t_near = 0.0, t_far = limit;
-  for (int i = 0; i < 3; ++i)
-  {
-    double t0 = (lo[i] - o[i]) * inv[i], t1 = (hi[i] - o[i]) * inv[i];
-    if (t0 > t1)
-      std::swap(t0, t1);
-    t_near = t0 > t_near ? t0 : t_near;
-    t_far = t1 < t_far ? t1 : t_far;
-    if (t_near > t_far)
-      return kInf;
-  }
-  return t_near;
+  std::lock_guard<std::mutex> lock(pool_mutex);
+  return threadPool().threads();
 }
 
-double wrapAngle(double a)
-{
-  a = std::fmod(a, kTwoPi);
-  return a < 0 ? a + kTwoPi : a;
-}
-}  // namespace
-
-TriangleBvh::TriangleBvh(std::shared_ptr<const MeshData> mesh) : mesh_(std::move(mesh))
-{
-  const MeshData& m = *mesh_;
-  const int n = m.triangleCount();
-  triangles_.resize(n);
-  std::vector<float> centroids(3 * n);
-  for (int t = 0; t < n; ++t)
-  {
-    Triangle& tri = triangles_[t];
-    const float* v[3];
-    for (int k = 0; k < 3; ++k)
-      v[k] = &m.vertices[3 * m.indices[3 * t + k]];
-    for (int i = 0; i < 3; ++i)
-    {
-      tri.v0[i] = v[0][i];
-      tri.e1[i] = double(v[1][i]) - v[0][i];
-      tri.e2[i] = double(v[2][i]) - v[0][i];
-      centroids[3 * t + i] = (v[0][i] + v[1][i] + v[2][i]) / 3.0f;
-    }
-    tri.index = t;
-  }
-  for (int v = 0; v < m.vertexCount(); ++v)
-  {
-    const double p[3] = {m.vertices[3 * v], m.vertices[3 * v + 1], m.vertices[3 * v + 2]};
-    bound_radius_ = std::max(bound_radius_, norm(p));
-  }
-  nodes_.reserve(2 * n);
-  build(0, n, centroids);
-}
-
-int TriangleBvh::build(int first, int count, std::vector<float>& centroids)
-{
-  const int index = int(nodes_.size());
-  nodes_.emplace_back();
-  Node node;
-  float c_lo[3] = {1e30f, 1e30f, 1e30f}, c_hi[3] = {-1e30f, -1e30f, -1e30f};
-  for (int i = 0; i < 3; ++i)
-  {
-    node.lo[i] = 1e30f;
-    node.hi[i] = -1e30f;
-  }
-  for (int t = first; t < first + count; ++t)
-  {
-    const Triangle& tri = triangles_[t];
-    for (int i = 0; i < 3; ++i)
-    {
-      for (double corner : {tri.v0[i], tri.v0[i] + tri.e1[i], tri.v0[i] + tri.e2[i]})
-      {
-        node.lo[i] = std::min(node.lo[i], std::nextafter(float(corner), -1e30f));
-        node.hi[i] = std::max(node.hi[i], std::nextafter(float(corner), 1e30f));
-      }
-      c_lo[i] = std::min(c_lo[i], centroids[3 * tri.index + i]);
-      c_hi[i] = std::max(c_hi[i], centroids[3 * tri.index + i]);
-    }
-  }
-  constexpr int kLeafSize = 4;
-  if (count <= kLeafSize)
-  {
-    node.first = first;
-    node.count = count;
-    nodes_[index] = node;
-    return index;
-  }
-  int axis = 0;
-  for (int i = 1; i < 3; ++i)
-    if (c_hi[i] - c_lo[i] > c_hi[axis] - c_lo[axis])
-      axis = i;
-  const int half = count / 2;
-  std::nth_element(triangles_.begin() + first, triangles_.begin() + first + half, triangles_.begin() + first + count,
-                   [&](const Triangle& a, const Triangle& b) {
-                     return centroids[3 * a.index + axis] < centroids[3 * b.index + axis];
-                   });
-  build(first, half, centroids);
-  node.first = build(first + half, count - half, centroids);
-  nodes_[index] = node;
-  return index;
-}
-
-std::shared_ptr<const TriangleBvh> TriangleBvh::of(const std::shared_ptr<const MeshData>& mesh)
-{
-  static std::mutex mutex;
-  static std::map<const MeshData*, std::weak_ptr<const TriangleBvh>> built;
-  std::lock_guard<std::mutex> lock(mutex);
-  std::shared_ptr<const TriangleBvh> bvh = built[mesh.get()].lock();
-  if (!bvh)
-  {
-    bvh = std::make_shared<const TriangleBvh>(mesh);
-    built[mesh.get()] = bvh;
-  }
-  return bvh;
-}
-
-double TriangleBvh::intersect(const double o[3], const double d[3], int& triangle) const
-{
-  double inv[3];
-  for (int i = 0; i < 3; ++i)
-    inv[i] = 1.0 / d[i];  // +-inf along an axis the ray does not move on: the slab test still holds
-  double best = kInf;
-  int stack[64], depth = 0;
-  if (slabEntry(nodes_[0].lo, nodes_[0].hi, o, inv, best) == kInf)
-    return kInf;
-  stack[depth++] = 0;
-  while (depth > 0)
-  {
-    const Node& node = nodes_[stack[--depth]];
-    if (node.count > 0)
-    {
-      // Moeller-Trumbore, either side of the triangle
-      for (int k = node.first; k < node.first + node.count; ++k)
-      {
-        const Triangle& tri = triangles_[k];
-        double p[3];
-        cross(d, tri.e2, p);
-        const double det = dot(tri.e1, p);
-        if (std::abs(det) < 1e-300)
-          continue;
-        const double inv_det = 1.0 / det;
-        const double s[3] = {o[0] - tri.v0[0], o[1] - tri.v0[1], o[2] - tri.v0[2]};
-        const double u = dot(s, p) * inv_det;
-        if (u < 0.0 || u > 1.0)
-          continue;
-        double q[3];
-        cross(s, tri.e1, q);
-        const double v = dot(d, q) * inv_det;
-        if (v < 0.0 || u + v > 1.0)
-          continue;
-        const double t = dot(tri.e2, q) * inv_det;
-        if (t > 0.0 && t < best)
-        {
-          best = t;
-          triangle = tri.index;
-        }
-      }
-      continue;
-    }
-    const int a = int(&node - nodes_.data()) + 1, b = node.first;
-    const double ta = slabEntry(nodes_[a].lo, nodes_[a].hi, o, inv, best);
-    const double tb = slabEntry(nodes_[b].lo, nodes_[b].hi, o, inv, best);
-    // the nearer child on top of the stack, so hits there prune the other
-    if (ta <= tb)
-    {
-      if (tb != kInf)
-        stack[depth++] = b;
-      if (ta != kInf)
-        stack[depth++] = a;
-    }
-    else
-    {
-      if (ta != kInf)
-        stack[depth++] = a;
-      stack[depth++] = b;
-    }
-  }
-  return best;
-}
-
-void TriangleBvh::normal(int triangle, double out[3]) const
-{
-  const MeshData& m = *mesh_;
-  const float* v[3];
-  for (int k = 0; k < 3; ++k)
-    v[k] = &m.vertices[3 * m.indices[3 * triangle + k]];
-  const double e1[3] = {double(v[1][0]) - v[0][0], double(v[1][1]) - v[0][1], double(v[1][2]) - v[0][2]};
-  const double e2[3] = {double(v[2][0]) - v[0][0], double(v[2][1]) - v[0][1], double(v[2][2]) - v[0][2]};
-  cross(e1, e2, out);
-  const double length = norm(out);
-  for (int i = 0; length > 0 && i < 3; ++i)
-    out[i] /= length;
-}
+// ------------------------------------------------------------------------------------ primitives
 
 RayPrimitive RayPrimitive::fromMesh(const std::shared_ptr<const MeshData>& mesh, const urdf::Pose& pose, const void* owner)
 {
@@ -294,20 +356,8 @@ RayPrimitive RayPrimitive::fromMesh(const std::shared_ptr<const MeshData>& mesh,
   p.kind = Shape::Kind::Mesh;
   p.frame = Frame::fromPose(pose);
   p.owner = owner;
-  p.mesh = TriangleBvh::of(mesh);
-  p.bound_radius = p.mesh->boundRadius();
+  p.mesh = mesh;
   return p;
-}
-
-const Rgba& RayPrimitive::colourAt(int triangle) const
-{
-  if (mesh && triangle >= 0)
-  {
-    const MeshData::SubMesh& sub = mesh->mesh().subMeshOf(triangle);
-    if (sub.has_colour)
-      return sub.diffuse;
-  }
-  return colour;
 }
 
 RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, const void* owner)
@@ -321,20 +371,21 @@ RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, con
     case Shape::Kind::Box:
       for (int i = 0; i < 3; ++i)
         p.half[i] = s.box_size[i] / 2.0;
-      p.bound_radius = norm(p.half);
       break;
     case Shape::Kind::Cylinder:
       p.radius = s.radius;
       p.half_length = s.length / 2.0;
-      p.bound_radius = std::sqrt(p.radius * p.radius + p.half_length * p.half_length);
       break;
     case Shape::Kind::Sphere:
       p.radius = s.radius;
-      p.bound_radius = s.radius;
       break;
     case Shape::Kind::Plane:
       p.normal[0] = s.normal.x; p.normal[1] = s.normal.y; p.normal[2] = s.normal.z;
-      p.bound_radius = kInf;
+      {
+        const double n = norm(p.normal);
+        for (double& x : p.normal)
+          x = n > 0 ? x / n : 0.0;
+      }
       break;
     case Shape::Kind::Mesh:
       break;  // fromMesh
@@ -342,206 +393,424 @@ RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, con
   return p;
 }
 
-double RayPrimitive::intersect(const double origin[3], const double dir[3], int* triangle) const
+Rgba RayPrimitive::surfaceColour(int triangle, float u, float v) const
 {
-  double o[3], d[3];
-  frame.inverseApply(origin, o);
-  frame.inverseRotate(dir, d);
-  switch (kind)
+  if (!mesh || triangle < 0)
+    return colour;
+  const MeshData::SubMesh& sub = mesh->subMeshOf(triangle);
+  if (sub.image && !mesh->uvs.empty())
   {
-    case Shape::Kind::Box: return intersectBox(o, d, half);
-    case Shape::Kind::Cylinder: return intersectCylinder(o, d, radius, half_length);
-    case Shape::Kind::Sphere: return intersectSphere(o, d, radius);
-    case Shape::Kind::Plane: return intersectPlane(o, d, normal);
-    case Shape::Kind::Mesh:
-    {
-      int hit = -1;
-      const double t = mesh->intersect(o, d, hit);
-      if (triangle)
-        *triangle = hit;
-      return t;
-    }
+    const int* corner = &mesh->indices[3 * triangle];
+    const float w0 = 1.0f - u - v;
+    const float s = w0 * mesh->uvs[2 * corner[0]] + u * mesh->uvs[2 * corner[1]] + v * mesh->uvs[2 * corner[2]];
+    const float t =
+        w0 * mesh->uvs[2 * corner[0] + 1] + u * mesh->uvs[2 * corner[1] + 1] + v * mesh->uvs[2 * corner[2] + 1];
+    return sub.image->at(s, t);
   }
-  return kInf;
+  return sub.has_colour ? sub.diffuse : colour;
 }
 
-RayCaster::RayCaster(const std::vector<RayPrimitive>& primitives, const void* exclude)
+Lighting Lighting::of(const urdf::Vector3& light_direction, double ambient, const Rgba& background)
 {
-  primitives_.reserve(primitives.size());
-  for (const RayPrimitive& p : primitives)
-    if (exclude == nullptr || p.owner != exclude)
-      primitives_.push_back(&p);
+  Lighting l;
+  const double towards[3] = {-light_direction.x, -light_direction.y, -light_direction.z};
+  const double n = norm(towards);
+  for (int i = 0; i < 3; ++i)
+    l.towards_light[i] = n > 0 ? towards[i] / n : 0.0;
+  l.ambient = ambient;
+  l.background[0] = float(background.r);
+  l.background[1] = float(background.g);
+  l.background[2] = float(background.b);
+  return l;
 }
 
-double RayCaster::cast(const double origin[3], const double dir[3], double max_range) const
-{
-  return castHit(origin, dir, max_range).distance;
-}
+// ------------------------------------------------------------------------------------ shape sets
 
-void RayPrimitive::normalAt(const double point[3], double out[3], int triangle) const
+// Shapes that move together, in their common frame, as one Embree scene.
+struct RayScene::ShapeSet
 {
-  double p[3], n[3] = {0, 0, 0};
-  frame.inverseApply(point, p);
-  switch (kind)
+  RTCScene scene = nullptr;
+  std::vector<RayPrimitive> shapes;      // never resized after construction: user geometry points into it
+  std::vector<int> shape_of_geometry;    // Embree geometry id -> index in shapes
+
+  explicit ShapeSet(std::vector<RayPrimitive> primitives) : shapes(std::move(primitives))
   {
-    case Shape::Kind::Box:
+    scene = rtcNewScene(device());
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    for (size_t k = 0; k < shapes.size(); ++k)
     {
-      // the face the point is closest to
-      int axis = 0;
-      double best = kInf;
-      for (int i = 0; i < 3; ++i)
+      const RayPrimitive& p = shapes[k];
+      RTCGeometry g = nullptr;
+      std::vector<float> vertices;
+      std::vector<int> indices;
+      switch (p.kind)
       {
-        double gap = std::abs(half[i] - std::abs(p[i]));
-        if (gap < best)
-        {
-          best = gap;
-          axis = i;
-        }
+        case Shape::Kind::Box:
+          boxTriangles(p.half, vertices, indices);
+          g = triangleGeometry(p.frame, vertices, indices);
+          break;
+        case Shape::Kind::Plane:
+          planeTriangles(p.normal, vertices, indices);
+          g = triangleGeometry(p.frame, vertices, indices);
+          break;
+        case Shape::Kind::Mesh:
+          g = triangleGeometry(p.frame, p.mesh->vertices, p.mesh->indices);
+          break;
+        case Shape::Kind::Sphere:
+        case Shape::Kind::Cylinder:
+          g = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_USER);
+          rtcSetGeometryUserPrimitiveCount(g, 1);
+          rtcSetGeometryUserData(g, const_cast<RayPrimitive*>(&p));
+          rtcSetGeometryBoundsFunction(g, curvedBounds, nullptr);
+          rtcSetGeometryIntersectFunction(g, curvedIntersect);
+          break;
       }
-      n[axis] = p[axis] >= 0 ? 1.0 : -1.0;
-      break;
+      rtcSetGeometryMask(g, p.seen_by);
+      rtcCommitGeometry(g);
+      const unsigned id = rtcAttachGeometry(scene, g);
+      rtcReleaseGeometry(g);
+      if (shape_of_geometry.size() <= id)
+        shape_of_geometry.resize(id + 1, -1);
+      shape_of_geometry[id] = int(k);
     }
-    case Shape::Kind::Cylinder:
-    {
-      double radial = std::hypot(p[0], p[1]);
-      if (std::abs(half_length - std::abs(p[2])) < std::abs(radius - radial))
-        n[2] = p[2] >= 0 ? 1.0 : -1.0;
-      else if (radial > 0)
-      {
-        n[0] = p[0] / radial;
-        n[1] = p[1] / radial;
-      }
-      break;
-    }
-    case Shape::Kind::Sphere:
-    {
-      double r = norm(p);
-      for (int i = 0; r > 0 && i < 3; ++i)
-        n[i] = p[i] / r;
-      break;
-    }
-    case Shape::Kind::Plane:
-      for (int i = 0; i < 3; ++i)
-        n[i] = normal[i];
-      break;
-    case Shape::Kind::Mesh:
-      if (triangle >= 0)
-        mesh->normal(triangle, n);
-      break;
+    rtcCommitScene(scene);
   }
-  frame.rotate(n, out);
+  ~ShapeSet() { rtcReleaseScene(scene); }
+};
+
+// ------------------------------------------------------------------------------------- RayScene
+
+RayScene::RayScene(const std::vector<RayPrimitive>& world_shapes)
+{
+  top_ = rtcNewScene(device());
+  rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC);
+  rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
+  instances_.emplace_back();
+  instances_[0].set = std::make_shared<ShapeSet>(world_shapes);
+  attach(instances_[0]);
+  rtcCommitScene(top_);
 }
 
-RayHit RayCaster::castHit(const double origin[3], const double dir[3], double max_range) const
+RayScene::~RayScene()
 {
-  double best = kInf;
-  const RayPrimitive* hit = nullptr;
-  int hit_triangle = -1;
-  for (const RayPrimitive* p : primitives_)
-  {
-    const double* c = p->frame.t;
-    double to_centre[3] = {c[0] - origin[0], c[1] - origin[1], c[2] - origin[2]};
-    if (!std::isinf(p->bound_radius))
-    {
-      double along = dot(to_centre, dir);
-      double dist2 = dot(to_centre, to_centre) - along * along;
-      if (dist2 > p->bound_radius * p->bound_radius || along + p->bound_radius < 0.0 ||
-          along - p->bound_radius > std::min(best, max_range))
-        continue;
-    }
-    int triangle = -1;
-    double t = p->intersect(origin, dir, &triangle);
-    if (t < best)
-    {
-      best = t;
-      hit = p;
-      hit_triangle = triangle;
-    }
-  }
-  return best <= max_range ? RayHit{best, hit, hit_triangle} : RayHit{kInf, nullptr, -1};
+  instances_.clear();
+  rtcReleaseScene(top_);
 }
 
-void RayCaster::castFan(const Frame& sensor, double a0, double da, int n_azimuth, const std::vector<double>& elevations,
-                        double max_range, std::vector<double>& out) const
+void RayScene::attach(Instance& instance)
 {
-  const size_t n_rows = elevations.size();
-  out.assign(n_rows * n_azimuth, kInf);
-  if (n_azimuth <= 0)
+  RTCGeometry g = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(g, instance.set->scene);
+  rtcSetGeometryTimeStepCount(g, 1);
+  float m[12];
+  frameToColumnMajor(instance.pose, m);
+  rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+  rtcSetGeometryMask(g, kSeenByAll);
+  rtcCommitGeometry(g);
+  instance.geometry_id = rtcAttachGeometry(top_, g);
+  rtcReleaseGeometry(g);
+  if (instance_of_geometry_.size() <= instance.geometry_id)
+    instance_of_geometry_.resize(instance.geometry_id + 1, -1);
+  instance_of_geometry_[instance.geometry_id] = int(&instance - instances_.data());
+}
+
+int RayScene::addBody(const void* owner, std::vector<RayPrimitive> shapes)
+{
+  Instance instance;
+  instance.set = std::make_shared<ShapeSet>(std::move(shapes));
+  instance.owner = owner;
+  instances_.push_back(std::move(instance));
+  attach(instances_.back());
+  if (owner == hidden_)
+    hidden_ = nullptr;  // the next commit hides it too
+  changed_ = true;
+  return int(instances_.size()) - 1;
+}
+
+void RayScene::removeOwner(const void* owner)
+{
+  for (Instance& instance : instances_)
+    if (instance.set && instance.owner == owner && owner != nullptr)
+    {
+      rtcDetachGeometry(top_, instance.geometry_id);
+      instance_of_geometry_[instance.geometry_id] = -1;
+      instance.set.reset();
+      instance.owner = nullptr;
+    }
+  if (owner == hidden_)
+    hidden_ = nullptr;
+  changed_ = true;
+}
+
+bool RayScene::hasOwner(const void* owner) const
+{
+  return std::any_of(instances_.begin(), instances_.end(),
+                     [&](const Instance& i) { return i.set && i.owner == owner; });
+}
+
+void RayScene::setPose(int body, const Frame& world_from_body)
+{
+  Instance& instance = instances_.at(size_t(body));
+  if (std::equal(world_from_body.R, world_from_body.R + 9, instance.pose.R) &&
+      std::equal(world_from_body.t, world_from_body.t + 3, instance.pose.t))
     return;
-  // Ray directions in the world, once per scan.
-  std::vector<double> dirs(3 * n_rows * n_azimuth);
-  for (size_t row = 0; row < n_rows; ++row)
+  instance.pose = world_from_body;
+  std::copy(world_from_body.R, world_from_body.R + 9, instance.rotation);
+  RTCGeometry g = rtcGetGeometry(top_, instance.geometry_id);
+  float m[12];
+  frameToColumnMajor(world_from_body, m);
+  rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+  rtcCommitGeometry(g);
+  changed_ = true;
+}
+
+void RayScene::commit(const void* hidden)
+{
+  if (hidden != hidden_)
   {
-    double ce = std::cos(elevations[row]), se = std::sin(elevations[row]);
+    for (Instance& instance : instances_)
+    {
+      if (!instance.set || instance.owner == nullptr || (instance.owner != hidden && instance.owner != hidden_))
+        continue;
+      RTCGeometry g = rtcGetGeometry(top_, instance.geometry_id);
+      rtcSetGeometryMask(g, instance.owner == hidden ? 0u : unsigned(kSeenByAll));
+      rtcCommitGeometry(g);
+    }
+    hidden_ = hidden;
+    changed_ = true;
+  }
+  if (changed_)
+    rtcCommitScene(top_);
+  changed_ = false;
+}
+
+// ------------------------------------------------------------------------------------- casting
+
+void RayScene::resolve(const RTCRayHit& rh, RayHit& out) const
+{
+  const Instance& instance = instances_[size_t(instance_of_geometry_[rh.hit.instID[0]])];
+  const ShapeSet& set = *instance.set;
+  const RayPrimitive& p = set.shapes[size_t(set.shape_of_geometry[rh.hit.geomID])];
+  out.distance = rh.ray.tfar;
+  out.primitive = &p;
+  out.triangle = p.kind == Shape::Kind::Mesh ? int(rh.hit.primID) : -1;
+  out.u = rh.hit.u;
+  out.v = rh.hit.v;
+  const double ng[3] = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+  instance.pose.rotate(ng, out.normal);
+  const double length = norm(out.normal);
+  const double facing = out.normal[0] * rh.ray.dir_x + out.normal[1] * rh.ray.dir_y + out.normal[2] * rh.ray.dir_z;
+  const double scale = length > 0 ? (facing > 0 ? -1.0 : 1.0) / length : 0.0;
+  for (double& n : out.normal)
+    n *= scale;
+}
+
+RayHit RayScene::castHit(const double origin[3], const double dir[3], double near, double far, unsigned seen_by) const
+{
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rh;
+  rh.ray.org_x = float(origin[0]);
+  rh.ray.org_y = float(origin[1]);
+  rh.ray.org_z = float(origin[2]);
+  rh.ray.dir_x = float(dir[0]);
+  rh.ray.dir_y = float(dir[1]);
+  rh.ray.dir_z = float(dir[2]);
+  rh.ray.tnear = float(near);
+  rh.ray.tfar = float(far);
+  rh.ray.mask = seen_by;
+  rh.ray.time = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(top_, &context, &rh);
+  RayHit out;
+  out.distance = kInf;
+  if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID)
+    resolve(rh, out);
+  return out;
+}
+
+double RayScene::cast(const double origin[3], const double dir[3], double far, unsigned seen_by) const
+{
+  return castHit(origin, dir, 0.0, far, seen_by).distance;
+}
+
+namespace
+{
+constexpr int kPacket = 16;
+
+// A packet of rays, Embree's structure of arrays.
+struct alignas(64) Packet
+{
+  RTCRayHit16 rh;
+  int valid[kPacket];
+
+  void set(int lane, const float origin[3], const double dir[3], float near, float far, unsigned mask)
+  {
+    valid[lane] = -1;
+    rh.ray.org_x[lane] = origin[0];
+    rh.ray.org_y[lane] = origin[1];
+    rh.ray.org_z[lane] = origin[2];
+    rh.ray.dir_x[lane] = float(dir[0]);
+    rh.ray.dir_y[lane] = float(dir[1]);
+    rh.ray.dir_z[lane] = float(dir[2]);
+    rh.ray.tnear[lane] = near;
+    rh.ray.tfar[lane] = far;
+    rh.ray.mask[lane] = mask;
+    rh.ray.time[lane] = 0;
+    rh.ray.flags[lane] = 0;
+    rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+  void clear() { std::fill(valid, valid + kPacket, 0); }
+  bool hit(int lane) const { return valid[lane] == -1 && rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID; }
+};
+}  // namespace
+
+std::vector<double> fanDirections(double a0, double da, int n_azimuth, const std::vector<double>& elevations)
+{
+  std::vector<double> out;
+  out.reserve(3 * elevations.size() * size_t(std::max(0, n_azimuth)));
+  for (double e : elevations)
     for (int i = 0; i < n_azimuth; ++i)
     {
-      double a = a0 + i * da;
-      // Gazebo's convention: positive elevation tilts the ray up (towards +z of the sensor).
-      double local[3] = {ce * std::cos(a), ce * std::sin(a), se};
-      sensor.rotate(local, &dirs[3 * (row * n_azimuth + i)]);
+      const double a = a0 + i * da;
+      out.insert(out.end(), {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)});
     }
-  }
-  const double* origin = sensor.t;
-  for (const RayPrimitive* p : primitives_)
-  {
-    int first = 0, last = n_azimuth - 1;  // inclusive ranges of azimuth indices, possibly two
-    int first2 = 1, last2 = 0;
-    if (!std::isinf(p->bound_radius))
+  return out;
+}
+
+void RayScene::castRays(const Frame& sensor, const std::vector<double>& directions, double near, double far,
+                        unsigned seen_by, std::vector<double>& out) const
+{
+  const int n = int(directions.size() / 3);
+  out.assign(size_t(n), kInf);
+  const float origin[3] = {float(sensor.t[0]), float(sensor.t[1]), float(sensor.t[2])};
+  constexpr int kPacketsPerTask = 128;  // 2048 rays: a planar scan stays on the calling thread, waking no worker
+  const int packets = (n + kPacket - 1) / kPacket;
+  parallelTasks((packets + kPacketsPerTask - 1) / kPacketsPerTask, [&](int task) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    Packet packet;
+    for (int k = task * kPacketsPerTask; k < std::min(packets, (task + 1) * kPacketsPerTask); ++k)
     {
-      double c[3];
-      sensor.inverseApply(p->frame.t, c);
-      double dist = norm(c);
-      if (dist - p->bound_radius > max_range)
-        continue;
-      double dist_xy = std::hypot(c[0], c[1]);
-      if (dist_xy > p->bound_radius && da != 0.0)
+      packet.clear();
+      for (int lane = 0; lane < kPacket && k * kPacket + lane < n; ++lane)
       {
-        double centre = std::atan2(c[1], c[0]);
-        double half = std::asin(p->bound_radius / dist_xy);
-        double span = (n_azimuth - 1) * std::abs(da);
-        // Offsets from the fan's first ray, measured in the fan's direction of sweep.
-        double sign = da > 0 ? 1.0 : -1.0;
-        double lo = wrapAngle(sign * (centre - a0) - half);
-        double width = 2.0 * half;
-        double step = std::abs(da);
-        auto index = [&](double offset) { return static_cast<int>(std::floor(offset / step)); };
-        // The covered interval [lo, lo + width] (mod 2 pi) against the fan [0, span].
-        if (lo <= span)
+        double dir[3];
+        sensor.rotate(&directions[3 * size_t(k * kPacket + lane)], dir);
+        packet.set(lane, origin, dir, float(near), float(far), seen_by);
+      }
+      rtcIntersect16(packet.valid, top_, &context, &packet.rh);
+      for (int lane = 0; lane < kPacket && k * kPacket + lane < n; ++lane)
+        if (packet.hit(lane))
+          out[size_t(k * kPacket + lane)] = packet.rh.ray.tfar[lane];
+    }
+  });
+}
+
+namespace
+{
+// splitmix64's finaliser: 64 well mixed bits from a counter.
+uint64_t mixBits(uint64_t x)
+{
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+uint8_t toByte(float value)
+{
+  // value >= 0 after the clamp, where rounding half up is lround's rounding half away from zero
+  return uint8_t(int(std::max(0.0f, std::min(1.0f, value)) * 255.0f + 0.5f));
+}
+}  // namespace
+
+void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const
+{
+  const int w = rays.width, h = rays.height;
+  out.rgb8.resize(size_t(w) * h * 3);
+  out.depth.resize(size_t(w) * h);
+  const float origin[3] = {float(pose.t[0]), float(pose.t[1]), float(pose.t[2])};
+  // A pixel's ray (unnormalised): forward - xo * left - yo * up in the camera link's axes (x
+  // forward, y left, z up), so its distance parameter is the depth along the optical axis.
+  double axes[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int r = 0; r < 3; ++r)
+      axes[i][r] = pose.R[3 * r + i];
+  const float light[3] = {float(lighting.towards_light[0]), float(lighting.towards_light[1]),
+                          float(lighting.towards_light[2])};
+  const float ambient = float(lighting.ambient);
+  // 4 x 4 pixel blocks make a packet; a task is a band of 4 rows.
+  const int bands = (h + 3) / 4;
+  parallelTasks(bands, [&](int band) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    Packet packet;
+    for (int u0 = 0; u0 < w; u0 += 4)
+    {
+      packet.clear();
+      for (int lane = 0; lane < kPacket; ++lane)
+      {
+        const int u = u0 + lane % 4, v = 4 * band + lane / 4;
+        if (u >= w || v >= h)
+          continue;
+        const double xo = (u - rays.cx) / rays.fx, yo = (v - rays.cy) / rays.fy;
+        const double dir[3] = {axes[0][0] - xo * axes[1][0] - yo * axes[2][0],
+                               axes[0][1] - xo * axes[1][1] - yo * axes[2][1],
+                               axes[0][2] - xo * axes[1][2] - yo * axes[2][2]};
+        packet.set(lane, origin, dir, float(rays.near), float(rays.far), kSeenByCameras);
+      }
+      rtcIntersect16(packet.valid, top_, &context, &packet.rh);
+      for (int lane = 0; lane < kPacket; ++lane)
+      {
+        if (packet.valid[lane] != -1)
+          continue;
+        const size_t pixel = size_t(4 * band + lane / 4) * w + u0 + lane % 4;
+        float rgb[3];
+        if (!packet.hit(lane))
         {
-          first = static_cast<int>(std::ceil(lo / step));
-          last = std::min(n_azimuth - 1, index(lo + width));
+          std::copy(lighting.background, lighting.background + 3, rgb);
+          out.depth[pixel] = std::numeric_limits<float>::infinity();
         }
         else
         {
-          first = 1;
-          last = 0;
+          const Instance& instance = instances_[size_t(instance_of_geometry_[packet.rh.hit.instID[0][lane]])];
+          const ShapeSet& set = *instance.set;
+          const RayPrimitive& p = set.shapes[size_t(set.shape_of_geometry[packet.rh.hit.geomID[lane]])];
+          // the surface normal in the world, turned towards the camera; lambert over ambient
+          const float ng[3] = {packet.rh.hit.Ng_x[lane], packet.rh.hit.Ng_y[lane], packet.rh.hit.Ng_z[lane]};
+          const float dir[3] = {packet.rh.ray.dir_x[lane], packet.rh.ray.dir_y[lane], packet.rh.ray.dir_z[lane]};
+          float n[3];
+          for (int r = 0; r < 3; ++r)
+            n[r] = instance.rotation[3 * r] * ng[0] + instance.rotation[3 * r + 1] * ng[1] +
+                   instance.rotation[3 * r + 2] * ng[2];
+          const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+          float towards_light = n[0] * light[0] + n[1] * light[1] + n[2] * light[2];
+          if (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] > 0)
+            towards_light = -towards_light;
+          const float diffuse = length > 0 ? std::max(0.0f, towards_light / length) : 0.0f;
+          const float lit = ambient + (1.0f - ambient) * diffuse;
+          const int triangle = p.kind == Shape::Kind::Mesh ? int(packet.rh.hit.primID[lane]) : -1;
+          const Rgba c = triangle < 0 ? p.colour : p.surfaceColour(triangle, packet.rh.hit.u[lane], packet.rh.hit.v[lane]);
+          rgb[0] = c.r * lit;
+          rgb[1] = c.g * lit;
+          rgb[2] = c.b * lit;
+          out.depth[pixel] = packet.rh.ray.tfar[lane];
         }
-        if (lo + width > kTwoPi)  // wraps past the fan's start
+        if (rays.noise)
         {
-          first2 = 0;
-          last2 = std::min(n_azimuth - 1, index(lo + width - kTwoPi));
+          const uint64_t bits = mixBits(rays.noise_seed + pixel);
+          for (int k = 0; k < 3; ++k)
+            rgb[k] += rays.noise[(bits >> (16 * k)) & (PinholeRays::kNoiseTableSize - 1)];
         }
+        for (int k = 0; k < 3; ++k)
+          out.rgb8[3 * pixel + k] = toByte(rgb[k]);
       }
     }
-    for (size_t row = 0; row < n_rows; ++row)
-    {
-      double* ranges = &out[row * n_azimuth];
-      const double* row_dirs = &dirs[3 * row * n_azimuth];
-      for (int pass = 0; pass < 2; ++pass)
-      {
-        int a = pass == 0 ? first : first2, b = pass == 0 ? last : last2;
-        for (int i = a; i <= b; ++i)
-        {
-          double t = p->intersect(origin, &row_dirs[3 * i]);
-          if (t < ranges[i])
-            ranges[i] = t;
-        }
-      }
-    }
-  }
-  for (double& r : out)
-    if (r > max_range)
-      r = kInf;
+  });
 }
 
 }  // namespace bullet_plant

@@ -1,11 +1,19 @@
-// Ray casting for the sensors: analytic ray/box/cylinder/sphere/plane intersections and triangle
-// meshes (each through its own bounding volume hierarchy) against a snapshot of the scene, with
-// angular culling for lidar fans (each shape only meets the rays whose azimuth falls within its
-// bounding sphere), in double precision.
+// Ray casting for the sensors through Embree (Intel's CPU ray tracer): one Embree scene per world.
+// The world's static shapes form one shape set, each robot body another; every set is built once
+// into its own Embree scene and placed in the top-level scene as an instance, so a sensor update
+// only moves instances (rtcSetGeometryTransform) and commits the top level, never rebuilding a
+// link's geometry. Boxes, planes and meshes are triangles (a box's and a plane's faces are exactly
+// planar, so triangles are exact and take Embree's fast path); spheres and cylinders are user
+// geometry intersected analytically in double precision (tessellating them would move a curved
+// surface by up to its chord error). Camera rays go in packets of 16, tiles in parallel on a small
+// thread pool; every pixel is computed alone, so frames do not depend on the number of threads.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
+
+#include <embree3/rtcore.h>
 
 #include "bullet_plant/geometry.h"
 #include "mesh_loader.h"
@@ -13,41 +21,14 @@
 
 namespace bullet_plant
 {
-// A bounding volume hierarchy of axis-aligned boxes over a mesh's triangles (binary, split at the
-// median centroid along the longest axis, up to four triangles a leaf), built once per loaded mesh
-// and shared by all its copies.
-class TriangleBvh
+// Who sees a shape: cameras see visuals, lidars collisions (Gazebo's cameras and gpu_ray lidars
+// render the visual geometry; its ray lidars hit the collision geometry). These are Embree ray
+// masks.
+enum SeenBy : unsigned
 {
-public:
-  explicit TriangleBvh(std::shared_ptr<const MeshData> mesh);
-  static std::shared_ptr<const TriangleBvh> of(const std::shared_ptr<const MeshData>& mesh);
-
-  // Distance along the unit ray (mesh frame) to the nearest triangle (either side) ahead of the
-  // origin, +inf if none; `triangle` is its index in the mesh.
-  double intersect(const double origin[3], const double dir[3], int& triangle) const;
-  // The triangle's unit normal, (v1 - v0) x (v2 - v0) normalised.
-  void normal(int triangle, double out[3]) const;
-  const MeshData& mesh() const { return *mesh_; }
-  double boundRadius() const { return bound_radius_; }  // about the mesh frame's origin
-
-private:
-  struct Node
-  {
-    float lo[3], hi[3];
-    int first = 0;  // leaf: first entry of triangles_; inner node: its second child (the first follows it)
-    int count = 0;  // leaf: number of triangles; 0: inner node
-  };
-  struct Triangle
-  {
-    double v0[3], e1[3], e2[3];
-    int index;  // in the mesh
-  };
-  int build(int first, int count, std::vector<float>& centroids);
-
-  std::shared_ptr<const MeshData> mesh_;
-  std::vector<Node> nodes_;
-  std::vector<Triangle> triangles_;  // in leaf order
-  double bound_radius_ = 0.0;
+  kSeenByCameras = 1u,
+  kSeenByLidars = 2u,
+  kSeenByAll = 3u,
 };
 
 struct RayPrimitive
@@ -59,47 +40,118 @@ struct RayPrimitive
   double normal[3] = {0, 0, 1};
   Frame frame;                 // shape frame in its parent's frame
   const void* owner = nullptr; // the robot it belongs to (null: the world)
-  double bound_radius = 0.0;   // bounding sphere about the shape origin; infinite for planes
-  std::shared_ptr<const TriangleBvh> mesh;  // mesh
-  Rgba colour;                 // what cameras see (for a mesh: where its sub-mesh has no colour)
+  unsigned seen_by = kSeenByAll;
+  std::shared_ptr<const MeshData> mesh;  // mesh
+  Rgba colour;                 // what cameras see (for a mesh: where its sub-mesh has no colour or texture)
 
   // Not for meshes (fromMesh).
   static RayPrimitive fromShape(const Shape& s, const urdf::Pose& pose, const void* owner);
   static RayPrimitive fromMesh(const std::shared_ptr<const MeshData>& mesh, const urdf::Pose& pose, const void* owner);
-  // Distance along the unit ray (origin, dir) in the primitive's parent frame to the first surface
-  // hit ahead of an origin outside the shape; +inf if none. `triangle`: the mesh triangle hit.
-  double intersect(const double origin[3], const double dir[3], int* triangle = nullptr) const;
-  // Outward unit normal at a point on the surface (parent frame); for a mesh the normal of the
-  // triangle hit, which may face either way.
-  void normalAt(const double point[3], double out[3], int triangle = -1) const;
-  // The colour at a triangle of a mesh (its sub-mesh's diffuse colour where the file gives one).
-  const Rgba& colourAt(int triangle) const;
+  // The colour cameras see at a hit: a mesh triangle's texture at its (u, v) barycentric point,
+  // else its sub-mesh's diffuse colour, else the primitive's own colour.
+  Rgba surfaceColour(int triangle, float u, float v) const;
 };
 
 struct RayHit
 {
-  double distance;               // +inf: nothing within range
-  const RayPrimitive* primitive;
-  int triangle;                  // of a mesh primitive, else -1
+  double distance = 0;           // +inf: nothing within range
+  const RayPrimitive* primitive = nullptr;
+  int triangle = -1;             // of a mesh primitive, else -1
+  float u = 0, v = 0;            // barycentric point on the triangle
+  double normal[3] = {0, 0, 0};  // unit surface normal in the world, facing the ray
 };
 
-class RayCaster
+// How cameras light what they see: one directional light, lambert shading over an ambient term,
+// the background colour where nothing is hit.
+struct Lighting
+{
+  double towards_light[3] = {0.5, -0.1, 0.9};  // unit
+  double ambient = 0.35;
+  float background[3] = {0.70f, 0.80f, 0.95f};
+  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background);
+};
+
+// The rays of a pinhole camera (one through each pixel centre) and what they give.
+struct PinholeRays
+{
+  int width = 0, height = 0;
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+  double near = 0, far = 100;  // clip distances along the optical axis
+  // Gaussian noise added to each colour value before rounding: kNoiseTableSize samples of it (null:
+  // none), picked by a hash of the frame's seed, the pixel and the channel, so that a frame does
+  // not depend on the order or the threads its pixels are computed in.
+  static constexpr int kNoiseTableSize = 1 << 16;
+  const float* noise = nullptr;
+  uint64_t noise_seed = 0;
+};
+struct PinholeImage
+{
+  std::vector<uint8_t> rgb8;  // lit colour per pixel (plus noise), rounded to 0..255, background where nothing is hit
+  std::vector<float> depth;   // along the optical axis, +inf where nothing is hit within the clip range
+};
+
+// Distance along the unit ray (o, d), in the shape's frame (a cylinder along z), to a sphere's or a
+// cylinder's surface; +inf if it misses or starts inside.
+double intersectSphere(const double o[3], const double d[3], double radius);
+double intersectCylinder(const double o[3], const double d[3], double radius, double half_length);
+
+// A lidar's ray directions in its frame: azimuth a_i = a0 + i*da for i < n_azimuth, elevations e_j
+// (up towards +z, Gazebo's convention), row by row (elevation major).
+std::vector<double> fanDirections(double a0, double da, int n_azimuth, const std::vector<double>& elevations);
+
+// The number of threads that cast camera and lidar rays (the calling thread and n - 1 workers);
+// by default the machine's hardware threads. Results do not depend on it.
+void setRayThreads(int n);
+int rayThreads();
+
+class RayScene
 {
 public:
-  // primitives in the world frame; those owned by `exclude` are ignored.
-  RayCaster(const std::vector<RayPrimitive>& primitives, const void* exclude);
+  explicit RayScene(const std::vector<RayPrimitive>& world_shapes);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
 
-  double cast(const double origin[3], const double dir[3], double max_range) const;
-  RayHit castHit(const double origin[3], const double dir[3], double max_range) const;
+  // A robot body's shapes in the body frame, built once; returns its handle for setPose.
+  int addBody(const void* owner, std::vector<RayPrimitive> shapes);
+  // Takes out every body of `owner` (at the next commit).
+  void removeOwner(const void* owner);
+  bool hasOwner(const void* owner) const;
+  void setPose(int body, const Frame& world_from_body);
+  // Makes the bodies added or removed and the poses set so far take effect (the top level is
+  // rebuilt only when something changed). `hidden`: a robot whose shapes every ray passes through
+  // until the next commit (a lidar does not see its own robot), or null.
+  void commit(const void* hidden);
 
-  // A lidar: rays from origin in the sensor frame `sensor` (world), azimuth a_i = a0 + i*da for
-  // i < n_azimuth, elevations e_j. Writes distances (+inf: nothing within max_range) row by row
-  // (elevation major) into out.
-  void castFan(const Frame& sensor, double a0, double da, int n_azimuth, const std::vector<double>& elevations,
-               double max_range, std::vector<double>& out) const;
+  // One ray (unit dir) from `near` to `far` against what `seen_by` sees.
+  RayHit castHit(const double origin[3], const double dir[3], double near, double far, unsigned seen_by) const;
+  double cast(const double origin[3], const double dir[3], double far, unsigned seen_by) const;
+  // Rays from the sensor frame's origin along `directions` (unit, in the sensor frame, x y z each):
+  // distances (+inf: nothing in [near, far]) in the same order.
+  void castRays(const Frame& sensor, const std::vector<double>& directions, double near, double far,
+                unsigned seen_by, std::vector<double>& out) const;
+  // A camera at `pose` (x forward, y left, z up; the optical frame is z forward, x right, y down).
+  void castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const;
 
 private:
-  std::vector<const RayPrimitive*> primitives_;
+  struct ShapeSet;
+  struct Instance
+  {
+    std::shared_ptr<ShapeSet> set;
+    const void* owner = nullptr;
+    unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
+    Frame pose;
+    float rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // pose.R, row major, for shading
+  };
+  void attach(Instance& instance);
+  // The primitive, triangle and world normal (facing the ray) of an Embree hit.
+  void resolve(const RTCRayHit& hit, RayHit& out) const;
+
+  RTCScene top_ = nullptr;
+  std::vector<Instance> instances_;  // [0]: the world's static shapes; the rest robots' bodies (null set: removed)
+  std::vector<int> instance_of_geometry_;  // top-level geometry id -> index in instances_
+  const void* hidden_ = nullptr;  // as the last commit hid it
+  bool changed_ = true;                       // since the last commit: the top level needs one
 };
 
 }  // namespace bullet_plant

@@ -47,21 +47,6 @@ void RobotMultibody::disableJointRows()
         c->disable();
 }
 
-void RobotMultibody::appendRayPrimitives(std::vector<RayPrimitive>& out) const
-{
-  for (size_t bi = 0; bi < bodies.size(); ++bi)
-  {
-    if (bodies[bi].ray_shapes.empty())
-      continue;
-    Frame body = Frame::fromPose(fromBullet(bodyWorldTransform(int(bi))));
-    for (const RayPrimitive& p : bodies[bi].ray_shapes)
-    {
-      out.push_back(p);
-      out.back().frame = body * p.frame;
-    }
-  }
-}
-
 double positionWithinLimits(const MovableJoint& j, double q, Log& log, const std::string& robot, const std::string& what)
 {
   if (!j.limits.has_position || (q >= j.limits.lower && q <= j.limits.upper))
@@ -167,13 +152,10 @@ void Robot::Internals::recoverIfDiverged()
 
 void Robot::Internals::updateSensors(int64_t time_ns)
 {
-  std::vector<RayPrimitive> scene;
   for (auto& sensor : sensors)
   {
     if (!sensor->active() || !sensor->due(time_ns))
       continue;
-    if (scene.empty())
-      scene = world->rayScene();
     const SensorDescription& d = sensor->description();
     if (auto* imu = dynamic_cast<Imu*>(sensor.get()))
     {
@@ -191,10 +173,9 @@ void Robot::Internals::updateSensors(int64_t time_ns)
     }
     const Frame pose = Frame::fromPose(fromBullet(multibody.linkWorldTransform(d.link, name))) * Frame::fromPose(d.pose);
     if (auto* camera = dynamic_cast<Camera*>(sensor.get()))
-      detail::SensorRendering::render(*camera, RayCaster(scene, nullptr), pose, world->description.light_direction,
-                                      time_ns);
+      detail::SensorRendering::render(*camera, world->rayScene(nullptr), pose, world->lighting(), time_ns);
     else if (auto* lidar = dynamic_cast<Lidar*>(sensor.get()))
-      detail::SensorRendering::scan(*lidar, RayCaster(scene, this), pose, time_ns);
+      detail::SensorRendering::scan(*lidar, world->rayScene(this), pose, time_ns);
   }
 }
 

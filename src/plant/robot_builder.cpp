@@ -256,11 +256,7 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
       body.shape = body.compound.get();
       last_child[kv.second.first] = shape;
       body.ray_shapes.push_back(std::move(collider.ray));
-      if (link->visual && link->visual->material)
-      {
-        const urdf::Color& colour = link->visual->material->color;
-        body.ray_shapes.back().colour = {colour.r, colour.g, colour.b, colour.a};
-      }
+      body.ray_shapes.back().seen_by = kSeenByLidars;
     }
     auto surface = r.description.surfaces.find(link->name);
     if (surface != r.description.surfaces.end() && surface->second.given &&
@@ -288,6 +284,42 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
         body.child_shapes.emplace_back(aligned);
         body.shape = aligned;
       }
+  }
+}
+
+// 3b. What cameras see: each link's visuals (Gazebo's cameras render visuals, its lidars hit
+// collisions), in their material's colour, in the body's COM frame.
+void visualShapes(Robot::Internals& r, const LinkPlacement& placement)
+{
+  const urdf::ModelInterface& model = *r.description.model;
+  const Log quiet;  // shapeFromUrdf's words are about collisions; a visual's own warning is below
+  for (const auto& kv : placement)
+  {
+    urdf::LinkConstSharedPtr link = model.getLink(kv.first);
+    Body& body = r.multibody.bodies[kv.second.first];
+    const btTransform com_from_link = body.urdf_from_com.inverse() * kv.second.second;
+    for (const urdf::VisualSharedPtr& v : link->visual_array)
+    {
+      if (!v || !v->geometry)
+        continue;
+      Shape shape;
+      std::string reason = "is not a box, cylinder, sphere or a mesh that is found";
+      std::shared_ptr<const MeshData> mesh;
+      if (shapeFromUrdf(*v->geometry, link->name, quiet, shape) &&
+          (shape.kind != Shape::Kind::Mesh || (mesh = loadMesh(shape.mesh_file, shape.scale, reason))))
+      {
+        const urdf::Pose in_com = fromBullet(com_from_link * toBullet(v->origin));
+        RayPrimitive p = mesh ? RayPrimitive::fromMesh(mesh, in_com, &r) : RayPrimitive::fromShape(shape, in_com, &r);
+        p.seen_by = kSeenByCameras;
+        if (v->material)
+          p.colour = {float(v->material->color.r), float(v->material->color.g), float(v->material->color.b),
+                      float(v->material->color.a)};
+        body.ray_shapes.push_back(std::move(p));
+        continue;
+      }
+      r.world->log.warn("link '" + link->name + "' of '" + r.name + "': a visual " + reason +
+                        "; cameras do not see it");
+    }
   }
 }
 
@@ -568,6 +600,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   const std::vector<BodyPlan> plans = planBodies(r, root, placement);
   massProperties(r, placement, world_rooted);
   collisionShapes(r, placement, plans, fixed_base);
+  visualShapes(r, placement);
   const std::vector<double> axis_inertia = createMultibody(r, plans, fixed_base, pose);
   createJoints(r, plans, axis_inertia, initial_joints);
   addColliders(r);

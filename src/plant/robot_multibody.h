@@ -47,7 +47,7 @@ struct Body
   btCollisionShape* shape = nullptr;
   std::unique_ptr<btCompoundShape> compound;
   std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
-  std::vector<RayPrimitive> ray_shapes;  // the same shapes, in the COM frame, for sensors
+  std::vector<RayPrimitive> ray_shapes;  // for sensors, in the COM frame: the collisions (lidars) and visuals (cameras)
   double mu = 1.0;
 };
 
@@ -91,8 +91,6 @@ struct RobotMultibody
   // Every JointDrive leaves the world's constraints with its impulse forgotten, as when built
   // (the warm start and the world's constraint order would otherwise carry the past on).
   void disableJointRows();
-  // The bodies' collision shapes as ray casting primitives in the world frame.
-  void appendRayPrimitives(std::vector<RayPrimitive>& out) const;
 };
 
 }  // namespace bullet_plant

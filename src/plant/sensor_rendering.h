@@ -13,10 +13,10 @@ namespace detail
 {
 struct SensorRendering
 {
-  // caster: the scene without the lidar's own robot (a lidar does not see its robot).
-  static void scan(Lidar& lidar, const RayCaster& caster, const Frame& pose, int64_t time_ns);
-  // caster: the whole scene (cameras see their own robot, as Gazebo's do).
-  static void render(Camera& camera, const RayCaster& caster, const Frame& pose, const urdf::Vector3& light_direction,
+  // scene: committed with the lidar's own robot hidden (a lidar does not see its robot).
+  static void scan(Lidar& lidar, const RayScene& scene, const Frame& pose, int64_t time_ns);
+  // Cameras see their own robot, as Gazebo's do.
+  static void render(Camera& camera, const RayScene& scene, const Frame& pose, const Lighting& lighting,
                      int64_t time_ns);
 };
 }  // namespace detail

@@ -127,16 +127,22 @@ void Camera::intrinsics(double& fx, double& fy, double& cx, double& cy) const
 
 // ------------------------------------------------------------------------------------ rendering
 
-void detail::SensorRendering::scan(Lidar& lidar, const RayCaster& caster, const Frame& pose, int64_t time_ns)
+void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Frame& pose, int64_t time_ns)
 {
   const SensorDescription& d = lidar.description();
   const int n = d.horizontal_samples;
   const double da = n > 1 ? (d.horizontal_max_angle - d.horizontal_min_angle) / (n - 1) : 0.0;
-  std::vector<double> elevations(d.vertical_samples, d.vertical_min_angle);
-  for (int v = 1; v < d.vertical_samples; ++v)
-    elevations[v] = d.vertical_min_angle + v * (d.vertical_max_angle - d.vertical_min_angle) / (d.vertical_samples - 1);
+  if (lidar.directions_.empty())
+  {
+    std::vector<double> elevations(d.vertical_samples, d.vertical_min_angle);
+    for (int v = 1; v < d.vertical_samples; ++v)
+      elevations[v] = d.vertical_min_angle + v * (d.vertical_max_angle - d.vertical_min_angle) / (d.vertical_samples - 1);
+    lidar.directions_ = fanDirections(d.horizontal_min_angle, da, n, elevations);
+  }
   std::vector<double> distances;
-  caster.castFan(pose, d.horizontal_min_angle, da, n, elevations, d.range_max, distances);
+  // Gazebo's gpu_ray renders the visuals, its ray lidar hits the collisions.
+  scene.castRays(pose, lidar.directions_, 0.0, d.range_max, d.type == "gpu_ray" ? kSeenByCameras : kSeenByLidars,
+                 distances);
 
   LaserScan& scan = lidar.scan_;
   scan.stamp_ns = time_ns;
@@ -168,10 +174,12 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayCaster& caster, const 
   }
 }
 
-// Ray casting through every pixel centre of a pinhole camera: the colour of what is hit, lit by one
-// directional light with an ambient term, the sky where nothing is hit.
-void detail::SensorRendering::render(Camera& camera, const RayCaster& caster, const Frame& pose,
-                                     const urdf::Vector3& light_direction, int64_t time_ns)
+// Ray casting through every pixel centre of a pinhole camera (RayScene::castPinhole: lit colours
+// with noise, and depths, in parallel); the noise comes from a table of gaussian samples drawn once
+// from the camera's own generator and a per-frame seed from it, so frames are the same on every run
+// whatever the number of threads.
+void detail::SensorRendering::render(Camera& camera, const RayScene& scene, const Frame& pose, const Lighting& lighting,
+                                     int64_t time_ns)
 {
   const SensorDescription& d = camera.description();
   CameraFrame& out = camera.frame_;
@@ -182,60 +190,53 @@ void detail::SensorRendering::render(Camera& camera, const RayCaster& caster, co
   out.frame_id = camera.frameId();
   out.width = w;
   out.height = h;
-  out.rgb.resize(size_t(w) * h * 3);
-  out.depth.assign(depth ? size_t(w) * h : 0, std::numeric_limits<float>::quiet_NaN());
-  out.points.assign(depth ? size_t(w) * h * 3 : 0, std::numeric_limits<float>::quiet_NaN());
-  const double near = d.clip_near > 0 ? d.clip_near : 0.0, far = d.clip_far > 0 ? d.clip_far : 100.0;
-  double light[3] = {-light_direction.x, -light_direction.y, -light_direction.z};  // towards the light
-  const double light_norm = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
-  for (double& l : light)
-    l = light_norm > 0 ? l / light_norm : 0.0;
-  static const float kSky[3] = {0.70f, 0.80f, 0.95f};
-  constexpr double kAmbient = 0.35;
-  const bool noisy = d.noise.gaussian && d.noise.stddev > 0;
-  std::normal_distribution<double> noise(d.noise.mean, noisy ? d.noise.stddev : 1.0);
-  for (int v = 0; v < h; ++v)
+  PinholeRays rays;
+  rays.width = w;
+  rays.height = h;
+  rays.fx = out.fx;
+  rays.fy = out.fy;
+  rays.cx = out.cx;
+  rays.cy = out.cy;
+  rays.near = d.clip_near > 0 ? d.clip_near : 0.0;
+  rays.far = d.clip_far > 0 ? d.clip_far : 100.0;
+  if (d.noise.gaussian && d.noise.stddev > 0)
+  {
+    if (camera.noise_table_.empty())
+    {
+      std::normal_distribution<float> noise(float(d.noise.mean), float(d.noise.stddev));
+      camera.noise_table_.resize(PinholeRays::kNoiseTableSize);
+      for (float& n : camera.noise_table_)
+        n = noise(camera.noise_);
+    }
+    rays.noise = camera.noise_table_.data();
+    rays.noise_seed = (uint64_t(camera.noise_()) << 32) ^ camera.noise_();
+  }
+  PinholeImage image;  // the camera's buffers, kept from frame to frame
+  image.rgb8.swap(out.rgb);
+  image.depth.swap(camera.rendered_depth_);
+  scene.castPinhole(pose, rays, lighting, image);
+  out.rgb.swap(image.rgb8);
+
+  const size_t pixels = size_t(w) * h;
+  // Every pixel written once: its depth and point, or NaN where nothing is within the clip range.
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  out.depth.resize(depth ? pixels : 0);
+  out.points.resize(depth ? pixels * 3 : 0);
+  for (int v = 0; depth && v < h; ++v)
+  {
+    const float y = float((v - out.cy) / out.fy);
     for (int u = 0; u < w; ++u)
     {
-      // optical (x right, y down, z forward) -> camera link (x forward, y left, z up)
-      const double xo = (u - out.cx) / out.fx, yo = (v - out.cy) / out.fy;
-      const double length = std::sqrt(1.0 + xo * xo + yo * yo);
-      const double in_link[3] = {1.0 / length, -xo / length, -yo / length};
-      double dir[3];
-      pose.rotate(in_link, dir);
-      const RayHit hit = caster.castHit(pose.t, dir, far * length);
-      const double z = hit.distance / length;  // depth along the optical axis
       const size_t pixel = size_t(v) * w + u;
-      float colour[3] = {kSky[0], kSky[1], kSky[2]};
-      if (hit.primitive && z >= near)
-      {
-        double point[3] = {pose.t[0] + dir[0] * hit.distance, pose.t[1] + dir[1] * hit.distance,
-                           pose.t[2] + dir[2] * hit.distance};
-        double normal[3];
-        hit.primitive->normalAt(point, normal, hit.triangle);
-        if (normal[0] * dir[0] + normal[1] * dir[1] + normal[2] * dir[2] > 0)  // a triangle seen from behind
-          for (double& n : normal)
-            n = -n;
-        const double diffuse = std::max(0.0, normal[0] * light[0] + normal[1] * light[1] + normal[2] * light[2]);
-        const double shade = kAmbient + (1.0 - kAmbient) * diffuse;
-        const Rgba& c = hit.primitive->colourAt(hit.triangle);
-        colour[0] = float(c.r * shade);
-        colour[1] = float(c.g * shade);
-        colour[2] = float(c.b * shade);
-        if (depth)
-        {
-          out.depth[pixel] = float(z);
-          out.points[3 * pixel] = float(xo * z);
-          out.points[3 * pixel + 1] = float(yo * z);
-          out.points[3 * pixel + 2] = float(z);
-        }
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        double value = colour[k] + (noisy ? noise(camera.noise_) : 0.0);
-        out.rgb[3 * pixel + k] = uint8_t(std::lround(std::max(0.0, std::min(1.0, value)) * 255.0));
-      }
+      const float z = image.depth[pixel];
+      const bool hit = !std::isinf(z);
+      out.depth[pixel] = hit ? z : kNaN;
+      out.points[3 * pixel] = hit ? float((u - out.cx) / out.fx) * z : kNaN;
+      out.points[3 * pixel + 1] = hit ? y * z : kNaN;
+      out.points[3 * pixel + 2] = hit ? z : kNaN;
     }
+  }
+  camera.rendered_depth_.swap(image.depth);
 }
 
 }  // namespace bullet_plant

@@ -161,7 +161,23 @@ World::World(const WorldDescription& description) : in_(new Internals)
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     w.static_ray_shapes.push_back(std::move(collider.ray));
-    w.static_ray_shapes.back().colour = c.colour;
+    w.static_ray_shapes.back().seen_by = kSeenByLidars;
+  }
+  for (const StaticVisual& v : description.visuals)
+  {
+    std::string reason;
+    std::shared_ptr<const MeshData> mesh =
+        v.shape.kind == Shape::Kind::Mesh ? loadMesh(v.shape.mesh_file, v.shape.scale, reason) : nullptr;
+    if (v.shape.kind == Shape::Kind::Mesh && !mesh)
+    {
+      w.log.warn("world: visual '" + v.name + "': mesh '" + v.shape.mesh_uri + "' " + reason +
+                 "; cameras do not see it");
+      continue;
+    }
+    w.static_ray_shapes.push_back(mesh ? RayPrimitive::fromMesh(mesh, v.pose, nullptr)
+                                       : RayPrimitive::fromShape(v.shape, v.pose, nullptr));
+    w.static_ray_shapes.back().seen_by = kSeenByCameras;
+    w.static_ray_shapes.back().colour = v.colour;
   }
   for (const std::string& warning : description.warnings)
     w.log.warn("world: " + warning);
@@ -262,6 +278,8 @@ bool World::remove(const std::string& name)
   for (auto it = in_->robots.begin(); it != in_->robots.end(); ++it)
     if ((*it)->name() == name)
     {
+      if (in_->ray_scene)
+        in_->ray_scene->removeOwner((*it)->in_.get());
       removeRobot(*(*it)->in_);
       in_->robots.erase(it);
       return true;
@@ -340,24 +358,43 @@ void World::resetWorld()
     r->in_->resetToSpawn();
 }
 
-std::vector<RayPrimitive> World::Internals::rayScene() const
+const RayScene& World::Internals::rayScene(const void* hidden)
 {
-  std::vector<RayPrimitive> scene = static_ray_shapes;
-  for (auto& r : robots)
-    r->in_->multibody.appendRayPrimitives(scene);
-  return scene;
+  if (!ray_scene)
+    ray_scene.reset(new RayScene(static_ray_shapes));
+  for (auto& robot : robots)
+  {
+    Robot::Internals& r = *robot->in_;
+    std::vector<Body>& bodies = r.multibody.bodies;
+    if (!ray_scene->hasOwner(&r))
+    {
+      r.ray_bodies.assign(bodies.size(), -1);
+      for (size_t b = 0; b < bodies.size(); ++b)
+        if (!bodies[b].ray_shapes.empty())
+          r.ray_bodies[b] = ray_scene->addBody(&r, bodies[b].ray_shapes);
+    }
+    for (size_t b = 0; b < bodies.size(); ++b)
+      if (r.ray_bodies[b] >= 0)
+        ray_scene->setPose(r.ray_bodies[b], Frame::fromPose(fromBullet(r.multibody.bodyWorldTransform(int(b)))));
+  }
+  ray_scene->commit(hidden);
+  return *ray_scene;
+}
+
+Lighting World::Internals::lighting() const
+{
+  return Lighting::of(description.light_direction, description.ambient, description.background);
 }
 
 double World::castRay(const urdf::Vector3& origin, const urdf::Vector3& dir, double max_range, const Robot* exclude) const
 {
-  const std::vector<RayPrimitive> scene = in_->rayScene();
-  RayCaster caster(scene, exclude ? exclude->in_.get() : nullptr);
+  const RayScene& scene = in_->rayScene(exclude ? exclude->in_.get() : nullptr);
   double o[3] = {origin.x, origin.y, origin.z};
   double norm = std::sqrt(dir.x * dir.x + dir.y * dir.y + dir.z * dir.z);
   if (!(norm > 0) || !std::isfinite(norm))
     return std::numeric_limits<double>::infinity();
   double d[3] = {dir.x / norm, dir.y / norm, dir.z / norm};
-  return caster.cast(o, d, max_range);
+  return scene.cast(o, d, max_range, kSeenByLidars);
 }
 
 }  // namespace bullet_plant

@@ -1,6 +1,7 @@
 #include "bullet_plant/world_description.h"
 #include "bullet_plant/log.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -45,8 +46,24 @@ StaticCollision groundPlane(const std::string& model_name, const urdf::Pose& pos
   ground.name = model_name + "::link::collision";
   ground.shape.kind = Shape::Kind::Plane;
   ground.pose = pose;
-  ground.colour = {0.7f, 0.7f, 0.7f, 1.0f};
   return ground;
+}
+
+// What cameras see of the ground plane: the plane itself, grey.
+StaticVisual groundPlaneVisual(const StaticCollision& ground)
+{
+  StaticVisual visual;
+  visual.name = ground.name.substr(0, ground.name.rfind("::")) + "::visual";
+  visual.shape = ground.shape;
+  visual.pose = ground.pose;
+  visual.colour = {0.7f, 0.7f, 0.7f, 1.0f};
+  return visual;
+}
+
+void addGroundPlane(const std::string& model_name, const urdf::Pose& pose, WorldDescription& world)
+{
+  world.collisions.push_back(groundPlane(model_name, pose));
+  world.visuals.push_back(groundPlaneVisual(world.collisions.back()));
 }
 
 void parseXml(tinyxml2::XMLDocument& doc, const std::string& text, const Source& source)
@@ -72,7 +89,7 @@ std::string directoryOf(const std::string& path)
 }
 
 bool readMesh(const tinyxml2::XMLElement* mesh, const std::string& where, const Source& source, Shape& shape,
-              WorldDescription& world)
+              WorldDescription& world, const std::string& left_out)
 {
   shape.kind = Shape::Kind::Mesh;
   shape.mesh_uri = xml::childText(mesh, "uri", "");
@@ -81,13 +98,13 @@ bool readMesh(const tinyxml2::XMLElement* mesh, const std::string& where, const 
   std::string reason;
   shape.mesh_file = resolveUri(shape.mesh_uri, source.dir, reason);
   if (shape.mesh_file.empty())
-    world.warnings.push_back(where + " in " + source.describe() + ": <mesh> " + reason + "; collision left out");
+    world.warnings.push_back(where + " in " + source.describe() + ": <mesh> " + reason + "; " + left_out);
   return !shape.mesh_file.empty();
 }
 
-// The shape of a <geometry>; false (with a warning) when the plant leaves it out.
+// The shape of a <geometry>; false (with a warning ending in `left_out`) when the plant leaves it out.
 bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,
-                  WorldDescription& world)
+                  WorldDescription& world, const std::string& left_out = "collision left out")
 {
   if (auto* box = geometry->FirstChildElement("box"))
   {
@@ -125,16 +142,26 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
     shape.normal = urdf::Vector3(n[0] / norm, n[1] / norm, n[2] / norm);
   }
   else if (auto* mesh = geometry->FirstChildElement("mesh"))
-    return readMesh(mesh, where, source, shape, world);
+    return readMesh(mesh, where, source, shape, world, left_out);
   else
   {
     const tinyxml2::XMLElement* first = geometry->FirstChildElement();
     world.warnings.push_back(where + " in " + source.describe() + ": geometry <" +
                              std::string(first ? first->Name() : "") +
-                             "> is not supported (box, cylinder, sphere, plane, mesh); collision left out");
+                             "> is not supported (box, cylinder, sphere, plane, mesh); " + left_out);
     return false;
   }
   return true;
+}
+
+// "r g b" or "r g b a", as SDF colours are written.
+std::vector<double> colourNumbers(const std::string& text, const std::string& what)
+{
+  std::istringstream words(text);
+  size_t count = 0;
+  for (std::string word; words >> word;)
+    ++count;
+  return xml::numbers(text, count == 4 ? 4 : 3, what);
 }
 
 Rgba readColour(const tinyxml2::XMLElement* visual)
@@ -159,7 +186,6 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
 {
   std::string link_name = link->Attribute("name") ? link->Attribute("name") : "link";
   urdf::Pose link_pose = compose(model.pose, xml::parseSdfPose(xml::childText(link, "pose", "")));
-  const tinyxml2::XMLElement* first_visual = link->FirstChildElement("visual");
   for (auto* c = link->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
   {
     StaticCollision collision;
@@ -181,8 +207,19 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
                                " is not a friction coefficient; it is taken as 0");
       collision.mu = 0;
     }
-    collision.colour = readColour(first_visual);
     world.collisions.push_back(collision);
+  }
+  for (auto* v = link->FirstChildElement("visual"); v; v = v->NextSiblingElement("visual"))
+  {
+    StaticVisual visual;
+    visual.name = model.name + "::" + link_name + "::" + (v->Attribute("name") ? v->Attribute("name") : "visual");
+    const tinyxml2::XMLElement* geometry = v->FirstChildElement("geometry");
+    if (!geometry ||
+        !readGeometry(geometry, "visual '" + visual.name + "'", source, visual.shape, world, "cameras do not see it"))
+      continue;
+    visual.pose = compose(link_pose, xml::parseSdfPose(xml::childText(v, "pose", "")));
+    visual.colour = readColour(v);
+    world.visuals.push_back(visual);
   }
 }
 
@@ -278,7 +315,7 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
   // the same everywhere.
   if (uri == "model://ground_plane" || uri == "model://ground_plane/")
   {
-    world.collisions.push_back(groundPlane(scope + (name_override.empty() ? "ground_plane" : name_override), pose));
+    addGroundPlane(scope + (name_override.empty() ? "ground_plane" : name_override), pose, world);
     return;
   }
   if (uri == "model://sun" || uri == "model://sun/")
@@ -374,6 +411,21 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
       std::vector<double> d = xml::numbers(xml::childText(light, "direction", "-0.5 0.1 -0.9"), 3, "<light><direction>");
       world.light_direction = urdf::Vector3(d[0], d[1], d[2]);
     }
+  if (const tinyxml2::XMLElement* scene = w->FirstChildElement("scene"))
+  {
+    const std::string background = xml::childText(scene, "background", "");
+    if (!background.empty())
+    {
+      std::vector<double> c = colourNumbers(background, "<scene><background>");
+      world.background = {float(c[0]), float(c[1]), float(c[2]), 1.0f};
+    }
+    const std::string ambient = xml::childText(scene, "ambient", "");
+    if (!ambient.empty())
+    {
+      std::vector<double> c = colourNumbers(ambient, "<scene><ambient>");
+      world.ambient = std::max(0.0, std::min(1.0, (c[0] + c[1] + c[2]) / 3.0));
+    }
+  }
   for (auto* e = w->FirstChildElement(); e; e = e->NextSiblingElement())
   {
     std::string tag = e->Name();
@@ -395,7 +447,7 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
   for (const StaticCollision& c : world.collisions)
     has_plane = has_plane || c.shape.kind == Shape::Kind::Plane;
   if (!has_plane)
-    world.collisions.push_back(groundPlane("ground_plane", urdf::Pose()));
+    addGroundPlane("ground_plane", urdf::Pose(), world);
   return world;
 }
 
@@ -404,7 +456,7 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
 WorldDescription emptyWorldDescription()
 {
   WorldDescription world;
-  world.collisions.push_back(groundPlane("ground_plane", urdf::Pose()));
+  addGroundPlane("ground_plane", urdf::Pose(), world);
   return world;
 }
 

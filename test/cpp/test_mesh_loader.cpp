@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <stb/stb_image_write.h>
+
 #include "mesh_fixtures.h"
 #include "mesh_loader.h"
 
@@ -125,6 +127,42 @@ TEST(LoadMesh, KeepsEachSubMeshsDiffuseColourAndTexture)
   EXPECT_EQ(two.triangle_count, 2);
   EXPECT_FLOAT_EQ(two.diffuse.b, 1.0f);
   EXPECT_EQ(two.texture, "stripes.png");
+  EXPECT_FALSE(two.image) << "stripes.png does not exist";
+  EXPECT_FALSE(two.texture_problem.empty());
+}
+
+TEST(LoadMesh, KeepsTextureCoordinatesAndReadsTheTextureBesideTheMesh)
+{
+  const std::string dir = tempDir();
+  // a 2 x 1 PNG: red on the left, blue on the right
+  const uint8_t pixels[6] = {255, 0, 0, 0, 0, 255};
+  ASSERT_TRUE(stbi_write_png((dir + "/two.png").c_str(), 2, 1, 3, pixels, 6));
+  write(dir, "tex.mtl", "newmtl picture\nKd 1 1 1\nmap_Kd two.png\n");
+  // Two triangles sharing an edge whose corners have different texture coordinates on each side:
+  // the corners stay apart (a seam), each with its own coordinates.
+  auto mesh = load(write(dir, "seam.obj",
+                         "mtllib tex.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                         "vt 0 0\nvt 1 0\nvt 0 1\nvt 0.5 0.5\nvt 0.25 0.25\n"
+                         "usemtl picture\nf 1/1 2/2 3/3\nf 2/4 4/2 3/5\n"));
+  ASSERT_TRUE(mesh);
+  ASSERT_EQ(mesh->uvs.size(), size_t(2 * mesh->vertexCount()));
+  EXPECT_EQ(mesh->vertexCount(), 6) << "corners 2 and 3 twice: their coordinates differ across the edge";
+  const MeshData::SubMesh& sub = mesh->submeshes[0];
+  ASSERT_TRUE(sub.image) << sub.texture_problem;
+  EXPECT_EQ(sub.image->width, 2);
+  EXPECT_FLOAT_EQ(sub.image->at(0.25f, 0.5f).r, 1.0f) << "s < 0.5: the left texel";
+  EXPECT_FLOAT_EQ(sub.image->at(0.75f, 0.5f).b, 1.0f) << "s > 0.5: the right texel";
+  EXPECT_FLOAT_EQ(sub.image->at(1.25f, 0.5f).r, 1.0f) << "repeats beyond 1";
+  EXPECT_FLOAT_EQ(sub.image->at(-0.25f, 0.5f).b, 1.0f) << "and below 0";
+  // the first triangle's corners keep their (s, t)
+  const int* corner = &mesh->indices[0];
+  for (int k = 0; k < 3; ++k)
+  {
+    const float* p = &mesh->vertices[3 * corner[k]];
+    const float* uv = &mesh->uvs[2 * corner[k]];
+    EXPECT_FLOAT_EQ(uv[0], p[0]) << "corner " << k;
+    EXPECT_FLOAT_EQ(uv[1], p[1]) << "corner " << k;
+  }
 }
 
 TEST(LoadMesh, SaysWhyAMeshCannotBeLoaded)

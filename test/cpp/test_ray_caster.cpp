@@ -1,9 +1,15 @@
-// ray_caster.cpp on triangle meshes: rays hit where the triangles are (through the BVH), with the
-// triangle's normal and its sub-mesh's colour; a lidar fan in a room of mesh walls.
+// ray_caster.cpp (Embree): rays hit meshes where their triangles are, with the triangle's normal and
+// its sub-mesh's colour or texture; boxes, planes, spheres and cylinders where they analytically
+// are; robots' bodies where their last pose puts them; cameras see visuals and lidars collisions; a
+// lidar fan in a room of mesh walls; camera images that do not depend on the number of threads.
+// Embree casts in single precision: distances agree within 1e-5 m.
 #include <gtest/gtest.h>
+
+#include <stb/stb_image_write.h>
 
 #include <cmath>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -16,6 +22,7 @@ using namespace mesh_fixtures;
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kFloatTolerance = 1e-5;
 
 std::shared_ptr<const MeshData> load(const std::string& file)
 {
@@ -61,24 +68,21 @@ TEST(MeshRays, HitABoxMeshWhereItsFacesAreWithTheFaceNormal)
   ASSERT_TRUE(mesh);
   // The box's frame 3 m ahead along x, turned a quarter about z: its 0.25 m face meets the ray.
   const RayPrimitive box = RayPrimitive::fromMesh(mesh, poseFromXyzRpy(3, 0, 0, 0, 0, M_PI / 2), nullptr);
-  std::vector<RayPrimitive> scene{box};
-  RayCaster caster(scene, nullptr);
+  RayScene scene({box});
+  scene.commit(nullptr);
 
   const double origin[3] = {0, 0.1, 0.1}, ahead[3] = {1, 0, 0};
-  const RayHit hit = caster.castHit(origin, ahead, 10);
+  const RayHit hit = scene.castHit(origin, ahead, 0, 10, kSeenByAll);
   ASSERT_NE(hit.primitive, nullptr);
-  EXPECT_NEAR(hit.distance, 3 - 0.25, 1e-6);
+  EXPECT_NEAR(hit.distance, 3 - 0.25, kFloatTolerance);
   ASSERT_GE(hit.triangle, 0);
-  const double point[3] = {origin[0] + hit.distance, origin[1], origin[2]};
-  double normal[3];
-  hit.primitive->normalAt(point, normal, hit.triangle);
-  EXPECT_NEAR(std::abs(normal[0]), 1.0, 1e-6) << "the face's normal is along the ray";
-  EXPECT_NEAR(normal[1], 0.0, 1e-6);
-  EXPECT_NEAR(normal[2], 0.0, 1e-6);
+  EXPECT_NEAR(hit.normal[0], -1.0, 1e-6) << "the face's normal, turned towards the ray";
+  EXPECT_NEAR(hit.normal[1], 0.0, 1e-6);
+  EXPECT_NEAR(hit.normal[2], 0.0, 1e-6);
 
   const double above[3] = {0, 0.1, 0.3};  // passes over the box's 0.2 m top
-  EXPECT_EQ(caster.cast(above, ahead, 10), kInf);
-  EXPECT_EQ(caster.cast(origin, ahead, 2.5), kInf) << "beyond the range";
+  EXPECT_EQ(scene.cast(above, ahead, 10, kSeenByAll), kInf);
+  EXPECT_EQ(scene.cast(origin, ahead, 2.5, kSeenByAll), kInf) << "beyond the range";
 }
 
 TEST(MeshRays, SeeEachSubMeshsColour)
@@ -92,18 +96,19 @@ TEST(MeshRays, SeeEachSubMeshsColour)
                          "usemtl red\nf 1 2 3\nf 1 3 4\n"
                          "usemtl blue\nf 2 5 6\nf 2 6 3\n"));
   ASSERT_TRUE(mesh);
-  std::vector<RayPrimitive> scene{RayPrimitive::fromMesh(mesh, poseFromXyzRpy(1, 0, 0, 0, 0, 0), nullptr)};
-  scene[0].colour = {0.5f, 0.5f, 0.5f, 1.0f};
-  RayCaster caster(scene, nullptr);
+  std::vector<RayPrimitive> shapes{RayPrimitive::fromMesh(mesh, poseFromXyzRpy(1, 0, 0, 0, 0, 0), nullptr)};
+  shapes[0].colour = {0.5f, 0.5f, 0.5f, 1.0f};
+  RayScene scene(shapes);
+  scene.commit(nullptr);
   const double dir_x[3] = {1, 0, 0};
   const double left[3] = {0, 0.5, 0.5}, right[3] = {0, -0.5, 0.5};
-  const RayHit blue = caster.castHit(left, dir_x, 5), red = caster.castHit(right, dir_x, 5);
+  const RayHit blue = scene.castHit(left, dir_x, 0, 5, kSeenByAll), red = scene.castHit(right, dir_x, 0, 5, kSeenByAll);
   ASSERT_NE(blue.primitive, nullptr);
   ASSERT_NE(red.primitive, nullptr);
-  EXPECT_NEAR(blue.distance, 1.0, 1e-9);
-  EXPECT_FLOAT_EQ(blue.primitive->colourAt(blue.triangle).b, 1.0f);
-  EXPECT_FLOAT_EQ(red.primitive->colourAt(red.triangle).r, 1.0f);
-  EXPECT_FLOAT_EQ(red.primitive->colourAt(-1).g, 0.5f) << "no triangle: the primitive's own colour";
+  EXPECT_NEAR(blue.distance, 1.0, kFloatTolerance);
+  EXPECT_FLOAT_EQ(blue.primitive->surfaceColour(blue.triangle, blue.u, blue.v).b, 1.0f);
+  EXPECT_FLOAT_EQ(red.primitive->surfaceColour(red.triangle, red.u, red.v).r, 1.0f);
+  EXPECT_FLOAT_EQ(red.primitive->surfaceColour(-1, 0, 0).g, 0.5f) << "no triangle: the primitive's own colour";
 }
 
 TEST(MeshRays, ALidarInARoomOfMeshWallsMeasuresTheWalls)
@@ -113,15 +118,15 @@ TEST(MeshRays, ALidarInARoomOfMeshWallsMeasuresTheWalls)
   auto mesh = load(roomObj(dir, half, 1.0, 8));  // 512 triangles
   ASSERT_TRUE(mesh);
   ASSERT_EQ(mesh->triangleCount(), 512);
-  std::vector<RayPrimitive> scene{RayPrimitive::fromMesh(mesh, poseFromXyzRpy(0, 0, 0, 0, 0, 0), nullptr)};
-  RayCaster caster(scene, nullptr);
+  RayScene scene({RayPrimitive::fromMesh(mesh, poseFromXyzRpy(0, 0, 0, 0, 0, 0), nullptr)});
+  scene.commit(nullptr);
   // A sensor 0.5 m up, off centre, turned: every ray meets a wall at the distance a square predicts.
   const urdf::Pose pose = poseFromXyzRpy(0.3, -0.7, 0.5, 0, 0, 0.4);
   const Frame sensor = Frame::fromPose(pose);
   const int n = 720;
   const double a0 = -M_PI, da = 2 * M_PI / n;
   std::vector<double> ranges;
-  caster.castFan(sensor, a0, da, n, {0.0, 0.1}, 30.0, ranges);
+  scene.castRays(sensor, fanDirections(a0, da, n, {0.0, 0.1}), 0.0, 30.0, kSeenByLidars, ranges);
   ASSERT_EQ(ranges.size(), size_t(2 * n));
   for (int row = 0; row < 2; ++row)
     for (int i = 0; i < n; ++i)
@@ -134,7 +139,7 @@ TEST(MeshRays, ALidarInARoomOfMeshWallsMeasuresTheWalls)
         expected = std::min(expected, ((dx > 0 ? half : -half) - 0.3) / dx);
       if (dy != 0)
         expected = std::min(expected, ((dy > 0 ? half : -half) + 0.7) / dy);
-      ASSERT_NEAR(ranges[row * n + i], expected, 1e-6) << "ray " << i << " row " << row;
+      ASSERT_NEAR(ranges[row * n + i], expected, kFloatTolerance) << "ray " << i << " row " << row;
     }
 
   // Random rays from inside: each hits some wall (the room is closed sideways, open above).
@@ -148,9 +153,241 @@ TEST(MeshRays, ALidarInARoomOfMeshWallsMeasuresTheWalls)
     for (double& x : d)
       x /= length;
     const double o[3] = {1.5 * u(rng), 1.5 * u(rng), 0.5};
-    const double t = caster.cast(o, d, 100);
+    const double t = scene.cast(o, d, 100, kSeenByAll);
     ASSERT_LT(t, kInf) << "ray " << k;
     const double p[3] = {o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
-    EXPECT_NEAR(std::max(std::abs(p[0]), std::abs(p[1])), half, 1e-6) << "ray " << k;
+    EXPECT_NEAR(std::max(std::abs(p[0]), std::abs(p[1])), half, kFloatTolerance) << "ray " << k;
   }
+}
+
+namespace
+{
+RayPrimitive primitive(Shape::Kind kind, double a, double b, double c, const urdf::Pose& pose)
+{
+  Shape s;
+  s.kind = kind;
+  s.box_size = {{a, b, c}};
+  s.radius = a;
+  s.length = b;
+  s.normal = urdf::Vector3(a, b, c);
+  return RayPrimitive::fromShape(s, pose, nullptr);
+}
+}  // namespace
+
+TEST(ShapeRays, BoxesPlanesSpheresAndCylindersAreHitWhereTheyAre)
+{
+  const RayPrimitive ground = primitive(Shape::Kind::Plane, 0, 0, 1, poseFromXyzRpy(0, 0, 0, 0, 0, 0));
+  const RayPrimitive box = primitive(Shape::Kind::Box, 0.4, 0.6, 0.8, poseFromXyzRpy(5, 0, 1, 0, 0, 0.3));
+  const RayPrimitive ball = primitive(Shape::Kind::Sphere, 0.5, 0, 0, poseFromXyzRpy(0, 4, 1, 0, 0, 0));
+  // a wheel: a cylinder lying along y
+  const RayPrimitive wheel = primitive(Shape::Kind::Cylinder, 0.3, 0.2, 0, poseFromXyzRpy(-3, 0, 1, M_PI / 2, 0, 0));
+  RayScene scene({ground, box, ball, wheel});
+  scene.commit(nullptr);
+  const double o[3] = {0, 0, 1};
+  const double down[3] = {0, 0, -1}, x[3] = {1, 0, 0}, y[3] = {0, 1, 0}, minus_x[3] = {-1, 0, 0};
+  EXPECT_NEAR(scene.cast(o, down, 10, kSeenByAll), 1.0, kFloatTolerance);
+  // the box turned 0.3 rad about z: the ray along x meets its -x face at 5 - 0.2 / cos(0.3)
+  EXPECT_NEAR(scene.cast(o, x, 10, kSeenByAll), 5 - 0.2 / std::cos(0.3), kFloatTolerance);
+  EXPECT_NEAR(scene.cast(o, y, 10, kSeenByAll), 3.5, kFloatTolerance);
+  EXPECT_NEAR(scene.cast(o, minus_x, 10, kSeenByAll), 2.7, kFloatTolerance);
+  // off the sphere's centre line: the exact curved surface, not a tessellation
+  const double o2[3] = {0.3, 0, 1};
+  EXPECT_NEAR(scene.cast(o2, y, 10, kSeenByAll), 4 - std::sqrt(0.25 - 0.09), kFloatTolerance);
+  const RayHit side = scene.castHit(o2, y, 0, 10, kSeenByAll);
+  EXPECT_NEAR(side.normal[0], 0.6, 1e-5) << "the sphere's normal at the hit";
+  EXPECT_NEAR(side.normal[1], -0.8, 1e-5);
+  // the wheel's tread seen from above, 0.1 m off its axis: the circle's height there
+  const double above[3] = {-3.1, 0.05, 3};
+  EXPECT_NEAR(scene.cast(above, down, 10, kSeenByAll), 2 - std::sqrt(0.09 - 0.01), kFloatTolerance);
+  EXPECT_EQ(scene.castHit(o, down, 1.5, 10, kSeenByAll).distance, kInf) << "nothing nearer than the near distance";
+}
+
+TEST(ShapeRays, CamerasSeeVisualsAndLidarsCollisions)
+{
+  RayPrimitive visual = primitive(Shape::Kind::Box, 1, 1, 1, poseFromXyzRpy(2, 0, 0, 0, 0, 0));
+  visual.seen_by = kSeenByCameras;
+  RayPrimitive collision = primitive(Shape::Kind::Box, 1, 1, 1, poseFromXyzRpy(4, 0, 0, 0, 0, 0));
+  collision.seen_by = kSeenByLidars;
+  RayScene scene({visual, collision});
+  scene.commit(nullptr);
+  const double o[3] = {0, 0, 0}, x[3] = {1, 0, 0};
+  EXPECT_NEAR(scene.cast(o, x, 10, kSeenByCameras), 1.5, kFloatTolerance);
+  EXPECT_NEAR(scene.cast(o, x, 10, kSeenByLidars), 3.5, kFloatTolerance);
+}
+
+TEST(ShapeRays, BodiesAreWhereTheirLastPoseIsAndHiddenFromTheirOwnLidar)
+{
+  RayScene scene({});
+  int robot = 0;
+  const int body = scene.addBody(&robot, {primitive(Shape::Kind::Sphere, 0.5, 0, 0, poseFromXyzRpy(1, 0, 0, 0, 0, 0))});
+  const double o[3] = {0, 0, 0}, x[3] = {1, 0, 0};
+  for (double at : {2.0, 6.0})
+  {
+    scene.setPose(body, Frame::fromPose(poseFromXyzRpy(at, 0, 0, 0, 0, 0)));
+    scene.commit(nullptr);
+    EXPECT_NEAR(scene.cast(o, x, 10, kSeenByLidars), at + 0.5, kFloatTolerance);
+  }
+  scene.commit(&robot);
+  EXPECT_EQ(scene.cast(o, x, 10, kSeenByLidars), kInf) << "hidden for the robot's own lidar";
+  EXPECT_EQ(scene.cast(o, x, 10, kSeenByCameras), kInf) << "also for its own gpu_ray lidar";
+  scene.commit(nullptr);
+  EXPECT_NEAR(scene.cast(o, x, 10, kSeenByCameras), 6.5, kFloatTolerance) << "its cameras see it";
+  scene.removeOwner(&robot);
+  scene.commit(nullptr);
+  EXPECT_EQ(scene.cast(o, x, 10, kSeenByAll), kInf);
+  EXPECT_FALSE(scene.hasOwner(&robot));
+}
+
+namespace
+{
+// A 4 x 4 texture of 16 distinct colours, texel (column c, row r from the top) = (16c, 16r, 200).
+std::string writeTexture(const std::string& dir)
+{
+  std::vector<uint8_t> rgb;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      rgb.insert(rgb.end(), {uint8_t(16 * c + 8), uint8_t(16 * r + 8), 200});
+  const std::string path = dir + "/checker.png";
+  EXPECT_TRUE(stbi_write_png(path.c_str(), 4, 4, 3, rgb.data(), 12));
+  return path;
+}
+
+// A 1 m square quad in the plane x = 0 (y, z in [0, 1]) textured with the whole image: texture s
+// along +y, t along +z.
+std::shared_ptr<const MeshData> texturedQuad(const std::string& dir)
+{
+  writeTexture(dir);
+  write(dir, "quad.mtl", "newmtl picture\nKd 1 1 1\nmap_Kd checker.png\n");
+  return load(write(dir, "quad.obj",
+                    "mtllib quad.mtl\n"
+                    "v 0 0 0\nv 0 1 0\nv 0 1 1\nv 0 0 1\n"
+                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                    "usemtl picture\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n"));
+}
+
+PinholeRays squareImage(int size)
+{
+  PinholeRays rays;
+  rays.width = rays.height = size;
+  rays.fx = rays.fy = size / (2 * std::tan(0.4));
+  rays.cx = rays.cy = (size - 1) / 2.0;
+  return rays;
+}
+}  // namespace
+
+TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
+{
+  const std::string dir = tempDir();
+  auto quad = texturedQuad(dir);
+  ASSERT_TRUE(quad);
+  ASSERT_TRUE(quad->submeshes[0].image) << quad->submeshes[0].texture_problem;
+  RayScene scene({RayPrimitive::fromMesh(quad, poseFromXyzRpy(0, 0, 0, 0, 0, 0), nullptr)});
+  scene.commit(nullptr);
+  // Rays along -x through the quad's points: texel column from s = y, row from the top from t = z.
+  const double towards[3] = {-1, 0, 0};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+    {
+      const double y = (c + 0.5) / 4, z = 1.0 - (r + 0.5) / 4;
+      const double o[3] = {1, y, z};
+      const RayHit hit = scene.castHit(o, towards, 0, 5, kSeenByAll);
+      ASSERT_NE(hit.primitive, nullptr);
+      const Rgba colour = hit.primitive->surfaceColour(hit.triangle, hit.u, hit.v);
+      EXPECT_NEAR(colour.r * 255, 16 * c + 8, 1e-3) << "texel " << c << ", " << r;
+      EXPECT_NEAR(colour.g * 255, 16 * r + 8, 1e-3) << "texel " << c << ", " << r;
+      EXPECT_NEAR(colour.b * 255, 200, 1e-3);
+    }
+
+  // A camera 1.5 m in front of the quad, looking at its centre along -x, lit from behind without
+  // ambient: every pixel shows the texel its ray meets, at depth 1.5 m. Facing -x, the camera's
+  // right is +y: image columns run along the texture's s, rows down its t.
+  Lighting light;
+  light.towards_light[0] = 1, light.towards_light[1] = 0, light.towards_light[2] = 0;
+  light.ambient = 0.0;
+  PinholeImage image;
+  const PinholeRays rays = squareImage(64);
+  scene.castPinhole(Frame::fromPose(poseFromXyzRpy(1.5, 0.5, 0.5, 0, 0, M_PI)), rays, light, image);
+  int checked = 0;
+  for (int v = 0; v < rays.height; ++v)
+    for (int u = 0; u < rays.width; ++u)
+    {
+      const double y = 0.5 + (u - rays.cx) / rays.fx * 1.5, z = 0.5 - (v - rays.cy) / rays.fy * 1.5;
+      const size_t pixel = size_t(v) * rays.width + u;
+      const double s = y * 4, t = (1 - z) * 4;
+      if (y <= 0 || y >= 1 || z <= 0 || z >= 1)
+      {
+        if (y < -0.01 || y > 1.01 || z < -0.01 || z > 1.01)
+          EXPECT_EQ(image.rgb8[3 * pixel], std::lround(light.background[0] * 255)) << "background at " << u << ", " << v;
+        continue;
+      }
+      if (std::abs(s - std::round(s)) < 0.05 || std::abs(t - std::round(t)) < 0.05)
+        continue;  // a pixel on a texel border
+      EXPECT_EQ(image.rgb8[3 * pixel], 16 * int(s) + 8) << u << ", " << v;
+      EXPECT_EQ(image.rgb8[3 * pixel + 1], 16 * int(t) + 8) << u << ", " << v;
+      EXPECT_EQ(image.rgb8[3 * pixel + 2], 200) << u << ", " << v;
+      EXPECT_NEAR(image.depth[pixel], 1.5, kFloatTolerance);
+      ++checked;
+    }
+  EXPECT_GT(checked, 400);
+}
+
+TEST(CameraRays, FramesAreTheSameOnEveryRunAndForAnyNumberOfThreads)
+{
+  const std::string dir = tempDir();
+  auto quad = texturedQuad(dir);
+  ASSERT_TRUE(quad);
+  std::vector<RayPrimitive> shapes{
+      primitive(Shape::Kind::Plane, 0, 0, 1, poseFromXyzRpy(0, 0, 0, 0, 0, 0)),
+      primitive(Shape::Kind::Box, 0.4, 0.6, 0.8, poseFromXyzRpy(3, 0.5, 0.4, 0, 0, 0.3)),
+      primitive(Shape::Kind::Sphere, 0.3, 0, 0, poseFromXyzRpy(2, -0.6, 0.3, 0, 0, 0)),
+      primitive(Shape::Kind::Cylinder, 0.2, 0.5, 0, poseFromXyzRpy(4, -1, 0.25, 0, 0, 0)),
+      RayPrimitive::fromMesh(quad, poseFromXyzRpy(5, -0.5, 0, 0, 0, 0), nullptr)};
+  RayScene scene(shapes);
+  scene.commit(nullptr);
+  const Frame camera = Frame::fromPose(poseFromXyzRpy(0, 0, 0.5, 0, 0.1, 0));
+  const PinholeRays rays = squareImage(203);  // not a multiple of the 4 x 4 packets
+  std::vector<PinholeImage> images;
+  for (int threads : {1, 1, 2, 3, 8})
+  {
+    setRayThreads(threads);
+    images.emplace_back();
+    scene.castPinhole(camera, rays, Lighting(), images.back());
+  }
+  // With noise (a table of gaussian samples picked by a hash of seed and pixel): the same again.
+  std::vector<float> table(PinholeRays::kNoiseTableSize);
+  std::mt19937 rng(3);
+  std::normal_distribution<float> gaussian(0.0f, 0.02f);
+  for (float& n : table)
+    n = gaussian(rng);
+  PinholeRays noisy = rays;
+  noisy.noise = table.data();
+  noisy.noise_seed = 42;
+  std::vector<PinholeImage> noisy_images(2);
+  for (int threads : {1, 3})
+  {
+    setRayThreads(threads);
+    scene.castPinhole(camera, noisy, Lighting(), noisy_images[threads == 1 ? 0 : 1]);
+  }
+  setRayThreads(0);
+  EXPECT_TRUE(noisy_images[0].rgb8 == noisy_images[1].rgb8);
+  double sum = 0, sum2 = 0;
+  int count = 0;
+  for (size_t k = 0; k < images[0].rgb8.size(); ++k)
+    if (images[0].rgb8[k] > 30 && images[0].rgb8[k] < 225)
+    {
+      const double e = double(noisy_images[0].rgb8[k]) - images[0].rgb8[k];
+      sum += e;
+      sum2 += e * e;
+      ++count;
+    }
+  ASSERT_GT(count, 10000);
+  EXPECT_NEAR(sum / count, 0.0, 0.1) << "unbiased";
+  EXPECT_NEAR(std::sqrt(sum2 / count), 0.02 * 255, 0.3) << "of the table's spread (5.1 levels)";
+  for (size_t k = 1; k < images.size(); ++k)
+  {
+    EXPECT_TRUE(images[k].rgb8 == images[0].rgb8) << "image " << k;
+    EXPECT_TRUE(images[k].depth == images[0].depth) << "image " << k;
+  }
+  std::set<uint8_t> colours(images[0].rgb8.begin(), images[0].rgb8.end());
+  EXPECT_GT(colours.size(), 20u) << "the scene is in the picture";
 }

@@ -1,0 +1,252 @@
+"""The sensors' cost (`make bench`, after the plant against its peers).
+
+1. Rays per second of the real Tianracer's sensors, an 800 x 800 colour camera (80 degrees), a
+   640 x 480 depth camera (60 degrees, 0.3 to 8 m) and the 1081-ray lidar, rendered from the car on
+   worlds/race_track.world and on a race track made of meshes (the same walls as one OBJ, a textured
+   OBJ floor), through the previous ray caster (one ray at a time, kept in bench/ for this) and
+   through the plant's Embree path with one thread and with all: per CPU second (what one core
+   does) and per wall second. The subject is bench/sensor_cost.cpp (built by `make build`).
+2. The real car's sensor set at its rates (800 x 800 colour at 30 Hz, 640 x 480 depth at 20 Hz, the
+   1081-ray lidar at 40 Hz, all subscribed) on the mesh race track while the car drives: simulated
+   seconds per wall second unpaced (the real time factor the node can hold is the smaller of that and
+   1) and process CPU seconds per simulated second (at real time: the cores' worth of CPU it takes);
+   then the same through the ROS node, paced at real time, with every sensor topic subscribed.
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+import xml.etree.ElementTree as ET
+
+import matplotlib
+matplotlib.use('Agg')
+import matplotlib.image  # noqa: E402 (after choosing the backend)
+import numpy as np  # noqa: E402
+
+from mesh_cost import write_obj  # beside this file
+from ros_plant_bench import plant_pid
+from tianracer_description import bullet_plant  # noqa: E402
+from tianracer_description.ros_harness import RosSystem, tianracer_plant  # noqa: E402
+from tianracer_description.tianracer import (CONFIG_YAML, RACE_TRACK_WORLD, REAR_WHEEL_CONTROLLERS,  # noqa: E402
+                                             TUTORIAL_CONTROLLERS, tianracer_urdf)
+
+FRAMES = 10
+SIM_SECONDS = 10.0
+SPEED = 0.25  # m/s: the car stays on the start straight for the whole run
+WHEEL_RADIUS = 0.032
+REAL_CAR = {'camera': (800, 800, 30.0), 'depth': (640, 480, 20.0)}  # width, height, Hz
+FLOOR_TOP = 0.002  # above the ground plane the world gets anyway
+NODE_WINDOW = 20.0  # s of wall time
+
+# Subscribes to every sensor topic of the car (a Python subscriber, as rviz or a user's node would),
+# waits until the sensors run, then measures over NODE_WINDOW s: simulated / wall time, the plant
+# process's CPU time (from /proc) per simulated second and the rates received.
+NODE_PROBE = """
+import json, os, time, rospy
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import Image, LaserScan, PointCloud2
+def cpu():
+    with open('/proc/{pid}/stat') as f:
+        fields = f.read().rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+rospy.init_node('sensor_probe', anonymous=True)
+clock = []
+rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()))
+topics = {{'/tianracer/camera/image_raw': Image, '/tianracer/depth_camera/depth/image_raw': Image,
+          '/tianracer/depth_camera/rgb/image_raw': Image, '/tianracer/depth_camera/depth/points': PointCloud2,
+          '/tianracer/scan': LaserScan}}
+counts = dict.fromkeys(topics, 0)
+def counter(topic):
+    def count(message):
+        counts[topic] += 1
+    return count
+for topic, kind in topics.items():
+    rospy.Subscriber(topic, kind, counter(topic), queue_size=2, buff_size=2 ** 25)
+time.sleep(5.0)
+wall0, sim0, cpu0, counts0 = time.monotonic(), clock[-1], cpu(), dict(counts)
+time.sleep({window})
+wall, sim, used = time.monotonic() - wall0, clock[-1] - sim0, cpu() - cpu0
+print(json.dumps(dict(rtf=sim / wall, cpu_per_sim_s=used / sim,
+                      rates={{t: (counts[t] - counts0[t]) / sim for t in topics}})))
+"""
+
+
+def binary():
+    devel = os.environ.get('CATKIN_DEVEL_PREFIX') or next(
+        p for p in os.environ.get('CMAKE_PREFIX_PATH', '').split(':') if p.endswith('devel'))
+    return os.path.join(devel, 'lib', 'tianracer_description', 'sensor_cost')
+
+
+def real_car_urdf():
+    """The car's URDF with its cameras at the real car's sizes and rates (the lidar already is)."""
+    root = ET.fromstring(tianracer_urdf())
+    for sensor in root.iter('sensor'):
+        if sensor.get('type') in REAL_CAR:
+            width, height, rate = REAL_CAR[sensor.get('type')]
+            sensor.find('update_rate').text = str(rate)
+            sensor.find('camera/image/width').text = str(width)
+            sensor.find('camera/image/height').text = str(height)
+    return ET.tostring(root, encoding='unicode')
+
+
+def track_boxes():
+    """The walls of worlds/race_track.world: (centre, size, yaw) of each box."""
+    boxes = []
+    for model in ET.parse(RACE_TRACK_WORLD).getroot().iter('model'):
+        size = model.findtext('link/collision/geometry/box/size')
+        if size:
+            x, y, z, _, _, yaw = map(float, model.findtext('pose').split())
+            boxes.append(((x, y, z), tuple(map(float, size.split())), yaw))
+    return boxes
+
+
+def write_floor(directory, lo, hi, n=16):
+    """A textured floor OBJ over [lo, hi] (x, y) at FLOOR_TOP: an asphalt-grey checker of 0.5 m
+    squares (a 64 x 64 PNG repeated every metre) with a white line every metre."""
+    texture = np.full((64, 64, 3), 0.35)
+    texture[:32, :32] = texture[32:, 32:] = 0.28
+    texture[:2, :] = texture[:, :2] = 0.9
+    matplotlib.image.imsave(os.path.join(directory, 'asphalt.png'), texture)
+    with open(os.path.join(directory, 'floor.mtl'), 'w') as f:
+        f.write('newmtl asphalt\nKd 1 1 1\nmap_Kd asphalt.png\n')
+    lines = ['mtllib floor.mtl', 'usemtl asphalt']
+    for i in range(n + 1):
+        for j in range(n + 1):
+            x, y = lo[0] + (hi[0] - lo[0]) * i / n, lo[1] + (hi[1] - lo[1]) * j / n
+            lines += ['v %f %f %f' % (x, y, FLOOR_TOP), 'vt %f %f' % (x, y)]
+    for i in range(n):
+        for j in range(n):
+            a = i * (n + 1) + j + 1
+            b, c, d = a + n + 1, a + n + 2, a + 1
+            lines += ['f %d/%d %d/%d %d/%d' % (a, a, b, b, c, c), 'f %d/%d %d/%d %d/%d' % (a, a, c, c, d, d)]
+    with open(os.path.join(directory, 'floor.obj'), 'w') as f:
+        f.write('\n'.join(lines) + '\n')
+
+
+def mesh_model(name, mesh, colour=None):
+    material = '<material><diffuse>%s</diffuse></material>' % colour if colour else ''
+    return f"""<model name="{name}"><static>true</static><link name="link">
+      <collision name="collision"><geometry><mesh><uri>{mesh}</uri></mesh></geometry></collision>
+      <visual name="visual"><geometry><mesh><uri>{mesh}</uri></mesh></geometry>{material}</visual>
+    </link></model>"""
+
+
+def write_mesh_track(directory):
+    """The race track's walls as one OBJ and a textured floor OBJ, in a world file."""
+    boxes = track_boxes()
+    write_obj(os.path.join(directory, 'walls.obj'), boxes)
+    xs = [c[0] for c, _, _ in boxes]
+    ys = [c[1] for c, _, _ in boxes]
+    write_floor(directory, (min(xs) - 1, min(ys) - 1), (max(xs) + 1, max(ys) + 1))
+    world = os.path.join(directory, 'mesh_race_track.world')
+    with open(world, 'w') as f:
+        f.write(f"""<?xml version="1.0"?>
+<sdf version="1.6"><world name="mesh_race_track">
+  <include><uri>model://sun</uri></include>
+  <scene><ambient>0.4 0.4 0.4 1</ambient><background>0.7 0.7 0.7 1</background></scene>
+  {mesh_model('floor', 'floor.obj')}
+  {mesh_model('walls', 'walls.obj', '0.8 0.1 0.1 1')}
+</world></sdf>""")
+    return world, len(boxes)
+
+
+def rays_per_second(urdf_file, world):
+    out = subprocess.run([binary(), urdf_file, world, str(FRAMES)], capture_output=True, text=True, check=True)
+    rates, agree = {}, {}
+    for line in out.stdout.split('\n'):
+        words = line.split()
+        if len(words) == 5:
+            rates[(words[0], words[1], int(words[2]))] = (float(words[3]), float(words[4]))
+        elif len(words) == 3 and words[1] == 'agree':
+            agree[words[0]] = float(words[2])
+    return rates, agree
+
+
+def print_rates(title, rates, agree):
+    threads = max(t for _, _, t in rates)
+    print(title)
+    print('  %-26s %15s %15s %17s   (M rays per CPU second / per wall second)'
+          % ('', 'previous path', 'Embree, 1 thread', 'Embree, %d threads' % threads))
+    for sensor, label in (('camera', 'colour 800 x 800, shaded'), ('depth', 'depth 640 x 480'),
+                          ('lidar', 'lidar 1081 rays')):
+        cells = []
+        for key in ((sensor, 'previous', 1), (sensor, 'embree', 1), (sensor, 'embree', threads)):
+            cpu, wall = rates[key]
+            cells.append('%6.1f / %5.1f' % (cpu / 1e6, wall / 1e6))
+        note = '  images agree within 2/255: %.1f %%' % (100 * agree[sensor]) if sensor in agree else ''
+        print('  %-26s %15s %15s %17s%s' % (label, cells[0], cells[1], cells[2], note))
+
+
+def real_car_run(world_file, urdf):
+    world = bullet_plant.World.from_file(world_file)
+    world.load_params(CONFIG_YAML)
+    car = world.spawn(urdf, 'tianracer', pose=(0, 0, 0.05, 0, 0, 0))
+    cm = car.controller_manager
+    cm.spawn(list(TUTORIAL_CONTROLLERS))
+    for controller in REAR_WHEEL_CONTROLLERS:
+        cm.command(controller, SPEED / WHEEL_RADIUS)
+    world.step(500)
+    sensors = list(car.sensors)
+    steps = int(round(SIM_SECONDS / world.time_step))
+
+    def timed(enabled):
+        for sensor in sensors:
+            car.enable_sensor(sensor, enabled)
+        updates = {s: car.sensor_updates(s) for s in sensors}
+        wall, cpu = time.perf_counter(), time.process_time()
+        world.step(steps)
+        wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
+        return wall, cpu, {s: car.sensor_updates(s) - updates[s] for s in sensors}
+
+    bare = timed(False)
+    wall, cpu, updates = timed(True)
+    sim = steps * world.time_step
+    print('the real car\'s sensors on the mesh race track, all subscribed, driving at %.2f m/s, %.0f s simulated:'
+          % (SPEED, sim))
+    print('  ' + ', '.join('%s %.0f Hz' % (s, updates[s] / sim) for s in sensors))
+    print('  simulated seconds per wall second (unpaced): %.2f -> real time factor held: %.2f '
+          '(load average %.1f on %d cores: other jobs take their share)'
+          % (sim / wall, min(1.0, sim / wall), os.getloadavg()[0], os.cpu_count()))
+    print('  process CPU time / simulated time: %.2f (cores busy at real time; %.2f of it without sensors)'
+          % (cpu / sim, bare[1] / sim))
+    return {'speed': sim / wall, 'cpu_per_sim_second': cpu / sim, 'bare_cpu_per_sim_second': bare[1] / sim}
+
+
+def node_run(world_file, urdf_file):
+    """The same sensor set through the ROS node, paced at real time, every topic subscribed."""
+    with tempfile.TemporaryDirectory() as workdir:
+        ros = RosSystem(workdir)
+        try:
+            plant = tianracer_plant(ros, urdf_file, world=world_file)
+            result = ros.python(NODE_PROBE.format(pid=plant_pid(plant.pid), window=NODE_WINDOW),
+                                timeout=NODE_WINDOW + 60)
+        finally:
+            ros.close()
+    print('the same through the ROS node (bullet_plant), paced, each topic subscribed by a Python node, %.0f s:'
+          % NODE_WINDOW)
+    print('  real time factor %.3f, plant process CPU time / simulated time %.2f (load average %.1f)'
+          % (result['rtf'], result['cpu_per_sim_s'], os.getloadavg()[0]))
+    print('  received per simulated second: ' + ', '.join('%s %.1f' % (topic.replace('/tianracer/', ''), rate)
+                                                         for topic, rate in result['rates'].items()))
+    return result
+
+
+def main():
+    urdf = real_car_urdf()
+    with tempfile.TemporaryDirectory() as directory:
+        urdf_file = os.path.join(directory, 'tianracer.urdf')
+        with open(urdf_file, 'w') as f:
+            f.write(urdf)
+        mesh_world, walls = write_mesh_track(directory)
+        print_rates('sensor rays on worlds/race_track.world (boxes and a plane):', *rays_per_second(urdf_file,
+                                                                                                  RACE_TRACK_WORLD))
+        print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor):'
+                    % (walls, 12 * walls), *rays_per_second(urdf_file, mesh_world))
+        real_car_run(mesh_world, urdf)
+        node_run(mesh_world, urdf_file)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
