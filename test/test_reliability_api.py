@@ -102,3 +102,21 @@ def test_load_params_refuses_a_dict_that_contains_itself_or_nests_too_deep():
         world.load_params(deep)
     world.load_params({'tianracer': {'p': 1.0, 'shared': [1, 2], 'again': [1, 2]}})
     assert world.get_param('/tianracer/p') == 1.0
+
+
+def test_rays_embree_cannot_take_hit_nothing_instead_of_aborting(urdf_xml):
+    # Debian's Embree asserts on such rays (a NaN or out-of-range origin, direction or range) and
+    # aborts the process; they are not cast. Run in a subprocess so an abort fails this test only.
+    code = """
+import math
+from tianracer_description import bullet_plant
+world = bullet_plant.World()
+world.echo = False
+for origin, direction, far in [([math.nan, 0, 1], [1, 0, 0], 5.0), ([1e308, 0, 1], [1, 0, 0], 5.0),
+                               ([0, 0, 1], [1e30, 0, 0], 5.0), ([0, 0, 1], [0, 0, -1], math.nan)]:
+    assert world.cast_ray(origin, direction, far) == math.inf, (origin, direction, far)
+assert abs(world.cast_ray([0, 0, 1], [0, 0, -1], 5.0) - 1.0) < 1e-3   # the ground plane, still seen
+print('ok')
+"""
+    result = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0 and result.stdout.strip() == 'ok', result.stdout + result.stderr

@@ -605,17 +605,38 @@ void RayScene::resolve(const RTCRayHit& rh, RayHit& out) const
     n *= scale;
 }
 
+namespace
+{
+// Embree checks this (RayK::valid) only in debug builds such as Debian's, where a ray outside it
+// aborts the process; release builds return garbage. Such a ray (a NaN or 1e308 pose or range from
+// a user) is simply not cast: it hits nothing.
+bool embreeAcceptsRay(const float origin[3], const float dir[3], float near, float far)
+{
+  constexpr float kLargest = 1.844e18f;  // Embree's FLT_LARGE
+  for (int i = 0; i < 3; ++i)
+    if (!(std::fabs(origin[i]) <= kLargest && std::fabs(dir[i]) <= kLargest))
+      return false;
+  return near >= 0 && !std::isnan(far);
+}
+}  // namespace
+
 RayHit RayScene::castHit(const double origin[3], const double dir[3], double near, double far, unsigned seen_by) const
 {
+  RayHit out;
+  out.distance = kInf;
+  const float org_f[3] = {float(origin[0]), float(origin[1]), float(origin[2])};
+  const float dir_f[3] = {float(dir[0]), float(dir[1]), float(dir[2])};
+  if (!embreeAcceptsRay(org_f, dir_f, float(near), float(far)))
+    return out;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh;
-  rh.ray.org_x = float(origin[0]);
-  rh.ray.org_y = float(origin[1]);
-  rh.ray.org_z = float(origin[2]);
-  rh.ray.dir_x = float(dir[0]);
-  rh.ray.dir_y = float(dir[1]);
-  rh.ray.dir_z = float(dir[2]);
+  rh.ray.org_x = org_f[0];
+  rh.ray.org_y = org_f[1];
+  rh.ray.org_z = org_f[2];
+  rh.ray.dir_x = dir_f[0];
+  rh.ray.dir_y = dir_f[1];
+  rh.ray.dir_z = dir_f[2];
   rh.ray.tnear = float(near);
   rh.ray.tfar = float(far);
   rh.ray.mask = seen_by;
@@ -624,8 +645,6 @@ RayHit RayScene::castHit(const double origin[3], const double dir[3], double nea
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(top_, &context, &rh);
-  RayHit out;
-  out.distance = kInf;
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID)
     resolve(rh, out);
   return out;
@@ -648,7 +667,8 @@ struct alignas(64) Packet
 
   void set(int lane, const float origin[3], const double dir[3], float near, float far, unsigned mask)
   {
-    valid[lane] = -1;
+    const float dir_f[3] = {float(dir[0]), float(dir[1]), float(dir[2])};
+    valid[lane] = embreeAcceptsRay(origin, dir_f, near, far) ? -1 : 0;
     rh.ray.org_x[lane] = origin[0];
     rh.ray.org_y[lane] = origin[1];
     rh.ray.org_z[lane] = origin[2];
