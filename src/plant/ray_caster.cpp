@@ -607,8 +607,8 @@ void RayScene::resolve(const RTCRayHit& rh, RayHit& out) const
 
 namespace
 {
-// Embree checks this (RayK::valid) only in debug builds such as Debian's, where a ray outside it
-// aborts the process; release builds return garbage. Such a ray (a NaN or 1e308 pose or range from
+// Embree checks this (RayK::valid) with assertions, which Debian's build keeps: a ray outside it
+// aborts the process (builds without them return garbage). Such a ray (a NaN or 1e308 pose or range from
 // a user) is simply not cast: it hits nothing.
 bool embreeAcceptsRay(const float origin[3], const float dir[3], float near, float far)
 {
