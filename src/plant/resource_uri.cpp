@@ -130,15 +130,22 @@ void splitAuthority(const std::string& after_scheme, std::string& first, std::st
   first = after_scheme.substr(0, slash);
   rest = slash == std::string::npos ? "" : after_scheme.substr(slash);
 }
+
+// The variable's directories, then every package's export of that kind (as gazebo_ros's setup
+// appends them).
+std::vector<std::string> searchPath(const char* variable, std::string PackageDir::*exported)
+{
+  std::vector<std::string> dirs = pathList(variable);
+  for (const PackageDir& package : packagesOnPath())
+    for (const std::string& dir : exportedPaths(package, package.*exported))
+      dirs.push_back(dir);
+  return dirs;
+}
 }  // namespace
 
 std::vector<std::string> modelSearchPath()
 {
-  std::vector<std::string> dirs = pathList("GAZEBO_MODEL_PATH");
-  for (const PackageDir& package : packagesOnPath())
-    for (const std::string& dir : exportedPaths(package, package.model_path_export))
-      dirs.push_back(dir);
-  return dirs;
+  return searchPath("GAZEBO_MODEL_PATH", &PackageDir::model_path_export);
 }
 
 std::string findModelDir(const std::string& name, std::string& reason)
@@ -155,11 +162,7 @@ std::string findModelDir(const std::string& name, std::string& reason)
 
 std::vector<std::string> resourceSearchPath()
 {
-  std::vector<std::string> dirs = pathList("GAZEBO_RESOURCE_PATH");
-  for (const PackageDir& package : packagesOnPath())
-    for (const std::string& dir : exportedPaths(package, package.media_path_export))
-      dirs.push_back(dir);
-  return dirs;
+  return searchPath("GAZEBO_RESOURCE_PATH", &PackageDir::media_path_export);
 }
 
 std::string findWorldFile(const std::string& name, std::string& reason)
