@@ -7,10 +7,11 @@
    through the plant's Embree path with one thread and with all: per CPU second (what one core
    does) and per wall second. The subject is bench/sensor_cost.cpp (built by `make build`).
 2. The real car's sensor set at its rates (800 x 800 colour at 30 Hz, 640 x 480 depth at 20 Hz, the
-   1081-ray lidar at 40 Hz, all subscribed) on the mesh race track while the car drives: simulated
+   1081-ray lidar at 40 Hz, the 100 Hz IMU, all subscribed) on the mesh race track while the car drives: simulated
    seconds per wall second unpaced (the real time factor the node can hold is the smaller of that and
    1) and process CPU seconds per simulated second (at real time: the cores' worth of CPU it takes);
    then the same through the ROS node, paced at real time, with every sensor topic subscribed.
+   `bench/sensor_bench.py --real-car` runs only this part.
 """
 import math
 import os
@@ -29,8 +30,8 @@ from mesh_cost import write_obj  # beside this file
 from ros_plant_bench import plant_pid
 from tianracer_description import bullet_plant  # noqa: E402
 from tianracer_description.ros_harness import RosSystem, tianracer_plant  # noqa: E402
-from tianracer_description.tianracer import (CONFIG_YAML, RACE_TRACK_WORLD, REAR_WHEEL_CONTROLLERS,  # noqa: E402
-                                             TUTORIAL_CONTROLLERS, tianracer_urdf)
+from tianracer_description.tianracer import (CONFIG_YAML, MODEL_XACRO, RACE_TRACK_WORLD,  # noqa: E402
+                                             REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS, run_xacro)
 
 FRAMES = 10
 SIM_SECONDS = 10.0
@@ -40,13 +41,14 @@ REAL_CAR = {'camera': (800, 800, 30.0), 'depth': (640, 480, 20.0)}  # width, hei
 FLOOR_TOP = 0.002  # above the ground plane the world gets anyway
 NODE_WINDOW = 20.0  # s of wall time
 
-# Subscribes to every sensor topic of the car (a Python subscriber, as rviz or a user's node would),
+# Subscribes to every sensor topic of the car (a Python subscriber, as rviz or a user's node would;
+# spawned as the tutorial spawns it, no robotNamespace, so the plugins' topics are at the root),
 # waits until the sensors run, then measures over NODE_WINDOW s: simulated / wall time, the plant
 # process's CPU time (from /proc) per simulated second and the rates received.
 NODE_PROBE = """
 import json, os, time, rospy
 from rosgraph_msgs.msg import Clock
-from sensor_msgs.msg import Image, LaserScan, PointCloud2
+from sensor_msgs.msg import Image, Imu, LaserScan, PointCloud2
 def cpu():
     with open('/proc/{pid}/stat') as f:
         fields = f.read().rsplit(')', 1)[1].split()
@@ -54,9 +56,8 @@ def cpu():
 rospy.init_node('sensor_probe', anonymous=True)
 clock = []
 rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()))
-topics = {{'/tianracer/camera/image_raw': Image, '/tianracer/depth_camera/depth/image_raw': Image,
-          '/tianracer/depth_camera/rgb/image_raw': Image, '/tianracer/depth_camera/depth/points': PointCloud2,
-          '/tianracer/scan': LaserScan}}
+topics = {{'/camera/image_raw': Image, '/depth_camera/depth/image_raw': Image, '/depth_camera/rgb/image_raw': Image,
+          '/depth_camera/depth/points': PointCloud2, '/scan': LaserScan, '/imu': Imu}}
 counts = dict.fromkeys(topics, 0)
 def counter(topic):
     def count(message):
@@ -80,8 +81,8 @@ def binary():
 
 
 def real_car_urdf():
-    """The car's URDF with its cameras at the real car's sizes and rates (the lidar already is)."""
-    root = ET.fromstring(tianracer_urdf())
+    """The car's URDF with its IMU and its cameras at the real car's sizes and rates (the lidar already is)."""
+    root = ET.fromstring(run_xacro(MODEL_XACRO, 'imu:=true').stdout)
     for sensor in root.iter('sensor'):
         if sensor.get('type') in REAL_CAR:
             width, height, rate = REAL_CAR[sensor.get('type')]
@@ -228,7 +229,7 @@ def node_run(world_file, urdf_file):
           % NODE_WINDOW)
     print('  real time factor %.3f, plant process CPU time / simulated time %.2f (load average %.1f)'
           % (result['rtf'], result['cpu_per_sim_s'], os.getloadavg()[0]))
-    print('  received per simulated second: ' + ', '.join('%s %.1f' % (topic.replace('/tianracer/', ''), rate)
+    print('  received per simulated second: ' + ', '.join('%s %.1f' % (topic.lstrip('/'), rate)
                                                          for topic, rate in result['rates'].items()))
     return result
 
@@ -240,10 +241,11 @@ def main():
         with open(urdf_file, 'w') as f:
             f.write(urdf)
         mesh_world, walls = write_mesh_track(directory)
-        print_rates('sensor rays on worlds/race_track.world (boxes and a plane):', *rays_per_second(urdf_file,
-                                                                                                  RACE_TRACK_WORLD))
-        print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor):'
-                    % (walls, 12 * walls), *rays_per_second(urdf_file, mesh_world))
+        if sys.argv[1:] != ['--real-car']:
+            print_rates('sensor rays on worlds/race_track.world (boxes and a plane):',
+                        *rays_per_second(urdf_file, RACE_TRACK_WORLD))
+            print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor):'
+                        % (walls, 12 * walls), *rays_per_second(urdf_file, mesh_world))
         real_car_run(mesh_world, urdf)
         node_run(mesh_world, urdf_file)
 

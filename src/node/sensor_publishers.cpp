@@ -1,16 +1,12 @@
 #include "sensor_publishers.h"
 
+#include "frame_messages.h"
 #include "ros_names.h"
-
-#include <cstring>
-#include <limits>
 
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Imu.h>
-#include <sensor_msgs/Image.h>
 #include <sensor_msgs/LaserScan.h>
-#include <sensor_msgs/PointCloud2.h>
 
 #include "bullet_plant/robot.h"
 #include "ros_time.h"
@@ -40,43 +36,6 @@ bool takeUpdate(uint64_t& seen, const Sensor& sensor)
     return false;
   seen = sensor.updates();
   return true;
-}
-
-// gazebo_ros_openni_kinect's pointCloudCutoff(Max): depths outside (near, far) are published as NaN.
-bool withinCutoff(float depth, double near, double far) { return depth > near && depth < far; }
-
-// x y z float32 and rgb packed in a float32, as gazebo_ros_openni_kinect publishes
-sensor_msgs::PointCloud2 pointCloud(const CameraFrame& f, const std_msgs::Header& header, double near, double far)
-{
-  sensor_msgs::PointCloud2 cloud;
-  cloud.header = header;
-  cloud.width = f.width;
-  cloud.height = f.height;
-  cloud.is_bigendian = false;
-  cloud.is_dense = false;
-  cloud.point_step = 16;
-  cloud.row_step = cloud.point_step * f.width;
-  const char* names[] = {"x", "y", "z", "rgb"};
-  for (int i = 0; i < 4; ++i)
-  {
-    sensor_msgs::PointField field;
-    field.name = names[i];
-    field.offset = 4 * i;
-    field.datatype = sensor_msgs::PointField::FLOAT32;
-    field.count = 1;
-    cloud.fields.push_back(field);
-  }
-  cloud.data.resize(size_t(cloud.row_step) * f.height);
-  for (size_t p = 0; p < size_t(f.width) * f.height; ++p)
-  {
-    uint8_t* out = &cloud.data[p * 16];
-    static const float kNaN[3] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN(),
-                                  std::numeric_limits<float>::quiet_NaN()};
-    std::memcpy(out, withinCutoff(f.depth[p], near, far) ? &f.points[3 * p] : kNaN, 12);
-    uint32_t rgb = (uint32_t(f.rgb[3 * p]) << 16) | (uint32_t(f.rgb[3 * p + 1]) << 8) | f.rgb[3 * p + 2];
-    std::memcpy(out + 12, &rgb, 4);
-  }
-  return cloud;
 }
 
 // tf::getPrefixParam: a tf_prefix parameter found by searching up from the plugin's namespace
@@ -270,39 +229,18 @@ void SensorPublishers::publishCameras()
   {
     if (!takeUpdate(t.updates, *t.camera))
       continue;
+    // Images and points are serialized from the frame as roscpp sends them, only for topics with
+    // subscribers (frame_messages.h).
     const CameraFrame& f = t.camera->latest();
-    std_msgs::Header header;
-    header.stamp = rosTime(f.stamp_ns);
-    header.frame_id = f.frame_id;
-    sensor_msgs::Image image;
-    image.header = header;
-    image.width = f.width;
-    image.height = f.height;
-    image.encoding = "rgb8";
-    image.step = f.width * 3;
-    image.data = f.rgb;
-    t.image.publish(image);
+    const std_msgs::Header header = frameHeader(f);
+    t.image.publish(RgbImageOf{f});
     t.info.publish(cameraInfo(f, header));
     if (!t.camera->depthSensor())
       continue;
-    sensor_msgs::Image depth;
-    depth.header = header;
-    depth.width = f.width;
-    depth.height = f.height;
-    depth.encoding = "32FC1";
-    depth.step = f.width * 4;
-    const double near = t.camera->pointCloudCutoff(), far = t.camera->pointCloudCutoffMax();
-    std::vector<float> depths(f.depth);
-    for (float& d : depths)
-      if (!withinCutoff(d, near, far))
-        d = std::numeric_limits<float>::quiet_NaN();
-    depth.data.resize(depths.size() * 4);
-    std::memcpy(depth.data.data(), depths.data(), depth.data.size());
-    t.depth.publish(depth);
+    const DepthCutoff cutoff{t.camera->pointCloudCutoff(), t.camera->pointCloudCutoffMax()};
+    t.depth.publish(DepthImageOf{f, cutoff});
     t.depth_info.publish(cameraInfo(f, header));
-    if (t.points.getNumSubscribers() == 0)
-      continue;
-    t.points.publish(pointCloud(f, header, near, far));
+    t.points.publish(PointCloudOf{f, cutoff});
   }
 }
 
