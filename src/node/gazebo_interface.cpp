@@ -168,17 +168,22 @@ std::string rootElement(const std::string& xml)
 
 // ------------------------------------------------------------------------------ the interface
 
+template <class Srv, class Handler>
+void GazeboInterface::serveOnSimThread(ros::NodeHandle& nh, const std::string& name, Handler handler)
+{
+  services_.push_back(nh.advertiseService<typename Srv::Request, typename Srv::Response>(
+      name, [this, handler](typename Srv::Request& req, typename Srv::Response& res) {
+        return plant_.onSimThread<bool>([&] { return handler(req, res); });
+      }));
+}
+
 GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(plant)
 {
-  // Every handler answers on the simulation thread (RosPlant::onSimThread).
   auto empty = [&](const std::string& name, std::function<void()> action) {
-    services_.push_back(nh.advertiseService<std_srvs::Empty::Request, std_srvs::Empty::Response>(
-        name, [this, action](std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
-          return plant_.onSimThread<bool>([&] {
-            action();
-            return true;
-          });
-        }));
+    serveOnSimThread<std_srvs::Empty>(nh, name, [action](auto&, auto&) {
+      action();
+      return true;
+    });
   };
   empty("pause_physics", [this] { plant_.applyPaused(true); });
   empty("unpause_physics", [this] { plant_.applyPaused(false); });
@@ -241,7 +246,7 @@ GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(
         return true;
       }));
   services_.push_back(nh.advertiseService<gazebo_msgs::DeleteModel::Request, gazebo_msgs::DeleteModel::Response>(
-      "delete_model", [this](gazebo_msgs::DeleteModel::Request& req, gazebo_msgs::DeleteModel::Response& res) {
+      "delete_model", [this](auto& req, auto& res) {
         std::string message;
         res.success = plant_.remove(req.model_name, message);
         res.status_message = res.success ? "DeleteModel: successfully deleted model" : "DeleteModel: model does not exist";
@@ -250,81 +255,72 @@ GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(
         return true;
       }));
 
-  services_.push_back(nh.advertiseService<gazebo_msgs::GetModelState::Request, gazebo_msgs::GetModelState::Response>(
-      "get_model_state", [this, &world](gazebo_msgs::GetModelState::Request& req, gazebo_msgs::GetModelState::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          Robot* robot = world.robot(req.model_name);
-          if (!robot)
-          {
-            ROS_ERROR("GetModelState: model [%s] does not exist", req.model_name.c_str());
-            res.success = false;
-            res.status_message = "GetModelState: model does not exist";
-            return true;
-          }
-          State state = modelState(*robot);
-          if (!isWorldFrame(req.relative_entity_name))
-          {
-            const LinkRef frame = findLink(world, req.relative_entity_name);
-            if (!frame)
-            {
-              res.success = false;
-              res.status_message = "GetModelState: reference relative_entity_name not found, did you forget to scope "
-                                   "the body by model name?";
-              return true;
-            }
-            state = relativeTo(state, linkState(frame));
-          }
-          res.header.seq = ++get_model_state_calls_[req.model_name];
-          res.header.stamp = rosTime(world.timeNs());
-          res.header.frame_id = req.relative_entity_name;
-          res.pose = toMsg(state.pose);
-          res.twist = toMsg(state.twist);
-          res.success = true;
-          res.status_message = "GetModelState: got properties";
-          return true;
-        });
-      }));
+  serveOnSimThread<gazebo_msgs::GetModelState>(nh, "get_model_state", [this, &world](auto& req, auto& res) {
+    Robot* robot = world.robot(req.model_name);
+    if (!robot)
+    {
+      ROS_ERROR("GetModelState: model [%s] does not exist", req.model_name.c_str());
+      res.success = false;
+      res.status_message = "GetModelState: model does not exist";
+      return true;
+    }
+    State state = modelState(*robot);
+    if (!isWorldFrame(req.relative_entity_name))
+    {
+      const LinkRef frame = findLink(world, req.relative_entity_name);
+      if (!frame)
+      {
+        res.success = false;
+        res.status_message = "GetModelState: reference relative_entity_name not found, did you forget to scope "
+                             "the body by model name?";
+        return true;
+      }
+      state = relativeTo(state, linkState(frame));
+    }
+    res.header.seq = ++get_model_state_calls_[req.model_name];
+    res.header.stamp = rosTime(world.timeNs());
+    res.header.frame_id = req.relative_entity_name;
+    res.pose = toMsg(state.pose);
+    res.twist = toMsg(state.twist);
+    res.success = true;
+    res.status_message = "GetModelState: got properties";
+    return true;
+  });
 
-  services_.push_back(nh.advertiseService<gazebo_msgs::GetLinkState::Request, gazebo_msgs::GetLinkState::Response>(
-      "get_link_state", [this, &world](gazebo_msgs::GetLinkState::Request& req, gazebo_msgs::GetLinkState::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          const LinkRef link = findLink(world, req.link_name);
-          if (!link)
-          {
-            res.success = false;
-            res.status_message = "GetLinkState: link not found, did you forget to scope the link by model name?";
-            return true;
-          }
-          State state = linkState(link);
-          if (!isWorldFrame(req.reference_frame))
-          {
-            const LinkRef frame = findLink(world, req.reference_frame);
-            if (!frame)
-            {
-              res.success = false;
-              res.status_message = "GetLinkState: reference reference_frame not found, did you forget to scope the "
-                                   "link by model name?";
-              return true;
-            }
-            state = relativeTo(state, linkState(frame));
-          }
-          res.link_state.link_name = req.link_name;
-          res.link_state.pose = toMsg(state.pose);
-          res.link_state.twist = toMsg(state.twist);
-          res.link_state.reference_frame = req.reference_frame;
-          res.success = true;
-          res.status_message = "GetLinkState: got state";
-          return true;
-        });
-      }));
+  serveOnSimThread<gazebo_msgs::GetLinkState>(nh, "get_link_state", [this, &world](auto& req, auto& res) {
+    const LinkRef link = findLink(world, req.link_name);
+    if (!link)
+    {
+      res.success = false;
+      res.status_message = "GetLinkState: link not found, did you forget to scope the link by model name?";
+      return true;
+    }
+    State state = linkState(link);
+    if (!isWorldFrame(req.reference_frame))
+    {
+      const LinkRef frame = findLink(world, req.reference_frame);
+      if (!frame)
+      {
+        res.success = false;
+        res.status_message = "GetLinkState: reference reference_frame not found, did you forget to scope the "
+                             "link by model name?";
+        return true;
+      }
+      state = relativeTo(state, linkState(frame));
+    }
+    res.link_state.link_name = req.link_name;
+    res.link_state.pose = toMsg(state.pose);
+    res.link_state.twist = toMsg(state.twist);
+    res.link_state.reference_frame = req.reference_frame;
+    res.success = true;
+    res.status_message = "GetLinkState: got state";
+    return true;
+  });
 
-  services_.push_back(nh.advertiseService<gazebo_msgs::SetModelState::Request, gazebo_msgs::SetModelState::Response>(
-      "set_model_state", [this](gazebo_msgs::SetModelState::Request& req, gazebo_msgs::SetModelState::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          res.success = setModelState(req.model_state, res.status_message);
-          return true;
-        });
-      }));
+  serveOnSimThread<gazebo_msgs::SetModelState>(nh, "set_model_state", [this](auto& req, auto& res) {
+    res.success = setModelState(req.model_state, res.status_message);
+    return true;
+  });
   subscribers_.push_back(nh.subscribe<gazebo_msgs::ModelState>(
       "set_model_state", 10, [this](const gazebo_msgs::ModelState::ConstPtr& msg) {
         plant_.post([this, msg] {
@@ -332,13 +328,10 @@ GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(
           setModelState(*msg, message);
         });
       }));
-  services_.push_back(nh.advertiseService<gazebo_msgs::SetLinkState::Request, gazebo_msgs::SetLinkState::Response>(
-      "set_link_state", [this](gazebo_msgs::SetLinkState::Request& req, gazebo_msgs::SetLinkState::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          res.success = setLinkState(req.link_state, res.status_message);
-          return true;
-        });
-      }));
+  serveOnSimThread<gazebo_msgs::SetLinkState>(nh, "set_link_state", [this](auto& req, auto& res) {
+    res.success = setLinkState(req.link_state, res.status_message);
+    return true;
+  });
   subscribers_.push_back(nh.subscribe<gazebo_msgs::LinkState>(
       "set_link_state", 10, [this](const gazebo_msgs::LinkState::ConstPtr& msg) {
         plant_.post([this, msg] {
@@ -347,209 +340,174 @@ GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(
         });
       }));
 
-  services_.push_back(
-      nh.advertiseService<gazebo_msgs::SetModelConfiguration::Request, gazebo_msgs::SetModelConfiguration::Response>(
-          "set_model_configuration",
-          [this, &world](gazebo_msgs::SetModelConfiguration::Request& req, gazebo_msgs::SetModelConfiguration::Response& res) {
-            return plant_.onSimThread<bool>([&] {
-              Robot* robot = world.robot(req.model_name);
-              res.success = false;
-              if (!robot)
-              {
-                ROS_ERROR("SetModelConfiguration: model [%s] does not exist", req.model_name.c_str());
-                res.status_message = "SetModelConfiguration: model does not exist";
-                return true;
-              }
-              if (req.joint_names.size() != req.joint_positions.size())
-              {
-                res.status_message = "SetModelConfiguration: joint name and position list have different lengths";
-                return true;
-              }
-              std::map<std::string, double> positions;
-              for (size_t i = 0; i < req.joint_names.size(); ++i)
-                positions[req.joint_names[i]] = req.joint_positions[i];
-              try
-              {
-                robot->setJointPositions(positions);
-              }
-              catch (const std::exception& e)
-              {
-                res.status_message = std::string("SetModelConfiguration: ") + e.what();
-                return true;
-              }
-              res.success = true;
-              res.status_message = "SetModelConfiguration: success";
-              return true;
-            });
-          }));
+  serveOnSimThread<gazebo_msgs::SetModelConfiguration>(nh, "set_model_configuration", [this, &world](auto& req, auto& res) {
+    Robot* robot = world.robot(req.model_name);
+    res.success = false;
+    if (!robot)
+    {
+      ROS_ERROR("SetModelConfiguration: model [%s] does not exist", req.model_name.c_str());
+      res.status_message = "SetModelConfiguration: model does not exist";
+      return true;
+    }
+    if (req.joint_names.size() != req.joint_positions.size())
+    {
+      res.status_message = "SetModelConfiguration: joint name and position list have different lengths";
+      return true;
+    }
+    std::map<std::string, double> positions;
+    for (size_t i = 0; i < req.joint_names.size(); ++i)
+      positions[req.joint_names[i]] = req.joint_positions[i];
+    try
+    {
+      robot->setJointPositions(positions);
+    }
+    catch (const std::exception& e)
+    {
+      res.status_message = std::string("SetModelConfiguration: ") + e.what();
+      return true;
+    }
+    res.success = true;
+    res.status_message = "SetModelConfiguration: success";
+    return true;
+  });
 
-  services_.push_back(nh.advertiseService<gazebo_msgs::GetWorldProperties::Request, gazebo_msgs::GetWorldProperties::Response>(
-      "get_world_properties",
-      [this, &world](gazebo_msgs::GetWorldProperties::Request&, gazebo_msgs::GetWorldProperties::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          res.sim_time = world.time();
-          for (Robot* robot : world.robots())
-            res.model_names.push_back(robot->name());
-          res.rendering_enabled = true;
+  serveOnSimThread<gazebo_msgs::GetWorldProperties>(nh, "get_world_properties", [this, &world](auto&, auto& res) {
+    res.sim_time = world.time();
+    for (Robot* robot : world.robots())
+      res.model_names.push_back(robot->name());
+    res.rendering_enabled = true;
+    res.success = true;
+    res.status_message = "GetWorldProperties: got properties";
+    return true;
+  });
+
+  serveOnSimThread<gazebo_msgs::GetModelProperties>(nh, "get_model_properties", [this, &world](auto& req, auto& res) {
+    Robot* robot = world.robot(req.model_name);
+    if (!robot)
+    {
+      ROS_ERROR("GetModelProperties: model [%s] does not exist", req.model_name.c_str());
+      res.success = false;
+      res.status_message = "GetModelProperties: model does not exist";
+      return true;
+    }
+    res.body_names = robot->linkNames();
+    res.joint_names = robot->jointNames();
+    res.is_static = robot->description().is_static;
+    res.success = true;
+    res.status_message = "GetModelProperties: got properties";
+    return true;
+  });
+
+  serveOnSimThread<gazebo_msgs::GetPhysicsProperties>(nh, "get_physics_properties", [this, &world](auto&, auto& res) {
+    res.time_step = world.timeStep();
+    res.pause = world.paused();
+    // Gazebo's real_time_update_rate: steps per wall second; 0 runs as fast as possible.
+    res.max_update_rate = plant_.real_time_factor_ > 0 ? plant_.real_time_factor_ / world.timeStep() : 0.0;
+    const urdf::Vector3 g = world.gravity();
+    res.gravity.x = g.x;
+    res.gravity.y = g.y;
+    res.gravity.z = g.z;
+    res.ode_config.sor_pgs_iters = 10;  // the plant's solver passes (README, contacts)
+    res.ode_config.sor_pgs_w = 1.0;
+    res.success = true;
+    res.status_message = "GetPhysicsProperties: got properties";
+    return true;
+  });
+
+  serveOnSimThread<gazebo_msgs::SetPhysicsProperties>(nh, "set_physics_properties", [this, &world](auto& req, auto& res) {
+    res.success = false;
+    if (!std::isfinite(req.max_update_rate))
+    {
+      res.status_message = "SetPhysicsProperties: max_update_rate must be a number (0: as fast as possible)";
+      return true;
+    }
+    try
+    {
+      world.setTimeStep(req.time_step);
+      world.setGravity(urdf::Vector3(req.gravity.x, req.gravity.y, req.gravity.z));
+    }
+    catch (const std::exception& e)
+    {
+      res.status_message = std::string("SetPhysicsProperties: ") + e.what() + "; nothing was changed";
+      return true;
+    }
+    plant_.setRealTimeFactor(req.max_update_rate > 0 ? req.max_update_rate * world.timeStep() : 0.0);
+    res.success = true;
+    res.status_message = "physics engine updated";
+    return true;
+  });
+
+  serveOnSimThread<gazebo_msgs::ApplyBodyWrench>(nh, "apply_body_wrench", [this, &world](auto& req, auto& res) {
+    res.success = false;
+    const LinkRef body = findLink(world, req.body_name);
+    if (!body)
+    {
+      ROS_ERROR("ApplyBodyWrench: body [%s] does not exist", req.body_name.c_str());
+      res.status_message = "ApplyBodyWrench: body does not exist";
+      return true;
+    }
+    // A force at reference_point adds reference_point x force to the torque.
+    const auto& f = req.wrench.force;
+    const auto& p = req.reference_point;
+    urdf::Vector3 force(f.x, f.y, f.z);
+    urdf::Vector3 torque(req.wrench.torque.x + p.y * f.z - p.z * f.y, req.wrench.torque.y + p.z * f.x - p.x * f.z,
+                         req.wrench.torque.z + p.x * f.y - p.y * f.x);
+    if (!isWorldFrame(req.reference_frame))
+    {
+      const LinkRef frame = findLink(world, req.reference_frame);
+      if (!frame)
+      {
+        ROS_ERROR("ApplyBodyWrench: reference_frame is not a valid link name");
+        res.status_message = "ApplyBodyWrench: reference_frame not found";
+        return true;
+      }
+      const urdf::Rotation axes = frame.robot->linkPose(frame.link).rotation;
+      force = axes * force;
+      torque = axes * torque;
+    }
+    for (double v : {force.x, force.y, force.z, torque.x, torque.y, torque.z})
+      if (!std::isfinite(v))
+      {
+        res.status_message = "ApplyBodyWrench: the wrench on '" + req.body_name + "' is not finite";
+        return true;
+      }
+    body.robot->applyLinkWrench(body.link, force, torque, jobStart(req.start_time, world.timeNs()),
+                                req.duration.toNSec());
+    res.success = true;
+    res.status_message = "";
+    return true;
+  });
+  serveOnSimThread<gazebo_msgs::BodyRequest>(nh, "clear_body_wrenches", [this, &world](auto& req, auto&) {
+    if (const LinkRef body = findLink(world, req.body_name))
+      body.robot->clearLinkWrenches(body.link);
+    return true;
+  });
+
+  serveOnSimThread<gazebo_msgs::ApplyJointEffort>(nh, "apply_joint_effort", [this, &world](auto& req, auto& res) {
+    res.success = false;
+    if (!std::isfinite(req.effort))
+    {
+      res.status_message = "ApplyJointEffort: the effort on '" + req.joint_name + "' is not finite";
+      return true;
+    }
+    // gazebo_ros names joints without their model: the first model that has it.
+    for (Robot* robot : world.robots())
+      for (const std::string& joint : robot->jointNames())
+        if (joint == req.joint_name)
+        {
+          robot->applyJointEffort(joint, req.effort, jobStart(req.start_time, world.timeNs()), req.duration.toNSec());
           res.success = true;
-          res.status_message = "GetWorldProperties: got properties";
+          res.status_message = "ApplyJointEffort: effort set";
           return true;
-        });
-      }));
-
-  services_.push_back(nh.advertiseService<gazebo_msgs::GetModelProperties::Request, gazebo_msgs::GetModelProperties::Response>(
-      "get_model_properties",
-      [this, &world](gazebo_msgs::GetModelProperties::Request& req, gazebo_msgs::GetModelProperties::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          Robot* robot = world.robot(req.model_name);
-          if (!robot)
-          {
-            ROS_ERROR("GetModelProperties: model [%s] does not exist", req.model_name.c_str());
-            res.success = false;
-            res.status_message = "GetModelProperties: model does not exist";
-            return true;
-          }
-          res.body_names = robot->linkNames();
-          res.joint_names = robot->jointNames();
-          res.is_static = robot->description().is_static;
-          res.success = true;
-          res.status_message = "GetModelProperties: got properties";
-          return true;
-        });
-      }));
-
-  services_.push_back(nh.advertiseService<gazebo_msgs::GetPhysicsProperties::Request, gazebo_msgs::GetPhysicsProperties::Response>(
-      "get_physics_properties",
-      [this, &world](gazebo_msgs::GetPhysicsProperties::Request&, gazebo_msgs::GetPhysicsProperties::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          res.time_step = world.timeStep();
-          res.pause = world.paused();
-          // Gazebo's real_time_update_rate: steps per wall second; 0 runs as fast as possible.
-          res.max_update_rate = plant_.real_time_factor_ > 0 ? plant_.real_time_factor_ / world.timeStep() : 0.0;
-          const urdf::Vector3 g = world.gravity();
-          res.gravity.x = g.x;
-          res.gravity.y = g.y;
-          res.gravity.z = g.z;
-          res.ode_config.sor_pgs_iters = 10;  // the plant's solver passes (README, contacts)
-          res.ode_config.sor_pgs_w = 1.0;
-          res.success = true;
-          res.status_message = "GetPhysicsProperties: got properties";
-          return true;
-        });
-      }));
-
-  services_.push_back(nh.advertiseService<gazebo_msgs::SetPhysicsProperties::Request, gazebo_msgs::SetPhysicsProperties::Response>(
-      "set_physics_properties",
-      [this, &world](gazebo_msgs::SetPhysicsProperties::Request& req, gazebo_msgs::SetPhysicsProperties::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          res.success = false;
-          if (!std::isfinite(req.max_update_rate))
-          {
-            res.status_message = "SetPhysicsProperties: max_update_rate must be a number (0: as fast as possible)";
-            return true;
-          }
-          try
-          {
-            world.setTimeStep(req.time_step);
-            world.setGravity(urdf::Vector3(req.gravity.x, req.gravity.y, req.gravity.z));
-          }
-          catch (const std::exception& e)
-          {
-            res.status_message = std::string("SetPhysicsProperties: ") + e.what() + "; nothing was changed";
-            return true;
-          }
-          plant_.setRealTimeFactor(req.max_update_rate > 0 ? req.max_update_rate * world.timeStep() : 0.0);
-          res.success = true;
-          res.status_message = "physics engine updated";
-          return true;
-        });
-      }));
-
-  services_.push_back(nh.advertiseService<gazebo_msgs::ApplyBodyWrench::Request, gazebo_msgs::ApplyBodyWrench::Response>(
-      "apply_body_wrench",
-      [this, &world](gazebo_msgs::ApplyBodyWrench::Request& req, gazebo_msgs::ApplyBodyWrench::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          res.success = false;
-          const LinkRef body = findLink(world, req.body_name);
-          if (!body)
-          {
-            ROS_ERROR("ApplyBodyWrench: body [%s] does not exist", req.body_name.c_str());
-            res.status_message = "ApplyBodyWrench: body does not exist";
-            return true;
-          }
-          // A force at reference_point adds reference_point x force to the torque.
-          const auto& f = req.wrench.force;
-          const auto& p = req.reference_point;
-          urdf::Vector3 force(f.x, f.y, f.z);
-          urdf::Vector3 torque(req.wrench.torque.x + p.y * f.z - p.z * f.y, req.wrench.torque.y + p.z * f.x - p.x * f.z,
-                               req.wrench.torque.z + p.x * f.y - p.y * f.x);
-          if (!isWorldFrame(req.reference_frame))
-          {
-            const LinkRef frame = findLink(world, req.reference_frame);
-            if (!frame)
-            {
-              ROS_ERROR("ApplyBodyWrench: reference_frame is not a valid link name");
-              res.status_message = "ApplyBodyWrench: reference_frame not found";
-              return true;
-            }
-            const urdf::Rotation axes = frame.robot->linkPose(frame.link).rotation;
-            force = axes * force;
-            torque = axes * torque;
-          }
-          for (double v : {force.x, force.y, force.z, torque.x, torque.y, torque.z})
-            if (!std::isfinite(v))
-            {
-              res.status_message = "ApplyBodyWrench: the wrench on '" + req.body_name + "' is not finite";
-              return true;
-            }
-          body.robot->applyLinkWrench(body.link, force, torque, jobStart(req.start_time, world.timeNs()),
-                                      req.duration.toNSec());
-          res.success = true;
-          res.status_message = "";
-          return true;
-        });
-      }));
-  services_.push_back(nh.advertiseService<gazebo_msgs::BodyRequest::Request, gazebo_msgs::BodyRequest::Response>(
-      "clear_body_wrenches", [this, &world](gazebo_msgs::BodyRequest::Request& req, gazebo_msgs::BodyRequest::Response&) {
-        return plant_.onSimThread<bool>([&] {
-          if (const LinkRef body = findLink(world, req.body_name))
-            body.robot->clearLinkWrenches(body.link);
-          return true;
-        });
-      }));
-
-  services_.push_back(nh.advertiseService<gazebo_msgs::ApplyJointEffort::Request, gazebo_msgs::ApplyJointEffort::Response>(
-      "apply_joint_effort",
-      [this, &world](gazebo_msgs::ApplyJointEffort::Request& req, gazebo_msgs::ApplyJointEffort::Response& res) {
-        return plant_.onSimThread<bool>([&] {
-          res.success = false;
-          if (!std::isfinite(req.effort))
-          {
-            res.status_message = "ApplyJointEffort: the effort on '" + req.joint_name + "' is not finite";
-            return true;
-          }
-          // gazebo_ros names joints without their model: the first model that has it.
-          for (Robot* robot : world.robots())
-            for (const std::string& joint : robot->jointNames())
-              if (joint == req.joint_name)
-              {
-                robot->applyJointEffort(joint, req.effort, jobStart(req.start_time, world.timeNs()), req.duration.toNSec());
-                res.success = true;
-                res.status_message = "ApplyJointEffort: effort set";
-                return true;
-              }
-          res.status_message = "ApplyJointEffort: joint not found";
-          return true;
-        });
-      }));
-  services_.push_back(nh.advertiseService<gazebo_msgs::JointRequest::Request, gazebo_msgs::JointRequest::Response>(
-      "clear_joint_forces", [this, &world](gazebo_msgs::JointRequest::Request& req, gazebo_msgs::JointRequest::Response&) {
-        return plant_.onSimThread<bool>([&] {
-          for (Robot* robot : world.robots())
-            robot->clearJointEfforts(req.joint_name);
-          return true;
-        });
-      }));
+        }
+    res.status_message = "ApplyJointEffort: joint not found";
+    return true;
+  });
+  serveOnSimThread<gazebo_msgs::JointRequest>(nh, "clear_joint_forces", [this, &world](auto& req, auto&) {
+    for (Robot* robot : world.robots())
+      robot->clearJointEfforts(req.joint_name);
+    return true;
+  });
 
   model_states_pub_ = nh.advertise<gazebo_msgs::ModelStates>("model_states", 1);
   link_states_pub_ = nh.advertise<gazebo_msgs::LinkStates>("link_states", 1);

@@ -33,6 +33,11 @@ private:
   bool setModelState(const gazebo_msgs::ModelState& request, std::string& message);
   bool setLinkState(const gazebo_msgs::LinkState& request, std::string& message);
 
+  // Advertises service Srv whose handler (request, response) -> bool runs on the simulation
+  // thread, between steps (RosPlant::onSimThread); ROS's callback thread only waits for it.
+  template <class Srv, class Handler>
+  void serveOnSimThread(ros::NodeHandle& nh, const std::string& name, Handler handler);
+
   RosPlant& plant_;
   std::vector<ros::ServiceServer> services_;
   std::vector<ros::Subscriber> subscribers_;
