@@ -166,6 +166,8 @@ std::shared_ptr<MeshData> readMesh(const std::string& file, const urdf::Vector3&
 
 const MeshData::SubMesh& MeshData::subMeshOf(int triangle) const
 {
+  if (submeshes.size() == 1)  // most meshes: no search per camera ray
+    return submeshes.front();
   auto after = std::upper_bound(submeshes.begin(), submeshes.end(), triangle,
                                 [](int t, const SubMesh& s) { return t < s.first_triangle; });
   return *(after - 1);
@@ -180,6 +182,12 @@ int wrapIndex(float x, int n)
     return 0;
   int i = int(x);
   i -= x < float(i);
+  // the cases that need no division (an integer division costs as much as the rest of a pixel):
+  // inside the image, or a power-of-two size, where the mask is the modulo also below zero
+  if (unsigned(i) < unsigned(n))
+    return i;
+  if ((n & (n - 1)) == 0)
+    return i & (n - 1);
   i %= n;
   return i < 0 ? i + n : i;
 }

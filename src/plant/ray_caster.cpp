@@ -762,6 +762,13 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
   const float light[3] = {float(lighting.towards_light[0]), float(lighting.towards_light[1]),
                           float(lighting.towards_light[2])};
   const float ambient = float(lighting.ambient);
+  // A pixel's offsets from the optical axis, per column and per row (divisions cost more than the
+  // rest of a ray's set-up).
+  std::vector<double> x_offset(size_t(std::max(0, w))), y_offset(size_t(std::max(0, h)));
+  for (int u = 0; u < w; ++u)
+    x_offset[size_t(u)] = (u - rays.cx) / rays.fx;
+  for (int v = 0; v < h; ++v)
+    y_offset[size_t(v)] = (v - rays.cy) / rays.fy;
   // 4 x 4 pixel blocks make a packet; a task is a band of 4 rows.
   const int bands = (h + 3) / 4;
   parallelTasks(bands, [&](int band) {
@@ -777,7 +784,7 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
         const int u = u0 + lane % 4, v = 4 * band + lane / 4;
         if (u >= w || v >= h)
           continue;
-        const double xo = (u - rays.cx) / rays.fx, yo = (v - rays.cy) / rays.fy;
+        const double xo = x_offset[size_t(u)], yo = y_offset[size_t(v)];
         const double dir[3] = {axes[0][0] - xo * axes[1][0] - yo * axes[2][0],
                                axes[0][1] - xo * axes[1][1] - yo * axes[2][1],
                                axes[0][2] - xo * axes[1][2] - yo * axes[2][2]};

@@ -222,6 +222,9 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
   out.depth.resize(depth ? pixels : 0);
   out.points.resize(depth ? pixels * 3 : 0);
+  std::vector<float> x_per_depth(depth ? size_t(w) : 0);  // per column: no division per pixel
+  for (int u = 0; depth && u < w; ++u)
+    x_per_depth[size_t(u)] = float((u - out.cx) / out.fx);
   for (int v = 0; depth && v < h; ++v)
   {
     const float y = float((v - out.cy) / out.fy);
@@ -231,7 +234,7 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
       const float z = image.depth[pixel];
       const bool hit = !std::isinf(z);
       out.depth[pixel] = hit ? z : kNaN;
-      out.points[3 * pixel] = hit ? float((u - out.cx) / out.fx) * z : kNaN;
+      out.points[3 * pixel] = hit ? x_per_depth[size_t(u)] * z : kNaN;
       out.points[3 * pixel + 1] = hit ? y * z : kNaN;
       out.points[3 * pixel + 2] = hit ? z : kNaN;
     }
