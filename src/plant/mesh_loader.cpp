@@ -173,35 +173,6 @@ const MeshData::SubMesh& MeshData::subMeshOf(int triangle) const
   return *(after - 1);
 }
 
-namespace
-{
-// floor(x) mod n, for the texel a repeating coordinate falls on (without libm's floor: this runs per pixel).
-int wrapIndex(float x, int n)
-{
-  if (!(std::abs(x) < 1e9f))
-    return 0;
-  int i = int(x);
-  i -= x < float(i);
-  // the cases that need no division (an integer division costs as much as the rest of a pixel):
-  // inside the image, or a power-of-two size, where the mask is the modulo also below zero
-  if (unsigned(i) < unsigned(n))
-    return i;
-  if ((n & (n - 1)) == 0)
-    return i & (n - 1);
-  i %= n;
-  return i < 0 ? i + n : i;
-}
-}  // namespace
-
-Rgba Texture::at(float s, float t) const
-{
-  const int column = wrapIndex(s * float(width), width);
-  const int row = wrapIndex((1.0f - t) * float(height), height);  // rows from the top, t up from the bottom
-  const uint8_t* texel = &rgb[3 * (size_t(row) * size_t(width) + size_t(column))];
-  constexpr float kScale = 1.0f / 255.0f;
-  return {texel[0] * kScale, texel[1] * kScale, texel[2] * kScale, 1.0f};
-}
-
 std::shared_ptr<const Texture> loadTexture(const std::string& file, std::string& reason)
 {
   static std::mutex mutex;

@@ -4,6 +4,7 @@
 // <unit> is applied and a Y_UP (or X_UP) file is turned so its up axis is z.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -19,8 +20,31 @@ struct Texture
   int width = 0, height = 0;
   std::vector<uint8_t> rgb;
   // The texel at texture coordinates (s, t), t up from the image's bottom row as OBJ and Collada
-  // give them, repeating beyond [0, 1); the nearest texel.
-  Rgba at(float s, float t) const;
+  // give them, repeating beyond [0, 1); the nearest texel. Inline: it runs per camera ray.
+  Rgba at(float s, float t) const
+  {
+    const int column = wrapIndex(s * float(width), width);
+    const int row = wrapIndex((1.0f - t) * float(height), height);  // rows from the top, t up from the bottom
+    const uint8_t* texel = &rgb[3 * (size_t(row) * size_t(width) + size_t(column))];
+    constexpr float kScale = 1.0f / 255.0f;
+    return {texel[0] * kScale, texel[1] * kScale, texel[2] * kScale, 1.0f};
+  }
+  // floor(x) mod n, the texel a repeating coordinate falls on (without libm's floor).
+  static int wrapIndex(float x, int n)
+  {
+    if (!(std::abs(x) < 1e9f))
+      return 0;
+    int i = int(x);
+    i -= x < float(i);
+    // the cases that need no division (an integer division costs as much as the rest of a pixel):
+    // inside the image, or a power-of-two size, where the mask is the modulo also below zero
+    if (unsigned(i) < unsigned(n))
+      return i;
+    if ((n & (n - 1)) == 0)
+      return i & (n - 1);
+    i %= n;
+    return i < 0 ? i + n : i;
+  }
 };
 
 // A PNG or JPEG (stb_image), once per file while any copy is alive. Null with `reason` saying why.

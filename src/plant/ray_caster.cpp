@@ -1,6 +1,7 @@
 #include "ray_caster.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <condition_variable>
@@ -427,14 +428,74 @@ Lighting Lighting::of(const urdf::Vector3& light_direction, double ambient, cons
 // ------------------------------------------------------------------------------------ shape sets
 
 // Shapes that move together, in their common frame, as one Embree scene.
+// What a camera sees on one shape, laid out for the lookup every camera ray makes: one colour, a
+// texture with each triangle's corner coordinates (s t of corners 0, 1, 2), or (a mesh of several
+// sub-meshes) whatever RayPrimitive::surfaceColour says.
+struct SurfaceLook
+{
+  enum class Kind { Colour, Texture, PerSubMesh } kind = Kind::Colour;
+  Rgba colour;
+  const Texture* texture = nullptr;
+  std::vector<float> corner_uvs;
+
+  static SurfaceLook of(const RayPrimitive& p)
+  {
+    SurfaceLook look;
+    look.colour = p.colour;
+    if (!p.mesh)
+      return look;
+    const MeshData& mesh = *p.mesh;
+    if (mesh.submeshes.size() != 1)
+    {
+      look.kind = Kind::PerSubMesh;
+      return look;
+    }
+    const MeshData::SubMesh& sub = mesh.submeshes.front();
+    if (!sub.image || mesh.uvs.empty())
+    {
+      look.colour = sub.has_colour ? sub.diffuse : p.colour;
+      return look;
+    }
+    look.kind = Kind::Texture;
+    look.texture = sub.image.get();
+    look.corner_uvs.reserve(mesh.indices.size() * 2);
+    for (int vertex : mesh.indices)
+      look.corner_uvs.insert(look.corner_uvs.end(), {mesh.uvs[2 * size_t(vertex)], mesh.uvs[2 * size_t(vertex) + 1]});
+    return look;
+  }
+
+  // At barycentric point (u, v) of `triangle` of `p` (the primitive this look is of).
+  Rgba at(const RayPrimitive& p, int triangle, float u, float v) const
+  {
+    switch (kind)
+    {
+      case Kind::Colour:
+        return colour;
+      case Kind::Texture:
+      {
+        // as RayPrimitive::surfaceColour, term for term: the same texel
+        const float* uv = &corner_uvs[6 * size_t(triangle)];
+        const float w0 = 1.0f - u - v;
+        return texture->at(w0 * uv[0] + u * uv[2] + v * uv[4], w0 * uv[1] + u * uv[3] + v * uv[5]);
+      }
+      case Kind::PerSubMesh:
+        break;
+    }
+    return p.surfaceColour(triangle, u, v);
+  }
+};
+
 struct RayScene::ShapeSet
 {
   RTCScene scene = nullptr;
   std::vector<RayPrimitive> shapes;      // never resized after construction: user geometry points into it
   std::vector<int> shape_of_geometry;    // Embree geometry id -> index in shapes
+  std::vector<SurfaceLook> looks;        // per shape
 
   explicit ShapeSet(std::vector<RayPrimitive> primitives) : shapes(std::move(primitives))
   {
+    for (const RayPrimitive& p : shapes)
+      looks.push_back(SurfaceLook::of(p));
     scene = rtcNewScene(device());
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
     for (size_t k = 0; k < shapes.size(); ++k)
@@ -753,88 +814,125 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
   out.rgb8.resize(size_t(w) * h * 3);
   out.depth.resize(size_t(w) * h);
   const float origin[3] = {float(pose.t[0]), float(pose.t[1]), float(pose.t[2])};
+  const float near = float(rays.near), far = float(rays.far);
   // A pixel's ray (unnormalised): forward - xo * left - yo * up in the camera link's axes (x
   // forward, y left, z up), so its distance parameter is the depth along the optical axis.
   double axes[3][3];
   for (int i = 0; i < 3; ++i)
     for (int r = 0; r < 3; ++r)
       axes[i][r] = pose.R[3 * r + i];
+  // The ray's two terms, per column (forward - xo * left) and per row (yo * up), to whole 4 x 4
+  // blocks: a pixel's ray is then three subtractions (the divisions and products per pixel would
+  // cost as much as the rest of its set-up).
+  const int bands = (h + 3) / 4, block_columns = (w + 3) / 4;
+  std::vector<std::array<double, 3>> column_term(size_t(4 * block_columns)), row_term(size_t(4 * bands));
+  // Whether every ray is one Embree takes (a finite pose, offsets and range): then no ray needs
+  // checking on its own.
+  bool every_ray_acceptable = embreeAcceptsRay(origin, origin, near, far);
+  for (size_t u = 0; u < column_term.size(); ++u)
+  {
+    const double xo = (double(u) - rays.cx) / rays.fx;
+    for (int r = 0; r < 3; ++r)
+      column_term[u][size_t(r)] = axes[0][r] - xo * axes[1][r];
+    every_ray_acceptable = every_ray_acceptable && std::fabs(xo) <= 1e17;
+  }
+  for (size_t v = 0; v < row_term.size(); ++v)
+  {
+    const double yo = (double(v) - rays.cy) / rays.fy;
+    for (int r = 0; r < 3; ++r)
+      row_term[v][size_t(r)] = yo * axes[2][r];
+    every_ray_acceptable = every_ray_acceptable && std::fabs(yo) <= 1e17;
+  }
+  for (const double* a = &axes[0][0]; a < &axes[0][0] + 9; ++a)
+    every_ray_acceptable = every_ray_acceptable && std::fabs(*a) <= 1.0;
   const float light[3] = {float(lighting.towards_light[0]), float(lighting.towards_light[1]),
                           float(lighting.towards_light[2])};
   const float ambient = float(lighting.ambient);
-  // A pixel's offsets from the optical axis, per column and per row (divisions cost more than the
-  // rest of a ray's set-up).
-  std::vector<double> x_offset(size_t(std::max(0, w))), y_offset(size_t(std::max(0, h)));
-  for (int u = 0; u < w; ++u)
-    x_offset[size_t(u)] = (u - rays.cx) / rays.fx;
-  for (int v = 0; v < h; ++v)
-    y_offset[size_t(v)] = (v - rays.cy) / rays.fy;
-  // 4 x 4 pixel blocks make a packet; a task is a band of 4 rows.
-  const int bands = (h + 3) / 4;
+
+  // A 4 x 4 block of pixels is a packet; a task is a band of 4 rows. Per block: the rays, Embree,
+  // each hit's lit colour, then noise and rounding.
   parallelTasks(bands, [&](int band) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     Packet packet;
+    for (int lane = 0; lane < kPacket; ++lane)  // what every ray of the frame shares
+    {
+      packet.rh.ray.org_x[lane] = origin[0];
+      packet.rh.ray.org_y[lane] = origin[1];
+      packet.rh.ray.org_z[lane] = origin[2];
+      packet.rh.ray.tnear[lane] = near;
+      packet.rh.ray.mask[lane] = kSeenByCameras;
+      packet.rh.ray.time[lane] = 0;
+      packet.rh.ray.flags[lane] = 0;
+    }
+    float rgb[3][kPacket];
     for (int u0 = 0; u0 < w; u0 += 4)
     {
-      packet.clear();
+      for (int lane = 0; lane < kPacket; ++lane)
+      {
+        const int u = u0 + lane % 4, v = 4 * band + lane / 4;
+        const std::array<double, 3>& column = column_term[size_t(u)];
+        const std::array<double, 3>& row = row_term[size_t(v)];
+        const float dir[3] = {float(column[0] - row[0]), float(column[1] - row[1]), float(column[2] - row[2])};
+        packet.rh.ray.dir_x[lane] = dir[0];
+        packet.rh.ray.dir_y[lane] = dir[1];
+        packet.rh.ray.dir_z[lane] = dir[2];
+        packet.rh.ray.tfar[lane] = far;
+        packet.rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        packet.rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+        const bool in_image = u < w && v < h;
+        packet.valid[lane] = in_image && (every_ray_acceptable || embreeAcceptsRay(origin, dir, near, far)) ? -1 : 0;
+      }
+      rtcIntersect16(packet.valid, top_, &context, &packet.rh);
+      for (int lane = 0; lane < kPacket; ++lane)
+      {
+        if (!packet.hit(lane))
+        {
+          for (int k = 0; k < 3; ++k)
+            rgb[k][lane] = lighting.background[k];
+          packet.rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
+          continue;
+        }
+        const Instance& instance = instances_[size_t(instance_of_geometry_[packet.rh.hit.instID[0][lane]])];
+        const ShapeSet& set = *instance.set;
+        const size_t shape = size_t(set.shape_of_geometry[packet.rh.hit.geomID[lane]]);
+        const RayPrimitive& p = set.shapes[shape];
+        // the surface normal in the world, turned towards the camera; lambert over ambient
+        const float ng[3] = {packet.rh.hit.Ng_x[lane], packet.rh.hit.Ng_y[lane], packet.rh.hit.Ng_z[lane]};
+        const float dir[3] = {packet.rh.ray.dir_x[lane], packet.rh.ray.dir_y[lane], packet.rh.ray.dir_z[lane]};
+        float n[3];
+        for (int r = 0; r < 3; ++r)
+          n[r] = instance.rotation[3 * r] * ng[0] + instance.rotation[3 * r + 1] * ng[1] +
+                 instance.rotation[3 * r + 2] * ng[2];
+        const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        float towards_light = n[0] * light[0] + n[1] * light[1] + n[2] * light[2];
+        if (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] > 0)
+          towards_light = -towards_light;
+        const float diffuse = length > 0 ? std::max(0.0f, towards_light / length) : 0.0f;
+        const float lit = ambient + (1.0f - ambient) * diffuse;
+        const Rgba c = set.looks[shape].at(p, int(packet.rh.hit.primID[lane]), packet.rh.hit.u[lane], packet.rh.hit.v[lane]);
+        rgb[0][lane] = c.r * lit;
+        rgb[1][lane] = c.g * lit;
+        rgb[2][lane] = c.b * lit;
+      }
       for (int lane = 0; lane < kPacket; ++lane)
       {
         const int u = u0 + lane % 4, v = 4 * band + lane / 4;
         if (u >= w || v >= h)
           continue;
-        const double xo = x_offset[size_t(u)], yo = y_offset[size_t(v)];
-        const double dir[3] = {axes[0][0] - xo * axes[1][0] - yo * axes[2][0],
-                               axes[0][1] - xo * axes[1][1] - yo * axes[2][1],
-                               axes[0][2] - xo * axes[1][2] - yo * axes[2][2]};
-        packet.set(lane, origin, dir, float(rays.near), float(rays.far), kSeenByCameras);
-      }
-      rtcIntersect16(packet.valid, top_, &context, &packet.rh);
-      for (int lane = 0; lane < kPacket; ++lane)
-      {
-        if (packet.valid[lane] != -1)
-          continue;
-        const size_t pixel = size_t(4 * band + lane / 4) * w + u0 + lane % 4;
-        float rgb[3];
-        if (!packet.hit(lane))
-        {
-          std::copy(lighting.background, lighting.background + 3, rgb);
-          out.depth[pixel] = std::numeric_limits<float>::infinity();
-        }
-        else
-        {
-          const Instance& instance = instances_[size_t(instance_of_geometry_[packet.rh.hit.instID[0][lane]])];
-          const ShapeSet& set = *instance.set;
-          const RayPrimitive& p = set.shapes[size_t(set.shape_of_geometry[packet.rh.hit.geomID[lane]])];
-          // the surface normal in the world, turned towards the camera; lambert over ambient
-          const float ng[3] = {packet.rh.hit.Ng_x[lane], packet.rh.hit.Ng_y[lane], packet.rh.hit.Ng_z[lane]};
-          const float dir[3] = {packet.rh.ray.dir_x[lane], packet.rh.ray.dir_y[lane], packet.rh.ray.dir_z[lane]};
-          float n[3];
-          for (int r = 0; r < 3; ++r)
-            n[r] = instance.rotation[3 * r] * ng[0] + instance.rotation[3 * r + 1] * ng[1] +
-                   instance.rotation[3 * r + 2] * ng[2];
-          const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-          float towards_light = n[0] * light[0] + n[1] * light[1] + n[2] * light[2];
-          if (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] > 0)
-            towards_light = -towards_light;
-          const float diffuse = length > 0 ? std::max(0.0f, towards_light / length) : 0.0f;
-          const float lit = ambient + (1.0f - ambient) * diffuse;
-          const int triangle = p.kind == Shape::Kind::Mesh ? int(packet.rh.hit.primID[lane]) : -1;
-          const Rgba c = triangle < 0 ? p.colour : p.surfaceColour(triangle, packet.rh.hit.u[lane], packet.rh.hit.v[lane]);
-          rgb[0] = c.r * lit;
-          rgb[1] = c.g * lit;
-          rgb[2] = c.b * lit;
-          out.depth[pixel] = packet.rh.ray.tfar[lane];
-        }
+        const size_t pixel = size_t(v) * size_t(w) + size_t(u);
+        out.depth[pixel] = packet.rh.ray.tfar[lane];
+        uint8_t* rgb8 = &out.rgb8[3 * pixel];
         if (rays.noise)
         {
           const uint64_t bits = mixBits(rays.noise_seed + pixel);
           for (int k = 0; k < 3; ++k)
-            rgb[k] += rays.noise[(bits >> (16 * k)) & (PinholeRays::kNoiseTableSize - 1)];
+            rgb8[k] = toByte(rgb[k][lane] + rays.noise[(bits >> (16 * k)) & (PinholeRays::kNoiseTableSize - 1)]);
         }
-        for (int k = 0; k < 3; ++k)
-          out.rgb8[3 * pixel + k] = toByte(rgb[k]);
+        else
+          for (int k = 0; k < 3; ++k)
+            rgb8[k] = toByte(rgb[k][lane]);
       }
     }
   });

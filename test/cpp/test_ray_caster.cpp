@@ -391,3 +391,24 @@ TEST(CameraRays, FramesAreTheSameOnEveryRunAndForAnyNumberOfThreads)
   std::set<uint8_t> colours(images[0].rgb8.begin(), images[0].rgb8.end());
   EXPECT_GT(colours.size(), 20u) << "the scene is in the picture";
 }
+
+TEST(CameraRays, APoseEmbreeCannotTakeShowsNothingInEveryPixel)
+{
+  RayScene scene({primitive(Shape::Kind::Box, 1, 1, 1, poseFromXyzRpy(3, 0, 0, 0, 0, 0))});
+  scene.commit(nullptr);
+  const PinholeRays rays = squareImage(10);  // not a multiple of the 4 x 4 packets
+  const Lighting light;
+  const uint8_t background = uint8_t(std::lround(light.background[0] * 255));
+  for (double bad : {std::nan(""), 1e300})
+  {
+    PinholeImage image;
+    image.rgb8.assign(size_t(3 * rays.width * rays.height), 7);  // last frame's pixels
+    image.depth.assign(size_t(rays.width * rays.height), 1.0f);
+    scene.castPinhole(Frame::fromPose(poseFromXyzRpy(bad, 0, 0.5, 0, 0, 0)), rays, light, image);
+    for (size_t pixel = 0; pixel < image.depth.size(); ++pixel)
+    {
+      EXPECT_EQ(image.rgb8[3 * pixel], background) << "pixel " << pixel << " with x = " << bad;
+      EXPECT_TRUE(std::isinf(image.depth[pixel])) << "pixel " << pixel << " with x = " << bad;
+    }
+  }
+}
