@@ -184,7 +184,8 @@ int main(int argc, char** argv)
   SensorDescription colour_d = colour->description(), depth_d = depth->description();
   colour_d.image_width = colour_d.image_height = 800;
   colour_d.horizontal_fov = 80 * M_PI / 180;
-  colour_d.noise = {};
+  if (!std::getenv("SENSOR_COST_NOISE"))
+    colour_d.noise = {};
   depth_d.image_width = 640;
   depth_d.image_height = 480;
   depth_d.horizontal_fov = 60 * M_PI / 180;

@@ -867,6 +867,16 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
       packet.rh.ray.flags[lane] = 0;
     }
     float rgb[3][kPacket];
+    struct
+    {
+      unsigned instance_id = RTC_INVALID_GEOMETRY_ID, geometry_id = RTC_INVALID_GEOMETRY_ID;
+      const Instance* instance = nullptr;
+      const RayPrimitive* primitive = nullptr;
+      const SurfaceLook* look = nullptr;
+      float ng[3] = {std::numeric_limits<float>::quiet_NaN(), 0, 0};  // Embree's, in the instance
+      float normal[3] = {0, 0, 0};  // in the world
+      float lit[2] = {0, 0};        // on the face towards the ray, on the back face
+    } last;  // the shape and triangle normal the previous ray hit
     for (int u0 = 0; u0 < w; u0 += 4)
     {
       for (int lane = 0; lane < kPacket; ++lane)
@@ -894,24 +904,42 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
           packet.rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
           continue;
         }
-        const Instance& instance = instances_[size_t(instance_of_geometry_[packet.rh.hit.instID[0][lane]])];
-        const ShapeSet& set = *instance.set;
-        const size_t shape = size_t(set.shape_of_geometry[packet.rh.hit.geomID[lane]]);
-        const RayPrimitive& p = set.shapes[shape];
-        // the surface normal in the world, turned towards the camera; lambert over ambient
+        const unsigned instance_id = packet.rh.hit.instID[0][lane], geometry_id = packet.rh.hit.geomID[lane];
+        if (instance_id != last.instance_id || geometry_id != last.geometry_id)
+        {
+          last.instance_id = instance_id;
+          last.geometry_id = geometry_id;
+          last.instance = &instances_[size_t(instance_of_geometry_[instance_id])];
+          const ShapeSet& set = *last.instance->set;
+          const size_t shape = size_t(set.shape_of_geometry[geometry_id]);
+          last.primitive = &set.shapes[shape];
+          last.look = &set.looks[shape];
+          last.ng[0] = std::numeric_limits<float>::quiet_NaN();  // the normal below is of another shape
+        }
+        // The surface normal in the world, turned towards the camera; lambert over ambient. Lanes on
+        // one triangle share Embree's geometric normal and so the light on either face.
         const float ng[3] = {packet.rh.hit.Ng_x[lane], packet.rh.hit.Ng_y[lane], packet.rh.hit.Ng_z[lane]};
-        const float dir[3] = {packet.rh.ray.dir_x[lane], packet.rh.ray.dir_y[lane], packet.rh.ray.dir_z[lane]};
-        float n[3];
-        for (int r = 0; r < 3; ++r)
-          n[r] = instance.rotation[3 * r] * ng[0] + instance.rotation[3 * r + 1] * ng[1] +
-                 instance.rotation[3 * r + 2] * ng[2];
-        const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        float towards_light = n[0] * light[0] + n[1] * light[1] + n[2] * light[2];
-        if (n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] > 0)
-          towards_light = -towards_light;
-        const float diffuse = length > 0 ? std::max(0.0f, towards_light / length) : 0.0f;
-        const float lit = ambient + (1.0f - ambient) * diffuse;
-        const Rgba c = set.looks[shape].at(p, int(packet.rh.hit.primID[lane]), packet.rh.hit.u[lane], packet.rh.hit.v[lane]);
+        if (!(ng[0] == last.ng[0] && ng[1] == last.ng[1] && ng[2] == last.ng[2]))
+        {
+          std::copy(ng, ng + 3, last.ng);
+          const float* rotation = last.instance->rotation;
+          for (int r = 0; r < 3; ++r)
+            last.normal[r] = rotation[3 * r] * ng[0] + rotation[3 * r + 1] * ng[1] + rotation[3 * r + 2] * ng[2];
+          const float* n = last.normal;
+          const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+          const float towards_light = n[0] * light[0] + n[1] * light[1] + n[2] * light[2];
+          for (int back = 0; back < 2; ++back)
+          {
+            const float diffuse = length > 0 ? std::max(0.0f, (back ? -towards_light : towards_light) / length) : 0.0f;
+            last.lit[back] = ambient + (1.0f - ambient) * diffuse;
+          }
+        }
+        const float* n = last.normal;
+        const bool back = n[0] * packet.rh.ray.dir_x[lane] + n[1] * packet.rh.ray.dir_y[lane] +
+                              n[2] * packet.rh.ray.dir_z[lane] > 0;
+        const float lit = last.lit[back];
+        const Rgba c = last.look->at(*last.primitive, int(packet.rh.hit.primID[lane]), packet.rh.hit.u[lane],
+                                     packet.rh.hit.v[lane]);
         rgb[0][lane] = c.r * lit;
         rgb[1][lane] = c.g * lit;
         rgb[2][lane] = c.b * lit;
