@@ -270,9 +270,11 @@ def test_lidar_sees_a_wall_where_the_geometry_puts_it(urdf_xml, control_config):
     assert np.isposinf(scan['ranges'][behind]).all()
 
 
-def test_lidar_reports_too_close_as_minus_inf_and_sees_other_robots(urdf_xml, control_config):
+def test_lidar_sees_past_what_is_nearer_than_its_minimum_range_and_sees_other_robots(urdf_xml, control_config):
+    # As Gazebo's: the ray lidar's rays start at <range><min> (gpu_ray's near clip plane is there).
     post = box_model('post', (0.02, 0.02, 0.3), (0.2, 0.07, 0.15))  # 6 cm left of the lidar
-    world, robot = lidar_world(urdf_xml, control_config, post)
+    side_wall = box_model('side_wall', (6.0, 0.2, 1.0), (0.0, 1.1, 0.5))  # its face at y = 1
+    world, robot = lidar_world(urdf_xml, control_config, post + side_wall)
     other = world.spawn(urdf_xml, 'other', pose=(1.2, 0.0, 0.0, 0, 0, math.pi))
     world.step(100)
     robot.enable_sensor('lidar')
@@ -280,7 +282,9 @@ def test_lidar_reports_too_close_as_minus_inf_and_sees_other_robots(urdf_xml, co
     scan = robot.scan('lidar')
     angles = scan_angles(scan)
     left = np.argmin(np.abs(angles - math.pi / 2))
-    assert np.isneginf(scan['ranges'][left])
+    lidar_y = robot.link_pose('laser_link')[1]
+    assert scan['ranges'][left] == pytest.approx((1.0 - lidar_y) / math.sin(angles[left]), abs=0.02), \
+        'the side wall behind the post'
     ahead = scan['ranges'][np.argmin(np.abs(angles))]
     other_lidar = other.link_pose('laser_link')[0]
     assert 0.5 < ahead < other_lidar - robot.link_pose('laser_link')[0], 'the other car is in front of the wall'

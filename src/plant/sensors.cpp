@@ -140,9 +140,11 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
     lidar.directions_ = fanDirections(d.horizontal_min_angle, da, n, elevations);
   }
   std::vector<double> distances;
-  // Gazebo's gpu_ray renders the visuals, its ray lidar hits the collisions.
-  scene.castRays(pose, lidar.directions_, 0.0, d.range_max, d.type == "gpu_ray" ? kSeenByCameras : kSeenByLidars,
-                 distances);
+  // Gazebo's gpu_ray renders the visuals, its ray lidar hits the collisions. Both see nothing nearer
+  // than the minimum range and what lies beyond it: the ray lidar's rays start there, gpu_ray's near
+  // clip plane is there.
+  scene.castRays(pose, lidar.directions_, std::max(0.0, d.range_min), d.range_max,
+                 d.type == "gpu_ray" ? kSeenByCameras : kSeenByLidars, distances);
 
   LaserScan& scan = lidar.scan_;
   scan.stamp_ns = time_ns;
@@ -163,8 +165,6 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
     double r = distances[i];
     if (std::isinf(r))
       scan.ranges[i] = std::numeric_limits<float>::infinity();
-    else if (r < d.range_min)
-      scan.ranges[i] = -std::numeric_limits<float>::infinity();
     else
     {
       if (noisy)
