@@ -192,23 +192,25 @@ GazeboInterface::GazeboInterface(RosPlant& plant, ros::NodeHandle& nh) : plant_(
 
   World& world = *plant_.world_;
   auto spawn = [this, &world](gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res) {
+    // What the request names in the world, looked at in one visit to the simulation thread.
+    enum class Check { Ok, NoReferenceFrame, Exists };
     urdf::Pose pose = fromMsg(req.initial_pose);
-    if (!isWorldFrame(req.reference_frame))
-    {
-      const LinkRef frame = plant_.onSimThread<LinkRef>([&] { return findLink(world, req.reference_frame); });
-      if (!frame)
+    const Check check = plant_.onSimThread<Check>([&] {
+      if (!isWorldFrame(req.reference_frame))
       {
-        res.success = false;
-        res.status_message = "SpawnModel: reference reference_frame not found, did you forget to scope the link by model name?";
-        return true;
+        const LinkRef frame = findLink(world, req.reference_frame);
+        if (!frame)
+          return Check::NoReferenceFrame;
+        pose = inWorld(State{pose, Twist()}, frame.robot->linkPose(frame.link)).pose;
       }
-      const urdf::Pose frame_pose = plant_.onSimThread<urdf::Pose>([&] { return frame.robot->linkPose(frame.link); });
-      pose = inWorld(State{pose, Twist()}, frame_pose).pose;
-    }
-    if (plant_.onSimThread<bool>([&] { return world.robot(req.model_name) != nullptr; }))
+      return world.robot(req.model_name) ? Check::Exists : Check::Ok;
+    });
+    if (check != Check::Ok)
     {
       res.success = false;
-      res.status_message = "SpawnModel: Failure - entity already exists.";
+      res.status_message = check == Check::Exists ? "SpawnModel: Failure - entity already exists."
+                                                  : "SpawnModel: reference reference_frame not found, did you forget "
+                                                    "to scope the link by model name?";
       return true;
     }
     std::string message;

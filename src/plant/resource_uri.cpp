@@ -141,6 +141,15 @@ std::vector<std::string> searchPath(const char* variable, std::string PackageDir
       dirs.push_back(dir);
   return dirs;
 }
+
+// The first dir/name among `dirs` that `exists` says is there (a file or a directory), or "".
+std::string firstIn(const std::vector<std::string>& dirs, const std::string& name, bool (*exists)(const std::string&))
+{
+  for (const std::string& dir : dirs)
+    if (exists(dir + "/" + name))
+      return dir + "/" + name;
+  return "";
+}
 }  // namespace
 
 std::vector<std::string> modelSearchPath()
@@ -151,10 +160,9 @@ std::vector<std::string> modelSearchPath()
 std::string findModelDir(const std::string& name, std::string& reason)
 {
   const std::vector<std::string> search = modelSearchPath();
-  if (!name.empty())
-    for (const std::string& dir : search)
-      if (isDirectory(dir + "/" + name))
-        return dir + "/" + name;
+  const std::string found = name.empty() ? "" : firstIn(search, name, isDirectory);
+  if (!found.empty())
+    return found;
   reason = "model '" + name + "' is in none of GAZEBO_MODEL_PATH and the gazebo_model_path exports of the "
            "packages on ROS_PACKAGE_PATH (looked in " + joined(search) + ")";
   return "";
@@ -170,9 +178,9 @@ std::string findWorldFile(const std::string& name, std::string& reason)
   if (isFile(name))
     return name;
   const std::vector<std::string> search = fs::path(name).is_absolute() ? std::vector<std::string>() : resourceSearchPath();
-  for (const std::string& dir : search)
-    if (isFile(dir + "/" + name))
-      return dir + "/" + name;
+  const std::string found = firstIn(search, name, isFile);
+  if (!found.empty())
+    return found;
   reason = "world file '" + name + "' not found (as given, then in GAZEBO_RESOURCE_PATH and the gazebo_media_path "
            "exports of the packages on ROS_PACKAGE_PATH: " + joined(search) + ")";
   return "";
@@ -185,9 +193,9 @@ std::string resolveUri(const std::string& uri, const std::string& base_dir, std:
   {
     // Gazebo's rule: the first model path directory where the whole of NAME/rest exists.
     const std::vector<std::string> search = modelSearchPath();
-    for (const std::string& dir : search)
-      if (isFile(dir + "/" + uri.substr(8)))
-        return dir + "/" + uri.substr(8);
+    const std::string found = firstIn(search, uri.substr(8), isFile);
+    if (!found.empty())
+      return found;
     reason = "'" + uri + "' is in none of GAZEBO_MODEL_PATH and the gazebo_model_path exports of the packages on "
              "ROS_PACKAGE_PATH (looked in " + joined(search) + ")";
     return "";
