@@ -88,6 +88,35 @@ def test_rostopic_pub_drives_the_circle_of_the_geometry_and_the_car_stops(tutori
     assert abs(run['odom_after'][3]) < 0.05, 'the car stops'
 
 
+YAW_RATE_DRIVE = """
+    import json, rospy
+    from geometry_msgs.msg import Twist
+    from nav_msgs.msg import Odometry
+    rospy.init_node('yaw_rate_driver', anonymous=True)
+    yaw_rates = []
+    rospy.Subscriber('/tianracer/odom', Odometry, lambda m: yaw_rates.append(m.twist.twist.angular.z))
+    pub = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
+    twist = Twist()
+    twist.linear.x, twist.angular.z = 0.5, 0.4
+    end = rospy.get_time() + 4.0
+    while rospy.get_time() < end:
+        pub.publish(twist)
+        rospy.sleep(0.05)
+    print(json.dumps(yaw_rates[-20:]))
+"""
+
+
+def test_tianracer_world_launch_angular_mode_yaw_rate_turns_at_the_asked_rate(ros):
+    """tianracer.launch stays the tutorial's text; tianracer_world.launch's angular_mode reaches the
+    converter it starts, which then reads angular.z as a yaw rate (REP 103)."""
+    ros.start(['roslaunch', 'tianracer_description', 'tianracer_world.launch', 'gui:=false',
+               'angular_mode:=yaw_rate'], 'tianracer_world_launch')
+    ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
+    yaw_rates = ros.python(YAW_RATE_DRIVE, timeout=60)
+    assert len(yaw_rates) == 20
+    assert sum(yaw_rates) / len(yaw_rates) == pytest.approx(0.4, rel=0.1)
+
+
 TELEOP_PROBE = """
     import json, time, rospy
     from geometry_msgs.msg import Twist
