@@ -808,55 +808,57 @@ uint8_t toByte(float value)
 }
 }  // namespace
 
-void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const
+namespace
 {
-  const int w = rays.width, h = rays.height;
-  out.rgb8.resize(size_t(w) * h * 3);
-  out.depth.resize(size_t(w) * h);
-  const float origin[3] = {float(pose.t[0]), float(pose.t[1]), float(pose.t[2])};
-  const float near = float(rays.near), far = float(rays.far);
-  // A pixel's ray (unnormalised): forward - xo * left - yo * up in the camera link's axes (x
-  // forward, y left, z up), so its distance parameter is the depth along the optical axis.
-  double axes[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int r = 0; r < 3; ++r)
-      axes[i][r] = pose.R[3 * r + i];
-  // The ray's two terms, per column (forward - xo * left) and per row (yo * up), to whole 4 x 4
-  // blocks: a pixel's ray is then three subtractions (the divisions and products per pixel would
-  // cost as much as the rest of its set-up).
-  const int bands = (h + 3) / 4, block_columns = (w + 3) / 4;
-  std::vector<std::array<double, 3>> column_term(size_t(4 * block_columns)), row_term(size_t(4 * bands));
-  // Whether every ray is one Embree takes (a finite pose, offsets and range): then no ray needs
-  // checking on its own.
-  bool every_ray_acceptable = embreeAcceptsRay(origin, origin, near, far);
-  for (size_t u = 0; u < column_term.size(); ++u)
-  {
-    const double xo = (double(u) - rays.cx) / rays.fx;
-    for (int r = 0; r < 3; ++r)
-      column_term[u][size_t(r)] = axes[0][r] - xo * axes[1][r];
-    every_ray_acceptable = every_ray_acceptable && std::fabs(xo) <= 1e17;
-  }
-  for (size_t v = 0; v < row_term.size(); ++v)
-  {
-    const double yo = (double(v) - rays.cy) / rays.fy;
-    for (int r = 0; r < 3; ++r)
-      row_term[v][size_t(r)] = yo * axes[2][r];
-    every_ray_acceptable = every_ray_acceptable && std::fabs(yo) <= 1e17;
-  }
-  for (const double* a = &axes[0][0]; a < &axes[0][0] + 9; ++a)
-    every_ray_acceptable = every_ray_acceptable && std::fabs(*a) <= 1.0;
-  const float light[3] = {float(lighting.towards_light[0]), float(lighting.towards_light[1]),
-                          float(lighting.towards_light[2])};
-  const float ambient = float(lighting.ambient);
+// The rays of a pinhole camera's frame, set up once per frame. A pixel's ray (unnormalised) is
+// forward - xo * left - yo * up in the camera link's axes (x forward, y left, z up), so its
+// distance parameter is the depth along the optical axis; its two terms are kept per column
+// (forward - xo * left) and per row (yo * up), to whole 4 x 4 blocks, so a pixel's ray is three
+// subtractions (the divisions and products per pixel would cost as much as the rest of its set-up).
+struct PinholeAim
+{
+  int width, height;
+  float origin[3];
+  float near, far;
+  std::vector<std::array<double, 3>> column_term, row_term;
+  bool every_ray_acceptable;  // a finite pose, offsets and range: no ray needs checking on its own
 
-  // A 4 x 4 block of pixels is a packet; a task is a band of 4 rows. Per block: the rays, Embree,
-  // each hit's lit colour, then noise and rounding.
-  parallelTasks(bands, [&](int band) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-    Packet packet;
-    for (int lane = 0; lane < kPacket; ++lane)  // what every ray of the frame shares
+  PinholeAim(const Frame& pose, const PinholeRays& rays)
+    : width(rays.width),
+      height(rays.height),
+      origin{float(pose.t[0]), float(pose.t[1]), float(pose.t[2])},
+      near(float(rays.near)),
+      far(float(rays.far)),
+      column_term(size_t(4 * ((rays.width + 3) / 4))),
+      row_term(size_t(4 * ((rays.height + 3) / 4)))
+  {
+    double axes[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int r = 0; r < 3; ++r)
+        axes[i][r] = pose.R[3 * r + i];
+    every_ray_acceptable = embreeAcceptsRay(origin, origin, near, far);
+    for (size_t u = 0; u < column_term.size(); ++u)
+    {
+      const double xo = (double(u) - rays.cx) / rays.fx;
+      for (int r = 0; r < 3; ++r)
+        column_term[u][size_t(r)] = axes[0][r] - xo * axes[1][r];
+      every_ray_acceptable = every_ray_acceptable && std::fabs(xo) <= 1e17;
+    }
+    for (size_t v = 0; v < row_term.size(); ++v)
+    {
+      const double yo = (double(v) - rays.cy) / rays.fy;
+      for (int r = 0; r < 3; ++r)
+        row_term[v][size_t(r)] = yo * axes[2][r];
+      every_ray_acceptable = every_ray_acceptable && std::fabs(yo) <= 1e17;
+    }
+    for (const double* a = &axes[0][0]; a < &axes[0][0] + 9; ++a)
+      every_ray_acceptable = every_ray_acceptable && std::fabs(*a) <= 1.0;
+  }
+
+  // What every ray of the frame shares, into a packet used for this frame only.
+  void prepare(Packet& packet) const
+  {
+    for (int lane = 0; lane < kPacket; ++lane)
     {
       packet.rh.ray.org_x[lane] = origin[0];
       packet.rh.ray.org_y[lane] = origin[1];
@@ -866,101 +868,133 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
       packet.rh.ray.time[lane] = 0;
       packet.rh.ray.flags[lane] = 0;
     }
-    float rgb[3][kPacket];
-    struct
+  }
+
+  // The rays through the 4 x 4 pixels from (u0, v0); lanes outside the image cast none.
+  void aim(Packet& packet, int u0, int v0) const
+  {
+    for (int lane = 0; lane < kPacket; ++lane)
     {
-      unsigned instance_id = RTC_INVALID_GEOMETRY_ID, geometry_id = RTC_INVALID_GEOMETRY_ID;
-      const Instance* instance = nullptr;
-      const RayPrimitive* primitive = nullptr;
-      const SurfaceLook* look = nullptr;
-      float ng[3] = {std::numeric_limits<float>::quiet_NaN(), 0, 0};  // Embree's, in the instance
-      float normal[3] = {0, 0, 0};  // in the world
-      float lit[2] = {0, 0};        // on the face towards the ray, on the back face
-    } last;  // the shape and triangle normal the previous ray hit
+      const int u = u0 + lane % 4, v = v0 + lane / 4;
+      const std::array<double, 3>& column = column_term[size_t(u)];
+      const std::array<double, 3>& row = row_term[size_t(v)];
+      const float dir[3] = {float(column[0] - row[0]), float(column[1] - row[1]), float(column[2] - row[2])};
+      packet.rh.ray.dir_x[lane] = dir[0];
+      packet.rh.ray.dir_y[lane] = dir[1];
+      packet.rh.ray.dir_z[lane] = dir[2];
+      packet.rh.ray.tfar[lane] = far;
+      packet.rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+      packet.rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+      const bool in_image = u < width && v < height;
+      packet.valid[lane] = in_image && (every_ray_acceptable || embreeAcceptsRay(origin, dir, near, far)) ? -1 : 0;
+    }
+  }
+};
+
+// A pixel's colour values, with the frame's noise, rounded to 0..255.
+void writeColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint8_t* rgb8)
+{
+  if (rays.noise)
+  {
+    const uint64_t bits = mixBits(rays.noise_seed + pixel);
+    for (int k = 0; k < 3; ++k)
+      rgb8[k] = toByte(rgb[k] + rays.noise[(bits >> (16 * k)) & (PinholeRays::kNoiseTableSize - 1)]);
+  }
+  else
+    for (int k = 0; k < 3; ++k)
+      rgb8[k] = toByte(rgb[k]);
+}
+}  // namespace
+
+RayScene::CameraShading::CameraShading(const RayScene& scene, const Lighting& lighting)
+  : scene_(scene),
+    light_{float(lighting.towards_light[0]), float(lighting.towards_light[1]), float(lighting.towards_light[2])},
+    ambient_(float(lighting.ambient))
+{
+}
+
+inline Rgba RayScene::CameraShading::litColour(const RTCRayHit16& rh, int lane)
+{
+  const unsigned instance_id = rh.hit.instID[0][lane], geometry_id = rh.hit.geomID[lane];
+  if (instance_id != instance_id_ || geometry_id != geometry_id_)
+  {
+    instance_id_ = instance_id;
+    geometry_id_ = geometry_id;
+    instance_ = &scene_.instances_[size_t(scene_.instance_of_geometry_[instance_id])];
+    const ShapeSet& set = *instance_->set;
+    const size_t shape = size_t(set.shape_of_geometry[geometry_id]);
+    primitive_ = &set.shapes[shape];
+    look_ = &set.looks[shape];
+    ng_[0] = std::numeric_limits<float>::quiet_NaN();  // the normal below is of another shape
+  }
+  const float ng[3] = {rh.hit.Ng_x[lane], rh.hit.Ng_y[lane], rh.hit.Ng_z[lane]};
+  if (!(ng[0] == ng_[0] && ng[1] == ng_[1] && ng[2] == ng_[2]))
+    lightFaces(ng);
+  const float* n = normal_;
+  const bool back = n[0] * rh.ray.dir_x[lane] + n[1] * rh.ray.dir_y[lane] + n[2] * rh.ray.dir_z[lane] > 0;
+  const float lit = lit_[back];
+  const Rgba c = look_->at(*primitive_, int(rh.hit.primID[lane]), rh.hit.u[lane], rh.hit.v[lane]);
+  return {c.r * lit, c.g * lit, c.b * lit, c.a};
+}
+
+void RayScene::CameraShading::lightFaces(const float ng[3])
+{
+  std::copy(ng, ng + 3, ng_);
+  const float* rotation = instance_->rotation;
+  for (int r = 0; r < 3; ++r)
+    normal_[r] = rotation[3 * r] * ng[0] + rotation[3 * r + 1] * ng[1] + rotation[3 * r + 2] * ng[2];
+  const float* n = normal_;
+  const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const float towards_light = n[0] * light_[0] + n[1] * light_[1] + n[2] * light_[2];
+  for (int back = 0; back < 2; ++back)
+  {
+    const float diffuse = length > 0 ? std::max(0.0f, (back ? -towards_light : towards_light) / length) : 0.0f;
+    lit_[back] = ambient_ + (1.0f - ambient_) * diffuse;
+  }
+}
+
+void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const
+{
+  const int w = rays.width, h = rays.height;
+  out.rgb8.resize(size_t(w) * h * 3);
+  out.depth.resize(size_t(w) * h);
+  const PinholeAim aim(pose, rays);
+  // A 4 x 4 block of pixels is a packet; a task is a band of 4 rows. Per block: the rays, Embree,
+  // each pixel's lit colour and depth, noise and rounding.
+  parallelTasks((h + 3) / 4, [&](int band) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    Packet packet;
+    aim.prepare(packet);
+    CameraShading shading(*this, lighting);
+    const int v0 = 4 * band;
     for (int u0 = 0; u0 < w; u0 += 4)
     {
-      for (int lane = 0; lane < kPacket; ++lane)
-      {
-        const int u = u0 + lane % 4, v = 4 * band + lane / 4;
-        const std::array<double, 3>& column = column_term[size_t(u)];
-        const std::array<double, 3>& row = row_term[size_t(v)];
-        const float dir[3] = {float(column[0] - row[0]), float(column[1] - row[1]), float(column[2] - row[2])};
-        packet.rh.ray.dir_x[lane] = dir[0];
-        packet.rh.ray.dir_y[lane] = dir[1];
-        packet.rh.ray.dir_z[lane] = dir[2];
-        packet.rh.ray.tfar[lane] = far;
-        packet.rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-        packet.rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-        const bool in_image = u < w && v < h;
-        packet.valid[lane] = in_image && (every_ray_acceptable || embreeAcceptsRay(origin, dir, near, far)) ? -1 : 0;
-      }
+      aim.aim(packet, u0, v0);
       rtcIntersect16(packet.valid, top_, &context, &packet.rh);
+      float rgb[3][kPacket];  // channel-major: measurably quicker than pixel-major here
       for (int lane = 0; lane < kPacket; ++lane)
-      {
-        if (!packet.hit(lane))
+        if (packet.hit(lane))
+        {
+          const Rgba c = shading.litColour(packet.rh, lane);
+          rgb[0][lane] = c.r, rgb[1][lane] = c.g, rgb[2][lane] = c.b;
+        }
+        else
         {
           for (int k = 0; k < 3; ++k)
             rgb[k][lane] = lighting.background[k];
           packet.rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
-          continue;
         }
-        const unsigned instance_id = packet.rh.hit.instID[0][lane], geometry_id = packet.rh.hit.geomID[lane];
-        if (instance_id != last.instance_id || geometry_id != last.geometry_id)
-        {
-          last.instance_id = instance_id;
-          last.geometry_id = geometry_id;
-          last.instance = &instances_[size_t(instance_of_geometry_[instance_id])];
-          const ShapeSet& set = *last.instance->set;
-          const size_t shape = size_t(set.shape_of_geometry[geometry_id]);
-          last.primitive = &set.shapes[shape];
-          last.look = &set.looks[shape];
-          last.ng[0] = std::numeric_limits<float>::quiet_NaN();  // the normal below is of another shape
-        }
-        // The surface normal in the world, turned towards the camera; lambert over ambient. Lanes on
-        // one triangle share Embree's geometric normal and so the light on either face.
-        const float ng[3] = {packet.rh.hit.Ng_x[lane], packet.rh.hit.Ng_y[lane], packet.rh.hit.Ng_z[lane]};
-        if (!(ng[0] == last.ng[0] && ng[1] == last.ng[1] && ng[2] == last.ng[2]))
-        {
-          std::copy(ng, ng + 3, last.ng);
-          const float* rotation = last.instance->rotation;
-          for (int r = 0; r < 3; ++r)
-            last.normal[r] = rotation[3 * r] * ng[0] + rotation[3 * r + 1] * ng[1] + rotation[3 * r + 2] * ng[2];
-          const float* n = last.normal;
-          const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-          const float towards_light = n[0] * light[0] + n[1] * light[1] + n[2] * light[2];
-          for (int back = 0; back < 2; ++back)
-          {
-            const float diffuse = length > 0 ? std::max(0.0f, (back ? -towards_light : towards_light) / length) : 0.0f;
-            last.lit[back] = ambient + (1.0f - ambient) * diffuse;
-          }
-        }
-        const float* n = last.normal;
-        const bool back = n[0] * packet.rh.ray.dir_x[lane] + n[1] * packet.rh.ray.dir_y[lane] +
-                              n[2] * packet.rh.ray.dir_z[lane] > 0;
-        const float lit = last.lit[back];
-        const Rgba c = last.look->at(*last.primitive, int(packet.rh.hit.primID[lane]), packet.rh.hit.u[lane],
-                                     packet.rh.hit.v[lane]);
-        rgb[0][lane] = c.r * lit;
-        rgb[1][lane] = c.g * lit;
-        rgb[2][lane] = c.b * lit;
-      }
       for (int lane = 0; lane < kPacket; ++lane)
       {
-        const int u = u0 + lane % 4, v = 4 * band + lane / 4;
+        const int u = u0 + lane % 4, v = v0 + lane / 4;
         if (u >= w || v >= h)
           continue;
         const size_t pixel = size_t(v) * size_t(w) + size_t(u);
+        const float colour[3] = {rgb[0][lane], rgb[1][lane], rgb[2][lane]};
+        writeColour(rays, pixel, colour, &out.rgb8[3 * pixel]);
         out.depth[pixel] = packet.rh.ray.tfar[lane];
-        uint8_t* rgb8 = &out.rgb8[3 * pixel];
-        if (rays.noise)
-        {
-          const uint64_t bits = mixBits(rays.noise_seed + pixel);
-          for (int k = 0; k < 3; ++k)
-            rgb8[k] = toByte(rgb[k][lane] + rays.noise[(bits >> (16 * k)) & (PinholeRays::kNoiseTableSize - 1)]);
-        }
-        else
-          for (int k = 0; k < 3; ++k)
-            rgb8[k] = toByte(rgb[k][lane]);
       }
     }
   });

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -51,6 +52,8 @@ struct RayPrimitive
   // else its sub-mesh's diffuse colour, else the primitive's own colour.
   Rgba surfaceColour(int triangle, float u, float v) const;
 };
+
+struct SurfaceLook;  // what cameras see on a shape (ray_caster.cpp)
 
 struct RayHit
 {
@@ -142,6 +145,32 @@ private:
     unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
     Frame pose;
     float rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // pose.R, row major, for shading
+  };
+  // A camera's lambert shading of its hits, on one thread (RayScene::castPinhole).
+  class CameraShading
+  {
+  public:
+    CameraShading(const RayScene& scene, const Lighting& lighting);
+    // The lit colour of a packet lane's hit (the lane hit something). Inline: once per camera ray
+    // (defined in ray_caster.cpp, its only user).
+    inline Rgba litColour(const RTCRayHit16& rh, int lane);
+
+  private:
+    // The light on either face of the triangle whose geometric normal (in its instance) is ng.
+    void lightFaces(const float ng[3]);
+
+    const RayScene& scene_;
+    const float light_[3];
+    const float ambient_;
+    // What the previous lane hit: lanes on the same shape skip the lookups, lanes on the same
+    // triangle (the same Embree normal) the normal's transform and the light.
+    unsigned instance_id_ = RTC_INVALID_GEOMETRY_ID, geometry_id_ = RTC_INVALID_GEOMETRY_ID;
+    const Instance* instance_ = nullptr;
+    const RayPrimitive* primitive_ = nullptr;
+    const SurfaceLook* look_ = nullptr;
+    float ng_[3] = {std::numeric_limits<float>::quiet_NaN(), 0, 0};
+    float normal_[3] = {0, 0, 0};  // in the world
+    float lit_[2] = {0, 0};        // on the face towards the ray, on the back face
   };
   void attach(Instance& instance);
   // The primitive, triangle and world normal (facing the ray) of an Embree hit.
