@@ -2,6 +2,7 @@
 // with the sub-meshes' colours, cached per (file, scale), and failures with their reasons.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include <stb/stb_image_write.h>
@@ -180,4 +181,20 @@ TEST(LoadMesh, SaysWhyAMeshCannotBeLoaded)
   const float lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1};
   EXPECT_FALSE(loadMesh(binaryBoxStl(dir, "box.stl", lo, hi), urdf::Vector3(1, 0, 1), reason));
   EXPECT_NE(reason.find("scale"), std::string::npos) << reason;
+}
+
+TEST(Texture, WrapsACoordinateToFloorModuloTheSizeForAnySize)
+{
+  // Texture::wrapIndex skips the division where it can (inside the image, power-of-two sizes);
+  // every path must give floor(x) mod n.
+  for (int n : {1, 3, 4, 64, 100, 256, 1000})
+    for (double x = -2000.25; x < 2000.0; x += 0.75)
+    {
+      const long floor_x = long(std::floor(x));
+      const long expected = ((floor_x % n) + n) % n;
+      EXPECT_EQ(Texture::wrapIndex(float(x), n), expected) << "x = " << x << ", n = " << n;
+    }
+  EXPECT_EQ(Texture::wrapIndex(-0.5f, 64), 63);
+  EXPECT_EQ(Texture::wrapIndex(std::nanf(""), 64), 0) << "a coordinate that is not a number: the first texel";
+  EXPECT_EQ(Texture::wrapIndex(1e20f, 100), 0);
 }
