@@ -19,6 +19,7 @@
 #include "bullet_plant/geometry.h"
 #include "mesh_loader.h"
 #include "physics/spatial.h"
+#include "ray_threads.h"  // setRayThreads, rayThreads
 
 namespace bullet_plant
 {
@@ -102,10 +103,6 @@ double intersectCylinder(const double o[3], const double d[3], double radius, do
 // (up towards +z, Gazebo's convention), row by row (elevation major).
 std::vector<double> fanDirections(double a0, double da, int n_azimuth, const std::vector<double>& elevations);
 
-// The number of threads that cast camera and lidar rays (the calling thread and n - 1 workers);
-// by default the machine's hardware threads. Results do not depend on it.
-void setRayThreads(int n);
-int rayThreads();
 
 class RayScene
 {
