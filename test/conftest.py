@@ -16,6 +16,42 @@ def pytest_sessionstart(session):
                     '`source .ws/devel/setup.bash` first.', returncode=2)
 
 
+def pytest_generate_tests(metafunc):
+    """A test that takes `embree_isa` runs once per instruction set of Embree's kernels this CPU
+    runs (Embree alone would run only the widest)."""
+    if 'embree_isa' in metafunc.fixturenames:
+        from plant_helpers import embree_isas
+        metafunc.parametrize('embree_isa', embree_isas(), indirect=True)
+
+
+@pytest.fixture
+def embree_isa(request, monkeypatch):
+    """The ISA this run of the test casts rays with: worlds made in the test, and nodes it starts,
+    use it (TIANRACER_EMBREE_ISA in the environment)."""
+    from plant_helpers import ISA_VARIABLE, ISAS_RUN
+    monkeypatch.setenv(ISA_VARIABLE, request.param)
+    ISAS_RUN.add(request.param)
+    return request.param
+
+
+def pytest_terminal_summary(terminalreporter):
+    """Which of Embree's kernels the ray-casting tests ran on, and on which CPU."""
+    try:
+        from plant_helpers import ISAS_RUN, embree_isas
+    except ImportError:  # the workspace is not sourced: pytest_sessionstart said so
+        return
+    if not ISAS_RUN:
+        return
+    cpu = '?'
+    try:
+        with open('/proc/cpuinfo') as f:
+            cpu = next(line.split(':', 1)[1].strip() for line in f if line.startswith('model name'))
+    except (OSError, StopIteration):
+        pass
+    terminalreporter.write_line('Embree kernels the ray-casting tests ran on: %s (CPU: %s; it runs %s)' % (
+        ', '.join(i for i in embree_isas() if i in ISAS_RUN), cpu, ', '.join(embree_isas())))
+
+
 @pytest.fixture(scope='session')
 def urdf_xml():
     from tianracer_description.tianracer import tianracer_urdf

@@ -8,6 +8,17 @@ from tianracer_description import bullet_plant
 from tianracer_description.tianracer import STEERING_JOINTS
 
 
+# Names one of Embree's kernels' instruction sets for the worlds made after it is set
+# (include/bullet_plant/ray_kernels.h); the embree_isa fixture (conftest.py) sets it.
+ISA_VARIABLE = 'TIANRACER_EMBREE_ISA'
+ISAS_RUN = set()  # the ISAs tests of this session ran on, for the closing summary
+
+
+def embree_isas():
+    """The instruction sets of Embree's kernels this CPU runs, narrowest first (sse2 ... avx512)."""
+    return bullet_plant.embree_isas()
+
+
 def sdf_world(models='', step=0.001):
     """SDF text of a world with a ground plane, the given <model> elements and physics step."""
     return f"""<?xml version="1.0"?>

@@ -6,7 +6,12 @@ CMakeLists.txt builds one gtest executable per source file, named after it, into
 and runs every case on its own with --gtest_filter, so a crash belongs to the case that crashed.
 A source without an executable, an executable that cannot list its cases, a crash or a case that
 does not report itself all fail: nothing here is skipped but what gtest itself skips (DISABLED_
-cases, GTEST_SKIP)."""
+cases, GTEST_SKIP).
+
+The sources that cast rays run every case once per instruction set of Embree's kernels that this
+CPU runs (TIANRACER_EMBREE_ISA, see include/bullet_plant/ray_kernels.h): Embree runs only the widest
+by default, and its narrower kernels take a different path (an AVX-512 machine alone would never
+run the 8-wide AVX2 one many users have)."""
 import glob
 import os
 import signal
@@ -15,10 +20,17 @@ import xml.etree.ElementTree as ET
 
 import pytest
 from catkin.find_in_workspaces import find_in_workspaces
+from plant_helpers import ISA_VARIABLE, ISAS_RUN, embree_isas
 
 PACKAGE = 'tianracer_description'
 SOURCES = sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), 'cpp', 'test_*.cpp')))
 CASE_TIMEOUT = 300  # s; a case that hangs fails instead of stalling the suite
+RAY_CASTING_SOURCES = {'test_ray_caster', 'test_world_meshes'}
+
+
+def isa_prefix(isa):
+    """How a failing case's command line starts: with the ISA it ran on, to run it again."""
+    return '%s=%s ' % (ISA_VARIABLE, isa) if isa else ''
 
 
 def gtest_executable(source):
@@ -51,13 +63,14 @@ class Problem:
 
 
 def gtest_cases():
-    """(stem, executable, case or Problem) for every case of every test/cpp source."""
+    """(stem, isa, executable, case or Problem) for every case of every test/cpp source; isa is None
+    (Embree's own choice) but for RAY_CASTING_SOURCES, whose cases come once per ISA."""
     params = []
     for source in SOURCES:
         stem = os.path.splitext(os.path.basename(source))[0]
         executable = gtest_executable(source)
         if executable is None:
-            params.append(pytest.param(stem, None, Problem(
+            params.append(pytest.param(stem, None, None, Problem(
                 "no gtest executable '%s' for test/cpp/%s in the devel space of CMAKE_PREFIX_PATH (%s): run "
                 "`make build` (catkin_make all tests) and source the workspace" %
                 (stem, os.path.basename(source), os.environ.get('CMAKE_PREFIX_PATH', ''))), id=stem))
@@ -66,16 +79,18 @@ def gtest_cases():
             listing = subprocess.run([executable, '--gtest_list_tests'], capture_output=True, text=True,
                                      timeout=60)
         except subprocess.TimeoutExpired:
-            params.append(pytest.param(stem, executable, Problem(
+            params.append(pytest.param(stem, None, executable, Problem(
                 '%s --gtest_list_tests did not finish within 60 s' % executable), id=stem))
             continue
         cases = parse_test_list(listing.stdout) if listing.returncode == 0 else []
         if not cases:
-            params.append(pytest.param(stem, executable, Problem(
+            params.append(pytest.param(stem, None, executable, Problem(
                 '%s --gtest_list_tests exited %d and listed no test cases:\n%s%s' %
                 (executable, listing.returncode, listing.stdout, listing.stderr)), id=stem))
             continue
-        params += [pytest.param(stem, executable, case, id='%s:%s' % (stem, case)) for case in cases]
+        isas = embree_isas() if stem in RAY_CASTING_SOURCES else [None]
+        params += [pytest.param(stem, isa, executable, case, id='%s%s:%s' % (stem, '[%s]' % isa if isa else '', case))
+                   for isa in isas for case in cases]
     return params
 
 
@@ -88,24 +103,29 @@ def gtest_result(report, case):
     return None
 
 
-@pytest.mark.parametrize('stem,executable,case', gtest_cases())
-def test_gtest_case(stem, executable, case, tmp_path):
+@pytest.mark.parametrize('stem,isa,executable,case', gtest_cases())
+def test_gtest_case(stem, isa, executable, case, tmp_path):
     if isinstance(case, Problem):
         pytest.fail(case.message, pytrace=False)
     report = tmp_path / 'gtest.xml'
+    env = dict(os.environ)
+    env.pop(ISA_VARIABLE, None)
+    if isa:
+        env[ISA_VARIABLE] = isa
+        ISAS_RUN.add(isa)
     try:
         run = subprocess.run([executable, '--gtest_filter=' + case, '--gtest_output=xml:%s' % report],
-                             capture_output=True, text=True, timeout=CASE_TIMEOUT)
+                             capture_output=True, text=True, timeout=CASE_TIMEOUT, env=env)
     except subprocess.TimeoutExpired as timeout:
-        pytest.fail('%s %s did not finish within %d s:\n%s' % (stem, case, CASE_TIMEOUT, timeout.stdout or ''),
+        pytest.fail('%s%s %s did not finish within %d s:\n%s' % (isa_prefix(isa), stem, case, CASE_TIMEOUT, timeout.stdout or ''),
                     pytrace=False)
     output = run.stdout + run.stderr
     result = gtest_result(report, case) if report.exists() else None
     if run.returncode != 0 or result is None:
         ended = ('was killed by %s' % signal.Signals(-run.returncode).name if run.returncode < 0
                  else 'exited %d' % run.returncode)
-        pytest.fail('%s --gtest_filter=%s %s%s:\n%s' % (
-            executable, case, ended, '' if result is not None else ' without reporting the case', output),
+        pytest.fail('%s%s --gtest_filter=%s %s%s:\n%s' % (
+            isa_prefix(isa), executable, case, ended, '' if result is not None else ' without reporting the case', output),
             pytrace=False)
     if result.get('result') == 'skipped' or result.get('status') == 'notrun':
         pytest.skip('gtest skipped %s (DISABLED_ or GTEST_SKIP)' % case)

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -42,18 +45,94 @@ void curvedNormal(const RayPrimitive& p, const double q[3], double n[3])
 
 // ------------------------------------------------------------------------------- Embree device
 
-RTCDevice device()
+// The instruction sets Embree has kernels for (Debian's build: all five), narrowest first, with
+// what Embree needs of the CPU for each (its isa= names and its own CPU checks).
+struct IsaKernels
 {
-  static RTCDevice d = [] {
-    RTCDevice created = rtcNewDevice(nullptr);
-    if (!created)
-      throw std::runtime_error("Embree: cannot create a device (error " + std::to_string(rtcGetDeviceError(nullptr)) +
-                               ")");
-    return created;
-  }();
-  return d;
+  const char* name;
+  bool (*cpu_has)();
+};
+const IsaKernels kIsaKernels[] = {
+    {"sse2", [] { return bool(__builtin_cpu_supports("sse2")); }},
+    {"sse4.2", [] { return bool(__builtin_cpu_supports("sse4.2") && __builtin_cpu_supports("popcnt")); }},
+    {"avx", [] { return bool(__builtin_cpu_supports("avx")); }},
+    {"avx2", [] {
+       return bool(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+                   __builtin_cpu_supports("bmi2"));
+     }},
+    {"avx512", [] {
+       return bool(__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512cd") &&
+                   __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw") &&
+                   __builtin_cpu_supports("avx512vl"));
+     }},
+};
+
+std::string joined(const std::vector<std::string>& names)
+{
+  std::string out;
+  for (const std::string& name : names)
+    out += (out.empty() ? "" : ", ") + name;
+  return out;
 }
 
+// One device per instruction set asked for, made on first use and kept for the process: scenes
+// made under different settings each keep theirs.
+RTCDevice deviceFor(const std::string& isa)
+{
+  static std::mutex mutex;
+  static std::map<std::string, RTCDevice> devices;
+  const std::lock_guard<std::mutex> lock(mutex);
+  RTCDevice& d = devices[isa];
+  if (!d)
+  {
+    const std::string config = isa.empty() ? "" : "isa=" + isa;
+    d = rtcNewDevice(config.c_str());
+    if (!d)
+      throw std::runtime_error("Embree: cannot create a device with config '" + config + "' (error " +
+                               std::to_string(rtcGetDeviceError(nullptr)) + ")");
+  }
+  return d;
+}
+}  // namespace
+
+std::vector<std::string> embreeIsasThisCpuRuns()
+{
+  std::vector<std::string> out;
+  __builtin_cpu_init();
+  for (const IsaKernels& isa : kIsaKernels)
+    if (isa.cpu_has())
+      out.push_back(isa.name);
+  return out;
+}
+
+EmbreeIsa embreeIsa()
+{
+  const std::vector<std::string> runnable = embreeIsasThisCpuRuns();
+  EmbreeIsa chosen;
+  chosen.name = runnable.empty() ? "sse2" : runnable.back();  // Embree's own choice: the widest
+  const char* asked = std::getenv(kEmbreeIsaVariable);
+  if (!asked || !*asked)
+    return chosen;
+  const std::string name = asked;
+  std::vector<std::string> all;
+  for (const IsaKernels& isa : kIsaKernels)
+    all.push_back(isa.name);
+  if (std::find(all.begin(), all.end(), name) == all.end())
+    chosen.problem = std::string(kEmbreeIsaVariable) + "='" + name + "' is not one of " + joined(all) +
+                     ": ray casting uses " + chosen.name + ", the widest this CPU runs";
+  else if (std::find(runnable.begin(), runnable.end(), name) == runnable.end())
+    chosen.problem = std::string(kEmbreeIsaVariable) + "='" + name + "': this CPU has no " + name + " (it runs " +
+                     joined(runnable) + "): ray casting uses " + chosen.name;
+  else
+  {
+    chosen.name = name;
+    chosen.forced = true;
+  }
+  return chosen;
+}
+
+namespace
+{
 // ------------------------------------------------------------------------------ geometry builders
 
 void transformedVertices(const Frame& frame, const float* vertices, int count, RTCGeometry g)
@@ -70,9 +149,10 @@ void transformedVertices(const Frame& frame, const float* vertices, int count, R
   }
 }
 
-RTCGeometry triangleGeometry(const Frame& frame, const std::vector<float>& vertices, const std::vector<int>& indices)
+RTCGeometry triangleGeometry(RTCDevice device, const Frame& frame, const std::vector<float>& vertices,
+                             const std::vector<int>& indices)
 {
-  RTCGeometry g = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   transformedVertices(frame, vertices.data(), int(vertices.size() / 3), g);
   unsigned* out = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                                                  3 * sizeof(unsigned), indices.size() / 3));
@@ -376,11 +456,11 @@ struct RayScene::ShapeSet
   std::vector<int> shape_of_geometry;    // Embree geometry id -> index in shapes
   std::vector<SurfaceLook> looks;        // per shape
 
-  explicit ShapeSet(std::vector<RayPrimitive> primitives) : shapes(std::move(primitives))
+  ShapeSet(RTCDevice device, std::vector<RayPrimitive> primitives) : shapes(std::move(primitives))
   {
     for (const RayPrimitive& p : shapes)
       looks.push_back(SurfaceLook::of(p));
-    scene = rtcNewScene(device());
+    scene = rtcNewScene(device);
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
     for (size_t k = 0; k < shapes.size(); ++k)
     {
@@ -392,18 +472,18 @@ struct RayScene::ShapeSet
       {
         case Shape::Kind::Box:
           boxTriangles(p.half, vertices, indices);
-          g = triangleGeometry(p.frame, vertices, indices);
+          g = triangleGeometry(device, p.frame, vertices, indices);
           break;
         case Shape::Kind::Plane:
           planeTriangles(p.normal, vertices, indices);
-          g = triangleGeometry(p.frame, vertices, indices);
+          g = triangleGeometry(device, p.frame, vertices, indices);
           break;
         case Shape::Kind::Mesh:
-          g = triangleGeometry(p.frame, p.mesh->vertices, p.mesh->indices);
+          g = triangleGeometry(device, p.frame, p.mesh->vertices, p.mesh->indices);
           break;
         case Shape::Kind::Sphere:
         case Shape::Kind::Cylinder:
-          g = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_USER);
+          g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
           rtcSetGeometryUserPrimitiveCount(g, 1);
           rtcSetGeometryUserData(g, const_cast<RayPrimitive*>(&p));
           rtcSetGeometryBoundsFunction(g, curvedBounds, nullptr);
@@ -426,12 +506,13 @@ struct RayScene::ShapeSet
 // ------------------------------------------------------------------------------------- RayScene
 
 RayScene::RayScene(const std::vector<RayPrimitive>& world_shapes)
+  : isa_(embreeIsa()), device_(deviceFor(isa_.forced ? isa_.name : ""))
 {
-  top_ = rtcNewScene(device());
+  top_ = rtcNewScene(device_);
   rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC);
   rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
   instances_.emplace_back();
-  instances_[0].set = std::make_shared<ShapeSet>(world_shapes);
+  instances_[0].set = std::make_shared<ShapeSet>(device_, world_shapes);
   attach(instances_[0]);
   rtcCommitScene(top_);
 }
@@ -444,7 +525,7 @@ RayScene::~RayScene()
 
 void RayScene::attach(Instance& instance)
 {
-  RTCGeometry g = rtcNewGeometry(device(), RTC_GEOMETRY_TYPE_INSTANCE);
+  RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
   rtcSetGeometryInstancedScene(g, instance.set->scene);
   rtcSetGeometryTimeStepCount(g, 1);
   float m[12];
@@ -462,7 +543,7 @@ void RayScene::attach(Instance& instance)
 int RayScene::addBody(const void* owner, std::vector<RayPrimitive> shapes)
 {
   Instance instance;
-  instance.set = std::make_shared<ShapeSet>(std::move(shapes));
+  instance.set = std::make_shared<ShapeSet>(device_, std::move(shapes));
   instance.owner = owner;
   instances_.push_back(std::move(instance));
   attach(instances_.back());
@@ -604,7 +685,12 @@ namespace
 {
 constexpr int kPacket = 16;
 
-// A packet of rays, Embree's structure of arrays.
+// A packet of rays, Embree's structure of arrays. Which lanes Embree casts depends on the width of
+// its kernels: the 16-wide ones (AVX-512) follow `valid`; narrower ones (AVX2's 8, SSE's 4) get the
+// packet through Embree's stream fallback, which ignores `valid` and casts every lane whose
+// tnear <= tfar (Embree 3.13: rtcIntersect16 without a 16-wide intersector calls
+// RayStreamFilter::filterSOA), asserting that each holds a ray RayK::valid accepts. So a lane not to
+// be cast is both invalid and empty (tnear > tfar), whatever its other fields hold.
 struct alignas(64) Packet
 {
   RTCRayHit16 rh;
@@ -613,13 +699,18 @@ struct alignas(64) Packet
   void set(int lane, const float origin[3], const double dir[3], float near, float far, unsigned mask)
   {
     const float dir_f[3] = {float(dir[0]), float(dir[1]), float(dir[2])};
-    valid[lane] = embreeAcceptsRay(origin, dir_f, near, far) ? -1 : 0;
+    if (!embreeAcceptsRay(origin, dir_f, near, far))
+    {
+      skip(lane);
+      return;
+    }
+    valid[lane] = -1;
     rh.ray.org_x[lane] = origin[0];
     rh.ray.org_y[lane] = origin[1];
     rh.ray.org_z[lane] = origin[2];
-    rh.ray.dir_x[lane] = float(dir[0]);
-    rh.ray.dir_y[lane] = float(dir[1]);
-    rh.ray.dir_z[lane] = float(dir[2]);
+    rh.ray.dir_x[lane] = dir_f[0];
+    rh.ray.dir_y[lane] = dir_f[1];
+    rh.ray.dir_z[lane] = dir_f[2];
     rh.ray.tnear[lane] = near;
     rh.ray.tfar[lane] = far;
     rh.ray.mask[lane] = mask;
@@ -628,7 +719,19 @@ struct alignas(64) Packet
     rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
   }
-  void clear() { std::fill(valid, valid + kPacket, 0); }
+  // A lane no kernel casts.
+  void skip(int lane)
+  {
+    valid[lane] = 0;
+    rh.ray.tnear[lane] = std::numeric_limits<float>::infinity();
+    rh.ray.tfar[lane] = -std::numeric_limits<float>::infinity();
+    rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+  void skipAll()
+  {
+    for (int lane = 0; lane < kPacket; ++lane)
+      skip(lane);
+  }
   bool hit(int lane) const { return valid[lane] == -1 && rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID; }
 };
 }  // namespace
@@ -660,7 +763,7 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
     Packet packet;
     for (int k = task * kPacketsPerTask; k < std::min(packets, (task + 1) * kPacketsPerTask); ++k)
     {
-      packet.clear();
+      packet.skipAll();  // the last packet's lanes beyond n stay so
       for (int lane = 0; lane < kPacket && k * kPacket + lane < n; ++lane)
       {
         double dir[3];
@@ -747,14 +850,14 @@ struct PinholeAim
       packet.rh.ray.org_x[lane] = origin[0];
       packet.rh.ray.org_y[lane] = origin[1];
       packet.rh.ray.org_z[lane] = origin[2];
-      packet.rh.ray.tnear[lane] = near;
       packet.rh.ray.mask[lane] = kSeenByCameras;
       packet.rh.ray.time[lane] = 0;
       packet.rh.ray.flags[lane] = 0;
     }
   }
 
-  // The rays through the 4 x 4 pixels from (u0, v0); lanes outside the image cast none.
+  // The rays through the 4 x 4 pixels from (u0, v0); lanes outside the image, or whose ray Embree
+  // cannot take, are skipped (Packet::skip, inline here).
   void aim(Packet& packet, int u0, int v0) const
   {
     for (int lane = 0; lane < kPacket; ++lane)
@@ -766,11 +869,12 @@ struct PinholeAim
       packet.rh.ray.dir_x[lane] = dir[0];
       packet.rh.ray.dir_y[lane] = dir[1];
       packet.rh.ray.dir_z[lane] = dir[2];
-      packet.rh.ray.tfar[lane] = far;
       packet.rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
       packet.rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-      const bool in_image = u < width && v < height;
-      packet.valid[lane] = in_image && (every_ray_acceptable || embreeAcceptsRay(origin, dir, near, far)) ? -1 : 0;
+      const bool cast = u < width && v < height && (every_ray_acceptable || embreeAcceptsRay(origin, dir, near, far));
+      packet.valid[lane] = cast ? -1 : 0;
+      packet.rh.ray.tnear[lane] = cast ? near : std::numeric_limits<float>::infinity();
+      packet.rh.ray.tfar[lane] = cast ? far : -std::numeric_limits<float>::infinity();
     }
   }
 };

@@ -12,11 +12,13 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <embree3/rtcore.h>
 
 #include "bullet_plant/geometry.h"
+#include "bullet_plant/ray_kernels.h"
 #include "mesh_loader.h"
 #include "physics/spatial.h"
 #include "ray_threads.h"  // setRayThreads, rayThreads
@@ -133,6 +135,9 @@ public:
   // A camera at `pose` (x forward, y left, z up; the optical frame is z forward, x right, y down).
   void castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const;
 
+  // The instruction set this scene's kernels use, and why not the one asked for if it is not.
+  const EmbreeIsa& isa() const { return isa_; }
+
 private:
   struct ShapeSet;
   struct Instance
@@ -173,6 +178,8 @@ private:
   // The primitive, triangle and world normal (facing the ray) of an Embree hit.
   void resolve(const RTCRayHit& hit, RayHit& out) const;
 
+  const EmbreeIsa isa_;
+  const RTCDevice device_;
   RTCScene top_ = nullptr;
   std::vector<Instance> instances_;  // [0]: the world's static shapes; the rest robots' bodies (null set: removed)
   std::vector<int> instance_of_geometry_;  // top-level geometry id -> index in instances_

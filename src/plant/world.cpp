@@ -361,7 +361,14 @@ void World::resetWorld()
 const RayScene& World::Internals::rayScene(const void* hidden)
 {
   if (!ray_scene)
+  {
     ray_scene.reset(new RayScene(static_ray_shapes));
+    const EmbreeIsa& isa = ray_scene->isa();
+    if (!isa.problem.empty())
+      log.warn("sensors: " + isa.problem);
+    else if (isa.forced)
+      log.info(std::string("sensors: rays cast with Embree's ") + isa.name + " kernels (" + kEmbreeIsaVariable + ")");
+  }
   for (auto& robot : robots)
   {
     Robot::Internals& r = *robot->in_;

@@ -11,6 +11,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "bullet_plant/ray_kernels.h"
 #include "bullet_plant/world.h"
 
 namespace py = pybind11;
@@ -247,6 +248,14 @@ PYBIND11_MODULE(bullet_plant, m)
   m.doc() = "The Bullet plant that stands in for Gazebo + gazebo_ros_control, driven from Python.";
 
   py::register_exception<DescriptionError>(m, "DescriptionError", PyExc_ValueError);
+
+  m.def("embree_isas", &embreeIsasThisCpuRuns,
+        "the instruction sets of Embree's kernels this CPU runs, narrowest first: the values "
+        "TIANRACER_EMBREE_ISA takes");
+  m.def("embree_isa", [] {
+    const EmbreeIsa isa = embreeIsa();
+    return py::dict(py::arg("name") = isa.name, py::arg("forced") = isa.forced, py::arg("problem") = isa.problem);
+  }, "the ISA of the kernels a world made now casts its sensors' rays with: {name, forced, problem}");
   py::register_exception<RobotRemoved>(m, "RobotRemovedError", PyExc_RuntimeError);
 
   py::class_<RobotRef>(m, "Robot")

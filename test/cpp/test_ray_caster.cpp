@@ -412,3 +412,84 @@ TEST(CameraRays, APoseEmbreeCannotTakeShowsNothingInEveryPixel)
     }
   }
 }
+
+// Every case here runs once per ISA of Embree's kernels this CPU runs (test/test_gtests.py sets
+// TIANRACER_EMBREE_ISA). A lidar's rays go in packets of 16: a fan of any size leaves lanes of its
+// last packet unused, and a range Embree cannot take leaves lanes invalid. The 16-wide kernels
+// (AVX-512) skip those lanes by the valid mask; the narrower ones cast every lane whose interval is
+// not empty, and Embree aborts the process on one holding a ray it does not accept. Each ray of a
+// fan must give what it gives cast alone.
+TEST(LidarRays, FansOfAnySizeAndRangeGiveWhatEachRayGivesAlone)
+{
+  const RayPrimitive ground = primitive(Shape::Kind::Plane, 0, 0, 1, poseFromXyzRpy(0, 0, 0, 0, 0, 0));
+  const RayPrimitive wall = primitive(Shape::Kind::Box, 0.2, 8, 3, poseFromXyzRpy(3, 0, 1, 0, 0, 0));
+  const RayPrimitive post = primitive(Shape::Kind::Cylinder, 0.1, 2, 0, poseFromXyzRpy(1, 0.5, 1, 0, 0, 0));
+  RayScene scene({ground, wall, post});
+  scene.commit(nullptr);
+  const Frame sensor = Frame::fromPose(poseFromXyzRpy(0, 0, 0.5, 0, 0, 0.1));
+  const double nan = std::nan("");
+  // (near, far): the usual, from 0, a range empty or reversed, and ones Embree cannot take
+  const std::vector<std::pair<double, double>> ranges = {{0.1, 10}, {0, 10}, {2, 2}, {5, 1}, {0, 0},
+                                                         {nan, 10}, {0.1, nan}, {-1, 10}, {0.1, kInf}};
+  int hits = 0;
+  for (int n : {1, 2, 5, 15, 16, 17, 31, 33, 100, 3000})
+    for (const auto& [near, far] : ranges)
+    {
+      const std::vector<double> directions = fanDirections(-1.5, 3.0 / n, n, {-0.2, 0.0});
+      std::vector<double> fan;
+      scene.castRays(sensor, directions, near, far, kSeenByLidars, fan);
+      ASSERT_EQ(fan.size(), directions.size() / 3);
+      for (size_t i = 0; i < fan.size(); ++i)
+      {
+        double dir[3];
+        sensor.rotate(&directions[3 * i], dir);
+        const double alone = scene.castHit(sensor.t, dir, near, far, kSeenByLidars).distance;
+        if (std::isinf(alone))
+          EXPECT_EQ(fan[i], alone) << n << " rays, ray " << i << ", range [" << near << ", " << far << "]";
+        else
+          EXPECT_NEAR(fan[i], alone, kFloatTolerance) << n << " rays, ray " << i << ", range [" << near << ", " << far << "]";
+        hits += std::isfinite(fan[i]);
+      }
+    }
+  EXPECT_GT(hits, 1000) << "the fans see the ground, the wall and the post";
+}
+
+TEST(EmbreeKernels, TheVariableNamesTheKernelsOfTheScenesMadeAfterIt)
+{
+  const char* outer = std::getenv(kEmbreeIsaVariable);
+  const std::string restore = outer ? outer : "";
+  const std::vector<std::string> isas = embreeIsasThisCpuRuns();
+  ASSERT_FALSE(isas.empty());
+  EXPECT_EQ(isas.front(), "sse2") << "every x86-64 CPU runs SSE2";
+
+  unsetenv(kEmbreeIsaVariable);
+  EXPECT_EQ(embreeIsa().name, isas.back()) << "by default the widest, as Embree picks";
+  EXPECT_FALSE(embreeIsa().forced);
+  const double o[3] = {0, 0, 0}, x[3] = {1, 0, 0};
+  for (const std::string& isa : isas)
+  {
+    setenv(kEmbreeIsaVariable, isa.c_str(), 1);
+    RayScene scene({primitive(Shape::Kind::Box, 1, 1, 1, poseFromXyzRpy(3, 0, 0, 0, 0, 0))});
+    scene.commit(nullptr);
+    EXPECT_EQ(scene.isa().name, isa);
+    EXPECT_TRUE(scene.isa().forced);
+    EXPECT_EQ(scene.isa().problem, "");
+    EXPECT_NEAR(scene.cast(o, x, 10, kSeenByAll), 2.5, kFloatTolerance) << isa;
+  }
+  setenv(kEmbreeIsaVariable, "avx9", 1);
+  const EmbreeIsa unknown = embreeIsa();
+  EXPECT_EQ(unknown.name, isas.back());
+  EXPECT_FALSE(unknown.forced);
+  EXPECT_NE(unknown.problem.find("TIANRACER_EMBREE_ISA='avx9' is not one of sse2, sse4.2, avx, avx2, avx512"),
+            std::string::npos)
+      << unknown.problem;
+  if (isas.back() != "avx512")
+  {
+    setenv(kEmbreeIsaVariable, "avx512", 1);
+    EXPECT_NE(embreeIsa().problem.find("this CPU has no avx512"), std::string::npos) << embreeIsa().problem;
+  }
+  if (restore.empty())
+    unsetenv(kEmbreeIsaVariable);
+  else
+    setenv(kEmbreeIsaVariable, restore.c_str(), 1);
+}
