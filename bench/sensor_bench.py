@@ -12,6 +12,10 @@
    1) and process CPU seconds per simulated second (at real time: the cores' worth of CPU it takes);
    then the same through the ROS node, paced at real time, with every sensor topic subscribed.
    `bench/sensor_bench.py --real-car` runs only this part.
+3. Rays per CPU second of one thread on each instruction set of Embree's kernels this CPU runs
+   (TIANRACER_EMBREE_ISA: SSE 4-wide, AVX 8-wide, AVX-512 16-wide), on the mesh race track, side by
+   side, medians of ISA_RUNS runs taken in turn: Embree runs the widest by default, so the figures
+   above are those of the widest ISA, and a user's CPU may have a narrower one.
 """
 import math
 import os
@@ -40,6 +44,8 @@ WHEEL_RADIUS = 0.032
 REAL_CAR = {'camera': (800, 800, 30.0), 'depth': (640, 480, 20.0)}  # width, height, Hz
 FLOOR_TOP = 0.002  # above the ground plane the world gets anyway
 NODE_WINDOW = 20.0  # s of wall time
+ISA_RUNS = 3
+SENSOR_LABELS = (('camera', 'colour 800 x 800, shaded'), ('depth', 'depth 640 x 480'), ('lidar', 'lidar 1081 rays'))
 
 # Subscribes to every sensor topic of the car (a Python subscriber, as rviz or a user's node would;
 # spawned as the tutorial spawns it, no robotNamespace, so the plugins' topics are at the root),
@@ -170,14 +176,43 @@ def print_rates(title, rates, agree):
     print(title)
     print('  %-26s %15s %15s %17s   (M rays per CPU second / per wall second)'
           % ('', 'previous path', 'Embree, 1 thread', 'Embree, %d threads' % threads))
-    for sensor, label in (('camera', 'colour 800 x 800, shaded'), ('depth', 'depth 640 x 480'),
-                          ('lidar', 'lidar 1081 rays')):
+    for sensor, label in SENSOR_LABELS:
         cells = []
         for key in ((sensor, 'previous', 1), (sensor, 'embree', 1), (sensor, 'embree', threads)):
             cpu, wall = rates[key]
             cells.append('%6.1f / %5.1f' % (cpu / 1e6, wall / 1e6))
         note = '  images agree within 2/255: %.1f %%' % (100 * agree[sensor]) if sensor in agree else ''
         print('  %-26s %15s %15s %17s%s' % (label, cells[0], cells[1], cells[2], note))
+
+
+def rays_per_cpu_second_by_isa(urdf_file, world):
+    """{isa: {sensor: rays per CPU second of one thread}}, medians of ISA_RUNS runs of every ISA in turn."""
+    isas = bullet_plant.embree_isas()
+    samples = {isa: {sensor: [] for sensor, _ in SENSOR_LABELS} for isa in isas}
+    for _ in range(ISA_RUNS):
+        for isa in isas:
+            out = subprocess.run([binary(), urdf_file, world, str(FRAMES), '--embree-one-thread'], capture_output=True,
+                                 text=True, check=True, env=dict(os.environ, TIANRACER_EMBREE_ISA=isa)).stdout.split('\n')
+            assert out[0] == 'isa ' + isa, 'sensor_cost ran %r, not %s' % (out[0], isa)
+            for line in out[1:]:
+                words = line.split()
+                if len(words) == 5 and words[1] == 'embree':
+                    samples[isa][words[0]].append(float(words[3]))
+    return {isa: {sensor: float(np.median(rates)) for sensor, rates in by_sensor.items()}
+            for isa, by_sensor in samples.items()}
+
+
+def print_rates_by_isa(title, rates):
+    isas = list(rates)
+    print(title)
+    print('  %-26s' % 'M rays per CPU second' + ''.join('%9s' % isa for isa in isas))
+    for sensor, label in SENSOR_LABELS:
+        print('  %-26s' % label + ''.join('%9.1f' % (rates[isa][sensor] / 1e6) for isa in isas))
+
+
+def cpu_name():
+    with open('/proc/cpuinfo') as f:
+        return next((line.split(':', 1)[1].strip() for line in f if line.startswith('model name')), '?')
 
 
 def real_car_run(world_file, urdf):
@@ -241,13 +276,19 @@ def main():
         with open(urdf_file, 'w') as f:
             f.write(urdf)
         mesh_world, walls = write_mesh_track(directory)
+        isa = bullet_plant.embree_isa()['name']
+        print('CPU: %s, %d cores; the instruction sets of Embree\'s kernels it runs: %s; the plant uses %s'
+              % (cpu_name(), os.cpu_count(), ', '.join(bullet_plant.embree_isas()), isa))
         if sys.argv[1:] != ['--real-car']:
-            print_rates('sensor rays on worlds/race_track.world (boxes and a plane):',
+            print_rates('sensor rays on worlds/race_track.world (boxes and a plane), Embree on %s:' % isa,
                         *rays_per_second(urdf_file, RACE_TRACK_WORLD))
-            print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor):'
-                        % (walls, 12 * walls), *rays_per_second(urdf_file, mesh_world))
+            print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor), Embree on %s:'
+                        % (walls, 12 * walls, isa), *rays_per_second(urdf_file, mesh_world))
         real_car_run(mesh_world, urdf)
         node_run(mesh_world, urdf_file)
+        if sys.argv[1:] != ['--real-car']:
+            print_rates_by_isa('sensor rays on the mesh race track by ISA of Embree\'s kernels, one thread, median of %d:'
+                               % ISA_RUNS, rays_per_cpu_second_by_isa(urdf_file, mesh_world))
 
 
 if __name__ == '__main__':

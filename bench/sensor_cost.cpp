@@ -6,7 +6,9 @@
 // thread and with all. Prints one line per sensor and path: "SENSOR PATH THREADS RAYS_PER_CPU_S
 // RAYS_PER_WALL_S" (of the cheapest frames), then the share of colour values the two paths agree on
 // within 2 of 255. The cameras render without noise (the previous path had none); with
-// SENSOR_COST_NOISE set in the environment the colour camera keeps its URDF's noise.
+// SENSOR_COST_NOISE set in the environment the colour camera keeps its URDF's noise. With a fourth
+// argument --embree-one-thread only the plant's own path on one thread runs (what one core does on
+// the ISA of Embree's kernels that TIANRACER_EMBREE_ISA names); the first line is then "isa NAME".
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -156,9 +158,10 @@ void report(const char* sensor, const char* path, int threads, double rays, cons
 
 int main(int argc, char** argv)
 {
-  if (argc != 4)
+  const bool embree_one_thread = argc == 5 && std::string(argv[4]) == "--embree-one-thread";
+  if (argc != 4 && !embree_one_thread)
   {
-    std::cerr << "usage: sensor_cost URDF WORLD FRAMES\n";
+    std::cerr << "usage: sensor_cost URDF WORLD FRAMES [--embree-one-thread]\n";
     return 2;
   }
   std::stringstream urdf;
@@ -172,6 +175,9 @@ int main(int argc, char** argv)
   World::Internals& w = *r.world;
   const Lighting lighting = w.lighting();
   const int all_threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  const std::vector<int> thread_counts = embree_one_thread ? std::vector<int>{1} : std::vector<int>{1, all_threads};
+  if (embree_one_thread)
+    std::printf("isa %s\n", w.rayScene(nullptr).isa().name.c_str());
 
   const auto* colour = dynamic_cast<Camera*>(sensorOfType(r, "camera"));
   const auto* depth = dynamic_cast<Camera*>(sensorOfType(r, "depth"));
@@ -214,16 +220,19 @@ int main(int argc, char** argv)
     const SensorDescription& d = c.camera->description();
     const double rays = double(d.image_width) * d.image_height;
     const Frame pose = sensorPose(r, d);
-    report(c.name, "previous", 1, rays, bestCost(std::max(1, frames / 4), [&] {
-             previousRender(*c.camera, camera_caster, pose, lighting, previous_rgb, previous_depth);
-           }));
-    for (int threads : {1, all_threads})
+    if (!embree_one_thread)
+      report(c.name, "previous", 1, rays, bestCost(std::max(1, frames / 4), [&] {
+               previousRender(*c.camera, camera_caster, pose, lighting, previous_rgb, previous_depth);
+             }));
+    for (int threads : thread_counts)
     {
       setRayThreads(threads);
       report(c.name, "embree", threads, rays, bestCost(frames, [&] {
                detail::SensorRendering::render(*c.camera, w.rayScene(nullptr), pose, lighting, 0);
              }));
     }
+    if (embree_one_thread)
+      continue;
     // How far the paths' images are apart (cameras see visuals now, where they saw collisions).
     const std::vector<uint8_t>& rgb = c.camera->latest().rgb;
     size_t close = 0;
@@ -239,11 +248,12 @@ int main(int argc, char** argv)
   const double rays = double(n) * ld.vertical_samples;
   std::vector<double> ranges;
   constexpr int kScansPerTiming = 20;
-  report("lidar", "previous", 1, kScansPerTiming * rays, bestCost(frames, [&] {
-           for (int k = 0; k < kScansPerTiming; ++k)
-             lidar_caster.castFan(lidar_pose, ld.horizontal_min_angle, da, n, {0.0}, ld.range_max, ranges);
-         }));
-  for (int threads : {1, all_threads})
+  if (!embree_one_thread)
+    report("lidar", "previous", 1, kScansPerTiming * rays, bestCost(frames, [&] {
+             for (int k = 0; k < kScansPerTiming; ++k)
+               lidar_caster.castFan(lidar_pose, ld.horizontal_min_angle, da, n, {0.0}, ld.range_max, ranges);
+           }));
+  for (int threads : thread_counts)
   {
     setRayThreads(threads);
     report("lidar", "embree", threads, kScansPerTiming * rays, bestCost(frames, [&] {

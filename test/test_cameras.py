@@ -1,6 +1,7 @@
 """The colour and depth cameras of the URDF, by ray casting, through the Python module: a box of
 known size and colour at a known pose appears where the pinhole model puts it, in its colour; the
-depth camera measures its face; the point cloud lies on it."""
+depth camera measures its face; the point cloud lies on it. Each test runs once per instruction set
+of Embree's kernels this CPU runs (the embree_isa fixture, test/conftest.py)."""
 import math
 
 import numpy as np
@@ -17,7 +18,7 @@ LIGHT = (0.5, 0.1, -0.9)                     # the sun shines along +x, onto the
 
 
 @pytest.fixture
-def scene(urdf_xml, control_config):
+def scene(embree_isa, urdf_xml, control_config):
     box = f"""<model name="box"><static>true</static><pose>{' '.join(map(str, BOX_CENTRE))} 0 0 0</pose>
       <link name="link">
         <collision name="collision"><geometry><box><size>{' '.join(map(str, BOX_SIZE))}</size></box></geometry></collision>
@@ -121,7 +122,8 @@ POST_SDF = f"""<model name="post"><static>true</static><pose>{POST_X} 0 0.5 0 0 
 
 @pytest.mark.parametrize('post_of', ['robot', 'world'])
 @pytest.mark.parametrize('lidar_type', ['ray', 'gpu_ray'])
-def test_cameras_and_gpu_ray_see_visuals_ray_lidars_collisions(urdf_xml, control_config, lidar_type, post_of):
+def test_cameras_and_gpu_ray_see_visuals_ray_lidars_collisions(embree_isa, urdf_xml, control_config, lidar_type,
+                                                                post_of):
     """A post (a static robot, or a model of the world) whose visual (0.5 m square, blue) is wider
     than its collision (0.1 m): Gazebo's cameras and gpu_ray lidars render visuals, its ray lidars
     hit collisions."""

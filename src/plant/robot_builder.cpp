@@ -21,6 +21,10 @@ constexpr double kMinimumInertia = 1e-9;
 // (N m or N). Otherwise such a joint is as strong as the robot's strongest limited joint: an
 // unlimited effort on a light joint (a passive wheel) lets one command launch the robot.
 constexpr double kDefaultEffortLimit = 100.0;
+// Beyond these a sensor's buffers alone would take gigabytes: a Velodyne HDL-64 casts about 130 k
+// rays a scan, an 8K image has 33 M pixels.
+constexpr int kMaxRaysPerScan = 1 << 22;
+constexpr int kMaxPixelsPerImage = 1 << 25;
 
 btVector3 vec(const urdf::Vector3& v) { return btVector3(btScalar(v.x), btScalar(v.y), btScalar(v.z)); }
 
@@ -539,6 +543,36 @@ void createControllerManager(Robot::Internals& r)
   r.controller_manager->setPaused(r.world->paused);
 }
 
+// What keeps a ray sensor from scanning, or empty. A fan of any direction (min_angle above max_angle,
+// both equal) and any range (min 0, min equal to or above max: every ray reads +inf) scans.
+std::string lidarProblem(const SensorDescription& s)
+{
+  if (s.horizontal_samples < 1 || s.vertical_samples < 1)
+    return "<scan> has " + std::to_string(s.horizontal_samples) + " horizontal and " +
+           std::to_string(s.vertical_samples) + " vertical <samples>: give each at least 1";
+  if (!(s.range_max > 0))
+    return "<range><max> is " + formatNumber(s.range_max) + ": give the farthest distance it measures, above 0";
+  if (double(s.horizontal_samples) * s.vertical_samples > kMaxRaysPerScan)
+    return std::to_string(s.horizontal_samples) + " x " + std::to_string(s.vertical_samples) +
+           " rays a scan is more than the " + std::to_string(kMaxRaysPerScan) + " the plant casts";
+  return "";
+}
+
+// What keeps a camera from rendering, or empty.
+std::string cameraProblem(const SensorDescription& s)
+{
+  if (s.image_width < 1 || s.image_height < 1)
+    return "<image> is " + std::to_string(s.image_width) + " x " + std::to_string(s.image_height) +
+           ": give a <width> and <height> of at least 1";
+  if (!(s.horizontal_fov > 0 && s.horizontal_fov < M_PI))
+    return "<horizontal_fov> is " + formatNumber(s.horizontal_fov) +
+           ": a pinhole camera's lies between 0 and pi (radians)";
+  if (double(s.image_width) * s.image_height > kMaxPixelsPerImage)
+    return std::to_string(s.image_width) + " x " + std::to_string(s.image_height) + " pixels is more than the " +
+           std::to_string(kMaxPixelsPerImage) + " the plant renders";
+  return "";
+}
+
 // 9. Sensors, each with its own noise generator seeded from the robot's and the sensor's names, in
 // the namespace its plugin publishes in.
 std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescription& s)
@@ -547,18 +581,20 @@ std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescriptio
   const uint32_t seed = seedFor(r.name + "/" + s.name);
   if (s.type == "ray" || s.type == "gpu_ray")
   {
-    if (s.horizontal_samples < 1 || s.vertical_samples < 1 || s.range_max <= 0)
+    const std::string problem = lidarProblem(s);
+    if (!problem.empty())
     {
-      log.warn("sensor '" + s.name + "' of '" + r.name + "' has no samples or no range; ignored");
+      log.error("sensor '" + s.name + "' (" + s.type + ") of '" + r.name + "': " + problem + "; it publishes nothing");
       return nullptr;
     }
     return std::unique_ptr<Sensor>(new Lidar(s, seed));
   }
   if (s.type == "camera" || s.type == "depth")
   {
-    if (s.image_width < 1 || s.image_height < 1 || !(s.horizontal_fov > 0 && s.horizontal_fov < M_PI))
+    const std::string problem = cameraProblem(s);
+    if (!problem.empty())
     {
-      log.warn("camera '" + s.name + "' of '" + r.name + "' has no image size or a field of view outside (0, pi); ignored");
+      log.error("camera '" + s.name + "' (" + s.type + ") of '" + r.name + "': " + problem + "; it publishes nothing");
       return nullptr;
     }
     return std::unique_ptr<Sensor>(new Camera(s, seed));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <mutex>
 #include <sstream>
 
@@ -278,6 +279,15 @@ void readNoise(const tinyxml2::XMLElement* parent, Noise& noise)
   noise.stddev = xml::childDouble(n, "stddev", 0.0);
 }
 
+// A count (samples, pixels) as written, in an int: beyond its range the nearest int (converting
+// would be undefined), not a number -1, for the checks at spawn to refuse.
+int countOf(double written)
+{
+  if (std::isnan(written))
+    return -1;
+  return int(std::max(double(std::numeric_limits<int>::min()), std::min(written, double(std::numeric_limits<int>::max()))));
+}
+
 SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& link)
 {
   SensorDescription d;
@@ -290,13 +300,13 @@ SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& l
   {
     if (auto* h = xml::child(ray, "scan/horizontal"))
     {
-      d.horizontal_samples = static_cast<int>(xml::childDouble(h, "samples", 1));
+      d.horizontal_samples = countOf(xml::childDouble(h, "samples", 1));
       d.horizontal_min_angle = xml::childDouble(h, "min_angle", 0.0);
       d.horizontal_max_angle = xml::childDouble(h, "max_angle", 0.0);
     }
     if (auto* v = xml::child(ray, "scan/vertical"))
     {
-      d.vertical_samples = static_cast<int>(xml::childDouble(v, "samples", 1));
+      d.vertical_samples = countOf(xml::childDouble(v, "samples", 1));
       d.vertical_min_angle = xml::childDouble(v, "min_angle", 0.0);
       d.vertical_max_angle = xml::childDouble(v, "max_angle", 0.0);
     }
@@ -313,8 +323,8 @@ SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& l
     d.horizontal_fov = xml::childDouble(cam, "horizontal_fov", 1.047);
     if (auto* image = cam->FirstChildElement("image"))
     {
-      d.image_width = static_cast<int>(xml::childDouble(image, "width", 320));
-      d.image_height = static_cast<int>(xml::childDouble(image, "height", 240));
+      d.image_width = countOf(xml::childDouble(image, "width", 320));
+      d.image_height = countOf(xml::childDouble(image, "height", 240));
       d.image_format = xml::childText(image, "format", "R8G8B8");
     }
     if (auto* clip = cam->FirstChildElement("clip"))
