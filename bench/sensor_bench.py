@@ -3,9 +3,10 @@
 1. Rays per second of the real Tianracer's sensors, an 800 x 800 colour camera (80 degrees), a
    640 x 480 depth camera (60 degrees, 0.3 to 8 m) and the 1081-ray lidar, rendered from the car on
    worlds/race_track.world and on a race track made of meshes (the same walls as one OBJ, a textured
-   OBJ floor), through the previous ray caster (one ray at a time, kept in bench/ for this) and
-   through the plant's Embree path with one thread and with all: per CPU second (what one core
-   does) and per wall second. The subject is bench/sensor_cost.cpp (built by `make build`).
+   OBJ floor), with one thread and with all: per CPU second (what one core does) and per wall
+   second. The subject is bench/sensor_cost.cpp (built by `make build`). The ray caster Embree
+   replaced is gone from bench/; its figures, measured beside Embree's, are data
+   (bench/data/previous_ray_caster.csv), printed after the tables.
 2. The real car's sensor set at its rates (800 x 800 colour at 30 Hz, 640 x 480 depth at 20 Hz, the
    1081-ray lidar at 40 Hz, the 100 Hz IMU, all subscribed) on the mesh race track while the car drives: simulated
    seconds per wall second unpaced (the real time factor the node can hold is the smaller of that and
@@ -17,6 +18,7 @@
    side, medians of ISA_RUNS runs taken in turn: Embree runs the widest by default, so the figures
    above are those of the widest ISA, and a user's CPU may have a narrower one.
 """
+import csv
 import math
 import os
 import subprocess
@@ -159,30 +161,42 @@ def write_mesh_track(directory):
     return world, len(boxes)
 
 
-def rays_per_second(urdf_file, world):
-    out = subprocess.run([binary(), urdf_file, world, str(FRAMES)], capture_output=True, text=True, check=True)
-    rates, agree = {}, {}
-    for line in out.stdout.split('\n'):
+def rays_per_second(urdf_file, world, env=None, one_thread=False):
+    """(isa, {(sensor, threads): (rays per CPU second, rays per wall second)}) of one sensor_cost run."""
+    out = subprocess.run([binary(), urdf_file, world, str(FRAMES)] + (['--one-thread'] if one_thread else []),
+                         capture_output=True, text=True, check=True, env=env).stdout.split('\n')
+    isa = out[0].split()[1]
+    rates = {}
+    for line in out[1:]:
         words = line.split()
-        if len(words) == 5:
-            rates[(words[0], words[1], int(words[2]))] = (float(words[3]), float(words[4]))
-        elif len(words) == 3 and words[1] == 'agree':
-            agree[words[0]] = float(words[2])
-    return rates, agree
+        if len(words) == 4:
+            rates[(words[0], int(words[1]))] = (float(words[2]), float(words[3]))
+    return isa, rates
 
 
-def print_rates(title, rates, agree):
-    threads = max(t for _, _, t in rates)
+def print_rates(title, rates):
+    threads = max(t for _, t in rates)
     print(title)
-    print('  %-26s %15s %15s %17s   (M rays per CPU second / per wall second)'
-          % ('', 'previous path', 'Embree, 1 thread', 'Embree, %d threads' % threads))
+    print('  %-26s %16s %17s   (M rays per CPU second / per wall second)'
+          % ('', 'Embree, 1 thread', 'Embree, %d threads' % threads))
     for sensor, label in SENSOR_LABELS:
-        cells = []
-        for key in ((sensor, 'previous', 1), (sensor, 'embree', 1), (sensor, 'embree', threads)):
-            cpu, wall = rates[key]
-            cells.append('%6.1f / %5.1f' % (cpu / 1e6, wall / 1e6))
-        note = '  images agree within 2/255: %.1f %%' % (100 * agree[sensor]) if sensor in agree else ''
-        print('  %-26s %15s %15s %17s%s' % (label, cells[0], cells[1], cells[2], note))
+        cells = ['%6.1f / %5.1f' % (rates[(sensor, t)][0] / 1e6, rates[(sensor, t)][1] / 1e6) for t in (1, threads)]
+        print('  %-26s %16s %17s' % (label, cells[0], cells[1]))
+
+
+def print_previous_ray_caster():
+    """The figures of the ray caster Embree replaced, as recorded beside Embree's (bench/data)."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'data', 'previous_ray_caster.csv')
+    with open(path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith('#')))
+    print('the previous ray caster (one ray at a time; removed), as recorded beside Embree on one thread '
+          '(bench/data/previous_ray_caster.csv; M rays per CPU second):')
+    for row in rows:
+        agree = ', images agree within 2/255: %.1f %%' % (100 * float(row['images_agree'])) if row['images_agree'] else ''
+        print('  %-13s %-17s %-17s previous %5.1f, Embree %5.1f (x %.1f)%s' % (
+            row['machine'], row['world'], row['sensor'], float(row['previous_m_rays_per_cpu_s']),
+            float(row['embree_m_rays_per_cpu_s']),
+            float(row['embree_m_rays_per_cpu_s']) / float(row['previous_m_rays_per_cpu_s']), agree))
 
 
 def rays_per_cpu_second_by_isa(urdf_file, world):
@@ -191,13 +205,11 @@ def rays_per_cpu_second_by_isa(urdf_file, world):
     samples = {isa: {sensor: [] for sensor, _ in SENSOR_LABELS} for isa in isas}
     for _ in range(ISA_RUNS):
         for isa in isas:
-            out = subprocess.run([binary(), urdf_file, world, str(FRAMES), '--embree-one-thread'], capture_output=True,
-                                 text=True, check=True, env=dict(os.environ, TIANRACER_EMBREE_ISA=isa)).stdout.split('\n')
-            assert out[0] == 'isa ' + isa, 'sensor_cost ran %r, not %s' % (out[0], isa)
-            for line in out[1:]:
-                words = line.split()
-                if len(words) == 5 and words[1] == 'embree':
-                    samples[isa][words[0]].append(float(words[3]))
+            ran, rates = rays_per_second(urdf_file, world, env=dict(os.environ, TIANRACER_EMBREE_ISA=isa),
+                                         one_thread=True)
+            assert ran == isa, 'sensor_cost ran %s, not %s' % (ran, isa)
+            for sensor, _ in SENSOR_LABELS:
+                samples[isa][sensor].append(rates[(sensor, 1)][0])
     return {isa: {sensor: float(np.median(rates)) for sensor, rates in by_sensor.items()}
             for isa, by_sensor in samples.items()}
 
@@ -281,9 +293,10 @@ def main():
               % (cpu_name(), os.cpu_count(), ', '.join(bullet_plant.embree_isas()), isa))
         if sys.argv[1:] != ['--real-car']:
             print_rates('sensor rays on worlds/race_track.world (boxes and a plane), Embree on %s:' % isa,
-                        *rays_per_second(urdf_file, RACE_TRACK_WORLD))
+                        rays_per_second(urdf_file, RACE_TRACK_WORLD)[1])
             print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor), Embree on %s:'
-                        % (walls, 12 * walls, isa), *rays_per_second(urdf_file, mesh_world))
+                        % (walls, 12 * walls, isa), rays_per_second(urdf_file, mesh_world)[1])
+            print_previous_ray_caster()
         real_car_run(mesh_world, urdf)
         node_run(mesh_world, urdf_file)
         if sys.argv[1:] != ['--real-car']:
