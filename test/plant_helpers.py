@@ -50,6 +50,12 @@ def hold_steering(robot, angle=0.0):
         robot.set_effort_law(joint, stiffness=4.0, position_target=angle, damping=1.0)
 
 
+def logged(world, level, clear=False):
+    """The texts of the world's log messages at `level` ('ERROR', 'WARN', 'INFO'); `clear` empties the
+    log, so that a later call sees only what came after."""
+    return [text for at, text in world.messages(clear=clear) if at == level]
+
+
 def yaw_of(pose):
     qx, qy, qz, qw = pose[3:7]
     return math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from plant_helpers import all_state, make_world
+from plant_helpers import all_state, logged, make_world
 from tianracer_description import bullet_plant
 from tianracer_description.path_metrics import circle_radius
 from tianracer_description.tianracer import REAR_WHEEL_CONTROLLERS, STEERING_CONTROLLERS, TUTORIAL_CONTROLLERS
@@ -30,7 +30,8 @@ def car(urdf_xml, control_config):
 
 
 def errors(world):
-    return [text for level, text in world.messages(clear=True) if level == 'ERROR']
+    """The errors logged since the last call."""
+    return logged(world, 'ERROR', clear=True)
 
 
 def test_the_tutorials_five_controllers_run_with_their_resources(car):

@@ -8,7 +8,7 @@ import os
 import pytest
 import yaml
 
-from plant_helpers import make_world
+from plant_helpers import logged, make_world
 from tianracer_description.tianracer import MODEL_XACRO, PACKAGE, REAR_WHEEL_JOINTS, STEERING_JOINTS, run_xacro
 from tianracer_description.urdf_geometry import ackermann_geometry
 
@@ -52,7 +52,7 @@ def test_joint_group_controllers_drive_the_wheels_and_hold_the_hinges(world, urd
         # p 4, d 1: a first-order lag of 0.25 s, settled after 3 s
         assert robot.joint_state(joint)[0] == pytest.approx(target, abs=0.005), joint
     assert any('Dimension of command (1) does not match number of joints (2)! Not executing!' in text
-               for level, text in world.messages() if level == 'ERROR')
+               for text in logged(world, 'ERROR'))
 
 
 ACKERMANN_CONTROLLERS = ['joint_state_controller', 'ackermann_right_controller', 'ackermann_left_controller']

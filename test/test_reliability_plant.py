@@ -8,6 +8,7 @@ import re
 import numpy as np
 import pytest
 
+from plant_helpers import logged
 from tianracer_description import bullet_plant
 
 
@@ -15,10 +16,6 @@ def with_heavy_wheel(urdf):
     """The car with its first wheel link at 1e30 kg."""
     masses = iter(range(100))
     return re.sub(r'<mass value="[^"]+"/>', lambda m: '<mass value="1e30"/>' if next(masses) == 1 else m.group(0), urdf)
-
-
-def errors(world):
-    return [text for level, text in world.messages() if level == 'ERROR']
 
 
 def test_a_wheel_of_1e30_kg_is_refused_naming_it_and_the_limit(urdf_xml):
@@ -35,7 +32,7 @@ def test_a_huge_effort_on_a_passive_wheel_is_held_to_the_robots_limit_and_said_o
     world = bullet_plant.World()
     world.echo = False
     car = world.spawn(urdf_xml, 'car')
-    infos = [text for level, text in world.messages() if level == 'INFO']
+    infos = logged(world, 'INFO')
     assert any("'left_front_wheel_joint'" in t and 'no URDF effort limit' in t for t in infos), infos
     assert car.limits('left_front_wheel_joint')['effort'] == 1.0, "the car's largest (its motors' 1 N m)"
     for value in (1e308, 50.0):

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from plant_helpers import PLUGIN_URDF, make_world
+from plant_helpers import PLUGIN_URDF, logged, make_world
 from tianracer_description.tianracer import MODEL_XACRO, TUTORIAL_CONTROLLERS, run_xacro
 
 IMU_RATE = 100.0  # Hz, urdf/sensors.xacro
@@ -66,7 +66,7 @@ def test_robot_sim_type_other_than_the_default_is_an_error_and_no_controller_man
     world = make_world(control_config)
     urdf = urdf_xml.replace('gazebo_ros_control/DefaultRobotHWSim', 'my_robot_hw/MyRobotHWSim')
     robot = world.spawn(urdf, 'tianracer')
-    errors = [text for level, text in world.messages() if level == 'ERROR']
+    errors = logged(world, 'ERROR')
     assert any("robotSimType 'my_robot_hw/MyRobotHWSim'" in e for e in errors), errors
     with pytest.raises(ValueError):
         robot.controller_manager

@@ -10,6 +10,7 @@ import re
 
 import pytest
 
+from plant_helpers import logged
 from tianracer_description import bullet_plant
 
 WALL_SDF = """<?xml version="1.0"?>
@@ -76,10 +77,6 @@ def collisions(world):
     return {c['name']: c for c in world.static_collisions()}
 
 
-def warnings(world):
-    return [text for level, text in world.messages() if level == 'WARN']
-
-
 def range_along_x(world, y=0.0, z=0.25):
     # z within the 1 m walls' height (they span z -0.5 .. 0.5), not along a face's edge
     return world.cast_ray([0.0, y, z], [1.0, 0.0, 0.0], 20.0)
@@ -106,7 +103,7 @@ def test_include_from_gazebo_model_path_takes_the_includes_name_and_pose(tmp_pat
     # The box is where the include puts it: a ray along x stops at its near face (3 - 0.05).
     assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
     assert range_along_x(world, y=1.5) == math.inf  # past the 2 m wall's end
-    assert warnings(world) == []
+    assert logged(world, 'WARN') == []
 
 
 def test_include_without_pose_or_name_keeps_the_models_own(tmp_path, model_path):
@@ -146,7 +143,7 @@ def test_include_through_a_packages_gazebo_model_path_export(tmp_path, monkeypat
     monkeypatch.setenv('ROS_PACKAGE_PATH', str(tmp_path / 'ws' / 'src'))
     world = load(write(tmp_path / 'w.world', world_sdf(include('model://exported_wall', pose='5 0 0 0 0 0'))))
     assert range_along_x(world) == pytest.approx(4.95, abs=1e-3)
-    assert warnings(world) == []
+    assert logged(world, 'WARN') == []
 
 
 def test_nested_include_is_placed_in_its_parents_frame(tmp_path, model_path):
@@ -180,7 +177,7 @@ def test_mesh_uris_resolve_against_the_file_that_names_them(tmp_path, model_path
     assert statue['mesh_file'] == str(model_dir / 'meshes' / 'statue.stl')
     assert found['rocks::link::rock']['mesh_file'] == str(tmp_path / 'worlds' / 'meshes' / 'rock.stl')
     assert found['rocks::link::base']['mesh_file'] == str(model_dir / 'meshes' / 'base.stl')
-    assert not [w for w in warnings(world) if 'not found' in w or 'not supported' in w]
+    assert not [w for w in logged(world, 'WARN') if 'not found' in w or 'not supported' in w]
 
 
 def test_a_missing_mesh_is_one_warning_and_the_rest_runs(tmp_path, model_path):
@@ -189,8 +186,8 @@ def test_a_missing_mesh_is_one_warning_and_the_rest_runs(tmp_path, model_path):
   {MESH_COLLISION.format(name='lost', uri='meshes/gone.dae', scale='1 1 1')}
   {wall(pose='3 0 0 0 0 0')}
 </link></model>""")))
-    about_it = [w for w in warnings(world) if 'meshes/gone.dae' in w]
-    assert len(about_it) == 1, warnings(world)
+    about_it = [w for w in logged(world, 'WARN') if 'meshes/gone.dae' in w]
+    assert len(about_it) == 1, logged(world, 'WARN')
     assert "ruin::link::lost" in about_it[0] and 'w.world' in about_it[0] and 'left out' in about_it[0]
     assert str(tmp_path / 'meshes' / 'gone.dae') in about_it[0]  # where it looked
     assert 'ruin::link::lost' not in collisions(world)
@@ -207,7 +204,7 @@ def test_unsupported_geometry_and_unknown_includes_are_one_warning_each(tmp_path
   {wall(pose='3 0 0 0 0 0')}
 </link></model>
 <actor name="walker"/>""")))
-    found = warnings(world)
+    found = logged(world, 'WARN')
     for what in ('no_such_model', 'terrain::link::hills', 'terrain::link::curb', '<actor>'):
         about_it = [w for w in found if what in w]
         assert len(about_it) == 1, (what, found)
@@ -223,7 +220,7 @@ def test_static_comes_from_the_include_over_the_model(tmp_path, model_path):
     world = load(write(tmp_path / 'w.world', world_sdf(
         include('model://crate', pose='3 0 0 0 0 0', name='loose_crate') +
         include('model://crate', pose='3 3 0 0 0 0', name='fixed_crate', static='true'))))
-    not_static = [w for w in warnings(world) if 'not static' in w]
+    not_static = [w for w in logged(world, 'WARN') if 'not static' in w]
     assert len(not_static) == 1 and "'loose_crate'" in not_static[0], not_static
     # kept still, as world models are: the crate stays where it is
     world.step(200)
@@ -235,7 +232,7 @@ def test_ground_plane_and_sun_are_built_in(tmp_path, monkeypatch):
     monkeypatch.setenv('ROS_PACKAGE_PATH', str(tmp_path / 'empty'))
     world = load(write(tmp_path / 'w.world', world_sdf(include('model://ground_plane', name='floor',
                                                                 pose='0 0 0.25 0 0 0'))))
-    assert warnings(world) == []
+    assert logged(world, 'WARN') == []
     found = collisions(world)
     assert found['ground_plane::link::collision']['kind'] == 'plane'
     assert found['floor::link::collision']['pose'][2] == pytest.approx(0.25)
@@ -277,7 +274,7 @@ def test_shipped_worlds_read_by_file_as_by_text():
         by_text.echo = False
         assert by_file.file == path
         assert by_file.static_collisions().__repr__() == by_text.static_collisions().__repr__()
-        assert len(warnings(by_file)) == len(warnings(by_text))
+        assert len(logged(by_file, 'WARN')) == len(logged(by_text, 'WARN'))
         assert math.isfinite(by_file.time_step)
 
 
