@@ -19,8 +19,8 @@
 #include <thread>
 
 #include "bullet_plant/world.h"
-#include "internals.h"
-#include "sensor_rendering.h"
+#include "simulation/internals.h"
+#include "sensors/sensor_rendering.h"
 
 using namespace bullet_plant;
 

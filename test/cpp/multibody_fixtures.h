@@ -17,7 +17,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "bullet_plant/world.h"
-#include "internals.h"
+#include "simulation/internals.h"
 #include "physics/dense_row_solver.h"
 #include "physics/dynamics_world.h"
 

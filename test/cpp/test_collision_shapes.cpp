@@ -10,7 +10,7 @@
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 
-#include "collision_shapes.h"
+#include "simulation/collision_shapes.h"
 #include "mesh_fixtures.h"
 
 using namespace bullet_plant;

@@ -8,7 +8,7 @@
 #include <stb/stb_image_write.h>
 
 #include "mesh_fixtures.h"
-#include "mesh_loader.h"
+#include "description/mesh_loader.h"
 
 using namespace bullet_plant;
 using namespace mesh_fixtures;

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "mesh_fixtures.h"
-#include "ray_caster.h"
+#include "rendering/ray_caster.h"
 
 using namespace bullet_plant;
 using namespace mesh_fixtures;

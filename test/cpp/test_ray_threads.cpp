@@ -1,4 +1,4 @@
-// The sensors' thread pool (src/plant/ray_threads.cpp): every task of a job runs once, for any
+// The sensors' thread pool (src/plant/rendering/ray_threads.cpp): every task of a job runs once, for any
 // number of threads and tasks, and concurrent callers take turns.
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "ray_threads.h"
+#include "rendering/ray_threads.h"
 
 using namespace bullet_plant;
 

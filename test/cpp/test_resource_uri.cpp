@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "resource_uri.h"
+#include "description/resource_uri.h"
 
 using namespace bullet_plant;
 namespace fs = std::filesystem;

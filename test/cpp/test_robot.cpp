@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "bullet_plant/world.h"
-#include "internals.h"
+#include "simulation/internals.h"
 
 using namespace bullet_plant;
 

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "bullet_plant/world.h"
-#include "internals.h"
+#include "simulation/internals.h"
 #include "mesh_fixtures.h"
-#include "robot_builder.h"
+#include "simulation/robot_builder.h"
 
 using namespace bullet_plant;
 

@@ -1,4 +1,4 @@
-#include "ray_threads.h"
+#include "rendering/ray_threads.h"
 
 #include <algorithm>
 #include <atomic>

@@ -10,8 +10,8 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/log.h"
-#include "mesh_loader.h"
-#include "ray_caster.h"
+#include "description/mesh_loader.h"
+#include "rendering/ray_caster.h"
 
 namespace bullet_plant
 {

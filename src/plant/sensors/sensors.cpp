@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "sensor_rendering.h"
+#include "sensors/sensor_rendering.h"
 
 namespace bullet_plant
 {

@@ -1,4 +1,4 @@
-#include "ray_caster.h"
+#include "rendering/ray_caster.h"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "ray_threads.h"
+#include "rendering/ray_threads.h"
 
 namespace bullet_plant
 {

@@ -19,9 +19,9 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/ray_kernels.h"
-#include "mesh_loader.h"
+#include "description/mesh_loader.h"
 #include "physics/spatial.h"
-#include "ray_threads.h"  // setRayThreads, rayThreads
+#include "rendering/ray_threads.h"  // setRayThreads, rayThreads
 
 namespace bullet_plant
 {

@@ -14,9 +14,9 @@
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/world.h"
-#include "joint_layer_sim.h"
-#include "ray_caster.h"
-#include "robot_multibody.h"
+#include "hardware/joint_layer_sim.h"
+#include "rendering/ray_caster.h"
+#include "simulation/robot_multibody.h"
 
 namespace bullet_plant
 {

@@ -1,4 +1,4 @@
-#include "xml_util.h"
+#include "description/xml_util.h"
 
 #include <cmath>
 #include <sstream>

@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "joint_layer_sim.h"
+#include "hardware/joint_layer_sim.h"
 
 namespace bullet_plant
 {

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "internals.h"
+#include "simulation/internals.h"
 
 namespace bullet_plant
 {

@@ -17,7 +17,7 @@
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/log.h"
 #include "physics/joint_drive.h"
-#include "ray_caster.h"
+#include "rendering/ray_caster.h"
 
 namespace bullet_plant
 {

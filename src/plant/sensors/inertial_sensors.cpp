@@ -6,7 +6,7 @@
 #include <random>
 
 #include "bullet_plant/geometry.h"
-#include "xml_util.h"
+#include "description/xml_util.h"
 
 namespace bullet_plant
 {

@@ -10,7 +10,7 @@
 #include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 
-#include "xml_util.h"
+#include "description/xml_util.h"
 
 namespace bullet_plant
 {

@@ -1,4 +1,4 @@
-#include "resource_uri.h"
+#include "description/resource_uri.h"
 
 #include <cstdlib>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "collision_shapes.h"
+#include "simulation/collision_shapes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <LinearMath/btConvexHullComputer.h>
 
-#include "resource_uri.h"
+#include "description/resource_uri.h"
 
 namespace bullet_plant
 {

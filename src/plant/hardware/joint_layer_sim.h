@@ -10,7 +10,7 @@
 #include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/log.h"
-#include "robot_multibody.h"
+#include "simulation/robot_multibody.h"
 
 namespace bullet_plant
 {

@@ -11,8 +11,8 @@
 
 #include "bullet_plant/log.h"
 #include "bullet_plant/robot_description.h"
-#include "resource_uri.h"
-#include "xml_util.h"
+#include "description/resource_uri.h"
+#include "description/xml_util.h"
 
 namespace bullet_plant
 {

@@ -1,4 +1,4 @@
-#include "robot_builder.h"
+#include "simulation/robot_builder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/params.h"
-#include "collision_shapes.h"
+#include "simulation/collision_shapes.h"
 
 namespace bullet_plant
 {

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "bullet_plant/sensors.h"
-#include "ray_caster.h"
+#include "rendering/ray_caster.h"
 
 namespace bullet_plant
 {

@@ -9,12 +9,12 @@
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
-#include "collision_shapes.h"
-#include "internals.h"
+#include "simulation/collision_shapes.h"
+#include "simulation/internals.h"
 #include "physics/dense_row_solver.h"
 #include "physics/dynamics_world.h"
 #include "physics/wheel_contact.h"
-#include "robot_builder.h"
+#include "simulation/robot_builder.h"
 
 namespace bullet_plant
 {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "internals.h"
+#include "simulation/internals.h"
 #include "physics/multibody_dynamics.h"
-#include "robot_builder.h"
-#include "sensor_rendering.h"
+#include "simulation/robot_builder.h"
+#include "sensors/sensor_rendering.h"
 
 namespace bullet_plant
 {

@@ -1,4 +1,4 @@
-#include "mesh_loader.h"
+#include "description/mesh_loader.h"
 
 #include <algorithm>
 #include <array>
