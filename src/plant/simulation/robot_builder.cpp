@@ -579,25 +579,16 @@ std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescriptio
 {
   Log& log = r.world->log;
   const uint32_t seed = seedFor(r.name + "/" + s.name);
-  if (s.type == "ray" || s.type == "gpu_ray")
+  const bool lidar = s.type == "ray" || s.type == "gpu_ray", camera = s.type == "camera" || s.type == "depth";
+  if (lidar || camera)
   {
-    const std::string problem = lidarProblem(s);
+    const std::string problem = lidar ? lidarProblem(s) : cameraProblem(s);
     if (!problem.empty())
     {
       log.error("sensor '" + s.name + "' (" + s.type + ") of '" + r.name + "': " + problem + "; it publishes nothing");
       return nullptr;
     }
-    return std::unique_ptr<Sensor>(new Lidar(s, seed));
-  }
-  if (s.type == "camera" || s.type == "depth")
-  {
-    const std::string problem = cameraProblem(s);
-    if (!problem.empty())
-    {
-      log.error("camera '" + s.name + "' (" + s.type + ") of '" + r.name + "': " + problem + "; it publishes nothing");
-      return nullptr;
-    }
-    return std::unique_ptr<Sensor>(new Camera(s, seed));
+    return lidar ? std::unique_ptr<Sensor>(new Lidar(s, seed)) : std::unique_ptr<Sensor>(new Camera(s, seed));
   }
   if (s.type == "imu")
   {
