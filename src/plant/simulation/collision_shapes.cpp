@@ -7,6 +7,7 @@
 #include <LinearMath/btConvexHullComputer.h>
 
 #include "description/resource_uri.h"
+#include "physics/bullet_conversions.h"
 
 namespace bullet_plant
 {
@@ -127,7 +128,7 @@ btCollisionShape* makeCollisionShape(const Shape& s)
       shape = new btSphereShape(btScalar(s.radius));
       break;
     case Shape::Kind::Plane:
-      shape = new btStaticPlaneShape(btVector3(btScalar(s.normal.x), btScalar(s.normal.y), btScalar(s.normal.z)), 0);
+      shape = new btStaticPlaneShape(toBullet(s.normal), 0);
       break;
     case Shape::Kind::Mesh:
       return nullptr;  // makeCollider

@@ -5,10 +5,11 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "simulation/internals.h"
+#include "physics/bullet_conversions.h"
 #include "physics/multibody_dynamics.h"
-#include "simulation/robot_builder.h"
 #include "sensors/sensor_rendering.h"
+#include "simulation/internals.h"
+#include "simulation/robot_builder.h"
 
 namespace bullet_plant
 {
@@ -244,8 +245,8 @@ LinkMotion Robot::Internals::linkMotion(const std::string& link, const urdf::Pos
   const btVector3 v = v_com + omega.cross(frame.getOrigin() - multibody.bodyWorldTransform(body).getOrigin());
   LinkMotion m;
   m.pose = fromBullet(frame);
-  m.velocity = urdf::Vector3(v.x(), v.y(), v.z());
-  m.angular_velocity = urdf::Vector3(omega.x(), omega.y(), omega.z());
+  m.velocity = fromBullet(v);
+  m.angular_velocity = fromBullet(omega);
   return m;
 }
 
@@ -357,8 +358,6 @@ const MovableJoint& movableJoint(const RobotMultibody& multibody, const std::str
     throw std::out_of_range("robot '" + robot + "' has no movable joint '" + joint + "'");
   return multibody.joints[it->second];
 }
-
-btVector3 toBullet(const urdf::Vector3& v) { return btVector3(btScalar(v.x), btScalar(v.y), btScalar(v.z)); }
 
 int64_t jobEnd(int64_t start_ns, int64_t duration_ns) { return duration_ns < 0 ? -1 : start_ns + duration_ns; }
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/params.h"
+#include "physics/bullet_conversions.h"
 #include "simulation/collision_shapes.h"
 
 namespace bullet_plant
@@ -26,7 +27,6 @@ constexpr double kDefaultEffortLimit = 100.0;
 constexpr int kMaxRaysPerScan = 1 << 22;
 constexpr int kMaxPixelsPerImage = 1 << 25;
 
-btVector3 vec(const urdf::Vector3& v) { return btVector3(btScalar(v.x), btScalar(v.y), btScalar(v.z)); }
 
 // Inertia tensor of a link's <inertial> about its centre of mass, in the link frame.
 btMatrix3x3 inertiaInLink(const urdf::Inertial& in)
@@ -157,7 +157,7 @@ void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool wo
       if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
         continue;
       mass += link->inertial->mass;
-      weighted += kv.second.second * vec(link->inertial->origin.position) * btScalar(link->inertial->mass);
+      weighted += kv.second.second * toBullet(link->inertial->origin.position) * btScalar(link->inertial->mass);
     }
     // Below the minimum the body gets kMinimumMass at its frame: a mass of 1e-40 kg would divide
     // by a single-precision zero.
@@ -171,7 +171,7 @@ void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool wo
       const btTransform& in_body = kv.second.second;
       btMatrix3x3 R = in_body.getBasis();
       btMatrix3x3 own = R * inertiaInLink(*link->inertial) * R.transpose();
-      btVector3 d = in_body * vec(link->inertial->origin.position) - com;
+      btVector3 d = in_body * toBullet(link->inertial->origin.position) - com;
       btScalar m = btScalar(link->inertial->mass);
       btMatrix3x3 shift(d.dot(d) - d.x() * d.x(), -d.x() * d.y(), -d.x() * d.z(),
                         -d.y() * d.x(), d.dot(d) - d.y() * d.y(), -d.y() * d.z(),
@@ -201,8 +201,8 @@ bool fitWheelToJoint(const urdf::Joint* joint, Collider& collider, Shape& shape,
 {
   Shape wheel;
   btTransform wheel_in_link;
-  if (!joint || joint->type != urdf::Joint::CONTINUOUS || vec(joint->axis).length2() == 0 ||
-      !fitWheelCylinder(*collider.mesh, in_link, vec(joint->axis), wheel, wheel_in_link))
+  if (!joint || joint->type != urdf::Joint::CONTINUOUS || toBullet(joint->axis).length2() == 0 ||
+      !fitWheelCylinder(*collider.mesh, in_link, toBullet(joint->axis), wheel, wheel_in_link))
     return false;
   collider.shape.reset(makeCollisionShape(wheel));
   collider.note = "is wheel-shaped about continuous joint '" + joint->name + "': it collides as a cylinder of radius " +
@@ -345,7 +345,7 @@ std::vector<double> createMultibody(Robot::Internals& r, const std::vector<BodyP
     btTransform offset_in_parent = parent.urdf_from_com.inverse() * plans[bi].joint_in_parent;  // joint in parent COM
     btTransform offset_in_child = body.urdf_from_com.inverse();                                  // joint in child COM
     btQuaternion parent_to_this = offset_in_child.getRotation() * offset_in_parent.getRotation().inverse();
-    btVector3 axis = offset_in_child.getBasis() * vec(joint.axis);
+    btVector3 axis = offset_in_child.getBasis() * toBullet(joint.axis);
     if (axis.length2() < btScalar(1e-12))
       axis = offset_in_child.getBasis() * btVector3(1, 0, 0);  // urdfdom's default axis
     axis.normalize();

@@ -16,6 +16,7 @@
 
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/log.h"
+#include "physics/bullet_conversions.h"
 #include "physics/joint_drive.h"
 #include "rendering/ray_caster.h"
 
@@ -24,9 +25,6 @@ namespace bullet_plant
 // Bullet clamps every joint rate to this (btMultiBody::setMaxCoordinateVelocity), rad/s or m/s; the
 // joint layer holds velocity commands to it too.
 constexpr double kMaxJointSpeed = 1e4;
-
-btTransform toBullet(const urdf::Pose& p);
-urdf::Pose fromBullet(const btTransform& t);
 
 // A rigid body of the multibody: one URDF link with a movable parent joint (or the root) and every
 // link fixed to it. Bullet wants each body's frame at its centre of mass along its principal axes;

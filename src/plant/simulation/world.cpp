@@ -9,33 +9,16 @@
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
-#include "simulation/collision_shapes.h"
-#include "simulation/internals.h"
+#include "physics/bullet_conversions.h"
 #include "physics/dense_row_solver.h"
 #include "physics/dynamics_world.h"
 #include "physics/wheel_contact.h"
+#include "simulation/collision_shapes.h"
+#include "simulation/internals.h"
 #include "simulation/robot_builder.h"
 
 namespace bullet_plant
 {
-btTransform toBullet(const urdf::Pose& p)
-{
-  btQuaternion q(btScalar(p.rotation.x), btScalar(p.rotation.y), btScalar(p.rotation.z), btScalar(p.rotation.w));
-  if (q.length2() < btScalar(1e-12))
-    q = btQuaternion::getIdentity();
-  q.normalize();
-  return btTransform(q, btVector3(btScalar(p.position.x), btScalar(p.position.y), btScalar(p.position.z)));
-}
-
-urdf::Pose fromBullet(const btTransform& t)
-{
-  urdf::Pose p;
-  btQuaternion q = t.getRotation();
-  p.rotation = urdf::Rotation(q.x(), q.y(), q.z(), q.w());
-  p.position = urdf::Vector3(t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z());
-  return p;
-}
-
 namespace
 {
 // Gazebo (ODE) combines the friction of two surfaces by taking the smaller; Bullet multiplies.
@@ -128,7 +111,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
   w.solver.reset(solver);
   w.dynamics.reset(new DynamicsWorld(w.dispatcher.get(), w.broadphase.get(), solver, w.collision_config.get()));
   const urdf::Vector3& g = description.gravity;
-  w.dynamics->setGravity(btVector3(btScalar(g.x), btScalar(g.y), btScalar(g.z)));
+  w.dynamics->setGravity(toBullet(g));
   btContactSolverInfo& info = w.dynamics->getSolverInfo();
   // Ten passes: with every row warm started (DenseRowSolver) the car creeps 0.15 mm in 10 s at
   // rest; Bullet's cold-started friction needed twenty passes for 0.45 mm.
@@ -210,14 +193,14 @@ void World::setTimeStep(double seconds)
 urdf::Vector3 World::gravity() const
 {
   const btVector3 g = in_->dynamics->getGravity();
-  return urdf::Vector3(g.x(), g.y(), g.z());
+  return fromBullet(g);
 }
 
 void World::setGravity(const urdf::Vector3& g)
 {
   if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z))
     throw std::invalid_argument("gravity must be finite");
-  in_->dynamics->setGravity(btVector3(btScalar(g.x), btScalar(g.y), btScalar(g.z)));
+  in_->dynamics->setGravity(toBullet(g));
 }
 int64_t World::timeNs() const { return in_->time_ns; }
 double World::time() const { return in_->time_ns * 1e-9; }
