@@ -96,6 +96,10 @@ YAW_RATE_DRIVE = """
     yaw_rates = []
     rospy.Subscriber('/tianracer/odom', Odometry, lambda m: yaw_rates.append(m.twist.twist.angular.z))
     pub = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
+    # the 4 s start once the converter listens and odometry arrives (connecting takes seconds on a
+    # slow machine)
+    while (pub.get_num_connections() == 0 or not yaw_rates) and not rospy.is_shutdown():
+        rospy.sleep(0.05)
     twist = Twist()
     twist.linear.x, twist.angular.z = 0.5, 0.4
     end = rospy.get_time() + 4.0
