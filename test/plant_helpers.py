@@ -1,5 +1,6 @@
 """Helpers for the tests that drive the plant through its Python module (no ROS master)."""
 import math
+import os
 import struct
 
 import numpy as np
@@ -17,6 +18,16 @@ ISAS_RUN = set()  # the ISAs tests of this session ran on, for the closing summa
 def embree_isas():
     """The instruction sets of Embree's kernels this CPU runs, narrowest first (sse2 ... avx512)."""
     return bullet_plant.embree_isas()
+
+
+# The Gazebo-style package the tests ship (test/fixtures/gazebo_pkg) and its mesh track world.
+FIXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'fixtures')
+TRACK_WORLD = os.path.join(FIXTURES, 'gazebo_pkg', 'worlds', 'track.world')
+
+
+def find_fixture_packages(monkeypatch):
+    """The fixture packages on ROS_PACKAGE_PATH: model://race_track resolves through their export."""
+    monkeypatch.setenv('ROS_PACKAGE_PATH', FIXTURES + os.pathsep + os.environ['ROS_PACKAGE_PATH'])
 
 
 def sdf_world(models='', step=0.001):

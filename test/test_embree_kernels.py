@@ -4,17 +4,14 @@ Collada floor, STL walls) see the same thing on each. Embree runs 4-wide SSE, 8-
 16-wide AVX-512 kernels whose float arithmetic differs in order: measured on an AMD EPYC (Zen 4),
 the colour images are bit-identical and distances differ by at most 1.9e-6 m (two float steps at
 8 m); the test allows 1e-5 m."""
-import os
 
 import numpy as np
 import pytest
 
-from plant_helpers import ISA_VARIABLE, ISAS_RUN, embree_isas
+from plant_helpers import ISA_VARIABLE, ISAS_RUN, TRACK_WORLD, embree_isas, find_fixture_packages
 from tianracer_description import bullet_plant
 from tianracer_description.tianracer import CONFIG_YAML
 
-FIXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'fixtures')
-TRACK_WORLD = os.path.join(FIXTURES, 'gazebo_pkg', 'worlds', 'track.world')
 DISTANCE_TOLERANCE = 1e-5  # m
 
 
@@ -34,7 +31,7 @@ def sensor_readings(urdf_xml):
 
 
 def test_every_kernel_sees_the_same_frames_and_scans(urdf_xml, monkeypatch):
-    monkeypatch.setenv('ROS_PACKAGE_PATH', FIXTURES + os.pathsep + os.environ['ROS_PACKAGE_PATH'])
+    find_fixture_packages(monkeypatch)
     isas = embree_isas()
     readings = {}
     for isa in isas:
@@ -59,7 +56,7 @@ def test_every_kernel_sees_the_same_frames_and_scans(urdf_xml, monkeypatch):
 
 
 def test_a_variable_the_plant_cannot_follow_is_named_and_the_widest_kernels_cast(urdf_xml, monkeypatch):
-    monkeypatch.setenv('ROS_PACKAGE_PATH', FIXTURES + os.pathsep + os.environ['ROS_PACKAGE_PATH'])
+    find_fixture_packages(monkeypatch)
     monkeypatch.setenv(ISA_VARIABLE, 'avx1024')
     assert bullet_plant.embree_isa() == {
         'name': embree_isas()[-1], 'forced': False,

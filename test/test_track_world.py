@@ -3,16 +3,13 @@ package's gazebo_ros export, with a Collada floor in centimetres and STL walls, 
 includes it by model:// with its own name and pose), run through the Python module: the car lands on
 the mesh floor, drives along the mesh walls and stops against one; a static URDF body holds still
 under a landing car."""
-import os
 
 import numpy as np
 import pytest
 
-from plant_helpers import hold_steering
+from plant_helpers import TRACK_WORLD, find_fixture_packages, hold_steering
 from tianracer_description import bullet_plant
 
-FIXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'fixtures')
-TRACK_WORLD = os.path.join(FIXTURES, 'gazebo_pkg', 'worlds', 'track.world')
 FLOOR_TOP = 0.5   # the include's <pose> lifts the track by 0.5 m (the world adds a ground plane at 0)
 END_WALL = 11.0   # the end wall's near face, m along x
 COMMAND = 31.25   # rad/s on the rear wheels: 1 m/s
@@ -20,8 +17,7 @@ COMMAND = 31.25   # rad/s on the rear wheels: 1 m/s
 
 @pytest.fixture
 def track(monkeypatch, urdf_xml, control_config):
-    # The fixture package on ROS_PACKAGE_PATH: model://race_track resolves through its export.
-    monkeypatch.setenv('ROS_PACKAGE_PATH', FIXTURES + os.pathsep + os.environ['ROS_PACKAGE_PATH'])
+    find_fixture_packages(monkeypatch)
     world = bullet_plant.World.from_file(TRACK_WORLD)
     world.echo = False
     world.load_params(control_config)
