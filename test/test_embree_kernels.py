@@ -6,7 +6,6 @@ the colour images are bit-identical and distances differ by at most 1.9e-6 m (tw
 8 m); the test allows 1e-5 m."""
 
 import numpy as np
-import pytest
 
 from plant_helpers import ISA_VARIABLE, ISAS_RUN, TRACK_WORLD, embree_isas, find_fixture_packages
 from tianracer_description import bullet_plant
