@@ -35,6 +35,8 @@ public:
   void setTimeStep(double seconds);
   urdf::Vector3 gravity() const;
   void setGravity(const urdf::Vector3& gravity);
+  // The constraint solver's passes per step (get_physics_properties' sor_pgs_iters).
+  int solverIterations() const;
   int64_t timeNs() const;         // simulated time
   double time() const;
   uint64_t steps() const;

@@ -10,7 +10,7 @@
 #include <std_msgs/Float64MultiArray.h>
 
 #include "bullet_plant/controller_manager.h"
-#include "odometry_publisher.h"
+#include "msg_conversions.h"
 #include "ros_plant.h"
 #include "ros_time.h"
 

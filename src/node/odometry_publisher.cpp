@@ -4,7 +4,7 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/robot.h"
-#include "ros_time.h"
+#include "msg_conversions.h"
 
 namespace bullet_plant
 {
@@ -12,41 +12,6 @@ OdometryPublisher::OdometryPublisher(Robot& robot, ros::NodeHandle& nh) : robot_
 {
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
-}
-
-nav_msgs::Odometry odometryMessage(int64_t stamp_ns, const std::string& frame, const std::string& child,
-                                   const urdf::Pose& pose, const urdf::Vector3& linear, const urdf::Vector3& angular)
-{
-  nav_msgs::Odometry odom;
-  odom.header.stamp = rosTime(stamp_ns);
-  odom.header.frame_id = frame;
-  odom.child_frame_id = child;
-  odom.pose.pose.position.x = pose.position.x;
-  odom.pose.pose.position.y = pose.position.y;
-  odom.pose.pose.position.z = pose.position.z;
-  odom.pose.pose.orientation.x = pose.rotation.x;
-  odom.pose.pose.orientation.y = pose.rotation.y;
-  odom.pose.pose.orientation.z = pose.rotation.z;
-  odom.pose.pose.orientation.w = pose.rotation.w;
-  odom.twist.twist.linear.x = linear.x;
-  odom.twist.twist.linear.y = linear.y;
-  odom.twist.twist.linear.z = linear.z;
-  odom.twist.twist.angular.x = angular.x;
-  odom.twist.twist.angular.y = angular.y;
-  odom.twist.twist.angular.z = angular.z;
-  return odom;
-}
-
-geometry_msgs::TransformStamped odometryTransform(const nav_msgs::Odometry& odom)
-{
-  geometry_msgs::TransformStamped tf;
-  tf.header = odom.header;
-  tf.child_frame_id = odom.child_frame_id;
-  tf.transform.translation.x = odom.pose.pose.position.x;
-  tf.transform.translation.y = odom.pose.pose.position.y;
-  tf.transform.translation.z = odom.pose.pose.position.z;
-  tf.transform.rotation = odom.pose.pose.orientation;
-  return tf;
 }
 
 void OdometryPublisher::publish(int64_t time_ns, bool tf)

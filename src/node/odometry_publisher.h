@@ -4,21 +4,11 @@
 
 #include <cstdint>
 
-#include <geometry_msgs/TransformStamped.h>
-#include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
-#include <urdf_model/pose.h>
 
 namespace bullet_plant
 {
 class Robot;
-
-// nav_msgs/Odometry of a pose in `frame` and a twist in `child` (what nav_msgs/Odometry's twist is
-// in), covariances 0; and the frame -> child transform it implies, for /tf. One place for both, used
-// by the ground truth here and by the drive controllers' odometry (controller_topics.cpp).
-nav_msgs::Odometry odometryMessage(int64_t stamp_ns, const std::string& frame, const std::string& child,
-                                   const urdf::Pose& pose, const urdf::Vector3& linear, const urdf::Vector3& angular);
-geometry_msgs::TransformStamped odometryTransform(const nav_msgs::Odometry& odom);
 
 class OdometryPublisher
 {

@@ -12,8 +12,11 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
   : nh_(robot.controlNamespace().empty()
             ? "/"
             : requireValidRosName(robot.controlNamespace(), "robot '" + robot.name() + "' robotNamespace")),
-    odometry_(robot, nh_), sensors_(robot)
+    odometry_(robot, nh_), robot_(robot)
 {
+  for (Sensor* sensor : robot.sensors())
+    if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor))
+      sensor_plugins_.push_back({sensor, std::move(plugin)});
   const std::string& estop = robot.description().control.e_stop_topic;
   if (!estop.empty())
     estop_sub_ = nh_.subscribe<std_msgs::Bool>(requireValidRosName(estop, "robot '" + robot.name() + "' eStopTopic"), 1, [&plant, &robot](const std_msgs::BoolConstPtr& m) {
@@ -32,7 +35,20 @@ void RobotInterface::publish(int64_t time_ns)
   if (controller_topics_)
     controller_topics_->publish();
   odometry_.publish(time_ns, !(controller_topics_ && controller_topics_->publishesOdometryTransform()));
-  sensors_.publish();
+  for (LoadedPlugin& loaded : sensor_plugins_)
+    loaded.plugin->OnUpdate();
+}
+
+void RobotInterface::updateSubscriptions()
+{
+  for (LoadedPlugin& loaded : sensor_plugins_)
+  {
+    const bool active = loaded.plugin->subscribed();
+    if (loaded.sensor->active() != active)
+      ROS_INFO("%s sensor '%s': %s", robot_.name().c_str(), loaded.sensor->name().c_str(),
+               active ? "subscribed, computing" : "no subscribers, idle");
+    loaded.sensor->setActive(active);
+  }
 }
 
 }  // namespace bullet_plant

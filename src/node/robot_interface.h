@@ -1,16 +1,18 @@
-// One robot's ROS side, composed of one part per concern: odometry, sensors, the e-stop and, when
+// One robot's ROS side, composed of one part per concern: odometry, its sensors' gazebo_ros plugins
+// (one file each, sensor_plugin.h), the e-stop and, when
 // the URDF has a gazebo_ros_control block, the controller topics and the controller manager services.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <ros/ros.h>
 
 #include "controller_manager_services.h"
 #include "controller_topics.h"
 #include "odometry_publisher.h"
-#include "sensor_publishers.h"
+#include "sensor_plugin.h"
 
 namespace bullet_plant
 {
@@ -22,14 +24,21 @@ class RobotInterface
 public:
   // On the simulation thread (it advertises and subscribes in the robot's control namespace).
   RobotInterface(RosPlant& plant, Robot& robot);
-  void updateSubscriptions() { sensors_.updateSubscriptions(); }
+  // Turns each sensor on while someone subscribes to one of its plugin's topics, off otherwise.
+  void updateSubscriptions();
   // After each step, on the simulation thread.
   void publish(int64_t time_ns);
 
 private:
   ros::NodeHandle nh_;
   OdometryPublisher odometry_;
-  SensorPublishers sensors_;
+  struct LoadedPlugin
+  {
+    Sensor* sensor;
+    std::unique_ptr<SensorPlugin> plugin;
+  };
+  Robot& robot_;
+  std::vector<LoadedPlugin> sensor_plugins_;
   ros::Subscriber estop_sub_;
   std::unique_ptr<ControllerTopics> controller_topics_;  // these two: null without a controller manager
   std::unique_ptr<ControllerManagerServices> manager_services_;

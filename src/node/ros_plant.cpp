@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
-#include "gazebo_interface.h"
+#include "gazebo_ros_api_plugin.h"
 #include "robot_interface.h"
 #include "ros_names.h"
 #include "ros_time.h"
@@ -125,7 +125,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), 
   applyPaused(paused);
 
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-  gazebo_.reset(new GazeboInterface(*this, private_nh_));
+  gazebo_.reset(new GazeboRosApiPlugin(*this, private_nh_));
   ROS_INFO("Bullet plant ready: world '%s', %.4f s steps, real time factor %g%s", description.name.c_str(),
            world_->timeStep(), real_time_factor_, paused ? " (paused)" : "");
 }
@@ -266,7 +266,8 @@ void RosPlant::stepAndPublish()
       kv.second->updateSubscriptions();
     kv.second->publish(now);
   }
-  gazebo_->publish();
+  gazebo_->publishModelStates();
+  gazebo_->publishLinkStates();
 }
 
 void RosPlant::pace()

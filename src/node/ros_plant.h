@@ -21,7 +21,7 @@
 
 namespace bullet_plant
 {
-class GazeboInterface;
+class GazeboRosApiPlugin;
 class RobotInterface;
 
 class RosPlant
@@ -42,7 +42,7 @@ public:
   void copyParams(const std::string& key);
 
 private:
-  friend class GazeboInterface;  // gazebo_ros's services: the world, spawning, pausing, pacing
+  friend class GazeboRosApiPlugin;  // gazebo_ros's services: the world, spawning, pausing, pacing
   void runQueuedWork();
 
   void stepAndPublish();
@@ -60,7 +60,7 @@ private:
   ros::NodeHandle nh_, private_nh_;
   std::unique_ptr<World> world_;
   std::map<std::string, std::unique_ptr<RobotInterface>> robots_;
-  std::unique_ptr<GazeboInterface> gazebo_;
+  std::unique_ptr<GazeboRosApiPlugin> gazebo_;
   ros::Publisher clock_pub_;
 
   std::mutex queue_mutex_;

@@ -180,6 +180,8 @@ Log& World::log() { return in_->log; }
 Param& World::params() { return in_->params; }
 double World::timeStep() const { return in_->step_s; }
 
+int World::solverIterations() const { return in_->dynamics->getSolverInfo().m_numIterations; }
+
 void World::setTimeStep(double seconds)
 {
   if (!(seconds >= kMinStepSize && seconds <= kMaxStepSize))

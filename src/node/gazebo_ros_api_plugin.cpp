@@ -1,0 +1,629 @@
+#include "gazebo_ros_api_plugin.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <gazebo_msgs/LinkStates.h>
+#include <gazebo_msgs/ModelStates.h>
+#include <tinyxml2.h>
+
+#include "bullet_plant/world.h"
+#include "msg_conversions.h"
+#include "ros_plant.h"
+#include "ros_time.h"
+
+namespace bullet_plant
+{
+namespace
+{
+// ------------------------------------------------------------------------------ frames and states
+
+// gazebo_ros takes these reference frame names as the world.
+bool isWorldFrame(const std::string& frame) { return frame.empty() || frame == "world" || frame == "map" || frame == "/map"; }
+
+// A link by gazebo_ros's scoped name, model::link.
+struct LinkRef
+{
+  Robot* robot = nullptr;
+  std::string link;
+  explicit operator bool() const { return robot != nullptr; }
+};
+
+LinkRef findLink(World& world, const std::string& scoped)
+{
+  const size_t at = scoped.find("::");
+  if (at == std::string::npos)
+    return {};
+  Robot* robot = world.robot(scoped.substr(0, at));
+  const std::string link = scoped.substr(at + 2);
+  if (!robot)
+    return {};
+  for (const std::string& name : robot->linkNames())
+    if (name == link)
+      return {robot, link};
+  return {};
+}
+
+struct State
+{
+  urdf::Pose pose;
+  Twist twist;
+};
+
+State linkState(const LinkRef& ref) { return {ref.robot->linkPose(ref.link), ref.robot->linkTwist(ref.link)}; }
+State modelState(Robot& robot) { return {robot.basePose(), robot.baseTwist()}; }
+
+urdf::Vector3 vec(const std::array<double, 3>& a) { return urdf::Vector3(a[0], a[1], a[2]); }
+std::array<double, 3> arr(const urdf::Vector3& v) { return {{v.x, v.y, v.z}}; }
+urdf::Vector3 sub(const urdf::Vector3& a, const urdf::Vector3& b) { return urdf::Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
+
+// `state` (world) as seen from `frame`: position and velocities in the frame's axes, relative to it.
+State relativeTo(const State& state, const State& frame)
+{
+  const urdf::Rotation to_frame = frame.pose.rotation.GetInverse();
+  State out;
+  out.pose.position = to_frame * sub(state.pose.position, frame.pose.position);
+  out.pose.rotation = to_frame * state.pose.rotation;
+  out.twist.linear = arr(to_frame * sub(vec(state.twist.linear), vec(frame.twist.linear)));
+  out.twist.angular = arr(to_frame * sub(vec(state.twist.angular), vec(frame.twist.angular)));
+  return out;
+}
+
+// A target given in `frame`'s axes and origin, in the world.
+State inWorld(const State& target, const urdf::Pose& frame)
+{
+  State out;
+  urdf::Vector3 origin = frame.position;  // urdf::Vector3's operator+ is not const
+  out.pose.position = origin + frame.rotation * target.pose.position;
+  out.pose.rotation = frame.rotation * target.pose.rotation;
+  out.twist.linear = arr(frame.rotation * vec(target.twist.linear));
+  out.twist.angular = arr(frame.rotation * vec(target.twist.angular));
+  return out;
+}
+
+bool finite(const State& s)
+{
+  for (double v : {s.pose.position.x, s.pose.position.y, s.pose.position.z, s.pose.rotation.x, s.pose.rotation.y,
+                   s.pose.rotation.z, s.pose.rotation.w, s.twist.linear[0], s.twist.linear[1], s.twist.linear[2],
+                   s.twist.angular[0], s.twist.angular[1], s.twist.angular[2]})
+    if (!std::isfinite(v))
+      return false;
+  return true;
+}
+
+// gazebo_ros's jobs start no earlier than now.
+int64_t jobStart(const ros::Time& start, int64_t now_ns) { return std::max<int64_t>(int64_t(start.toNSec()), now_ns); }
+
+// The name of the XML's root element; "" when it is not well-formed.
+std::string rootElement(const std::string& xml)
+{
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(xml.c_str()) != tinyxml2::XML_SUCCESS || !doc.RootElement())
+    return "";
+  return doc.RootElement()->Name();
+}
+}  // namespace
+
+GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private_nh)
+  : plant_(plant), world_(*plant.world_), nh_(private_nh)
+{
+  advertiseServices();
+  model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
+  link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
+}
+
+template <class Srv>
+void GazeboRosApiPlugin::advertiseOnSimThread(const std::string& name,
+                                              bool (GazeboRosApiPlugin::*handler)(typename Srv::Request&,
+                                                                                  typename Srv::Response&))
+{
+  services_.push_back(nh_.advertiseService<typename Srv::Request, typename Srv::Response>(
+      name, [this, handler](typename Srv::Request& req, typename Srv::Response& res) {
+        return plant_.onSimThread<bool>([&] { return (this->*handler)(req, res); });
+      }));
+}
+
+void GazeboRosApiPlugin::advertiseServices()
+{
+  services_.push_back(nh_.advertiseService("spawn_urdf_model", &GazeboRosApiPlugin::spawnURDFModel, this));
+  services_.push_back(nh_.advertiseService("spawn_sdf_model", &GazeboRosApiPlugin::spawnSDFModel, this));
+  services_.push_back(nh_.advertiseService("delete_model", &GazeboRosApiPlugin::deleteModel, this));
+  advertiseOnSimThread<std_srvs::Empty>("pause_physics", &GazeboRosApiPlugin::pausePhysics);
+  advertiseOnSimThread<std_srvs::Empty>("unpause_physics", &GazeboRosApiPlugin::unpausePhysics);
+  advertiseOnSimThread<std_srvs::Empty>("reset_simulation", &GazeboRosApiPlugin::resetSimulation);
+  advertiseOnSimThread<std_srvs::Empty>("reset_world", &GazeboRosApiPlugin::resetWorld);
+  advertiseOnSimThread<gazebo_msgs::GetModelState>("get_model_state", &GazeboRosApiPlugin::getModelState);
+  advertiseOnSimThread<gazebo_msgs::GetLinkState>("get_link_state", &GazeboRosApiPlugin::getLinkState);
+  advertiseOnSimThread<gazebo_msgs::SetModelState>("set_model_state", &GazeboRosApiPlugin::setModelState);
+  advertiseOnSimThread<gazebo_msgs::SetLinkState>("set_link_state", &GazeboRosApiPlugin::setLinkState);
+  advertiseOnSimThread<gazebo_msgs::SetModelConfiguration>("set_model_configuration",
+                                                           &GazeboRosApiPlugin::setModelConfiguration);
+  advertiseOnSimThread<gazebo_msgs::GetWorldProperties>("get_world_properties", &GazeboRosApiPlugin::getWorldProperties);
+  advertiseOnSimThread<gazebo_msgs::GetModelProperties>("get_model_properties", &GazeboRosApiPlugin::getModelProperties);
+  advertiseOnSimThread<gazebo_msgs::GetPhysicsProperties>("get_physics_properties",
+                                                          &GazeboRosApiPlugin::getPhysicsProperties);
+  advertiseOnSimThread<gazebo_msgs::SetPhysicsProperties>("set_physics_properties",
+                                                          &GazeboRosApiPlugin::setPhysicsProperties);
+  advertiseOnSimThread<gazebo_msgs::ApplyBodyWrench>("apply_body_wrench", &GazeboRosApiPlugin::applyBodyWrench);
+  advertiseOnSimThread<gazebo_msgs::BodyRequest>("clear_body_wrenches", &GazeboRosApiPlugin::clearBodyWrenches);
+  advertiseOnSimThread<gazebo_msgs::ApplyJointEffort>("apply_joint_effort", &GazeboRosApiPlugin::applyJointEffort);
+  advertiseOnSimThread<gazebo_msgs::JointRequest>("clear_joint_forces", &GazeboRosApiPlugin::clearJointForces);
+
+  // gazebo_ros's topics for the same two requests: queued, nobody waits for them.
+  subscribers_.push_back(nh_.subscribe<gazebo_msgs::ModelState>(
+      "set_model_state", 10, [this](const gazebo_msgs::ModelState::ConstPtr& msg) {
+        plant_.post([this, msg] {
+          std::string message;
+          updateModelState(*msg, message);
+        });
+      }));
+  subscribers_.push_back(nh_.subscribe<gazebo_msgs::LinkState>(
+      "set_link_state", 10, [this](const gazebo_msgs::LinkState::ConstPtr& msg) {
+        plant_.post([this, msg] {
+          std::string message;
+          updateLinkState(*msg, message);
+        });
+      }));
+}
+
+// ------------------------------------------------------------------------------ spawn and delete
+
+bool GazeboRosApiPlugin::spawnURDFModel(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res)
+{
+  // What is not URDF is refused (gazebo_ros fails the call itself then); XML that is not
+  // well-formed goes on to the plant, whose error names the parser's complaint.
+  const std::string root = rootElement(req.model_xml);
+  if (!root.empty() && root != "robot")
+  {
+    ROS_ERROR("SpawnModel: Failure - entity format is invalid.");
+    res.success = false;
+    res.status_message = "SpawnModel: Failure - entity format is invalid.";
+    return false;
+  }
+  return spawnModel(req, res);
+}
+
+bool GazeboRosApiPlugin::spawnSDFModel(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res)
+{
+  // URDF is taken too, as gazebo_ros's does; the plant's robots are URDF only.
+  const std::string root = rootElement(req.model_xml);
+  if (root == "robot")
+    return spawnModel(req, res);
+  res.success = false;
+  res.status_message = root == "sdf" || root == "gazebo"
+                           ? "SpawnModel: Failure - the Bullet plant spawns URDF models only; put SDF model '" +
+                                 req.model_name + "' in the world file (<include> or <model>)"
+                           : "GazeboRosApiPlugin SpawnModel Failure: input model_xml not SDF or URDF, or cannot "
+                             "be converted to Gazebo compatible format.";
+  ROS_ERROR_STREAM(res.status_message);
+  return true;
+}
+
+bool GazeboRosApiPlugin::spawnModel(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res)
+{
+  // What the request names in the world, looked at in one visit to the simulation thread.
+  enum class Check { Ok, NoReferenceFrame, Exists };
+  urdf::Pose pose = fromMsg(req.initial_pose);
+  const Check check = plant_.onSimThread<Check>([&] {
+    if (!isWorldFrame(req.reference_frame))
+    {
+      const LinkRef frame = findLink(world_, req.reference_frame);
+      if (!frame)
+        return Check::NoReferenceFrame;
+      pose = inWorld(State{pose, Twist()}, frame.robot->linkPose(frame.link)).pose;
+    }
+    return world_.robot(req.model_name) ? Check::Exists : Check::Ok;
+  });
+  if (check != Check::Ok)
+  {
+    res.success = false;
+    res.status_message = check == Check::Exists ? "SpawnModel: Failure - entity already exists."
+                                                : "SpawnModel: reference reference_frame not found, did you forget "
+                                                  "to scope the link by model name?";
+    return true;
+  }
+  std::string message;
+  res.success = plant_.spawn(req.model_name, req.model_xml, req.robot_namespace, pose, {}, message);
+  res.status_message = res.success ? "SpawnModel: Successfully spawned entity" : "SpawnModel: Failure - " + message;
+  return true;
+}
+
+bool GazeboRosApiPlugin::deleteModel(gazebo_msgs::DeleteModel::Request& req, gazebo_msgs::DeleteModel::Response& res)
+{
+  std::string message;
+  res.success = plant_.remove(req.model_name, message);
+  res.status_message = res.success ? "DeleteModel: successfully deleted model" : "DeleteModel: model does not exist";
+  if (!res.success)
+    ROS_ERROR("DeleteModel: model [%s] does not exist", req.model_name.c_str());
+  return true;
+}
+
+// ------------------------------------------------------------------------------ simulation
+
+bool GazeboRosApiPlugin::pausePhysics(std_srvs::Empty::Request&, std_srvs::Empty::Response&)
+{
+  plant_.applyPaused(true);
+  return true;
+}
+
+bool GazeboRosApiPlugin::unpausePhysics(std_srvs::Empty::Request&, std_srvs::Empty::Response&)
+{
+  plant_.applyPaused(false);
+  return true;
+}
+
+bool GazeboRosApiPlugin::resetSimulation(std_srvs::Empty::Request&, std_srvs::Empty::Response&)
+{
+  plant_.resetSimulation();
+  return true;
+}
+
+bool GazeboRosApiPlugin::resetWorld(std_srvs::Empty::Request&, std_srvs::Empty::Response&)
+{
+  world_.resetWorld();
+  return true;
+}
+
+// ------------------------------------------------------------------------------ states
+
+bool GazeboRosApiPlugin::getModelState(gazebo_msgs::GetModelState::Request& req,
+                                       gazebo_msgs::GetModelState::Response& res)
+{
+  Robot* robot = world_.robot(req.model_name);
+  if (!robot)
+  {
+    ROS_ERROR("GetModelState: model [%s] does not exist", req.model_name.c_str());
+    res.success = false;
+    res.status_message = "GetModelState: model does not exist";
+    return true;
+  }
+  State state = modelState(*robot);
+  if (!isWorldFrame(req.relative_entity_name))
+  {
+    const LinkRef frame = findLink(world_, req.relative_entity_name);
+    if (!frame)
+    {
+      res.success = false;
+      res.status_message = "GetModelState: reference relative_entity_name not found, did you forget to scope "
+                           "the body by model name?";
+      return true;
+    }
+    state = relativeTo(state, linkState(frame));
+  }
+  res.header.seq = ++get_model_state_calls_[req.model_name];
+  res.header.stamp = rosTime(world_.timeNs());
+  res.header.frame_id = req.relative_entity_name;
+  res.pose = toMsg(state.pose);
+  res.twist = toMsg(state.twist);
+  res.success = true;
+  res.status_message = "GetModelState: got properties";
+  return true;
+}
+
+bool GazeboRosApiPlugin::getLinkState(gazebo_msgs::GetLinkState::Request& req, gazebo_msgs::GetLinkState::Response& res)
+{
+  const LinkRef link = findLink(world_, req.link_name);
+  if (!link)
+  {
+    res.success = false;
+    res.status_message = "GetLinkState: link not found, did you forget to scope the link by model name?";
+    return true;
+  }
+  State state = linkState(link);
+  if (!isWorldFrame(req.reference_frame))
+  {
+    const LinkRef frame = findLink(world_, req.reference_frame);
+    if (!frame)
+    {
+      res.success = false;
+      res.status_message = "GetLinkState: reference reference_frame not found, did you forget to scope the "
+                           "link by model name?";
+      return true;
+    }
+    state = relativeTo(state, linkState(frame));
+  }
+  res.link_state.link_name = req.link_name;
+  res.link_state.pose = toMsg(state.pose);
+  res.link_state.twist = toMsg(state.twist);
+  res.link_state.reference_frame = req.reference_frame;
+  res.success = true;
+  res.status_message = "GetLinkState: got state";
+  return true;
+}
+
+bool GazeboRosApiPlugin::setModelState(gazebo_msgs::SetModelState::Request& req,
+                                       gazebo_msgs::SetModelState::Response& res)
+{
+  res.success = updateModelState(req.model_state, res.status_message);
+  return true;
+}
+
+bool GazeboRosApiPlugin::setLinkState(gazebo_msgs::SetLinkState::Request& req, gazebo_msgs::SetLinkState::Response& res)
+{
+  res.success = updateLinkState(req.link_state, res.status_message);
+  return true;
+}
+
+bool GazeboRosApiPlugin::updateModelState(const gazebo_msgs::ModelState& request, std::string& message)
+{
+  Robot* robot = world_.robot(request.model_name);
+  if (!robot)
+  {
+    ROS_ERROR("Updating ModelState: model [%s] does not exist", request.model_name.c_str());
+    message = "SetModelState: model does not exist";
+    return false;
+  }
+  State target{fromMsg(request.pose), fromMsg(request.twist)};
+  if (!isWorldFrame(request.reference_frame))
+  {
+    const LinkRef frame = findLink(world_, request.reference_frame);
+    if (!frame)
+    {
+      ROS_ERROR("Updating ModelState: for model[%s], specified reference frame entity [%s] does not exist",
+                request.model_name.c_str(), request.reference_frame.c_str());
+      message = "SetModelState: specified reference frame entity does not exist";
+      return false;
+    }
+    target = inWorld(target, frame.robot->linkPose(frame.link));
+  }
+  if (!finite(target))
+  {
+    message = "SetModelState: the state of '" + request.model_name + "' is not finite";
+    return false;
+  }
+  robot->setLinkState(robot->description().model->getRoot()->name, target.pose, target.twist);
+  message = "SetModelState: set model state done";
+  return true;
+}
+
+bool GazeboRosApiPlugin::updateLinkState(const gazebo_msgs::LinkState& request, std::string& message)
+{
+  const LinkRef link = findLink(world_, request.link_name);
+  if (!link)
+  {
+    ROS_ERROR("Updating LinkState: link [%s] does not exist", request.link_name.c_str());
+    message = "SetLinkState: link does not exist";
+    return false;
+  }
+  State target{fromMsg(request.pose), fromMsg(request.twist)};
+  if (!isWorldFrame(request.reference_frame))
+  {
+    const LinkRef frame = findLink(world_, request.reference_frame);
+    if (!frame)
+    {
+      ROS_ERROR("Updating LinkState: reference_frame is not a valid link name");
+      message = "SetLinkState: failed";
+      return false;
+    }
+    target = inWorld(target, frame.robot->linkPose(frame.link));
+  }
+  if (!finite(target))
+  {
+    message = "SetLinkState: the state of '" + request.link_name + "' is not finite";
+    return false;
+  }
+  link.robot->setLinkState(link.link, target.pose, target.twist);
+  message = "SetLinkState: success";
+  return true;
+}
+
+bool GazeboRosApiPlugin::setModelConfiguration(gazebo_msgs::SetModelConfiguration::Request& req,
+                                               gazebo_msgs::SetModelConfiguration::Response& res)
+{
+  Robot* robot = world_.robot(req.model_name);
+  res.success = false;
+  if (!robot)
+  {
+    ROS_ERROR("SetModelConfiguration: model [%s] does not exist", req.model_name.c_str());
+    res.status_message = "SetModelConfiguration: model does not exist";
+    return true;
+  }
+  if (req.joint_names.size() != req.joint_positions.size())
+  {
+    res.status_message = "SetModelConfiguration: joint name and position list have different lengths";
+    return true;
+  }
+  std::map<std::string, double> positions;
+  for (size_t i = 0; i < req.joint_names.size(); ++i)
+    positions[req.joint_names[i]] = req.joint_positions[i];
+  try
+  {
+    robot->setJointPositions(positions);
+  }
+  catch (const std::exception& e)
+  {
+    res.status_message = std::string("SetModelConfiguration: ") + e.what();
+    return true;
+  }
+  res.success = true;
+  res.status_message = "SetModelConfiguration: success";
+  return true;
+}
+
+// ------------------------------------------------------------------------------ properties
+
+bool GazeboRosApiPlugin::getWorldProperties(gazebo_msgs::GetWorldProperties::Request&,
+                                            gazebo_msgs::GetWorldProperties::Response& res)
+{
+  res.sim_time = world_.time();
+  for (Robot* robot : world_.robots())
+    res.model_names.push_back(robot->name());
+  res.rendering_enabled = true;
+  res.success = true;
+  res.status_message = "GetWorldProperties: got properties";
+  return true;
+}
+
+bool GazeboRosApiPlugin::getModelProperties(gazebo_msgs::GetModelProperties::Request& req,
+                                            gazebo_msgs::GetModelProperties::Response& res)
+{
+  Robot* robot = world_.robot(req.model_name);
+  if (!robot)
+  {
+    ROS_ERROR("GetModelProperties: model [%s] does not exist", req.model_name.c_str());
+    res.success = false;
+    res.status_message = "GetModelProperties: model does not exist";
+    return true;
+  }
+  res.body_names = robot->linkNames();
+  res.joint_names = robot->jointNames();
+  res.is_static = robot->description().is_static;
+  res.success = true;
+  res.status_message = "GetModelProperties: got properties";
+  return true;
+}
+
+bool GazeboRosApiPlugin::getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Request&,
+                                              gazebo_msgs::GetPhysicsProperties::Response& res)
+{
+  res.time_step = world_.timeStep();
+  res.pause = world_.paused();
+  // Gazebo's real_time_update_rate: steps per wall second; 0 runs as fast as possible.
+  res.max_update_rate = plant_.real_time_factor_ > 0 ? plant_.real_time_factor_ / world_.timeStep() : 0.0;
+  res.gravity = toMsg(world_.gravity());
+  res.ode_config.sor_pgs_iters = world_.solverIterations();
+  res.ode_config.sor_pgs_w = 1.0;
+  res.success = true;
+  res.status_message = "GetPhysicsProperties: got properties";
+  return true;
+}
+
+bool GazeboRosApiPlugin::setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Request& req,
+                                              gazebo_msgs::SetPhysicsProperties::Response& res)
+{
+  res.success = false;
+  if (!std::isfinite(req.max_update_rate))
+  {
+    res.status_message = "SetPhysicsProperties: max_update_rate must be a number (0: as fast as possible)";
+    return true;
+  }
+  try
+  {
+    world_.setTimeStep(req.time_step);
+    world_.setGravity(urdf::Vector3(req.gravity.x, req.gravity.y, req.gravity.z));
+  }
+  catch (const std::exception& e)
+  {
+    res.status_message = std::string("SetPhysicsProperties: ") + e.what() + "; nothing was changed";
+    return true;
+  }
+  plant_.setRealTimeFactor(req.max_update_rate > 0 ? req.max_update_rate * world_.timeStep() : 0.0);
+  res.success = true;
+  res.status_message = "physics engine updated";
+  return true;
+}
+
+// ------------------------------------------------------------------------------ forces
+
+bool GazeboRosApiPlugin::applyBodyWrench(gazebo_msgs::ApplyBodyWrench::Request& req,
+                                         gazebo_msgs::ApplyBodyWrench::Response& res)
+{
+  res.success = false;
+  const LinkRef body = findLink(world_, req.body_name);
+  if (!body)
+  {
+    ROS_ERROR("ApplyBodyWrench: body [%s] does not exist", req.body_name.c_str());
+    res.status_message = "ApplyBodyWrench: body does not exist";
+    return true;
+  }
+  // A force at reference_point adds reference_point x force to the torque.
+  const auto& f = req.wrench.force;
+  const auto& p = req.reference_point;
+  urdf::Vector3 force(f.x, f.y, f.z);
+  urdf::Vector3 torque(req.wrench.torque.x + p.y * f.z - p.z * f.y, req.wrench.torque.y + p.z * f.x - p.x * f.z,
+                       req.wrench.torque.z + p.x * f.y - p.y * f.x);
+  if (!isWorldFrame(req.reference_frame))
+  {
+    const LinkRef frame = findLink(world_, req.reference_frame);
+    if (!frame)
+    {
+      ROS_ERROR("ApplyBodyWrench: reference_frame is not a valid link name");
+      res.status_message = "ApplyBodyWrench: reference_frame not found";
+      return true;
+    }
+    const urdf::Rotation axes = frame.robot->linkPose(frame.link).rotation;
+    force = axes * force;
+    torque = axes * torque;
+  }
+  for (double v : {force.x, force.y, force.z, torque.x, torque.y, torque.z})
+    if (!std::isfinite(v))
+    {
+      res.status_message = "ApplyBodyWrench: the wrench on '" + req.body_name + "' is not finite";
+      return true;
+    }
+  body.robot->applyLinkWrench(body.link, force, torque, jobStart(req.start_time, world_.timeNs()),
+                              req.duration.toNSec());
+  res.success = true;
+  res.status_message = "";
+  return true;
+}
+
+bool GazeboRosApiPlugin::clearBodyWrenches(gazebo_msgs::BodyRequest::Request& req, gazebo_msgs::BodyRequest::Response&)
+{
+  if (const LinkRef body = findLink(world_, req.body_name))
+    body.robot->clearLinkWrenches(body.link);
+  return true;
+}
+
+bool GazeboRosApiPlugin::applyJointEffort(gazebo_msgs::ApplyJointEffort::Request& req,
+                                          gazebo_msgs::ApplyJointEffort::Response& res)
+{
+  res.success = false;
+  if (!std::isfinite(req.effort))
+  {
+    res.status_message = "ApplyJointEffort: the effort on '" + req.joint_name + "' is not finite";
+    return true;
+  }
+  // gazebo_ros names joints without their model: the first model that has it.
+  for (Robot* robot : world_.robots())
+    for (const std::string& joint : robot->jointNames())
+      if (joint == req.joint_name)
+      {
+        robot->applyJointEffort(joint, req.effort, jobStart(req.start_time, world_.timeNs()), req.duration.toNSec());
+        res.success = true;
+        res.status_message = "ApplyJointEffort: effort set";
+        return true;
+      }
+  res.status_message = "ApplyJointEffort: joint not found";
+  return true;
+}
+
+bool GazeboRosApiPlugin::clearJointForces(gazebo_msgs::JointRequest::Request& req, gazebo_msgs::JointRequest::Response&)
+{
+  for (Robot* robot : world_.robots())
+    robot->clearJointEfforts(req.joint_name);
+  return true;
+}
+
+// ------------------------------------------------------------------------------ topics
+
+void GazeboRosApiPlugin::publishModelStates()
+{
+  if (model_states_pub_.getNumSubscribers() == 0)
+    return;
+  gazebo_msgs::ModelStates states;
+  for (Robot* robot : world_.robots())
+  {
+    states.name.push_back(robot->name());
+    states.pose.push_back(toMsg(robot->basePose()));
+    states.twist.push_back(toMsg(robot->baseTwist()));
+  }
+  model_states_pub_.publish(states);
+}
+
+void GazeboRosApiPlugin::publishLinkStates()
+{
+  if (link_states_pub_.getNumSubscribers() == 0)
+    return;
+  gazebo_msgs::LinkStates states;
+  for (Robot* robot : world_.robots())
+    for (const std::string& link : robot->linkNames())
+    {
+      states.name.push_back(robot->name() + "::" + link);
+      states.pose.push_back(toMsg(robot->linkPose(link)));
+      states.twist.push_back(toMsg(robot->linkTwist(link)));
+    }
+  link_states_pub_.publish(states);
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,99 @@
+// gazebo_ros's simulator interface (GazeboRosApiPlugin, Noetic) over the plant: the /gazebo/...
+// services with their success flags and status messages (docs/interfaces.md section 10), the
+// model_states and link_states topics and the set_model_state / set_link_state topics. One member
+// function per service, named as upstream's, wired in advertiseServices(). Every request is
+// answered on the simulation thread, between steps; the spawn and delete services hand their
+// work to RosPlant, which does the same.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <gazebo_msgs/ApplyBodyWrench.h>
+#include <gazebo_msgs/ApplyJointEffort.h>
+#include <gazebo_msgs/BodyRequest.h>
+#include <gazebo_msgs/DeleteModel.h>
+#include <gazebo_msgs/GetLinkState.h>
+#include <gazebo_msgs/GetModelProperties.h>
+#include <gazebo_msgs/GetModelState.h>
+#include <gazebo_msgs/GetPhysicsProperties.h>
+#include <gazebo_msgs/GetWorldProperties.h>
+#include <gazebo_msgs/JointRequest.h>
+#include <gazebo_msgs/LinkState.h>
+#include <gazebo_msgs/ModelState.h>
+#include <gazebo_msgs/SetLinkState.h>
+#include <gazebo_msgs/SetModelConfiguration.h>
+#include <gazebo_msgs/SetModelState.h>
+#include <gazebo_msgs/SetPhysicsProperties.h>
+#include <gazebo_msgs/SpawnModel.h>
+#include <ros/ros.h>
+#include <std_srvs/Empty.h>
+
+namespace bullet_plant
+{
+class RosPlant;
+class World;
+
+class GazeboRosApiPlugin
+{
+public:
+  // Advertises in the node's private namespace (/gazebo when the node is named gazebo).
+  GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private_nh);
+  // After each step, on the simulation thread: model and link states while someone subscribes
+  // (every step, as gazebo_ros publishes them on each world update).
+  void publishModelStates();
+  void publishLinkStates();
+
+private:
+  void advertiseServices();
+  // Advertises service Srv whose handler runs on the simulation thread (RosPlant::onSimThread);
+  // ROS's callback thread only waits for it.
+  template <class Srv>
+  void advertiseOnSimThread(const std::string& name,
+                            bool (GazeboRosApiPlugin::*handler)(typename Srv::Request&, typename Srv::Response&));
+
+  // On ROS's callback thread: spawning parses the model before it visits the simulation thread.
+  bool spawnURDFModel(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res);
+  bool spawnSDFModel(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res);
+  bool spawnModel(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res);
+  bool deleteModel(gazebo_msgs::DeleteModel::Request& req, gazebo_msgs::DeleteModel::Response& res);
+
+  // On the simulation thread.
+  bool pausePhysics(std_srvs::Empty::Request& req, std_srvs::Empty::Response& res);
+  bool unpausePhysics(std_srvs::Empty::Request& req, std_srvs::Empty::Response& res);
+  bool resetSimulation(std_srvs::Empty::Request& req, std_srvs::Empty::Response& res);
+  bool resetWorld(std_srvs::Empty::Request& req, std_srvs::Empty::Response& res);
+  bool getModelState(gazebo_msgs::GetModelState::Request& req, gazebo_msgs::GetModelState::Response& res);
+  bool getLinkState(gazebo_msgs::GetLinkState::Request& req, gazebo_msgs::GetLinkState::Response& res);
+  bool setModelState(gazebo_msgs::SetModelState::Request& req, gazebo_msgs::SetModelState::Response& res);
+  bool setLinkState(gazebo_msgs::SetLinkState::Request& req, gazebo_msgs::SetLinkState::Response& res);
+  bool setModelConfiguration(gazebo_msgs::SetModelConfiguration::Request& req,
+                             gazebo_msgs::SetModelConfiguration::Response& res);
+  bool getWorldProperties(gazebo_msgs::GetWorldProperties::Request& req, gazebo_msgs::GetWorldProperties::Response& res);
+  bool getModelProperties(gazebo_msgs::GetModelProperties::Request& req, gazebo_msgs::GetModelProperties::Response& res);
+  bool getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Request& req,
+                            gazebo_msgs::GetPhysicsProperties::Response& res);
+  bool setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Request& req,
+                            gazebo_msgs::SetPhysicsProperties::Response& res);
+  bool applyBodyWrench(gazebo_msgs::ApplyBodyWrench::Request& req, gazebo_msgs::ApplyBodyWrench::Response& res);
+  bool clearBodyWrenches(gazebo_msgs::BodyRequest::Request& req, gazebo_msgs::BodyRequest::Response& res);
+  bool applyJointEffort(gazebo_msgs::ApplyJointEffort::Request& req, gazebo_msgs::ApplyJointEffort::Response& res);
+  bool clearJointForces(gazebo_msgs::JointRequest::Request& req, gazebo_msgs::JointRequest::Response& res);
+
+  // set_model_state and set_link_state, service and topic alike: whether the state was set;
+  // `message` is gazebo_ros's status message either way.
+  bool updateModelState(const gazebo_msgs::ModelState& state, std::string& message);
+  bool updateLinkState(const gazebo_msgs::LinkState& state, std::string& message);
+
+  RosPlant& plant_;
+  World& world_;
+  ros::NodeHandle nh_;
+  std::vector<ros::ServiceServer> services_;
+  std::vector<ros::Subscriber> subscribers_;
+  ros::Publisher model_states_pub_, link_states_pub_;
+  std::map<std::string, uint32_t> get_model_state_calls_;  // get_model_state's header.seq, per model
+};
+
+}  // namespace bullet_plant

@@ -1,0 +1,38 @@
+// gazebo_ros_laser and gazebo_ros_gpu_laser: a ray sensor's sensor_msgs/LaserScan on <topicName>
+// (default "/world", sic), frame tf::resolve(tf_prefix, <frameName>) (docs/interfaces.md section 11).
+#include <sensor_msgs/LaserScan.h>
+
+#include "msg_conversions.h"
+#include "ros_names.h"
+#include "sensor_plugin.h"
+
+namespace bullet_plant
+{
+class GazeboRosLaser : public SensorPlugin
+{
+public:
+  void Load(Sensor& sensor) override
+  {
+    lidar_ = &sensorAs<Lidar>(sensor, "gazebo_ros_laser");
+    ros::NodeHandle nh = nodeHandle(sensor);
+    applyTfPrefixParam(sensor, nh);
+    scan_pub_ = nh.advertise<sensor_msgs::LaserScan>(
+        requireValidRosName(lidar_->topic(), "sensor '" + sensor.name() + "' topic"), 5);
+  }
+
+  bool subscribed() const override { return scan_pub_.getNumSubscribers() > 0; }
+
+  void OnUpdate() override
+  {
+    if (takeUpdate(*lidar_))
+      scan_pub_.publish(toMsg(lidar_->latest()));
+  }
+
+private:
+  Lidar* lidar_ = nullptr;
+  ros::Publisher scan_pub_;
+};
+
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosLaser, "libgazebo_ros_laser.so", "libgazebo_ros_gpu_laser.so")
+
+}  // namespace bullet_plant

@@ -1,0 +1,51 @@
+// gazebo_ros_openni_kinect: the camera's image and info, plus a 32FC1 depth image with its
+// CameraInfo and a PointCloud2, NaN outside (pointCloudCutoff, pointCloudCutoffMax) (docs/
+// interfaces.md section 11).
+#include "gazebo_ros_camera.h"
+#include "ros_names.h"
+
+namespace bullet_plant
+{
+class GazeboRosOpenniKinect : public GazeboRosCamera
+{
+public:
+  void Load(Sensor& sensor) override
+  {
+    GazeboRosCamera::Load(sensor);
+    // The depths come from a <sensor type="depth">; on a plain camera it is gazebo_ros_camera.
+    if (!camera_->depthSensor())
+    {
+      ROS_WARN("sensor '%s': gazebo_ros_openni_kinect needs <sensor type=\"depth\">; it publishes the image only",
+               sensor.name().c_str());
+      return;
+    }
+    depth_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(camera_->depthTopic(), owner()), 2);
+    depth_info_pub_ =
+        nh_.advertise<sensor_msgs::CameraInfo>(requireValidRosName(camera_->depthCameraInfoTopic(), owner()), 2);
+    points_pub_ = nh_.advertise<sensor_msgs::PointCloud2>(requireValidRosName(camera_->pointsTopic(), owner()), 2);
+    cutoff_ = DepthCutoff{camera_->pointCloudCutoff(), camera_->pointCloudCutoffMax()};
+  }
+
+  bool subscribed() const override
+  {
+    return GazeboRosCamera::subscribed() || depth_pub_.getNumSubscribers() + depth_info_pub_.getNumSubscribers() +
+                                                    points_pub_.getNumSubscribers() > 0;
+  }
+
+private:
+  void publishFrame(const CameraFrame& frame, const std_msgs::Header& header) override
+  {
+    if (!camera_->depthSensor())
+      return;
+    depth_pub_.publish(DepthImageOf{frame, cutoff_});
+    depth_info_pub_.publish(cameraInfo(frame, header));
+    points_pub_.publish(PointCloudOf{frame, cutoff_});
+  }
+
+  ros::Publisher depth_pub_, depth_info_pub_, points_pub_;
+  DepthCutoff cutoff_;
+};
+
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosOpenniKinect, "libgazebo_ros_openni_kinect.so")
+
+}  // namespace bullet_plant

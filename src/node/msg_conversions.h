@@ -1,0 +1,146 @@
+// The one place where the plant's types meet geometry_msgs, sensor_msgs and nav_msgs: every node
+// file converts through these (the camera's images and points are serialized in frame_messages.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <geometry_msgs/Pose.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/Twist.h>
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/LaserScan.h>
+#include <urdf_model/pose.h>
+
+#include "bullet_plant/inertial_sensors.h"
+#include "bullet_plant/robot.h"
+#include "bullet_plant/sensors.h"
+#include "ros_time.h"
+
+namespace bullet_plant
+{
+inline geometry_msgs::Vector3 toMsg(const urdf::Vector3& v)
+{
+  geometry_msgs::Vector3 m;
+  m.x = v.x;
+  m.y = v.y;
+  m.z = v.z;
+  return m;
+}
+
+inline geometry_msgs::Quaternion toMsg(const urdf::Rotation& q)
+{
+  geometry_msgs::Quaternion m;
+  m.x = q.x;
+  m.y = q.y;
+  m.z = q.z;
+  m.w = q.w;
+  return m;
+}
+
+inline geometry_msgs::Pose toMsg(const urdf::Pose& p)
+{
+  geometry_msgs::Pose m;
+  m.position.x = p.position.x;
+  m.position.y = p.position.y;
+  m.position.z = p.position.z;
+  m.orientation = toMsg(p.rotation);
+  return m;
+}
+
+inline geometry_msgs::Twist toMsg(const Twist& t)
+{
+  geometry_msgs::Twist m;
+  m.linear = toMsg(urdf::Vector3(t.linear[0], t.linear[1], t.linear[2]));
+  m.angular = toMsg(urdf::Vector3(t.angular[0], t.angular[1], t.angular[2]));
+  return m;
+}
+
+// gazebo_ros normalises a requested orientation, so that an all-zero quaternion means no rotation.
+inline urdf::Pose fromMsg(const geometry_msgs::Pose& m)
+{
+  urdf::Pose p;
+  p.position = urdf::Vector3(m.position.x, m.position.y, m.position.z);
+  const geometry_msgs::Quaternion& q = m.orientation;
+  p.rotation = q.x == 0 && q.y == 0 && q.z == 0 && q.w == 0 ? urdf::Rotation(0, 0, 0, 1)
+                                                            : urdf::Rotation(q.x, q.y, q.z, q.w);
+  p.rotation.normalize();
+  return p;
+}
+
+inline Twist fromMsg(const geometry_msgs::Twist& m)
+{
+  Twist t;
+  t.linear = {{m.linear.x, m.linear.y, m.linear.z}};
+  t.angular = {{m.angular.x, m.angular.y, m.angular.z}};
+  return t;
+}
+
+// nav_msgs/Odometry of a pose in `frame` and a twist in `child` (what nav_msgs/Odometry's twist is
+// in), covariances `variance` on their diagonals; used by the ground truth (odometry_publisher.cpp,
+// gazebo_ros_p3d) and by the drive controllers' odometry (controller_topics.cpp).
+inline nav_msgs::Odometry odometryMessage(int64_t stamp_ns, const std::string& frame, const std::string& child,
+                                          const urdf::Pose& pose, const urdf::Vector3& linear,
+                                          const urdf::Vector3& angular, double variance = 0.0)
+{
+  nav_msgs::Odometry odom;
+  odom.header.stamp = rosTime(stamp_ns);
+  odom.header.frame_id = frame;
+  odom.child_frame_id = child;
+  odom.pose.pose = toMsg(pose);
+  odom.twist.twist.linear = toMsg(linear);
+  odom.twist.twist.angular = toMsg(angular);
+  for (int i : {0, 7, 14, 21, 28, 35})
+    odom.pose.covariance[i] = odom.twist.covariance[i] = variance;
+  return odom;
+}
+
+// The frame -> child transform an odometry message implies, for /tf.
+inline geometry_msgs::TransformStamped odometryTransform(const nav_msgs::Odometry& odom)
+{
+  geometry_msgs::TransformStamped tf;
+  tf.header = odom.header;
+  tf.child_frame_id = odom.child_frame_id;
+  tf.transform.translation.x = odom.pose.pose.position.x;
+  tf.transform.translation.y = odom.pose.pose.position.y;
+  tf.transform.translation.z = odom.pose.pose.position.z;
+  tf.transform.rotation = odom.pose.pose.orientation;
+  return tf;
+}
+
+inline sensor_msgs::Imu toMsg(const ImuReading& r)
+{
+  sensor_msgs::Imu m;
+  m.header.stamp = rosTime(r.stamp_ns);
+  m.header.frame_id = r.frame_id;
+  m.orientation = toMsg(r.orientation);
+  m.angular_velocity = toMsg(r.angular_velocity);
+  m.linear_acceleration = toMsg(r.linear_acceleration);
+  for (int i : {0, 4, 8})
+    m.orientation_covariance[i] = m.angular_velocity_covariance[i] = m.linear_acceleration_covariance[i] = r.variance;
+  return m;
+}
+
+inline nav_msgs::Odometry toMsg(const GroundTruthReading& r)
+{
+  return odometryMessage(r.stamp_ns, r.frame_id, r.child_frame_id, r.pose, r.linear, r.angular, r.variance);
+}
+
+inline sensor_msgs::LaserScan toMsg(const LaserScan& s)
+{
+  sensor_msgs::LaserScan m;
+  m.header.stamp = rosTime(s.stamp_ns);
+  m.header.frame_id = s.frame_id;
+  m.angle_min = s.angle_min;
+  m.angle_max = s.angle_max;
+  m.angle_increment = s.angle_increment;
+  m.time_increment = s.time_increment;
+  m.scan_time = s.scan_time;
+  m.range_min = s.range_min;
+  m.range_max = s.range_max;
+  m.ranges = s.ranges;
+  return m;
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,59 @@
+#include "sensor_plugin.h"
+
+#include <map>
+
+#include "bullet_plant/sensors.h"
+#include "ros_names.h"
+
+namespace bullet_plant
+{
+namespace
+{
+// Function-local, so registrations from other files' static initialisers find it constructed.
+std::map<std::string, SensorPluginFactory>& registry()
+{
+  static std::map<std::string, SensorPluginFactory> factories;
+  return factories;
+}
+}  // namespace
+
+SensorPluginRegistration::SensorPluginRegistration(const std::vector<std::string>& filenames, SensorPluginFactory factory)
+{
+  for (const std::string& filename : filenames)
+    registry()[filename] = factory;
+}
+
+std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor)
+{
+  if (!sensor.publishesOnRos())
+    return nullptr;
+  const auto factory = registry().find(sensor.description().plugin_filename);
+  if (factory == registry().end())
+    return nullptr;
+  std::unique_ptr<SensorPlugin> plugin = factory->second();
+  plugin->Load(sensor);
+  return plugin;
+}
+
+ros::NodeHandle SensorPlugin::nodeHandle(const Sensor& sensor)
+{
+  const std::string& ns = sensor.rosNamespace();
+  return ros::NodeHandle(ns.empty() ? "/" : requireValidRosName(ns, "sensor '" + sensor.name() + "' robotNamespace"));
+}
+
+void SensorPlugin::applyTfPrefixParam(Sensor& sensor, const ros::NodeHandle& nh)
+{
+  std::string key, prefix;
+  if (nh.searchParam("tf_prefix", key) && nh.getParam(key, prefix) && !prefix.empty())
+    sensor.setTfPrefix(prefix);
+}
+
+bool SensorPlugin::takeUpdate(const Sensor& sensor)
+{
+  if (sensor.updates() == seen_updates_)
+    return false;
+  seen_updates_ = sensor.updates();
+  return true;
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,72 @@
+// A gazebo_ros sensor plugin on the plant, shaped as gazebo_plugins' own: Load() takes the plant's
+// sensor (its <plugin> block parsed at spawn) and advertises the plugin's topics in its namespace;
+// OnUpdate() runs after each step and publishes what the sensor computed since the last call (the
+// sensor itself keeps <update_rate>: Sensor::due). A plugin registers itself under its library's
+// file names with GAZEBO_ROS_SENSOR_PLUGIN in its own file, so adding one touches only that file
+// (and CMakeLists.txt). Everything runs on the simulation thread.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <ros/ros.h>
+
+#include "bullet_plant/sensors.h"
+
+namespace bullet_plant
+{
+class SensorPlugin
+{
+public:
+  virtual ~SensorPlugin() = default;
+  virtual void Load(Sensor& sensor) = 0;
+  // Whether anyone subscribes to one of its topics: the sensor computes only then.
+  virtual bool subscribed() const = 0;
+  virtual void OnUpdate() = 0;
+
+  // The plugin for `sensor`'s <plugin filename>; null for a sensor without one, or with a file no
+  // plugin registered (the plant warned about that at spawn).
+  static std::unique_ptr<SensorPlugin> create(Sensor& sensor);
+
+protected:
+  // The node handle of the plugin, in its namespace.
+  static ros::NodeHandle nodeHandle(const Sensor& sensor);
+  // tf::getPrefixParam, as the laser and camera plugins call it: a tf_prefix parameter found by
+  // searching up from `nh`'s namespace replaces the namespace as the prefix of frame ids.
+  static void applyTfPrefixParam(Sensor& sensor, const ros::NodeHandle& nh);
+  // True once per update of the sensor: whether it computed something since the last call.
+  bool takeUpdate(const Sensor& sensor);
+
+private:
+  uint64_t seen_updates_ = 0;
+};
+
+using SensorPluginFactory = std::function<std::unique_ptr<SensorPlugin>()>;
+
+// Registers `factory` for each of `filenames` (libgazebo_ros_*.so); at static initialisation.
+struct SensorPluginRegistration
+{
+  SensorPluginRegistration(const std::vector<std::string>& filenames, SensorPluginFactory factory);
+};
+
+// In a plugin's .cpp, as GZ_REGISTER_SENSOR_PLUGIN in Gazebo.
+#define GAZEBO_ROS_SENSOR_PLUGIN(Class, ...)                                                            \
+  static const ::bullet_plant::SensorPluginRegistration registration_##Class({__VA_ARGS__}, [] { \
+    return std::unique_ptr<::bullet_plant::SensorPlugin>(new Class());                             \
+  });
+
+// A Sensor as the plugin's type: the plant builds the sensor class from the same file name, so a
+// mismatch is a bug, reported by naming both.
+template <class SensorType>
+SensorType& sensorAs(Sensor& sensor, const char* plugin)
+{
+  if (auto* typed = dynamic_cast<SensorType*>(&sensor))
+    return *typed;
+  throw std::logic_error(std::string(plugin) + " loaded on sensor '" + sensor.name() + "' of type '" +
+                         sensor.description().type + "', which the plant did not build for it");
+}
+
+}  // namespace bullet_plant
