@@ -1,0 +1,145 @@
+// What the binding files share: the handles Python holds (a robot may be removed while Python
+// still holds it), PyWorld, pose conversions, and each file's init_* function.
+#pragma once
+
+#include <algorithm>
+#include <deque>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bullet_plant/world.h"
+
+namespace bullet_plant
+{
+namespace python
+{
+namespace py = pybind11;
+
+inline urdf::Pose poseFromTuple(const std::vector<double>& v)
+{
+  if (v.size() != 6)
+    throw py::value_error("pose must be (x, y, z, roll, pitch, yaw)");
+  return poseFromXyzRpy(v[0], v[1], v[2], v[3], v[4], v[5]);
+}
+
+inline py::array_t<double> poseArray(const urdf::Pose& p)
+{
+  return py::array_t<double>(7, std::vector<double>{p.position.x, p.position.y, p.position.z, p.rotation.x,
+                                                    p.rotation.y, p.rotation.z, p.rotation.w}.data());
+}
+
+// Raised by a Robot or ControllerManager handle whose robot World.remove took out.
+struct RobotRemoved : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// What Python holds for a robot. The robot may be removed while Python still holds the handle, so
+// the handle keeps no pointer of its own: it reads the robot from a cell its world empties on
+// World.remove (and when the world goes), and every call through it checks the cell first.
+struct RobotRef
+{
+  std::shared_ptr<Robot*> robot;
+  std::string name;
+
+  Robot& get() const
+  {
+    if (!*robot)
+      throw RobotRemoved("robot '" + name + "' was removed from the world (World.remove): this handle and its "
+                         "controller manager no longer refer to anything; spawn it again and use the new handle");
+    return **robot;
+  }
+};
+
+// The controller manager of a robot, reached through the robot's handle on every call.
+struct ManagerRef
+{
+  RobotRef robot;
+  ControllerManager& get() const;
+};
+
+// Binds f(Target&, args...) as a method of the handle type Ref: each call resolves the handle first.
+template <typename Ref, typename F, typename Ret, typename Target, typename... Args>
+auto throughHandle(F f, Ret (F::*)(Target&, Args...) const)
+{
+  return [f](const Ref& ref, Args... args) -> Ret { return f(ref.get(), std::forward<Args>(args)...); };
+}
+template <typename F>
+auto onRobot(F f)
+{
+  return throughHandle<RobotRef>(f, &F::operator());
+}
+template <typename F>
+auto onManager(F f)
+{
+  return throughHandle<ManagerRef>(f, &F::operator());
+}
+
+// A World plus the messages its log produced, kept for Python to read.
+struct PyWorld
+{
+  explicit PyWorld(const WorldDescription& d) : world(new World(d))
+  {
+    world->log().setSink([this](LogLevel level, const std::string& m) {
+      std::lock_guard<std::mutex> lock(mutex);
+      messages.emplace_back(levelName(level), m);
+      if (messages.size() > 10000)
+        messages.pop_front();
+      if (echo && level >= LogLevel::Warn)
+        std::cerr << "[" << levelName(level) << "] " << m << std::endl;
+    });
+    // The world logged its description's warnings while it was built, before this sink existed.
+    for (const std::string& warning : d.warnings)
+      messages.emplace_back(levelName(LogLevel::Warn), "world: " + warning);
+  }
+  ~PyWorld()
+  {
+    for (auto& entry : handle_cells)
+      *entry.second = nullptr;
+  }
+
+  RobotRef handleTo(Robot& r)
+  {
+    std::shared_ptr<Robot*>& cell = handle_cells[r.name()];
+    if (!cell)
+      cell = std::make_shared<Robot*>(&r);
+    return RobotRef{cell, r.name()};
+  }
+  bool remove(const std::string& name)
+  {
+    auto it = handle_cells.find(name);
+    if (it != handle_cells.end())
+    {
+      *it->second = nullptr;
+      handle_cells.erase(it);
+    }
+    return world->remove(name);
+  }
+
+  std::unique_ptr<World> world;
+  std::map<std::string, std::shared_ptr<Robot*>> handle_cells;  // robot name -> what its handles read
+  std::mutex mutex;
+  std::deque<std::pair<std::string, std::string>> messages;
+  bool echo = true;
+};
+
+// The robot's controller manager; ValueError when its URDF has no gazebo_ros_control block.
+ControllerManager& managerOf(Robot& r);
+
+void init_world(py::module_& m);
+py::class_<RobotRef> init_robot(py::module_& m);
+void init_sensors(py::class_<RobotRef>& robot);
+void init_controller_manager(py::module_& m);
+
+}  // namespace python
+}  // namespace bullet_plant

@@ -1,0 +1,186 @@
+// bullet_plant.ControllerManager and bullet_plant.Pid: controller_manager's services and
+// control_toolbox's Pid, driven from Python.
+#include "bindings.h"
+
+namespace bullet_plant
+{
+namespace python
+{
+ControllerManager& managerOf(Robot& r)
+{
+  ControllerManager* cm = r.controllerManager();
+  if (!cm)
+    throw py::value_error("robot '" + r.name() + "' has no gazebo_ros_control plugin block, so no controller manager");
+  return *cm;
+}
+
+ControllerManager& ManagerRef::get() const
+{
+  return managerOf(robot.get());
+}
+
+namespace
+{
+Controller& controllerOf(ControllerManager& cm, const std::string& name)
+{
+  Controller* c = cm.controller(name);
+  if (!c)
+    throw py::key_error("no controller named '" + name + "' is loaded");
+  return *c;
+}
+
+py::dict jointStateDict(const JointStateSample& s)
+{
+  py::dict d;
+  d["stamp"] = s.stamp_ns * 1e-9;
+  d["name"] = s.name;
+  d["position"] = s.position;
+  d["velocity"] = s.velocity;
+  d["effort"] = s.effort;
+  return d;
+}
+
+py::dict controllerStateDict(const ControllerStateSample& s)
+{
+  py::dict d;
+  d["stamp"] = s.stamp_ns * 1e-9;
+  d["set_point"] = s.set_point;
+  d["process_value"] = s.process_value;
+  d["process_value_dot"] = s.process_value_dot;
+  d["error"] = s.error;
+  d["time_step"] = s.time_step;
+  d["command"] = s.command;
+  d["p"] = s.p;
+  d["i"] = s.i;
+  d["d"] = s.d;
+  d["i_clamp"] = s.i_clamp;
+  d["antiwindup"] = s.antiwindup;
+  return d;
+}
+}  // namespace
+
+void init_controller_manager(py::module_& m)
+{
+  py::class_<Pid>(m, "Pid", "control_toolbox::Pid, as the plant's controllers and pid_gains loops use it")
+      .def(py::init([](double p, double i, double d, double i_clamp, bool antiwindup) {
+        return Pid(PidGains::withIClamp(p, i, d, i_clamp, antiwindup));
+      }), py::arg("p"), py::arg("i") = 0.0, py::arg("d") = 0.0, py::arg("i_clamp") = 0.0, py::arg("antiwindup") = false)
+      .def_static("from_params", [](PyWorld& w, const std::string& ns) {
+        try
+        {
+          return Pid(readPidGains(w.world->params(), ns));
+        }
+        catch (const std::runtime_error& e)
+        {
+          throw py::value_error(e.what());
+        }
+      }, py::arg("world"), py::arg("namespace"), "gains from p, i, d, i_clamp, i_clamp_min/max, antiwindup under namespace")
+      .def("compute_command", py::overload_cast<double, double>(&Pid::computeCommand), py::arg("error"), py::arg("dt"))
+      .def("compute_command", py::overload_cast<double, double, double>(&Pid::computeCommand), py::arg("error"),
+           py::arg("error_dot"), py::arg("dt"))
+      .def("reset", &Pid::reset)
+      .def_property_readonly("gains", [](Pid& pid) {
+        const PidGains& g = pid.gains();
+        py::dict d;
+        d["p"] = g.p;
+        d["i"] = g.i;
+        d["d"] = g.d;
+        d["i_max"] = g.i_max;
+        d["i_min"] = g.i_min;
+        d["antiwindup"] = g.antiwindup;
+        return d;
+      })
+      .def_property_readonly("i_error", &Pid::iError)
+      .def_property_readonly("command", &Pid::command);
+
+  py::class_<ManagerRef>(m, "ControllerManager",
+      "controller_manager's services for one robot (its namespace: .ns); errors go to World.messages()")
+      .def_property_readonly("ns", onManager([](ControllerManager& cm) { return cm.ns(); }))
+      .def("load", onManager([](ControllerManager& cm, const std::string& name) { return cm.loadController(name); }), py::arg("name"))
+      .def("unload", onManager([](ControllerManager& cm, const std::string& name) { return cm.unloadController(name); }), py::arg("name"))
+      .def("switch", onManager([](ControllerManager& cm, const std::vector<std::string>& start, const std::vector<std::string>& stop,
+                                   int strictness, bool start_asap, double timeout) {
+        return cm.switchController(start, stop, strictness, start_asap, timeout);
+      }), py::arg("start") = std::vector<std::string>(),
+           py::arg("stop") = std::vector<std::string>(), py::arg("strictness") = int(ControllerManager::STRICT),
+           py::arg("start_asap") = false, py::arg("timeout") = 0.0,
+           "validated at once; applied after the next control update's controller updates, or at once while paused")
+      .def("list", onManager([](ControllerManager& cm) {
+        py::list out;
+        for (const ControllerInfo& info : cm.listControllers())
+        {
+          py::dict d;
+          d["name"] = info.name;
+          d["state"] = controllerStateName(info.state);
+          d["type"] = info.type;
+          py::list claimed;
+          for (const ClaimedResources& c : info.claimed_resources)
+          {
+            py::dict r;
+            r["hardware_interface"] = c.hardware_interface;
+            r["resources"] = c.resources;
+            claimed.append(r);
+          }
+          d["claimed_resources"] = claimed;
+          out.append(d);
+        }
+        return out;
+      }))
+      .def("list_types", onManager([](ControllerManager& cm) {
+        std::vector<std::string> types = cm.listControllerTypes();
+        return py::make_tuple(types, std::vector<std::string>(types.size(), "controller_interface::ControllerBase"));
+      }), "(types, base_classes)")
+      .def("reload_libraries", onManager([](ControllerManager& cm, bool force_kill) { return cm.reloadControllerLibraries(force_kill); }),
+           py::arg("force_kill") = false)
+      .def("spawn", onManager([](ControllerManager& cm, const std::vector<std::string>& names) {
+        std::vector<std::string> loaded;
+        for (const std::string& n : names)
+          if (cm.loadController(n))
+            loaded.push_back(n);
+        bool started = cm.switchController(loaded, {}, ControllerManager::STRICT);
+        return py::make_tuple(loaded, started);
+      }), py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
+      .def("command", onManager([](ControllerManager& cm, const std::string& name, py::object value) {
+        Controller& c = controllerOf(cm, name);
+        switch (c.commandTopic())
+        {
+          case CommandTopic::Float64: return c.setCommand(value.cast<double>());
+          case CommandTopic::Float64MultiArray: return c.setCommands(value.cast<std::vector<double>>());
+          case CommandTopic::Twist:
+          {
+            auto twist = value.cast<std::pair<double, double>>();
+            return c.setTwist(twist.first, twist.second);
+          }
+          default: throw py::key_error("controller '" + name + "' takes no command");
+        }
+      }), py::arg("name"), py::arg("value"),
+           "what a Float64 (a number) or a Float64MultiArray (a list: the JointGroup controllers) on "
+           "<controller>/command does, or a Twist (linear.x, angular.z) on <controller>/cmd_vel; False for a "
+           "rejected command")
+      .def("odometry", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
+        const OdometrySample* s = controllerOf(cm, name).latestOdometry();
+        if (!s)
+          return py::none();
+        py::dict d;
+        d["stamp"] = double(s->stamp_ns) * 1e-9;
+        d["x"] = s->x;
+        d["y"] = s->y;
+        d["heading"] = s->heading;
+        d["linear"] = s->linear;
+        d["angular"] = s->angular;
+        return d;
+      }), py::arg("name"), "the latest nav_msgs/Odometry a drive controller produced: stamp, x, y, heading, linear, angular")
+      .def("joint_states", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
+        const JointStateSample* s = controllerOf(cm, name).latestJointState();
+        return s ? py::object(jointStateDict(*s)) : py::none();
+      }), py::arg("name") = "joint_state_controller", "the latest sensor_msgs/JointState a joint state controller produced")
+      .def("state", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
+        const ControllerStateSample* s = controllerOf(cm, name).latestControllerState();
+        return s ? py::object(controllerStateDict(*s)) : py::none();
+      }), py::arg("name"), "the latest control_msgs/JointControllerState of a PID controller")
+      .def("samples", onManager([](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).samplesProduced(); }),
+           py::arg("name"), "how many messages the controller has produced");
+}
+
+}  // namespace python
+}  // namespace bullet_plant

@@ -1,0 +1,106 @@
+// bullet_plant.Robot: joint handles, poses, the e-stop and the robot's controller manager.
+#include "bindings.h"
+
+namespace bullet_plant
+{
+namespace python
+{
+namespace
+{
+JointHandle& handleOf(Robot& r, const std::string& joint)
+{
+  JointHandle* h = r.handle(joint);
+  if (!h)
+    throw py::key_error("robot '" + r.name() + "' has no joint handle '" + joint +
+                        "' (joints with a <transmission>: see Robot.handles)");
+  return *h;
+}
+
+}  // namespace
+
+py::class_<RobotRef> init_robot(py::module_& m)
+{
+  py::class_<RobotRef> robot(m, "Robot");
+  robot
+      .def_property_readonly("name", [](const RobotRef& ref) { return ref.name; }, "still readable after the robot was removed")
+      .def_property_readonly("removed", [](const RobotRef& ref) { return *ref.robot == nullptr; }, "whether World.remove took the robot out (every other use then raises RobotRemovedError)")
+      .def_property_readonly("namespace", onRobot([](Robot& r) { return r.controlNamespace(); }), "gazebo_ros_control's robot namespace")
+      .def_property_readonly("handles", onRobot([](Robot& r) {
+        std::vector<std::string> names;
+        for (JointHandle& h : r.handles())
+          names.push_back(h.name());
+        return names;
+      }), "joints with a transmission, in transmission order")
+      .def("interface", onRobot([](Robot& r, const std::string& joint) { return std::string(interfaceName(handleOf(r, joint).interface())); }))
+      .def("has_pid", onRobot([](Robot& r, const std::string& joint) { return handleOf(r, joint).pid() != nullptr; }),
+           "whether the joint is driven by its gazebo_ros_control/pid_gains loop")
+      .def("set_command", onRobot([](Robot& r, const std::string& joint, double value) { return handleOf(r, joint).setCommand(value); }),
+           py::arg("joint"), py::arg("value"),
+           "command in the joint interface's unit; a non-finite value is rejected (returns False, counted)")
+      .def("set_effort_law", onRobot([](Robot& r, const std::string& joint, double feedforward, double stiffness,
+                                double position_target, double damping, double velocity_target) {
+        JointHandle& h = handleOf(r, joint);
+        if (h.interface() != JointInterface::Effort)
+          throw py::value_error("joint '" + joint + "' is not an effort joint");
+        EffortLaw law;
+        law.feedforward = feedforward;
+        law.stiffness = stiffness;
+        law.position_target = position_target;
+        law.damping = damping;
+        law.velocity_target = velocity_target;
+        h.setEffortLaw(law);
+      }), py::arg("joint"), py::arg("feedforward") = 0.0, py::arg("stiffness") = 0.0, py::arg("position_target") = 0.0,
+         py::arg("damping") = 0.0, py::arg("velocity_target") = 0.0,
+         "effort = feedforward + stiffness*(position_target - q) + damping*(velocity_target - qd), evaluated at the "
+         "end of each step (what the PID controllers use); set_command replaces it")
+      .def("command", onRobot([](Robot& r, const std::string& joint) { return handleOf(r, joint).command(); }))
+      .def("rejected_commands", onRobot([](Robot& r, const std::string& joint) { return handleOf(r, joint).rejectedCommands(); }))
+      .def("limits", onRobot([](Robot& r, const std::string& joint) {
+        const JointLimits& l = handleOf(r, joint).limits();
+        py::dict d;
+        d["effort"] = l.effort;
+        d["velocity"] = l.velocity;
+        if (l.has_position)
+        {
+          d["lower"] = l.lower;
+          d["upper"] = l.upper;
+        }
+        return d;
+      }))
+      .def_property_readonly("joint_names", onRobot([](Robot& r) { return r.jointNames(); }), "every movable joint of the URDF")
+      .def("joint_state", onRobot([](Robot& r, const std::string& joint) {
+        double p, v, e;
+        if (!r.jointState(joint, p, v, e))
+          throw py::key_error("robot '" + r.name() + "' has no movable joint '" + joint + "'");
+        return py::make_tuple(p, v, e);
+      }), "(position, velocity, effort) of a movable joint")
+      .def("base_pose", onRobot([](Robot& r) { return poseArray(r.basePose()); }),
+           "root link pose in the world: x y z qx qy qz qw")
+      .def("base_twist", onRobot([](Robot& r) {
+        Twist t = r.baseTwist();
+        return py::make_tuple(py::array_t<double>(3, t.linear.data()), py::array_t<double>(3, t.angular.data()));
+      }), "(linear, angular) velocity of the root link origin, world frame")
+      .def("link_pose", onRobot([](Robot& r, const std::string& link) {
+        try
+        {
+          return poseArray(r.linkPose(link));
+        }
+        catch (const std::out_of_range& e)
+        {
+          throw py::key_error(e.what());
+        }
+      }))
+      .def_property("e_stop", onRobot([](Robot& r) { return r.eStop(); }), onRobot([](Robot& r, bool on) { r.setEStop(on); }))
+      .def_property_readonly("recoveries", onRobot([](Robot& r) { return r.recoveries(); }))
+      .def_property_readonly("disabled", onRobot([](Robot& r) { return r.disabled(); }), "taken out of the physics after diverging step after step")
+      .def_property_readonly("controller_manager", py::cpp_function([](const RobotRef& ref) {
+        managerOf(ref.get());  // a robot without one says so here, not at first use
+        return ManagerRef{ref};
+      }, py::keep_alive<0, 1>()))
+      .def_property_readonly("control_period", onRobot([](Robot& r) { return r.controlPeriod(); }))
+;
+  return robot;
+}
+
+}  // namespace python
+}  // namespace bullet_plant

@@ -1,0 +1,114 @@
+// bullet_plant.Robot's sensors: enabling them and their latest readings as dicts and arrays.
+#include "bindings.h"
+
+namespace bullet_plant
+{
+namespace python
+{
+namespace
+{
+Sensor& sensorOf(Robot& r, const std::string& name)
+{
+  Sensor* s = r.sensor(name);
+  if (!s)
+    throw py::key_error("robot '" + r.name() + "' has no simulated sensor '" + name + "'");
+  return *s;
+}
+}  // namespace
+
+void init_sensors(py::class_<RobotRef>& robot)
+{
+  robot
+      .def_property_readonly("sensors", onRobot([](Robot& r) {
+        std::vector<std::string> names;
+        for (Sensor* s : r.sensors())
+          names.push_back(s->name());
+        return names;
+      }), "the simulated sensors of the URDF's <gazebo reference> blocks")
+      .def("enable_sensor", onRobot([](Robot& r, const std::string& name, bool on) { sensorOf(r, name).setActive(on); }),
+           py::arg("name"), py::arg("on") = true, "sensors work only while enabled (subscribed, in ROS)")
+      .def("sensor_updates", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); }))
+      .def("sensor_topic", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).topic(); }))
+      .def("sensor_namespace", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).rosNamespace(); }),
+           "the namespace the sensor's gazebo_ros plugin publishes in")
+      .def("sensor_frame", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).frameId(); }),
+           "the frame id the sensor's plugin publishes (tf_prefix resolved)")
+      .def("imu", onRobot([](Robot& r, const std::string& name) -> py::object {
+        auto* imu = dynamic_cast<Imu*>(&sensorOf(r, name));
+        if (!imu)
+          throw py::key_error("sensor '" + name + "' is not an IMU");
+        if (!imu->hasReading())
+          return py::none();
+        const ImuReading& m = imu->latest();
+        py::dict d;
+        d["stamp"] = m.stamp_ns * 1e-9;
+        d["frame_id"] = m.frame_id;
+        d["orientation"] = std::vector<double>{m.orientation.x, m.orientation.y, m.orientation.z, m.orientation.w};
+        d["angular_velocity"] = std::vector<double>{m.angular_velocity.x, m.angular_velocity.y, m.angular_velocity.z};
+        d["linear_acceleration"] =
+            std::vector<double>{m.linear_acceleration.x, m.linear_acceleration.y, m.linear_acceleration.z};
+        return std::move(d);
+      }), "the latest sensor_msgs/Imu fields (x y z w; IMU frame), or None before the first")
+      .def("ground_truth", onRobot([](Robot& r, const std::string& name) -> py::object {
+        auto* odometry = dynamic_cast<GroundTruthOdometry*>(&sensorOf(r, name));
+        if (!odometry)
+          throw py::key_error("sensor '" + name + "' is not a gazebo_ros_p3d plugin");
+        if (!odometry->hasReading())
+          return py::none();
+        const GroundTruthReading& m = odometry->latest();
+        py::dict d;
+        d["stamp"] = m.stamp_ns * 1e-9;
+        d["frame_id"] = m.frame_id;
+        d["child_frame_id"] = m.child_frame_id;
+        d["position"] = std::vector<double>{m.pose.position.x, m.pose.position.y, m.pose.position.z};
+        d["orientation"] = std::vector<double>{m.pose.rotation.x, m.pose.rotation.y, m.pose.rotation.z, m.pose.rotation.w};
+        d["linear"] = std::vector<double>{m.linear.x, m.linear.y, m.linear.z};
+        d["angular"] = std::vector<double>{m.angular.x, m.angular.y, m.angular.z};
+        return std::move(d);
+      }), "the latest nav_msgs/Odometry fields of a gazebo_ros_p3d plugin, or None before the first")
+      .def("scan", onRobot([](Robot& r, const std::string& name) -> py::object {
+        auto* lidar = dynamic_cast<Lidar*>(&sensorOf(r, name));
+        if (!lidar)
+          throw py::key_error("sensor '" + name + "' is not a lidar");
+        if (!lidar->hasScan())
+          return py::none();
+        const LaserScan& s = lidar->latest();
+        py::dict d;
+        d["stamp"] = s.stamp_ns * 1e-9;
+        d["frame_id"] = s.frame_id;
+        d["angle_min"] = s.angle_min;
+        d["angle_max"] = s.angle_max;
+        d["angle_increment"] = s.angle_increment;
+        d["time_increment"] = s.time_increment;
+        d["scan_time"] = s.scan_time;
+        d["range_min"] = s.range_min;
+        d["range_max"] = s.range_max;
+        d["ranges"] = py::array_t<float>(s.ranges.size(), s.ranges.data());
+        return std::move(d);
+      }), "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first")
+      .def("image", onRobot([](Robot& r, const std::string& name) -> py::object {
+        auto* camera = dynamic_cast<Camera*>(&sensorOf(r, name));
+        if (!camera)
+          throw py::key_error("sensor '" + name + "' is not a camera");
+        if (!camera->hasFrame())
+          return py::none();
+        const CameraFrame& f = camera->latest();
+        py::dict d;
+        d["stamp"] = f.stamp_ns * 1e-9;
+        d["frame_id"] = f.frame_id;
+        d["width"] = f.width;
+        d["height"] = f.height;
+        d["K"] = std::vector<double>{f.fx, 0, f.cx, 0, f.fy, f.cy, 0, 0, 1};
+        d["rgb"] = py::array_t<uint8_t>({f.height, f.width, 3}, f.rgb.data());
+        if (camera->depthSensor())
+        {
+          d["depth"] = py::array_t<float>({f.height, f.width}, f.depth.data());
+          d["points"] = py::array_t<float>({f.height, f.width, 3}, f.points.data());
+        }
+        return std::move(d);
+      }), "the latest camera frame: rgb (H x W x 3 uint8), for depth cameras depth (H x W, m, NaN: no hit) and "
+         "points (H x W x 3, optical frame); K the pinhole matrix; None before the first");
+}
+
+}  // namespace python
+}  // namespace bullet_plant
