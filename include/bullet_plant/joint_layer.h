@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "bullet_plant/joint_limits.h"
 #include "bullet_plant/pid.h"
 
 namespace bullet_plant
@@ -15,16 +16,6 @@ class JointLayer;  // the plant side of the handles (joint_layer.cpp)
 enum class JointInterface { Effort, Velocity, Position };
 
 const char* interfaceName(JointInterface iface);  // "hardware_interface::EffortJointInterface", ...
-
-enum class JointType { Revolute, Continuous, Prismatic };
-
-struct JointLimits
-{
-  bool has_position = false;   // revolute and prismatic with lower < upper
-  double lower = 0.0, upper = 0.0;
-  double effort = 0.0;         // N m or N; infinite when the URDF gives no <limit>
-  double velocity = 0.0;       // rad/s or m/s; infinite when the URDF gives none
-};
 
 // What a controller (or Python) writes into a joint, and what the joint reports back.
 class JointHandle

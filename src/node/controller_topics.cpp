@@ -23,34 +23,6 @@ bool claimsJointStates(const Controller& c)
   return c.claimedResources().size() == 1 && c.claimedResources()[0].hardware_interface == kJointStateInterface;
 }
 
-sensor_msgs::JointState jointStateMessage(const JointStateSample& s)
-{
-  sensor_msgs::JointState msg;
-  msg.header.stamp = rosTime(s.stamp_ns);
-  msg.name = s.name;
-  msg.position = s.position;
-  msg.velocity = s.velocity;
-  msg.effort = s.effort;
-  return msg;
-}
-
-control_msgs::JointControllerState controllerStateMessage(const ControllerStateSample& s)
-{
-  control_msgs::JointControllerState msg;
-  msg.header.stamp = rosTime(s.stamp_ns);
-  msg.set_point = s.set_point;
-  msg.process_value = s.process_value;
-  msg.process_value_dot = s.process_value_dot;
-  msg.error = s.error;
-  msg.time_step = s.time_step;
-  msg.command = s.command;
-  msg.p = s.p;
-  msg.i = s.i;
-  msg.d = s.d;
-  msg.i_clamp = s.i_clamp;
-  msg.antiwindup = s.antiwindup;
-  return msg;
-}
 }  // namespace
 
 ControllerTopics::ControllerTopics(RosPlant& plant, ControllerManager& manager, ros::NodeHandle& nh)
@@ -135,11 +107,11 @@ void ControllerTopics::publish()
   for (auto& entry : controllers_)
   {
     for (const JointStateSample& s : entry.second->takeJointStates())
-      joint_states_pub_.publish(jointStateMessage(s));
+      joint_states_pub_.publish(toMsg(s));
     auto pub = state_pubs_.find(entry.first);
     for (const ControllerStateSample& s : entry.second->takeControllerStates())
       if (pub != state_pubs_.end())
-        pub->second.publish(controllerStateMessage(s));
+        pub->second.publish(toMsg(s));
     auto odom_pub = odom_pubs_.find(entry.first);
     for (const OdometrySample& s : entry.second->takeOdometry())
       if (odom_pub != odom_pubs_.end())

@@ -1,18 +1,21 @@
-// The one place where the plant's types meet geometry_msgs, sensor_msgs and nav_msgs: every node
+// The one place where the plant's types meet geometry_msgs, sensor_msgs, nav_msgs and control_msgs: every node
 // file converts through these (the camera's images and points are serialized in frame_messages.h).
 #pragma once
 
 #include <cstdint>
 #include <string>
 
+#include <control_msgs/JointControllerState.h>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
 #include <urdf_model/pose.h>
 
+#include "bullet_plant/controllers.h"
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
@@ -141,6 +144,35 @@ inline sensor_msgs::LaserScan toMsg(const LaserScan& s)
   m.range_max = s.range_max;
   m.ranges = s.ranges;
   return m;
+}
+
+inline sensor_msgs::JointState toMsg(const JointStateSample& s)
+{
+  sensor_msgs::JointState msg;
+  msg.header.stamp = rosTime(s.stamp_ns);
+  msg.name = s.name;
+  msg.position = s.position;
+  msg.velocity = s.velocity;
+  msg.effort = s.effort;
+  return msg;
+}
+
+inline control_msgs::JointControllerState toMsg(const ControllerStateSample& s)
+{
+  control_msgs::JointControllerState msg;
+  msg.header.stamp = rosTime(s.stamp_ns);
+  msg.set_point = s.set_point;
+  msg.process_value = s.process_value;
+  msg.process_value_dot = s.process_value_dot;
+  msg.error = s.error;
+  msg.time_step = s.time_step;
+  msg.command = s.command;
+  msg.p = s.p;
+  msg.i = s.i;
+  msg.d = s.d;
+  msg.i_clamp = s.i_clamp;
+  msg.antiwindup = s.antiwindup;
+  return msg;
 }
 
 }  // namespace bullet_plant

@@ -9,6 +9,8 @@
 
 #include "hardware/joint_layer_sim.h"
 
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+
 namespace bullet_plant
 {
 namespace
@@ -79,10 +81,9 @@ void driveRigid(MovableJoint& j, double target_velocity, double dt)
 
 // The joints' passive dynamics: damping (where no drive carries it), dry friction, limits; and the
 // explicit efforts of this step as joint torques.
-void passiveDynamics(RobotMultibody& robot, double dt)
+void passiveDynamics(std::vector<MovableJoint>& joints, btMultiBody& mb, double dt)
 {
-  btMultiBody& mb = *robot.bullet;
-  for (MovableJoint& j : robot.joints)
+  for (MovableJoint& j : joints)
   {
     const double q = mb.getJointPos(j.link), qd = mb.getJointVel(j.link);
     double torque = j.explicit_effort;
@@ -199,15 +200,14 @@ void JointLayer::sayBeyondLimit(size_t hi, double command, double limit, const c
                formatNumber(limit) + "; held to the limit (said once per joint)");
 }
 
-void JointLayer::writeSim(RobotMultibody& robot, double dt)
+void JointLayer::writeSim(std::vector<MovableJoint>& joints, btMultiBody& mb, double dt)
 {
-  const btMultiBody& mb = *robot.bullet;
-  for (MovableJoint& j : robot.joints)
+  for (MovableJoint& j : joints)
     j.explicit_effort = 0.0;
   for (size_t hi = 0; hi < handles_.size(); ++hi)
   {
     JointHandle& h = handles_[hi];
-    MovableJoint& j = robot.joints[handle_joint_[hi]];
+    MovableJoint& j = joints[handle_joint_[hi]];
     const double q = mb.getJointPos(j.link), qd = mb.getJointVel(j.link);
     switch (h.interface())
     {
@@ -253,16 +253,15 @@ void JointLayer::writeSim(RobotMultibody& robot, double dt)
       }
     }
   }
-  passiveDynamics(robot, dt);
+  passiveDynamics(joints, mb, dt);
 }
 
-void JointLayer::readSim(const RobotMultibody& robot, double dt)
+void JointLayer::readSim(const std::vector<MovableJoint>& joints, const btMultiBody& mb, double dt)
 {
-  const btMultiBody& mb = *robot.bullet;
   for (size_t hi = 0; hi < handles_.size(); ++hi)
   {
     JointHandle& h = handles_[hi];
-    const MovableJoint& j = robot.joints[handle_joint_[hi]];
+    const MovableJoint& j = joints[handle_joint_[hi]];
     h.position_ = mb.getJointPos(j.link);
     h.velocity_ = mb.getJointVel(j.link);
     h.effort_ = actuatorEffort(j, h.velocity_, dt);

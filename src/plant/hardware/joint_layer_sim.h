@@ -10,7 +10,9 @@
 #include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/log.h"
-#include "simulation/robot_multibody.h"
+#include "physics/movable_joint.h"
+
+class btMultiBody;
 
 namespace bullet_plant
 {
@@ -35,8 +37,9 @@ public:
   void setEStop(bool on);
   bool eStop() const { return e_stop_; }
 
-  void writeSim(RobotMultibody& robot, double dt);
-  void readSim(const RobotMultibody& robot, double dt);
+  // `joints`: the robot's movable joints in URDF order, of the multibody `bullet`.
+  void writeSim(std::vector<MovableJoint>& joints, btMultiBody& bullet, double dt);
+  void readSim(const std::vector<MovableJoint>& joints, const btMultiBody& bullet, double dt);
   // A restored state invalidates what the pid_gains loops remember.
   void resetPids();
 

@@ -18,14 +18,11 @@
 #include "bullet_plant/log.h"
 #include "physics/bullet_conversions.h"
 #include "physics/joint_drive.h"
+#include "physics/movable_joint.h"
 #include "rendering/ray_caster.h"
 
 namespace bullet_plant
 {
-// Bullet clamps every joint rate to this (btMultiBody::setMaxCoordinateVelocity), rad/s or m/s; the
-// joint layer holds velocity commands to it too.
-constexpr double kMaxJointSpeed = 1e4;
-
 // A rigid body of the multibody: one URDF link with a movable parent joint (or the root) and every
 // link fixed to it. Bullet wants each body's frame at its centre of mass along its principal axes;
 // urdf_from_com places that frame in the body's URDF link frame.
@@ -48,27 +45,6 @@ struct Body
   std::vector<RayPrimitive> ray_shapes;  // for sensors, in the COM frame: the collisions (lidars) and visuals (cameras)
   double mu = 1.0;
 };
-
-// A movable URDF joint and the Bullet pieces that act on it.
-struct MovableJoint
-{
-  std::string name;
-  JointType type = JointType::Revolute;
-  int link = -1;                 // Bullet link index (= body index - 1)
-  JointLimits limits;
-  double damping = 0.0, friction = 0.0;
-  std::unique_ptr<JointDrive> drive;           // the joint layer's motor / implicit PID
-  std::unique_ptr<JointDrive> damper;          // URDF <dynamics damping> where an explicit torque would be unstable
-  std::unique_ptr<JointDrive> dry_friction;    // URDF <dynamics friction>
-  std::unique_ptr<JointDrive> lower_limit, upper_limit;  // rows only while the joint is at a limit
-  double axis_inertia = 0.0;                   // the child body's inertia about the joint axis
-  double explicit_effort = 0.0;                // actuator torque applied explicitly this step
-  double initial_position = 0.0;
-};
-
-// q held to the joint's URDF position limits, with a warning naming `what` (initial position,
-// position), the joint and the robot when it was outside.
-double positionWithinLimits(const MovableJoint& j, double q, Log& log, const std::string& robot, const std::string& what);
 
 struct RobotMultibody
 {

@@ -302,7 +302,7 @@ void World::step(int n)
     for (auto& r : w.robots)
       if (!r->in_->disabled)
       {
-        r->in_->joint_layer.writeSim(r->in_->multibody, w.step_s);
+        r->in_->joint_layer.writeSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
         if (r->in_->hasExternalEfforts())
           r->in_->applyExternalEfforts(w.time_ns);
       }
@@ -313,7 +313,7 @@ void World::step(int n)
       if (!r->in_->disabled)
       {
         r->in_->recoverIfDiverged();
-        r->in_->joint_layer.readSim(r->in_->multibody, w.step_s);
+        r->in_->joint_layer.readSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
       }
     for (auto& r : w.robots)
       if (!r->in_->disabled)

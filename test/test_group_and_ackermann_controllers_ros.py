@@ -45,7 +45,7 @@ def test_ackermann_launch_drives_the_car_from_a_twist(ros):
     truth = got[NS + '/odom'][-1]['twist']['twist']
     bicycle_yaw_rate = speed * math.tan(steering) / 0.261
     assert math.hypot(truth['linear']['x'], truth['linear']['y']) == pytest.approx(speed, rel=0.05)
-    assert 0.80 <= truth['angular']['z'] / bicycle_yaw_rate <= 1.02   # test_more_controllers.py says why
+    assert 0.80 <= truth['angular']['z'] / bicycle_yaw_rate <= 1.02   # test_group_and_ackermann_controllers.py says why
 
     odometry = got[NS + '/ackermann_right_controller/odom']
     assert 40 <= len(odometry) <= 60, 'publish_rate 50 in simulated time'
