@@ -58,6 +58,10 @@ public:
   std::vector<std::string> linkNames() const;
   // The velocity of the link frame's origin and the link's angular velocity, world frame.
   Twist linkTwist(const std::string& link) const;
+  // The one kinematics query, as MuJoCo's mj_objectVelocity: the pose of the frame at `offset` in
+  // `link` and that frame's velocity, world frame. baseTwist and linkTwist read it, the IMU and
+  // gazebo_ros_p3d sample it, get_link_state and link_states report it.
+  LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset = urdf::Pose()) const;
   // set_model_state / set_link_state: the whole robot moved rigidly so that `link` is at `pose`
   // (world), every body moving with `twist` (of the link's origin, world frame): the joints keep
   // their positions, at rest relative to each other. A plant multibody cannot pull one link away

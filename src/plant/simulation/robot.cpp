@@ -302,20 +302,18 @@ bool Robot::jointState(const std::string& joint, double& position, double& veloc
 
 urdf::Pose Robot::basePose() const { return fromBullet(in_->multibody.rootWorldTransform()); }
 
-Twist Robot::baseTwist() const
+namespace
 {
-  const btMultiBody& mb = *in_->multibody.bullet;
-  btVector3 omega = mb.getBaseOmega();
-  btVector3 root = in_->multibody.rootWorldTransform().getOrigin();
-  btVector3 v = mb.getBaseVel() + omega.cross(root - mb.getBasePos());
+Twist twistOf(const LinkMotion& m)
+{
   Twist t;
-  for (int i = 0; i < 3; ++i)
-  {
-    t.linear[i] = v[i];
-    t.angular[i] = omega[i];
-  }
+  t.linear = {{m.velocity.x, m.velocity.y, m.velocity.z}};
+  t.angular = {{m.angular_velocity.x, m.angular_velocity.y, m.angular_velocity.z}};
   return t;
 }
+}  // namespace
+
+Twist Robot::baseTwist() const { return twistOf(linkMotion(in_->description.model->getRoot()->name)); }
 
 urdf::Pose Robot::linkPose(const std::string& link) const
 {
@@ -353,33 +351,14 @@ int64_t jobEnd(int64_t start_ns, int64_t duration_ns) { return duration_ns < 0 ?
 
 Twist Robot::linkTwist(const std::string& link) const
 {
-  const RobotMultibody& multibody = in_->multibody;
-  const int body = bodyOfLink(multibody, link, in_->name);
-  const btMultiBody& mb = *multibody.bullet;
-  MultibodyState state;
-  linkKinematics(mb, state);
-  const btScalar* qd = mb.getVelocityVector();
-  const btVector3 origin = multibody.linkWorldTransform(link, in_->name).getOrigin();
-  std::vector<btScalar> row(state.n);
-  Twist t;
-  const btVector3 axes[3] = {btVector3(1, 0, 0), btVector3(0, 1, 0), btVector3(0, 0, 1)};
-  for (int a = 0; a < 3; ++a)
-  {
-    contactJacobianRow(state, body - 1, origin, axes[a], row.data());
-    double v = 0;
-    for (int i = 0; i < state.n; ++i)
-      v += double(row[i]) * double(qd[i]);
-    t.linear[a] = v;
-  }
-  // The base's angular velocity plus each joint's between the base and the body.
-  const btVector3 omega = mb.getBaseOmega();
-  for (int a = 0; a < 3; ++a)
-    t.angular[a] = state.first ? 0.0 : double(omega[a]);
-  for (int b = body; b > 0; b = state.bodies[b].parent)
-    for (int i = state.bodies[b].first_dof; i < state.bodies[b].first_dof + state.bodies[b].dof_count; ++i)
-      for (int a = 0; a < 3; ++a)
-        t.angular[a] += state.dofs[i].angular[a] * double(qd[i]);
-  return t;
+  bodyOfLink(in_->multibody, link, in_->name);  // an unknown link: std::out_of_range naming it
+  return twistOf(linkMotion(link));
+}
+
+LinkMotion Robot::linkMotion(const std::string& link, const urdf::Pose& offset) const
+{
+  bodyOfLink(in_->multibody, link, in_->name);
+  return in_->linkMotion(link, offset);
 }
 
 void Robot::setLinkState(const std::string& link, const urdf::Pose& pose, const Twist& twist)
