@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bullet_plant/rate_gate.h"
 #include "bullet_plant/robot_description.h"
 
 namespace bullet_plant
@@ -61,7 +62,7 @@ public:
   void setActive(bool active) { active_ = active; }
   bool active() const { return active_; }
   uint64_t updates() const { return updates_; }
-  int64_t periodNs() const { return period_ns_; }
+  int64_t periodNs() const { return gate_.periodNs(); }
   // True when an update is due at this simulated time (and marks it done).
   bool due(int64_t time_ns);
 
@@ -74,8 +75,7 @@ protected:
   std::mt19937 noise_;
   bool active_ = false;
   uint64_t updates_ = 0;
-  int64_t period_ns_ = 0;
-  int64_t last_update_ns_ = -1;
+  RateGate gate_;  // <update_rate>, or what the plugin makes of it
 };
 
 class Lidar : public Sensor

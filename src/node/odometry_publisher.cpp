@@ -16,10 +16,8 @@ OdometryPublisher::OdometryPublisher(Robot& robot, ros::NodeHandle& nh) : robot_
 
 void OdometryPublisher::publish(int64_t time_ns, bool tf)
 {
-  if (last_ns_ >= 0 && time_ns - last_ns_ < period_ns_ && time_ns >= last_ns_)
-    return;
-  last_ns_ = time_ns;
-  publishNow(time_ns, tf);
+  if (gate_.due(time_ns))
+    publishNow(time_ns, tf);
 }
 
 void OdometryPublisher::publishNow(int64_t time_ns, bool tf)

@@ -6,6 +6,8 @@
 
 #include <ros/ros.h>
 
+#include "bullet_plant/rate_gate.h"
+
 namespace bullet_plant
 {
 class Robot;
@@ -23,7 +25,7 @@ private:
 
   Robot& robot_;
   ros::Publisher odom_pub_, tf_pub_;
-  int64_t period_ns_ = 20000000, last_ns_ = -1;
+  RateGate gate_{periodNsOfRate(50.0)};
 };
 
 }  // namespace bullet_plant

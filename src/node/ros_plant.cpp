@@ -119,7 +119,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), 
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.
   double clock_rate = 100.0;
   private_nh_.param("pub_clock_frequency", clock_rate, clock_rate);
-  clock_period_ns_ = clock_rate > 0 ? int64_t(std::llround(1e9 / clock_rate)) : 0;
+  clock_gate_.setPeriodNs(periodNsOfRate(clock_rate));
   bool paused = false;
   private_nh_.param("paused", paused, false);
   applyPaused(paused);
@@ -231,7 +231,7 @@ void RosPlant::applyPaused(bool paused)
 void RosPlant::resetSimulation()
 {
   world_->resetSimulation();
-  last_clock_ns_ = -1;
+  clock_gate_.reset();
   publishClock();
   pace_start_wall_ = ros::WallTime::now();
   pace_start_sim_ns_ = world_->timeNs();
@@ -246,9 +246,8 @@ void RosPlant::setRealTimeFactor(double factor)
 
 void RosPlant::publishClock()
 {
-  if (last_clock_ns_ >= 0 && world_->timeNs() - last_clock_ns_ < clock_period_ns_ && world_->timeNs() >= last_clock_ns_)
+  if (!clock_gate_.due(world_->timeNs()))
     return;
-  last_clock_ns_ = world_->timeNs();
   rosgraph_msgs::Clock clock;
   clock.clock = rosTime(world_->timeNs());
   clock_pub_.publish(clock);

@@ -17,6 +17,7 @@
 
 #include <ros/ros.h>
 
+#include "bullet_plant/rate_gate.h"
 #include "bullet_plant/world.h"
 
 namespace bullet_plant
@@ -69,7 +70,7 @@ private:
 
   std::atomic<bool> paused_{false};
   double real_time_factor_ = 1.0;
-  int64_t clock_period_ns_ = 0, last_clock_ns_ = -1;
+  RateGate clock_gate_;  // pub_clock_frequency
   ros::WallTime pace_start_wall_;
   int64_t pace_start_sim_ns_ = 0;
   ros::WallTime last_status_;

@@ -88,7 +88,7 @@ public:
     const std::string rear_wheel = text("rear_wheel", "rear_wheel_joint");
     const std::string front_steer = text("front_steer", "front_steer_joint");
     const double publish_rate = number("publish_rate", 50.0);
-    publish_period_ns_ = publish_rate > 0 ? int64_t(std::llround(1e9 / publish_rate)) : 0;
+    publish_period_ns_ = periodNsOfRate(publish_rate);
     open_loop_ = flag("open_loop", false);
     const double separation_multiplier = number("wheel_separation_h_multiplier", 1.0);
     const double radius_multiplier = number("wheel_radius_multiplier", 1.0);

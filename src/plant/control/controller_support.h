@@ -10,6 +10,7 @@
 #include "bullet_plant/controllers.h"
 #include "bullet_plant/log.h"
 #include "bullet_plant/params.h"
+#include "bullet_plant/rate_gate.h"
 
 namespace bullet_plant
 {

@@ -23,7 +23,7 @@ public:
       c.log.error("Parameter 'publish_rate' not set");
       return false;
     }
-    publish_period_ns_ = rate->asDouble() > 0 ? int64_t(std::llround(1e9 / rate->asDouble())) : -1;
+    publish_period_ns_ = periodNsOfRate(rate->asDouble());  // 0: never publishes
     // Default: every joint with a state handle, sorted by name as the hardware interface lists them.
     std::map<std::string, JointHandle*> by_name;
     for (JointHandle& h : c.joints.handles())

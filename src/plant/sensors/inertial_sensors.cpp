@@ -12,7 +12,6 @@ namespace bullet_plant
 {
 namespace
 {
-int64_t periodOfRate(double rate_hz) { return rate_hz > 0 ? static_cast<int64_t>(std::llround(1e9 / rate_hz)) : 0; }
 
 urdf::Vector3 sub(const urdf::Vector3& a, const urdf::Vector3& b) { return urdf::Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
 
@@ -54,9 +53,9 @@ Imu::Imu(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed
   stddev_ = std::abs(d.pluginNumber("gaussianNoise", 0.0));
   offset_ = rpyParam(d, "rpyOffset");
   if (d.model_plugin)  // gazebo_ros_imu: <updateRate>, 0 = every step (updateRateHZ accepted too)
-    period_ns_ = periodOfRate(d.pluginNumber("updateRate", d.pluginNumber("updateRateHZ", 0.0)));
+    gate_.setPeriodNs(periodNsOfRate(d.pluginNumber("updateRate", d.pluginNumber("updateRateHZ", 0.0))));
   else  // gazebo_ros_imu_sensor: <updateRateHZ>, default 1 Hz, within the sensor's <update_rate>
-    period_ns_ = std::max(period_ns_, periodOfRate(d.pluginNumber("updateRateHZ", 1.0)));
+    gate_.setPeriodNs(std::max(gate_.periodNs(), periodNsOfRate(d.pluginNumber("updateRateHZ", 1.0))));
 }
 
 std::string Imu::topic() const
@@ -91,7 +90,7 @@ void Imu::sample(const LinkMotion& motion, const urdf::Vector3& gravity, int64_t
   const urdf::Rotation world_to_imu = motion.pose.rotation.GetInverse();
   // Finite difference of the velocity, as Gazebo's ImuSensor, over consecutive samples only.
   const int64_t gap = time_ns - last_sample_ns_;
-  const bool consecutive = last_sample_ns_ >= 0 && gap > 0 && gap <= period_ns_ + std::max<int64_t>(period_ns_ / 2, 2000000);
+  const bool consecutive = last_sample_ns_ >= 0 && gap > 0 && gap <= periodNs() + std::max<int64_t>(periodNs() / 2, 2000000);
   urdf::Vector3 acceleration = consecutive ? scaled(sub(motion.velocity, last_velocity_), 1e9 / double(gap)) : urdf::Vector3();
   acceleration = rotate(world_to_imu, sub(acceleration, gravity));
   const urdf::Vector3 rate = rotate(world_to_imu, motion.angular_velocity);
@@ -123,7 +122,7 @@ GroundTruthOdometry::GroundTruthOdometry(const SensorDescription& d, uint32_t no
   stddev_ = std::abs(d.pluginNumber("gaussianNoise", 0.0));
   offset_.position = vectorParam(d, "xyzOffset");
   offset_.rotation = rpyParam(d, "rpyOffset");
-  period_ns_ = periodOfRate(d.pluginNumber("updateRate", 0.0));
+  gate_.setPeriodNs(periodNsOfRate(d.pluginNumber("updateRate", 0.0)));
 }
 
 std::string GroundTruthOdometry::frameId() const

@@ -9,9 +9,9 @@
 
 namespace bullet_plant
 {
-Sensor::Sensor(const SensorDescription& d, uint32_t noise_seed) : description_(d), noise_(noise_seed)
+Sensor::Sensor(const SensorDescription& d, uint32_t noise_seed)
+  : description_(d), noise_(noise_seed), gate_(periodNsOfRate(d.update_rate))
 {
-  period_ns_ = d.update_rate > 0 ? static_cast<int64_t>(std::llround(1e9 / d.update_rate)) : 0;
 }
 
 std::string resolveTfFrame(const std::string& prefix, const std::string& frame)
@@ -55,9 +55,8 @@ bool Sensor::publishesOnRos() const
 
 bool Sensor::due(int64_t time_ns)
 {
-  if (last_update_ns_ >= 0 && time_ns - last_update_ns_ < period_ns_ && time_ns >= last_update_ns_)
+  if (!gate_.due(time_ns))
     return false;
-  last_update_ns_ = time_ns;
   ++updates_;
   return true;
 }
@@ -70,9 +69,7 @@ std::string Lidar::frameId() const { return resolveTfFrame(tf_prefix_, descripti
 Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
 {
   // The plugin's <updateRate> throttles what the sensor renders (0: the sensor's rate).
-  const double plugin_rate = d.pluginNumber("updateRate", 0.0);
-  if (plugin_rate > 0)
-    period_ns_ = std::max(period_ns_, static_cast<int64_t>(std::llround(1e9 / plugin_rate)));
+  gate_.setPeriodNs(std::max(gate_.periodNs(), periodNsOfRate(d.pluginNumber("updateRate", 0.0))));
 }
 
 namespace

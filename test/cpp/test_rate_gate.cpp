@@ -1,0 +1,55 @@
+// RateGate and periodNsOfRate: the one update gate of the sensors, the ground-truth odometry and /clock.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "bullet_plant/rate_gate.h"
+
+using bullet_plant::periodNsOfRate;
+using bullet_plant::RateGate;
+
+TEST(RateGate, PeriodIsTheRoundedReciprocalAndZeroForNoRate)
+{
+  EXPECT_EQ(periodNsOfRate(40.0), 25000000);
+  EXPECT_EQ(periodNsOfRate(30.0), 33333333);  // 33.33 ms: the camera's period on 1 ms steps
+  EXPECT_EQ(periodNsOfRate(0.0), 0);
+  EXPECT_EQ(periodNsOfRate(-5.0), 0);
+}
+
+TEST(RateGate, OpensFirstThenOncePerPeriod)
+{
+  RateGate gate(periodNsOfRate(100.0));  // 10 ms
+  int opened = 0;
+  for (int64_t t = 0; t <= 100000000; t += 1000000)  // 1 ms steps for 100 ms
+    opened += gate.due(t);
+  EXPECT_EQ(opened, 11);  // at 0, 10, ..., 100 ms
+}
+
+TEST(RateGate, ANonDividingPeriodOpensAtTheFirstStepPastIt)
+{
+  RateGate gate(periodNsOfRate(30.0));
+  std::vector<int64_t> opened;
+  for (int64_t t = 0; t <= 100000000; t += 1000000)
+    if (gate.due(t))
+      opened.push_back(t);
+  EXPECT_EQ(opened, (std::vector<int64_t>{0, 34000000, 68000000}));
+}
+
+TEST(RateGate, WithoutAPeriodOpensEveryCall)
+{
+  RateGate gate;
+  EXPECT_TRUE(gate.due(5));
+  EXPECT_TRUE(gate.due(5));
+  EXPECT_TRUE(gate.due(6));
+}
+
+TEST(RateGate, OpensAtOnceWhenTimeGoesBackOrAfterReset)
+{
+  RateGate gate(periodNsOfRate(1.0));
+  EXPECT_TRUE(gate.due(5000000000));
+  EXPECT_FALSE(gate.due(5500000000));
+  EXPECT_TRUE(gate.due(1000000));  // a reset_simulation took time back
+  EXPECT_FALSE(gate.due(2000000));
+  gate.reset();
+  EXPECT_TRUE(gate.due(3000000));
+}
