@@ -36,6 +36,7 @@ class Imu : public Sensor
 {
 public:
   Imu(const SensorDescription& d, uint32_t noise_seed);
+  void update(SensorContext& context, int64_t time_ns) override;
   bool modelPlugin() const { return description_.model_plugin; }
   std::string topic() const override;
   // frameName as given (gazebo_ros_imu: default bodyName), without a leading '/' (tf2 refuses it).
@@ -75,6 +76,7 @@ class GroundTruthOdometry : public Sensor
 {
 public:
   GroundTruthOdometry(const SensorDescription& d, uint32_t noise_seed);
+  void update(SensorContext& context, int64_t time_ns) override;
   std::string topic() const override { return description_.pluginParam("topicName"); }
   // tf::resolve(tf_prefix parameter (default empty), frameName (default "world")).
   std::string frameId() const override;

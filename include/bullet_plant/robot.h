@@ -89,10 +89,6 @@ public:
   double controlPeriod() const;  // s
 
   std::vector<Sensor*> sensors();
-  std::vector<Lidar*> lidars();
-  std::vector<Camera*> cameras();
-  std::vector<Imu*> imus();
-  std::vector<GroundTruthOdometry*> groundTruths();
   Sensor* sensor(const std::string& name);
 
   // Steps where the physics produced a non-finite state and the robot was put back to its last

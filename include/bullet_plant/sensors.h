@@ -12,6 +12,7 @@
 
 namespace bullet_plant
 {
+class SensorContext;  // what a sensor reads of the simulation (sensors/sensor_context.h)
 namespace detail
 {
 struct SensorRendering;  // casts the rays and fills sensors' outputs (sensors.cpp)
@@ -65,6 +66,9 @@ public:
   int64_t periodNs() const { return gate_.periodNs(); }
   // True when an update is due at this simulated time (and marks it done).
   bool due(int64_t time_ns);
+  // The update: what the sensor reads of the simulation through `context` at `time_ns`. The robot
+  // calls it for each active sensor that is due.
+  virtual void update(SensorContext& context, int64_t time_ns) = 0;
 
 protected:
   // The plugin's namespace when it has no <robotNamespace> and the spawn gave none.
@@ -82,6 +86,7 @@ class Lidar : public Sensor
 {
 public:
   Lidar(const SensorDescription& d, uint32_t noise_seed);
+  void update(SensorContext& context, int64_t time_ns) override;
   // gazebo_ros_laser: no <topicName> means "/world" (sic).
   std::string topic() const override { return description_.pluginParam("topicName", "/world"); }
   std::string frameId() const override;
@@ -113,6 +118,7 @@ class Camera : public Sensor
 {
 public:
   Camera(const SensorDescription& d, uint32_t noise_seed);
+  void update(SensorContext& context, int64_t time_ns) override;
   bool depthSensor() const { return description_.type == "depth"; }
   // Topics, relative to the robot namespace, as the plugins name them.
   std::string topic() const override;   // the image

@@ -7,6 +7,7 @@
 
 #include "bullet_plant/geometry.h"
 #include "description/xml_util.h"
+#include "sensors/sensor_context.h"
 
 namespace bullet_plant
 {
@@ -85,6 +86,11 @@ double Imu::noise()
   return std::normal_distribution<double>(0.0, stddev_)(noise_);
 }
 
+void Imu::update(SensorContext& context, int64_t time_ns)
+{
+  sample(context.linkMotion(description_.link, description_.pose), context.gravity(), time_ns);
+}
+
 void Imu::sample(const LinkMotion& motion, const urdf::Vector3& gravity, int64_t time_ns)
 {
   const urdf::Rotation world_to_imu = motion.pose.rotation.GetInverse();
@@ -141,6 +147,15 @@ std::string GroundTruthOdometry::referenceLink() const
 {
   const std::string frame = description_.pluginParam("frameName", "world");
   return frame == "world" || frame == "/world" || frame == "map" || frame == "/map" ? "" : frame;
+}
+
+void GroundTruthOdometry::update(SensorContext& context, int64_t time_ns)
+{
+  const std::string reference = referenceLink();
+  if (!reference.empty() && !context.hasLink(reference))
+    return;  // said at spawn: gazebo_ros_p3d publishes nothing then
+  const LinkMotion frame = reference.empty() ? LinkMotion() : context.linkMotion(reference, urdf::Pose());
+  sample(context.linkMotion(description_.link, urdf::Pose()), reference.empty() ? nullptr : &frame, time_ns);
 }
 
 void GroundTruthOdometry::sample(const LinkMotion& body, const LinkMotion* reference, int64_t time_ns)

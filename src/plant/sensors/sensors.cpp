@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "sensors/sensor_context.h"
 #include "sensors/sensor_rendering.h"
 
 namespace bullet_plant
@@ -62,6 +63,26 @@ bool Sensor::due(int64_t time_ns)
 }
 
 Lidar::Lidar(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed) {}
+
+namespace
+{
+// The sensor's frame in the world: its link's frame, then its <pose> in the link.
+Frame sensorPose(const SensorContext& context, const SensorDescription& d)
+{
+  return Frame::fromPose(context.linkPose(d.link)) * Frame::fromPose(d.pose);
+}
+}  // namespace
+
+void Lidar::update(SensorContext& context, int64_t time_ns)
+{
+  detail::SensorRendering::scan(*this, context.rayScene(false), sensorPose(context, description_), time_ns);
+}
+
+void Camera::update(SensorContext& context, int64_t time_ns)
+{
+  detail::SensorRendering::render(*this, context.rayScene(true), sensorPose(context, description_),
+                                  context.lighting(), time_ns);
+}
 
 // gazebo_ros_laser: no <frameName> means "/world".
 std::string Lidar::frameId() const { return resolveTfFrame(tf_prefix_, description_.pluginParam("frameName", "/world")); }

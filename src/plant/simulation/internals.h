@@ -16,6 +16,7 @@
 #include "bullet_plant/world.h"
 #include "hardware/joint_layer_sim.h"
 #include "rendering/ray_caster.h"
+#include "sensors/sensor_context.h"
 #include "simulation/robot_multibody.h"
 
 namespace bullet_plant
@@ -33,7 +34,7 @@ struct LastGoodState
   void restore(RobotMultibody& robot) const;
 };
 
-struct Robot::Internals
+struct Robot::Internals : SensorContext
 {
   World::Internals* world = nullptr;
   Robot* self = nullptr;
@@ -77,8 +78,14 @@ struct Robot::Internals
   void updateControllers(int64_t time_ns);
   void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
-  // A link frame's (or a point's of it, frame `offset` in the link) pose and velocities in the world.
-  LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const;
+  // What its sensors read (SensorContext). linkMotion: a link frame's (or a point's of it, frame
+  // `offset` in the link) pose and velocities in the world.
+  bool hasLink(const std::string& link) const override;
+  urdf::Pose linkPose(const std::string& link) const override;
+  LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const override;
+  urdf::Vector3 gravity() const override;
+  const RayScene& rayScene(bool with_own_robot) override;
+  Lighting lighting() const override;
   void resetToSpawn();
   // The wrench and effort jobs due at time_ns, as forces and torques of the coming step; expired
   // jobs are dropped.

@@ -7,7 +7,6 @@
 
 #include "physics/bullet_conversions.h"
 #include "physics/multibody_dynamics.h"
-#include "sensors/sensor_rendering.h"
 #include "simulation/internals.h"
 #include "simulation/robot_builder.h"
 
@@ -143,31 +142,22 @@ void Robot::Internals::recoverIfDiverged()
 void Robot::Internals::updateSensors(int64_t time_ns)
 {
   for (auto& sensor : sensors)
-  {
-    if (!sensor->active() || !sensor->due(time_ns))
-      continue;
-    const SensorDescription& d = sensor->description();
-    if (auto* imu = dynamic_cast<Imu*>(sensor.get()))
-    {
-      imu->sample(linkMotion(d.link, d.pose), world->description.gravity, time_ns);
-      continue;
-    }
-    if (auto* odometry = dynamic_cast<GroundTruthOdometry*>(sensor.get()))
-    {
-      const std::string reference = odometry->referenceLink();
-      if (!reference.empty() && !multibody.link_in_body.count(reference))
-        continue;  // said at spawn: gazebo_ros_p3d publishes nothing then
-      const LinkMotion frame = reference.empty() ? LinkMotion() : linkMotion(reference, urdf::Pose());
-      odometry->sample(linkMotion(d.link, urdf::Pose()), reference.empty() ? nullptr : &frame, time_ns);
-      continue;
-    }
-    const Frame pose = Frame::fromPose(fromBullet(multibody.linkWorldTransform(d.link, name))) * Frame::fromPose(d.pose);
-    if (auto* camera = dynamic_cast<Camera*>(sensor.get()))
-      detail::SensorRendering::render(*camera, world->rayScene(nullptr), pose, world->lighting(), time_ns);
-    else if (auto* lidar = dynamic_cast<Lidar*>(sensor.get()))
-      detail::SensorRendering::scan(*lidar, world->rayScene(this), pose, time_ns);
-  }
+    if (sensor->active() && sensor->due(time_ns))
+      sensor->update(*this, time_ns);
 }
+
+bool Robot::Internals::hasLink(const std::string& link) const { return multibody.link_in_body.count(link) > 0; }
+
+urdf::Pose Robot::Internals::linkPose(const std::string& link) const
+{
+  return fromBullet(multibody.linkWorldTransform(link, name));
+}
+
+urdf::Vector3 Robot::Internals::gravity() const { return world->description.gravity; }
+
+const RayScene& Robot::Internals::rayScene(bool with_own_robot) { return world->rayScene(with_own_robot ? nullptr : this); }
+
+Lighting Robot::Internals::lighting() const { return world->lighting(); }
 
 void Robot::Internals::settleAfterTeleport()
 {
@@ -433,24 +423,6 @@ std::vector<Sensor*> Robot::sensors()
     out.push_back(s.get());
   return out;
 }
-
-namespace
-{
-template <class Kind>
-std::vector<Kind*> sensorsOfKind(const std::vector<std::unique_ptr<Sensor>>& sensors)
-{
-  std::vector<Kind*> out;
-  for (auto& s : sensors)
-    if (auto* kind = dynamic_cast<Kind*>(s.get()))
-      out.push_back(kind);
-  return out;
-}
-}  // namespace
-
-std::vector<Camera*> Robot::cameras() { return sensorsOfKind<Camera>(in_->sensors); }
-std::vector<Lidar*> Robot::lidars() { return sensorsOfKind<Lidar>(in_->sensors); }
-std::vector<Imu*> Robot::imus() { return sensorsOfKind<Imu>(in_->sensors); }
-std::vector<GroundTruthOdometry*> Robot::groundTruths() { return sensorsOfKind<GroundTruthOdometry>(in_->sensors); }
 
 Sensor* Robot::sensor(const std::string& name)
 {

@@ -1,0 +1,31 @@
+// What a sensor reads of the simulation when it updates, as the robot that carries it offers it:
+// link poses and motion (the one kinematics query), gravity, the world's ray scene and its light.
+// Sensor::update takes it, so the robot updates every kind of sensor by one call.
+#pragma once
+
+#include <string>
+
+#include <urdf_model/pose.h>
+
+#include "bullet_plant/inertial_sensors.h"
+#include "rendering/ray_caster.h"
+
+namespace bullet_plant
+{
+class SensorContext
+{
+public:
+  virtual bool hasLink(const std::string& link) const = 0;
+  virtual urdf::Pose linkPose(const std::string& link) const = 0;  // world
+  virtual LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const = 0;
+  virtual urdf::Vector3 gravity() const = 0;
+  // The world's scene where everything is now; without the robot's own bodies for a lidar (a lidar
+  // does not see its robot; cameras do, as Gazebo's).
+  virtual const RayScene& rayScene(bool with_own_robot) = 0;
+  virtual Lighting lighting() const = 0;
+
+protected:
+  ~SensorContext() = default;
+};
+
+}  // namespace bullet_plant
