@@ -103,6 +103,10 @@ struct ControlPluginDescription
   bool legacy_mode_ns = true;
   bool legacy_mode_ns_given = false;
   std::string sim_type = "gazebo_ros_control/DefaultRobotHWSim";  // robotSimType
+
+  // The robot's control namespace, normalised ("/tianracer"): <robotNamespace>, else the spawn
+  // namespace. Its controller manager, pid_gains and controller topics live there.
+  std::string controlNamespace(const std::string& spawn_namespace) const;
 };
 
 struct RobotDescription

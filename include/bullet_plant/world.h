@@ -48,6 +48,11 @@ public:
   Robot& spawn(const std::string& urdf_xml, const std::string& name, const urdf::Pose& pose,
                const std::string& robot_namespace = "",
                const std::map<std::string, double>& initial_joints = {});
+  // The same from a description already parsed (parseRobotDescription), e.g. by a caller that
+  // reads its control namespace first.
+  Robot& spawn(RobotDescription description, const std::string& name, const urdf::Pose& pose,
+               const std::string& robot_namespace = "",
+               const std::map<std::string, double>& initial_joints = {});
   bool remove(const std::string& name);
   Robot* robot(const std::string& name);
   std::vector<Robot*> robots();

@@ -151,15 +151,14 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
                      const std::map<std::string, double>& joints, std::string& message)
 {
   // The robot namespace decides where its pid_gains live: read it before the sim thread spawns.
-  std::string control_ns = ns;
-  bool has_controller_manager = false;
+  RobotDescription description;
+  std::string control_ns;
   try
   {
-    RobotDescription d = parseRobotDescription(urdf);
-    if (!d.control.robot_namespace.empty())
-      control_ns = d.control.robot_namespace;
-    has_controller_manager = d.control.present;
-    requireValidRosName(control_ns, "robot '" + name + "' robotNamespace");
+    description = parseRobotDescription(urdf);
+    control_ns = description.control.controlNamespace(ns);
+    requireValidRosName(description.control.robot_namespace.empty() ? ns : description.control.robot_namespace,
+                        "robot '" + name + "' robotNamespace");
   }
   catch (const std::exception& e)
   {
@@ -167,19 +166,18 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
     ROS_ERROR("Could not spawn '%s': %s", name.c_str(), message.c_str());
     return false;
   }
-  copyParams(normaliseNamespace(control_ns) + "/gazebo_ros_control");
+  copyParams(control_ns + "/gazebo_ros_control");
   copyParams("/gazebo_ros_control");  // where legacyModeNS (the default) has Gazebo look for pid_gains
   return onSimThread<bool>([&] {
     try
     {
       // Two controller managers cannot offer their services under one name: the second would be unreachable.
       for (Robot* other : world_->robots())
-        if (has_controller_manager && other->controllerManager() &&
-            other->controlNamespace() == normaliseNamespace(control_ns))
+        if (description.control.present && other->controllerManager() && other->controlNamespace() == control_ns)
           throw std::invalid_argument("robot '" + name + "': robotNamespace '" + other->controlNamespace() +
                                       "' already holds the controller manager of robot '" + other->name() +
                                       "'; give each robot its own namespace (spawn_model -robot_namespace)");
-      Robot& robot = world_->spawn(urdf, name, pose, ns, joints);
+      Robot& robot = world_->spawn(std::move(description), name, pose, ns, joints);
       std::unique_ptr<RobotInterface> interface;
       try
       {

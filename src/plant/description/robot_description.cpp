@@ -1,5 +1,7 @@
 #include "bullet_plant/robot_description.h"
 
+#include "bullet_plant/params.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -37,6 +39,11 @@ PluginKind pluginKind(const std::string& filename)
       {"libgazebo_ros_p3d.so", PluginKind::P3d}};
   auto it = kinds.find(filename);
   return it == kinds.end() ? PluginKind::Unknown : it->second;
+}
+
+std::string ControlPluginDescription::controlNamespace(const std::string& spawn_namespace) const
+{
+  return normaliseNamespace(robot_namespace.empty() ? spawn_namespace : robot_namespace);
 }
 
 namespace

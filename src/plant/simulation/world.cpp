@@ -211,6 +211,12 @@ uint64_t World::steps() const { return in_->steps; }
 Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const urdf::Pose& pose,
                     const std::string& robot_namespace, const std::map<std::string, double>& initial_joints)
 {
+  return spawn(parseRobotDescription(urdf_xml), name, pose, robot_namespace, initial_joints);
+}
+
+Robot& World::spawn(RobotDescription description, const std::string& name, const urdf::Pose& pose,
+                    const std::string& robot_namespace, const std::map<std::string, double>& initial_joints)
+{
   if (name.empty())
     throw DescriptionError("a robot needs a name (spawn_model -model NAME)");
   if (robot(name))
@@ -233,13 +239,12 @@ Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const 
   std::unique_ptr<Robot::Internals> internals(new Robot::Internals);
   internals->world = in_.get();
   internals->name = name;
-  internals->description = parseRobotDescription(urdf_xml);
+  internals->description = std::move(description);
   for (const auto& kv : initial_joints)
     if (!internals->description.model->getJoint(kv.first))
       throw DescriptionError("initial position given for joint '" + kv.first + "', which '" + name + "' does not have");
   const ControlPluginDescription& control = internals->description.control;
-  internals->control_namespace =
-      normaliseNamespace(control.robot_namespace.empty() ? robot_namespace : control.robot_namespace);
+  internals->control_namespace = control.controlNamespace(robot_namespace);
   internals->spawn_namespace = robot_namespace;
 
   std::unique_ptr<Robot> robot(new Robot(std::move(internals)));
