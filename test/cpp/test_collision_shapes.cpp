@@ -10,6 +10,7 @@
 #include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 
+#include "log_capture.h"
 #include "simulation/collision_shapes.h"
 #include "mesh_fixtures.h"
 
@@ -38,19 +39,6 @@ btTransform rotatedAbout(const btVector3& axis, double angle, const btVector3& o
 {
   return btTransform(btQuaternion(axis, btScalar(angle)), origin);
 }
-
-struct Captured
-{
-  Log log;
-  std::vector<std::string> warnings;
-  Captured()
-  {
-    log.setSink([this](LogLevel level, const std::string& m) {
-      if (level == LogLevel::Warn)
-        warnings.push_back(m);
-    });
-  }
-};
 }  // namespace
 
 TEST(MakeCollisionShape, BoxKeepsItsOuterSizeWithTheHalfMillimetreMargin)
@@ -122,7 +110,7 @@ TEST(MakeAlignedCollisionShape, OffsetsAndObliqueRotationsNeedACompound)
 
 TEST(ShapeFromUrdf, ReadsPrimitivesAndRefusesNonPositiveSizesWithAWarning)
 {
-  Captured c;
+  WarningsCapture c;
   Shape s;
   urdf::Cylinder wheel;
   wheel.radius = 0.032;
@@ -141,7 +129,7 @@ TEST(ShapeFromUrdf, ReadsPrimitivesAndRefusesNonPositiveSizesWithAWarning)
 
 TEST(ShapeFromUrdf, AMissingMeshFileIsAWarningNamingTheLink)
 {
-  Captured c;
+  WarningsCapture c;
   Shape s;
   urdf::Mesh mesh;
   mesh.filename = "/nonexistent/track.stl";

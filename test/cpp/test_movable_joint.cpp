@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "log_capture.h"
 #include "physics/movable_joint.h"
 
 using namespace bullet_plant;
@@ -21,23 +22,11 @@ MovableJoint hingeWithLimits(double lower, double upper)
   return j;
 }
 
-struct Said
-{
-  Log log;
-  std::vector<std::string> warnings;
-  Said()
-  {
-    log.setSink([this](LogLevel level, const std::string& m) {
-      if (level == LogLevel::Warn)
-        warnings.push_back(m);
-    });
-  }
-};
 }  // namespace
 
 TEST(MovableJoint, PositionWithinLimitsPassesUnchangedAndSilently)
 {
-  Said said;
+  WarningsCapture said;
   const MovableJoint j = hingeWithLimits(-0.5, 0.5);
   EXPECT_EQ(positionWithinLimits(j, 0.25, said.log, "car", "position"), 0.25);
   EXPECT_EQ(positionWithinLimits(j, 0.5, said.log, "car", "position"), 0.5);
@@ -46,7 +35,7 @@ TEST(MovableJoint, PositionWithinLimitsPassesUnchangedAndSilently)
 
 TEST(MovableJoint, PositionOutsideIsHeldToTheNearerLimitNamingJointRobotAndValue)
 {
-  Said said;
+  WarningsCapture said;
   const MovableJoint j = hingeWithLimits(-0.5, 0.5);
   EXPECT_EQ(positionWithinLimits(j, 2.0, said.log, "car", "initial position"), 0.5);
   EXPECT_EQ(positionWithinLimits(j, -7.0, said.log, "car", "position"), -0.5);
@@ -57,7 +46,7 @@ TEST(MovableJoint, PositionOutsideIsHeldToTheNearerLimitNamingJointRobotAndValue
 
 TEST(MovableJoint, AJointWithoutPositionLimitsTakesAnyPosition)
 {
-  Said said;
+  WarningsCapture said;
   MovableJoint wheel;
   wheel.name = "wheel";
   EXPECT_EQ(positionWithinLimits(wheel, 1e6, said.log, "car", "position"), 1e6);
