@@ -1,4 +1,5 @@
-// A Log whose warnings a test reads back: for the checks that the plant says what it did.
+// The messages of one level a Log receives from now on (its sink), for tests that check what the
+// plant says: `LogCapture errors(world.log(), LogLevel::Error);` then errors.messages.
 #pragma once
 
 #include <string>
@@ -6,15 +7,22 @@
 
 #include "bullet_plant/log.h"
 
+struct LogCapture
+{
+  LogCapture(bullet_plant::Log& log, bullet_plant::LogLevel level)
+  {
+    log.setSink([this, level](bullet_plant::LogLevel at, const std::string& m) {
+      if (at == level)
+        messages.push_back(m);
+    });
+  }
+  std::vector<std::string> messages;
+};
+
+// A Log of its own with its warnings captured, for what is given a Log rather than a World.
 struct WarningsCapture
 {
   bullet_plant::Log log;
-  std::vector<std::string> warnings;
-  WarningsCapture()
-  {
-    log.setSink([this](bullet_plant::LogLevel level, const std::string& m) {
-      if (level == bullet_plant::LogLevel::Warn)
-        warnings.push_back(m);
-    });
-  }
+  LogCapture captured{log, bullet_plant::LogLevel::Warn};
+  std::vector<std::string>& warnings = captured.messages;
 };

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "log_capture.h"
 #include "bullet_plant/world.h"
 #include "simulation/internals.h"
 
@@ -33,11 +34,8 @@ bool finite(const urdf::Pose& p)
 TEST(RobotRecovery, ADivergingRobotIsSaidOncePerSecondThenDisabledWhileTheWorldRunsOn)
 {
   World world;
-  std::vector<std::string> errors;
-  world.log().setSink([&](LogLevel level, const std::string& text) {
-    if (level == LogLevel::Error)
-      errors.push_back(text);
-  });
+  LogCapture said(world.log(), LogLevel::Error);
+  const std::vector<std::string>& errors = said.messages;
   Robot& good = world.spawn(kBox, "good", poseFromXyzRpy(0, 1, 0.1, 0, 0, 0));
   Robot& bad = world.spawn(kBox, "bad", poseFromXyzRpy(0, -1, 0.1, 0, 0, 0));
   const btScalar nan = std::numeric_limits<btScalar>::quiet_NaN();

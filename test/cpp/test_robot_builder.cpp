@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "log_capture.h"
 #include "bullet_plant/world.h"
 #include "simulation/internals.h"
 #include "mesh_fixtures.h"
@@ -60,11 +61,8 @@ TEST(BuildRobot, AWheelMeshOnAContinuousJointCollidesAsACylinderAboutItsAxle)
       "<link name='wheel'>" + inertial + "<collision><geometry><mesh filename='" + wheel + "'/></geometry></collision></link>"
       "<joint name='axle' type='continuous'><parent link='hub'/><child link='wheel'/><axis xyz='0 1 0'/></joint></robot>";
   World world;
-  std::vector<std::string> infos;
-  world.log().setSink([&](LogLevel level, const std::string& m) {
-    if (level == LogLevel::Info)
-      infos.push_back(m);
-  });
+  LogCapture info(world.log(), LogLevel::Info);
+  const std::vector<std::string>& infos = info.messages;
   Robot& robot = world.spawn(urdf, "unicycle", poseFromXyzRpy(0, 0, 0.05, 0, 0, 0));
   Robot::Internals& r = internalsOf(robot);
   ASSERT_EQ(r.multibody.bodies.size(), 2u);

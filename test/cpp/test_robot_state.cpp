@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "log_capture.h"
 #include "bullet_plant/world.h"
 
 using namespace bullet_plant;
@@ -80,11 +81,8 @@ TEST(RobotState, SetLinkStateMovesTheRobotRigidlyAndGivesItTheTwist)
 TEST(RobotState, JointPositionsAreHeldToTheLimitsWithAWarning)
 {
   World world;
-  std::vector<std::string> warnings;
-  world.log().setSink([&](LogLevel level, const std::string& m) {
-    if (level == LogLevel::Warn)
-      warnings.push_back(m);
-  });
+  LogCapture said(world.log(), LogLevel::Warn);
+  const std::vector<std::string>& warnings = said.messages;
   Robot& arm = world.spawn(kArmUrdf, "arm", urdf::Pose());
   arm.setJointPositions({{"hinge", 0.5}});
   double q, qd, effort;
