@@ -3,6 +3,7 @@ switch of cmdvel2gazebo.py, and teleop.py in a pseudo-terminal. Each test has it
 import math
 import os
 import pty
+import select
 import subprocess
 import termios
 import time
@@ -142,7 +143,13 @@ def test_teleop_in_a_terminal(tutorial):
     teleop = subprocess.Popen(['rosrun', 'tianracer_description', 'teleop.py'], env=tutorial.env,
                               stdin=slave, stdout=slave, stderr=slave, start_new_session=True)
     try:
-        time.sleep(3.0)
+        # Keys count from when teleop polls them: wait for its banner's speed line (rospy's start
+        # took over 3 s in CI on a loaded 2-core VM, and 'i' then ramped for half its time).
+        shown, deadline = b'', time.time() + 30
+        while b'currently:' not in shown and time.time() < deadline:
+            if select.select([master], [], [], 0.5)[0]:
+                shown += os.read(master, 4096)
+        assert b'currently:' in shown, 'teleop.py printed no banner within 30 s: %r' % shown
         marks = {}
         for key, hold in (('i', 3.0), ('j', 2.0), ('k', 1.5)):
             marks[key] = time.time()
