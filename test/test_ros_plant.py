@@ -54,8 +54,11 @@ def echo(ros, topic, count=1, timeout=15):
 def test_tutorial_spawner_starts_the_five_controllers(ros, plant):
     start = time.monotonic()
     spawn = spawner(ros, *TUTORIAL_CONTROLLERS)
-    wait_for_running(ros, TUTORIAL_CONTROLLERS)
+    # Polled every 20 ms in one process: a `rosservice call` per poll would add its own start-up,
+    # a second or two each on a loaded 2-core machine, to what is timed.
+    ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS), namespace=NS)
     started_in = time.monotonic() - start
+    wait_for_running(ros, TUTORIAL_CONTROLLERS)
     states = controller_states(ros)
     assert list(states) == list(TUTORIAL_CONTROLLERS)
     assert states['rear_left_velocity_controller']['claimed_resources'] == [
