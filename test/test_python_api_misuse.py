@@ -29,8 +29,11 @@ def test_a_long_step_stops_on_ctrl_c():
               'world = bullet_plant.World()\n'
               'print("stepping", flush=True)\n'
               'world.step(2**31 - 1)\n')
+    # SIGINT as a terminal gives it: a shell without job control starts background jobs (a suite run
+    # with `&`) with SIGINT ignored, which the child would inherit, and Python keeps it ignored.
     proc = subprocess.Popen([sys.executable, '-c', script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            env=dict(os.environ), text=True)
+                            env=dict(os.environ), text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         assert proc.stdout.readline().strip() == 'stepping'
         time.sleep(1.0)

@@ -1,13 +1,18 @@
 // ros_controllers' controller types, hosted by the plant (docs/interfaces.md section 4). Each works
-// on joint handles it looks up through JointHandles; what the real ones publish is produced as
-// samples that the ROS node publishes and Python reads.
+// on joint handles it looks up through JointHandles and exchanges messages through its ports
+// (message_ports.h), which the ROS node and Python carry.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <urdf_model/pose.h>
+
+#include "bullet_plant/message_ports.h"
 #include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/pid.h"
@@ -16,6 +21,9 @@ namespace bullet_plant
 {
 class Param;
 class Log;
+
+// The messages controllers exchange, as the ROS ones they stand for (std_msgs/Float64 is a double,
+// std_msgs/Float64MultiArray a std::vector<double>).
 
 // sensor_msgs/JointState
 struct JointStateSample
@@ -34,22 +42,38 @@ struct ControllerStateSample
   bool antiwindup = false;
 };
 
-// nav_msgs/Odometry of a drive controller (ackermann_steering_controller): a planar pose and twist in
-// the odometry frame, with what the message and its transform carry besides.
+// geometry_msgs/Twist as a planar drive reads it: linear.x and angular.z.
+struct TwistCommand
+{
+  double linear_x = 0, angular_z = 0;
+};
+
+// nav_msgs/Odometry: pose and twist of child_frame_id in frame_id, the covariances' diagonals.
 struct OdometrySample
 {
   int64_t stamp_ns = 0;
-  double x = 0, y = 0, heading = 0;  // m, m, rad in odom_frame_id
-  double linear = 0, angular = 0;    // m/s along the base's x, rad/s about z
+  std::string frame_id = "odom", child_frame_id = "base_link";
+  urdf::Pose pose;
+  urdf::Vector3 linear, angular;  // twist, in child_frame_id (as nav_msgs/Odometry has it)
+  std::array<double, 6> pose_covariance_diagonal{}, twist_covariance_diagonal{};
 };
 
-struct OdometryFrames
+// geometry_msgs/TransformStamped, for /tf.
+struct TransformSample
 {
-  std::string odom_frame_id = "odom", base_frame_id = "base_link";
-  bool enable_odom_tf = true;
-  double pose_covariance_diagonal[6] = {0, 0, 0, 0, 0, 0};
-  double twist_covariance_diagonal[6] = {0, 0, 0, 0, 0, 0};
+  int64_t stamp_ns = 0;
+  std::string frame_id, child_frame_id;
+  urdf::Pose pose;  // of child_frame_id in frame_id
 };
+
+// A pose in the plane, the yaw about z (as the drives' odometry has it).
+inline urdf::Pose planarPose(double x, double y, double heading)
+{
+  urdf::Pose pose;
+  pose.position = urdf::Vector3(x, y, 0.0);
+  pose.rotation.setFromRPY(0.0, 0.0, heading);
+  return pose;
+}
 
 // What a controller gets to initialise itself: its parameters and the robot's joint handles.
 struct ControllerContext
@@ -60,61 +84,20 @@ struct ControllerContext
   Log& log;
 };
 
-// The message a controller's command topic carries: none, std_msgs/Float64 on <controller>/command,
-// std_msgs/Float64MultiArray on <controller>/command, geometry_msgs/Twist on <controller>/cmd_vel.
-enum class CommandTopic { None, Float64, Float64MultiArray, Twist };
-
-class Controller
+class Controller : public MessagePorts
 {
 public:
-  virtual ~Controller() = default;
-  // Reads parameters and takes handles; false (with the reason logged) when it cannot run.
+  // Reads parameters, takes handles and opens its ports; false (with the reason logged) when it
+  // cannot run.
   virtual bool init(ControllerContext& context) = 0;
   virtual void starting(int64_t time_ns) {}
   virtual void update(int64_t time_ns, double period) = 0;
   virtual void stopping(int64_t time_ns) {}
 
   virtual const std::vector<ClaimedResources>& claimedResources() const { return claimed_; }
-  // What the controller's command topic carries (docs/interfaces.md sections 4 and 12).
-  virtual CommandTopic commandTopic() const { return CommandTopic::None; }
-  // A Float64 on <controller>/command; false for a controller without one or a non-finite value.
-  virtual bool setCommand(double value) { return false; }
-  // A Float64MultiArray on <controller>/command (the JointGroup controllers): false, with the reason
-  // logged, when its size is not the number of joints or a value is not finite.
-  virtual bool setCommands(const std::vector<double>& values) { return false; }
-  // A geometry_msgs/Twist on <controller>/cmd_vel (linear.x, angular.z); false, with the reason
-  // logged, when the controller is not running or a value is not finite.
-  virtual bool setTwist(double linear_x, double angular_z) { return false; }
-  // The frames and covariances of the nav_msgs/Odometry it publishes on <controller>/odom; null for
-  // a controller without odometry.
-  virtual const OdometryFrames* odometryFrames() const { return nullptr; }
-  // Whether it reports control_msgs/JointControllerState on <controller>/state.
-  virtual bool hasState() const { return false; }
-  // Samples produced since the last take (joint_states for the joint state controller, state for
-  // the PID controllers); the latest is kept for readers that only look.
-  std::vector<JointStateSample> takeJointStates();
-  std::vector<ControllerStateSample> takeControllerStates();
-  std::vector<OdometrySample> takeOdometry();
-  const OdometrySample* latestOdometry() const { return has_odometry_ ? &latest_odometry_ : nullptr; }
-  const JointStateSample* latestJointState() const { return has_joint_state_ ? &latest_joint_state_ : nullptr; }
-  const ControllerStateSample* latestControllerState() const { return has_state_ ? &latest_state_ : nullptr; }
-  uint64_t samplesProduced() const { return samples_; }
 
 protected:
-  void emit(const JointStateSample& s);
-  void emit(const ControllerStateSample& s);
-  void emit(const OdometrySample& s);
   std::vector<ClaimedResources> claimed_;
-
-private:
-  std::vector<JointStateSample> joint_states_;
-  std::vector<ControllerStateSample> controller_states_;
-  std::vector<OdometrySample> odometry_;
-  JointStateSample latest_joint_state_;
-  ControllerStateSample latest_state_;
-  OdometrySample latest_odometry_;
-  bool has_joint_state_ = false, has_state_ = false, has_odometry_ = false;
-  uint64_t samples_ = 0;
 };
 
 // The controller types this plant offers (list_controller_types), and a factory for them.

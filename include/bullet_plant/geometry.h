@@ -31,5 +31,8 @@ urdf::Pose poseFromXyzRpy(double x, double y, double z, double roll, double pitc
 urdf::Pose compose(const urdf::Pose& a, const urdf::Pose& b);  // a * b
 urdf::Pose inverse(const urdf::Pose& p);
 urdf::Vector3 rotate(const urdf::Rotation& q, const urdf::Vector3& v);
+// urdf::Vector3 has + but neither - nor a scalar product.
+inline urdf::Vector3 sub(const urdf::Vector3& a, const urdf::Vector3& b) { return urdf::Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
+inline urdf::Vector3 scaled(const urdf::Vector3& a, double s) { return urdf::Vector3(a.x * s, a.y * s, a.z * s); }
 
 }  // namespace bullet_plant

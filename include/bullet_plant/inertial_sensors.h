@@ -25,7 +25,6 @@ struct LinkMotion
 struct ImuReading
 {
   int64_t stamp_ns = 0;
-  std::string frame_id;
   urdf::Rotation orientation;
   urdf::Vector3 angular_velocity;     // rad/s, IMU frame
   urdf::Vector3 linear_acceleration;  // m/s^2, IMU frame, the reaction to gravity included (+9.8 up at rest)
@@ -38,10 +37,6 @@ public:
   Imu(const SensorDescription& d, uint32_t noise_seed);
   void update(SensorContext& context, int64_t time_ns) override;
   bool modelPlugin() const { return description_.model_plugin; }
-  std::string topic() const override;
-  // frameName as given (gazebo_ros_imu: default bodyName), without a leading '/' (tf2 refuses it).
-  std::string frameId() const override;
-  void setNamespace(const std::string& spawn_namespace, const std::string& model_name) override;
   // gazebo_ros_imu_sensor reports the orientation relative to the IMU's orientation at spawn, as
   // Gazebo's ImuSensor does; gazebo_ros_imu the world orientation.
   void setReference(const urdf::Rotation& spawn_orientation) { reference_ = spawn_orientation.GetInverse(); }
@@ -66,7 +61,6 @@ private:
 struct GroundTruthReading
 {
   int64_t stamp_ns = 0;
-  std::string frame_id, child_frame_id;
   urdf::Pose pose;
   urdf::Vector3 linear, angular;
   double variance = 0.0;
@@ -77,10 +71,6 @@ class GroundTruthOdometry : public Sensor
 public:
   GroundTruthOdometry(const SensorDescription& d, uint32_t noise_seed);
   void update(SensorContext& context, int64_t time_ns) override;
-  std::string topic() const override { return description_.pluginParam("topicName"); }
-  // tf::resolve(tf_prefix parameter (default empty), frameName (default "world")).
-  std::string frameId() const override;
-  void setNamespace(const std::string& spawn_namespace, const std::string& model_name) override;
   // The link poses are relative to; empty for the world.
   std::string referenceLink() const;
   void sample(const LinkMotion& body, const LinkMotion* reference, int64_t time_ns);

@@ -18,6 +18,7 @@
 
 namespace bullet_plant
 {
+class ModelPlugin;
 class World;
 
 struct Twist
@@ -36,6 +37,11 @@ public:
   const std::string& name() const;
   // The gazebo_ros_control namespace: the plugin's robotNamespace, else the spawn namespace.
   const std::string& controlNamespace() const;
+  // spawn_model's -robot_namespace: what the gazebo_ros plugins without <robotNamespace> get
+  // (plugin_names.h).
+  const std::string& spawnNamespace() const;
+  // Its gazebo_plugins model plugins that loaded (model_plugin.h), in URDF order.
+  std::vector<ModelPlugin*> modelPlugins();
   const RobotDescription& description() const;
 
   // gazebo_ros_control's joint handles, in transmission order: what its controllers see (through

@@ -38,9 +38,28 @@ enum class PluginKind
   ImuSensor,     // libgazebo_ros_imu_sensor.so inside <sensor type="imu">
   ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
   P3d,           // libgazebo_ros_p3d.so, a model plugin
+  DiffDrive,     // libgazebo_ros_diff_drive.so, a model plugin (model_plugin.h)
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);
+// The files pluginKind knows, for messages ("gazebo_ros_control, gazebo_ros_laser, ...").
+std::string simulatedPluginNames();
+
+// A <gazebo><plugin> block of a model plugin that acts on the physics (model_plugin.h): its
+// parameters, read by the plugin's Load with upstream's names and defaults.
+struct ModelPluginDescription
+{
+  std::string name, filename;
+  PluginKind kind = PluginKind::Unknown;
+  std::map<std::string, std::string> params;  // child element -> its text
+
+  bool has(const std::string& key) const { return params.count(key) > 0; }
+  std::string text(const std::string& key, const std::string& fallback) const;
+  // Throw DescriptionError naming the plugin and the element when the text is not a number or a
+  // boolean (sdf's true/false/1/0).
+  double number(const std::string& key, double fallback) const;
+  bool flag(const std::string& key, bool fallback) const;
+};
 
 // One <sensor> inside <gazebo reference="LINK">, with the plugin parameters gazebo_ros reads; the
 // model plugins gazebo_ros_imu and gazebo_ros_p3d are described the same way (type "imu" or
@@ -107,6 +126,11 @@ struct ControlPluginDescription
   // The robot's control namespace, normalised ("/tianracer"): <robotNamespace>, else the spawn
   // namespace. Its controller manager, pid_gains and controller topics live there.
   std::string controlNamespace(const std::string& spawn_namespace) const;
+  // The same as written, before normalising: what name checks and their errors quote.
+  std::string givenControlNamespace(const std::string& spawn_namespace) const
+  {
+    return robot_namespace.empty() ? spawn_namespace : robot_namespace;
+  }
 };
 
 struct RobotDescription
@@ -117,6 +141,7 @@ struct RobotDescription
   std::vector<TransmissionDescription> transmissions;
   std::map<std::string, SurfaceDescription> surfaces;  // by link
   std::vector<SensorDescription> sensors;
+  std::vector<ModelPluginDescription> model_plugins;
   std::vector<std::string> warnings;                   // things read but not fully supported
   std::vector<std::string> errors;                     // things refused (logged as errors at spawn)
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)

@@ -23,18 +23,12 @@ struct SensorRendering;  // casts the rays and fills sensors' outputs (sensors.c
 struct LaserScan
 {
   int64_t stamp_ns = 0;
-  std::string frame_id;
   float angle_min = 0, angle_max = 0, angle_increment = 0;
   float time_increment = 0, scan_time = 0;
   float range_min = 0, range_max = 0;
   int vertical_samples = 1;  // rows of `ranges` (1 for a planar lidar)
   std::vector<float> ranges;
 };
-
-// tf::resolve(prefix, frame) of tf 1.13, as gazebo_ros's plugins use it for their frame ids: a
-// frame starting with '/' loses the '/', otherwise "prefix/frame" (the prefix without its leading
-// '/'), or the frame alone for an empty prefix (docs/interfaces.md section 11).
-std::string resolveTfFrame(const std::string& prefix, const std::string& frame);
 
 class Sensor
 {
@@ -44,19 +38,6 @@ public:
   virtual ~Sensor() = default;
   const SensorDescription& description() const { return description_; }
   const std::string& name() const { return description_.name; }
-  // Topic as the gazebo_ros plugin names it, relative to rosNamespace().
-  virtual std::string topic() const = 0;
-  // The frame id the plugin publishes, each plugin with its own rule (section 11).
-  virtual std::string frameId() const;
-
-  // The ROS namespace of the plugin's node handle: its <robotNamespace>, else the spawn namespace
-  // (gazebo_ros writes it into every plugin), else the plugin's own default. Set at spawn.
-  virtual void setNamespace(const std::string& spawn_namespace, const std::string& model_name);
-  const std::string& rosNamespace() const { return namespace_; }
-  // The tf_prefix of frame ids: the namespace without trailing '/', unless a tf_prefix parameter
-  // found from the namespace says otherwise (the ROS node sets it).
-  const std::string& tfPrefix() const { return tf_prefix_; }
-  void setTfPrefix(const std::string& prefix) { tf_prefix_ = prefix; }
   // Whether the plugin publishes on ROS at all (a known gazebo_ros plugin that loaded).
   bool publishesOnRos() const;
 
@@ -71,11 +52,7 @@ public:
   virtual void update(SensorContext& context, int64_t time_ns) = 0;
 
 protected:
-  // The plugin's namespace when it has no <robotNamespace> and the spawn gave none.
-  virtual std::string defaultNamespace(const std::string& model_name) const;
-
   SensorDescription description_;
-  std::string namespace_, tf_prefix_;
   std::mt19937 noise_;
   bool active_ = false;
   uint64_t updates_ = 0;
@@ -87,9 +64,6 @@ class Lidar : public Sensor
 public:
   Lidar(const SensorDescription& d, uint32_t noise_seed);
   void update(SensorContext& context, int64_t time_ns) override;
-  // gazebo_ros_laser: no <topicName> means "/world" (sic).
-  std::string topic() const override { return description_.pluginParam("topicName", "/world"); }
-  std::string frameId() const override;
   bool hasScan() const { return updates_ > 0; }
   const LaserScan& latest() const { return scan_; }
 
@@ -104,7 +78,6 @@ private:
 struct CameraFrame
 {
   int64_t stamp_ns = 0;
-  std::string frame_id;
   int width = 0, height = 0;
   double fx = 0, fy = 0, cx = 0, cy = 0;  // pinhole: u = cx + fx * x / z, v = cy + fy * y / z
   std::vector<uint8_t> rgb;               // height * width * 3
@@ -120,12 +93,6 @@ public:
   Camera(const SensorDescription& d, uint32_t noise_seed);
   void update(SensorContext& context, int64_t time_ns) override;
   bool depthSensor() const { return description_.type == "depth"; }
-  // Topics, relative to the robot namespace, as the plugins name them.
-  std::string topic() const override;   // the image
-  std::string cameraInfoTopic() const;
-  std::string depthTopic() const;        // depth cameras only
-  std::string depthCameraInfoTopic() const;
-  std::string pointsTopic() const;
   // gazebo_ros_openni_kinect publishes depths and points only within (pointCloudCutoff,
   // pointCloudCutoffMax), NaN elsewhere (defaults 0.4 and 5.0 m).
   double pointCloudCutoff() const;

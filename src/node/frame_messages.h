@@ -25,27 +25,32 @@ struct DepthCutoff
   bool within(float depth) const { return depth > near && depth < far; }
 };
 
+// Each view carries the header its plugin stamps (frameHeader) with the frame's pixels.
 struct RgbImageOf  // sensor_msgs/Image, rgb8
 {
   const CameraFrame& frame;
+  const std_msgs::Header& header;
 };
 struct DepthImageOf  // sensor_msgs/Image, 32FC1 metres, NaN outside the cutoff
 {
   const CameraFrame& frame;
+  const std_msgs::Header& header;
   DepthCutoff cutoff;
 };
 struct PointCloudOf  // sensor_msgs/PointCloud2: x y z float32 (NaN outside the cutoff), rgb packed in a float32
 {
   const CameraFrame& frame;
+  const std_msgs::Header& header;
   DepthCutoff cutoff;
 };
 
-// The header the frame's messages carry (seq is filled in by roscpp as it publishes).
-inline std_msgs::Header frameHeader(const CameraFrame& f)
+// The header the frame's messages carry (seq is filled in by roscpp as it publishes); the frame id
+// is the plugin's (plugin_names.h).
+inline std_msgs::Header frameHeader(const CameraFrame& f, const std::string& frame_id)
 {
   std_msgs::Header header;
   header.stamp = rosTime(f.stamp_ns);
-  header.frame_id = f.frame_id;
+  header.frame_id = frame_id;
   return header;
 }
 
@@ -81,10 +86,10 @@ struct Of : Trait
 
 // sensor_msgs/Image of `size` data bytes, which write_data(pointer) writes.
 template <class Stream, class WriteData>
-void writeImage(Stream& s, const CameraFrame& f, const std::string& encoding, uint32_t bytes_per_pixel, uint32_t size,
+void writeImage(Stream& s, const std_msgs::Header& header, const CameraFrame& f, const std::string& encoding, uint32_t bytes_per_pixel, uint32_t size,
                 WriteData write_data)
 {
-  s.next(frameHeader(f));
+  s.next(header);
   s.next(uint32_t(f.height));
   s.next(uint32_t(f.width));
   s.next(encoding);
@@ -94,9 +99,9 @@ void writeImage(Stream& s, const CameraFrame& f, const std::string& encoding, ui
   write_data(s.advance(size));
 }
 
-inline uint32_t imageLength(const CameraFrame& f, const std::string& encoding, uint32_t size)
+inline uint32_t imageLength(const std_msgs::Header& header, const std::string& encoding, uint32_t size)
 {
-  return ros::serialization::serializationLength(frameHeader(f)) + 4 + 4 + 4 + encoding.size() + 1 + 4 + 4 + size;
+  return ros::serialization::serializationLength(header) + 4 + 4 + 4 + encoding.size() + 1 + 4 + 4 + size;
 }
 
 inline const std::string& rgb8() { static const std::string s = "rgb8"; return s; }
@@ -139,11 +144,11 @@ struct Serializer<bullet_plant::RgbImageOf>
   {
     namespace fm = bullet_plant::frame_messages;
     const std::vector<uint8_t>& rgb = m.frame.rgb;
-    fm::writeImage(s, m.frame, fm::rgb8(), 3, rgb.size(), [&](uint8_t* out) { std::memcpy(out, rgb.data(), rgb.size()); });
+    fm::writeImage(s, m.header, m.frame, fm::rgb8(), 3, rgb.size(), [&](uint8_t* out) { std::memcpy(out, rgb.data(), rgb.size()); });
   }
   static uint32_t serializedLength(const bullet_plant::RgbImageOf& m)
   {
-    return bullet_plant::frame_messages::imageLength(m.frame, bullet_plant::frame_messages::rgb8(), m.frame.rgb.size());
+    return bullet_plant::frame_messages::imageLength(m.header, bullet_plant::frame_messages::rgb8(), m.frame.rgb.size());
   }
 };
 
@@ -154,14 +159,14 @@ struct Serializer<bullet_plant::DepthImageOf>
   static void write(Stream& s, const bullet_plant::DepthImageOf& m)
   {
     namespace fm = bullet_plant::frame_messages;
-    fm::writeImage(s, m.frame, fm::depth32FC1(), 4, 4 * m.frame.depth.size(), [&](uint8_t* out) {
+    fm::writeImage(s, m.header, m.frame, fm::depth32FC1(), 4, 4 * m.frame.depth.size(), [&](uint8_t* out) {
       for (float depth : m.frame.depth)
         fm::writeCutDepth(out, depth, m.cutoff), out += 4;
     });
   }
   static uint32_t serializedLength(const bullet_plant::DepthImageOf& m)
   {
-    return bullet_plant::frame_messages::imageLength(m.frame, bullet_plant::frame_messages::depth32FC1(),
+    return bullet_plant::frame_messages::imageLength(m.header, bullet_plant::frame_messages::depth32FC1(),
                                                      4 * m.frame.depth.size());
   }
 };
@@ -174,7 +179,7 @@ struct Serializer<bullet_plant::PointCloudOf>
   {
     const bullet_plant::CameraFrame& f = m.frame;
     const size_t pixels = size_t(f.width) * f.height;
-    s.next(bullet_plant::frameHeader(f));
+    s.next(m.header);
     s.next(uint32_t(f.height));
     s.next(uint32_t(f.width));
     s.next(bullet_plant::pointCloudFields());
@@ -195,7 +200,7 @@ struct Serializer<bullet_plant::PointCloudOf>
   }
   static uint32_t serializedLength(const bullet_plant::PointCloudOf& m)
   {
-    return serializationLength(bullet_plant::frameHeader(m.frame)) + 4 + 4 +
+    return serializationLength(m.header) + 4 + 4 +
            serializationLength(bullet_plant::pointCloudFields()) + 1 + 4 + 4 + 4 +
            bullet_plant::kPointStep * uint32_t(m.frame.width) * m.frame.height + 1;
   }

@@ -7,6 +7,7 @@
 #include <gazebo_msgs/ModelStates.h>
 #include <tinyxml2.h>
 
+#include "bullet_plant/geometry.h"
 #include "bullet_plant/world.h"
 #include "msg_conversions.h"
 #include "ros_plant.h"
@@ -55,7 +56,6 @@ State modelState(Robot& robot) { return {robot.basePose(), robot.baseTwist()}; }
 
 urdf::Vector3 vec(const std::array<double, 3>& a) { return urdf::Vector3(a[0], a[1], a[2]); }
 std::array<double, 3> arr(const urdf::Vector3& v) { return {{v.x, v.y, v.z}}; }
-urdf::Vector3 sub(const urdf::Vector3& a, const urdf::Vector3& b) { return urdf::Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
 
 // `state` (world) as seen from `frame`: position and velocities in the frame's axes, relative to it.
 State relativeTo(const State& state, const State& frame)
@@ -105,11 +105,15 @@ std::string rootElement(const std::string& xml)
 }  // namespace
 
 GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private_nh)
-  : plant_(plant), world_(*plant.world_), nh_(private_nh)
+  : plant_(plant), world_(plant.world()), nh_(private_nh)
 {
   advertiseServices();
   model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
   link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
+  plant_.connectWorldUpdateEnd([this] {
+    publishModelStates();
+    publishLinkStates();
+  });
 }
 
 template <class Srv>
@@ -479,7 +483,7 @@ bool GazeboRosApiPlugin::getPhysicsProperties(gazebo_msgs::GetPhysicsProperties:
   res.time_step = world_.timeStep();
   res.pause = world_.paused();
   // Gazebo's real_time_update_rate: steps per wall second; 0 runs as fast as possible.
-  res.max_update_rate = plant_.real_time_factor_ > 0 ? plant_.real_time_factor_ / world_.timeStep() : 0.0;
+  res.max_update_rate = plant_.realTimeFactor() > 0 ? plant_.realTimeFactor() / world_.timeStep() : 0.0;
   res.gravity = toMsg(world_.gravity());
   res.ode_config.sor_pgs_iters = world_.solverIterations();
   res.ode_config.sor_pgs_w = 1.0;

@@ -8,10 +8,11 @@ void GazeboRosCamera::Load(Sensor& sensor)
 {
   camera_ = &sensorAs<Camera>(sensor, "gazebo_ros_camera");
   nh_ = nodeHandle(sensor);
-  const std::string camera_name = camera_->description().pluginParam("cameraName");
-  applyTfPrefixParam(sensor, camera_name.empty() ? nh_ : ros::NodeHandle(nh_, camera_name));
-  image_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(camera_->topic(), owner()), 2);
-  info_pub_ = nh_.advertise<sensor_msgs::CameraInfo>(requireValidRosName(camera_->cameraInfoTopic(), owner()), 2);
+  const SensorDescription& d = sensor.description();
+  const std::string camera_name = d.pluginParam("cameraName");
+  frame_id_ = pluginFrameId(d, searchedTfPrefix(sensor, camera_name.empty() ? nh_ : ros::NodeHandle(nh_, camera_name)));
+  image_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(pluginTopic(d), owner()), 2);
+  info_pub_ = nh_.advertise<sensor_msgs::CameraInfo>(requireValidRosName(pluginTopic(d, PluginTopic::CameraInfo), owner()), 2);
 }
 
 bool GazeboRosCamera::subscribed() const
@@ -26,8 +27,8 @@ void GazeboRosCamera::OnUpdate()
   // Images are serialized from the frame as roscpp sends them, only for topics with subscribers
   // (frame_messages.h).
   const CameraFrame& frame = camera_->latest();
-  const std_msgs::Header header = frameHeader(frame);
-  image_pub_.publish(RgbImageOf{frame});
+  const std_msgs::Header header = frameHeader(frame, frame_id_);
+  image_pub_.publish(RgbImageOf{frame, header});
   info_pub_.publish(cameraInfo(frame, header));
   publishFrame(frame, header);
 }

@@ -26,6 +26,7 @@ protected:
 
   Camera* camera_ = nullptr;
   ros::NodeHandle nh_;
+  std::string frame_id_;
 
 private:
   ros::Publisher image_pub_, info_pub_;

@@ -16,8 +16,9 @@ public:
   void Load(Sensor& sensor) override
   {
     imu_ = &sensorAs<Imu>(sensor, "gazebo_ros_imu");
+    frame_id_ = pluginFrameId(sensor.description(), defaultTfPrefix(sensor.description(), robotNamespace()));
     imu_pub_ = nodeHandle(sensor).advertise<sensor_msgs::Imu>(
-        requireValidRosName(imu_->topic(), "sensor '" + sensor.name() + "' topic"), 10);
+        requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"), 10);
   }
 
   bool subscribed() const override { return imu_pub_.getNumSubscribers() > 0; }
@@ -25,11 +26,12 @@ public:
   void OnUpdate() override
   {
     if (takeUpdate(*imu_) && imu_->hasReading())
-      imu_pub_.publish(toMsg(imu_->latest()));
+      imu_pub_.publish(toMsg(imu_->latest(), frame_id_));
   }
 
 private:
   Imu* imu_ = nullptr;
+  std::string frame_id_;
   ros::Publisher imu_pub_;
 };
 

@@ -15,9 +15,9 @@ public:
   {
     lidar_ = &sensorAs<Lidar>(sensor, "gazebo_ros_laser");
     ros::NodeHandle nh = nodeHandle(sensor);
-    applyTfPrefixParam(sensor, nh);
+    frame_id_ = pluginFrameId(sensor.description(), searchedTfPrefix(sensor, nh));
     scan_pub_ = nh.advertise<sensor_msgs::LaserScan>(
-        requireValidRosName(lidar_->topic(), "sensor '" + sensor.name() + "' topic"), 5);
+        requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"), 5);
   }
 
   bool subscribed() const override { return scan_pub_.getNumSubscribers() > 0; }
@@ -25,11 +25,12 @@ public:
   void OnUpdate() override
   {
     if (takeUpdate(*lidar_))
-      scan_pub_.publish(toMsg(lidar_->latest()));
+      scan_pub_.publish(toMsg(lidar_->latest(), frame_id_));
   }
 
 private:
   Lidar* lidar_ = nullptr;
+  std::string frame_id_;
   ros::Publisher scan_pub_;
 };
 

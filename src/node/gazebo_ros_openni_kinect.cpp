@@ -19,10 +19,12 @@ public:
                sensor.name().c_str());
       return;
     }
-    depth_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(camera_->depthTopic(), owner()), 2);
-    depth_info_pub_ =
-        nh_.advertise<sensor_msgs::CameraInfo>(requireValidRosName(camera_->depthCameraInfoTopic(), owner()), 2);
-    points_pub_ = nh_.advertise<sensor_msgs::PointCloud2>(requireValidRosName(camera_->pointsTopic(), owner()), 2);
+    const SensorDescription& d = sensor.description();
+    depth_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(pluginTopic(d, PluginTopic::DepthImage), owner()), 2);
+    depth_info_pub_ = nh_.advertise<sensor_msgs::CameraInfo>(
+        requireValidRosName(pluginTopic(d, PluginTopic::DepthCameraInfo), owner()), 2);
+    points_pub_ =
+        nh_.advertise<sensor_msgs::PointCloud2>(requireValidRosName(pluginTopic(d, PluginTopic::Points), owner()), 2);
     cutoff_ = DepthCutoff{camera_->pointCloudCutoff(), camera_->pointCloudCutoffMax()};
   }
 
@@ -37,9 +39,9 @@ private:
   {
     if (!camera_->depthSensor())
       return;
-    depth_pub_.publish(DepthImageOf{frame, cutoff_});
+    depth_pub_.publish(DepthImageOf{frame, header, cutoff_});
     depth_info_pub_.publish(cameraInfo(frame, header));
-    points_pub_.publish(PointCloudOf{frame, cutoff_});
+    points_pub_.publish(PointCloudOf{frame, header, cutoff_});
   }
 
   ros::Publisher depth_pub_, depth_info_pub_, points_pub_;

@@ -18,9 +18,10 @@ public:
     ros::NodeHandle nh = nodeHandle(sensor);
     std::string prefix;
     nh.getParam("tf_prefix", prefix);
-    sensor.setTfPrefix(prefix);
+    frame_id_ = pluginFrameId(sensor.description(), prefix);
+    child_frame_id_ = pluginChildFrameId(sensor.description());
     odometry_pub_ = nh.advertise<nav_msgs::Odometry>(
-        requireValidRosName(odometry_->topic(), "plugin '" + sensor.name() + "' topicName"), 10);
+        requireValidRosName(pluginTopic(sensor.description()), "plugin '" + sensor.name() + "' topicName"), 10);
   }
 
   bool subscribed() const override { return odometry_pub_.getNumSubscribers() > 0; }
@@ -28,11 +29,12 @@ public:
   void OnUpdate() override
   {
     if (takeUpdate(*odometry_) && odometry_->hasReading())
-      odometry_pub_.publish(toMsg(odometry_->latest()));
+      odometry_pub_.publish(toMsg(odometry_->latest(), frame_id_, child_frame_id_));
   }
 
 private:
   GroundTruthOdometry* odometry_ = nullptr;
+  std::string frame_id_, child_frame_id_;
   ros::Publisher odometry_pub_;
 };
 

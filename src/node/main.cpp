@@ -4,6 +4,8 @@
 
 #include <ros/ros.h>
 
+#include "gazebo_ros_api_plugin.h"
+#include "robot_interface.h"
 #include "ros_plant.h"
 
 int main(int argc, char** argv)
@@ -30,7 +32,11 @@ int main(int argc, char** argv)
   ros::NodeHandle nh, private_nh("~");
   try
   {
-    bullet_plant::RosPlant plant(nh, private_nh);
+    // gzserver's shape: the world, each model's plugins loaded as it spawns, gazebo_ros's system plugin.
+    bullet_plant::RosPlant plant(nh, private_nh, [](bullet_plant::RosPlant& p, bullet_plant::Robot& robot) {
+      return std::unique_ptr<bullet_plant::ModelPlugins>(new bullet_plant::RobotInterface(p, robot));
+    });
+    bullet_plant::GazeboRosApiPlugin gazebo_ros_api(plant, private_nh);
     ros::AsyncSpinner spinner(2);  // services wait on the simulation thread; keep callbacks flowing
     spinner.start();
     plant.run();

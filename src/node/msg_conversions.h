@@ -13,6 +13,7 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
 #include <urdf_model/pose.h>
 
 #include "bullet_plant/controllers.h"
@@ -112,11 +113,12 @@ inline geometry_msgs::TransformStamped odometryTransform(const nav_msgs::Odometr
   return tf;
 }
 
-inline sensor_msgs::Imu toMsg(const ImuReading& r)
+// The sensors' readings carry no names: each plugin stamps its own frame ids (plugin_names.h).
+inline sensor_msgs::Imu toMsg(const ImuReading& r, const std::string& frame_id)
 {
   sensor_msgs::Imu m;
   m.header.stamp = rosTime(r.stamp_ns);
-  m.header.frame_id = r.frame_id;
+  m.header.frame_id = frame_id;
   m.orientation = toMsg(r.orientation);
   m.angular_velocity = toMsg(r.angular_velocity);
   m.linear_acceleration = toMsg(r.linear_acceleration);
@@ -125,16 +127,16 @@ inline sensor_msgs::Imu toMsg(const ImuReading& r)
   return m;
 }
 
-inline nav_msgs::Odometry toMsg(const GroundTruthReading& r)
+inline nav_msgs::Odometry toMsg(const GroundTruthReading& r, const std::string& frame_id, const std::string& child_frame_id)
 {
-  return odometryMessage(r.stamp_ns, r.frame_id, r.child_frame_id, r.pose, r.linear, r.angular, r.variance);
+  return odometryMessage(r.stamp_ns, frame_id, child_frame_id, r.pose, r.linear, r.angular, r.variance);
 }
 
-inline sensor_msgs::LaserScan toMsg(const LaserScan& s)
+inline sensor_msgs::LaserScan toMsg(const LaserScan& s, const std::string& frame_id)
 {
   sensor_msgs::LaserScan m;
   m.header.stamp = rosTime(s.stamp_ns);
-  m.header.frame_id = s.frame_id;
+  m.header.frame_id = frame_id;
   m.angle_min = s.angle_min;
   m.angle_max = s.angle_max;
   m.angle_increment = s.angle_increment;
@@ -172,6 +174,30 @@ inline control_msgs::JointControllerState toMsg(const ControllerStateSample& s)
   msg.d = s.d;
   msg.i_clamp = s.i_clamp;
   msg.antiwindup = s.antiwindup;
+  return msg;
+}
+
+inline nav_msgs::Odometry toMsg(const OdometrySample& s)
+{
+  nav_msgs::Odometry odom = odometryMessage(s.stamp_ns, s.frame_id, s.child_frame_id, s.pose, s.linear, s.angular);
+  for (int k = 0; k < 6; ++k)
+  {
+    odom.pose.covariance[7 * k] = s.pose_covariance_diagonal[k];
+    odom.twist.covariance[7 * k] = s.twist_covariance_diagonal[k];
+  }
+  return odom;
+}
+
+inline tf2_msgs::TFMessage toMsg(const TransformSample& s)
+{
+  geometry_msgs::TransformStamped tf;
+  tf.header.stamp = rosTime(s.stamp_ns);
+  tf.header.frame_id = s.frame_id;
+  tf.child_frame_id = s.child_frame_id;
+  tf.transform.translation = toMsg(s.pose.position);
+  tf.transform.rotation = toMsg(s.pose.rotation);
+  tf2_msgs::TFMessage msg;
+  msg.transforms.push_back(tf);
   return msg;
 }
 

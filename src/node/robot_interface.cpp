@@ -2,6 +2,8 @@
 
 #include <std_msgs/Bool.h>
 
+#include "bullet_plant/model_plugin.h"
+#include "bullet_plant/plugin_names.h"
 #include "bullet_plant/robot.h"
 #include "ros_names.h"
 #include "ros_plant.h"
@@ -12,10 +14,21 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
   : nh_(robot.controlNamespace().empty()
             ? "/"
             : requireValidRosName(robot.controlNamespace(), "robot '" + robot.name() + "' robotNamespace")),
-    odometry_(robot, nh_), robot_(robot)
+    robot_(robot)
 {
+  for (ModelPlugin* plugin : robot.modelPlugins())
+  {
+    const ModelPluginDescription& d = plugin->description();
+    const std::string ns = modelPluginNamespace(d, robot.spawnNamespace(), robot.name());
+    ros::NodeHandle plugin_nh(requireValidRosName(ns, "plugin '" + d.name + "' robotNamespace"));
+    model_plugin_topics_.emplace_back(new PortTopics(plant, plugin_nh, [plugin](const std::string&) { return plugin; }));
+    model_plugin_topics_.back()->refresh({{"", plugin}});
+    plugin_odometry_ = plugin_odometry_ || plugin->output<OdometrySample>() || plugin->output<TransformSample>();
+  }
+  if (!plugin_odometry_)
+    odometry_.reset(new OdometryPublisher(robot, nh_));
   for (Sensor* sensor : robot.sensors())
-    if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor))
+    if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor, robot))
       sensor_plugins_.push_back({sensor, std::move(plugin)});
   const std::string& estop = robot.description().control.e_stop_topic;
   if (!estop.empty())
@@ -30,11 +43,14 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
   }
 }
 
-void RobotInterface::publish(int64_t time_ns)
+void RobotInterface::OnUpdate(int64_t time_ns)
 {
   if (controller_topics_)
     controller_topics_->publish();
-  odometry_.publish(time_ns, !(controller_topics_ && controller_topics_->publishesOdometryTransform()));
+  for (std::unique_ptr<PortTopics>& topics : model_plugin_topics_)
+    topics->publish();
+  if (odometry_)
+    odometry_->publish(time_ns, !(controller_topics_ && controller_topics_->publishesOdometryTransform()));
   for (LoadedPlugin& loaded : sensor_plugins_)
     loaded.plugin->OnUpdate();
 }

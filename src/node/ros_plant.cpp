@@ -7,8 +7,6 @@
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
-#include "gazebo_ros_api_plugin.h"
-#include "robot_interface.h"
 #include "ros_names.h"
 #include "ros_time.h"
 
@@ -100,7 +98,8 @@ double readRealTimeFactor(const ros::NodeHandle& private_nh, double world_value)
 }
 }  // namespace
 
-RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), private_nh_(private_nh)
+RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPluginLoader load_model_plugins)
+  : nh_(nh), private_nh_(private_nh), load_model_plugins_(std::move(load_model_plugins))
 {
   std::string world_file;
   private_nh_.param<std::string>("world_name", world_file, "");
@@ -125,7 +124,6 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh) : nh_(nh), 
   applyPaused(paused);
 
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-  gazebo_.reset(new GazeboRosApiPlugin(*this, private_nh_));
   ROS_INFO("Bullet plant ready: world '%s', %.4f s steps, real time factor %g%s", description.name.c_str(),
            world_->timeStep(), real_time_factor_, paused ? " (paused)" : "");
 }
@@ -157,8 +155,7 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
   {
     description = parseRobotDescription(urdf);
     control_ns = description.control.controlNamespace(ns);
-    requireValidRosName(description.control.robot_namespace.empty() ? ns : description.control.robot_namespace,
-                        "robot '" + name + "' robotNamespace");
+    requireValidRosName(description.control.givenControlNamespace(ns), "robot '" + name + "' robotNamespace");
   }
   catch (const std::exception& e)
   {
@@ -178,10 +175,10 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
                                       "' already holds the controller manager of robot '" + other->name() +
                                       "'; give each robot its own namespace (spawn_model -robot_namespace)");
       Robot& robot = world_->spawn(std::move(description), name, pose, ns, joints);
-      std::unique_ptr<RobotInterface> interface;
+      std::unique_ptr<ModelPlugins> plugins;
       try
       {
-        interface.reset(new RobotInterface(*this, robot));
+        plugins = load_model_plugins_(*this, robot);
       }
       catch (const std::exception&)
       {
@@ -189,7 +186,7 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
         world_->remove(name);
         throw;
       }
-      robots_[name] = std::move(interface);
+      robots_[name] = std::move(plugins);
       robots_[name]->updateSubscriptions();
       message = "spawned '" + name + "'" + (robot.controllerManager() ? " with a controller manager in " + robot.controlNamespace() : "");
       ROS_INFO_STREAM(message);
@@ -261,10 +258,15 @@ void RosPlant::stepAndPublish()
   {
     if (check_subscribers)
       kv.second->updateSubscriptions();
-    kv.second->publish(now);
+    kv.second->OnUpdate(now);
   }
-  gazebo_->publishModelStates();
-  gazebo_->publishLinkStates();
+  for (const std::function<void()>& callback : world_update_end_)
+    callback();
+}
+
+void RosPlant::connectWorldUpdateEnd(std::function<void()> callback)
+{
+  world_update_end_.push_back(std::move(callback));
 }
 
 void RosPlant::pace()

@@ -1,8 +1,10 @@
-// The plant as a ROS node: what gazebo_ros offers around bullet_plant::World (the simulation loop
-// and its pacing, /clock, the pause, reset, spawn and delete services), with one RobotInterface per
-// robot for what gazebo_ros_control and the sensor plugins offer. ROS callbacks never touch the
-// world: they queue work that the simulation thread runs between steps, and wait for its result
-// when they must answer.
+// The plant as a ROS node, as gzserver hosts gazebo_ros: the world, the simulation loop and its
+// pacing, /clock, pausing, resetting, spawning and removing. What runs around it attaches as
+// Gazebo's plugins do, through events: each robot's model plugins (RobotInterface: gazebo_ros_control
+// and the sensor plugins) are loaded when it spawns and updated after every step; system plugins
+// (GazeboRosApiPlugin) connect to the end of each step. main.cpp wires them. ROS callbacks never
+// touch the world: they queue work that the simulation thread runs between steps, and wait for its
+// result when they must answer.
 #pragma once
 
 #include <atomic>
@@ -14,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include <ros/ros.h>
 
@@ -22,13 +25,25 @@
 
 namespace bullet_plant
 {
-class GazeboRosApiPlugin;
-class RobotInterface;
+// One robot's model plugins as the plant drives them (RobotInterface), on the simulation thread.
+class ModelPlugins
+{
+public:
+  virtual ~ModelPlugins() = default;
+  // Sensors compute only while someone subscribes: asked now and then, not every step.
+  virtual void updateSubscriptions() = 0;
+  // After each step (Gazebo's world update end).
+  virtual void OnUpdate(int64_t time_ns) = 0;
+};
+
+class RosPlant;
+// Loads a robot's model plugins as it spawns; an exception refuses the robot (no half of it can run).
+using ModelPluginLoader = std::function<std::unique_ptr<ModelPlugins>(RosPlant&, Robot&)>;
 
 class RosPlant
 {
 public:
-  RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh);
+  RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPluginLoader load_model_plugins);
   ~RosPlant();
   // The simulation loop; returns when ROS shuts down.
   void run();
@@ -41,27 +56,32 @@ public:
   // Copies `key` of the ROS parameter server (or its absence) into the world's parameter tree
   // before any work queued after this call runs.
   void copyParams(const std::string& key);
+  // Gazebo's ConnectWorldUpdateEnd: `callback` runs on the simulation thread after every step.
+  void connectWorldUpdateEnd(std::function<void()> callback);
 
-private:
-  friend class GazeboRosApiPlugin;  // gazebo_ros's services: the world, spawning, pausing, pacing
-  void runQueuedWork();
-
-  void stepAndPublish();
-  void publishClock();
-  void publishStatus();
-  void pace();
+  // On the simulation thread (the services' work, posted there).
+  World& world() { return *world_; }
   void applyPaused(bool paused);
   void resetSimulation();
+  double realTimeFactor() const { return real_time_factor_; }
   void setRealTimeFactor(double factor);
-
+  // From a ROS callback (they wait on the simulation thread): false with the reason in `message`.
   bool spawn(const std::string& name, const std::string& urdf, const std::string& ns, const urdf::Pose& pose,
              const std::map<std::string, double>& joints, std::string& message);
   bool remove(const std::string& name, std::string& message);
 
+private:
+  void runQueuedWork();
+  void stepAndPublish();
+  void publishClock();
+  void publishStatus();
+  void pace();
+
   ros::NodeHandle nh_, private_nh_;
   std::unique_ptr<World> world_;
-  std::map<std::string, std::unique_ptr<RobotInterface>> robots_;
-  std::unique_ptr<GazeboRosApiPlugin> gazebo_;
+  ModelPluginLoader load_model_plugins_;
+  std::map<std::string, std::unique_ptr<ModelPlugins>> robots_;
+  std::vector<std::function<void()>> world_update_end_;
   ros::Publisher clock_pub_;
 
   std::mutex queue_mutex_;

@@ -23,7 +23,7 @@ SensorPluginRegistration::SensorPluginRegistration(const std::vector<std::string
     registry()[filename] = factory;
 }
 
-std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor)
+std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& robot)
 {
   if (!sensor.publishesOnRos())
     return nullptr;
@@ -31,21 +31,23 @@ std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor)
   if (factory == registry().end())
     return nullptr;
   std::unique_ptr<SensorPlugin> plugin = factory->second();
+  plugin->namespace_ = pluginNamespace(sensor.description(), robot.spawnNamespace(), robot.name());
   plugin->Load(sensor);
   return plugin;
 }
 
-ros::NodeHandle SensorPlugin::nodeHandle(const Sensor& sensor)
+ros::NodeHandle SensorPlugin::nodeHandle(const Sensor& sensor) const
 {
-  const std::string& ns = sensor.rosNamespace();
+  const std::string& ns = namespace_;
   return ros::NodeHandle(ns.empty() ? "/" : requireValidRosName(ns, "sensor '" + sensor.name() + "' robotNamespace"));
 }
 
-void SensorPlugin::applyTfPrefixParam(Sensor& sensor, const ros::NodeHandle& nh)
+std::string SensorPlugin::searchedTfPrefix(const Sensor& sensor, const ros::NodeHandle& nh) const
 {
   std::string key, prefix;
   if (nh.searchParam("tf_prefix", key) && nh.getParam(key, prefix) && !prefix.empty())
-    sensor.setTfPrefix(prefix);
+    return prefix;
+  return defaultTfPrefix(sensor.description(), namespace_);
 }
 
 bool SensorPlugin::takeUpdate(const Sensor& sensor)

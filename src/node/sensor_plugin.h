@@ -1,5 +1,6 @@
 // A gazebo_ros sensor plugin on the plant, shaped as gazebo_plugins' own: Load() takes the plant's
-// sensor (its <plugin> block parsed at spawn) and advertises the plugin's topics in its namespace;
+// sensor (its <plugin> block parsed at spawn) and advertises the plugin's topics in its namespace,
+// named by the rules of plugin_names.h;
 // OnUpdate() runs after each step and publishes what the sensor computed since the last call (the
 // sensor itself keeps <update_rate>: Sensor::due). A plugin registers itself under its library's
 // file names with GAZEBO_ROS_SENSOR_PLUGIN in its own file, so adding one touches only that file
@@ -14,6 +15,8 @@
 
 #include <ros/ros.h>
 
+#include "bullet_plant/plugin_names.h"
+#include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
 
 namespace bullet_plant
@@ -29,18 +32,22 @@ public:
 
   // The plugin for `sensor`'s <plugin filename>; null for a sensor without one, or with a file no
   // plugin registered (the plant warned about that at spawn).
-  static std::unique_ptr<SensorPlugin> create(Sensor& sensor);
+  // `robot` is the model it belongs to: its name and spawn namespace name the plugin's namespace.
+  static std::unique_ptr<SensorPlugin> create(Sensor& sensor, const Robot& robot);
 
 protected:
+  // The plugin's namespace (pluginNamespace), set before Load.
+  const std::string& robotNamespace() const { return namespace_; }
   // The node handle of the plugin, in its namespace.
-  static ros::NodeHandle nodeHandle(const Sensor& sensor);
+  ros::NodeHandle nodeHandle(const Sensor& sensor) const;
   // tf::getPrefixParam, as the laser and camera plugins call it: a tf_prefix parameter found by
-  // searching up from `nh`'s namespace replaces the namespace as the prefix of frame ids.
-  static void applyTfPrefixParam(Sensor& sensor, const ros::NodeHandle& nh);
+  // searching up from `nh`'s namespace, else the plugin's default (defaultTfPrefix).
+  std::string searchedTfPrefix(const Sensor& sensor, const ros::NodeHandle& nh) const;
   // True once per update of the sensor: whether it computed something since the last call.
   bool takeUpdate(const Sensor& sensor);
 
 private:
+  std::string namespace_;
   uint64_t seen_updates_ = 0;
 };
 

@@ -139,6 +139,12 @@ ControllerManager& managerOf(Robot& r);
 void init_world(py::module_& m);
 py::class_<RobotRef> init_robot(py::module_& m);
 void init_sensors(py::class_<RobotRef>& robot);
+void init_model_plugins(py::class_<RobotRef>& robot);
+// port_bindings.cpp: a Python value into an input port (a number: Float64, a list: Float64MultiArray,
+// a pair: a Twist's linear.x and angular.z), the owner's answer; an output port's latest message as
+// a dict, None before the first. TypeError for a message type Python cannot carry.
+bool deliverToPort(Port& port, py::object value);
+py::object latestOfPort(const Port& port);
 void init_controller_manager(py::module_& m);
 
 }  // namespace python

@@ -23,6 +23,7 @@ PYBIND11_MODULE(bullet_plant, m)
 
   py::class_<RobotRef> robot = init_robot(m);
   init_sensors(robot);
+  init_model_plugins(robot);
   init_controller_manager(m);
   init_world(m);
 }

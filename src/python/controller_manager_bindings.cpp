@@ -29,33 +29,13 @@ Controller& controllerOf(ControllerManager& cm, const std::string& name)
   return *c;
 }
 
-py::dict jointStateDict(const JointStateSample& s)
+// The latest message the controller published of this type as a dict, None before the first or
+// for a controller without such a port.
+template <class Msg>
+py::object latestOf(const Controller& c)
 {
-  py::dict d;
-  d["stamp"] = s.stamp_ns * 1e-9;
-  d["name"] = s.name;
-  d["position"] = s.position;
-  d["velocity"] = s.velocity;
-  d["effort"] = s.effort;
-  return d;
-}
-
-py::dict controllerStateDict(const ControllerStateSample& s)
-{
-  py::dict d;
-  d["stamp"] = s.stamp_ns * 1e-9;
-  d["set_point"] = s.set_point;
-  d["process_value"] = s.process_value;
-  d["process_value_dot"] = s.process_value_dot;
-  d["error"] = s.error;
-  d["time_step"] = s.time_step;
-  d["command"] = s.command;
-  d["p"] = s.p;
-  d["i"] = s.i;
-  d["d"] = s.d;
-  d["i_clamp"] = s.i_clamp;
-  d["antiwindup"] = s.antiwindup;
-  return d;
+  const OutputPort<Msg>* port = c.output<Msg>();
+  return port ? latestOfPort(*port) : py::none();
 }
 }  // namespace
 
@@ -142,43 +122,24 @@ void init_controller_manager(py::module_& m)
       }), py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
       .def("command", onManager([](ControllerManager& cm, const std::string& name, py::object value) {
         Controller& c = controllerOf(cm, name);
-        switch (c.commandTopic())
-        {
-          case CommandTopic::Float64: return c.setCommand(value.cast<double>());
-          case CommandTopic::Float64MultiArray: return c.setCommands(value.cast<std::vector<double>>());
-          case CommandTopic::Twist:
-          {
-            auto twist = value.cast<std::pair<double, double>>();
-            return c.setTwist(twist.first, twist.second);
-          }
-          default: throw py::key_error("controller '" + name + "' takes no command");
-        }
+        for (const std::unique_ptr<Port>& port : c.ports())
+          if (port->direction() == Port::Direction::In)
+            return deliverToPort(*port, value);
+        throw py::key_error("controller '" + name + "' takes no command");
       }), py::arg("name"), py::arg("value"),
            "what a Float64 (a number) or a Float64MultiArray (a list: the JointGroup controllers) on "
            "<controller>/command does, or a Twist (linear.x, angular.z) on <controller>/cmd_vel; False for a "
            "rejected command")
-      .def("odometry", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
-        const OdometrySample* s = controllerOf(cm, name).latestOdometry();
-        if (!s)
-          return py::none();
-        py::dict d;
-        d["stamp"] = double(s->stamp_ns) * 1e-9;
-        d["x"] = s->x;
-        d["y"] = s->y;
-        d["heading"] = s->heading;
-        d["linear"] = s->linear;
-        d["angular"] = s->angular;
-        return d;
+      .def("odometry", onManager([](ControllerManager& cm, const std::string& name) {
+        return latestOf<OdometrySample>(controllerOf(cm, name));
       }), py::arg("name"), "the latest nav_msgs/Odometry a drive controller produced: stamp, x, y, heading, linear, angular")
-      .def("joint_states", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
-        const JointStateSample* s = controllerOf(cm, name).latestJointState();
-        return s ? py::object(jointStateDict(*s)) : py::none();
+      .def("joint_states", onManager([](ControllerManager& cm, const std::string& name) {
+        return latestOf<JointStateSample>(controllerOf(cm, name));
       }), py::arg("name") = "joint_state_controller", "the latest sensor_msgs/JointState a joint state controller produced")
-      .def("state", onManager([](ControllerManager& cm, const std::string& name) -> py::object {
-        const ControllerStateSample* s = controllerOf(cm, name).latestControllerState();
-        return s ? py::object(controllerStateDict(*s)) : py::none();
+      .def("state", onManager([](ControllerManager& cm, const std::string& name) {
+        return latestOf<ControllerStateSample>(controllerOf(cm, name));
       }), py::arg("name"), "the latest control_msgs/JointControllerState of a PID controller")
-      .def("samples", onManager([](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).samplesProduced(); }),
+      .def("samples", onManager([](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).messagesPublished(); }),
            py::arg("name"), "how many messages the controller has produced");
 }
 

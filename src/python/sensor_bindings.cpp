@@ -1,6 +1,8 @@
 // bullet_plant.Robot's sensors: enabling them and their latest readings as dicts and arrays.
 #include "bindings.h"
 
+#include "bullet_plant/plugin_names.h"
+
 namespace bullet_plant
 {
 namespace python
@@ -13,6 +15,28 @@ Sensor& sensorOf(Robot& r, const std::string& name)
   if (!s)
     throw py::key_error("robot '" + r.name() + "' has no simulated sensor '" + name + "'");
   return *s;
+}
+
+// The sensor as the type a reading needs; KeyError saying what it is not.
+template <class SensorType>
+SensorType& sensorAs(Robot& r, const std::string& name, const char* what)
+{
+  auto* typed = dynamic_cast<SensorType*>(&sensorOf(r, name));
+  if (!typed)
+    throw py::key_error("sensor '" + name + "' is not " + what);
+  return *typed;
+}
+
+// What its gazebo_ros plugin calls things (plugin_names.h); the tf_prefix is the plugin's default,
+// as there is no parameter server to override it.
+std::string namespaceOf(const Robot& r, const Sensor& s)
+{
+  return pluginNamespace(s.description(), r.spawnNamespace(), r.name());
+}
+
+std::string frameOf(const Robot& r, const Sensor& s)
+{
+  return pluginFrameId(s.description(), defaultTfPrefix(s.description(), namespaceOf(r, s)));
 }
 }  // namespace
 
@@ -28,21 +52,19 @@ void init_sensors(py::class_<RobotRef>& robot)
       .def("enable_sensor", onRobot([](Robot& r, const std::string& name, bool on) { sensorOf(r, name).setActive(on); }),
            py::arg("name"), py::arg("on") = true, "sensors work only while enabled (subscribed, in ROS)")
       .def("sensor_updates", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); }))
-      .def("sensor_topic", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).topic(); }))
-      .def("sensor_namespace", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).rosNamespace(); }),
+      .def("sensor_topic", onRobot([](Robot& r, const std::string& name) { return pluginTopic(sensorOf(r, name).description()); }))
+      .def("sensor_namespace", onRobot([](Robot& r, const std::string& name) { return namespaceOf(r, sensorOf(r, name)); }),
            "the namespace the sensor's gazebo_ros plugin publishes in")
-      .def("sensor_frame", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).frameId(); }),
+      .def("sensor_frame", onRobot([](Robot& r, const std::string& name) { return frameOf(r, sensorOf(r, name)); }),
            "the frame id the sensor's plugin publishes (tf_prefix resolved)")
       .def("imu", onRobot([](Robot& r, const std::string& name) -> py::object {
-        auto* imu = dynamic_cast<Imu*>(&sensorOf(r, name));
-        if (!imu)
-          throw py::key_error("sensor '" + name + "' is not an IMU");
-        if (!imu->hasReading())
+        Imu& imu = sensorAs<Imu>(r, name, "an IMU");
+        if (!imu.hasReading())
           return py::none();
-        const ImuReading& m = imu->latest();
+        const ImuReading& m = imu.latest();
         py::dict d;
         d["stamp"] = m.stamp_ns * 1e-9;
-        d["frame_id"] = m.frame_id;
+        d["frame_id"] = frameOf(r, imu);
         d["orientation"] = std::vector<double>{m.orientation.x, m.orientation.y, m.orientation.z, m.orientation.w};
         d["angular_velocity"] = std::vector<double>{m.angular_velocity.x, m.angular_velocity.y, m.angular_velocity.z};
         d["linear_acceleration"] =
@@ -50,16 +72,14 @@ void init_sensors(py::class_<RobotRef>& robot)
         return std::move(d);
       }), "the latest sensor_msgs/Imu fields (x y z w; IMU frame), or None before the first")
       .def("ground_truth", onRobot([](Robot& r, const std::string& name) -> py::object {
-        auto* odometry = dynamic_cast<GroundTruthOdometry*>(&sensorOf(r, name));
-        if (!odometry)
-          throw py::key_error("sensor '" + name + "' is not a gazebo_ros_p3d plugin");
-        if (!odometry->hasReading())
+        GroundTruthOdometry& odometry = sensorAs<GroundTruthOdometry>(r, name, "a gazebo_ros_p3d plugin");
+        if (!odometry.hasReading())
           return py::none();
-        const GroundTruthReading& m = odometry->latest();
+        const GroundTruthReading& m = odometry.latest();
         py::dict d;
         d["stamp"] = m.stamp_ns * 1e-9;
-        d["frame_id"] = m.frame_id;
-        d["child_frame_id"] = m.child_frame_id;
+        d["frame_id"] = frameOf(r, odometry);
+        d["child_frame_id"] = pluginChildFrameId(odometry.description());
         d["position"] = std::vector<double>{m.pose.position.x, m.pose.position.y, m.pose.position.z};
         d["orientation"] = std::vector<double>{m.pose.rotation.x, m.pose.rotation.y, m.pose.rotation.z, m.pose.rotation.w};
         d["linear"] = std::vector<double>{m.linear.x, m.linear.y, m.linear.z};
@@ -67,15 +87,13 @@ void init_sensors(py::class_<RobotRef>& robot)
         return std::move(d);
       }), "the latest nav_msgs/Odometry fields of a gazebo_ros_p3d plugin, or None before the first")
       .def("scan", onRobot([](Robot& r, const std::string& name) -> py::object {
-        auto* lidar = dynamic_cast<Lidar*>(&sensorOf(r, name));
-        if (!lidar)
-          throw py::key_error("sensor '" + name + "' is not a lidar");
-        if (!lidar->hasScan())
+        Lidar& lidar = sensorAs<Lidar>(r, name, "a lidar");
+        if (!lidar.hasScan())
           return py::none();
-        const LaserScan& s = lidar->latest();
+        const LaserScan& s = lidar.latest();
         py::dict d;
         d["stamp"] = s.stamp_ns * 1e-9;
-        d["frame_id"] = s.frame_id;
+        d["frame_id"] = frameOf(r, lidar);
         d["angle_min"] = s.angle_min;
         d["angle_max"] = s.angle_max;
         d["angle_increment"] = s.angle_increment;
@@ -87,20 +105,18 @@ void init_sensors(py::class_<RobotRef>& robot)
         return std::move(d);
       }), "the latest scan as a dict of sensor_msgs/LaserScan's fields, or None before the first")
       .def("image", onRobot([](Robot& r, const std::string& name) -> py::object {
-        auto* camera = dynamic_cast<Camera*>(&sensorOf(r, name));
-        if (!camera)
-          throw py::key_error("sensor '" + name + "' is not a camera");
-        if (!camera->hasFrame())
+        Camera& camera = sensorAs<Camera>(r, name, "a camera");
+        if (!camera.hasFrame())
           return py::none();
-        const CameraFrame& f = camera->latest();
+        const CameraFrame& f = camera.latest();
         py::dict d;
         d["stamp"] = f.stamp_ns * 1e-9;
-        d["frame_id"] = f.frame_id;
+        d["frame_id"] = frameOf(r, camera);
         d["width"] = f.width;
         d["height"] = f.height;
         d["K"] = std::vector<double>{f.fx, 0, f.cx, 0, f.fy, f.cy, 0, 0, 1};
         d["rgb"] = py::array_t<uint8_t>({f.height, f.width, 3}, f.rgb.data());
-        if (camera->depthSensor())
+        if (camera.depthSensor())
         {
           d["depth"] = py::array_t<float>({f.height, f.width}, f.depth.data());
           d["points"] = py::array_t<float>({f.height, f.width, 3}, f.points.data());

@@ -44,8 +44,11 @@ class Process:
     def __init__(self, args, env, log_path):
         self.log_path = log_path
         self._log = open(log_path, 'w')
+        # SIGINT as a terminal's Ctrl-C delivers it, even when the suite itself runs as a background
+        # job of a shell without job control (which starts it with SIGINT ignored, inherited here).
         self.popen = subprocess.Popen(args, env=env, stdout=self._log, stderr=subprocess.STDOUT,
-                                      stdin=subprocess.DEVNULL, start_new_session=True)
+                                      stdin=subprocess.DEVNULL, start_new_session=True,
+                                      preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
     @property
     def pid(self):

@@ -13,6 +13,7 @@
 #include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/log.h"
 #include "bullet_plant/params.h"
+#include "controller_commands.h"
 #include "two_axle_joints.h"
 
 using namespace bullet_plant;
@@ -268,7 +269,7 @@ TEST_F(ControllerManagerTest, SwitchTakesEffectAfterTheNextUpdatesControllerUpda
   ASSERT_TRUE(manager.loadController("right_vel"));
   JointHandle& left = *joints.handle("left_wheel");
   JointHandle& right = *joints.handle("right_wheel");
-  ASSERT_TRUE(manager.controller("left_vel")->setCommand(3.0));
+  ASSERT_TRUE(command(*manager.controller("left_vel"), 3.0));
   right.setCommand(7.0);
 
   ASSERT_TRUE(manager.switchController({"right_vel"}, {"left_vel"}, ControllerManager::STRICT));
@@ -285,8 +286,8 @@ TEST_F(ControllerManagerTest, SwitchTakesEffectAfterTheNextUpdatesControllerUpda
   EXPECT_EQ(left.command(), 3.0) << "the stopping controller still ran in that update";
   EXPECT_EQ(right.command(), 7.0) << "the starting controller did not run yet";
 
-  ASSERT_TRUE(manager.controller("right_vel")->setCommand(-2.0));
-  ASSERT_TRUE(manager.controller("left_vel")->setCommand(5.0));
+  ASSERT_TRUE(command(*manager.controller("right_vel"), -2.0));
+  ASSERT_TRUE(command(*manager.controller("left_vel"), 5.0));
   manager.update(time_ns += 1000000, 0.001);
   EXPECT_EQ(right.command(), -2.0);
   EXPECT_EQ(left.command(), 3.0) << "a stopped controller writes nothing";

@@ -12,6 +12,7 @@
 #include "bullet_plant/controllers.h"
 #include "bullet_plant/log.h"
 #include "bullet_plant/params.h"
+#include "controller_commands.h"
 #include "two_axle_joints.h"
 
 using namespace bullet_plant;
@@ -73,20 +74,20 @@ TEST_F(ControllerTest, ForwardCommandControllersWriteTheirCommandEachUpdate)
     ASSERT_EQ(c->claimedResources().size(), 1u);
     EXPECT_EQ(c->claimedResources()[0].hardware_interface, interfaceName(h.interface())) << k.type;
     EXPECT_EQ(c->claimedResources()[0].resources, std::vector<std::string>{k.joint});
-    EXPECT_EQ(c->commandTopic(), CommandTopic::Float64);
-    EXPECT_FALSE(c->hasState());
+    EXPECT_EQ(commandTopic<double>(*c), "command");
+    EXPECT_EQ(c->output<ControllerStateSample>(), nullptr);
 
     h.setCommand(9.0);
-    ASSERT_TRUE(c->setCommand(5.0));
+    ASSERT_TRUE(command(*c, 5.0));
     c->starting(time_ns);
     run(*c, 1);
     EXPECT_EQ(h.command(), 0.0) << k.type << " starts from 0 (the position one from where the joint is, 0 here), not from an earlier command";
-    EXPECT_TRUE(c->setCommand(0.25));
+    EXPECT_TRUE(command(*c, 0.25));
     EXPECT_EQ(h.command(), 0.0) << "written by the next update, not by the command itself";
     run(*c, 1);
     EXPECT_EQ(h.command(), 0.25) << k.type;
     for (double bad : {std::nan(""), std::numeric_limits<double>::infinity()})
-      EXPECT_FALSE(c->setCommand(bad)) << k.type;
+      EXPECT_FALSE(command(*c, bad)) << k.type;
     run(*c, 1);
     EXPECT_EQ(h.command(), 0.25) << "a refused command leaves the last one";
     EXPECT_EQ(h.rejectedCommands(), 0) << "refused by the controller, never reaching the joint";
@@ -99,21 +100,21 @@ TEST_F(ControllerTest, JointStateControllerSamplesAtItsPublishRate)
   std::unique_ptr<Controller> c = make("joint_state_controller/JointStateController", "jsc");
   ASSERT_EQ(c->claimedResources().size(), 1u);
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, std::string(kJointStateInterface));
-  EXPECT_EQ(c->commandTopic(), CommandTopic::None);
+  EXPECT_EQ(c->ports().size(), 1u) << "joint_states only, no command";
   c->starting(time_ns);
   run(*c, 1000);
-  std::vector<JointStateSample> samples = c->takeJointStates();
+  std::vector<JointStateSample> samples = take<JointStateSample>(*c);
   EXPECT_EQ(samples.size(), 49u) << "every 20 ms after the first 20 ms, strictly later than the period";
-  EXPECT_EQ(c->samplesProduced(), samples.size());
+  EXPECT_EQ(c->messagesPublished(), samples.size());
   ASSERT_FALSE(samples.empty());
   EXPECT_EQ(samples.front().stamp_ns, 21000000);
   EXPECT_EQ(samples[1].stamp_ns - samples[0].stamp_ns, 20000000);
   EXPECT_EQ(samples.back().name, (std::vector<std::string>{"left_hinge", "left_wheel", "mast", "right_hinge", "right_wheel"}))
       << "every handle, sorted by name";
   EXPECT_EQ(samples.back().position.size(), 5u);
-  EXPECT_TRUE(c->takeJointStates().empty()) << "taken once";
-  ASSERT_NE(c->latestJointState(), nullptr);
-  EXPECT_EQ(c->latestJointState()->stamp_ns, samples.back().stamp_ns);
+  EXPECT_TRUE(take<JointStateSample>(*c).empty()) << "taken once";
+  ASSERT_NE(c->output<JointStateSample>()->latest(), nullptr);
+  EXPECT_EQ(c->output<JointStateSample>()->latest()->stamp_ns, samples.back().stamp_ns);
 }
 
 TEST_F(ControllerTest, JointStateControllerJointsAndExtraJoints)
@@ -127,7 +128,7 @@ TEST_F(ControllerTest, JointStateControllerJointsAndExtraJoints)
   std::unique_ptr<Controller> c = make("joint_state_controller/JointStateController", "jsc");
   c->starting(time_ns);
   run(*c, 3);
-  std::vector<JointStateSample> samples = c->takeJointStates();
+  std::vector<JointStateSample> samples = take<JointStateSample>(*c);
   ASSERT_FALSE(samples.empty());
   EXPECT_EQ(samples.back().name, (std::vector<std::string>{"right_wheel", "mast", "virtual"}));
   EXPECT_EQ(samples.back().position.back(), 1.5);
@@ -147,7 +148,7 @@ TEST_F(ControllerTest, JointStateControllerWithRateZeroNeverSamples)
   std::unique_ptr<Controller> c = make("joint_state_controller/JointStateController", "jsc");
   c->starting(time_ns);
   run(*c, 100);
-  EXPECT_EQ(c->samplesProduced(), 0u);
+  EXPECT_EQ(c->messagesPublished(), 0u);
 }
 
 TEST_F(ControllerTest, EffortPositionControllerReportsItsStateEveryTenthUpdate)
@@ -158,13 +159,14 @@ TEST_F(ControllerTest, EffortPositionControllerReportsItsStateEveryTenthUpdate)
   params.set("/bot/steer/pid/d", Param::real(1.0));
   params.set("/bot/steer/pid/i_clamp", Param::real(0.5));
   std::unique_ptr<Controller> c = make("effort_controllers/JointPositionController", "steer");
-  EXPECT_EQ(c->commandTopic(), CommandTopic::Float64);
-  EXPECT_TRUE(c->hasState());
+  EXPECT_EQ(commandTopic<double>(*c), "command");
+  ASSERT_NE(c->output<ControllerStateSample>(), nullptr);
+  EXPECT_EQ(c->output<ControllerStateSample>()->topic(), "state");
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::EffortJointInterface");
   c->starting(time_ns);
-  ASSERT_TRUE(c->setCommand(1.0));
+  ASSERT_TRUE(command(*c, 1.0));
   run(*c, 25);
-  std::vector<ControllerStateSample> states = c->takeControllerStates();
+  std::vector<ControllerStateSample> states = take<ControllerStateSample>(*c);
   ASSERT_EQ(states.size(), 3u) << "updates 0, 10 and 20";
   EXPECT_EQ(states[1].stamp_ns - states[0].stamp_ns, 10000000);
   const ControllerStateSample& s = states.back();
@@ -186,9 +188,9 @@ TEST_F(ControllerTest, EffortVelocityControllerTracksTheWheelSpeed)
   params.set("/bot/wheel/pid/p", Param::real(2.0));
   std::unique_ptr<Controller> c = make("effort_controllers/JointVelocityController", "wheel");
   c->starting(time_ns);
-  ASSERT_TRUE(c->setCommand(3.0));
+  ASSERT_TRUE(command(*c, 3.0));
   run(*c, 1);
-  std::vector<ControllerStateSample> states = c->takeControllerStates();
+  std::vector<ControllerStateSample> states = take<ControllerStateSample>(*c);
   ASSERT_EQ(states.size(), 1u);
   EXPECT_EQ(states[0].set_point, 3.0) << "a velocity set point is not limited by the position range";
   EXPECT_EQ(states[0].process_value, 0.0);
@@ -211,32 +213,32 @@ TEST_F(ControllerTest, JointGroupControllersForwardOneValuePerJoint)
     ASSERT_EQ(c->claimedResources().size(), 1u);
     EXPECT_EQ(c->claimedResources()[0].hardware_interface, interfaceName(joints.handle(k.joints[0])->interface()));
     EXPECT_EQ(c->claimedResources()[0].resources, k.joints) << "in the parameter's order";
-    EXPECT_EQ(c->commandTopic(), CommandTopic::Float64MultiArray);
-    EXPECT_FALSE(c->setCommand(1.0)) << "no Float64";
+    EXPECT_EQ(commandTopic<std::vector<double>>(*c), "command");
+    EXPECT_FALSE(command(*c, 1.0)) << "no Float64";
 
     std::vector<double> values;
     for (size_t i = 0; i < k.joints.size(); ++i)
       values.push_back(0.1 * double(i + 1));
-    ASSERT_TRUE(c->setCommands(values));
+    ASSERT_TRUE(command(*c, values));
     c->starting(time_ns);
     run(*c, 1);
     for (const std::string& j : k.joints)
       EXPECT_EQ(joints.handle(j)->command(), 0.0) << k.type << ": starts from 0 (or the joint's position, 0 here)";
-    ASSERT_TRUE(c->setCommands(values));
+    ASSERT_TRUE(command(*c, values));
     run(*c, 1);
     for (size_t i = 0; i < k.joints.size(); ++i)
       EXPECT_EQ(joints.handle(k.joints[i])->command(), values[i]) << k.type << " " << k.joints[i];
 
     messages.clear();
     std::vector<double> wrong(k.joints.size() + 1, 1.0);
-    EXPECT_FALSE(c->setCommands(wrong));
+    EXPECT_FALSE(command(*c, wrong));
     ASSERT_FALSE(messages.empty());
     EXPECT_EQ(messages.back(), "Dimension of command (" + std::to_string(wrong.size()) +
                                    ") does not match number of joints (" + std::to_string(k.joints.size()) +
                                    ")! Not executing!");
     std::vector<double> bad = values;
     bad.back() = std::nan("");
-    EXPECT_FALSE(c->setCommands(bad));
+    EXPECT_FALSE(command(*c, bad));
     run(*c, 1);
     EXPECT_EQ(joints.handle(k.joints.back())->command(), values.back()) << "a refused command leaves the last one";
   }
@@ -274,9 +276,9 @@ TEST_F(ControllerTest, EffortJointGroupPositionControllerNeedsAPidPerJoint)
   params.set("/bot/group/right_hinge/pid/p", Param::real(4.0));
   c = make("effort_controllers/JointGroupPositionController", "group");
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::EffortJointInterface");
-  EXPECT_EQ(c->commandTopic(), CommandTopic::Float64MultiArray);
+  EXPECT_EQ(commandTopic<std::vector<double>>(*c), "command");
   c->starting(time_ns);
-  ASSERT_TRUE(c->setCommands({1.0, -0.2}));
+  ASSERT_TRUE(command(*c, std::vector<double>{1.0, -0.2}));
   run(*c, 2);
   EXPECT_EQ(joints.handle("left_hinge")->rejectedCommands(), 0);
 }
@@ -333,26 +335,25 @@ protected:
 TEST_F(AckermannTest, TwistDrivesTheRearWheelAndSteersWithGeometryFromTheUrdf)
 {
   std::unique_ptr<Controller> c = init();
-  EXPECT_EQ(c->commandTopic(), CommandTopic::Twist);
+  EXPECT_EQ(commandTopic<TwistCommand>(*c), "cmd_vel");
   ASSERT_EQ(c->claimedResources().size(), 2u);
   EXPECT_EQ(c->claimedResources()[0].hardware_interface, "hardware_interface::PositionJointInterface");
   EXPECT_EQ(c->claimedResources()[0].resources, std::vector<std::string>{"front_steer_joint"});
   EXPECT_EQ(c->claimedResources()[1].resources, std::vector<std::string>{"rear_wheel_joint"});
-  ASSERT_NE(c->odometryFrames(), nullptr);
-  EXPECT_EQ(c->odometryFrames()->odom_frame_id, "odom");
-  EXPECT_EQ(c->odometryFrames()->base_frame_id, "base_link");
-  EXPECT_TRUE(c->odometryFrames()->enable_odom_tf);
-  EXPECT_EQ(c->odometryFrames()->pose_covariance_diagonal[2], 1e6);
+  ASSERT_NE(c->output<OdometrySample>(), nullptr);
+  EXPECT_EQ(c->output<OdometrySample>()->topic(), "odom");
+  ASSERT_NE(c->output<TransformSample>(), nullptr) << "enable_odom_tf defaults to true";
+  EXPECT_EQ(c->output<TransformSample>()->topic(), "/tf");
 
-  EXPECT_FALSE(c->setTwist(1.0, 0.2)) << "not running yet";
+  EXPECT_FALSE(twist(*c, 1.0, 0.2)) << "not running yet";
   EXPECT_EQ(messages.back(), "Can't accept new commands. Controller is not running.");
   c->starting(time_ns);
   run(*c, 1);
-  ASSERT_TRUE(c->setTwist(1.0, 0.2));
+  ASSERT_TRUE(twist(*c, 1.0, 0.2));
   run(*c, 1);
   EXPECT_DOUBLE_EQ(wheelCommand(), 1.0 / 0.05) << "speed / the wheel link's cylinder radius";
   EXPECT_EQ(steerCommand(), 0.2) << "angular.z is the steering angle";
-  EXPECT_FALSE(c->setTwist(std::nan(""), 0.0));
+  EXPECT_FALSE(twist(*c, std::nan(""), 0.0));
   run(*c, 1);
   EXPECT_DOUBLE_EQ(wheelCommand(), 20.0) << "a NaN command is ignored";
 
@@ -362,7 +363,17 @@ TEST_F(AckermannTest, TwistDrivesTheRearWheelAndSteersWithGeometryFromTheUrdf)
   EXPECT_EQ(wheelCommand(), 0.0) << "older than cmd_vel_timeout: brake";
   EXPECT_EQ(steerCommand(), 0.0);
   c->stopping(time_ns);
-  EXPECT_FALSE(c->setTwist(1.0, 0.0));
+  EXPECT_FALSE(twist(*c, 1.0, 0.0));
+
+  std::vector<OdometrySample> odometry = take<OdometrySample>(*c);
+  ASSERT_FALSE(odometry.empty());
+  EXPECT_EQ(odometry.back().frame_id, "odom");
+  EXPECT_EQ(odometry.back().child_frame_id, "base_link");
+  EXPECT_EQ(odometry.back().pose_covariance_diagonal[2], 1e6);
+  std::vector<TransformSample> transforms = take<TransformSample>(*c);
+  ASSERT_EQ(transforms.size(), odometry.size()) << "a transform with each odometry message";
+  EXPECT_EQ(transforms.back().pose.position.x, odometry.back().pose.position.x);
+  EXPECT_EQ(transforms.back().child_frame_id, "base_link");
 }
 
 TEST_F(AckermannTest, ParametersOverrideTheUrdfAndLimitTheCommands)
@@ -376,7 +387,7 @@ TEST_F(AckermannTest, ParametersOverrideTheUrdfAndLimitTheCommands)
   params.set("/bot/ack/angular/z/max_velocity", Param::real(0.3));
   std::unique_ptr<Controller> c = init();
   c->starting(time_ns);
-  ASSERT_TRUE(c->setTwist(1.0, -0.5));
+  ASSERT_TRUE(twist(*c, 1.0, -0.5));
   run(*c, 100);
   EXPECT_NEAR(wheelCommand(), 0.2 / 0.1, 1e-9) << "2 m/s^2 for 0.1 s: 0.2 m/s, through the radius parameter";
   EXPECT_EQ(steerCommand(), -0.3) << "min_velocity defaults to -max_velocity";
@@ -390,14 +401,14 @@ TEST_F(AckermannTest, OpenLoopOdometryIntegratesTheCommandsAndPublishesAtItsRate
   params.set("/bot/ack/publish_rate", Param::real(10.0));
   std::unique_ptr<Controller> c = init();
   c->starting(time_ns);
-  ASSERT_TRUE(c->setTwist(1.0, 0.0));
+  ASSERT_TRUE(twist(*c, 1.0, 0.0));
   run(*c, 400);
-  std::vector<OdometrySample> odometry = c->takeOdometry();
+  std::vector<OdometrySample> odometry = take<OdometrySample>(*c);
   ASSERT_EQ(odometry.size(), 3u) << "every 100 ms, strictly later than the period";
   EXPECT_EQ(odometry.back().stamp_ns, 301000000);
-  EXPECT_NEAR(odometry.back().x, 0.3, 1e-9) << "the command reaches odometry one update later: 300 ms of 1 m/s";
-  EXPECT_EQ(odometry.back().y, 0.0);
-  EXPECT_EQ(odometry.back().linear, 1.0);
+  EXPECT_NEAR(odometry.back().pose.position.x, 0.3, 1e-9) << "the command reaches odometry one update later: 300 ms of 1 m/s";
+  EXPECT_EQ(odometry.back().pose.position.y, 0.0);
+  EXPECT_EQ(odometry.back().linear.x, 1.0);
 }
 
 TEST_F(AckermannTest, InitErrorsNameWhatIsMissing)

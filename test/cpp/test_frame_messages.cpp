@@ -12,13 +12,13 @@ namespace bullet_plant
 namespace
 {
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const std::string kFrameId = "tianracer/depth_camera_link_optical";
 
 // 4 x 3 pixels: depths inside the cutoff (0.5, 5), nothing hit, too near, too far, on the bounds.
 CameraFrame testFrame()
 {
   CameraFrame f;
   f.stamp_ns = 12'345'678'901;
-  f.frame_id = "tianracer/depth_camera_link_optical";
   f.width = 4;
   f.height = 3;
   const float depths[12] = {1.0f, kNaN, 0.2f, 6.0f, 0.5f, 5.0f, 2.5f, 4.99f, 0.51f, 3.0f, kNaN, 1.5f};
@@ -37,7 +37,7 @@ const DepthCutoff kCutoff{0.5, 5.0};
 sensor_msgs::Image builtImage(const CameraFrame& f, const std::string& encoding, uint32_t step)
 {
   sensor_msgs::Image image;
-  image.header = frameHeader(f);
+  image.header = frameHeader(f, kFrameId);
   image.width = f.width;
   image.height = f.height;
   image.encoding = encoding;
@@ -68,7 +68,7 @@ sensor_msgs::Image builtDepth(const CameraFrame& f, DepthCutoff cutoff)
 sensor_msgs::PointCloud2 builtCloud(const CameraFrame& f, DepthCutoff cutoff)
 {
   sensor_msgs::PointCloud2 cloud;
-  cloud.header = frameHeader(f);
+  cloud.header = frameHeader(f, kFrameId);
   cloud.width = f.width;
   cloud.height = f.height;
   cloud.is_dense = false;
@@ -113,10 +113,11 @@ TEST(FrameMessages, TraitsAreTheMessagesOwn)
 {
   namespace mt = ros::message_traits;
   const CameraFrame f = testFrame();
-  EXPECT_STREQ(mt::md5sum(RgbImageOf{f}), mt::md5sum<sensor_msgs::Image>());
-  EXPECT_STREQ(mt::datatype(DepthImageOf{f, kCutoff}), "sensor_msgs/Image");
-  EXPECT_STREQ(mt::md5sum(PointCloudOf{f, kCutoff}), mt::md5sum<sensor_msgs::PointCloud2>());
-  EXPECT_STREQ(mt::datatype(PointCloudOf{f, kCutoff}), "sensor_msgs/PointCloud2");
+  const std_msgs::Header header = frameHeader(f, kFrameId);
+  EXPECT_STREQ(mt::md5sum(RgbImageOf{f, header}), mt::md5sum<sensor_msgs::Image>());
+  EXPECT_STREQ(mt::datatype(DepthImageOf{f, header, kCutoff}), "sensor_msgs/Image");
+  EXPECT_STREQ(mt::md5sum(PointCloudOf{f, header, kCutoff}), mt::md5sum<sensor_msgs::PointCloud2>());
+  EXPECT_STREQ(mt::datatype(PointCloudOf{f, header, kCutoff}), "sensor_msgs/PointCloud2");
   EXPECT_STREQ(mt::definition<PointCloudOf>(), mt::definition<sensor_msgs::PointCloud2>());
   EXPECT_TRUE(mt::hasHeader<RgbImageOf>());
 }
@@ -124,11 +125,12 @@ TEST(FrameMessages, TraitsAreTheMessagesOwn)
 TEST(FrameMessages, RgbImageHasTheBuiltMessagesBytes)
 {
   const CameraFrame f = testFrame();
-  const std::vector<uint8_t> serialized = bytes(RgbImageOf{f});
+  const std_msgs::Header header = frameHeader(f, kFrameId);
+  const std::vector<uint8_t> serialized = bytes(RgbImageOf{f, header});
   EXPECT_EQ(serialized, bytes(builtRgb(f)));
   const sensor_msgs::Image image = deserialized<sensor_msgs::Image>(serialized);
   EXPECT_EQ(image.header.stamp, ros::Time(12, 345'678'901));
-  EXPECT_EQ(image.header.frame_id, f.frame_id);
+  EXPECT_EQ(image.header.frame_id, kFrameId);
   EXPECT_EQ(image.encoding, "rgb8");
   EXPECT_EQ(image.step, 12u);
   EXPECT_EQ(image.data, f.rgb);
@@ -137,7 +139,8 @@ TEST(FrameMessages, RgbImageHasTheBuiltMessagesBytes)
 TEST(FrameMessages, DepthImageIsNaNOutsideTheCutoff)
 {
   const CameraFrame f = testFrame();
-  const std::vector<uint8_t> serialized = bytes(DepthImageOf{f, kCutoff});
+  const std_msgs::Header header = frameHeader(f, kFrameId);
+  const std::vector<uint8_t> serialized = bytes(DepthImageOf{f, header, kCutoff});
   EXPECT_EQ(serialized, bytes(builtDepth(f, kCutoff)));
   const sensor_msgs::Image image = deserialized<sensor_msgs::Image>(serialized);
   EXPECT_EQ(image.encoding, "32FC1");
@@ -154,10 +157,11 @@ TEST(FrameMessages, DepthImageIsNaNOutsideTheCutoff)
 TEST(FrameMessages, PointCloudHasCutoffNaNsAndPackedRgb)
 {
   const CameraFrame f = testFrame();
-  const std::vector<uint8_t> serialized = bytes(PointCloudOf{f, kCutoff});
+  const std_msgs::Header header = frameHeader(f, kFrameId);
+  const std::vector<uint8_t> serialized = bytes(PointCloudOf{f, header, kCutoff});
   EXPECT_EQ(serialized, bytes(builtCloud(f, kCutoff)));
   const sensor_msgs::PointCloud2 cloud = deserialized<sensor_msgs::PointCloud2>(serialized);
-  EXPECT_EQ(cloud.header.frame_id, f.frame_id);
+  EXPECT_EQ(cloud.header.frame_id, kFrameId);
   EXPECT_EQ(cloud.width, 4u);
   EXPECT_EQ(cloud.height, 3u);
   EXPECT_EQ(cloud.point_step, 16u);

@@ -1,5 +1,5 @@
-// inertial_sensors.cpp: the IMU and gazebo_ros_p3d models, and the plugins' namespace and frame
-// rules (sensors.cpp's resolveTfFrame, the parameters read by robot_description.cpp).
+// inertial_sensors.cpp: the IMU and gazebo_ros_p3d models (their names: test_plugin_names.cpp), and
+// the plugin parameters robot_description.cpp reads for them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,15 +37,6 @@ LinkMotion at(const urdf::Pose& pose, urdf::Vector3 velocity = urdf::Vector3(), 
 }
 }  // namespace
 
-TEST(ResolveTfFrame, AsTfResolve)
-{
-  EXPECT_EQ(resolveTfFrame("", "camera"), "camera");
-  EXPECT_EQ(resolveTfFrame("tianracer_01", "camera"), "tianracer_01/camera");
-  EXPECT_EQ(resolveTfFrame("/tianracer_01", "camera"), "tianracer_01/camera");
-  EXPECT_EQ(resolveTfFrame("tianracer_01", "/tianracer_01/base_footprint"), "tianracer_01/base_footprint");
-  EXPECT_EQ(resolveTfFrame("", "/world"), "world");
-}
-
 TEST(Imu, AtRestReadsTheReactionToGravityInItsOwnFrame)
 {
   Imu imu(imuSensor({{"frameName", "imu_link"}, {"updateRateHZ", "100"}}), 1);
@@ -80,12 +71,10 @@ TEST(Imu, RatesInTheImuFrameAndOrientationRelativeToSpawn)
   const ImuReading& r = imu.latest();
   EXPECT_NEAR(r.angular_velocity.z, 1.5, 1e-12);
   EXPECT_NEAR(2 * std::atan2(r.orientation.z, r.orientation.w), 0.5, 1e-9) << "gazebo_ros_imu_sensor: since spawn";
-  EXPECT_EQ(r.frame_id, "car1/imu_link") << "frameName verbatim but for the leading '/'";
 
   Imu model(imuSensor({{"bodyName", "imu_link"}}, true), 1);
   model.sample(at(poseFromXyzRpy(0, 0, 0, 0, 0, 0.8)), kGravity, 0);
   EXPECT_NEAR(2 * std::atan2(model.latest().orientation.z, model.latest().orientation.w), 0.8, 1e-9) << "gazebo_ros_imu: world";
-  EXPECT_EQ(model.latest().frame_id, "imu_link") << "frameName defaults to bodyName";
 }
 
 TEST(Imu, NoiseIsSeededAndHasTheGivenSpread)
@@ -107,20 +96,6 @@ TEST(Imu, NoiseIsSeededAndHasTheGivenSpread)
   EXPECT_NEAR(run(7).second, 0.1, 0.01);
 }
 
-TEST(Imu, NamespacesAsTheirPluginsTakeThem)
-{
-  Imu sensor_plugin(imuSensor({{"frameName", "f"}, {"topicName", "/imu"}}), 1);
-  sensor_plugin.setNamespace("", "tianracer");
-  EXPECT_EQ(sensor_plugin.rosNamespace(), "/tianracer") << "gazebo_ros_imu_sensor without a namespace: the model's";
-  EXPECT_EQ(sensor_plugin.topic(), "imu") << "appended to the namespace";
-  sensor_plugin.setNamespace("/car1", "tianracer");
-  EXPECT_EQ(sensor_plugin.rosNamespace(), "/car1");
-  Imu model_plugin(imuSensor({{"bodyName", "imu_link"}}, true), 1);
-  model_plugin.setNamespace("", "tianracer");
-  EXPECT_EQ(model_plugin.rosNamespace(), "");
-  EXPECT_EQ(model_plugin.topic(), "/default_imu");
-}
-
 TEST(GroundTruthOdometry, PoseAndWorldTwistOfItsBodyInTheResolvedFrame)
 {
   SensorDescription d;
@@ -131,14 +106,9 @@ TEST(GroundTruthOdometry, PoseAndWorldTwistOfItsBodyInTheResolvedFrame)
   d.plugin_kind = PluginKind::P3d;
   d.plugin = {{"bodyName", "base_footprint"}, {"topicName", "ground_truth"}, {"updateRate", "50"}};
   GroundTruthOdometry p3d(d, 1);
-  p3d.setNamespace("/car1", "car1");
   EXPECT_EQ(p3d.periodNs(), 20000000);
-  EXPECT_EQ(p3d.frameId(), "world") << "no tf_prefix parameter: the frame as given";
-  p3d.setTfPrefix("car1");
-  EXPECT_EQ(p3d.frameId(), "car1/world");
   p3d.sample(at(poseFromXyzRpy(1, 2, 0, 0, 0, 0.5), urdf::Vector3(0.3, 0.4, 0), urdf::Vector3(0, 0, 0.7)), nullptr, 5);
   const GroundTruthReading& r = p3d.latest();
-  EXPECT_EQ(r.child_frame_id, "base_footprint");
   EXPECT_DOUBLE_EQ(r.pose.position.y, 2.0);
   EXPECT_DOUBLE_EQ(r.linear.y, 0.4) << "world frame, as gazebo_ros_p3d";
   EXPECT_DOUBLE_EQ(r.angular.z, 0.7);
@@ -150,7 +120,8 @@ TEST(RobotDescriptionPlugins, ModelPluginsUnknownPluginsAndRobotSimType)
       "<robot name=\"r\"><link name=\"base\"/>"
       "<gazebo><plugin name=\"truth\" filename=\"libgazebo_ros_p3d.so\"><bodyName>base</bodyName>"
       "<topicName>odom_truth</topicName></plugin>"
-      "<plugin name=\"drive\" filename=\"libgazebo_ros_diff_drive.so\"/>"
+      "<plugin name=\"drive\" filename=\"libgazebo_ros_diff_drive.so\"><leftJoint>l</leftJoint></plugin>"
+      "<plugin name=\"grip\" filename=\"libgazebo_ros_vacuum_gripper.so\"/>"
       "<plugin name=\"gazebo_ros_control\" filename=\"libgazebo_ros_control.so\"><robotSimType>my/Hw</robotSimType>"
       "</plugin></gazebo></robot>";
   RobotDescription d = parseRobotDescription(urdf);
@@ -158,7 +129,11 @@ TEST(RobotDescriptionPlugins, ModelPluginsUnknownPluginsAndRobotSimType)
   EXPECT_EQ(d.sensors[0].type, "p3d");
   EXPECT_EQ(d.sensors[0].link, "base");
   ASSERT_EQ(d.warnings.size(), 1u);
-  EXPECT_NE(d.warnings[0].find("'drive' (libgazebo_ros_diff_drive.so)"), std::string::npos) << d.warnings[0];
+  EXPECT_NE(d.warnings[0].find("'grip' (libgazebo_ros_vacuum_gripper.so)"), std::string::npos) << d.warnings[0];
+  EXPECT_NE(d.warnings[0].find(", gazebo_ros_diff_drive,"), std::string::npos) << "the simulated ones listed";
+  ASSERT_EQ(d.model_plugins.size(), 1u) << "a model plugin the plant simulates is kept for the robot to load";
+  EXPECT_EQ(d.model_plugins[0].kind, PluginKind::DiffDrive);
+  EXPECT_EQ(d.model_plugins[0].text("leftJoint", ""), "l");
   ASSERT_EQ(d.errors.size(), 1u);
   EXPECT_NE(d.errors[0].find("robotSimType 'my/Hw'"), std::string::npos);
   EXPECT_FALSE(d.control.present) << "no controller manager, as when gazebo_ros_control cannot load the class";

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <map>
 #include <tuple>
 
 #include <urdf_parser/urdf_parser.h>
@@ -66,9 +64,6 @@ struct SpeedLimiter
 class AckermannSteeringController : public Controller
 {
 public:
-  CommandTopic commandTopic() const override { return CommandTopic::Twist; }
-  const OdometryFrames* odometryFrames() const override { return &frames_; }
-
   bool init(ControllerContext& c) override
   {
     log_ = &c.log;
@@ -95,9 +90,9 @@ public:
     steer_pos_multiplier_ = number("steer_pos_multiplier", 1.0);
     window_size_ = size_t(std::max(1.0, number("velocity_rolling_window_size", 10.0)));
     cmd_vel_timeout_ = number("cmd_vel_timeout", 0.5);
-    frames_.base_frame_id = text("base_frame_id", "base_link");
-    frames_.odom_frame_id = text("odom_frame_id", "odom");
-    frames_.enable_odom_tf = flag("enable_odom_tf", true);
+    odometry_.child_frame_id = text("base_frame_id", "base_link");
+    odometry_.frame_id = text("odom_frame_id", "odom");
+    const bool enable_odom_tf = flag("enable_odom_tf", true);
     limiter_linear_.read(c, "linear/x");
     limiter_angular_.read(c, "angular/z");
 
@@ -112,8 +107,8 @@ public:
     odometry_separation_ = separation_multiplier * separation_;
     odometry_radius_ = radius_multiplier * wheel_radius_;
 
-    for (auto& [key, out] : {std::pair<const char*, double*>{"pose_covariance_diagonal", frames_.pose_covariance_diagonal},
-                             std::pair<const char*, double*>{"twist_covariance_diagonal", frames_.twist_covariance_diagonal}})
+    for (auto& [key, out] : {std::pair<const char*, double*>{"pose_covariance_diagonal", odometry_.pose_covariance_diagonal.data()},
+                             std::pair<const char*, double*>{"twist_covariance_diagonal", odometry_.twist_covariance_diagonal.data()}})
     {
       const Param* list = param(c, key);
       bool ok = list && list->type() == Param::Type::List && list->asList().size() == 6;
@@ -139,10 +134,14 @@ public:
       }
     claimed_ = {ClaimedResources{interfaceName(JointInterface::Position), {front_steer}},
                 ClaimedResources{interfaceName(JointInterface::Velocity), {rear_wheel}}};
+    subscribe<TwistCommand>("cmd_vel", [this](const TwistCommand& t) { return setTwist(t.linear_x, t.angular_z); });
+    odometry_port_ = &advertise<OdometrySample>("odom");
+    if (enable_odom_tf)
+      tf_port_ = &advertise<TransformSample>("/tf");
     return true;
   }
 
-  bool setTwist(double linear_x, double angular_z) override
+  bool setTwist(double linear_x, double angular_z)
   {
     if (!running_)
     {
@@ -184,7 +183,7 @@ public:
     if (publish_period_ns_ > 0 && last_publish_ns_ + publish_period_ns_ < time_ns)
     {
       last_publish_ns_ += publish_period_ns_;
-      emit(OdometrySample{time_ns, x_, y_, heading_, linear_, angular_});
+      publishOdometry(time_ns);
     }
 
     Command command = command_;
@@ -200,6 +199,17 @@ public:
 
 private:
   struct Command { double linear = 0, angular = 0; int64_t stamp_ns = 0; };
+
+  void publishOdometry(int64_t time_ns)
+  {
+    odometry_.stamp_ns = time_ns;
+    odometry_.pose = planarPose(x_, y_, heading_);
+    odometry_.linear = urdf::Vector3(linear_, 0, 0);
+    odometry_.angular = urdf::Vector3(0, 0, angular_);
+    odometry_port_->publish(odometry_);
+    if (tf_port_)
+      tf_port_->publish(TransformSample{time_ns, odometry_.frame_id, odometry_.child_frame_id, odometry_.pose});
+  }
 
   void brake()
   {
@@ -308,7 +318,9 @@ private:
   Log* log_ = nullptr;
   std::string ns_;
   JointHandle *rear_wheel_ = nullptr, *front_steer_ = nullptr;
-  OdometryFrames frames_;
+  OdometrySample odometry_;  // frames and covariances from the parameters; the rest per message
+  OutputPort<OdometrySample>* odometry_port_ = nullptr;
+  OutputPort<TransformSample>* tf_port_ = nullptr;  // null unless enable_odom_tf
   SpeedLimiter limiter_linear_, limiter_angular_;
   double separation_ = 0, wheel_radius_ = 0, odometry_separation_ = 0, odometry_radius_ = 0;
   double steer_pos_multiplier_ = 1, cmd_vel_timeout_ = 0.5;

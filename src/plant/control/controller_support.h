@@ -38,17 +38,18 @@ inline JointHandle* claimJoint(ControllerContext& c, JointInterface iface, std::
   return h;
 }
 
-// A controller with a <controller>/command topic (std_msgs/Float64).
+// A controller with a <controller>/command topic (std_msgs/Float64); a non-finite value is rejected.
 class CommandedController : public Controller
 {
 public:
-  CommandTopic commandTopic() const override { return CommandTopic::Float64; }
-  bool setCommand(double value) override
+  CommandedController()
   {
-    if (!std::isfinite(value))
-      return false;
-    command_ = value;
-    return true;
+    subscribe<double>("command", [this](const double& value) {
+      if (!std::isfinite(value))
+        return false;
+      command_ = value;
+      return true;
+    });
   }
 
 protected:
@@ -61,9 +62,13 @@ protected:
 class JointGroupController : public Controller
 {
 public:
-  CommandTopic commandTopic() const override { return CommandTopic::Float64MultiArray; }
+  JointGroupController()
+  {
+    subscribe<std::vector<double>>("command", [this](const std::vector<double>& values) { return setCommands(values); });
+  }
 
-  bool setCommands(const std::vector<double>& values) override
+protected:
+  bool setCommands(const std::vector<double>& values)
   {
     if (values.size() != commands_.size())
     {
@@ -81,7 +86,6 @@ public:
     return true;
   }
 
-protected:
   // The joints of the `joints` parameter on `iface`; false with upstream's error texts.
   bool claimJoints(ControllerContext& c, JointInterface iface)
   {

@@ -3,10 +3,6 @@
 #include "control/controller_support.h"
 
 #include <algorithm>
-#include <cmath>
-#include <functional>
-#include <map>
-#include <tuple>
 
 namespace bullet_plant
 {
@@ -66,10 +62,9 @@ class EffortPidController : public CommandedController
 public:
   explicit EffortPidController(bool position) : position_(position) {}
 
-  bool hasState() const override { return true; }
-
   bool init(ControllerContext& c) override
   {
+    state_ = &advertise<ControllerStateSample>("state");
     std::string joint;
     JointHandle* handle = claimJoint(c, JointInterface::Effort, joint, claimed_);
     if (!handle)
@@ -123,13 +118,14 @@ public:
       s.d = g.d;
       s.i_clamp = g.i_max;
       s.antiwindup = g.antiwindup;
-      emit(s);
+      state_->publish(s);
     }
     ++loop_count_;
   }
 
 private:
   bool position_;
+  OutputPort<ControllerStateSample>* state_ = nullptr;
   std::unique_ptr<EffortLoop> loop_;
   uint64_t loop_count_ = 0;
 };

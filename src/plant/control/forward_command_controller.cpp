@@ -2,12 +2,6 @@
 // a std_msgs/Float64 to one joint, and JointGroup*Controller a Float64MultiArray to several.
 #include "control/controller_support.h"
 
-#include <algorithm>
-#include <cmath>
-#include <functional>
-#include <map>
-#include <tuple>
-
 namespace bullet_plant
 {
 namespace
@@ -31,7 +25,6 @@ public:
   }
 
   void update(int64_t, double) override { handle_->setCommand(command_); }
-
 
 private:
   JointInterface interface_;

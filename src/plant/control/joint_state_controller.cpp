@@ -2,11 +2,7 @@
 // on joint_states at publish_rate, plus extra_joints (docs/interfaces.md section 4).
 #include "control/controller_support.h"
 
-#include <algorithm>
-#include <cmath>
-#include <functional>
 #include <map>
-#include <tuple>
 
 namespace bullet_plant
 {
@@ -61,6 +57,7 @@ public:
         extra_.push_back({name->asString(), number("position"), number("velocity"), number("effort")});
       }
     claimed_.assign(1, ClaimedResources{kJointStateInterface, {}});
+    joint_states_ = &advertise<JointStateSample>("joint_states", TopicScope::Robot);
     return true;
   }
 
@@ -87,13 +84,14 @@ public:
       s.velocity.push_back(e.velocity);
       s.effort.push_back(e.effort);
     }
-    emit(s);
+    joint_states_->publish(s);
   }
 
 private:
   struct Extra { std::string name; double position, velocity, effort; };
   std::vector<JointHandle*> joints_;
   std::vector<Extra> extra_;
+  OutputPort<JointStateSample>* joint_states_ = nullptr;
   int64_t publish_period_ns_ = 0, last_publish_ns_ = 0;
 };
 }  // namespace

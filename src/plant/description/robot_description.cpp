@@ -30,20 +30,64 @@ double SensorDescription::pluginNumber(const std::string& key, double fallback) 
   return xml::numbers(it->second, 1, "<" + key + "> of plugin '" + plugin_name + "' of sensor '" + name + "'")[0];
 }
 
-PluginKind pluginKind(const std::string& filename)
+namespace
+{
+// The gazebo_ros plugin files the plant simulates (docs/interfaces.md section 11, docs/gazebo_plugins.md).
+const std::map<std::string, PluginKind>& pluginKinds()
 {
   static const std::map<std::string, PluginKind> kinds = {
       {"libgazebo_ros_laser.so", PluginKind::Laser},          {"libgazebo_ros_gpu_laser.so", PluginKind::Laser},
       {"libgazebo_ros_camera.so", PluginKind::Camera},        {"libgazebo_ros_openni_kinect.so", PluginKind::OpenniKinect},
       {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
-      {"libgazebo_ros_p3d.so", PluginKind::P3d}};
-  auto it = kinds.find(filename);
-  return it == kinds.end() ? PluginKind::Unknown : it->second;
+      {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive}};
+  return kinds;
+}
+}  // namespace
+
+PluginKind pluginKind(const std::string& filename)
+{
+  auto it = pluginKinds().find(filename);
+  return it == pluginKinds().end() ? PluginKind::Unknown : it->second;
+}
+
+std::string simulatedPluginNames()
+{
+  std::string names = "gazebo_ros_control";
+  for (const auto& kind : pluginKinds())  // "libgazebo_ros_x.so" -> "gazebo_ros_x"
+    names += ", " + kind.first.substr(3, kind.first.size() - 6);
+  return names;
+}
+
+std::string ModelPluginDescription::text(const std::string& key, const std::string& fallback) const
+{
+  auto it = params.find(key);
+  return it == params.end() ? fallback : it->second;
+}
+
+double ModelPluginDescription::number(const std::string& key, double fallback) const
+{
+  auto it = params.find(key);
+  if (it == params.end())
+    return fallback;
+  return xml::numbers(it->second, 1, "<" + key + "> of plugin '" + name + "' (" + filename + ")")[0];
+}
+
+bool ModelPluginDescription::flag(const std::string& key, bool fallback) const
+{
+  auto it = params.find(key);
+  if (it == params.end())
+    return fallback;
+  if (it->second == "true" || it->second == "1")
+    return true;
+  if (it->second == "false" || it->second == "0")
+    return false;
+  throw DescriptionError("<" + key + "> of plugin '" + name + "' (" + filename + ") is '" + it->second +
+                         "': give true or false");
 }
 
 std::string ControlPluginDescription::controlNamespace(const std::string& spawn_namespace) const
 {
-  return normaliseNamespace(robot_namespace.empty() ? spawn_namespace : robot_namespace);
+  return normaliseNamespace(givenControlNamespace(spawn_namespace));
 }
 
 namespace
@@ -239,10 +283,8 @@ void readPluginBlock(const tinyxml2::XMLElement* plugin, SensorDescription& d)
 
 std::string unknownPluginWarning(const std::string& name, const std::string& filename, const std::string& where)
 {
-  return "plugin '" + name + "' (" + filename + ")" + where +
-         " is not simulated by the plant and is ignored (simulated: gazebo_ros_control, gazebo_ros_laser, "
-         "gazebo_ros_gpu_laser, gazebo_ros_camera, gazebo_ros_openni_kinect, gazebo_ros_imu_sensor, gazebo_ros_imu, "
-         "gazebo_ros_p3d)";
+  return "plugin '" + name + "' (" + filename + ")" + where + " is not simulated by the plant and is ignored (simulated: " +
+         simulatedPluginNames() + ")";
 }
 
 // gazebo_ros_imu and gazebo_ros_p3d: model plugins that follow one link (bodyName).
@@ -365,6 +407,16 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
           readControlPlugin(p, out);
         else if (kind == PluginKind::ImuModel || kind == PluginKind::P3d)
           readModelPlugin(p, out);
+        else if (kind == PluginKind::DiffDrive)
+        {
+          ModelPluginDescription d;
+          d.name = p->Attribute("name") ? p->Attribute("name") : "";
+          d.filename = filename;
+          d.kind = kind;
+          for (auto* e = p->FirstChildElement(); e; e = e->NextSiblingElement())
+            d.params[e->Name()] = e->GetText() ? xml::trimmed(e->GetText()) : "";
+          out.model_plugins.push_back(std::move(d));
+        }
         else
           out.warnings.push_back(unknownPluginWarning(p->Attribute("name") ? p->Attribute("name") : "", filename, ""));
       }

@@ -14,10 +14,6 @@ namespace bullet_plant
 namespace
 {
 
-urdf::Vector3 sub(const urdf::Vector3& a, const urdf::Vector3& b) { return urdf::Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
-
-urdf::Vector3 scaled(const urdf::Vector3& a, double s) { return urdf::Vector3(a.x * s, a.y * s, a.z * s); }
-
 // "x y z" of an offset element; zeros when absent.
 urdf::Vector3 vectorParam(const SensorDescription& d, const std::string& key)
 {
@@ -34,17 +30,6 @@ urdf::Rotation rpyParam(const SensorDescription& d, const std::string& key)
   return poseFromXyzRpy(0, 0, 0, rpy.x, rpy.y, rpy.z).rotation;
 }
 
-// Model plugins (and gazebo_ros_imu_sensor) take "<robotNamespace>/" as their namespace, so an
-// empty element means the root, not the model's name as for laser and camera plugins.
-std::string namespaceOfModelPlugin(const SensorDescription& d, const std::string& spawn_namespace,
-                                   const std::string& fallback)
-{
-  if (d.hasPluginParam("robotNamespace"))
-    return d.plugin.at("robotNamespace").empty() ? "/" : d.plugin.at("robotNamespace");
-  return spawn_namespace.empty() ? fallback : spawn_namespace;
-}
-
-std::string withoutLeadingSlash(const std::string& name) { return !name.empty() && name[0] == '/' ? name.substr(1) : name; }
 }  // namespace
 
 // ------------------------------------------------------------------------------------------ Imu
@@ -57,26 +42,6 @@ Imu::Imu(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed
     gate_.setPeriodNs(periodNsOfRate(d.pluginNumber("updateRate", d.pluginNumber("updateRateHZ", 0.0))));
   else  // gazebo_ros_imu_sensor: <updateRateHZ>, default 1 Hz, within the sensor's <update_rate>
     gate_.setPeriodNs(std::max(gate_.periodNs(), periodNsOfRate(d.pluginNumber("updateRateHZ", 1.0))));
-}
-
-std::string Imu::topic() const
-{
-  if (modelPlugin())
-    return description_.pluginParam("topicName", "/default_imu");
-  // gazebo_ros_imu_sensor appends topicName to "<namespace>/": never absolute on its own.
-  return withoutLeadingSlash(description_.pluginParam("topicName", "imu_data"));
-}
-
-std::string Imu::frameId() const
-{
-  return withoutLeadingSlash(description_.pluginParam("frameName", modelPlugin() ? description_.link : ""));
-}
-
-void Imu::setNamespace(const std::string& spawn_namespace, const std::string& model_name)
-{
-  // gazebo_ros_imu_sensor without any namespace: "/<model name>/"; gazebo_ros_imu: the root.
-  namespace_ = namespaceOfModelPlugin(description_, spawn_namespace, modelPlugin() ? "" : "/" + model_name);
-  tf_prefix_.clear();  // neither plugin resolves its frame against a tf_prefix
 }
 
 double Imu::noise()
@@ -105,7 +70,6 @@ void Imu::sample(const LinkMotion& motion, const urdf::Vector3& gravity, int64_t
 
   ImuReading& r = reading_;
   r.stamp_ns = time_ns;
-  r.frame_id = frameId();
   r.orientation = modelPlugin() ? offset_ * motion.pose.rotation : offset_ * (reference_ * motion.pose.rotation);
   r.orientation.normalize();
   if (!modelPlugin())  // gazebo_ros_imu_sensor adds its noise to the quaternion's components too
@@ -129,18 +93,6 @@ GroundTruthOdometry::GroundTruthOdometry(const SensorDescription& d, uint32_t no
   offset_.position = vectorParam(d, "xyzOffset");
   offset_.rotation = rpyParam(d, "rpyOffset");
   gate_.setPeriodNs(periodNsOfRate(d.pluginNumber("updateRate", 0.0)));
-}
-
-std::string GroundTruthOdometry::frameId() const
-{
-  return resolveTfFrame(tf_prefix_, description_.pluginParam("frameName", "world"));
-}
-
-void GroundTruthOdometry::setNamespace(const std::string& spawn_namespace, const std::string& model_name)
-{
-  (void)model_name;
-  namespace_ = namespaceOfModelPlugin(description_, spawn_namespace, "");
-  tf_prefix_.clear();  // only a tf_prefix parameter (read by the node) prefixes the frame
 }
 
 std::string GroundTruthOdometry::referenceLink() const
@@ -177,8 +129,6 @@ void GroundTruthOdometry::sample(const LinkMotion& body, const LinkMotion* refer
   pose.rotation.normalize();
   auto noisy = [this](double x) { return stddev_ > 0 ? x + std::normal_distribution<double>(0.0, stddev_)(noise_) : x; };
   r.stamp_ns = time_ns;
-  r.frame_id = frameId();
-  r.child_frame_id = description_.link;  // bodyName, as given
   r.pose = pose;
   r.linear = urdf::Vector3(noisy(v.x), noisy(v.y), noisy(v.z));
   r.angular = urdf::Vector3(noisy(w.x), noisy(w.y), noisy(w.z));

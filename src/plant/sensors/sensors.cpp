@@ -15,39 +15,6 @@ Sensor::Sensor(const SensorDescription& d, uint32_t noise_seed)
 {
 }
 
-std::string resolveTfFrame(const std::string& prefix, const std::string& frame)
-{
-  if (!frame.empty() && frame[0] == '/')
-    return frame.substr(1);
-  if (prefix.empty())
-    return frame;
-  return (prefix[0] == '/' ? prefix.substr(1) : prefix) + "/" + frame;
-}
-
-// Laser and camera plugins: tf::resolve(tf_prefix, frameName). A camera without <frameName> would
-// get "tf_prefix/" from gazebo_ros_camera, which no tf consumer accepts: the plant uses its link.
-std::string Sensor::frameId() const
-{
-  return resolveTfFrame(tf_prefix_, description_.pluginParam("frameName", description_.link));
-}
-
-void Sensor::setNamespace(const std::string& spawn_namespace, const std::string& model_name)
-{
-  if (description_.hasPluginParam("robotNamespace"))
-  {
-    namespace_ = description_.plugin.at("robotNamespace");
-    if (namespace_.empty())  // GetRobotNamespace: an empty element means the model's name
-      namespace_ = model_name;
-  }
-  else
-    namespace_ = spawn_namespace.empty() ? defaultNamespace(model_name) : spawn_namespace;
-  tf_prefix_ = namespace_;
-  while (!tf_prefix_.empty() && tf_prefix_.back() == '/')
-    tf_prefix_.pop_back();
-}
-
-std::string Sensor::defaultNamespace(const std::string&) const { return ""; }
-
 bool Sensor::publishesOnRos() const
 {
   const PluginKind kind = description_.plugin_kind;
@@ -84,52 +51,10 @@ void Camera::update(SensorContext& context, int64_t time_ns)
                                   context.lighting(), time_ns);
 }
 
-// gazebo_ros_laser: no <frameName> means "/world".
-std::string Lidar::frameId() const { return resolveTfFrame(tf_prefix_, description_.pluginParam("frameName", "/world")); }
-
 Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
 {
   // The plugin's <updateRate> throttles what the sensor renders (0: the sensor's rate).
   gate_.setPeriodNs(std::max(gate_.periodNs(), periodNsOfRate(d.pluginNumber("updateRate", 0.0))));
-}
-
-namespace
-{
-std::string joinTopic(const std::string& camera, const std::string& topic)
-{
-  if (!topic.empty() && topic[0] == '/')
-    return topic;
-  return camera.empty() ? topic : camera + "/" + topic;
-}
-}  // namespace
-
-// Topics of gazebo_ros_camera and gazebo_ros_openni_kinect: under <cameraName> (default empty),
-// with the defaults of their sources.
-std::string Camera::topic() const
-{
-  return joinTopic(description_.pluginParam("cameraName"), description_.pluginParam("imageTopicName", "image_raw"));
-}
-
-std::string Camera::cameraInfoTopic() const
-{
-  return joinTopic(description_.pluginParam("cameraName"), description_.pluginParam("cameraInfoTopicName", "camera_info"));
-}
-
-std::string Camera::depthTopic() const
-{
-  return joinTopic(description_.pluginParam("cameraName"),
-                   description_.pluginParam("depthImageTopicName", "depth/image_raw"));
-}
-
-std::string Camera::depthCameraInfoTopic() const
-{
-  return joinTopic(description_.pluginParam("cameraName"),
-                   description_.pluginParam("depthImageCameraInfoTopicName", "depth/camera_info"));
-}
-
-std::string Camera::pointsTopic() const
-{
-  return joinTopic(description_.pluginParam("cameraName"), description_.pluginParam("pointCloudTopicName", "points"));
 }
 
 double Camera::pointCloudCutoff() const { return description_.pluginNumber("pointCloudCutoff", 0.4); }
@@ -166,7 +91,6 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
 
   LaserScan& scan = lidar.scan_;
   scan.stamp_ns = time_ns;
-  scan.frame_id = lidar.frameId();
   scan.angle_min = float(d.horizontal_min_angle);
   scan.angle_max = float(d.horizontal_max_angle);
   scan.angle_increment = float(da);
@@ -205,7 +129,6 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
   const bool depth = camera.depthSensor();
   camera.intrinsics(out.fx, out.fy, out.cx, out.cy);
   out.stamp_ns = time_ns;
-  out.frame_id = camera.frameId();
   out.width = w;
   out.height = h;
   PinholeRays rays;

@@ -14,7 +14,9 @@
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/world.h"
+#include "bullet_plant/model_plugin.h"
 #include "hardware/joint_layer_sim.h"
+#include "hardware/joint_motor_sim.h"
 #include "rendering/ray_caster.h"
 #include "sensors/sensor_context.h"
 #include "simulation/robot_multibody.h"
@@ -34,7 +36,7 @@ struct LastGoodState
   void restore(RobotMultibody& robot) const;
 };
 
-struct Robot::Internals : SensorContext
+struct Robot::Internals : SensorContext, ModelPluginContext
 {
   World::Internals* world = nullptr;
   Robot* self = nullptr;
@@ -48,6 +50,8 @@ struct Robot::Internals : SensorContext
   int64_t control_period_ns = 0;
   int64_t last_control_ns = 0;
   std::vector<std::unique_ptr<Sensor>> sensors;
+  std::vector<std::unique_ptr<ModelPlugin>> model_plugins;  // gazebo_plugins' drives (model_plugin.h)
+  std::map<size_t, std::unique_ptr<JointMotorSim>> motors;  // by joint index: the ones plugins drive
   btTransform spawn_pose;                                  // of the URDF root link
   LastGoodState last_good;
   long recoveries = 0;
@@ -76,6 +80,8 @@ struct Robot::Internals : SensorContext
   // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
   // then recovery, readSim, sensors.
   void updateControllers(int64_t time_ns);
+  // Model plugins' OnUpdate, then their motors' rows for the coming step.
+  void updateModelPlugins(int64_t time_ns);
   void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
   // What its sensors read (SensorContext). linkMotion: a link frame's (or a point's of it, frame
@@ -86,6 +92,14 @@ struct Robot::Internals : SensorContext
   urdf::Vector3 gravity() const override;
   const RayScene& rayScene(bool with_own_robot) override;
   Lighting lighting() const override;
+  // What its model plugins reach (ModelPluginContext).
+  const std::string& modelName() const override { return name; }
+  const RobotDescription& robotDescription() const override { return description; }
+  const std::string& rootLink() const override;
+  JointMotor* jointMotor(const std::string& joint, const std::string& plugin) override;
+  LinkMotion linkMotion(const std::string& link) const override { return linkMotion(link, urdf::Pose()); }
+  std::string tfPrefix(const ModelPluginDescription& plugin) const override;
+  Log& log() override;
   void resetToSpawn();
   // The wrench and effort jobs due at time_ns, as forces and torques of the coming step; expired
   // jobs are dropped.

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bullet_plant/plugin_names.h"
 #include "physics/bullet_conversions.h"
-#include "physics/multibody_dynamics.h"
 #include "simulation/internals.h"
 #include "simulation/robot_builder.h"
 
@@ -97,6 +97,14 @@ bool stateFinite(const RobotMultibody& robot)
 }  // namespace
 
 // ------------------------------------------------------------------------------- per-step work
+
+void Robot::Internals::updateModelPlugins(int64_t time_ns)
+{
+  for (std::unique_ptr<ModelPlugin>& plugin : model_plugins)
+    plugin->OnUpdate(time_ns);
+  for (auto& motor : motors)
+    motor.second->apply(world->step_s);
+}
 
 void Robot::Internals::updateControllers(int64_t time_ns)
 {
@@ -245,11 +253,44 @@ void Robot::Internals::resetToSpawn()
   last_control_ns = world->time_ns;
   if (controller_manager)
     controller_manager->reset(world->time_ns);
+  for (std::unique_ptr<ModelPlugin>& plugin : model_plugins)
+    plugin->Reset(world->time_ns);
   last_good.base = spawn_pose * multibody.bodies[0].urdf_from_com;
   for (size_t i = 0; i < multibody.joints.size(); ++i)
     last_good.q[i] = btScalar(multibody.joints[i].initial_position);
   last_good.restore(multibody);
   settleAfterTeleport();
+}
+
+// ------------------------------------------------------------------------ ModelPluginContext
+
+Log& Robot::Internals::log() { return world->log; }
+
+const std::string& Robot::Internals::rootLink() const { return description.model->getRoot()->name; }
+
+JointMotor* Robot::Internals::jointMotor(const std::string& joint, const std::string& plugin)
+{
+  auto index = multibody.joint_index.find(joint);
+  std::string problem;
+  if (index == multibody.joint_index.end())
+    problem = description.model->getJoint(joint) ? "which is fixed; a motor needs a revolute, continuous or prismatic joint"
+                                                 : "which robot '" + name + "' does not have";
+  else if (joint_layer.drives(index->second))
+    problem = "which a gazebo_ros_control transmission drives already; give the joint to one of them";
+  if (!problem.empty())
+  {
+    world->log.error(plugin + " names joint '" + joint + "', " + problem + "; the plugin is not loaded");
+    return nullptr;
+  }
+  std::unique_ptr<JointMotorSim>& motor = motors[index->second];
+  if (!motor)
+    motor.reset(new JointMotorSim(multibody.joints[index->second], *multibody.bullet));
+  return motor.get();
+}
+
+std::string Robot::Internals::tfPrefix(const ModelPluginDescription& plugin) const
+{
+  return modelPluginTfPrefix(modelPluginNamespace(plugin, spawn_namespace, name));
 }
 
 // ---------------------------------------------------------------------------------------- Robot
@@ -261,6 +302,14 @@ ControllerManager* Robot::controllerManager() { return in_->controller_manager.g
 double Robot::controlPeriod() const { return in_->control_period_ns * 1e-9; }
 const std::string& Robot::name() const { return in_->name; }
 const std::string& Robot::controlNamespace() const { return in_->control_namespace; }
+const std::string& Robot::spawnNamespace() const { return in_->spawn_namespace; }
+std::vector<ModelPlugin*> Robot::modelPlugins()
+{
+  std::vector<ModelPlugin*> out;
+  for (std::unique_ptr<ModelPlugin>& p : in_->model_plugins)
+    out.push_back(p.get());
+  return out;
+}
 const RobotDescription& Robot::description() const { return in_->description; }
 std::vector<JointHandle>& Robot::handles() { return in_->joint_layer.handles(); }
 JointHandle* Robot::handle(const std::string& joint) { return in_->joint_layer.handle(joint); }

@@ -607,10 +607,29 @@ void createSensors(Robot::Internals& r)
 {
   for (const SensorDescription& s : r.description.sensors)
     if (std::unique_ptr<Sensor> sensor = createSensor(r, s))
-    {
-      sensor->setNamespace(r.spawn_namespace, r.name);
       r.sensors.push_back(std::move(sensor));
+}
+
+// 10. gazebo_plugins' model plugins that drive joints (model_plugin.h), after the handles: a joint
+// a transmission drives is refused to them. One that cannot load is left out, said by its Load.
+void createModelPlugins(Robot::Internals& r)
+{
+  for (const ModelPluginDescription& d : r.description.model_plugins)
+  {
+    std::unique_ptr<ModelPlugin> plugin = createModelPlugin(d.kind);
+    if (!plugin)
+      continue;
+    plugin->setDescription(d);
+    try
+    {
+      if (plugin->Load(d, r, r.world->time_ns))
+        r.model_plugins.push_back(std::move(plugin));
     }
+    catch (const DescriptionError& e)
+    {
+      r.world->log.error(r.name + ": " + e.what() + "; the plugin is not loaded");
+    }
+  }
 }
 }  // namespace
 
@@ -634,6 +653,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   createHandles(r);
   createControllerManager(r);
   createSensors(r);
+  createModelPlugins(r);
   for (const std::string& w : r.description.warnings)
     r.world->log.warn(r.name + ": " + w);
   for (const std::string& e : r.description.errors)

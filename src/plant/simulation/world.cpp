@@ -293,8 +293,8 @@ std::vector<Robot*> World::robots()
   return out;
 }
 
-// gazebo_ros_control's order: the controllers of each robot whose control period has come, every
-// robot's joint layer writes its commands (writeSim), one physics step, then each robot's state is
+// gazebo_ros_control's order: the controllers of each robot whose control period has come and its
+// model plugins (Gazebo's world update begin), every robot's joint layer writes its commands (writeSim), one physics step, then each robot's state is
 // checked and read back into its handles (readSim) and its sensors render what is due.
 void World::step(int n)
 {
@@ -303,7 +303,10 @@ void World::step(int n)
   {
     for (auto& r : w.robots)
       if (!r->in_->disabled)
+      {
         r->in_->updateControllers(w.time_ns);
+        r->in_->updateModelPlugins(w.time_ns);
+      }
     for (auto& r : w.robots)
       if (!r->in_->disabled)
       {

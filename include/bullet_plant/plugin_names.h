@@ -1,0 +1,44 @@
+// How the gazebo_ros plugins name their ROS side, from their <plugin> block alone: the namespace of
+// the plugin's node handle, its topics and the frame ids it stamps (docs/interfaces.md section 11).
+// The plant's sensors know none of it. ROS-free, so the node's plugins and the Python module share
+// one copy of these rules.
+#pragma once
+
+#include <string>
+
+#include "bullet_plant/robot_description.h"
+
+namespace bullet_plant
+{
+// tf::resolve(prefix, frame) of tf 1.13, as gazebo_ros's plugins use it for their frame ids: a
+// frame starting with '/' loses the '/', otherwise "prefix/frame" (the prefix without its leading
+// '/'), or the frame alone for an empty prefix.
+std::string resolveTfFrame(const std::string& prefix, const std::string& frame);
+
+// The namespace of the plugin's node handle: its <robotNamespace>, else the spawn namespace
+// (gazebo_ros writes it into every plugin), else the plugin's own default.
+std::string pluginNamespace(const SensorDescription& d, const std::string& spawn_namespace, const std::string& model_name);
+
+// The prefix its frame ids resolve against before a tf_prefix parameter replaces it (the node reads
+// that): the namespace without trailing '/' for the laser and camera plugins, none for the others.
+std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugin_namespace);
+
+// The frame id of what it publishes, each plugin with its own rule.
+std::string pluginFrameId(const SensorDescription& d, const std::string& tf_prefix);
+
+// p3d's child frame: <bodyName> as given.
+inline std::string pluginChildFrameId(const SensorDescription& d) { return d.link; }
+
+// Its topics, relative to its namespace. Camera plugins have five, under <cameraName>.
+enum class PluginTopic { Main, CameraInfo, DepthImage, DepthCameraInfo, Points };
+std::string pluginTopic(const SensorDescription& d, PluginTopic which = PluginTopic::Main);
+
+// The model plugins built on gazebo_ros's GazeboRos helper (diff_drive): <robotNamespace>, where
+// absent or empty the model's name; spawn_model writes the spawner's namespace into every plugin
+// without one, so a spawned model's plugins sit in that namespace.
+std::string modelPluginNamespace(const ModelPluginDescription& d, const std::string& spawn_namespace,
+                                 const std::string& model_name);
+// Their tf prefix: the namespace without trailing '/' (a tf_prefix parameter is not read).
+std::string modelPluginTfPrefix(const std::string& plugin_namespace);
+
+}  // namespace bullet_plant

@@ -1,0 +1,152 @@
+#include "port_topics.h"
+
+#include <typeindex>
+
+#include <std_msgs/Float64.h>
+#include <std_msgs/Float64MultiArray.h>
+
+#include "msg_conversions.h"
+#include "ros_plant.h"
+
+namespace bullet_plant
+{
+// How one message type travels over ROS: an input is subscribed, an output advertised and drained.
+struct PortTransport
+{
+  using Delivery = std::function<bool(Port&)>;  // hands one message to the port it runs on
+  using Post = std::function<void(Delivery, std::string rejected)>;
+  std::function<ros::Subscriber(ros::NodeHandle&, const std::string& topic, Post)> subscribe;
+  std::function<ros::Publisher(ros::NodeHandle&, const std::string& topic)> advertise;
+  std::function<void(Port&, const ros::Publisher&)> drain;
+};
+
+namespace
+{
+// `rejected` says what the warning calls a message the port's owner refused.
+template <class Msg, class RosMsg>
+PortTransport input(std::function<Msg(const RosMsg&)> fromMsg, std::function<std::string(const Msg&)> rejected)
+{
+  PortTransport t;
+  t.subscribe = [fromMsg, rejected](ros::NodeHandle& nh, const std::string& topic, PortTransport::Post post) {
+    return nh.subscribe<RosMsg>(topic, 1, [fromMsg, rejected, post](const boost::shared_ptr<const RosMsg>& m) {
+      Msg value = fromMsg(*m);
+      post([value](Port& p) {  // a reloaded controller may have changed the port's type
+        auto* in = dynamic_cast<InputPort<Msg>*>(&p);
+        return in && in->deliver(value);
+      }, rejected(value));
+    });
+  };
+  return t;
+}
+
+template <class Msg, class RosMsg>
+PortTransport output(uint32_t queue_size)
+{
+  PortTransport t;
+  t.advertise = [queue_size](ros::NodeHandle& nh, const std::string& topic) { return nh.advertise<RosMsg>(topic, queue_size); };
+  t.drain = [](Port& p, const ros::Publisher& pub) {
+    for (const Msg& m : static_cast<OutputPort<Msg>&>(p).take())
+      pub.publish(toMsg(m));
+  };
+  return t;
+}
+
+// The one table of message types the node carries: a port of another type is refused, named.
+const PortTransport* transportOf(const Port& port)
+{
+  static const std::map<std::type_index, PortTransport> inputs = {
+      {typeid(double), input<double, std_msgs::Float64>(
+                           [](const std_msgs::Float64& m) { return m.data; },
+                           [](const double& v) { return "a non-finite command (" + std::to_string(v) + ")"; })},
+      {typeid(std::vector<double>), input<std::vector<double>, std_msgs::Float64MultiArray>(
+                                        [](const std_msgs::Float64MultiArray& m) { return m.data; },
+                                        [](const std::vector<double>&) { return "a command (the controller logs why)"; })},
+      {typeid(TwistCommand), input<TwistCommand, geometry_msgs::Twist>(
+                                 [](const geometry_msgs::Twist& m) { return TwistCommand{m.linear.x, m.angular.z}; },
+                                 [](const TwistCommand&) { return "a velocity command (the controller logs why)"; })},
+  };
+  static const std::map<std::type_index, PortTransport> outputs = {
+      {typeid(JointStateSample), output<JointStateSample, sensor_msgs::JointState>(10)},
+      {typeid(ControllerStateSample), output<ControllerStateSample, control_msgs::JointControllerState>(1)},
+      {typeid(OdometrySample), output<OdometrySample, nav_msgs::Odometry>(100)},
+      {typeid(TransformSample), output<TransformSample, tf2_msgs::TFMessage>(100)},
+  };
+  const auto& table = port.direction() == Port::Direction::In ? inputs : outputs;
+  auto it = table.find(port.messageType());
+  return it == table.end() ? nullptr : &it->second;
+}
+}  // namespace
+
+PortTopics::PortTopics(RosPlant& plant, const ros::NodeHandle& nh, FindOwner find_owner)
+  : plant_(plant), nh_(nh), find_owner_(std::move(find_owner)), alive_(std::make_shared<bool>(true))
+{
+}
+
+PortTopics::~PortTopics() { *alive_ = false; }
+
+std::string PortTopics::topicOf(const std::string& owner, const Port& port) const
+{
+  if (owner.empty() || port.topic().empty() || port.topic()[0] == '/' || port.scope() == TopicScope::Robot)
+    return port.topic();
+  return owner + "/" + port.topic();
+}
+
+void PortTopics::refresh(const std::vector<std::pair<std::string, const MessagePorts*>>& owners)
+{
+  std::map<std::string, ros::Subscriber> subscribers;
+  std::map<std::string, ros::Publisher> publishers;
+  outputs_.clear();
+  for (const auto& owner : owners)
+    for (const std::unique_ptr<Port>& port : owner.second->ports())
+    {
+      const PortTransport* transport = transportOf(*port);
+      if (!transport)
+      {
+        ROS_ERROR("'%s' in %s has a port '%s' whose message type the node cannot carry; add the type to "
+                  "port_topics.cpp", owner.first.c_str(), nh_.getNamespace().c_str(), port->topic().c_str());
+        continue;
+      }
+      const std::string topic = topicOf(owner.first, *port);
+      if (port->direction() == Port::Direction::In)
+      {
+        const std::string key = owner.first + " " + topic;
+        auto kept = subscribers_.find(key);
+        subscribers[key] = kept != subscribers_.end() ? kept->second : subscribe(owner.first, *port, *transport);
+        continue;
+      }
+      if (!publishers.count(topic))
+      {
+        auto kept = publishers_.find(topic);
+        publishers[topic] = kept != publishers_.end() ? kept->second : transport->advertise(nh_, topic);
+      }
+      outputs_.push_back(Output{port.get(), transport, publishers[topic]});
+    }
+  subscribers_.swap(subscribers);
+  publishers_.swap(publishers);
+}
+
+ros::Subscriber PortTopics::subscribe(const std::string& owner, const Port& port, const PortTransport& transport)
+{
+  const std::string topic = port.topic(), resolved = nh_.resolveName(topicOf(owner, port));
+  std::weak_ptr<bool> alive = alive_;
+  auto post = [this, alive, owner, topic, resolved](PortTransport::Delivery deliver, std::string rejected) {
+    plant_.post([this, alive, owner, topic, resolved, deliver, rejected] {
+      std::shared_ptr<bool> still = alive.lock();
+      if (!still || !*still)
+        return;  // the robot (and these topics) went before the message was handed over
+      const MessagePorts* ports = find_owner_(owner);
+      Port* p = ports ? ports->port(topic, Port::Direction::In) : nullptr;
+      if (p && !deliver(*p))
+        ROS_WARN_THROTTLE(1.0, "Rejected %s on %s", rejected.c_str(), resolved.c_str());
+    });
+  };
+  return transport.subscribe(nh_, topicOf(owner, port), post);
+}
+
+void PortTopics::publish()
+{
+  for (Output& out : outputs_)
+    out.transport->drain(*out.port, out.publisher);
+}
+
+}  // namespace bullet_plant

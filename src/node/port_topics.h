@@ -1,0 +1,57 @@
+// The ROS side of ports (bullet_plant/message_ports.h): for a set of port owners (a robot's
+// controllers, a model plugin), a subscriber per input and a publisher per output topic, each
+// port's message type mapped to its ROS message once (port_topics.cpp). Messages that arrive are
+// posted to the simulation thread and handed to the port found again there (its owner may be gone
+// by then); outputs are drained after each step.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ros/ros.h>
+
+#include "bullet_plant/message_ports.h"
+
+namespace bullet_plant
+{
+class RosPlant;
+struct PortTransport;
+
+class PortTopics
+{
+public:
+  // The ports' owners by name, on the simulation thread: null when one is gone.
+  using FindOwner = std::function<const MessagePorts*(const std::string& name)>;
+
+  PortTopics(RosPlant& plant, const ros::NodeHandle& nh, FindOwner find_owner);
+  ~PortTopics();
+  // Subscribers and publishers for exactly these owners (name -> ports; a Controller-scoped topic
+  // resolves to "<name>/<topic>" under the node handle, "" for none), kept where unchanged.
+  void refresh(const std::vector<std::pair<std::string, const MessagePorts*>>& owners);
+  // After a step: what the outputs hold.
+  void publish();
+
+private:
+  struct Output
+  {
+    Port* port;
+    const PortTransport* transport;
+    ros::Publisher publisher;
+  };
+  std::string topicOf(const std::string& owner, const Port& port) const;
+  ros::Subscriber subscribe(const std::string& owner, const Port& port, const PortTransport& transport);
+
+  RosPlant& plant_;
+  ros::NodeHandle nh_;
+  FindOwner find_owner_;
+  std::shared_ptr<bool> alive_;  // posted work finds it false once this is gone
+  std::map<std::string, ros::Subscriber> subscribers_;  // by owner and topic
+  std::map<std::string, ros::Publisher> publishers_;    // by topic, shared by the owners on it
+  std::vector<Output> outputs_;                         // owners' order, ports' order
+};
+
+}  // namespace bullet_plant

@@ -1,0 +1,150 @@
+// The gazebo_ros plugins' naming rules, by plugin (docs/interfaces.md section 11).
+#include "bullet_plant/plugin_names.h"
+
+namespace bullet_plant
+{
+namespace
+{
+std::string withoutLeadingSlash(const std::string& name) { return !name.empty() && name[0] == '/' ? name.substr(1) : name; }
+
+std::string withoutTrailingSlashes(std::string name)
+{
+  while (!name.empty() && name.back() == '/')
+    name.pop_back();
+  return name;
+}
+
+// gazebo_ros_camera and gazebo_ros_openni_kinect put relative topics under <cameraName>.
+std::string underCameraName(const SensorDescription& d, const std::string& topic)
+{
+  const std::string camera = d.pluginParam("cameraName");
+  if (!topic.empty() && topic[0] == '/')
+    return topic;
+  return camera.empty() ? topic : camera + "/" + topic;
+}
+
+// Whose rules name a sensor: its type's plugin family, as the plant builds its sensor class from
+// the type (a <plugin> of another family is refused at load by the node).
+enum class Family { Laser, Camera, ImuSensor, ImuModel, P3d, Other };
+
+Family familyOf(const SensorDescription& d)
+{
+  if (d.type == "ray" || d.type == "gpu_ray")
+    return Family::Laser;
+  if (d.type == "camera" || d.type == "depth")
+    return Family::Camera;
+  if (d.type == "imu")
+    return d.model_plugin ? Family::ImuModel : Family::ImuSensor;
+  if (d.type == "p3d")
+    return Family::P3d;
+  return Family::Other;
+}
+
+// Model plugins (and gazebo_ros_imu_sensor) take "<robotNamespace>/" as their namespace, so an
+// empty element means the root, not the model's name as for the laser and camera plugins.
+std::string namespaceOfModelPlugin(const SensorDescription& d, const std::string& spawn_namespace,
+                                   const std::string& fallback)
+{
+  if (d.hasPluginParam("robotNamespace"))
+    return d.plugin.at("robotNamespace").empty() ? "/" : d.plugin.at("robotNamespace");
+  return spawn_namespace.empty() ? fallback : spawn_namespace;
+}
+}  // namespace
+
+std::string resolveTfFrame(const std::string& prefix, const std::string& frame)
+{
+  if (!frame.empty() && frame[0] == '/')
+    return frame.substr(1);
+  if (prefix.empty())
+    return frame;
+  return (prefix[0] == '/' ? prefix.substr(1) : prefix) + "/" + frame;
+}
+
+std::string pluginNamespace(const SensorDescription& d, const std::string& spawn_namespace, const std::string& model_name)
+{
+  switch (familyOf(d))
+  {
+    case Family::ImuSensor:  // without any namespace: "/<model name>/"
+      return namespaceOfModelPlugin(d, spawn_namespace, "/" + model_name);
+    case Family::ImuModel:
+    case Family::P3d:
+      return namespaceOfModelPlugin(d, spawn_namespace, "");
+    default:
+      if (d.hasPluginParam("robotNamespace"))  // GetRobotNamespace: an empty element means the model's name
+        return d.plugin.at("robotNamespace").empty() ? model_name : d.plugin.at("robotNamespace");
+      return spawn_namespace;
+  }
+}
+
+std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugin_namespace)
+{
+  switch (familyOf(d))
+  {
+    case Family::ImuSensor:
+    case Family::ImuModel:  // neither IMU plugin resolves its frame against a tf_prefix
+    case Family::P3d:       // only a tf_prefix parameter prefixes its frame
+      return "";
+    default:
+      return withoutTrailingSlashes(plugin_namespace);
+  }
+}
+
+std::string pluginFrameId(const SensorDescription& d, const std::string& tf_prefix)
+{
+  switch (familyOf(d))
+  {
+    case Family::Laser:  // no <frameName> means "/world"
+      return resolveTfFrame(tf_prefix, d.pluginParam("frameName", "/world"));
+    case Family::ImuSensor:  // frameName as given, without a leading '/' (tf2 refuses it)
+      return withoutLeadingSlash(d.pluginParam("frameName", ""));
+    case Family::ImuModel:  // default bodyName
+      return withoutLeadingSlash(d.pluginParam("frameName", d.link));
+    case Family::P3d:
+      return resolveTfFrame(tf_prefix, d.pluginParam("frameName", "world"));
+    default:
+      // Cameras: tf::resolve(tf_prefix, frameName). A camera without <frameName> would get
+      // "tf_prefix/" from gazebo_ros_camera, which no tf consumer accepts: its link instead.
+      return resolveTfFrame(tf_prefix, d.pluginParam("frameName", d.link));
+  }
+}
+
+std::string modelPluginNamespace(const ModelPluginDescription& d, const std::string& spawn_namespace,
+                                 const std::string& model_name)
+{
+  std::string ns = d.has("robotNamespace") ? d.text("robotNamespace", "") : spawn_namespace;
+  return ns.empty() ? model_name : ns;
+}
+
+std::string modelPluginTfPrefix(const std::string& plugin_namespace) { return withoutTrailingSlashes(plugin_namespace); }
+
+std::string pluginTopic(const SensorDescription& d, PluginTopic which)
+{
+  switch (familyOf(d))
+  {
+    case Family::Laser:  // no <topicName> means "/world" (sic)
+      return d.pluginParam("topicName", "/world");
+    case Family::ImuModel:
+      return d.pluginParam("topicName", "/default_imu");
+    case Family::ImuSensor:  // appended to "<namespace>/": never absolute on its own
+      return withoutLeadingSlash(d.pluginParam("topicName", "imu_data"));
+    case Family::P3d:
+      return d.pluginParam("topicName");
+    default:
+      break;
+  }
+  switch (which)
+  {
+    case PluginTopic::CameraInfo:
+      return underCameraName(d, d.pluginParam("cameraInfoTopicName", "camera_info"));
+    case PluginTopic::DepthImage:
+      return underCameraName(d, d.pluginParam("depthImageTopicName", "depth/image_raw"));
+    case PluginTopic::DepthCameraInfo:
+      return underCameraName(d, d.pluginParam("depthImageCameraInfoTopicName", "depth/camera_info"));
+    case PluginTopic::Points:
+      return underCameraName(d, d.pluginParam("pointCloudTopicName", "points"));
+    default:
+      return underCameraName(d, d.pluginParam("imageTopicName", "image_raw"));
+  }
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,18 @@
+// The model plugins this plant simulates, by kind (robot_description.cpp's pluginKind names their
+// files). A new one is its own file here and a line in each of the two.
+#include "bullet_plant/model_plugin.h"
+
+namespace bullet_plant
+{
+std::unique_ptr<ModelPlugin> makeGazeboRosDiffDrive();
+
+std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
+{
+  switch (kind)
+  {
+    case PluginKind::DiffDrive: return makeGazeboRosDiffDrive();
+    default: return nullptr;
+  }
+}
+
+}  // namespace bullet_plant

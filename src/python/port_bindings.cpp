@@ -1,0 +1,162 @@
+// Ports from Python (bullet_plant/message_ports.h): what a controller's or a model plugin's topics
+// carry, as Python values. The one place a port's message type meets Python.
+#include "bindings.h"
+
+#include <cmath>
+
+#include "bullet_plant/model_plugin.h"
+
+namespace bullet_plant
+{
+namespace python
+{
+namespace
+{
+py::dict jointStateDict(const JointStateSample& s)
+{
+  py::dict d;
+  d["stamp"] = s.stamp_ns * 1e-9;
+  d["name"] = s.name;
+  d["position"] = s.position;
+  d["velocity"] = s.velocity;
+  d["effort"] = s.effort;
+  return d;
+}
+
+py::dict controllerStateDict(const ControllerStateSample& s)
+{
+  py::dict d;
+  d["stamp"] = s.stamp_ns * 1e-9;
+  d["set_point"] = s.set_point;
+  d["process_value"] = s.process_value;
+  d["process_value_dot"] = s.process_value_dot;
+  d["error"] = s.error;
+  d["time_step"] = s.time_step;
+  d["command"] = s.command;
+  d["p"] = s.p;
+  d["i"] = s.i;
+  d["d"] = s.d;
+  d["i_clamp"] = s.i_clamp;
+  d["antiwindup"] = s.antiwindup;
+  return d;
+}
+
+double yawOf(const urdf::Rotation& q) { return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z)); }
+
+// The planar reading drives are used by (x, y, heading, linear.x, angular.z) and the full pose and twist.
+py::dict odometryDict(const OdometrySample& s)
+{
+  py::dict d;
+  d["stamp"] = double(s.stamp_ns) * 1e-9;
+  d["frame_id"] = s.frame_id;
+  d["child_frame_id"] = s.child_frame_id;
+  d["x"] = s.pose.position.x;
+  d["y"] = s.pose.position.y;
+  d["heading"] = yawOf(s.pose.rotation);
+  d["linear"] = s.linear.x;
+  d["angular"] = s.angular.z;
+  d["pose"] = poseArray(s.pose);
+  d["twist"] = std::vector<double>{s.linear.x, s.linear.y, s.linear.z, s.angular.x, s.angular.y, s.angular.z};
+  return d;
+}
+
+py::dict transformDict(const TransformSample& s)
+{
+  py::dict d;
+  d["stamp"] = double(s.stamp_ns) * 1e-9;
+  d["frame_id"] = s.frame_id;
+  d["child_frame_id"] = s.child_frame_id;
+  d["pose"] = poseArray(s.pose);
+  return d;
+}
+
+template <class Msg, class ToDict>
+bool latestAs(const Port& port, ToDict toDict, py::object& out)
+{
+  auto* typed = dynamic_cast<const OutputPort<Msg>*>(&port);
+  if (!typed)
+    return false;
+  out = typed->latest() ? py::object(toDict(*typed->latest())) : py::none();
+  return true;
+}
+}  // namespace
+
+bool deliverToPort(Port& port, py::object value)
+{
+  if (auto* in = dynamic_cast<InputPort<double>*>(&port))
+    return in->deliver(value.cast<double>());
+  if (auto* in = dynamic_cast<InputPort<std::vector<double>>*>(&port))
+    return in->deliver(value.cast<std::vector<double>>());
+  if (auto* in = dynamic_cast<InputPort<TwistCommand>*>(&port))
+  {
+    auto twist = value.cast<std::pair<double, double>>();
+    return in->deliver(TwistCommand{twist.first, twist.second});
+  }
+  throw py::type_error("port '" + port.topic() + "' carries a message Python cannot send; add it to port_bindings.cpp");
+}
+
+py::object latestOfPort(const Port& port)
+{
+  py::object out;
+  if (latestAs<JointStateSample>(port, jointStateDict, out) ||
+      latestAs<ControllerStateSample>(port, controllerStateDict, out) ||
+      latestAs<OdometrySample>(port, odometryDict, out) || latestAs<TransformSample>(port, transformDict, out))
+    return out;
+  throw py::type_error("port '" + port.topic() + "' carries a message Python cannot read; add it to port_bindings.cpp");
+}
+
+namespace
+{
+ModelPlugin& pluginOf(Robot& r, const std::string& name)
+{
+  for (ModelPlugin* p : r.modelPlugins())
+    if (p->description().name == name)
+      return *p;
+  throw py::key_error("robot '" + r.name() + "' has no loaded model plugin '" + name + "' (Robot.model_plugins)");
+}
+
+Port& portOf(ModelPlugin& plugin, const std::string& topic, Port::Direction direction)
+{
+  if (Port* p = plugin.port(topic, direction))
+    return *p;
+  std::string topics;
+  for (const std::unique_ptr<Port>& p : plugin.ports())
+    if (p->direction() == direction)
+      topics += (topics.empty() ? "" : ", ") + p->topic();
+  throw py::key_error("model plugin '" + plugin.description().name + "' " +
+                      (direction == Port::Direction::In ? "subscribes to" : "publishes") + " no topic '" + topic +
+                      "' (it has: " + topics + ")");
+}
+}  // namespace
+
+void init_model_plugins(py::class_<RobotRef>& robot)
+{
+  robot
+      .def_property_readonly("model_plugins", onRobot([](Robot& r) {
+        std::vector<std::string> names;
+        for (ModelPlugin* p : r.modelPlugins())
+          names.push_back(p->description().name);
+        return names;
+      }), "the gazebo_plugins model plugins that loaded (libgazebo_ros_diff_drive.so, ...), by <plugin name>")
+      .def("plugin_topics", onRobot([](Robot& r, const std::string& name) {
+        py::dict d;
+        std::vector<std::string> in, out;
+        for (const std::unique_ptr<Port>& p : pluginOf(r, name).ports())
+          (p->direction() == Port::Direction::In ? in : out).push_back(p->topic());
+        d["subscribes"] = in;
+        d["publishes"] = out;
+        return d;
+      }), py::arg("name"), "the topics the plugin subscribes to and publishes (relative to its namespace)")
+      .def("plugin_send", onRobot([](Robot& r, const std::string& name, const std::string& topic, py::object value) {
+        return deliverToPort(portOf(pluginOf(r, name), topic, Port::Direction::In), value);
+      }), py::arg("name"), py::arg("topic"), py::arg("value"),
+           "what a message on the plugin's topic does: a Twist as (linear.x, angular.z); False when refused")
+      .def("plugin_latest", onRobot([](Robot& r, const std::string& name, const std::string& topic) {
+        return latestOfPort(portOf(pluginOf(r, name), topic, Port::Direction::Out));
+      }), py::arg("name"), py::arg("topic"),
+           "the latest message the plugin published on the topic as a dict (Odometry: x, y, heading, linear, "
+           "angular, pose, twist, frames), or None before the first");
+}
+
+}  // namespace python
+}  // namespace bullet_plant

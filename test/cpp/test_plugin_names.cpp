@@ -1,0 +1,81 @@
+// plugin_names.cpp: the namespaces, topics and frame ids the gazebo_ros plugins give themselves.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "bullet_plant/plugin_names.h"
+
+using namespace bullet_plant;
+
+namespace
+{
+SensorDescription sensor(const std::string& type, const std::string& link, std::map<std::string, std::string> plugin,
+                         bool model_plugin = false)
+{
+  SensorDescription d;
+  d.name = type;
+  d.type = type;
+  d.link = link;
+  d.model_plugin = model_plugin;
+  d.plugin = std::move(plugin);
+  return d;
+}
+}  // namespace
+
+TEST(ResolveTfFrame, AsTfResolve)
+{
+  EXPECT_EQ(resolveTfFrame("", "camera"), "camera");
+  EXPECT_EQ(resolveTfFrame("tianracer_01", "camera"), "tianracer_01/camera");
+  EXPECT_EQ(resolveTfFrame("/tianracer_01", "camera"), "tianracer_01/camera");
+  EXPECT_EQ(resolveTfFrame("tianracer_01", "/tianracer_01/base_footprint"), "tianracer_01/base_footprint");
+  EXPECT_EQ(resolveTfFrame("", "/world"), "world");
+}
+
+TEST(PluginNames, ImuNamespacesAsTheirPluginsTakeThem)
+{
+  const SensorDescription sensor_plugin = sensor("imu", "imu_link", {{"frameName", "f"}, {"topicName", "/imu"}});
+  EXPECT_EQ(pluginNamespace(sensor_plugin, "", "tianracer"), "/tianracer")
+      << "gazebo_ros_imu_sensor without a namespace: the model's";
+  EXPECT_EQ(pluginTopic(sensor_plugin), "imu") << "appended to the namespace";
+  EXPECT_EQ(pluginNamespace(sensor_plugin, "/car1", "tianracer"), "/car1");
+  const SensorDescription model_plugin = sensor("imu", "imu_link", {{"bodyName", "imu_link"}}, true);
+  EXPECT_EQ(pluginNamespace(model_plugin, "", "tianracer"), "");
+  EXPECT_EQ(pluginTopic(model_plugin), "/default_imu");
+}
+
+TEST(PluginNames, ImuFramesAsGivenButForTheLeadingSlash)
+{
+  const SensorDescription sensor_plugin = sensor("imu", "imu_link", {{"frameName", "/car1/imu_link"}});
+  EXPECT_EQ(pluginFrameId(sensor_plugin, defaultTfPrefix(sensor_plugin, "/car1")), "car1/imu_link")
+      << "frameName verbatim but for the leading '/'";
+  const SensorDescription model_plugin = sensor("imu", "imu_link", {{"bodyName", "imu_link"}}, true);
+  EXPECT_EQ(pluginFrameId(model_plugin, defaultTfPrefix(model_plugin, "/car1")), "imu_link")
+      << "frameName defaults to bodyName";
+}
+
+TEST(PluginNames, P3dFrameResolvesOnlyAgainstATfPrefixParameter)
+{
+  const SensorDescription p3d = sensor("p3d", "base_footprint",
+                                       {{"bodyName", "base_footprint"}, {"topicName", "ground_truth"}}, true);
+  EXPECT_EQ(pluginNamespace(p3d, "/car1", "car1"), "/car1");
+  EXPECT_EQ(pluginTopic(p3d), "ground_truth");
+  EXPECT_EQ(defaultTfPrefix(p3d, "/car1"), "");
+  EXPECT_EQ(pluginFrameId(p3d, ""), "world") << "no tf_prefix parameter: the frame as given";
+  EXPECT_EQ(pluginFrameId(p3d, "car1"), "car1/world");
+  EXPECT_EQ(pluginChildFrameId(p3d), "base_footprint");
+}
+
+TEST(PluginNames, LaserAndCameraResolveAgainstTheirNamespace)
+{
+  const SensorDescription laser = sensor("ray", "laser_link", {});
+  EXPECT_EQ(pluginTopic(laser), "/world") << "gazebo_ros_laser's default, sic";
+  EXPECT_EQ(pluginFrameId(laser, defaultTfPrefix(laser, "/car1/")), "world") << "frameName defaults to /world";
+  const SensorDescription camera =
+      sensor("depth", "camera_link", {{"cameraName", "front"}, {"frameName", "optical"}, {"robotNamespace", ""}});
+  EXPECT_EQ(pluginNamespace(camera, "/car1", "car"), "car") << "an empty robotNamespace: the model's name";
+  EXPECT_EQ(pluginFrameId(camera, defaultTfPrefix(camera, "/car1/")), "car1/optical");
+  EXPECT_EQ(pluginTopic(camera), "front/image_raw");
+  EXPECT_EQ(pluginTopic(camera, PluginTopic::Points), "front/points");
+  EXPECT_EQ(pluginTopic(camera, PluginTopic::DepthCameraInfo), "front/depth/camera_info");
+}
