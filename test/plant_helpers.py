@@ -130,3 +130,47 @@ PLUGIN_URDF = """<robot name="probe">
       <bodyName>scanner</bodyName><topicName>imu_raw</topicName><updateRate>200</updateRate></plugin>
   </gazebo>
 </robot>"""
+
+
+# A small differential-drive robot written for the tests, with gazebo_plugins' diff drive.
+DIFF_BOT = os.path.join(FIXTURES, 'urdf', 'diff_bot.urdf')
+
+
+def diff_bot(**params):
+    """The fixture's URDF text with its diff drive plugin's parameters replaced or added (None removes one)."""
+    with open(DIFF_BOT) as f:
+        urdf = f.read()
+    for key, value in params.items():
+        start, end = urdf.find(f'<{key}>'), urdf.find(f'</{key}>')
+        element = '' if value is None else f'<{key}>{value}</{key}>'
+        if start >= 0:
+            urdf = urdf[:start] + element + urdf[end + len(key) + 3:]
+        else:
+            urdf = urdf.replace('<rosDebugLevel>', element + '<rosDebugLevel>')
+    return urdf
+
+
+def diff_bot_with_gazebo_ros_control():
+    """The same robot driven as Husky and Jackal are: velocity transmissions and gazebo_ros_control
+    in /diff_bot instead of the diff drive plugin (DIFF_DRIVE_CONTROLLERS runs it)."""
+    urdf = diff_bot()
+    return urdf[:urdf.index('  <gazebo>\n    <plugin name="diff_drive"')] + """
+  <transmission name="left_transmission"><type>transmission_interface/SimpleTransmission</type>
+    <joint name="wheel_left_joint"><hardwareInterface>hardware_interface/VelocityJointInterface</hardwareInterface></joint>
+    <actuator name="left_motor"><mechanicalReduction>1</mechanicalReduction></actuator></transmission>
+  <transmission name="right_transmission"><type>transmission_interface/SimpleTransmission</type>
+    <joint name="wheel_right_joint"><hardwareInterface>hardware_interface/VelocityJointInterface</hardwareInterface></joint>
+    <actuator name="right_motor"><mechanicalReduction>1</mechanicalReduction></actuator></transmission>
+  <gazebo><plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so">
+    <robotNamespace>/diff_bot</robotNamespace></plugin></gazebo>
+</robot>"""
+
+
+DIFF_DRIVE_CONTROLLERS = {'diff_bot': {
+    'joint_state_controller': {'type': 'joint_state_controller/JointStateController', 'publish_rate': 50},
+    'mobile_base_controller': {
+        'type': 'diff_drive_controller/DiffDriveController', 'left_wheel': 'wheel_left_joint',
+        'right_wheel': 'wheel_right_joint', 'publish_rate': 50, 'base_frame_id': 'base_footprint',
+        'pose_covariance_diagonal': [0.001, 0.001, 1e6, 1e6, 1e6, 1000.0],
+        'twist_covariance_diagonal': [0.001, 0.001, 1e6, 1e6, 1e6, 1000.0],
+        'linear': {'x': {'has_acceleration_limits': True, 'max_acceleration': 1.0}}}}}

@@ -1,30 +1,15 @@
 """gazebo_plugins' model plugins on the plant, through its Python module: libgazebo_ros_diff_drive.so
 with upstream's parameters, its motors, ramp, torque limit, odometry (world and encoder) and frames,
-on a small differential-drive robot written for the tests (test/fixtures/urdf/diff_bot.urdf)."""
+on a small differential-drive robot written for the tests (test/fixtures/urdf/diff_bot.urdf); and
+the same robot driven by ros_controllers' diff_drive_controller through gazebo_ros_control."""
 import math
-import os
 
 import pytest
 
-from plant_helpers import FIXTURES, logged, yaw_of
+from plant_helpers import DIFF_DRIVE_CONTROLLERS, diff_bot, diff_bot_with_gazebo_ros_control, logged, yaw_of
 from tianracer_description import bullet_plant
 
-DIFF_BOT = os.path.join(FIXTURES, 'urdf', 'diff_bot.urdf')
 WHEEL_RADIUS, SEPARATION = 0.035, 0.30
-
-
-def diff_bot(**params):
-    """The fixture's URDF text with the plugin's parameters replaced or added (None removes one)."""
-    with open(DIFF_BOT) as f:
-        urdf = f.read()
-    for key, value in params.items():
-        start, end = urdf.find(f'<{key}>'), urdf.find(f'</{key}>')
-        element = '' if value is None else f'<{key}>{value}</{key}>'
-        if start >= 0:
-            urdf = urdf[:start] + element + urdf[end + len(key) + 3:]
-        else:
-            urdf = urdf.replace('<rosDebugLevel>', element + '<rosDebugLevel>')
-    return urdf
 
 
 def spawned(urdf=None, namespace=''):
@@ -157,3 +142,44 @@ def test_bad_input_is_refused_naming_what_and_the_robot_still_spawns():
     assert all(math.isfinite(v) for v in robot.base_pose())
     with pytest.raises(KeyError, match="publishes no topic 'odometry' \\(it has: odom, /tf, joint_states\\)"):
         robot.plugin_latest('diff_drive', 'odometry')
+
+
+# ------------------------------------------------------------------------------------------------
+# The same robot driven as Husky and Jackal drive: gazebo_ros_control and ros_controllers'
+# diff_drive_controller (wheel separation and radius read from the URDF).
+
+def controlled_diff_bot():
+    urdf = diff_bot_with_gazebo_ros_control()
+    world = bullet_plant.World()
+    world.echo = False
+    world.load_params(DIFF_DRIVE_CONTROLLERS)
+    world.load_params({'diff_bot': {'robot_description': urdf}})
+    robot = world.spawn(urdf, 'diff_bot')
+    manager = robot.controller_manager
+    names = ['joint_state_controller', 'mobile_base_controller']
+    assert manager.spawn(names) == (names, True), world.messages()
+    world.step(200)
+    return world, robot, manager
+
+
+def test_diff_drive_controller_drives_with_geometry_from_the_urdf():
+    world, robot, manager = controlled_diff_bot()
+    start = robot.base_pose()
+    for _ in range(40):  # a Twist every 50 ms, as a teleop sends them
+        assert manager.command('mobile_base_controller', (0.2, 0.5))
+        world.step(50)
+    left, right = robot.joint_state('wheel_left_joint')[1], robot.joint_state('wheel_right_joint')[1]
+    assert left == pytest.approx((0.2 - 0.5 * SEPARATION / 2) / WHEEL_RADIUS, rel=0.02), 'separation 0.3 m'
+    assert right == pytest.approx((0.2 + 0.5 * SEPARATION / 2) / WHEEL_RADIUS, rel=0.02), 'radius 35 mm'
+    odometry = manager.odometry('mobile_base_controller')
+    assert odometry['linear'] == pytest.approx(0.2, rel=0.03) and odometry['angular'] == pytest.approx(0.5, rel=0.03)
+    # The wheels' odometry against the plant's pose, both from where the controller started.
+    pose = robot.base_pose()
+    moved = math.hypot(pose[0] - start[0], pose[1] - start[1])
+    assert math.hypot(odometry['x'], odometry['y']) == pytest.approx(moved, rel=0.05)
+    assert odometry['heading'] == pytest.approx(math.remainder(yaw_of(pose) - yaw_of(start), 2 * math.pi), abs=0.05)
+    assert (odometry['frame_id'], odometry['child_frame_id']) == ('odom', 'base_footprint')
+    world.step(600)  # 0.65 s after the last Twist: braking since 0.5 s, at 1 m/s^2 from 0.2 m/s
+    assert robot.joint_state('wheel_left_joint')[1] * WHEEL_RADIUS == pytest.approx(0.05, abs=0.01)
+    world.step(100)
+    assert abs(robot.joint_state('wheel_left_joint')[1]) < 0.05, 'cmd_vel_timeout 0.5 s, then the ramp down: stopped'

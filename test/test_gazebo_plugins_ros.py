@@ -1,16 +1,14 @@
-"""gazebo_plugins' model plugins through the node: libgazebo_ros_diff_drive.so spawned by spawn_model
-(its '/' namespace written into the plugin, as upstream's) drives on /cmd_vel and publishes /odom,
-odom -> base_footprint on /tf and the wheels' joint_states, the only odometry of the robot."""
-import os
-
+"""Differential drives through the node: libgazebo_ros_diff_drive.so spawned by spawn_model (its '/'
+namespace written into the plugin, as upstream's) drives on /cmd_vel and publishes /odom, odom ->
+base_footprint on /tf and the wheels' joint_states, the only odometry of the robot; the same robot with
+gazebo_ros_control and diff_drive_controller started by the spawner."""
 import pytest
+import yaml
 
-from plant_helpers import FIXTURES
+from plant_helpers import DIFF_BOT, DIFF_DRIVE_CONTROLLERS, diff_bot_with_gazebo_ros_control
 from tianracer_description.ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
-
-DIFF_BOT = os.path.join(FIXTURES, 'urdf', 'diff_bot.urdf')
 
 
 def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states(ros):
@@ -59,3 +57,35 @@ def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states
     assert seen['odom_xy'] == pytest.approx(seen['model_xy'], abs=0.05), 'world odometry: the model pose'
     assert abs(seen['tf_x'] - seen['odom_xy'][0]) < 0.1
     assert seen['joints'] == ['wheel_left_joint', 'wheel_right_joint'] and seen['positions'] == 2
+
+
+def test_diff_drive_controller_through_gazebo_ros_control_and_the_spawner(ros, tmp_path):
+    (tmp_path / 'diff_bot.urdf').write_text(diff_bot_with_gazebo_ros_control())
+    (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(DIFF_DRIVE_CONTROLLERS))
+    plant = start_plant(ros)
+    ros.run(['rosparam', 'set', '/diff_bot/robot_description', '--textfile', str(tmp_path / 'diff_bot.urdf')])
+    ros.run(['rosparam', 'load', str(tmp_path / 'controllers.yaml')])
+    spawn_urdf(ros, plant, '/diff_bot/robot_description', 'diff_bot')
+    spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/diff_bot', 'joint_state_controller',
+                         'mobile_base_controller'], 'spawner')
+    ros.wait_for_controllers(2, namespace='/diff_bot')
+    seen = ros.python("""
+        import json, rospy
+        from geometry_msgs.msg import Twist
+        from nav_msgs.msg import Odometry
+        rospy.init_node('probe')
+        pub = rospy.Publisher('/diff_bot/mobile_base_controller/cmd_vel', Twist, queue_size=1)
+        twist = Twist()
+        twist.linear.x, twist.angular.z = 0.2, 0.5
+        for _ in range(30):
+            pub.publish(twist)
+            rospy.sleep(0.1)
+        odom = rospy.wait_for_message('/diff_bot/mobile_base_controller/odom', Odometry, 10)
+        print(json.dumps({'frames': [odom.header.frame_id, odom.child_frame_id],
+                          'linear': odom.twist.twist.linear.x, 'angular': odom.twist.twist.angular.z,
+                          'x': odom.pose.pose.position.x}))
+    """, timeout=90)
+    spawner.stop()
+    assert seen['frames'] == ['odom', 'base_footprint']
+    assert seen['linear'] == pytest.approx(0.2, rel=0.1) and seen['angular'] == pytest.approx(0.5, rel=0.1)
+    assert seen['x'] > 0.1, 'it drove'

@@ -350,7 +350,8 @@ TEST_F(ControllerManagerTest, ListsTheTypesItOffers)
                                   std::string("velocity_controllers/JointGroupVelocityController"),
                                   std::string("effort_controllers/JointGroupEffortController"),
                                   std::string("effort_controllers/JointGroupPositionController"),
-                                  std::string("ackermann_steering_controller/AckermannSteeringController")})
+                                  std::string("ackermann_steering_controller/AckermannSteeringController"),
+                                  std::string("diff_drive_controller/DiffDriveController")})
     EXPECT_NE(std::find(types.begin(), types.end(), type), types.end()) << type;
-  EXPECT_EQ(types.size(), 11u);
+  EXPECT_EQ(types.size(), 12u);
 }

@@ -55,7 +55,7 @@ protected:
 TEST(ControllerTypes, UnknownTypeMakesNothing)
 {
   EXPECT_EQ(createController("velocity_controllers/JointPositionController"), nullptr);
-  EXPECT_EQ(controllerTypes().size(), 11u);
+  EXPECT_EQ(controllerTypes().size(), 12u);
   for (const std::string& type : controllerTypes())
     EXPECT_NE(createController(type), nullptr) << type;
 }
@@ -434,4 +434,74 @@ TEST_F(AckermannTest, InitErrorsNameWhatIsMissing)
   params.erase("/bot/robot_description");
   init(false);
   EXPECT_EQ(messages.back(), "Robot descripion couldn't be retrieved from param server.");
+}
+
+TEST_F(ControllerTest, DiffDriveControllerTurnsTwistIntoWheelSpeedsAndIntegratesOpenLoop)
+{
+  params.set("/bot/diff/left_wheel", Param::string("left_wheel"));
+  params.set("/bot/diff/right_wheel", Param::list({Param::string("right_wheel")}));
+  params.set("/bot/diff/wheel_separation", Param::real(0.4));
+  params.set("/bot/diff/wheel_radius", Param::real(0.1));
+  params.set("/bot/diff/open_loop", Param::boolean(true));
+  params.set("/bot/diff/publish_rate", Param::real(10.0));
+  std::vector<Param> diagonal;
+  for (double v : {0.001, 0.001, 1e6, 1e6, 1e6, 1000.0})
+    diagonal.push_back(Param::real(v));
+  params.set("/bot/diff/pose_covariance_diagonal", Param::list(diagonal));
+  params.set("/bot/diff/twist_covariance_diagonal", Param::list(diagonal));
+  std::unique_ptr<Controller> c = make("diff_drive_controller/DiffDriveController", "diff");
+  EXPECT_EQ(commandTopic<TwistCommand>(*c), "cmd_vel");
+  ASSERT_EQ(c->claimedResources().size(), 1u);
+  EXPECT_EQ(c->claimedResources()[0].resources, (std::vector<std::string>{"left_wheel", "right_wheel"}));
+  EXPECT_FALSE(twist(*c, 1.0, 0.0)) << "not running yet";
+  c->starting(time_ns);
+  ASSERT_TRUE(twist(*c, 1.0, 0.5));
+  run(*c, 1);
+  EXPECT_DOUBLE_EQ(joints.handle("left_wheel")->command(), (1.0 - 0.5 * 0.2) / 0.1);
+  EXPECT_DOUBLE_EQ(joints.handle("right_wheel")->command(), (1.0 + 0.5 * 0.2) / 0.1);
+  run(*c, 399);
+  std::vector<OdometrySample> odometry = take<OdometrySample>(*c);
+  ASSERT_EQ(odometry.size(), 3u) << "every 100 ms, strictly later than the period";
+  // Open loop: the commands integrated on the arc of radius 2 m, the first update with none yet.
+  const double heading = 0.5 * 0.300;
+  EXPECT_NEAR(odometry.back().pose.position.x, 2.0 * std::sin(heading), 1e-9);
+  EXPECT_EQ(odometry.back().linear.x, 1.0);
+  EXPECT_EQ(odometry.back().twist_covariance_diagonal[5], 1000.0);
+  EXPECT_EQ(take<TransformSample>(*c).size(), 3u);
+  run(*c, 200);
+  EXPECT_EQ(joints.handle("left_wheel")->command(), 0.0) << "older than cmd_vel_timeout: brake";
+  EXPECT_FALSE(twist(*c, std::nan(""), 0.0));
+}
+
+TEST_F(ControllerTest, DiffDriveControllerInitErrorsAreUpstreams)
+{
+  auto init = [&] {
+    std::unique_ptr<Controller> c = createController("diff_drive_controller/DiffDriveController");
+    ControllerContext context{params, "/bot/diff", joints, log};
+    return c->init(context);
+  };
+  EXPECT_FALSE(init());
+  EXPECT_EQ(messages.back(), "Couldn't retrieve wheel param 'left_wheel'.");
+  params.set("/bot/diff/left_wheel", Param::list({}));
+  EXPECT_FALSE(init());
+  EXPECT_EQ(messages.back(), "Wheel param 'left_wheel' is an empty list");
+  params.set("/bot/diff/left_wheel", Param::list({Param::string("left_wheel"), Param::real(2)}));
+  EXPECT_FALSE(init());
+  EXPECT_EQ(messages.back(), "Wheel param 'left_wheel' #1 isn't a string.");
+  params.set("/bot/diff/left_wheel", Param::list({Param::string("left_wheel"), Param::string("mast")}));
+  params.set("/bot/diff/right_wheel", Param::string("right_wheel"));
+  EXPECT_FALSE(init());
+  EXPECT_EQ(messages.back(), "#left wheels (2) != #right wheels (1).");
+  params.set("/bot/diff/left_wheel", Param::string("left_hinge"));
+  params.set("/bot/diff/wheel_separation", Param::real(0.4));
+  params.set("/bot/diff/wheel_radius", Param::real(0.1));
+  EXPECT_FALSE(init());
+  EXPECT_EQ(messages.back(), "Parameter 'pose_covariance_diagonal' of /bot/diff must be a list of 6 numbers (the "
+                             "odometry's covariance diagonal, e.g. [0.001, 0.001, 1000000.0, 1000000.0, 1000000.0, 1000.0])");
+  std::vector<Param> diagonal(6, Param::real(0.1));
+  params.set("/bot/diff/pose_covariance_diagonal", Param::list(diagonal));
+  params.set("/bot/diff/twist_covariance_diagonal", Param::list(diagonal));
+  EXPECT_FALSE(init());
+  EXPECT_EQ(messages.back(), "Exception thrown while initializing controller 'diff'.\nCould not find resource "
+                             "'left_hinge' in 'hardware_interface::VelocityJointInterface'.");
 }

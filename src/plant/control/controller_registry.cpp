@@ -8,6 +8,7 @@ namespace bullet_plant
 {
 // One per type, each defined in its family's file.
 std::unique_ptr<Controller> makeAckermannSteeringController();
+std::unique_ptr<Controller> makeDiffDriveController();
 std::unique_ptr<Controller> makeEffortGroupPositionController();
 std::unique_ptr<Controller> makeEffortPidController(bool position);
 std::unique_ptr<Controller> makeForwardCommandController(JointInterface iface);
@@ -27,6 +28,8 @@ const std::vector<ControllerType>& registry()
   static const std::vector<ControllerType> types = {
       {"ackermann_steering_controller/AckermannSteeringController",
        makeAckermannSteeringController},
+      {"diff_drive_controller/DiffDriveController",
+       makeDiffDriveController},
       {"effort_controllers/JointEffortController",
        [] { return makeForwardCommandController(JointInterface::Effort); }},
       {"effort_controllers/JointGroupEffortController",

@@ -16,6 +16,24 @@ namespace bullet_plant
 {
 inline const Param* param(const ControllerContext& c, const std::string& key) { return c.params.find(joinPath(c.ns, key)); }
 
+// A parameter of the controller's namespace, or `fallback` when absent or of another type (as
+// NodeHandle::param does).
+inline std::string paramText(const ControllerContext& c, const std::string& key, const std::string& fallback)
+{
+  const Param* p = param(c, key);
+  return p && p->type() == Param::Type::String ? p->asString() : fallback;
+}
+inline double paramNumber(const ControllerContext& c, const std::string& key, double fallback)
+{
+  const Param* p = param(c, key);
+  return p && p->isNumber() ? p->asDouble() : fallback;
+}
+inline bool paramFlag(const ControllerContext& c, const std::string& key, bool fallback)
+{
+  const Param* p = param(c, key);
+  return p && p->type() == Param::Type::Bool ? p->asBool() : fallback;
+}
+
 // The named joint's handle on the interface the controller type needs (hardware_interface's
 // getHandle, whose failure text this reproduces).
 inline JointHandle* claimJoint(ControllerContext& c, JointInterface iface, std::string& joint,
