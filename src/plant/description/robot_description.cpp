@@ -32,7 +32,7 @@ double SensorDescription::pluginNumber(const std::string& key, double fallback) 
 
 namespace
 {
-// The gazebo_ros plugin files the plant simulates (docs/interfaces.md section 11, docs/gazebo_plugins.md).
+// The gazebo_ros plugin files the plant simulates (docs/interfaces.md section 11, docs/model_plugins.md).
 const std::map<std::string, PluginKind>& pluginKinds()
 {
   static const std::map<std::string, PluginKind> kinds = {

@@ -3,7 +3,7 @@
 // wheelAcceleration; nav_msgs/Odometry on odometryTopic from the model's world pose or from the
 // wheels' encoders, with odometryFrame -> robotBaseFrame on /tf; optionally the wheels' transforms
 // and joint_states. Parameters, defaults, the update gate and the odometry are upstream's
-// (docs/gazebo_plugins.md).
+// (docs/model_plugins.md).
 #include <cmath>
 
 #include "bullet_plant/geometry.h"
