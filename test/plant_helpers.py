@@ -132,22 +132,46 @@ PLUGIN_URDF = """<robot name="probe">
 </robot>"""
 
 
-# A small differential-drive robot written for the tests, with gazebo_plugins' diff drive.
+def fixture_urdf(name, plugin, **params):
+    """The text of test/fixtures/urdf/<name>.urdf with the parameters of its <plugin name="plugin">
+    replaced or added (None removes one)."""
+    with open(os.path.join(FIXTURES, 'urdf', name + '.urdf')) as f:
+        urdf = f.read()
+    start = urdf.index(f'<plugin name="{plugin}"')
+    end = urdf.index('</plugin>', start)
+    block = urdf[start:end]
+    for key, value in params.items():
+        element = '' if value is None else f'<{key}>{value}</{key}>'
+        if f'<{key}>' in block:
+            block = block[:block.index(f'<{key}>')] + element + block[block.index(f'</{key}>') + len(key) + 3:]
+        else:
+            block += element
+    return urdf[:start] + block + urdf[end:]
+
+
+# Small robots written for the tests, one per gazebo_plugins drive, as robot makers configure them.
 DIFF_BOT = os.path.join(FIXTURES, 'urdf', 'diff_bot.urdf')
 
 
 def diff_bot(**params):
-    """The fixture's URDF text with its diff drive plugin's parameters replaced or added (None removes one)."""
-    with open(DIFF_BOT) as f:
-        urdf = f.read()
-    for key, value in params.items():
-        start, end = urdf.find(f'<{key}>'), urdf.find(f'</{key}>')
-        element = '' if value is None else f'<{key}>{value}</{key}>'
-        if start >= 0:
-            urdf = urdf[:start] + element + urdf[end + len(key) + 3:]
-        else:
-            urdf = urdf.replace('<rosDebugLevel>', element + '<rosDebugLevel>')
-    return urdf
+    """diff_bot.urdf with its diff drive plugin's parameters replaced, added or (None) removed."""
+    return fixture_urdf('diff_bot', 'diff_drive', **params)
+
+
+def skid_bot(**params):
+    """skid_bot.urdf (four wheels, as agilex limo and rosbot) with its skid steer plugin's parameters changed."""
+    return fixture_urdf('skid_bot', 'skid_steer_drive', **params)
+
+
+def planar_bot(**params):
+    """planar_bot.urdf (a holonomic base, as agilex bunker) with its planar_move plugin's parameters changed."""
+    return fixture_urdf('planar_bot', 'planar_move', **params)
+
+
+def gripper(**params):
+    """gripper.urdf (two fingers, the second following the first, as turtlebot3_manipulation's) with
+    its mimic joint plugin's parameters changed."""
+    return fixture_urdf('gripper', 'mimic_finger', **params)
 
 
 def diff_bot_with_gazebo_ros_control():

@@ -1,21 +1,26 @@
-"""gazebo_plugins' model plugins on the plant, through its Python module: libgazebo_ros_diff_drive.so
-with upstream's parameters, its motors, ramp, torque limit, odometry (world and encoder) and frames,
-on a small differential-drive robot written for the tests (test/fixtures/urdf/diff_bot.urdf); and
-the same robot driven by ros_controllers' diff_drive_controller through gazebo_ros_control."""
+"""gazebo_plugins' model plugins on the plant, through its Python module, each on a small robot
+written for the tests (test/fixtures/urdf): libgazebo_ros_diff_drive.so with upstream's parameters,
+its motors, ramp, torque limit, odometry (world and encoder) and frames (diff_bot), and the same
+robot driven by ros_controllers' diff_drive_controller through gazebo_ros_control;
+skid_steer_drive and joint_state_publisher (skid_bot), planar_move (planar_bot) and the mimic joint
+plugin (gripper)."""
 import math
 
 import pytest
 
-from plant_helpers import DIFF_DRIVE_CONTROLLERS, diff_bot, diff_bot_with_gazebo_ros_control, logged, yaw_of
+from plant_helpers import (DIFF_DRIVE_CONTROLLERS, diff_bot, diff_bot_with_gazebo_ros_control, gripper, logged,
+                           planar_bot, skid_bot, yaw_of)
 from tianracer_description import bullet_plant
 
 WHEEL_RADIUS, SEPARATION = 0.035, 0.30
 
 
-def spawned(urdf=None, namespace=''):
+def spawned(urdf=None, namespace='', name='diff_bot', params=None):
     world = bullet_plant.World()
     world.echo = False
-    robot = world.spawn(urdf or diff_bot(), 'diff_bot', namespace=namespace)
+    if params:
+        world.load_params(params)
+    robot = world.spawn(urdf or diff_bot(), name, namespace=namespace)
     world.step(200)  # settle on the ground
     return world, robot
 
@@ -183,3 +188,169 @@ def test_diff_drive_controller_drives_with_geometry_from_the_urdf():
     assert robot.joint_state('wheel_left_joint')[1] * WHEEL_RADIUS == pytest.approx(0.05, abs=0.01)
     world.step(100)
     assert abs(robot.joint_state('wheel_left_joint')[1]) < 0.05, 'cmd_vel_timeout 0.5 s, then the ramp down: stopped'
+
+
+# ------------------------------------------------------------------------------------------------
+# libgazebo_ros_skid_steer_drive.so and libgazebo_ros_joint_state_publisher.so on a four-wheeled
+# robot (skid_bot.urdf: wheels 0.08 m across, 0.26 m apart).
+
+SKID_RADIUS, SKID_SEPARATION = 0.04, 0.26
+
+
+def test_skid_steer_drives_four_wheels_and_reports_world_odometry():
+    world, robot = spawned(skid_bot(), name='skid_bot', namespace='/')
+    assert robot.model_plugins == ['skid_steer_drive', 'joint_state_publisher'], world.messages()
+    assert robot.plugin_topics('skid_steer_drive') == {'subscribes': ['cmd_vel'], 'publishes': ['odom', '/tf']}
+    start = robot.base_pose()
+    assert robot.plugin_send('skid_steer_drive', 'cmd_vel', (0.3, 0.0))
+    world.step(2000)
+    for joint in ('front_left_wheel_joint', 'front_right_wheel_joint', 'rear_left_wheel_joint', 'rear_right_wheel_joint'):
+        assert robot.joint_state(joint)[1] == pytest.approx(0.3 / SKID_RADIUS, rel=0.01), joint
+    assert robot.base_pose()[0] - start[0] == pytest.approx(0.6, abs=0.03), 'at once to 0.3 m/s, for 2 s'
+    odom = robot.plugin_latest('skid_steer_drive', 'odom')
+    assert world.time - odom['stamp'] <= 0.021, 'at updateRate 50'
+    assert (odom['frame_id'], odom['child_frame_id']) == ('odom', 'base_footprint'), "spawn_model's '/': no prefix"
+    assert odom['x'] == pytest.approx(robot.base_pose()[0], abs=0.01) and odom['linear'] == pytest.approx(0.3, rel=0.01)
+    assert odom['pose'][2] == 0.0, 'upstream fills x and y of the pose'
+    assert odom['pose_covariance'] == pytest.approx([1e-4, 1e-4, 1e12, 1e12, 1e12, 0.01])
+    assert odom['twist_covariance'] == odom['pose_covariance']
+    tf = robot.plugin_latest('skid_steer_drive', '/tf')
+    assert tf['pose'][:2] == pytest.approx(odom['pose'][:2]) and tf['pose'][2] != 0.0, 'the transform has the height'
+
+
+def test_skid_steer_turns_the_sides_apart_and_slips_as_skid_steering_does():
+    world, robot = spawned(skid_bot(), name='skid_bot', namespace='/')
+    robot.plugin_send('skid_steer_drive', 'cmd_vel', (0.0, 1.0))
+    world.step(1000)
+    yaw_before = yaw_of(robot.base_pose())
+    world.step(1000)
+    left, right = robot.joint_state('front_left_wheel_joint')[1], robot.joint_state('rear_right_wheel_joint')[1]
+    assert right == pytest.approx(SKID_SEPARATION / 2 / SKID_RADIUS, rel=0.02) and left == pytest.approx(-right, rel=0.02)
+    turned = math.remainder(yaw_of(robot.base_pose()) - yaw_before, 2 * math.pi)
+    # Wheels 0.2 m apart along the robot must slide sideways to turn it: it turns slower than the
+    # wheels' 1 rad/s, as a skid-steer robot in Gazebo does.
+    assert 0.5 < turned < 1.0, turned
+
+
+def test_skid_steer_without_broadcast_tf_publishes_odometry_only():
+    world, robot = spawned(skid_bot(broadcastTF=None, covariance_x=0.5), name='skid_bot')
+    assert robot.plugin_topics('skid_steer_drive')['publishes'] == ['odom'], 'broadcastTF defaults to false'
+    world.step(30)
+    odom = robot.plugin_latest('skid_steer_drive', 'odom')
+    assert odom['pose_covariance'][0] == 0.5
+    assert odom['frame_id'] == 'odom', 'no tf prefix: skid_steer_drive reads only a tf_prefix parameter'
+
+
+def test_joint_state_publisher_reports_the_listed_joints():
+    world, robot = spawned(skid_bot(), name='skid_bot')
+    robot.plugin_send('skid_steer_drive', 'cmd_vel', (0.2, 0.0))
+    world.step(1000)
+    states = robot.plugin_latest('joint_state_publisher', 'joint_states')
+    assert world.time - states['stamp'] <= 0.051, 'at updateRate 20'
+    assert states['name'] == ['front_left_wheel_joint', 'front_right_wheel_joint', 'rear_left_wheel_joint',
+                              'rear_right_wheel_joint'], 'spaces around the commas dropped'
+    assert states['velocity'] == pytest.approx([0.2 / SKID_RADIUS] * 4, rel=0.02)
+    assert states['position'][0] == pytest.approx(robot.joint_state('front_left_wheel_joint')[0], abs=0.3)
+    assert states['effort'] == []
+    publisher = 'joint_state_publisher'
+    world, robot = spawned(skid_bot(), name='skid_bot')
+    urdf = skid_bot().replace('front_left_wheel_joint, front_right', 'front_left_wheel_joint, base_joint, front_right')
+    world, robot = spawned(urdf, name='skid_bot')
+    assert publisher in robot.model_plugins
+    assert any(f"plugin '{publisher}' (libgazebo_ros_joint_state_publisher.so) <jointName> names 'base_joint', which "
+               "is no movable joint of 'skid_bot'; it is left out" in m for m in logged(world, 'ERROR'))
+    world.step(60)
+    assert len(robot.plugin_latest(publisher, 'joint_states')['name']) == 4
+
+
+# ------------------------------------------------------------------------------------------------
+# libgazebo_ros_planar_move.so on a holonomic base (planar_bot.urdf).
+
+def test_planar_move_sets_the_models_velocity_in_its_heading():
+    world, robot = spawned(planar_bot(), name='planar_bot', namespace='/')
+    assert robot.plugin_topics('planar_move') == {'subscribes': ['cmd_vel'], 'publishes': ['odom', '/tf']}
+    assert robot.plugin_send('planar_move', 'cmd_vel', (0.2, 0.1, 0.5)), '(linear x, linear y, angular z)'
+    world.step(2000)
+    linear, angular = robot.base_twist()
+    heading = yaw_of(robot.base_pose())
+    assert heading == pytest.approx(1.0, abs=0.06), '0.5 rad/s for 2 s, less what the skids drag in each step'
+    forward = math.cos(heading) * linear[0] + math.sin(heading) * linear[1]
+    sideways = math.cos(heading) * linear[1] - math.sin(heading) * linear[0]
+    assert forward == pytest.approx(0.2, rel=0.05) and sideways == pytest.approx(0.1, rel=0.05)
+    assert angular[2] == pytest.approx(0.5, rel=0.05)
+    odom = robot.plugin_latest('planar_move', 'odom')
+    assert world.time - odom['stamp'] <= 0.021, 'at odometryRate 50'
+    assert odom['twist'][0] == pytest.approx(0.2, rel=0.05) and odom['twist'][1] == pytest.approx(0.1, rel=0.05), \
+        'the twist differenced from the last published pose, in the base frame'
+    assert odom['angular'] == pytest.approx(0.5, rel=0.05)
+    assert odom['pose_covariance'] == pytest.approx([1e-5, 1e-5, 1e12, 1e12, 1e12, 0.001])
+    tf = robot.plugin_latest('planar_move', '/tf')
+    assert (tf['frame_id'], tf['child_frame_id']) == ('odom', 'base_footprint')
+
+
+def test_planar_move_drops_a_stale_command_after_cmd_timeout():
+    world, robot = spawned(planar_bot(cmdTimeout=0.5), name='planar_bot')
+    robot.plugin_send('planar_move', 'cmd_vel', (0.3, 0.0, 0.0))
+    world.step(400)
+    assert robot.base_twist()[0][0] == pytest.approx(0.3, rel=0.05)
+    world.step(300)
+    assert abs(robot.base_twist()[0][0]) < 0.01, 'no command for more than 0.5 s: stopped'
+    world, robot = spawned(planar_bot(), name='planar_bot')
+    robot.plugin_send('planar_move', 'cmd_vel', (0.3, 0.0, 0.0))
+    world.step(2000)
+    assert robot.base_twist()[0][0] == pytest.approx(0.3, rel=0.05), 'cmdTimeout -1 (the default): held'
+    world.reset_world()
+    world.step(200)
+    assert abs(robot.base_twist()[0][0]) < 0.01, 'a reset forgets the command'
+
+
+# ------------------------------------------------------------------------------------------------
+# The mimic joint plugin (gripper.urdf): the second finger follows the first, which
+# gazebo_ros_control moves through a position transmission.
+
+def grip(params=None, **plugin):
+    world, robot = spawned(gripper(**plugin), name='gripper', namespace='/', params=params)
+    robot.set_command('finger_joint', 0.03)
+    world.step(500)
+    return world, robot
+
+
+def test_the_mimic_joint_follows_by_position():
+    world, robot = grip()
+    assert robot.model_plugins == ['mimic_finger']
+    assert robot.joint_state('finger_mimic_joint')[0] == pytest.approx(0.03, abs=1e-6)
+    world, robot = grip(multiplier=0.5, offset=0.005)
+    assert robot.joint_state('finger_mimic_joint')[0] == pytest.approx(0.02, abs=1e-6), '0.03 * 0.5 + 0.005'
+    world, robot = grip(multiplier=-1.0, sensitiveness=0.05)
+    assert robot.joint_state('finger_mimic_joint')[0] == pytest.approx(0.0, abs=1e-6), \
+        'within sensitiveness of its target the plugin does nothing'
+
+
+def test_the_mimic_joint_follows_by_effort_with_has_pid():
+    gains = {'gazebo_ros_control': {'pid_gains': {'finger_mimic_joint': {'p': 100.0, 'i': 0.0, 'd': 4.0}}}}
+    world, robot = grip(params=gains, hasPID='')
+    assert robot.joint_state('finger_mimic_joint')[0] == pytest.approx(0.03, abs=1e-4)
+    world, robot = grip(params=gains, hasPID='', maxEffort=0.01)
+    # 10 mN on 50 g: 0.2 m/s^2, 25 mm in 0.5 s at most.
+    assert 0.0 < robot.joint_state('finger_mimic_joint')[0] < 0.026
+    world, robot = grip(params={'my_gains': {'p': 100.0, 'd': 4.0}}, hasPID='my_gains')
+    assert robot.joint_state('finger_mimic_joint')[0] == pytest.approx(0.03, abs=1e-4), '<hasPID> names the gains'
+    world, robot = grip(hasPID='')
+    assert robot.model_plugins == []
+    assert any("plugin 'mimic_finger' (libroboticsgroup_gazebo_mimic_joint_plugin.so) <hasPID>: No p gain specified "
+               "for pid.  Namespace: /gazebo_ros_control/pid_gains/finger_mimic_joint" in m for m in logged(world, 'ERROR'))
+
+
+def test_both_mimic_plugin_files_and_their_errors():
+    urdf = gripper().replace('libroboticsgroup_gazebo_mimic', 'libroboticsgroup_upatras_gazebo_mimic')
+    world, robot = spawned(urdf, name='gripper', namespace='/')
+    assert robot.model_plugins == ['mimic_finger'], 'the newer file name'
+    world, robot = spawned(gripper(mimicJoint=None), name='gripper')
+    assert any("plugin 'mimic_finger' (libroboticsgroup_gazebo_mimic_joint_plugin.so) has no <mimicJoint>" in m
+               for m in logged(world, 'ERROR'))
+    world, robot = spawned(gripper(mimicJoint='finger_joint'), name='gripper')
+    assert any("names joint 'finger_joint', which a gazebo_ros_control transmission drives already" in m
+               for m in logged(world, 'ERROR'))
+    world, robot = spawned(gripper(joint='thumb'), name='gripper')
+    assert robot.model_plugins == [] and any("<joint> names 'thumb', which is no movable joint of 'gripper'" in m
+                                             for m in logged(world, 'ERROR'))

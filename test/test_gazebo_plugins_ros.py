@@ -1,11 +1,13 @@
 """Differential drives through the node: libgazebo_ros_diff_drive.so spawned by spawn_model (its '/'
 namespace written into the plugin, as upstream's) drives on /cmd_vel and publishes /odom, odom ->
 base_footprint on /tf and the wheels' joint_states, the only odometry of the robot; the same robot with
-gazebo_ros_control and diff_drive_controller started by the spawner."""
+gazebo_ros_control and diff_drive_controller started by the spawner. A skid-steer robot and a
+holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
+first by the mimic joint plugin's PID, its gains from the parameter server."""
 import pytest
 import yaml
 
-from plant_helpers import DIFF_BOT, DIFF_DRIVE_CONTROLLERS, diff_bot_with_gazebo_ros_control
+from plant_helpers import DIFF_BOT, DIFF_DRIVE_CONTROLLERS, diff_bot_with_gazebo_ros_control, gripper, planar_bot, skid_bot
 from tianracer_description.ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
@@ -89,3 +91,77 @@ def test_diff_drive_controller_through_gazebo_ros_control_and_the_spawner(ros, t
     assert seen['frames'] == ['odom', 'base_footprint']
     assert seen['linear'] == pytest.approx(0.2, rel=0.1) and seen['angular'] == pytest.approx(0.5, rel=0.1)
     assert seen['x'] > 0.1, 'it drove'
+
+
+def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_path):
+    (tmp_path / 'skid_bot.urdf').write_text(skid_bot())
+    (tmp_path / 'planar_bot.urdf').write_text(planar_bot(robotBaseFrame='planar_base'))
+    plant = start_plant(ros)
+    ros.run(['rosparam', 'set', '/skid_bot/robot_description', '--textfile', str(tmp_path / 'skid_bot.urdf')])
+    ros.run(['rosparam', 'set', '/planar_bot/robot_description', '--textfile', str(tmp_path / 'planar_bot.urdf')])
+    spawn_urdf(ros, plant, '/skid_bot/robot_description', 'skid_bot', '-robot_namespace', '/skid_bot')
+    spawn_urdf(ros, plant, '/planar_bot/robot_description', 'planar_bot', '-robot_namespace', '/planar_bot', '-y', '2')
+    seen = ros.python("""
+        import json, rospy, tf2_ros
+        from geometry_msgs.msg import Twist
+        from nav_msgs.msg import Odometry
+        from sensor_msgs.msg import JointState
+        rospy.init_node('probe')
+        buffer = tf2_ros.Buffer()
+        listener = tf2_ros.TransformListener(buffer)
+        skid = rospy.Publisher('/skid_bot/cmd_vel', Twist, queue_size=1)
+        planar = rospy.Publisher('/planar_bot/cmd_vel', Twist, queue_size=1)
+        forward, sideways = Twist(), Twist()
+        forward.linear.x = 0.3
+        sideways.linear.y = 0.2
+        rospy.wait_for_message('/skid_bot/odom', Odometry, 30)
+        for _ in range(20):
+            skid.publish(forward)
+            planar.publish(sideways)
+            rospy.sleep(0.1)
+        skid_odom = rospy.wait_for_message('/skid_bot/odom', Odometry, 10)
+        planar_odom = rospy.wait_for_message('/planar_bot/odom', Odometry, 10)
+        joints = rospy.wait_for_message('/skid_bot/joint_states', JointState, 10)
+        tf = buffer.lookup_transform('odom', 'planar_base', rospy.Time(0), rospy.Duration(5))
+        print(json.dumps({
+            'skid': [skid_odom.header.frame_id, skid_odom.child_frame_id, skid_odom.twist.twist.linear.x,
+                     skid_odom.pose.pose.position.x, skid_odom.pose.covariance[35]],
+            'planar': [planar_odom.child_frame_id, planar_odom.twist.twist.linear.y, planar_odom.pose.pose.position.y],
+            'tf_y': tf.transform.translation.y,
+            'joints': list(joints.name), 'wheel_speeds': list(joints.velocity)}))
+    """, timeout=90)
+    frame, child, speed, x, yaw_covariance = seen['skid']
+    assert (frame, child) == ('odom', 'base_footprint'), 'skid_steer_drive prefixes no frame'
+    assert speed == pytest.approx(0.3, rel=0.05) and x > 0.2 and yaw_covariance == 0.01
+    child, sideways, y = seen['planar']
+    assert child == 'planar_base' and sideways == pytest.approx(0.2, rel=0.1) and y > 2.2, 'it moved sideways from y 2'
+    assert seen['tf_y'] == pytest.approx(y, abs=0.1)
+    assert seen['joints'][0] == 'front_left_wheel_joint' and seen['wheel_speeds'] == pytest.approx([7.5] * 4, rel=0.05)
+
+
+def test_the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server(ros, tmp_path):
+    (tmp_path / 'gripper.urdf').write_text(gripper(hasPID='mimic_gains'))
+    plant = start_plant(ros)
+    ros.run(['rosparam', 'set', '/gripper/robot_description', '--textfile', str(tmp_path / 'gripper.urdf')])
+    ros.run(['rosparam', 'set', '/mimic_gains', '{p: 100.0, i: 0.0, d: 4.0}'])
+    ros.run(['rosparam', 'set', '/gripper/finger_controller',
+             '{type: position_controllers/JointPositionController, joint: finger_joint}'])
+    spawn_urdf(ros, plant, '/gripper/robot_description', 'gripper')
+    spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/gripper', 'finger_controller'], 'spawner')
+    ros.wait_for_controllers(1, namespace='/gripper')
+    seen = ros.python("""
+        import json, rospy
+        from gazebo_msgs.msg import LinkStates
+        from std_msgs.msg import Float64
+        rospy.init_node('probe')
+        pub = rospy.Publisher('/gripper/finger_controller/command', Float64, queue_size=1, latch=True)
+        pub.publish(Float64(0.03))
+        rospy.sleep(2.0)
+        links = rospy.wait_for_message('/gazebo/link_states', LinkStates, 10)
+        y = {name.split('::')[1]: pose.position.y for name, pose in zip(links.name, links.pose)}
+        print(json.dumps(y))
+    """, timeout=60)
+    spawner.stop()
+    assert seen['finger_left'] == pytest.approx(0.01 + 0.03, abs=1e-3), 'the controller moved the first finger'
+    assert seen['finger_right'] == pytest.approx(-0.01 - 0.03, abs=1e-3), 'the PID (gains at /mimic_gains) the second'
+    assert 'not loaded' not in plant.log()

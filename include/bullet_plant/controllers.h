@@ -46,6 +46,7 @@ struct ControllerStateSample
 struct TwistCommand
 {
   double linear_x = 0, angular_z = 0;
+  double linear_y = 0;  // holonomic bases (planar_move)
 };
 
 // nav_msgs/Odometry: pose and twist of child_frame_id in frame_id, the covariances' diagonals.

@@ -18,19 +18,29 @@
 namespace bullet_plant
 {
 class Log;
+class Param;
 
-// A joint's velocity motor, as Gazebo's Joint::SetParam("vel") and ("fmax") set it: the joint is
-// driven to the velocity by at most the force (N m or N) every step until told otherwise.
-class JointMotor
+// A movable joint as Gazebo's physics::Joint offers it to a model plugin that drives it. A
+// non-finite value is ignored (the plant never takes NaN into its physics).
+class ModelJoint
 {
 public:
-  virtual void setVelocity(double velocity) = 0;  // rad/s or m/s; a non-finite value is ignored
+  // SetParam("vel") and ("fmax"): the joint is driven to the velocity (rad/s or m/s) by at most the
+  // force (N m or N) every step until told otherwise.
+  virtual void setVelocity(double velocity) = 0;
   virtual void setMaxForce(double force) = 0;
+  // SetForce: an effort added to the joint in the coming step only.
+  virtual void setForce(double effort) = 0;
+  // SetPosition: the joint put at the position now, moving at the velocity (the rest of the model
+  // keeps its motion). Within the URDF limits only as far as the limit rows push it back.
+  virtual void setPosition(double position, double velocity) = 0;
   virtual double position() const = 0;
   virtual double velocity() const = 0;
+  // GetEffortLimit: the URDF's <limit effort>, infinite where none is given.
+  virtual double effortLimit() const = 0;
 
 protected:
-  ~JointMotor() = default;
+  ~ModelJoint() = default;
 };
 
 // What a model plugin reaches of its model.
@@ -41,13 +51,27 @@ public:
   virtual const RobotDescription& robotDescription() const = 0;
   // The model frame: Gazebo's model pose is that of its canonical (the URDF root) link.
   virtual const std::string& rootLink() const = 0;
-  // The motor of a movable joint; null (with the reason logged, naming `plugin`) for a joint the
-  // robot does not have, a fixed one, or one a gazebo_ros_control handle drives.
-  virtual JointMotor* jointMotor(const std::string& joint, const std::string& plugin) = 0;
+  // A movable joint to drive; null (with the reason logged, naming `plugin`) for a joint the robot
+  // does not have, a fixed one, or one a gazebo_ros_control handle drives.
+  virtual ModelJoint* modelJoint(const std::string& joint, const std::string& plugin) = 0;
+  // Any movable joint's state, driven or not (joint_state_publisher reads them); false for a joint
+  // the robot does not have or a fixed one.
+  virtual bool jointState(const std::string& joint, double& position, double& velocity) const = 0;
   // A link frame's pose and velocities in the world.
   virtual LinkMotion linkMotion(const std::string& link) const = 0;
-  // What the plugin's frame ids resolve against: gazebo_ros's GazeboRos helper's tf prefix (its
-  // namespace without trailing '/'), plugin_names.h.
+  // Model::SetLinearVel and SetAngularVel: the root body's centre of mass moves with `linear` and
+  // turns with `angular` (world frame) from now on, its joints keeping their rates. Nothing for a
+  // static model or one fixed to the world.
+  virtual void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) = 0;
+  // The world's physics step (s): what plugins that integrate per update use as their period.
+  virtual double stepSize() const = 0;
+  // The world's parameter tree (params.h): where the node has copied the ROS parameters a plugin
+  // reads (the mimic joint plugin's pid gains).
+  virtual const Param& params() const = 0;
+  // The namespace of the plugin's node handle, by its kind's rule (plugin_names.h): where the node
+  // puts its ports' topics and where it reads parameters.
+  virtual std::string pluginNamespace(const ModelPluginDescription& plugin) const = 0;
+  // What the plugin's frame ids resolve against, by its kind's rule (plugin_names.h).
   virtual std::string tfPrefix(const ModelPluginDescription& plugin) const = 0;
   virtual Log& log() = 0;
 

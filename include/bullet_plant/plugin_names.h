@@ -33,12 +33,14 @@ inline std::string pluginChildFrameId(const SensorDescription& d) { return d.lin
 enum class PluginTopic { Main, CameraInfo, DepthImage, DepthCameraInfo, Points };
 std::string pluginTopic(const SensorDescription& d, PluginTopic which = PluginTopic::Main);
 
-// The model plugins built on gazebo_ros's GazeboRos helper (diff_drive): <robotNamespace>, where
-// absent or empty the model's name; spawn_model writes the spawner's namespace into every plugin
-// without one, so a spawned model's plugins sit in that namespace.
+// A model plugin's namespace: its <robotNamespace>, which spawn_model writes into every plugin
+// without one (the spawner's namespace). Where that is empty, the plugins built on gazebo_ros's
+// GazeboRos helper (diff_drive) and joint_state_publisher take the model's name; skid_steer_drive,
+// planar_move and the mimic joint plugin stay in the global namespace.
 std::string modelPluginNamespace(const ModelPluginDescription& d, const std::string& spawn_namespace,
                                  const std::string& model_name);
-// Their tf prefix: the namespace without trailing '/' (a tf_prefix parameter is not read).
-std::string modelPluginTfPrefix(const std::string& plugin_namespace);
+// Its tf prefix: the namespace without trailing '/' for the GazeboRos helper's plugins; none for
+// the others, which would read a tf_prefix parameter (tf's, gone since Noetic; not read).
+std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace);
 
 }  // namespace bullet_plant

@@ -38,10 +38,17 @@ enum class PluginKind
   ImuSensor,     // libgazebo_ros_imu_sensor.so inside <sensor type="imu">
   ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
   P3d,           // libgazebo_ros_p3d.so, a model plugin
-  DiffDrive,     // libgazebo_ros_diff_drive.so, a model plugin (model_plugin.h)
+  // Model plugins that act on the physics (model_plugin.h), from <gazebo><plugin>:
+  DiffDrive,            // libgazebo_ros_diff_drive.so
+  SkidSteerDrive,       // libgazebo_ros_skid_steer_drive.so
+  PlanarMove,           // libgazebo_ros_planar_move.so
+  JointStatePublisher,  // libgazebo_ros_joint_state_publisher.so
+  MimicJoint,           // lib roboticsgroup(_upatras)_gazebo_mimic_joint_plugin.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);
+// Whether the kind is one of the model plugins above (a ModelPluginDescription).
+bool isModelPluginKind(PluginKind kind);
 // The files pluginKind knows, for messages ("gazebo_ros_control, gazebo_ros_laser, ...").
 std::string simulatedPluginNames();
 

@@ -62,7 +62,7 @@ const PortTransport* transportOf(const Port& port)
                                         [](const std_msgs::Float64MultiArray& m) { return m.data; },
                                         [](const std::vector<double>&) { return "a command (the controller logs why)"; })},
       {typeid(TwistCommand), input<TwistCommand, geometry_msgs::Twist>(
-                                 [](const geometry_msgs::Twist& m) { return TwistCommand{m.linear.x, m.angular.z}; },
+                                 [](const geometry_msgs::Twist& m) { return TwistCommand{m.linear.x, m.angular.z, m.linear.y}; },
                                  [](const TwistCommand&) { return "a velocity command (the controller logs why)"; })},
   };
   static const std::map<std::type_index, PortTransport> outputs = {

@@ -7,6 +7,9 @@
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
+
+#include "bullet_plant/params.h"
+#include "bullet_plant/plugin_names.h"
 #include "ros_names.h"
 #include "ros_time.h"
 
@@ -165,6 +168,13 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
   }
   copyParams(control_ns + "/gazebo_ros_control");
   copyParams("/gazebo_ros_control");  // where legacyModeNS (the default) has Gazebo look for pid_gains
+  for (const ModelPluginDescription& plugin : description.model_plugins)
+    if (plugin.kind == PluginKind::MimicJoint && plugin.has("hasPID"))  // its pid gains, wherever <hasPID> puts them
+    {
+      const std::string gains = plugin.text("hasPID", "");
+      const std::string plugin_ns = gains.empty() || gains[0] != '/' ? modelPluginNamespace(plugin, ns, name) : "";
+      copyParams("/" + joinPath(plugin_ns, gains.empty() ? "gazebo_ros_control" : gains));
+    }
   return onSimThread<bool>([&] {
     try
     {

@@ -57,6 +57,9 @@ py::dict odometryDict(const OdometrySample& s)
   d["angular"] = s.angular.z;
   d["pose"] = poseArray(s.pose);
   d["twist"] = std::vector<double>{s.linear.x, s.linear.y, s.linear.z, s.angular.x, s.angular.y, s.angular.z};
+  // The diagonals of nav_msgs/Odometry's 6 x 6 covariances (x, y, z, roll, pitch, yaw).
+  d["pose_covariance"] = std::vector<double>(s.pose_covariance_diagonal.begin(), s.pose_covariance_diagonal.end());
+  d["twist_covariance"] = std::vector<double>(s.twist_covariance_diagonal.begin(), s.twist_covariance_diagonal.end());
   return d;
 }
 
@@ -89,8 +92,14 @@ bool deliverToPort(Port& port, py::object value)
     return in->deliver(value.cast<std::vector<double>>());
   if (auto* in = dynamic_cast<InputPort<TwistCommand>*>(&port))
   {
-    auto twist = value.cast<std::pair<double, double>>();
-    return in->deliver(TwistCommand{twist.first, twist.second});
+    // (linear x, angular z) as a car or differential base takes it, (x, y, angular z) for holonomic ones
+    const auto twist = value.cast<std::vector<double>>();
+    if (twist.size() == 2)
+      return in->deliver(TwistCommand{twist[0], twist[1]});
+    if (twist.size() == 3)
+      return in->deliver(TwistCommand{twist[0], twist[2], twist[1]});
+    throw py::value_error("port '" + port.topic() + "' takes (linear_x, angular_z) or (linear_x, linear_y, angular_z); got " +
+                          std::to_string(twist.size()) + " numbers");
   }
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot send; add it to port_bindings.cpp");
 }

@@ -79,3 +79,29 @@ TEST(PluginNames, LaserAndCameraResolveAgainstTheirNamespace)
   EXPECT_EQ(pluginTopic(camera, PluginTopic::Points), "front/points");
   EXPECT_EQ(pluginTopic(camera, PluginTopic::DepthCameraInfo), "front/depth/camera_info");
 }
+
+TEST(PluginNames, ModelPluginNamespacesByTheirKindsRules)
+{
+  auto plugin = [](PluginKind kind, std::map<std::string, std::string> params) {
+    ModelPluginDescription d;
+    d.kind = kind;
+    d.params = std::move(params);
+    return d;
+  };
+  for (PluginKind kind : {PluginKind::DiffDrive, PluginKind::JointStatePublisher})
+  {
+    EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "", "bot"), "bot") << "empty: the model's name";
+    EXPECT_EQ(modelPluginNamespace(plugin(kind, {{"robotNamespace", ""}}), "/", "bot"), "bot");
+    EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "/", "bot"), "/") << "spawn_model's namespace";
+    EXPECT_EQ(modelPluginNamespace(plugin(kind, {{"robotNamespace", "/r1"}}), "/", "bot"), "/r1");
+  }
+  for (PluginKind kind : {PluginKind::SkidSteerDrive, PluginKind::PlanarMove, PluginKind::MimicJoint})
+  {
+    EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "", "bot"), "") << "empty: the global namespace";
+    EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "/r2", "bot"), "/r2");
+  }
+  const ModelPluginDescription diff = plugin(PluginKind::DiffDrive, {});
+  EXPECT_EQ(modelPluginTfPrefix(diff, "/r1/"), "/r1") << "the GazeboRos helper: its namespace";
+  EXPECT_EQ(modelPluginTfPrefix(plugin(PluginKind::SkidSteerDrive, {}), "/r1"), "") << "only a tf_prefix parameter";
+  EXPECT_EQ(resolveTfFrame(modelPluginTfPrefix(diff, "/r1"), "odom"), "r1/odom");
+}

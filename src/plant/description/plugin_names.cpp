@@ -111,11 +111,22 @@ std::string pluginFrameId(const SensorDescription& d, const std::string& tf_pref
 std::string modelPluginNamespace(const ModelPluginDescription& d, const std::string& spawn_namespace,
                                  const std::string& model_name)
 {
-  std::string ns = d.has("robotNamespace") ? d.text("robotNamespace", "") : spawn_namespace;
-  return ns.empty() ? model_name : ns;
+  const std::string ns = d.has("robotNamespace") ? d.text("robotNamespace", "") : spawn_namespace;
+  switch (d.kind)
+  {
+    case PluginKind::DiffDrive:  // the GazeboRos helper
+    case PluginKind::JointStatePublisher:
+      return ns.empty() ? model_name : ns;
+    default:  // skid_steer_drive, planar_move, the mimic joint plugin: "" is the global namespace
+      return ns;
+  }
 }
 
-std::string modelPluginTfPrefix(const std::string& plugin_namespace) { return withoutTrailingSlashes(plugin_namespace); }
+std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace)
+{
+  // The GazeboRos helper falls back to its namespace; the others read only a tf_prefix parameter.
+  return d.kind == PluginKind::DiffDrive ? withoutTrailingSlashes(plugin_namespace) : "";
+}
 
 std::string pluginTopic(const SensorDescription& d, PluginTopic which)
 {

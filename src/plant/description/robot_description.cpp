@@ -39,10 +39,28 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_laser.so", PluginKind::Laser},          {"libgazebo_ros_gpu_laser.so", PluginKind::Laser},
       {"libgazebo_ros_camera.so", PluginKind::Camera},        {"libgazebo_ros_openni_kinect.so", PluginKind::OpenniKinect},
       {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
-      {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive}};
+      {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
+      {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
+      {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
+      {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
+      {"libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so", PluginKind::MimicJoint},
+      {"libroboticsgroup_gazebo_mimic_joint_plugin.so", PluginKind::MimicJoint}};
   return kinds;
 }
 }  // namespace
+
+bool isModelPluginKind(PluginKind kind)
+{
+  switch (kind)
+  {
+    case PluginKind::DiffDrive:
+    case PluginKind::SkidSteerDrive:
+    case PluginKind::PlanarMove:
+    case PluginKind::JointStatePublisher:
+    case PluginKind::MimicJoint: return true;
+    default: return false;
+  }
+}
 
 PluginKind pluginKind(const std::string& filename)
 {
@@ -407,7 +425,7 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
           readControlPlugin(p, out);
         else if (kind == PluginKind::ImuModel || kind == PluginKind::P3d)
           readModelPlugin(p, out);
-        else if (kind == PluginKind::DiffDrive)
+        else if (isModelPluginKind(kind))
         {
           ModelPluginDescription d;
           d.name = p->Attribute("name") ? p->Attribute("name") : "";

@@ -8,9 +8,8 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/log.h"
-#include "bullet_plant/model_plugin.h"
-#include "bullet_plant/plugin_names.h"
 #include "bullet_plant/rate_gate.h"
+#include "gazebo_plugins/twist_drive_plugin.h"
 
 namespace bullet_plant
 {
@@ -18,17 +17,15 @@ namespace
 {
 enum Side { kLeft = 0, kRight = 1 };
 
-class GazeboRosDiffDrive : public ModelPlugin
+class GazeboRosDiffDrive : public TwistDrivePlugin
 {
 public:
   bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t time_ns) override
   {
     context_ = &context;
-    const std::string command_topic = d.text("commandTopic", "cmd_vel");
     const std::string odometry_topic = d.text("odometryTopic", "odom");
     const std::string prefix = context.tfPrefix(d);
-    odometry_.frame_id = resolveTfFrame(prefix, d.text("odometryFrame", "odom"));
-    odometry_.child_frame_id = resolveTfFrame(prefix, d.text("robotBaseFrame", "base_footprint"));
+    readOdometryFrames(d, context, odometry_);
     publish_wheel_tf_ = d.flag("publishWheelTF", false);
     publish_odom_tf_ = d.flag("publishOdomTF", true);
     publish_wheel_joint_state_ = d.flag("publishWheelJointState", false);
@@ -53,7 +50,7 @@ public:
     for (int side : {kLeft, kRight})
     {
       const std::string joint = d.text(keys[side], defaults[side]);
-      motors_[side] = context.jointMotor(joint, "plugin '" + d.name + "' (" + d.filename + ") <" + keys[side] + ">");
+      motors_[side] = context.modelJoint(joint, "plugin '" + d.name + "' (" + d.filename + ") <" + keys[side] + ">");
       if (!motors_[side])
         return false;
       motors_[side]->setMaxForce(wheel_torque_);
@@ -63,18 +60,9 @@ public:
       wheel_frames_[side] = resolveTfFrame(prefix, j->child_link_name);
       wheel_parent_frames_[side] = resolveTfFrame(prefix, j->parent_link_name);
     }
-    for (double& k : odometry_.pose_covariance_diagonal)
-      k = 1e12;
-    odometry_.pose_covariance_diagonal[0] = odometry_.pose_covariance_diagonal[1] = 0.00001;
-    odometry_.pose_covariance_diagonal[5] = 0.001;
+    odometry_.pose_covariance_diagonal = planarCovariance(0.00001, 0.00001, 0.001);
 
-    subscribe<TwistCommand>(command_topic, [this](const TwistCommand& t) {
-      if (!std::isfinite(t.linear_x) || !std::isfinite(t.angular_z))
-        return false;  // Gazebo would take it and drive the joints to NaN: the plant keeps the last one
-      x_ = t.linear_x;
-      rot_ = t.angular_z;
-      return true;
-    });
+    subscribeCommand(d);
     if (publish_tf_)
       odometry_port_ = &advertise<OdometrySample>(odometry_topic);
     if ((publish_tf_ && publish_odom_tf_) || publish_wheel_tf_)
@@ -90,10 +78,10 @@ public:
     last_update_ns_ = time_ns;
     last_odometry_ns_ = 0;  // as upstream's, never set before the first encoder update
     encoder_x_ = encoder_y_ = encoder_theta_ = 0.0;
-    x_ = rot_ = 0.0;
+    command_ = TwistCommand();
     wheel_speed_[kLeft] = wheel_speed_[kRight] = 0.0;
     wheel_speed_instr_[kLeft] = wheel_speed_instr_[kRight] = 0.0;
-    for (JointMotor* m : motors_)
+    for (ModelJoint* m : motors_)
     {
       m->setMaxForce(wheel_torque_);
       m->setVelocity(0.0);
@@ -114,8 +102,8 @@ public:
     if (publish_wheel_joint_state_)
       publishWheelJointState(time_ns);
 
-    wheel_speed_[kLeft] = x_ - rot_ * wheel_separation_ / 2.0;
-    wheel_speed_[kRight] = x_ + rot_ * wheel_separation_ / 2.0;
+    wheel_speed_[kLeft] = command_.linear_x - command_.angular_z * wheel_separation_ / 2.0;
+    wheel_speed_[kRight] = command_.linear_x + command_.angular_z * wheel_separation_ / 2.0;
     const double radius = wheel_diameter_ / 2.0;
     const double current[2] = {motors_[kLeft]->velocity() * radius, motors_[kRight]->velocity() * radius};
     if (wheel_accel_ == 0 || std::fabs(wheel_speed_[kLeft] - current[kLeft]) < 0.01 ||
@@ -171,12 +159,7 @@ private:
     {
       const LinkMotion model = context_->linkMotion(context_->rootLink());
       odometry_.pose = model.pose;
-      // The world velocity into the base's heading (upstream rounds the yaw to float).
-      const urdf::Rotation& q = model.pose.rotation;
-      const float yaw = float(std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z)));
-      const double c = std::cos(yaw), s = std::sin(yaw);
-      odometry_.linear = urdf::Vector3(c * model.velocity.x + s * model.velocity.y,
-                                       c * model.velocity.y - s * model.velocity.x, 0.0);
+      odometry_.linear = inHeading(yawOf(model.pose.rotation), model.velocity);
       odometry_.angular = urdf::Vector3(0, 0, model.angular_velocity.z);
     }
     odometry_.stamp_ns = time_ns;
@@ -210,13 +193,12 @@ private:
   }
 
   ModelPluginContext* context_ = nullptr;
-  JointMotor* motors_[2] = {nullptr, nullptr};
+  ModelJoint* motors_[2] = {nullptr, nullptr};
   std::string joint_names_[2], wheel_links_[2], wheel_frames_[2], wheel_parent_frames_[2];
   double wheel_separation_ = 0.34, wheel_diameter_ = 0.15, wheel_accel_ = 0.0, wheel_torque_ = 5.0;
   int64_t update_period_ns_ = 0, last_update_ns_ = 0, last_odometry_ns_ = 0;
   bool encoder_odometry_ = false, publish_tf_ = true, publish_odom_tf_ = true;
   bool publish_wheel_tf_ = false, publish_wheel_joint_state_ = false;
-  double x_ = 0.0, rot_ = 0.0;  // the last Twist: linear.x, angular.z
   double wheel_speed_[2] = {0, 0}, wheel_speed_instr_[2] = {0, 0};
   double encoder_x_ = 0.0, encoder_y_ = 0.0, encoder_theta_ = 0.0;
   OdometrySample odometry_;

@@ -5,12 +5,20 @@
 namespace bullet_plant
 {
 std::unique_ptr<ModelPlugin> makeGazeboRosDiffDrive();
+std::unique_ptr<ModelPlugin> makeGazeboRosSkidSteerDrive();
+std::unique_ptr<ModelPlugin> makeGazeboRosPlanarMove();
+std::unique_ptr<ModelPlugin> makeGazeboRosJointStatePublisher();
+std::unique_ptr<ModelPlugin> makeMimicJointPlugin();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
   switch (kind)
   {
     case PluginKind::DiffDrive: return makeGazeboRosDiffDrive();
+    case PluginKind::SkidSteerDrive: return makeGazeboRosSkidSteerDrive();
+    case PluginKind::PlanarMove: return makeGazeboRosPlanarMove();
+    case PluginKind::JointStatePublisher: return makeGazeboRosJointStatePublisher();
+    case PluginKind::MimicJoint: return makeMimicJointPlugin();
     default: return nullptr;
   }
 }

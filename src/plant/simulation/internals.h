@@ -16,7 +16,7 @@
 #include "bullet_plant/world.h"
 #include "bullet_plant/model_plugin.h"
 #include "hardware/joint_layer_sim.h"
-#include "hardware/joint_motor_sim.h"
+#include "hardware/model_joint_sim.h"
 #include "rendering/ray_caster.h"
 #include "sensors/sensor_context.h"
 #include "simulation/robot_multibody.h"
@@ -51,7 +51,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   int64_t last_control_ns = 0;
   std::vector<std::unique_ptr<Sensor>> sensors;
   std::vector<std::unique_ptr<ModelPlugin>> model_plugins;  // gazebo_plugins' drives (model_plugin.h)
-  std::map<size_t, std::unique_ptr<JointMotorSim>> motors;  // by joint index: the ones plugins drive
+  std::map<size_t, std::unique_ptr<ModelJointSim>> model_joints;  // by joint index: the ones model plugins drive
   btTransform spawn_pose;                                  // of the URDF root link
   LastGoodState last_good;
   long recoveries = 0;
@@ -80,7 +80,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
   // then recovery, readSim, sensors.
   void updateControllers(int64_t time_ns);
-  // Model plugins' OnUpdate, then their motors' rows for the coming step.
+  // Model plugins' OnUpdate, then the rows and forces of the joints they drive for the coming step.
   void updateModelPlugins(int64_t time_ns);
   void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
@@ -96,8 +96,13 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   const std::string& modelName() const override { return name; }
   const RobotDescription& robotDescription() const override { return description; }
   const std::string& rootLink() const override;
-  JointMotor* jointMotor(const std::string& joint, const std::string& plugin) override;
+  ModelJoint* modelJoint(const std::string& joint, const std::string& plugin) override;
+  bool jointState(const std::string& joint, double& position, double& velocity) const override;
   LinkMotion linkMotion(const std::string& link) const override { return linkMotion(link, urdf::Pose()); }
+  void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) override;
+  double stepSize() const override;
+  const Param& params() const override;
+  std::string pluginNamespace(const ModelPluginDescription& plugin) const override;
   std::string tfPrefix(const ModelPluginDescription& plugin) const override;
   Log& log() override;
   void resetToSpawn();

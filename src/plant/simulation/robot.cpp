@@ -102,8 +102,8 @@ void Robot::Internals::updateModelPlugins(int64_t time_ns)
 {
   for (std::unique_ptr<ModelPlugin>& plugin : model_plugins)
     plugin->OnUpdate(time_ns);
-  for (auto& motor : motors)
-    motor.second->apply(world->step_s);
+  for (auto& joint : model_joints)
+    joint.second->apply(world->step_s);
 }
 
 void Robot::Internals::updateControllers(int64_t time_ns)
@@ -268,7 +268,7 @@ Log& Robot::Internals::log() { return world->log; }
 
 const std::string& Robot::Internals::rootLink() const { return description.model->getRoot()->name; }
 
-JointMotor* Robot::Internals::jointMotor(const std::string& joint, const std::string& plugin)
+ModelJoint* Robot::Internals::modelJoint(const std::string& joint, const std::string& plugin)
 {
   auto index = multibody.joint_index.find(joint);
   std::string problem;
@@ -282,15 +282,43 @@ JointMotor* Robot::Internals::jointMotor(const std::string& joint, const std::st
     world->log.error(plugin + " names joint '" + joint + "', " + problem + "; the plugin is not loaded");
     return nullptr;
   }
-  std::unique_ptr<JointMotorSim>& motor = motors[index->second];
+  std::unique_ptr<ModelJointSim>& motor = model_joints[index->second];
   if (!motor)
-    motor.reset(new JointMotorSim(multibody.joints[index->second], *multibody.bullet));
+    motor.reset(new ModelJointSim(multibody.joints[index->second], *multibody.bullet));
   return motor.get();
+}
+
+bool Robot::Internals::jointState(const std::string& joint, double& position, double& velocity) const
+{
+  auto it = multibody.joint_index.find(joint);
+  if (it == multibody.joint_index.end())
+    return false;
+  position = multibody.bullet->getJointPos(multibody.joints[it->second].link);
+  velocity = multibody.bullet->getJointVel(multibody.joints[it->second].link);
+  return true;
+}
+
+void Robot::Internals::setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular)
+{
+  btMultiBody& mb = *multibody.bullet;
+  if (mb.hasFixedBase() || !std::isfinite(linear.x + linear.y + linear.z + angular.x + angular.y + angular.z))
+    return;
+  mb.setBaseVel(btVector3(btScalar(linear.x), btScalar(linear.y), btScalar(linear.z)));
+  mb.setBaseOmega(btVector3(btScalar(angular.x), btScalar(angular.y), btScalar(angular.z)));
+}
+
+double Robot::Internals::stepSize() const { return world->step_s; }
+
+const Param& Robot::Internals::params() const { return world->params; }
+
+std::string Robot::Internals::pluginNamespace(const ModelPluginDescription& plugin) const
+{
+  return modelPluginNamespace(plugin, spawn_namespace, name);
 }
 
 std::string Robot::Internals::tfPrefix(const ModelPluginDescription& plugin) const
 {
-  return modelPluginTfPrefix(modelPluginNamespace(plugin, spawn_namespace, name));
+  return modelPluginTfPrefix(plugin, pluginNamespace(plugin));
 }
 
 // ---------------------------------------------------------------------------------------- Robot
