@@ -120,7 +120,7 @@ PLUGIN_URDF = """<robot name="probe">
     </sensor>
     <sensor type="ray" name="sonar"><update_rate>10</update_rate>
       <ray><scan><horizontal><samples>1</samples></horizontal></scan><range><min>0.1</min><max>2</max></range></ray>
-      <plugin name="sonar_plugin" filename="libgazebo_ros_range.so"><topicName>sonar</topicName></plugin>
+      <plugin name="sonar_plugin" filename="libacme_sonar_plugin.so"><topicName>sonar</topicName></plugin>
     </sensor>
   </gazebo>
   <gazebo>

@@ -58,7 +58,7 @@ def test_an_unknown_plugin_is_warned_about_once_naming_it(control_config):
     world = make_world(control_config)
     world.spawn(PLUGIN_URDF, 'probe')
     world.step(2000)
-    warnings = [text for level, text in world.messages() if 'libgazebo_ros_range.so' in text]
+    warnings = [text for level, text in world.messages() if 'libacme_sonar_plugin.so' in text]
     assert len(warnings) == 1 and "'sonar_plugin'" in warnings[0] and "'sonar'" in warnings[0]
 
 

@@ -35,7 +35,7 @@ def test_plugins_publish_in_their_namespaces_with_their_frames(ros, tmp_path):
                                                            'type': 'nav_msgs/Odometry'}
     assert first_message(ros, '/robot_a/imu_raw') == {'frame': 'scanner', 'type': 'sensor_msgs/Imu'}
     log = plant.log()
-    assert log.count('libgazebo_ros_range.so') == 1, log
+    assert log.count('libacme_sonar_plugin.so') == 1, log
 
 
 def ray_sensor(name, samples, min_angle, max_angle, range_min, range_max, kind='gpu_ray'):

@@ -38,6 +38,7 @@ enum class PluginKind
   ImuSensor,     // libgazebo_ros_imu_sensor.so inside <sensor type="imu">
   ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
   P3d,           // libgazebo_ros_p3d.so, a model plugin
+  Range,         // libgazebo_ros_range.so inside <sensor type="ray">
   // Model plugins that act on the physics (model_plugin.h), from <gazebo><plugin>:
   DiffDrive,            // libgazebo_ros_diff_drive.so
   SkidSteerDrive,       // libgazebo_ros_skid_steer_drive.so

@@ -25,12 +25,12 @@ std::string underCameraName(const SensorDescription& d, const std::string& topic
 
 // Whose rules name a sensor: its type's plugin family, as the plant builds its sensor class from
 // the type (a <plugin> of another family is refused at load by the node).
-enum class Family { Laser, Camera, ImuSensor, ImuModel, P3d, Other };
+enum class Family { Laser, Range, Camera, ImuSensor, ImuModel, P3d, Other };
 
 Family familyOf(const SensorDescription& d)
 {
   if (d.type == "ray" || d.type == "gpu_ray")
-    return Family::Laser;
+    return d.plugin_kind == PluginKind::Range ? Family::Range : Family::Laser;
   if (d.type == "camera" || d.type == "depth")
     return Family::Camera;
   if (d.type == "imu")
@@ -68,6 +68,7 @@ std::string pluginNamespace(const SensorDescription& d, const std::string& spawn
       return namespaceOfModelPlugin(d, spawn_namespace, "/" + model_name);
     case Family::ImuModel:
     case Family::P3d:
+    case Family::Range:
       return namespaceOfModelPlugin(d, spawn_namespace, "");
     default:
       if (d.hasPluginParam("robotNamespace"))  // GetRobotNamespace: an empty element means the model's name
@@ -83,6 +84,7 @@ std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugi
     case Family::ImuSensor:
     case Family::ImuModel:  // neither IMU plugin resolves its frame against a tf_prefix
     case Family::P3d:       // only a tf_prefix parameter prefixes its frame
+    case Family::Range:
       return "";
     default:
       return withoutTrailingSlashes(plugin_namespace);
@@ -94,6 +96,7 @@ std::string pluginFrameId(const SensorDescription& d, const std::string& tf_pref
   switch (familyOf(d))
   {
     case Family::Laser:  // no <frameName> means "/world"
+    case Family::Range:
       return resolveTfFrame(tf_prefix, d.pluginParam("frameName", "/world"));
     case Family::ImuSensor:  // frameName as given, without a leading '/' (tf2 refuses it)
       return withoutLeadingSlash(d.pluginParam("frameName", ""));
@@ -134,6 +137,8 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
   {
     case Family::Laser:  // no <topicName> means "/world" (sic)
       return d.pluginParam("topicName", "/world");
+    case Family::Range:
+      return d.pluginParam("topicName", "/range");
     case Family::ImuModel:
       return d.pluginParam("topicName", "/default_imu");
     case Family::ImuSensor:  // appended to "<namespace>/": never absolute on its own

@@ -40,6 +40,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_camera.so", PluginKind::Camera},        {"libgazebo_ros_openni_kinect.so", PluginKind::OpenniKinect},
       {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
       {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
+      {"libgazebo_ros_range.so", PluginKind::Range},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
       {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
@@ -459,8 +460,18 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     {
       out.sensors.push_back(readSensor(s, link));
       SensorDescription& d = out.sensors.back();
-      if (d.plugin_kind == PluginKind::Unknown || d.plugin_kind == PluginKind::ImuModel || d.plugin_kind == PluginKind::P3d)
+      if (d.plugin_kind == PluginKind::Unknown || d.plugin_kind == PluginKind::ImuModel ||
+          d.plugin_kind == PluginKind::P3d || isModelPluginKind(d.plugin_kind))
+      {
         out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));
+        d.plugin_kind = PluginKind::Unknown;  // a model plugin's file in a <sensor> is no sensor plugin
+      }
+      if (d.plugin_kind == PluginKind::Range && d.type != "ray" && d.type != "gpu_ray")
+      {
+        out.errors.push_back("sensor '" + d.name + "': gazebo_ros_range needs a <sensor type=\"ray\"> (\"requires a Ray "
+                             "Sensor as its parent\"), not '" + d.type + "'; it publishes nothing");
+        d.plugin_kind = PluginKind::None;
+      }
       if (d.type == "imu" && d.plugin_kind == PluginKind::ImuSensor && !d.hasPluginParam("frameName"))
       {
         out.errors.push_back("sensor '" + d.name + "': gazebo_ros_imu_sensor needs <frameName> (\"missing <frameName>, "

@@ -1,0 +1,82 @@
+// gazebo_ros_range: a ray sensor's shortest ray as sensor_msgs/Range on <topicName> (default
+// "/range"), frame tf::resolve(tf_prefix, <frameName>) (default "/world"), with <radiation>
+// (ultrasound unless "infrared"), <fov> (0.05), min/max range from the sensor's <ray><range>, and
+// <gaussianNoise> added to a range short of the maximum, the sum held to it; at most <updateRate>
+// (0: every scan). Upstream's rules (docs/interfaces.md section 11).
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include <sensor_msgs/Range.h>
+
+#include "msg_conversions.h"
+#include "ros_names.h"
+#include "sensor_plugin.h"
+
+namespace bullet_plant
+{
+class GazeboRosRange : public SensorPlugin
+{
+public:
+  void Load(Sensor& sensor) override
+  {
+    lidar_ = &sensorAs<Lidar>(sensor, "gazebo_ros_range");
+    const SensorDescription& d = sensor.description();
+    ros::NodeHandle nh = nodeHandle(sensor);
+    std::string prefix;
+    nh.getParam("tf_prefix", prefix);  // its own namespace only, no search
+    range_.header.frame_id = pluginFrameId(d, prefix);
+    range_.radiation_type = d.pluginParam("radiation", "ultrasound") == "ultrasound" ? sensor_msgs::Range::ULTRASOUND
+                                                                                    : sensor_msgs::Range::INFRARED;
+    range_.field_of_view = float(d.pluginNumber("fov", 0.05));
+    range_.min_range = float(d.range_min);
+    range_.max_range = float(d.range_max);
+    gaussian_noise_ = d.pluginNumber("gaussianNoise", 0.0);
+    const double update_rate = d.pluginNumber("updateRate", 0.0);
+    update_period_ns_ = update_rate > 0.0 ? int64_t(std::llround(1e9 / update_rate)) : 0;
+    range_pub_ = nh.advertise<sensor_msgs::Range>(
+        requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' topicName"), 1);
+  }
+
+  bool subscribed() const override { return range_pub_.getNumSubscribers() > 0; }
+
+  void OnUpdate() override
+  {
+    if (!takeUpdate(*lidar_))
+      return;
+    const LaserScan& scan = lidar_->latest();
+    if (scan.stamp_ns - last_publish_ns_ < update_period_ns_)
+      return;
+    last_publish_ns_ = scan.stamp_ns;
+    range_.header.stamp = rosTime(scan.stamp_ns);
+    // Gazebo's rays report their full length where they hit nothing: the maximum range.
+    float shortest = std::numeric_limits<float>::max();
+    for (float r : scan.ranges)
+      shortest = std::min(shortest, std::isfinite(r) ? r : range_.max_range);
+    if (shortest < range_.max_range)
+      shortest = float(std::min(shortest + gaussianKernel(0.0, gaussian_noise_), double(range_.max_range)));
+    range_.range = shortest;
+    range_pub_.publish(range_);
+  }
+
+private:
+  // Box-Muller from rand_r seeded with 0, as upstream draws its noise: the same sequence every run.
+  double gaussianKernel(double mu, double sigma)
+  {
+    if (sigma == 0.0)
+      return mu;
+    const double u = double(rand_r(&seed_)) / double(RAND_MAX), v = double(rand_r(&seed_)) / double(RAND_MAX);
+    return sigma * std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * v) + mu;
+  }
+
+  Lidar* lidar_ = nullptr;
+  sensor_msgs::Range range_;
+  double gaussian_noise_ = 0.0;
+  int64_t update_period_ns_ = 0, last_publish_ns_ = std::numeric_limits<int64_t>::min() / 2;
+  unsigned int seed_ = 0;
+  ros::Publisher range_pub_;
+};
+
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosRange, "libgazebo_ros_range.so")
+
+}  // namespace bullet_plant
