@@ -16,7 +16,7 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim demo bench bench-ros bench-meshes figures step-cost soak clean
+.PHONY: help setup build test sim demo bench bench-ros bench-drive bench-meshes figures step-cost soak clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
@@ -26,6 +26,7 @@ help:
 	@echo "make build  build the catkin workspace in $(WS)/"
 	@echo "make bench  build, time the plant against MuJoCo and PyBullet (installs them from PyPI if missing)"
 	@echo "make bench-ros  build, time the ROS node: launch to running, real time factor, CPU, fastest"
+	@echo "make bench-drive  build, the CPU a turtlebot3-like robot (diff drive, 360-ray lidar, IMU) costs the node"
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
 	@echo "make step-cost  build, count instructions per physics step (callgrind) and print a trajectory digest"
 	@echo "make bench-meshes  build, the cost of a race track made of meshes (instructions per step, lidar rays/s)"
@@ -66,6 +67,10 @@ demo: build
 
 bench-ros: build
 	@$(ROS_ENV) $(PYTHON) bench/ros_plant_bench.py
+
+# A turtlebot3-like robot (diff drive plugin, 360-ray lidar at 5 Hz, IMU) through the node: its CPU.
+bench-drive: build
+	@$(ROS_ENV) $(PYTHON) bench/diff_drive_cost.py
 
 figures: build
 	@$(ROS_ENV) $(PYTHON) bench/plant_figures.py
