@@ -4,13 +4,17 @@ base_footprint on /tf and the wheels' joint_states, the only odometry of the rob
 gazebo_ros_control and diff_drive_controller started by the spawner. A skid-steer robot and a
 holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
 first by the mimic joint plugin's PID, its gains from the parameter server. gazebo_ros_range's
-sensor_msgs/Range against a wall at a known distance."""
+sensor_msgs/Range against a wall at a known distance. A turtlebot3-like diff-drive robot and the
+tutorial's car together in one world, each driven on its own topics."""
+import os
+
 import pytest
 import yaml
 
 from plant_helpers import (DIFF_BOT, DIFF_DRIVE_CONTROLLERS, box_model, diff_bot_with_gazebo_ros_control, gripper,
                            planar_bot, sdf_world, skid_bot)
 from tianracer_description.ros_harness import spawn_urdf, start_plant
+from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 pytestmark = pytest.mark.ros
 
@@ -201,3 +205,46 @@ def test_range_sensor_reports_the_nearest_ray_to_a_wall(ros, tmp_path):
     assert seen['fov'] == pytest.approx(0.26) and seen['limits'] == pytest.approx([0.02, 0.9])
     assert seen['before'] == pytest.approx(0.55, abs=0.005), 'the straight-ahead ray: 0.7 - 0.15 m'
     assert seen['after'] == pytest.approx(0.55 - seen['x'], abs=0.01) and seen['x'] > 0.1, 'it drove toward the wall'
+
+
+def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
+    arena = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'worlds', 'arena.world')
+    car = ros.start(['roslaunch', 'tianracer_description', 'tianracer_world.launch', 'gui:=false',
+                     'world_name:=' + os.path.abspath(arena)], 'tianracer_world')
+    ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
+    (tmp_path / 'diff_bot.urdf').write_text(open(DIFF_BOT).read())
+    ros.run(['rosparam', 'set', '/tb3/robot_description', '--textfile', str(tmp_path / 'diff_bot.urdf')])
+    spawn_urdf(ros, car, '/tb3/robot_description', 'tb3', '-robot_namespace', '/tb3', '-x', '-1', '-y', '-1.5')
+    seen = ros.python("""
+        import json, rospy, tf2_ros
+        from gazebo_msgs.msg import ModelStates
+        from geometry_msgs.msg import Twist
+        from sensor_msgs.msg import LaserScan
+        rospy.init_node('probe')
+        buffer = tf2_ros.Buffer()
+        listener = tf2_ros.TransformListener(buffer)
+        def positions():
+            states = rospy.wait_for_message('/gazebo/model_states', ModelStates, 10)
+            return {name: [pose.position.x, pose.position.y] for name, pose in zip(states.name, states.pose)}
+        scan = rospy.wait_for_message('/tb3/scan', LaserScan, 30)
+        before = positions()
+        car, tb3 = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1), rospy.Publisher('/tb3/cmd_vel', Twist, queue_size=1)
+        fast, slow = Twist(), Twist()
+        fast.linear.x, slow.linear.x = 0.5, 0.2
+        for _ in range(25):
+            car.publish(fast)
+            tb3.publish(slow)
+            rospy.sleep(0.1)
+        after = positions()
+        tf = buffer.lookup_transform('tb3/odom', 'tb3/base_footprint', rospy.Time(0), rospy.Duration(5))
+        print(json.dumps({'before': before, 'after': after, 'scan_frame': scan.header.frame_id,
+                          'scan_hits': sum(1 for r in scan.ranges if r < 3.5), 'tb3_tf_x': tf.transform.translation.x}))
+    """, timeout=90)
+    moved = {name: seen['after'][name][0] - seen['before'][name][0] for name in ('tianracer', 'tb3')}
+    assert moved['tianracer'] > 0.5, moved
+    assert 0.25 < moved['tb3'] < 0.6, moved
+    assert abs(seen['after']['tb3'][1] + 1.5) < 0.05, 'each robot drives on its own topic: tb3 kept its line'
+    assert seen['scan_frame'] == 'tb3/base_scan', "gazebo_ros_laser's frame resolves against its namespace"
+    assert seen['scan_hits'] > 100, 'the arena walls and the car around it'
+    assert seen['tb3_tf_x'] == pytest.approx(seen['after']['tb3'][0], abs=0.15), \
+        "the diff drive's frames carry its namespace: tb3/odom -> tb3/base_footprint"
