@@ -1,8 +1,8 @@
 """Differential drives through the node: libgazebo_ros_diff_drive.so spawned by spawn_model (its '/'
 namespace written into the plugin, as upstream's) drives on /cmd_vel and publishes /odom, odom ->
 base_footprint on /tf and the wheels' joint_states, the only odometry of the robot; the same robot with
-gazebo_ros_control and diff_drive_controller started by the spawner. A skid-steer robot and a
-holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
+gazebo_ros_control and diff_drive_controller started by the spawner. A skid-steer robot (with hector's
+GPS) and a holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
 first by the mimic joint plugin's PID, its gains from the parameter server. gazebo_ros_range's
 sensor_msgs/Range against a wall at a known distance. A turtlebot3-like diff-drive robot and the
 tutorial's car together in one world, each driven on its own topics."""
@@ -111,7 +111,7 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         import json, rospy, tf2_ros
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
-        from sensor_msgs.msg import JointState
+        from sensor_msgs.msg import JointState, NavSatFix
         rospy.init_node('probe')
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)
@@ -128,13 +128,15 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         skid_odom = rospy.wait_for_message('/skid_bot/odom', Odometry, 10)
         planar_odom = rospy.wait_for_message('/planar_bot/odom', Odometry, 10)
         joints = rospy.wait_for_message('/skid_bot/joint_states', JointState, 10)
+        fix = rospy.wait_for_message('/navsat/fix', NavSatFix, 10)
         tf = buffer.lookup_transform('odom', 'planar_base', rospy.Time(0), rospy.Duration(5))
         print(json.dumps({
             'skid': [skid_odom.header.frame_id, skid_odom.child_frame_id, skid_odom.twist.twist.linear.x,
                      skid_odom.pose.pose.position.x, skid_odom.pose.covariance[35]],
             'planar': [planar_odom.child_frame_id, planar_odom.twist.twist.linear.y, planar_odom.pose.pose.position.y],
             'tf_y': tf.transform.translation.y,
-            'joints': list(joints.name), 'wheel_speeds': list(joints.velocity)}))
+            'joints': list(joints.name), 'wheel_speeds': list(joints.velocity),
+            'fix': [fix.header.frame_id, fix.latitude, fix.position_covariance_type, fix.position_covariance[0]]}))
     """, timeout=90)
     frame, child, speed, x, yaw_covariance = seen['skid']
     assert (frame, child) == ('odom', 'base_footprint'), 'skid_steer_drive prefixes no frame'
@@ -143,6 +145,10 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
     assert child == 'planar_base' and sideways == pytest.approx(0.2, rel=0.1) and y > 2.2, 'it moved sideways from y 2'
     assert seen['tf_y'] == pytest.approx(y, abs=0.1)
     assert seen['joints'][0] == 'front_left_wheel_joint' and seen['wheel_speeds'] == pytest.approx([7.5] * 4, rel=0.05)
+    frame, latitude, covariance_type, covariance = seen['fix']
+    assert frame == 'base_link' and covariance_type == 2 and covariance == pytest.approx(1e-8), \
+        "hector's GPS in its own <robotNamespace> '/': /navsat/fix, drift^2 on the diagonal"
+    assert (latitude - 49.9) * 111_260 == pytest.approx(x, abs=0.05), 'about 111.26 km a degree of latitude at 49.9'
 
 
 def test_the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server(ros, tmp_path):

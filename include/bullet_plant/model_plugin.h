@@ -5,6 +5,7 @@
 // plugin is its own file under src/plant/gazebo_plugins/ and a line in the registry there.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -63,6 +64,9 @@ public:
   // turns with `angular` (world frame) from now on, its joints keeping their rates. Nothing for a
   // static model or one fixed to the world.
   virtual void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) = 0;
+  // The seed of the plugin's noise generator: the same on every run, from the model's and the
+  // plugin's names, as the sensors' generators are seeded.
+  virtual uint32_t noiseSeed(const ModelPluginDescription& plugin) const = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.
   virtual double stepSize() const = 0;
   // The world's parameter tree (params.h): where the node has copied the ROS parameters a plugin

@@ -45,6 +45,7 @@ enum class PluginKind
   PlanarMove,           // libgazebo_ros_planar_move.so
   JointStatePublisher,  // libgazebo_ros_joint_state_publisher.so
   MimicJoint,           // lib roboticsgroup(_upatras)_gazebo_mimic_joint_plugin.so
+  HectorGps,            // libhector_gazebo_ros_gps.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);
@@ -67,6 +68,8 @@ struct ModelPluginDescription
   // boolean (sdf's true/false/1/0).
   double number(const std::string& key, double fallback) const;
   bool flag(const std::string& key, bool fallback) const;
+  // "x y z", or one number for all three (hector's error models take either).
+  urdf::Vector3 vector(const std::string& key, const urdf::Vector3& fallback) const;
 };
 
 // One <sensor> inside <gazebo reference="LINK">, with the plugin parameters gazebo_ros reads; the

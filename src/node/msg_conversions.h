@@ -9,15 +9,18 @@
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/Vector3Stamped.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/NavSatFix.h>
 #include <tf2_msgs/TFMessage.h>
 #include <urdf_model/pose.h>
 
 #include "bullet_plant/controllers.h"
 #include "bullet_plant/inertial_sensors.h"
+#include "bullet_plant/plugin_messages.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
 #include "ros_time.h"
@@ -199,6 +202,31 @@ inline tf2_msgs::TFMessage toMsg(const TransformSample& s)
   tf2_msgs::TFMessage msg;
   msg.transforms.push_back(tf);
   return msg;
+}
+
+inline sensor_msgs::NavSatFix toMsg(const NavSatFixSample& s)
+{
+  sensor_msgs::NavSatFix m;
+  m.header.stamp = rosTime(s.stamp_ns);
+  m.header.frame_id = s.frame_id;
+  m.status.status = int8_t(s.status);
+  m.status.service = uint16_t(s.service);
+  m.latitude = s.latitude;
+  m.longitude = s.longitude;
+  m.altitude = s.altitude;
+  for (int k = 0; k < 3; ++k)
+    m.position_covariance[4 * k] = s.position_covariance_diagonal[k];
+  m.position_covariance_type = sensor_msgs::NavSatFix::COVARIANCE_TYPE_DIAGONAL_KNOWN;
+  return m;
+}
+
+inline geometry_msgs::Vector3Stamped toMsg(const Vector3StampedSample& s)
+{
+  geometry_msgs::Vector3Stamped m;
+  m.header.stamp = rosTime(s.stamp_ns);
+  m.header.frame_id = s.frame_id;
+  m.vector = toMsg(s.vector);
+  return m;
 }
 
 }  // namespace bullet_plant

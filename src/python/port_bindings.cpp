@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bullet_plant/model_plugin.h"
+#include "bullet_plant/plugin_messages.h"
 
 namespace bullet_plant
 {
@@ -63,6 +64,29 @@ py::dict odometryDict(const OdometrySample& s)
   return d;
 }
 
+py::dict navSatFixDict(const NavSatFixSample& s)
+{
+  py::dict d;
+  d["stamp"] = double(s.stamp_ns) * 1e-9;
+  d["frame_id"] = s.frame_id;
+  d["status"] = s.status;
+  d["service"] = s.service;
+  d["latitude"] = s.latitude;
+  d["longitude"] = s.longitude;
+  d["altitude"] = s.altitude;
+  d["position_covariance"] = std::vector<double>(s.position_covariance_diagonal.begin(), s.position_covariance_diagonal.end());
+  return d;
+}
+
+py::dict vector3StampedDict(const Vector3StampedSample& s)
+{
+  py::dict d;
+  d["stamp"] = double(s.stamp_ns) * 1e-9;
+  d["frame_id"] = s.frame_id;
+  d["vector"] = std::vector<double>{s.vector.x, s.vector.y, s.vector.z};
+  return d;
+}
+
 py::dict transformDict(const TransformSample& s)
 {
   py::dict d;
@@ -109,7 +133,8 @@ py::object latestOfPort(const Port& port)
   py::object out;
   if (latestAs<JointStateSample>(port, jointStateDict, out) ||
       latestAs<ControllerStateSample>(port, controllerStateDict, out) ||
-      latestAs<OdometrySample>(port, odometryDict, out) || latestAs<TransformSample>(port, transformDict, out))
+      latestAs<OdometrySample>(port, odometryDict, out) || latestAs<TransformSample>(port, transformDict, out) ||
+      latestAs<NavSatFixSample>(port, navSatFixDict, out) || latestAs<Vector3StampedSample>(port, vector3StampedDict, out))
     return out;
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot read; add it to port_bindings.cpp");
 }

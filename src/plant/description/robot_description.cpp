@@ -41,6 +41,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
       {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
       {"libgazebo_ros_range.so", PluginKind::Range},
+      {"libhector_gazebo_ros_gps.so", PluginKind::HectorGps},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
       {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
@@ -58,7 +59,8 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::SkidSteerDrive:
     case PluginKind::PlanarMove:
     case PluginKind::JointStatePublisher:
-    case PluginKind::MimicJoint: return true;
+    case PluginKind::MimicJoint:
+    case PluginKind::HectorGps: return true;
     default: return false;
   }
 }
@@ -89,6 +91,20 @@ double ModelPluginDescription::number(const std::string& key, double fallback) c
   if (it == params.end())
     return fallback;
   return xml::numbers(it->second, 1, "<" + key + "> of plugin '" + name + "' (" + filename + ")")[0];
+}
+
+urdf::Vector3 ModelPluginDescription::vector(const std::string& key, const urdf::Vector3& fallback) const
+{
+  auto it = params.find(key);
+  if (it == params.end())
+    return fallback;
+  const std::string what = "<" + key + "> of plugin '" + name + "' (" + filename + ")";
+  std::istringstream words(it->second);
+  size_t count = 0;
+  for (std::string word; words >> word;)
+    ++count;
+  const std::vector<double> v = xml::numbers(it->second, count == 1 ? 1 : 3, what);
+  return v.size() == 1 ? urdf::Vector3(v[0], v[0], v[0]) : urdf::Vector3(v[0], v[1], v[2]);
 }
 
 bool ModelPluginDescription::flag(const std::string& key, bool fallback) const

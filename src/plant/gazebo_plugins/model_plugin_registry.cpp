@@ -9,6 +9,7 @@ std::unique_ptr<ModelPlugin> makeGazeboRosSkidSteerDrive();
 std::unique_ptr<ModelPlugin> makeGazeboRosPlanarMove();
 std::unique_ptr<ModelPlugin> makeGazeboRosJointStatePublisher();
 std::unique_ptr<ModelPlugin> makeMimicJointPlugin();
+std::unique_ptr<ModelPlugin> makeHectorGazeboRosGps();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -19,6 +20,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::PlanarMove: return makeGazeboRosPlanarMove();
     case PluginKind::JointStatePublisher: return makeGazeboRosJointStatePublisher();
     case PluginKind::MimicJoint: return makeMimicJointPlugin();
+    case PluginKind::HectorGps: return makeHectorGazeboRosGps();
     default: return nullptr;
   }
 }

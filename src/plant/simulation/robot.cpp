@@ -307,6 +307,8 @@ void Robot::Internals::setModelVelocity(const urdf::Vector3& linear, const urdf:
   mb.setBaseOmega(btVector3(btScalar(angular.x), btScalar(angular.y), btScalar(angular.z)));
 }
 
+uint32_t Robot::Internals::noiseSeed(const ModelPluginDescription& plugin) const { return seedFor(name + "/" + plugin.name); }
+
 double Robot::Internals::stepSize() const { return world->step_s; }
 
 const Param& Robot::Internals::params() const { return world->params; }

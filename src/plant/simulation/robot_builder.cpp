@@ -12,6 +12,14 @@
 
 namespace bullet_plant
 {
+uint32_t seedFor(const std::string& text)
+{
+  uint32_t h = 2166136261u;  // FNV-1a: a seed that is the same on every run and machine
+  for (unsigned char c : text)
+    h = (h ^ c) * 16777619u;
+  return h;
+}
+
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -63,14 +71,6 @@ JointInterface parseInterface(const std::string& name, bool& ok)
 
 // URDF damping as a plain torque -c*qd is stable while c*dt stays well below the inertia it acts on.
 bool explicitDampingStable(const MovableJoint& j, double dt) { return j.damping * dt < 0.5 * j.axis_inertia; }
-
-uint32_t seedFor(const std::string& text)
-{
-  uint32_t h = 2166136261u;  // FNV-1a: a seed that is the same on every run and machine
-  for (unsigned char c : text)
-    h = (h ^ c) * 16777619u;
-  return h;
-}
 
 // 1. Bodies: each movable joint starts one; fixed joints fold their child into the parent body.
 std::vector<BodyPlan> planBodies(Robot::Internals& r, const urdf::LinkConstSharedPtr& root, LinkPlacement& placement)

@@ -12,6 +12,10 @@ namespace bullet_plant
 {
 // Throws DescriptionError naming the offending element (no root link, a transmission naming a
 // missing or fixed joint); what was added to the world by then is taken back by removeRobot.
+// The seed of a noise generator that is the same on every run and machine (FNV-1a of `text`,
+// "robot/sensor" or "robot/plugin").
+uint32_t seedFor(const std::string& text);
+
 void buildRobot(Robot::Internals& robot, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints);
 void removeRobot(Robot::Internals& robot);
 // Takes the robot's multibody, colliders and rows out of the dynamics world, leaving the rest (its
