@@ -2,7 +2,7 @@
 namespace written into the plugin, as upstream's) drives on /cmd_vel and publishes /odom, odom ->
 base_footprint on /tf and the wheels' joint_states, the only odometry of the robot; the same robot with
 gazebo_ros_control and diff_drive_controller started by the spawner. A skid-steer robot (with hector's
-GPS) and a holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
+GPS and IMU) and a holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
 first by the mimic joint plugin's PID, its gains from the parameter server. gazebo_ros_range's
 sensor_msgs/Range against a wall at a known distance. A turtlebot3-like diff-drive robot and the
 tutorial's car together in one world, each driven on its own topics."""
@@ -111,7 +111,7 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         import json, rospy, tf2_ros
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
-        from sensor_msgs.msg import JointState, NavSatFix
+        from sensor_msgs.msg import Imu, JointState, NavSatFix
         rospy.init_node('probe')
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)
@@ -129,6 +129,7 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         planar_odom = rospy.wait_for_message('/planar_bot/odom', Odometry, 10)
         joints = rospy.wait_for_message('/skid_bot/joint_states', JointState, 10)
         fix = rospy.wait_for_message('/navsat/fix', NavSatFix, 10)
+        imu = rospy.wait_for_message('/imu/data', Imu, 10)
         tf = buffer.lookup_transform('odom', 'planar_base', rospy.Time(0), rospy.Duration(5))
         print(json.dumps({
             'skid': [skid_odom.header.frame_id, skid_odom.child_frame_id, skid_odom.twist.twist.linear.x,
@@ -136,7 +137,8 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
             'planar': [planar_odom.child_frame_id, planar_odom.twist.twist.linear.y, planar_odom.pose.pose.position.y],
             'tf_y': tf.transform.translation.y,
             'joints': list(joints.name), 'wheel_speeds': list(joints.velocity),
-            'fix': [fix.header.frame_id, fix.latitude, fix.position_covariance_type, fix.position_covariance[0]]}))
+            'fix': [fix.header.frame_id, fix.latitude, fix.position_covariance_type, fix.position_covariance[0]],
+            'imu': [imu.header.frame_id, imu.linear_acceleration.z, imu.angular_velocity_covariance[0]]}))
     """, timeout=90)
     frame, child, speed, x, yaw_covariance = seen['skid']
     assert (frame, child) == ('odom', 'base_footprint'), 'skid_steer_drive prefixes no frame'
@@ -148,6 +150,8 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
     frame, latitude, covariance_type, covariance = seen['fix']
     assert frame == 'base_link' and covariance_type == 2 and covariance == pytest.approx(1e-8), \
         "hector's GPS in its own <robotNamespace> '/': /navsat/fix, drift^2 on the diagonal"
+    assert seen['imu'][0] == 'base_link' and seen['imu'][1] == pytest.approx(9.8, abs=0.3), "hector's IMU on /imu/data"
+    assert seen['imu'][2] == pytest.approx(0.005 ** 2)
     assert (latitude - 49.9) * 111_260 == pytest.approx(x, abs=0.05), 'about 111.26 km a degree of latitude at 49.9'
 
 

@@ -67,6 +67,8 @@ public:
   // The seed of the plugin's noise generator: the same on every run, from the model's and the
   // plugin's names, as the sensors' generators are seeded.
   virtual uint32_t noiseSeed(const ModelPluginDescription& plugin) const = 0;
+  // The world's gravity (m/s^2, world frame).
+  virtual urdf::Vector3 gravity() const = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.
   virtual double stepSize() const = 0;
   // The world's parameter tree (params.h): where the node has copied the ROS parameters a plugin

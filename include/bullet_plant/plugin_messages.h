@@ -30,4 +30,15 @@ struct Vector3StampedSample
   urdf::Vector3 vector;
 };
 
+// sensor_msgs/Imu with diagonal covariances (-1 in the first element: not provided).
+struct ImuSample
+{
+  int64_t stamp_ns = 0;
+  std::string frame_id;
+  urdf::Rotation orientation;
+  urdf::Vector3 angular_velocity, linear_acceleration;
+  std::array<double, 3> orientation_covariance_diagonal{}, angular_velocity_covariance_diagonal{},
+      linear_acceleration_covariance_diagonal{};
+};
+
 }  // namespace bullet_plant

@@ -46,6 +46,7 @@ enum class PluginKind
   JointStatePublisher,  // libgazebo_ros_joint_state_publisher.so
   MimicJoint,           // lib roboticsgroup(_upatras)_gazebo_mimic_joint_plugin.so
   HectorGps,            // libhector_gazebo_ros_gps.so
+  HectorImu,            // libhector_gazebo_ros_imu.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);

@@ -220,6 +220,23 @@ inline sensor_msgs::NavSatFix toMsg(const NavSatFixSample& s)
   return m;
 }
 
+inline sensor_msgs::Imu toMsg(const ImuSample& s)
+{
+  sensor_msgs::Imu m;
+  m.header.stamp = rosTime(s.stamp_ns);
+  m.header.frame_id = s.frame_id;
+  m.orientation = toMsg(s.orientation);
+  m.angular_velocity = toMsg(s.angular_velocity);
+  m.linear_acceleration = toMsg(s.linear_acceleration);
+  for (int k = 0; k < 3; ++k)
+  {
+    m.orientation_covariance[4 * k] = s.orientation_covariance_diagonal[k];
+    m.angular_velocity_covariance[4 * k] = s.angular_velocity_covariance_diagonal[k];
+    m.linear_acceleration_covariance[4 * k] = s.linear_acceleration_covariance_diagonal[k];
+  }
+  return m;
+}
+
 inline geometry_msgs::Vector3Stamped toMsg(const Vector3StampedSample& s)
 {
   geometry_msgs::Vector3Stamped m;

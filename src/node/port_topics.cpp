@@ -71,6 +71,7 @@ const PortTransport* transportOf(const Port& port)
       {typeid(OdometrySample), output<OdometrySample, nav_msgs::Odometry>(100)},
       {typeid(TransformSample), output<TransformSample, tf2_msgs::TFMessage>(100)},
       {typeid(NavSatFixSample), output<NavSatFixSample, sensor_msgs::NavSatFix>(10)},
+      {typeid(ImuSample), output<ImuSample, sensor_msgs::Imu>(10)},
       {typeid(Vector3StampedSample), output<Vector3StampedSample, geometry_msgs::Vector3Stamped>(10)},
   };
   const auto& table = port.direction() == Port::Direction::In ? inputs : outputs;

@@ -78,6 +78,22 @@ py::dict navSatFixDict(const NavSatFixSample& s)
   return d;
 }
 
+py::dict imuDict(const ImuSample& s)
+{
+  auto list = [](const urdf::Vector3& v) { return std::vector<double>{v.x, v.y, v.z}; };
+  auto diagonal = [](const std::array<double, 3>& a) { return std::vector<double>(a.begin(), a.end()); };
+  py::dict d;
+  d["stamp"] = double(s.stamp_ns) * 1e-9;
+  d["frame_id"] = s.frame_id;
+  d["orientation"] = std::vector<double>{s.orientation.x, s.orientation.y, s.orientation.z, s.orientation.w};
+  d["angular_velocity"] = list(s.angular_velocity);
+  d["linear_acceleration"] = list(s.linear_acceleration);
+  d["orientation_covariance"] = diagonal(s.orientation_covariance_diagonal);
+  d["angular_velocity_covariance"] = diagonal(s.angular_velocity_covariance_diagonal);
+  d["linear_acceleration_covariance"] = diagonal(s.linear_acceleration_covariance_diagonal);
+  return d;
+}
+
 py::dict vector3StampedDict(const Vector3StampedSample& s)
 {
   py::dict d;
@@ -134,7 +150,8 @@ py::object latestOfPort(const Port& port)
   if (latestAs<JointStateSample>(port, jointStateDict, out) ||
       latestAs<ControllerStateSample>(port, controllerStateDict, out) ||
       latestAs<OdometrySample>(port, odometryDict, out) || latestAs<TransformSample>(port, transformDict, out) ||
-      latestAs<NavSatFixSample>(port, navSatFixDict, out) || latestAs<Vector3StampedSample>(port, vector3StampedDict, out))
+      latestAs<NavSatFixSample>(port, navSatFixDict, out) || latestAs<Vector3StampedSample>(port, vector3StampedDict, out) ||
+      latestAs<ImuSample>(port, imuDict, out))
     return out;
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot read; add it to port_bindings.cpp");
 }

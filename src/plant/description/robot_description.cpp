@@ -42,6 +42,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
       {"libgazebo_ros_range.so", PluginKind::Range},
       {"libhector_gazebo_ros_gps.so", PluginKind::HectorGps},
+      {"libhector_gazebo_ros_imu.so", PluginKind::HectorImu},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
       {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
@@ -60,7 +61,8 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::PlanarMove:
     case PluginKind::JointStatePublisher:
     case PluginKind::MimicJoint:
-    case PluginKind::HectorGps: return true;
+    case PluginKind::HectorGps:
+    case PluginKind::HectorImu: return true;
     default: return false;
   }
 }

@@ -52,6 +52,12 @@ public:
     return out;
   }
 
+  void setGaussianNoise(const urdf::Vector3& noise) { gaussian_noise_ = noise; }
+  // getCurrentBias: the drift now plus the offset.
+  urdf::Vector3 currentBias() const
+  {
+    return urdf::Vector3(current_drift_.x + offset_.x, current_drift_.y + offset_.y, current_drift_.z + offset_.z);
+  }
   const urdf::Vector3& drift() const { return drift_; }
   const urdf::Vector3& gaussianNoise() const { return gaussian_noise_; }
   const urdf::Vector3& currentDrift() const { return current_drift_; }

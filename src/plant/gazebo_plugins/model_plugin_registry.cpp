@@ -10,6 +10,7 @@ std::unique_ptr<ModelPlugin> makeGazeboRosPlanarMove();
 std::unique_ptr<ModelPlugin> makeGazeboRosJointStatePublisher();
 std::unique_ptr<ModelPlugin> makeMimicJointPlugin();
 std::unique_ptr<ModelPlugin> makeHectorGazeboRosGps();
+std::unique_ptr<ModelPlugin> makeHectorGazeboRosImu();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -21,6 +22,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::JointStatePublisher: return makeGazeboRosJointStatePublisher();
     case PluginKind::MimicJoint: return makeMimicJointPlugin();
     case PluginKind::HectorGps: return makeHectorGazeboRosGps();
+    case PluginKind::HectorImu: return makeHectorGazeboRosImu();
     default: return nullptr;
   }
 }
