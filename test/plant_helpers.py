@@ -132,11 +132,8 @@ PLUGIN_URDF = """<robot name="probe">
 </robot>"""
 
 
-def fixture_urdf(name, plugin, **params):
-    """The text of test/fixtures/urdf/<name>.urdf with the parameters of its <plugin name="plugin">
-    replaced or added (None removes one)."""
-    with open(os.path.join(FIXTURES, 'urdf', name + '.urdf')) as f:
-        urdf = f.read()
+def with_plugin_params(urdf, plugin, **params):
+    """URDF text with the parameters of its <plugin name="plugin"> replaced or added (None removes one)."""
     start = urdf.index(f'<plugin name="{plugin}"')
     end = urdf.index('</plugin>', start)
     block = urdf[start:end]
@@ -147,6 +144,12 @@ def fixture_urdf(name, plugin, **params):
         else:
             block += element
     return urdf[:start] + block + urdf[end:]
+
+
+def fixture_urdf(name, plugin, **params):
+    """The text of test/fixtures/urdf/<name>.urdf with its <plugin name="plugin">'s parameters changed."""
+    with open(os.path.join(FIXTURES, 'urdf', name + '.urdf')) as f:
+        return with_plugin_params(f.read(), plugin, **params)
 
 
 # Small robots written for the tests, one per gazebo_plugins drive, as robot makers configure them.
@@ -166,6 +169,20 @@ def skid_bot(**params):
 def planar_bot(**params):
     """planar_bot.urdf (a holonomic base, as agilex bunker) with its planar_move plugin's parameters changed."""
     return fixture_urdf('planar_bot', 'planar_move', **params)
+
+
+def force_based_bot(**params):
+    """planar_bot.urdf moved by hector's force_based_move instead of planar_move (gains for its 5 kg
+    and 0.1 kg m^2, skids of friction 0.05), its parameters changed as the others'."""
+    urdf = planar_bot()
+    start, end = urdf.index('<plugin name="planar_move"'), urdf.index('</plugin>') + len('</plugin>')
+    urdf = urdf[:start] + """<plugin name="force_based_move" filename="libgazebo_ros_force_based_move.so">
+      <commandTopic>cmd_vel</commandTopic><odometryTopic>odom</odometryTopic><odometryFrame>odom</odometryFrame>
+      <odometryRate>25.0</odometryRate><robotBaseFrame>base_footprint</robotBaseFrame>
+      <x_velocity_p_gain>2000</x_velocity_p_gain><y_velocity_p_gain>2000</y_velocity_p_gain>
+      <yaw_velocity_p_gain>50</yaw_velocity_p_gain></plugin>""" + urdf[end:]
+    urdf = urdf.replace('<mu1>0.3</mu1><mu2>0.3</mu2>', '<mu1>0.05</mu1><mu2>0.05</mu2>')
+    return with_plugin_params(urdf, 'force_based_move', **params)
 
 
 def gripper(**params):

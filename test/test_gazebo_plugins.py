@@ -8,7 +8,8 @@ import math
 
 import pytest
 
-from plant_helpers import (DIFF_DRIVE_CONTROLLERS, diff_bot, diff_bot_with_gazebo_ros_control, fixture_urdf, gripper, logged,
+from plant_helpers import (DIFF_DRIVE_CONTROLLERS, diff_bot, diff_bot_with_gazebo_ros_control, fixture_urdf,
+                           force_based_bot, gripper, logged,
                            planar_bot, skid_bot, yaw_of)
 from tianracer_description import bullet_plant
 
@@ -199,7 +200,7 @@ SKID_RADIUS, SKID_SEPARATION = 0.04, 0.26
 
 def test_skid_steer_drives_four_wheels_and_reports_world_odometry():
     world, robot = spawned(skid_bot(), name='skid_bot', namespace='/')
-    assert robot.model_plugins == ['skid_steer_drive', 'gps', 'imu', 'joint_state_publisher'], world.messages()
+    assert robot.model_plugins == ['skid_steer_drive', 'gps', 'imu', 'magnetic', 'joint_state_publisher'], world.messages()
     assert robot.plugin_topics('skid_steer_drive') == {'subscribes': ['cmd_vel'], 'publishes': ['odom', '/tf']}
     start = robot.base_pose()
     assert robot.plugin_send('skid_steer_drive', 'cmd_vel', (0.3, 0.0))
@@ -485,3 +486,42 @@ def test_hector_imu_error_models_biases_and_covariances():
     world, robot = imu_bot(gaussianNoise=0.1)
     assert robot.plugin_latest('imu', 'imu/data')['angular_velocity_covariance'] == pytest.approx([0.01] * 3), \
         'the legacy <gaussianNoise> sets both noises'
+
+
+def test_hector_magnetometer_reads_the_reference_field_in_the_body_frame():
+    horizontal, vertical = 49.0 * math.cos(math.radians(65)), -49.0 * math.sin(math.radians(65))
+    north = (horizontal * math.cos(math.radians(-2)), horizontal * math.sin(math.radians(-2)), vertical)
+    for yaw in (0.0, math.pi / 2):
+        world = bullet_plant.World()
+        world.echo = False
+        robot = world.spawn(skid_bot(), 'skid_bot', namespace='/', pose=(0, 0, 0, 0, 0, yaw))
+        world.step(300)
+        field = robot.plugin_latest('magnetic', 'magnetic')
+        assert field['frame_id'] == 'base_link' and world.time - field['stamp'] <= 0.1 + 1e-9, 'updateRate 10'
+        c, s = math.cos(yaw), math.sin(yaw)
+        expected = [c * north[0] + s * north[1], -s * north[0] + c * north[1], north[2]]  # R^T of the world field
+        assert field['vector'] == pytest.approx(expected, abs=1e-3), f'yaw {yaw}'
+
+
+# hector's libgazebo_ros_force_based_move.so on the holonomic base (force_based_bot).
+
+def test_force_based_move_pushes_the_base_to_the_commanded_twist():
+    world, robot = spawned(force_based_bot(), name='force_based_bot', namespace='/')
+    assert robot.plugin_topics('force_based_move') == {'subscribes': ['cmd_vel'], 'publishes': ['odom', '/tf']}
+    robot.plugin_send('force_based_move', 'cmd_vel', (0.2, 0.1, 0.3))
+    world.step(3000)
+    linear, angular = robot.base_twist()
+    heading = yaw_of(robot.base_pose())
+    forward = math.cos(heading) * linear[0] + math.sin(heading) * linear[1]
+    sideways = math.cos(heading) * linear[1] - math.sin(heading) * linear[0]
+    assert forward == pytest.approx(0.2, abs=0.01) and sideways == pytest.approx(0.1, abs=0.01)
+    assert angular[2] == pytest.approx(0.3, abs=0.02)
+    odom = robot.plugin_latest('force_based_move', 'odom')
+    assert world.time - odom['stamp'] <= 0.041, 'odometryRate 25'
+    assert odom['twist'][:2] == pytest.approx([forward, 0.0], abs=0.01), 'forward speed only, as upstream'
+    assert odom['angular'] == pytest.approx(0.3, abs=0.02)
+    assert odom['heading'] == pytest.approx(math.remainder(heading, 2 * math.pi), abs=0.05), 'the yaw rate integrated'
+    assert odom['pose_covariance'] == pytest.approx([0.001, 0.001, 1e12, 1e12, 1e12, 100.0]), 'turning: yaw 100'
+    world, robot = spawned(force_based_bot(publishOdometryTf='false', robotBaseFrame='chassis'), name='force_based_bot')
+    assert robot.model_plugins == []
+    assert any("<robotBaseFrame> names 'chassis', which is no link" in m for m in logged(world, 'ERROR'))

@@ -67,6 +67,9 @@ public:
   // The seed of the plugin's noise generator: the same on every run, from the model's and the
   // plugin's names, as the sensors' generators are seeded.
   virtual uint32_t noiseSeed(const ModelPluginDescription& plugin) const = 0;
+  // Link::AddForce and AddTorque: a force at the centre of mass of `link`'s body and a torque, both
+  // in world axes, for the coming step only. An unknown link or a non-finite value does nothing.
+  virtual void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) = 0;
   // The world's gravity (m/s^2, world frame).
   virtual urdf::Vector3 gravity() const = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.

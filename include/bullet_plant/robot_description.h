@@ -47,6 +47,8 @@ enum class PluginKind
   MimicJoint,           // lib roboticsgroup(_upatras)_gazebo_mimic_joint_plugin.so
   HectorGps,            // libhector_gazebo_ros_gps.so
   HectorImu,            // libhector_gazebo_ros_imu.so
+  HectorMagnetic,       // libhector_gazebo_ros_magnetic.so
+  ForceBasedMove,       // libgazebo_ros_force_based_move.so (hector's omnidirectional base)
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);

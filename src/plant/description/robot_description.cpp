@@ -43,6 +43,8 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_range.so", PluginKind::Range},
       {"libhector_gazebo_ros_gps.so", PluginKind::HectorGps},
       {"libhector_gazebo_ros_imu.so", PluginKind::HectorImu},
+      {"libhector_gazebo_ros_magnetic.so", PluginKind::HectorMagnetic},
+      {"libgazebo_ros_force_based_move.so", PluginKind::ForceBasedMove},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
       {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
@@ -62,7 +64,9 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::JointStatePublisher:
     case PluginKind::MimicJoint:
     case PluginKind::HectorGps:
-    case PluginKind::HectorImu: return true;
+    case PluginKind::HectorImu:
+    case PluginKind::HectorMagnetic:
+    case PluginKind::ForceBasedMove: return true;
     default: return false;
   }
 }

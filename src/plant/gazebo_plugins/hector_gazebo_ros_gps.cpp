@@ -5,8 +5,6 @@
 // defaults, the phase-locked update timer and the formulas are upstream's (docs/model_plugins.md).
 #include <cmath>
 
-#include "bullet_plant/log.h"
-#include "bullet_plant/model_plugin.h"
 #include "bullet_plant/plugin_messages.h"
 #include "gazebo_plugins/hector_sensor_model.h"
 
@@ -24,13 +22,8 @@ public:
   bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t time_ns) override
   {
     context_ = &context;
-    link_ = d.text("bodyName", context.rootLink());
-    if (!context.robotDescription().model->getLink(link_))
-    {
-      context.log().error("plugin '" + d.name + "' (" + d.filename + ") <bodyName> names '" + link_ +
-                          "', which is no link of '" + context.modelName() + "'; the plugin is not loaded");
+    if (!readHectorBodyName(d, context, link_))
       return false;
-    }
     fix_.frame_id = velocity_.frame_id = d.text("frameId", "/world");  // as given: upstream resolves no prefix
     reference_latitude_ = d.number("referenceLatitude", 49.9);
     reference_longitude_ = d.number("referenceLongitude", 8.9);

@@ -8,8 +8,6 @@
 #include <cmath>
 
 #include "bullet_plant/geometry.h"
-#include "bullet_plant/log.h"
-#include "bullet_plant/model_plugin.h"
 #include "bullet_plant/plugin_messages.h"
 #include "gazebo_plugins/hector_sensor_model.h"
 
@@ -25,13 +23,8 @@ public:
   bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t time_ns) override
   {
     context_ = &context;
-    link_ = d.text("bodyName", context.rootLink());
-    if (!context.robotDescription().model->getLink(link_))
-    {
-      context.log().error("plugin '" + d.name + "' (" + d.filename + ") <bodyName> names '" + link_ +
-                          "', which is no link of '" + context.modelName() + "'; the plugin is not loaded");
+    if (!readHectorBodyName(d, context, link_))
       return false;
-    }
     imu_.frame_id = bias_.frame_id = d.text("frameId", link_);
     const std::string topic = d.text("topicName", "imu");
     accel_model_.load(d, "accel");

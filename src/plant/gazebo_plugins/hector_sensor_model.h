@@ -14,10 +14,24 @@
 
 #include <urdf_model/pose.h>
 
+#include "bullet_plant/log.h"
+#include "bullet_plant/model_plugin.h"
 #include "bullet_plant/robot_description.h"
 
 namespace bullet_plant
 {
+// <bodyName>, the link every hector model plugin measures (default: the model's root link); false,
+// with the error logged naming the plugin, for a name that is no link of the model.
+inline bool readHectorBodyName(const ModelPluginDescription& d, ModelPluginContext& context, std::string& link)
+{
+  link = d.text("bodyName", context.rootLink());
+  if (context.robotDescription().model->getLink(link))
+    return true;
+  context.log().error("plugin '" + d.name + "' (" + d.filename + ") <bodyName> names '" + link + "', which is no link of '" +
+                      context.modelName() + "'; the plugin is not loaded");
+  return false;
+}
+
 class HectorSensorModel
 {
 public:

@@ -11,6 +11,8 @@ std::unique_ptr<ModelPlugin> makeGazeboRosJointStatePublisher();
 std::unique_ptr<ModelPlugin> makeMimicJointPlugin();
 std::unique_ptr<ModelPlugin> makeHectorGazeboRosGps();
 std::unique_ptr<ModelPlugin> makeHectorGazeboRosImu();
+std::unique_ptr<ModelPlugin> makeHectorGazeboRosMagnetic();
+std::unique_ptr<ModelPlugin> makeGazeboRosForceBasedMove();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -23,6 +25,8 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::MimicJoint: return makeMimicJointPlugin();
     case PluginKind::HectorGps: return makeHectorGazeboRosGps();
     case PluginKind::HectorImu: return makeHectorGazeboRosImu();
+    case PluginKind::HectorMagnetic: return makeHectorGazeboRosMagnetic();
+    case PluginKind::ForceBasedMove: return makeGazeboRosForceBasedMove();
     default: return nullptr;
   }
 }

@@ -100,6 +100,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   bool jointState(const std::string& joint, double& position, double& velocity) const override;
   LinkMotion linkMotion(const std::string& link) const override { return linkMotion(link, urdf::Pose()); }
   void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) override;
+  void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) override;
   uint32_t noiseSeed(const ModelPluginDescription& plugin) const override;
   double stepSize() const override;
   const Param& params() const override;

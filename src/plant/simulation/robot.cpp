@@ -309,6 +309,27 @@ void Robot::Internals::setModelVelocity(const urdf::Vector3& linear, const urdf:
 
 uint32_t Robot::Internals::noiseSeed(const ModelPluginDescription& plugin) const { return seedFor(name + "/" + plugin.name); }
 
+void Robot::Internals::addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque)
+{
+  auto it = multibody.link_in_body.find(link);
+  if (it == multibody.link_in_body.end() || !std::isfinite(force.x + force.y + force.z + torque.x + torque.y + torque.z))
+    return;
+  btMultiBody& mb = *multibody.bullet;
+  const btVector3 f(btScalar(force.x), btScalar(force.y), btScalar(force.z));
+  const btVector3 t(btScalar(torque.x), btScalar(torque.y), btScalar(torque.z));
+  const int body = it->second.first;
+  if (body == 0)
+  {
+    mb.addBaseForce(f);
+    mb.addBaseTorque(t);
+  }
+  else
+  {
+    mb.addLinkForce(body - 1, f);
+    mb.addLinkTorque(body - 1, t);
+  }
+}
+
 double Robot::Internals::stepSize() const { return world->step_s; }
 
 const Param& Robot::Internals::params() const { return world->params; }
