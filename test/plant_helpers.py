@@ -185,6 +185,16 @@ def force_based_bot(**params):
     return with_plugin_params(urdf, 'force_based_move', **params)
 
 
+def force_bot(**params):
+    """planar_bot.urdf pushed by gazebo_plugins' force plugin (name 'push', Wrench on 'force' to
+    base_link) instead of planar_move, its parameters changed as the others'."""
+    urdf = planar_bot()
+    start, end = urdf.index('<plugin name="planar_move"'), urdf.index('</plugin>') + len('</plugin>')
+    block = '<plugin name="push" filename="libgazebo_ros_force.so"><bodyName>base_link</bodyName>' \
+            '<topicName>force</topicName></plugin>'
+    return with_plugin_params(urdf[:start] + block + urdf[end:], 'push', **params)
+
+
 def gripper(**params):
     """gripper.urdf (two fingers, the second following the first, as turtlebot3_manipulation's) with
     its mimic joint plugin's parameters changed."""

@@ -9,8 +9,7 @@ import math
 import pytest
 
 from plant_helpers import (DIFF_DRIVE_CONTROLLERS, diff_bot, diff_bot_with_gazebo_ros_control, fixture_urdf,
-                           force_based_bot, gripper, logged,
-                           planar_bot, skid_bot, yaw_of)
+                           force_based_bot, force_bot, gripper, logged, planar_bot, skid_bot, yaw_of)
 from tianracer_description import bullet_plant
 
 WHEEL_RADIUS, SEPARATION = 0.035, 0.30
@@ -525,3 +524,21 @@ def test_force_based_move_pushes_the_base_to_the_commanded_twist():
     world, robot = spawned(force_based_bot(publishOdometryTf='false', robotBaseFrame='chassis'), name='force_based_bot')
     assert robot.model_plugins == []
     assert any("<robotBaseFrame> names 'chassis', which is no link" in m for m in logged(world, 'ERROR'))
+
+
+# gazebo_plugins' libgazebo_ros_force.so: a Wrench on a topic pushes a link every step.
+
+def test_force_plugin_applies_the_last_wrench_every_step():
+    world, robot = spawned(force_bot(), name='pushed', namespace='/')
+    assert robot.plugin_topics('push') == {'subscribes': ['force'], 'publishes': []}
+    z0 = robot.base_pose()[2]
+    assert robot.plugin_send('push', 'force', (0, 0, 60.0, 0, 0, 0)), '(fx, fy, fz, tx, ty, tz)'
+    world.step(500)
+    # 60 N up on 5 kg against 49 N of weight: 2.2 m/s^2 for 0.5 s.
+    assert robot.base_pose()[2] - z0 == pytest.approx(0.5 * (60 / 5 - 9.8) * 0.5 ** 2, rel=0.05)
+    assert not robot.plugin_send('push', 'force', (math.nan, 0, 0, 0, 0, 0)), 'a NaN wrench is refused'
+    world.step(100)
+    assert robot.base_twist()[0][2] > 1.0, 'still pushed by the last good wrench'
+    world, robot = spawned(force_bot(topicName=None), name='pushed')
+    assert robot.model_plugins == [] and any("plugin 'push' (libgazebo_ros_force.so) has no <topicName>" in m
+                                             for m in logged(world, 'ERROR'))

@@ -5,14 +5,14 @@ gazebo_ros_control and diff_drive_controller started by the spawner. A skid-stee
 GPS and IMU) and a holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
 first by the mimic joint plugin's PID, its gains from the parameter server. gazebo_ros_range's
 sensor_msgs/Range against a wall at a known distance. A turtlebot3-like diff-drive robot and the
-tutorial's car together in one world, each driven on its own topics."""
+tutorial's car together in one world, each driven on its own topics. gazebo_ros_force's Wrench topic."""
 import os
 
 import pytest
 import yaml
 
-from plant_helpers import (DIFF_BOT, DIFF_DRIVE_CONTROLLERS, box_model, diff_bot_with_gazebo_ros_control, gripper,
-                           planar_bot, sdf_world, skid_bot)
+from plant_helpers import (DIFF_BOT, DIFF_DRIVE_CONTROLLERS, box_model, diff_bot_with_gazebo_ros_control, force_bot,
+                           gripper, planar_bot, sdf_world, skid_bot)
 from tianracer_description.ros_harness import spawn_urdf, start_plant
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
@@ -258,3 +258,25 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
     assert seen['scan_hits'] > 100, 'the arena walls and the car around it'
     assert seen['tb3_tf_x'] == pytest.approx(seen['after']['tb3'][0], abs=0.15), \
         "the diff drive's frames carry its namespace: tb3/odom -> tb3/base_footprint"
+
+
+def test_force_plugin_takes_its_wrench_from_ros(ros, tmp_path):
+    (tmp_path / 'pushed.urdf').write_text(force_bot())
+    plant = start_plant(ros)
+    ros.run(['rosparam', 'set', '/robot_description', '--textfile', str(tmp_path / 'pushed.urdf')])
+    spawn_urdf(ros, plant, '/robot_description', 'pushed')
+    seen = ros.python("""
+        import json, rospy
+        from gazebo_msgs.srv import GetModelState
+        from geometry_msgs.msg import Wrench
+        rospy.init_node('probe')
+        state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
+        pub = rospy.Publisher('/force', Wrench, queue_size=1, latch=True)
+        wrench = Wrench()
+        wrench.force.z = 60.0
+        before = state('pushed', '').pose.position.z
+        pub.publish(wrench)
+        rospy.sleep(1.0)
+        print(json.dumps({'rise': state('pushed', '').pose.position.z - before}))
+    """, timeout=60)
+    assert seen['rise'] > 0.3, 'geometry_msgs/Wrench on /force lifted the 5 kg base (2.2 m/s^2 net)'

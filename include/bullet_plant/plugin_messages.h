@@ -11,6 +11,12 @@
 
 namespace bullet_plant
 {
+// geometry_msgs/Wrench, as a command: a force (N) and a torque (N m).
+struct WrenchCommand
+{
+  urdf::Vector3 force, torque;
+};
+
 // sensor_msgs/NavSatFix with a diagonal covariance (COVARIANCE_TYPE_DIAGONAL_KNOWN).
 struct NavSatFixSample
 {

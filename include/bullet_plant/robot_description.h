@@ -49,6 +49,7 @@ enum class PluginKind
   HectorImu,            // libhector_gazebo_ros_imu.so
   HectorMagnetic,       // libhector_gazebo_ros_magnetic.so
   ForceBasedMove,       // libgazebo_ros_force_based_move.so (hector's omnidirectional base)
+  Force,                // libgazebo_ros_force.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);

@@ -2,6 +2,7 @@
 
 #include <typeindex>
 
+#include <geometry_msgs/Wrench.h>
 #include <std_msgs/Float64.h>
 #include <std_msgs/Float64MultiArray.h>
 
@@ -61,6 +62,12 @@ const PortTransport* transportOf(const Port& port)
       {typeid(std::vector<double>), input<std::vector<double>, std_msgs::Float64MultiArray>(
                                         [](const std_msgs::Float64MultiArray& m) { return m.data; },
                                         [](const std::vector<double>&) { return "a command (the controller logs why)"; })},
+      {typeid(WrenchCommand), input<WrenchCommand, geometry_msgs::Wrench>(
+                                  [](const geometry_msgs::Wrench& m) {
+                                    return WrenchCommand{urdf::Vector3(m.force.x, m.force.y, m.force.z),
+                                                         urdf::Vector3(m.torque.x, m.torque.y, m.torque.z)};
+                                  },
+                                  [](const WrenchCommand&) { return "a non-finite wrench"; })},
       {typeid(TwistCommand), input<TwistCommand, geometry_msgs::Twist>(
                                  [](const geometry_msgs::Twist& m) { return TwistCommand{m.linear.x, m.angular.z, m.linear.y}; },
                                  [](const TwistCommand&) { return "a velocity command (the controller logs why)"; })},

@@ -141,6 +141,14 @@ bool deliverToPort(Port& port, py::object value)
     throw py::value_error("port '" + port.topic() + "' takes (linear_x, angular_z) or (linear_x, linear_y, angular_z); got " +
                           std::to_string(twist.size()) + " numbers");
   }
+  if (auto* in = dynamic_cast<InputPort<WrenchCommand>*>(&port))
+  {
+    const auto w = value.cast<std::vector<double>>();  // (fx, fy, fz, tx, ty, tz)
+    if (w.size() != 6)
+      throw py::value_error("port '" + port.topic() + "' takes a wrench (fx, fy, fz, tx, ty, tz); got " +
+                            std::to_string(w.size()) + " numbers");
+    return in->deliver(WrenchCommand{urdf::Vector3(w[0], w[1], w[2]), urdf::Vector3(w[3], w[4], w[5])});
+  }
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot send; add it to port_bindings.cpp");
 }
 

@@ -45,6 +45,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libhector_gazebo_ros_imu.so", PluginKind::HectorImu},
       {"libhector_gazebo_ros_magnetic.so", PluginKind::HectorMagnetic},
       {"libgazebo_ros_force_based_move.so", PluginKind::ForceBasedMove},
+      {"libgazebo_ros_force.so", PluginKind::Force},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
       {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
@@ -66,7 +67,8 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::HectorGps:
     case PluginKind::HectorImu:
     case PluginKind::HectorMagnetic:
-    case PluginKind::ForceBasedMove: return true;
+    case PluginKind::ForceBasedMove:
+    case PluginKind::Force: return true;
     default: return false;
   }
 }

@@ -13,6 +13,7 @@ std::unique_ptr<ModelPlugin> makeHectorGazeboRosGps();
 std::unique_ptr<ModelPlugin> makeHectorGazeboRosImu();
 std::unique_ptr<ModelPlugin> makeHectorGazeboRosMagnetic();
 std::unique_ptr<ModelPlugin> makeGazeboRosForceBasedMove();
+std::unique_ptr<ModelPlugin> makeGazeboRosForce();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -27,6 +28,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::HectorImu: return makeHectorGazeboRosImu();
     case PluginKind::HectorMagnetic: return makeHectorGazeboRosMagnetic();
     case PluginKind::ForceBasedMove: return makeGazeboRosForceBasedMove();
+    case PluginKind::Force: return makeGazeboRosForce();
     default: return nullptr;
   }
 }

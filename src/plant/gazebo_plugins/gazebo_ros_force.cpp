@@ -1,0 +1,57 @@
+// gazebo_plugins' libgazebo_ros_force.so (ROS 1 Noetic): the last geometry_msgs/Wrench on
+// <topicName> applied to <bodyName> every step, force and torque in world axes (Link::AddForce,
+// AddTorque). Both elements are required, as upstream (docs/model_plugins.md).
+#include <cmath>
+
+#include "bullet_plant/log.h"
+#include "bullet_plant/model_plugin.h"
+#include "bullet_plant/plugin_messages.h"
+
+namespace bullet_plant
+{
+namespace
+{
+class GazeboRosForce : public ModelPlugin
+{
+public:
+  bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t) override
+  {
+    context_ = &context;
+    const std::string what = "plugin '" + d.name + "' (" + d.filename + ")";
+    for (const char* required : {"bodyName", "topicName"})
+      if (d.text(required, "").empty())
+      {
+        context.log().error(what + " has no <" + std::string(required) +
+                            "> (\"missing, cannot proceed\"): name the link to push and the Wrench topic; "
+                            "the plugin is not loaded");
+        return false;
+      }
+    link_ = d.text("bodyName", "");
+    if (!context.robotDescription().model->getLink(link_))
+    {
+      context.log().error(what + " <bodyName> names '" + link_ + "', which is no link of '" + context.modelName() +
+                          "'; the plugin is not loaded");
+      return false;
+    }
+    subscribe<WrenchCommand>(d.text("topicName", ""), [this](const WrenchCommand& w) {
+      if (!std::isfinite(w.force.x + w.force.y + w.force.z + w.torque.x + w.torque.y + w.torque.z))
+        return false;  // Gazebo would push the link to NaN: the plant keeps the last wrench
+      wrench_ = w;
+      return true;
+    });
+    return true;
+  }
+
+  // Upstream keeps the wrench over a reset; so does the plant.
+  void OnUpdate(int64_t) override { context_->addLinkWrench(link_, wrench_.force, wrench_.torque); }
+
+private:
+  ModelPluginContext* context_ = nullptr;
+  std::string link_;
+  WrenchCommand wrench_;
+};
+}  // namespace
+
+std::unique_ptr<ModelPlugin> makeGazeboRosForce() { return std::unique_ptr<ModelPlugin>(new GazeboRosForce()); }
+
+}  // namespace bullet_plant
