@@ -21,43 +21,16 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test'))
 from plant_helpers import DIFF_BOT  # noqa: E402  (the test fixture is the benchmark's robot)
-from ros_plant_bench import cpu_seconds, plant_pid  # noqa: E402
+from ros_plant_bench import cpu_seconds, driving_probe, plant_pid  # noqa: E402
 from tianracer_description.ros_harness import RosSystem, spawn_urdf, start_plant  # noqa: E402
 
 ROUNDS = 3
 WINDOW = 30.0
 ARENA = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'worlds', 'arena.world')
 
-PROBE = """
-import json, threading, time, rospy
-from geometry_msgs.msg import Twist
-from nav_msgs.msg import Odometry
-from rosgraph_msgs.msg import Clock
-from sensor_msgs.msg import Imu, JointState, LaserScan
-from tf2_msgs.msg import TFMessage
-rospy.init_node('bench_probe', anonymous=True)
-clock, counts = [], {{}}
-rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()))
-def count(topic):
-    return lambda m: counts.__setitem__(topic, counts.get(topic, 0) + 1)
-if {robot}:
-    for topic, kind in (('/scan', LaserScan), ('/imu', Imu), ('/odom', Odometry), ('/joint_states', JointState),
-                        ('/tf', TFMessage)):
-        rospy.Subscriber(topic, kind, count(topic))
-    drive = rospy.Publisher('/cmd_vel', Twist, queue_size=1)
-    def keep_driving():
-        twist = Twist()
-        twist.linear.x, twist.angular.z = 0.15, 0.3
-        while not rospy.is_shutdown():
-            drive.publish(twist)
-            time.sleep(0.1)
-    threading.Thread(target=keep_driving, daemon=True).start()
-time.sleep(3.0)
-start_wall, start_sim, start_counts = time.monotonic(), clock[-1], dict(counts)
-time.sleep({window})
-wall, sim = time.monotonic() - start_wall, clock[-1] - start_sim
-print(json.dumps(dict(rtf=sim / wall, rates={{t: (n - start_counts.get(t, 0)) / sim for t, n in counts.items()}})))
-"""
+ROBOT_TOPICS = [('/scan', 'sensor_msgs.msg', 'LaserScan'), ('/imu', 'sensor_msgs.msg', 'Imu'),
+                ('/odom', 'nav_msgs.msg', 'Odometry'), ('/joint_states', 'sensor_msgs.msg', 'JointState'),
+                ('/tf', 'tf2_msgs.msg', 'TFMessage')]
 
 
 def without_imu(urdf):
@@ -81,7 +54,9 @@ def one_case(urdf):
                 ros.run(['rosservice', 'call', '--wait', '/gazebo/get_physics_properties'], timeout=60)
             pid = plant_pid(plant.pid)
             cpu_before, wall_before = cpu_seconds(pid), time.monotonic()
-            probe = ros.python(PROBE.format(robot=bool(urdf), window=WINDOW), timeout=WINDOW + 60)
+            probe_script = (driving_probe(WINDOW, '/cmd_vel', 0.15, 0.3, ROBOT_TOPICS, settle=3.0) if urdf
+                            else driving_probe(WINDOW, settle=3.0))
+            probe = ros.python(probe_script, timeout=WINDOW + 60)
             probe['cpu'] = (cpu_seconds(pid) - cpu_before) / (time.monotonic() - wall_before)
             return probe
         finally:

@@ -24,30 +24,41 @@ WINDOW = 60.0        # s of wall time for the real time factor at real time
 FAST_WINDOW = 10.0   # s of wall time as fast as possible
 CONTROLLERS = len(TUTORIAL_CONTROLLERS)
 
-LOAD_PROBE = """
-import json, threading, time, rospy
+# A probe that drives `drive_topic` with Twist(linear x, angular z) at 10 Hz, subscribes to `topics`
+# ((topic, 'package.msg', 'Type'), ...), waits SETTLE s, then measures over `window` s of wall time:
+# the real time factor from /clock and each topic's messages per simulated second.
+DRIVING_PROBE = """
+import importlib, json, threading, time, rospy
 from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Clock
-from sensor_msgs.msg import LaserScan
 rospy.init_node('bench_probe', anonymous=True)
-clock = []
+clock, counts = [], {{}}
 rospy.Subscriber('/clock', Clock, lambda m: clock.append(m.clock.to_sec()))
-scans = []
-rospy.Subscriber('/scan', LaserScan, lambda m: scans.append(1))
-drive = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
-def keep_driving():
-    twist = Twist()
-    twist.linear.x, twist.angular.z = 1.0, 0.5
-    while not rospy.is_shutdown():
-        drive.publish(twist)
-        time.sleep(0.1)
-threading.Thread(target=keep_driving, daemon=True).start()
-time.sleep(2.0)
-start_wall, start_sim, start_scans = time.monotonic(), clock[-1], len(scans)
-time.sleep({window})
+def count(topic):
+    return lambda m: counts.__setitem__(topic, counts.get(topic, 0) + 1)
+for topic, module, kind in {topics!r}:
+    rospy.Subscriber(topic, getattr(importlib.import_module(module), kind), count(topic))
+if {drive_topic!r}:
+    drive = rospy.Publisher({drive_topic!r}, Twist, queue_size=1)
+    def keep_driving():
+        twist = Twist()
+        twist.linear.x, twist.angular.z = {linear!r}, {angular!r}
+        while not rospy.is_shutdown():
+            drive.publish(twist)
+            time.sleep(0.1)
+    threading.Thread(target=keep_driving, daemon=True).start()
+time.sleep({settle!r})
+start_wall, start_sim, start_counts = time.monotonic(), clock[-1], dict(counts)
+time.sleep({window!r})
 wall, sim = time.monotonic() - start_wall, clock[-1] - start_sim
-print(json.dumps(dict(rtf=sim / wall, scans_per_sim_s=(len(scans) - start_scans) / sim)))
+print(json.dumps(dict(rtf=sim / wall, rates={{t: (n - start_counts.get(t, 0)) / sim for t, n in counts.items()}})))
 """
+
+
+def driving_probe(window, drive_topic=None, linear=0.0, angular=0.0, topics=(), settle=2.0):
+    """The DRIVING_PROBE script for ros.python: prints {"rtf": ..., "rates": {topic: per sim s}}."""
+    return DRIVING_PROBE.format(window=window, drive_topic=drive_topic, linear=linear, angular=angular,
+                                topics=list(topics), settle=settle)
 
 
 def plant_pid(launch_pid):
@@ -107,9 +118,10 @@ def one_round(real_time_factor):
             pid = plant_pid(launch.pid)
             window = WINDOW if real_time_factor is None else FAST_WINDOW
             cpu_before, wall_before = cpu_seconds(pid), time.monotonic()
-            load = ros.python(LOAD_PROBE.format(window=window), timeout=window + 60)
+            load = ros.python(driving_probe(window, '/tianracer/cmd_vel', 1.0, 0.5,
+                                            [('/scan', 'sensor_msgs.msg', 'LaserScan')]), timeout=window + 60)
             cpu = (cpu_seconds(pid) - cpu_before) / (time.monotonic() - wall_before)
-            return dict(startup=startup, rtf=load['rtf'], cpu=cpu, scans_per_sim_s=load['scans_per_sim_s'])
+            return dict(startup=startup, rtf=load['rtf'], cpu=cpu, scans_per_sim_s=load['rates'].get('/scan', 0.0))
         finally:
             ros.close()
 

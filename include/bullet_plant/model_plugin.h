@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <string>
 
@@ -106,6 +107,19 @@ public:
 private:
   const ModelPluginDescription* description_ = nullptr;
 };
+
+// "plugin 'NAME' (FILENAME)": how every message about a model plugin names it.
+inline std::string pluginLabel(const ModelPluginDescription& d) { return "plugin '" + d.name + "' (" + d.filename + ")"; }
+
+// True when every one of `elements` has text; otherwise false with the first missing one logged with
+// `purpose` (what to put there) and that the plugin is not loaded, as upstream refuses to load.
+bool requireElements(const ModelPluginDescription& d, ModelPluginContext& context,
+                     std::initializer_list<const char*> elements, const std::string& purpose);
+
+// True when `link`, read from `element`, is a link of the model; otherwise false with the error
+// logged (`role` says what the plugin wanted it for) and that the plugin is not loaded.
+bool requireLink(const ModelPluginDescription& d, ModelPluginContext& context, const std::string& element,
+                 const std::string& link, const std::string& role = "");
 
 // The plugin a kind names; null for kinds that are no model plugin.
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind);

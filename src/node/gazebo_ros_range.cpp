@@ -9,6 +9,7 @@
 
 #include <sensor_msgs/Range.h>
 
+#include "bullet_plant/rate_gate.h"
 #include "msg_conversions.h"
 #include "ros_names.h"
 #include "sensor_plugin.h"
@@ -33,7 +34,7 @@ public:
     range_.max_range = float(d.range_max);
     gaussian_noise_ = d.pluginNumber("gaussianNoise", 0.0);
     const double update_rate = d.pluginNumber("updateRate", 0.0);
-    update_period_ns_ = update_rate > 0.0 ? int64_t(std::llround(1e9 / update_rate)) : 0;
+    update_period_ns_ = periodNsOfRate(update_rate);
     range_pub_ = nh.advertise<sensor_msgs::Range>(
         requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' topicName"), 1);
   }

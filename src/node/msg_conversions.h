@@ -15,6 +15,7 @@
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/NavSatFix.h>
+#include <std_msgs/Header.h>
 #include <tf2_msgs/TFMessage.h>
 #include <urdf_model/pose.h>
 
@@ -27,6 +28,14 @@
 
 namespace bullet_plant
 {
+inline std_msgs::Header rosHeader(int64_t stamp_ns, const std::string& frame_id = "")
+{
+  std_msgs::Header header;
+  header.stamp = rosTime(stamp_ns);
+  header.frame_id = frame_id;
+  return header;
+}
+
 inline geometry_msgs::Vector3 toMsg(const urdf::Vector3& v)
 {
   geometry_msgs::Vector3 m;
@@ -92,8 +101,7 @@ inline nav_msgs::Odometry odometryMessage(int64_t stamp_ns, const std::string& f
                                           const urdf::Vector3& angular, double variance = 0.0)
 {
   nav_msgs::Odometry odom;
-  odom.header.stamp = rosTime(stamp_ns);
-  odom.header.frame_id = frame;
+  odom.header = rosHeader(stamp_ns, frame);
   odom.child_frame_id = child;
   odom.pose.pose = toMsg(pose);
   odom.twist.twist.linear = toMsg(linear);
@@ -120,8 +128,7 @@ inline geometry_msgs::TransformStamped odometryTransform(const nav_msgs::Odometr
 inline sensor_msgs::Imu toMsg(const ImuReading& r, const std::string& frame_id)
 {
   sensor_msgs::Imu m;
-  m.header.stamp = rosTime(r.stamp_ns);
-  m.header.frame_id = frame_id;
+  m.header = rosHeader(r.stamp_ns, frame_id);
   m.orientation = toMsg(r.orientation);
   m.angular_velocity = toMsg(r.angular_velocity);
   m.linear_acceleration = toMsg(r.linear_acceleration);
@@ -138,8 +145,7 @@ inline nav_msgs::Odometry toMsg(const GroundTruthReading& r, const std::string& 
 inline sensor_msgs::LaserScan toMsg(const LaserScan& s, const std::string& frame_id)
 {
   sensor_msgs::LaserScan m;
-  m.header.stamp = rosTime(s.stamp_ns);
-  m.header.frame_id = frame_id;
+  m.header = rosHeader(s.stamp_ns, frame_id);
   m.angle_min = s.angle_min;
   m.angle_max = s.angle_max;
   m.angle_increment = s.angle_increment;
@@ -154,7 +160,7 @@ inline sensor_msgs::LaserScan toMsg(const LaserScan& s, const std::string& frame
 inline sensor_msgs::JointState toMsg(const JointStateSample& s)
 {
   sensor_msgs::JointState msg;
-  msg.header.stamp = rosTime(s.stamp_ns);
+  msg.header = rosHeader(s.stamp_ns);
   msg.name = s.name;
   msg.position = s.position;
   msg.velocity = s.velocity;
@@ -165,7 +171,7 @@ inline sensor_msgs::JointState toMsg(const JointStateSample& s)
 inline control_msgs::JointControllerState toMsg(const ControllerStateSample& s)
 {
   control_msgs::JointControllerState msg;
-  msg.header.stamp = rosTime(s.stamp_ns);
+  msg.header = rosHeader(s.stamp_ns);
   msg.set_point = s.set_point;
   msg.process_value = s.process_value;
   msg.process_value_dot = s.process_value_dot;
@@ -194,8 +200,7 @@ inline nav_msgs::Odometry toMsg(const OdometrySample& s)
 inline tf2_msgs::TFMessage toMsg(const TransformSample& s)
 {
   geometry_msgs::TransformStamped tf;
-  tf.header.stamp = rosTime(s.stamp_ns);
-  tf.header.frame_id = s.frame_id;
+  tf.header = rosHeader(s.stamp_ns, s.frame_id);
   tf.child_frame_id = s.child_frame_id;
   tf.transform.translation = toMsg(s.pose.position);
   tf.transform.rotation = toMsg(s.pose.rotation);
@@ -207,8 +212,7 @@ inline tf2_msgs::TFMessage toMsg(const TransformSample& s)
 inline sensor_msgs::NavSatFix toMsg(const NavSatFixSample& s)
 {
   sensor_msgs::NavSatFix m;
-  m.header.stamp = rosTime(s.stamp_ns);
-  m.header.frame_id = s.frame_id;
+  m.header = rosHeader(s.stamp_ns, s.frame_id);
   m.status.status = int8_t(s.status);
   m.status.service = uint16_t(s.service);
   m.latitude = s.latitude;
@@ -223,8 +227,7 @@ inline sensor_msgs::NavSatFix toMsg(const NavSatFixSample& s)
 inline sensor_msgs::Imu toMsg(const ImuSample& s)
 {
   sensor_msgs::Imu m;
-  m.header.stamp = rosTime(s.stamp_ns);
-  m.header.frame_id = s.frame_id;
+  m.header = rosHeader(s.stamp_ns, s.frame_id);
   m.orientation = toMsg(s.orientation);
   m.angular_velocity = toMsg(s.angular_velocity);
   m.linear_acceleration = toMsg(s.linear_acceleration);
@@ -240,8 +243,7 @@ inline sensor_msgs::Imu toMsg(const ImuSample& s)
 inline geometry_msgs::Vector3Stamped toMsg(const Vector3StampedSample& s)
 {
   geometry_msgs::Vector3Stamped m;
-  m.header.stamp = rosTime(s.stamp_ns);
-  m.header.frame_id = s.frame_id;
+  m.header = rosHeader(s.stamp_ns, s.frame_id);
   m.vector = toMsg(s.vector);
   return m;
 }

@@ -38,6 +38,24 @@ inline py::array_t<double> poseArray(const urdf::Pose& p)
                                                     p.rotation.y, p.rotation.z, p.rotation.w}.data());
 }
 
+// A stamped message's dict as every reading's starts: "stamp" (s) and, for a message with a header
+// frame, "frame_id".
+inline py::dict stampedDict(int64_t stamp_ns)
+{
+  py::dict d;
+  d["stamp"] = double(stamp_ns) * 1e-9;
+  return d;
+}
+inline py::dict stampedDict(int64_t stamp_ns, const std::string& frame_id)
+{
+  py::dict d = stampedDict(stamp_ns);
+  d["frame_id"] = frame_id;
+  return d;
+}
+
+inline std::vector<double> xyzList(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+inline std::vector<double> xyzwList(const urdf::Rotation& q) { return {q.x, q.y, q.z, q.w}; }
+
 // Raised by a Robot or ControllerManager handle whose robot World.remove took out.
 struct RobotRemoved : std::runtime_error
 {

@@ -15,8 +15,7 @@ namespace
 {
 py::dict jointStateDict(const JointStateSample& s)
 {
-  py::dict d;
-  d["stamp"] = s.stamp_ns * 1e-9;
+  py::dict d = stampedDict(s.stamp_ns);
   d["name"] = s.name;
   d["position"] = s.position;
   d["velocity"] = s.velocity;
@@ -26,8 +25,7 @@ py::dict jointStateDict(const JointStateSample& s)
 
 py::dict controllerStateDict(const ControllerStateSample& s)
 {
-  py::dict d;
-  d["stamp"] = s.stamp_ns * 1e-9;
+  py::dict d = stampedDict(s.stamp_ns);
   d["set_point"] = s.set_point;
   d["process_value"] = s.process_value;
   d["process_value_dot"] = s.process_value_dot;
@@ -47,9 +45,7 @@ double yawOf(const urdf::Rotation& q) { return std::atan2(2 * (q.w * q.z + q.x *
 // The planar reading drives are used by (x, y, heading, linear.x, angular.z) and the full pose and twist.
 py::dict odometryDict(const OdometrySample& s)
 {
-  py::dict d;
-  d["stamp"] = double(s.stamp_ns) * 1e-9;
-  d["frame_id"] = s.frame_id;
+  py::dict d = stampedDict(s.stamp_ns, s.frame_id);
   d["child_frame_id"] = s.child_frame_id;
   d["x"] = s.pose.position.x;
   d["y"] = s.pose.position.y;
@@ -66,9 +62,7 @@ py::dict odometryDict(const OdometrySample& s)
 
 py::dict navSatFixDict(const NavSatFixSample& s)
 {
-  py::dict d;
-  d["stamp"] = double(s.stamp_ns) * 1e-9;
-  d["frame_id"] = s.frame_id;
+  py::dict d = stampedDict(s.stamp_ns, s.frame_id);
   d["status"] = s.status;
   d["service"] = s.service;
   d["latitude"] = s.latitude;
@@ -80,14 +74,11 @@ py::dict navSatFixDict(const NavSatFixSample& s)
 
 py::dict imuDict(const ImuSample& s)
 {
-  auto list = [](const urdf::Vector3& v) { return std::vector<double>{v.x, v.y, v.z}; };
   auto diagonal = [](const std::array<double, 3>& a) { return std::vector<double>(a.begin(), a.end()); };
-  py::dict d;
-  d["stamp"] = double(s.stamp_ns) * 1e-9;
-  d["frame_id"] = s.frame_id;
-  d["orientation"] = std::vector<double>{s.orientation.x, s.orientation.y, s.orientation.z, s.orientation.w};
-  d["angular_velocity"] = list(s.angular_velocity);
-  d["linear_acceleration"] = list(s.linear_acceleration);
+  py::dict d = stampedDict(s.stamp_ns, s.frame_id);
+  d["orientation"] = xyzwList(s.orientation);
+  d["angular_velocity"] = xyzList(s.angular_velocity);
+  d["linear_acceleration"] = xyzList(s.linear_acceleration);
   d["orientation_covariance"] = diagonal(s.orientation_covariance_diagonal);
   d["angular_velocity_covariance"] = diagonal(s.angular_velocity_covariance_diagonal);
   d["linear_acceleration_covariance"] = diagonal(s.linear_acceleration_covariance_diagonal);
@@ -96,18 +87,14 @@ py::dict imuDict(const ImuSample& s)
 
 py::dict vector3StampedDict(const Vector3StampedSample& s)
 {
-  py::dict d;
-  d["stamp"] = double(s.stamp_ns) * 1e-9;
-  d["frame_id"] = s.frame_id;
-  d["vector"] = std::vector<double>{s.vector.x, s.vector.y, s.vector.z};
+  py::dict d = stampedDict(s.stamp_ns, s.frame_id);
+  d["vector"] = xyzList(s.vector);
   return d;
 }
 
 py::dict transformDict(const TransformSample& s)
 {
-  py::dict d;
-  d["stamp"] = double(s.stamp_ns) * 1e-9;
-  d["frame_id"] = s.frame_id;
+  py::dict d = stampedDict(s.stamp_ns, s.frame_id);
   d["child_frame_id"] = s.child_frame_id;
   d["pose"] = poseArray(s.pose);
   return d;

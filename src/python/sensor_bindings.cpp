@@ -62,13 +62,10 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!imu.hasReading())
           return py::none();
         const ImuReading& m = imu.latest();
-        py::dict d;
-        d["stamp"] = m.stamp_ns * 1e-9;
-        d["frame_id"] = frameOf(r, imu);
-        d["orientation"] = std::vector<double>{m.orientation.x, m.orientation.y, m.orientation.z, m.orientation.w};
-        d["angular_velocity"] = std::vector<double>{m.angular_velocity.x, m.angular_velocity.y, m.angular_velocity.z};
-        d["linear_acceleration"] =
-            std::vector<double>{m.linear_acceleration.x, m.linear_acceleration.y, m.linear_acceleration.z};
+        py::dict d = stampedDict(m.stamp_ns, frameOf(r, imu));
+        d["orientation"] = xyzwList(m.orientation);
+        d["angular_velocity"] = xyzList(m.angular_velocity);
+        d["linear_acceleration"] = xyzList(m.linear_acceleration);
         return std::move(d);
       }), "the latest sensor_msgs/Imu fields (x y z w; IMU frame), or None before the first")
       .def("ground_truth", onRobot([](Robot& r, const std::string& name) -> py::object {
@@ -76,9 +73,7 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!odometry.hasReading())
           return py::none();
         const GroundTruthReading& m = odometry.latest();
-        py::dict d;
-        d["stamp"] = m.stamp_ns * 1e-9;
-        d["frame_id"] = frameOf(r, odometry);
+        py::dict d = stampedDict(m.stamp_ns, frameOf(r, odometry));
         d["child_frame_id"] = pluginChildFrameId(odometry.description());
         d["position"] = std::vector<double>{m.pose.position.x, m.pose.position.y, m.pose.position.z};
         d["orientation"] = std::vector<double>{m.pose.rotation.x, m.pose.rotation.y, m.pose.rotation.z, m.pose.rotation.w};
@@ -91,9 +86,7 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!lidar.hasScan())
           return py::none();
         const LaserScan& s = lidar.latest();
-        py::dict d;
-        d["stamp"] = s.stamp_ns * 1e-9;
-        d["frame_id"] = frameOf(r, lidar);
+        py::dict d = stampedDict(s.stamp_ns, frameOf(r, lidar));
         d["angle_min"] = s.angle_min;
         d["angle_max"] = s.angle_max;
         d["angle_increment"] = s.angle_increment;
@@ -109,9 +102,7 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!camera.hasFrame())
           return py::none();
         const CameraFrame& f = camera.latest();
-        py::dict d;
-        d["stamp"] = f.stamp_ns * 1e-9;
-        d["frame_id"] = frameOf(r, camera);
+        py::dict d = stampedDict(f.stamp_ns, frameOf(r, camera));
         d["width"] = f.width;
         d["height"] = f.height;
         d["K"] = std::vector<double>{f.fx, 0, f.cx, 0, f.fy, f.cy, 0, 0, 1};

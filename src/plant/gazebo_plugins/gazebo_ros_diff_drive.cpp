@@ -34,11 +34,11 @@ public:
     wheel_accel_ = d.number("wheelAcceleration", 0.0);
     wheel_torque_ = d.number("wheelTorque", 5.0);
     const double update_rate = d.number("updateRate", 100.0);
-    update_period_ns_ = update_rate > 0.0 ? periodNsOfRate(update_rate) : 0;
+    update_period_ns_ = periodNsOfRate(update_rate);
     const std::string source = d.text("odometrySource", "world");
     if (source != "world" && source != "encoder")
     {
-      context.log().warn("plugin '" + d.name + "' (" + d.filename + "): odometrySource '" + source +
+      context.log().warn(pluginLabel(d) + ": odometrySource '" + source +
                          "' is neither world nor encoder; using world, as gazebo_ros does");
     }
     encoder_odometry_ = source == "encoder";
@@ -50,7 +50,7 @@ public:
     for (int side : {kLeft, kRight})
     {
       const std::string joint = d.text(keys[side], defaults[side]);
-      motors_[side] = context.modelJoint(joint, "plugin '" + d.name + "' (" + d.filename + ") <" + keys[side] + ">");
+      motors_[side] = context.modelJoint(joint, pluginLabel(d) + " <" + keys[side] + ">");
       if (!motors_[side])
         return false;
       motors_[side]->setMaxForce(wheel_torque_);

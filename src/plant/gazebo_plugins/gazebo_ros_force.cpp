@@ -17,22 +17,11 @@ public:
   bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t) override
   {
     context_ = &context;
-    const std::string what = "plugin '" + d.name + "' (" + d.filename + ")";
-    for (const char* required : {"bodyName", "topicName"})
-      if (d.text(required, "").empty())
-      {
-        context.log().error(what + " has no <" + std::string(required) +
-                            "> (\"missing, cannot proceed\"): name the link to push and the Wrench topic; "
-                            "the plugin is not loaded");
-        return false;
-      }
-    link_ = d.text("bodyName", "");
-    if (!context.robotDescription().model->getLink(link_))
-    {
-      context.log().error(what + " <bodyName> names '" + link_ + "', which is no link of '" + context.modelName() +
-                          "'; the plugin is not loaded");
+    if (!requireElements(d, context, {"bodyName", "topicName"}, "name the link to push and the Wrench topic"))
       return false;
-    }
+    link_ = d.text("bodyName", "");
+    if (!requireLink(d, context, "bodyName", link_))
+      return false;
     subscribe<WrenchCommand>(d.text("topicName", ""), [this](const WrenchCommand& w) {
       if (!std::isfinite(w.force.x + w.force.y + w.force.z + w.torque.x + w.torque.y + w.torque.z))
         return false;  // Gazebo would push the link to NaN: the plant keeps the last wrench

@@ -22,13 +22,8 @@ public:
     context_ = &context;
     readOdometryFrames(d, context, odometry_);
     base_link_ = d.text("robotBaseFrame", "base_footprint");
-    if (!context.robotDescription().model->getLink(base_link_))
-    {
-      context.log().error("plugin '" + d.name + "' (" + d.filename + ") <robotBaseFrame> names '" + base_link_ +
-                          "', which is no link of '" + context.modelName() +
-                          "' (the forces act on it); the plugin is not loaded");
+    if (!requireLink(d, context, "robotBaseFrame", base_link_, "the forces act on it"))
       return false;
-    }
     yaw_gain_ = d.number("yaw_velocity_p_gain", 100.0);
     x_gain_ = d.number("x_velocity_p_gain", 10000.0);
     y_gain_ = d.number("y_velocity_p_gain", 10000.0);

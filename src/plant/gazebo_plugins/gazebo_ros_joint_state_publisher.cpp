@@ -19,7 +19,7 @@ public:
   bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t time_ns) override
   {
     context_ = &context;
-    const std::string what = "plugin '" + d.name + "' (" + d.filename + ")";
+    const std::string what = pluginLabel(d);
     std::string names = d.text("jointName", "");
     names.erase(std::remove(names.begin(), names.end(), ' '), names.end());
     std::stringstream list(names);
@@ -41,7 +41,7 @@ public:
       return false;
     }
     const double update_rate = d.number("updateRate", 100.0);
-    update_period_ns_ = update_rate > 0.0 ? periodNsOfRate(update_rate) : 0;
+    update_period_ns_ = periodNsOfRate(update_rate);
     port_ = &advertise<JointStateSample>("joint_states");
     Reset(time_ns);
     return true;

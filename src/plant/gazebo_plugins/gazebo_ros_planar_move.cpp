@@ -64,6 +64,8 @@ public:
   }
 
 private:
+  void commandArrived() override { command_arrived_ = true; }
+
   urdf::Pose modelPose() const { return context_->linkMotion(context_->rootLink()).pose; }
 
   void publishOdometry(int64_t time_ns, double step_time)
@@ -95,6 +97,7 @@ private:
   ModelPluginContext* context_ = nullptr;
   double odometry_rate_ = 20.0, cmd_timeout_ = -1.0;
   int64_t last_odometry_ns_ = 0, last_command_ns_ = 0;
+  bool command_arrived_ = false;  // since the last step
   urdf::Pose last_odometry_pose_;
   OdometrySample odometry_;
   OutputPort<OdometrySample>* odometry_port_ = nullptr;

@@ -27,7 +27,7 @@ public:
     const std::string odometry_topic = d.text("odometryTopic", "odom");
     readOdometryFrames(d, context, odometry_);
     const double update_rate = d.number("updateRate", 100.0);
-    update_period_ns_ = update_rate > 0.0 ? periodNsOfRate(update_rate) : 0;
+    update_period_ns_ = periodNsOfRate(update_rate);
     odometry_.pose_covariance_diagonal = odometry_.twist_covariance_diagonal =
         planarCovariance(d.number("covariance_x", 0.0001), d.number("covariance_y", 0.0001),
                          d.number("covariance_yaw", 0.01));
@@ -37,7 +37,7 @@ public:
     for (int w = 0; w < 4; ++w)
     {
       joints_[w] = context.modelJoint(d.text(keys[w], defaults[w]),
-                                      "plugin '" + d.name + "' (" + d.filename + ") <" + keys[w] + ">");
+                                      pluginLabel(d) + " <" + keys[w] + ">");
       if (!joints_[w])
         return false;
       joints_[w]->setMaxForce(torque_);

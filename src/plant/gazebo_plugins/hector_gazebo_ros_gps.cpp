@@ -33,7 +33,7 @@ public:
     fix_.service = int(d.number("service", 0));
     position_model_.load(d, "");
     velocity_model_.load(d, "velocity");
-    timer_.load(d, 4.0, std::llround(context.stepSize() * 1e9));
+    timer_.load(d, 4.0, context);
     // The radii of curvature at the reference latitude, once, as upstream.
     const double e2 = 2 * kFlattening - kFlattening * kFlattening;
     const double s = std::sin(reference_latitude_ / kDegrees);

@@ -39,7 +39,7 @@ public:
     }
     const urdf::Vector3 rpy = d.vector("rpyOffset", urdf::Vector3(0, 0, 0));
     offset_.setFromRPY(rpy.x, rpy.y, rpy.z);
-    timer_.load(d, 0.0, std::llround(context.stepSize() * 1e9));
+    timer_.load(d, 0.0, context);
     rng_.seed(context.noiseSeed(d));
 
     // Covariances from the noise at load, as upstream (which never updates them).

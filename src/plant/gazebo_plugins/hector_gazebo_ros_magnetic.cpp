@@ -29,7 +29,7 @@ public:
                                  magnitude * std::cos(inclination) * std::sin(heading - declination),
                                  -magnitude * std::sin(inclination));
     model_.load(d, "");
-    timer_.load(d, 0.0, std::llround(context.stepSize() * 1e9));
+    timer_.load(d, 0.0, context);
     rng_.seed(context.noiseSeed(d));
     port_ = &advertise<Vector3StampedSample>(d.text("topicName", "magnetic"));
     Reset(time_ns);

@@ -25,11 +25,7 @@ namespace bullet_plant
 inline bool readHectorBodyName(const ModelPluginDescription& d, ModelPluginContext& context, std::string& link)
 {
   link = d.text("bodyName", context.rootLink());
-  if (context.robotDescription().model->getLink(link))
-    return true;
-  context.log().error("plugin '" + d.name + "' (" + d.filename + ") <bodyName> names '" + link + "', which is no link of '" +
-                      context.modelName() + "'; the plugin is not loaded");
-  return false;
+  return requireLink(d, context, "bodyName", link);
 }
 
 class HectorSensorModel
@@ -96,14 +92,14 @@ private:
 class HectorUpdateTimer
 {
 public:
-  void load(const ModelPluginDescription& d, double default_rate, int64_t step_ns)
+  void load(const ModelPluginDescription& d, double default_rate, const ModelPluginContext& context)
   {
     const double rate = d.number("updateRate", default_rate);
     double period = rate > 0 ? 1.0 / rate : 0.0;
     period = d.number("updatePeriod", period);
     period_ns_ = std::llround(period * 1e9);
     offset_ns_ = std::llround(d.number("updateOffset", 0.0) * 1e9);
-    step_ns_ = step_ns;
+    step_ns_ = std::llround(context.stepSize() * 1e9);
   }
 
   bool due(int64_t time_ns) const

@@ -24,14 +24,10 @@ public:
   bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t time_ns) override
   {
     context_ = &context;
-    const std::string what = "plugin '" + d.name + "' (" + d.filename + ")";
-    for (const char* required : {"joint", "mimicJoint"})
-      if (d.text(required, "").empty())
-      {
-        context.log().error(what + " has no <" + std::string(required) + ">: name the joint to follow in <joint> "
-                                   "and the one that follows in <mimicJoint>; the plugin is not loaded");
-        return false;
-      }
+    const std::string what = pluginLabel(d);
+    if (!requireElements(d, context, {"joint", "mimicJoint"},
+                         "name the joint to follow in <joint> and the one that follows in <mimicJoint>"))
+      return false;
     joint_ = d.text("joint", "");
     double position, velocity;
     if (!context.jointState(joint_, position, velocity))

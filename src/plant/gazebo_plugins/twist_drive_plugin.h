@@ -43,7 +43,7 @@ protected:
       if (!std::isfinite(t.linear_x) || !std::isfinite(t.linear_y) || !std::isfinite(t.angular_z))
         return false;
       command_ = t;
-      command_arrived_ = true;
+      commandArrived();
       return true;
     });
   }
@@ -56,8 +56,10 @@ protected:
     out.child_frame_id = resolveTfFrame(prefix, d.text("robotBaseFrame", "base_footprint"));
   }
 
-  TwistCommand command_;          // the last command; Reset zeroes it
-  bool command_arrived_ = false;  // since the plugin last looked
+  // Called as each accepted command is stored, for plugins that note when commands come.
+  virtual void commandArrived() {}
+
+  TwistCommand command_;  // the last command; Reset zeroes it
 };
 
 }  // namespace bullet_plant
