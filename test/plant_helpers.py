@@ -225,3 +225,35 @@ DIFF_DRIVE_CONTROLLERS = {'diff_bot': {
         'pose_covariance_diagonal': [0.001, 0.001, 1e6, 1e6, 1e6, 1000.0],
         'twist_covariance_diagonal': [0.001, 0.001, 1e6, 1e6, 1e6, 1000.0],
         'linear': {'x': {'has_acceleration_limits': True, 'max_acceleration': 1.0}}}}}
+
+
+ARM_JOINTS = ['shoulder', 'elbow', 'wrist']
+
+
+def arm(interface='Position'):
+    """arm.urdf (shoulder, elbow, continuous wrist, fixed to the world) with its transmissions on
+    hardware_interface/<interface>JointInterface."""
+    with open(os.path.join(FIXTURES, 'urdf', 'arm.urdf')) as f:
+        return f.read().replace('PositionJointInterface', interface + 'JointInterface')
+
+
+def arm_controllers(kind='position_controllers', **arm_controller):
+    """The /arm controllers as a UR or TIAGo configuration has them: joint_state_controller and a
+    <kind>/JointTrajectoryController of the three joints (gains for the velocity and effort kinds),
+    its parameters updated by `arm_controller`."""
+    controller = {'type': kind + '/JointTrajectoryController', 'joints': ARM_JOINTS,
+                  'constraints': {'goal_time': 0.5, 'stopped_velocity_tolerance': 0.05,
+                                  'shoulder': {'trajectory': 0.2, 'goal': 0.02},
+                                  'elbow': {'trajectory': 0.2, 'goal': 0.02}},
+                  'state_publish_rate': 25, 'action_monitor_rate': 10}
+    if kind == 'effort_controllers':
+        controller['gains'] = {'shoulder': {'p': 400.0, 'd': 20.0, 'i': 0.0, 'i_clamp': 1.0},
+                               'elbow': {'p': 400.0, 'd': 20.0, 'i': 0.0, 'i_clamp': 1.0},
+                               'wrist': {'p': 2.0, 'd': 0.05, 'i': 0.0, 'i_clamp': 1.0}}
+    if kind == 'velocity_controllers':
+        controller['gains'] = {j: {'p': 20.0, 'd': 0.0, 'i': 0.0, 'i_clamp': 1.0} for j in ARM_JOINTS}
+        controller['velocity_ff'] = {j: 1.0 for j in ARM_JOINTS}
+    controller.update(arm_controller)
+    return {'arm': {'joint_state_controller': {'type': 'joint_state_controller/JointStateController',
+                                               'publish_rate': 50},
+                    'arm_controller': controller}}

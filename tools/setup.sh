@@ -19,7 +19,9 @@ APT_PACKAGES=(
   ros-nav-msgs libnav-msgs-dev python3-nav-msgs
   ros-rosgraph-msgs libros-rosgraph-msgs-dev python3-rosgraph-msgs
   ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs python3-tf2-ros
-  ros-trajectory-msgs libtrajectory-msgs-dev python3-trajectory-msgs   # gazebo_msgs/SetJointTrajectory
+  ros-trajectory-msgs libtrajectory-msgs-dev python3-trajectory-msgs   # gazebo_msgs/SetJointTrajectory, trajectory controllers
+  # actions: control_msgs/FollowJointTrajectory (the node serves it with actionlib)
+  ros-actionlib-msgs libactionlib-msgs-dev python3-actionlib-msgs libactionlib-dev python3-actionlib
   # the plant: physics, URDF parsing, XML, Python bindings
   libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev libtinyxml-dev
   libconsole-bridge-dev libassimp-dev

@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <string>
 
+#include <control_msgs/FollowJointTrajectoryAction.h>
 #include <control_msgs/JointControllerState.h>
+#include <control_msgs/JointTrajectoryControllerState.h>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -17,6 +19,7 @@
 #include <sensor_msgs/NavSatFix.h>
 #include <std_msgs/Header.h>
 #include <tf2_msgs/TFMessage.h>
+#include <trajectory_msgs/JointTrajectory.h>
 #include <urdf_model/pose.h>
 
 #include "bullet_plant/controllers.h"
@@ -24,6 +27,7 @@
 #include "bullet_plant/plugin_messages.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
+#include "bullet_plant/trajectory_messages.h"
 #include "ros_time.h"
 
 namespace bullet_plant
@@ -245,6 +249,72 @@ inline geometry_msgs::Vector3Stamped toMsg(const Vector3StampedSample& s)
   geometry_msgs::Vector3Stamped m;
   m.header = rosHeader(s.stamp_ns, s.frame_id);
   m.vector = toMsg(s.vector);
+  return m;
+}
+
+// Trajectories. A stamp is kept as ROS time in ns; stamp 0 stays 0 ("now").
+inline TrajectoryPointSample fromMsg(const trajectory_msgs::JointTrajectoryPoint& m)
+{
+  return TrajectoryPointSample{m.positions, m.velocities, m.accelerations, m.effort, m.time_from_start.toNSec()};
+}
+
+inline JointTrajectoryCommand fromMsg(const trajectory_msgs::JointTrajectory& m)
+{
+  JointTrajectoryCommand t;
+  t.stamp_ns = int64_t(m.header.stamp.toNSec());
+  t.joint_names = m.joint_names;
+  for (const trajectory_msgs::JointTrajectoryPoint& p : m.points)
+    t.points.push_back(fromMsg(p));
+  return t;
+}
+
+inline std::vector<JointToleranceSpec> fromMsg(const std::vector<control_msgs::JointTolerance>& m)
+{
+  std::vector<JointToleranceSpec> out;
+  for (const control_msgs::JointTolerance& t : m)
+    out.push_back(JointToleranceSpec{t.name, t.position, t.velocity, t.acceleration});
+  return out;
+}
+
+inline FollowJointTrajectoryGoal fromMsg(const control_msgs::FollowJointTrajectoryGoal& m)
+{
+  return FollowJointTrajectoryGoal{fromMsg(m.trajectory), fromMsg(m.path_tolerance), fromMsg(m.goal_tolerance),
+                                   m.goal_time_tolerance.toNSec()};
+}
+
+inline trajectory_msgs::JointTrajectoryPoint toMsg(const TrajectoryPointSample& s)
+{
+  trajectory_msgs::JointTrajectoryPoint m;
+  m.positions = s.positions;
+  m.velocities = s.velocities;
+  m.accelerations = s.accelerations;
+  m.effort = s.effort;
+  m.time_from_start.fromNSec(s.time_from_start_ns);
+  return m;
+}
+
+template <class RosMsg>  // JointTrajectoryControllerState and FollowJointTrajectoryFeedback
+RosMsg trajectoryStateMsg(const TrajectoryStateSample& s)
+{
+  RosMsg m;
+  m.header = rosHeader(s.stamp_ns);
+  m.joint_names = s.joint_names;
+  m.desired = toMsg(s.desired);
+  m.actual = toMsg(s.actual);
+  m.error = toMsg(s.error);
+  return m;
+}
+
+inline control_msgs::JointTrajectoryControllerState toMsg(const TrajectoryStateSample& s)
+{
+  return trajectoryStateMsg<control_msgs::JointTrajectoryControllerState>(s);
+}
+
+inline control_msgs::FollowJointTrajectoryResult toMsg(const FollowJointTrajectoryResult& r)
+{
+  control_msgs::FollowJointTrajectoryResult m;
+  m.error_code = r.error_code;
+  m.error_string = r.error_string;
   return m;
 }
 

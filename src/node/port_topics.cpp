@@ -6,6 +6,7 @@
 #include <std_msgs/Float64.h>
 #include <std_msgs/Float64MultiArray.h>
 
+#include "action_channel.h"
 #include "msg_conversions.h"
 #include "ros_plant.h"
 
@@ -19,6 +20,12 @@ struct PortTransport
   std::function<ros::Subscriber(ros::NodeHandle&, const std::string& topic, Post)> subscribe;
   std::function<ros::Publisher(ros::NodeHandle&, const std::string& topic)> advertise;
   std::function<void(Port&, const ros::Publisher&)> drain;
+  // An action (trajectory_messages.h): its goal port's transport serves it; the cancel, result and
+  // feedback ports are carried by that server (`by_action`).
+  std::function<std::shared_ptr<ActionChannel>(ros::NodeHandle&, const std::string& action, RosPlant&,
+                                               ActionChannel::FindPort)>
+      serve;
+  bool by_action = false;
 };
 
 namespace
@@ -52,6 +59,24 @@ PortTransport output(uint32_t queue_size)
   return t;
 }
 
+template <class RosAction, class Goal, class Result, class Feedback>
+PortTransport action()
+{
+  PortTransport t;
+  t.serve = [](ros::NodeHandle& nh, const std::string& name, RosPlant& plant, ActionChannel::FindPort find_port) {
+    return std::make_shared<ActionChannelOf<RosAction, Goal, Result, Feedback>>(
+        nh, name, [&plant](std::function<void()> work) { plant.post(std::move(work)); }, std::move(find_port));
+  };
+  return t;
+}
+
+PortTransport carriedByAction()
+{
+  PortTransport t;
+  t.by_action = true;
+  return t;
+}
+
 // The one table of message types the node carries: a port of another type is refused, named.
 const PortTransport* transportOf(const Port& port)
 {
@@ -71,6 +96,13 @@ const PortTransport* transportOf(const Port& port)
       {typeid(TwistCommand), input<TwistCommand, geometry_msgs::Twist>(
                                  [](const geometry_msgs::Twist& m) { return TwistCommand{m.linear.x, m.angular.z, m.linear.y}; },
                                  [](const TwistCommand&) { return "a velocity command (the controller logs why)"; })},
+      {typeid(JointTrajectoryCommand), input<JointTrajectoryCommand, trajectory_msgs::JointTrajectory>(
+                                           [](const trajectory_msgs::JointTrajectory& m) { return fromMsg(m); },
+                                           [](const JointTrajectoryCommand&) { return "a trajectory (the controller logs why)"; })},
+      {typeid(ActionGoal<FollowJointTrajectoryGoal>),
+       action<control_msgs::FollowJointTrajectoryAction, FollowJointTrajectoryGoal, FollowJointTrajectoryResult,
+              TrajectoryStateSample>()},
+      {typeid(ActionCancel), carriedByAction()},
   };
   static const std::map<std::type_index, PortTransport> outputs = {
       {typeid(JointStateSample), output<JointStateSample, sensor_msgs::JointState>(10)},
@@ -80,6 +112,9 @@ const PortTransport* transportOf(const Port& port)
       {typeid(NavSatFixSample), output<NavSatFixSample, sensor_msgs::NavSatFix>(10)},
       {typeid(ImuSample), output<ImuSample, sensor_msgs::Imu>(10)},
       {typeid(Vector3StampedSample), output<Vector3StampedSample, geometry_msgs::Vector3Stamped>(10)},
+      {typeid(TrajectoryStateSample), output<TrajectoryStateSample, control_msgs::JointTrajectoryControllerState>(1)},
+      {typeid(ActionResult<FollowJointTrajectoryResult>), carriedByAction()},
+      {typeid(ActionFeedback<TrajectoryStateSample>), carriedByAction()},
   };
   const auto& table = port.direction() == Port::Direction::In ? inputs : outputs;
   auto it = table.find(port.messageType());
@@ -105,6 +140,8 @@ void PortTopics::refresh(const std::vector<std::pair<std::string, const MessageP
 {
   std::map<std::string, ros::Subscriber> subscribers;
   std::map<std::string, ros::Publisher> publishers;
+  std::map<std::string, std::shared_ptr<ActionChannel>> actions;
+  std::vector<std::pair<Port*, std::string>> action_outputs;
   outputs_.clear();
   for (const auto& owner : owners)
     for (const std::unique_ptr<Port>& port : owner.second->ports())
@@ -117,6 +154,20 @@ void PortTopics::refresh(const std::vector<std::pair<std::string, const MessageP
         continue;
       }
       const std::string topic = topicOf(owner.first, *port);
+      if (transport->serve || transport->by_action)
+      {
+        // <action>/goal, /cancel, /result, /feedback: the goal port's transport serves <action>
+        const std::string::size_type slash = topic.rfind('/');
+        const std::string action = slash == std::string::npos ? "" : topic.substr(0, slash);
+        if (transport->serve)
+        {
+          auto kept = actions_.find(action);
+          actions[action] = kept != actions_.end() ? kept->second : serve(owner.first, *port, action, *transport);
+        }
+        else if (port->direction() == Port::Direction::Out)
+          action_outputs.emplace_back(port.get(), action);
+        continue;
+      }
       if (port->direction() == Port::Direction::In)
       {
         const std::string key = owner.first + " " + topic;
@@ -133,6 +184,28 @@ void PortTopics::refresh(const std::vector<std::pair<std::string, const MessageP
     }
   subscribers_.swap(subscribers);
   publishers_.swap(publishers);
+  actions_.swap(actions);
+  action_outputs_.clear();
+  for (const auto& out : action_outputs)
+  {
+    auto served = actions_.find(out.second);
+    if (served == actions_.end())
+      ROS_ERROR("port '%s' in %s belongs to an action '%s' that nothing serves (no goal port)", out.first->topic().c_str(),
+                nh_.getNamespace().c_str(), out.second.c_str());
+    else
+      action_outputs_.emplace_back(out.first, served->second);
+  }
+}
+
+std::shared_ptr<ActionChannel> PortTopics::serve(const std::string& owner, const Port& goal_port, const std::string& action,
+                                                 const PortTransport& transport)
+{
+  // the owner's ports are found again on the simulation thread by their topics under the action
+  const std::string prefix = goal_port.topic().substr(0, goal_port.topic().rfind('/') + 1);
+  return transport.serve(nh_, action, plant_, [this, owner, prefix](const std::string& topic) -> Port* {
+    const MessagePorts* ports = find_owner_(owner);
+    return ports ? ports->port(prefix + topic, Port::Direction::In) : nullptr;
+  });
 }
 
 ros::Subscriber PortTopics::subscribe(const std::string& owner, const Port& port, const PortTransport& transport)
@@ -157,6 +230,8 @@ void PortTopics::publish()
 {
   for (Output& out : outputs_)
     out.transport->drain(*out.port, out.publisher);
+  for (auto& out : action_outputs_)
+    out.second->drain(*out.first);
 }
 
 }  // namespace bullet_plant

@@ -14,6 +14,7 @@
 
 #include <ros/ros.h>
 
+#include "action_channel.h"
 #include "bullet_plant/message_ports.h"
 
 namespace bullet_plant
@@ -44,6 +45,8 @@ private:
   };
   std::string topicOf(const std::string& owner, const Port& port) const;
   ros::Subscriber subscribe(const std::string& owner, const Port& port, const PortTransport& transport);
+  std::shared_ptr<ActionChannel> serve(const std::string& owner, const Port& goal_port, const std::string& action,
+                                       const PortTransport& transport);
 
   RosPlant& plant_;
   ros::NodeHandle nh_;
@@ -52,6 +55,8 @@ private:
   std::map<std::string, ros::Subscriber> subscribers_;  // by owner and topic
   std::map<std::string, ros::Publisher> publishers_;    // by topic, shared by the owners on it
   std::vector<Output> outputs_;                         // owners' order, ports' order
+  std::map<std::string, std::shared_ptr<ActionChannel>> actions_;       // by action name (topic)
+  std::vector<std::pair<Port*, std::shared_ptr<ActionChannel>>> action_outputs_;  // result, feedback
 };
 
 }  // namespace bullet_plant

@@ -2,6 +2,8 @@
 // control_toolbox's Pid, driven from Python.
 #include "bindings.h"
 
+#include "bullet_plant/trajectory_messages.h"
+
 namespace bullet_plant
 {
 namespace python
@@ -36,6 +38,13 @@ py::object latestOf(const Controller& c)
 {
   const OutputPort<Msg>* port = c.output<Msg>();
   return port ? latestOfPort(*port) : py::none();
+}
+// The controller's port <action>/<part> (an action's goal, cancel, result or feedback).
+Port& actionPort(const Controller& c, const std::string& action, const std::string& part, Port::Direction direction)
+{
+  if (Port* p = c.port(action + "/" + part, direction))
+    return *p;
+  throw py::key_error("this controller serves no action '" + action + "'");
 }
 }  // namespace
 
@@ -137,8 +146,32 @@ void init_controller_manager(py::module_& m)
         return latestOf<JointStateSample>(controllerOf(cm, name));
       }), py::arg("name") = "joint_state_controller", "the latest sensor_msgs/JointState a joint state controller produced")
       .def("state", onManager([](ControllerManager& cm, const std::string& name) {
-        return latestOf<ControllerStateSample>(controllerOf(cm, name));
-      }), py::arg("name"), "the latest control_msgs/JointControllerState of a PID controller")
+        const Controller& c = controllerOf(cm, name);
+        return c.output<TrajectoryStateSample>() ? latestOf<TrajectoryStateSample>(c) : latestOf<ControllerStateSample>(c);
+      }), py::arg("name"),
+           "the latest control_msgs/JointControllerState of a PID controller, or JointTrajectoryControllerState "
+           "(joint_names, desired, actual, error) of a trajectory controller")
+      .def("send_goal", onManager([](ControllerManager& cm, const std::string& name, const std::string& goal_id,
+                                     py::dict goal, const std::string& action) {
+        goal["goal_id"] = goal_id;
+        return deliverToPort(actionPort(controllerOf(cm, name), action, "goal", Port::Direction::In), goal);
+      }), py::arg("name"), py::arg("goal_id"), py::arg("goal"), py::arg("action") = "follow_joint_trajectory",
+           "what a goal on <controller>/<action> does (FollowJointTrajectory: {'trajectory': {'joint_names', "
+           "'points': [{'positions', 'velocities', 'accelerations', 'time_from_start'}], 'stamp'}, "
+           "'path_tolerance', 'goal_tolerance', 'goal_time_tolerance'}); True when accepted, else goal_result says why")
+      .def("cancel_goal", onManager([](ControllerManager& cm, const std::string& name, const std::string& goal_id,
+                                       const std::string& action) {
+        return deliverToPort(actionPort(controllerOf(cm, name), action, "cancel", Port::Direction::In), py::str(goal_id));
+      }), py::arg("name"), py::arg("goal_id"), py::arg("action") = "follow_joint_trajectory")
+      .def("goal_result", onManager([](ControllerManager& cm, const std::string& name, const std::string& action) {
+        return latestOfPort(actionPort(controllerOf(cm, name), action, "result", Port::Direction::Out));
+      }), py::arg("name"), py::arg("action") = "follow_joint_trajectory",
+           "how the last goal that ended ended: goal_id, outcome (rejected, succeeded, aborted, canceled), "
+           "error_code, error_string; None before any")
+      .def("goal_feedback", onManager([](ControllerManager& cm, const std::string& name, const std::string& action) {
+        return latestOfPort(actionPort(controllerOf(cm, name), action, "feedback", Port::Direction::Out));
+      }), py::arg("name"), py::arg("action") = "follow_joint_trajectory",
+           "the latest feedback of the goal in force (FollowJointTrajectory: goal_id, desired, actual, error)")
       .def("samples", onManager([](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).messagesPublished(); }),
            py::arg("name"), "how many messages the controller has produced");
 }

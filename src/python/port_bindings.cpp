@@ -6,6 +6,7 @@
 
 #include "bullet_plant/model_plugin.h"
 #include "bullet_plant/plugin_messages.h"
+#include "bullet_plant/trajectory_messages.h"
 
 namespace bullet_plant
 {
@@ -100,6 +101,82 @@ py::dict transformDict(const TransformSample& s)
   return d;
 }
 
+py::dict trajectoryPointDict(const TrajectoryPointSample& p)
+{
+  py::dict d;
+  d["positions"] = p.positions;
+  d["velocities"] = p.velocities;
+  d["accelerations"] = p.accelerations;
+  d["effort"] = p.effort;
+  d["time_from_start"] = double(p.time_from_start_ns) * 1e-9;
+  return d;
+}
+
+py::dict trajectoryStateDict(const TrajectoryStateSample& s)
+{
+  py::dict d = stampedDict(s.stamp_ns);
+  d["joint_names"] = s.joint_names;
+  d["desired"] = trajectoryPointDict(s.desired);
+  d["actual"] = trajectoryPointDict(s.actual);
+  d["error"] = trajectoryPointDict(s.error);
+  return d;
+}
+
+py::dict trajectoryFeedbackDict(const ActionFeedback<TrajectoryStateSample>& f)
+{
+  py::dict d = trajectoryStateDict(f.feedback);
+  d["goal_id"] = f.id;
+  return d;
+}
+
+py::dict trajectoryResultDict(const ActionResult<FollowJointTrajectoryResult>& r)
+{
+  static const char* outcomes[] = {"rejected", "succeeded", "aborted", "canceled"};
+  py::dict d;
+  d["goal_id"] = r.id;
+  d["outcome"] = outcomes[int(r.outcome)];
+  d["error_code"] = r.result.error_code;
+  d["error_string"] = r.result.error_string;
+  return d;
+}
+
+int64_t nsOfSeconds(double s) { return int64_t(std::llround(s * 1e9)); }
+
+// trajectory_msgs/JointTrajectory from {"joint_names": [...], "points": [{"positions": [...],
+// "velocities": [...], "accelerations": [...], "time_from_start": s}, ...], "stamp": s (0: now)}.
+JointTrajectoryCommand trajectoryOf(const py::dict& d)
+{
+  JointTrajectoryCommand t;
+  t.stamp_ns = nsOfSeconds(d.contains("stamp") ? d["stamp"].cast<double>() : 0.0);
+  t.joint_names = d["joint_names"].cast<std::vector<std::string>>();
+  for (const py::handle& item : d["points"])
+  {
+    const py::dict point = item.cast<py::dict>();
+    TrajectoryPointSample p;
+    for (auto field : {std::make_pair("positions", &p.positions), std::make_pair("velocities", &p.velocities),
+                       std::make_pair("accelerations", &p.accelerations), std::make_pair("effort", &p.effort)})
+      if (point.contains(field.first))
+        *field.second = point[field.first].cast<std::vector<double>>();
+    p.time_from_start_ns = nsOfSeconds(point["time_from_start"].cast<double>());
+    t.points.push_back(p);
+  }
+  return t;
+}
+
+// control_msgs/JointTolerance[] from [{"name": ..., "position": ..., "velocity": ..., "acceleration": ...}].
+std::vector<JointToleranceSpec> tolerancesOf(const py::object& list)
+{
+  std::vector<JointToleranceSpec> out;
+  for (const py::handle& item : list)
+  {
+    const py::dict t = item.cast<py::dict>();
+    auto number = [&](const char* key) { return t.contains(key) ? t[key].cast<double>() : 0.0; };
+    out.push_back(JointToleranceSpec{t["name"].cast<std::string>(), number("position"), number("velocity"),
+                                     number("acceleration")});
+  }
+  return out;
+}
+
 template <class Msg, class ToDict>
 bool latestAs(const Port& port, ToDict toDict, py::object& out)
 {
@@ -136,6 +213,23 @@ bool deliverToPort(Port& port, py::object value)
                             std::to_string(w.size()) + " numbers");
     return in->deliver(WrenchCommand{urdf::Vector3(w[0], w[1], w[2]), urdf::Vector3(w[3], w[4], w[5])});
   }
+  if (auto* in = dynamic_cast<InputPort<JointTrajectoryCommand>*>(&port))
+    return in->deliver(trajectoryOf(value.cast<py::dict>()));
+  if (auto* in = dynamic_cast<InputPort<ActionGoal<FollowJointTrajectoryGoal>>*>(&port))
+  {
+    // {"goal_id": ..., "trajectory": {...}, "path_tolerance": [...], "goal_tolerance": [...], "goal_time_tolerance": s}
+    const py::dict d = value.cast<py::dict>();
+    FollowJointTrajectoryGoal goal;
+    goal.trajectory = trajectoryOf(d["trajectory"].cast<py::dict>());
+    if (d.contains("path_tolerance"))
+      goal.path_tolerance = tolerancesOf(d["path_tolerance"]);
+    if (d.contains("goal_tolerance"))
+      goal.goal_tolerance = tolerancesOf(d["goal_tolerance"]);
+    goal.goal_time_tolerance_ns = nsOfSeconds(d.contains("goal_time_tolerance") ? d["goal_time_tolerance"].cast<double>() : 0.0);
+    return in->deliver(ActionGoal<FollowJointTrajectoryGoal>{d["goal_id"].cast<std::string>(), goal});
+  }
+  if (auto* in = dynamic_cast<InputPort<ActionCancel>*>(&port))
+    return in->deliver(ActionCancel{value.cast<std::string>()});  // the goal id
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot send; add it to port_bindings.cpp");
 }
 
@@ -146,7 +240,9 @@ py::object latestOfPort(const Port& port)
       latestAs<ControllerStateSample>(port, controllerStateDict, out) ||
       latestAs<OdometrySample>(port, odometryDict, out) || latestAs<TransformSample>(port, transformDict, out) ||
       latestAs<NavSatFixSample>(port, navSatFixDict, out) || latestAs<Vector3StampedSample>(port, vector3StampedDict, out) ||
-      latestAs<ImuSample>(port, imuDict, out))
+      latestAs<ImuSample>(port, imuDict, out) || latestAs<TrajectoryStateSample>(port, trajectoryStateDict, out) ||
+      latestAs<ActionResult<FollowJointTrajectoryResult>>(port, trajectoryResultDict, out) ||
+      latestAs<ActionFeedback<TrajectoryStateSample>>(port, trajectoryFeedbackDict, out))
     return out;
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot read; add it to port_bindings.cpp");
 }

@@ -14,6 +14,7 @@ std::unique_ptr<Controller> makeEffortPidController(bool position);
 std::unique_ptr<Controller> makeForwardCommandController(JointInterface iface);
 std::unique_ptr<Controller> makeForwardGroupController(JointInterface iface);
 std::unique_ptr<Controller> makeJointStateController();
+std::unique_ptr<Controller> makeJointTrajectoryController(JointInterface iface);
 
 namespace
 {
@@ -38,6 +39,8 @@ const std::vector<ControllerType>& registry()
        makeEffortGroupPositionController},
       {"effort_controllers/JointPositionController",
        [] { return makeEffortPidController(true); }},
+      {"effort_controllers/JointTrajectoryController",
+       [] { return makeJointTrajectoryController(JointInterface::Effort); }},
       {"effort_controllers/JointVelocityController",
        [] { return makeEffortPidController(false); }},
       {"joint_state_controller/JointStateController",
@@ -46,8 +49,12 @@ const std::vector<ControllerType>& registry()
        [] { return makeForwardGroupController(JointInterface::Position); }},
       {"position_controllers/JointPositionController",
        [] { return makeForwardCommandController(JointInterface::Position); }},
+      {"position_controllers/JointTrajectoryController",
+       [] { return makeJointTrajectoryController(JointInterface::Position); }},
       {"velocity_controllers/JointGroupVelocityController",
        [] { return makeForwardGroupController(JointInterface::Velocity); }},
+      {"velocity_controllers/JointTrajectoryController",
+       [] { return makeJointTrajectoryController(JointInterface::Velocity); }},
       {"velocity_controllers/JointVelocityController",
        [] { return makeForwardCommandController(JointInterface::Velocity); }},
   };

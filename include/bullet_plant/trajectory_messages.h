@@ -1,0 +1,105 @@
+// The messages of joint trajectories (trajectory_msgs, control_msgs) and the shape of an action an
+// owner serves (actionlib's server side), as the plant's controllers exchange them through ports.
+// The node carries an action with actionlib itself (src/node/port_topics.cpp); here an action is
+// four ports on actionlib's own topic names under the action's name:
+//   <action>/goal      in   ActionGoal<Goal>: delivered true = accepted, false = rejected (the owner
+//                           then publishes the Rejected result with its reason)
+//   <action>/cancel    in   ActionCancel: cancel that goal if it is still active
+//   <action>/result    out  ActionResult<Result>: how each goal ended
+//   <action>/feedback  out  ActionFeedback<Feedback>
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace bullet_plant
+{
+// trajectory_msgs/JointTrajectoryPoint; a vector left empty was not given.
+struct TrajectoryPointSample
+{
+  std::vector<double> positions, velocities, accelerations, effort;
+  int64_t time_from_start_ns = 0;
+};
+
+// trajectory_msgs/JointTrajectory; stamp 0 means "start now".
+struct JointTrajectoryCommand
+{
+  int64_t stamp_ns = 0;
+  std::vector<std::string> joint_names;
+  std::vector<TrajectoryPointSample> points;
+};
+
+// control_msgs/JointTolerance: 0 keeps the controller's default, -1 removes the bound.
+struct JointToleranceSpec
+{
+  std::string name;
+  double position = 0, velocity = 0, acceleration = 0;
+};
+
+// control_msgs/FollowJointTrajectoryGoal.
+struct FollowJointTrajectoryGoal
+{
+  JointTrajectoryCommand trajectory;
+  std::vector<JointToleranceSpec> path_tolerance, goal_tolerance;
+  int64_t goal_time_tolerance_ns = 0;
+};
+
+// control_msgs/FollowJointTrajectoryResult.
+struct FollowJointTrajectoryResult
+{
+  enum : int32_t
+  {
+    SUCCESSFUL = 0,
+    INVALID_GOAL = -1,
+    INVALID_JOINTS = -2,
+    OLD_HEADER_TIMESTAMP = -3,
+    PATH_TOLERANCE_VIOLATED = -4,
+    GOAL_TOLERANCE_VIOLATED = -5
+  };
+  int32_t error_code = SUCCESSFUL;
+  std::string error_string;
+};
+
+// control_msgs/JointTrajectoryControllerState, and FollowJointTrajectoryFeedback (the same fields).
+struct TrajectoryStateSample
+{
+  int64_t stamp_ns = 0;
+  std::vector<std::string> joint_names;
+  TrajectoryPointSample desired, actual, error;  // error = desired - actual
+};
+
+// A goal as actionlib's server hands it over: its id (unique per goal) and the goal.
+template <class Goal>
+struct ActionGoal
+{
+  std::string id;
+  Goal goal;
+};
+
+struct ActionCancel
+{
+  std::string id;
+};
+
+// How a goal ended: actionlib's setRejected, setSucceeded, setAborted and setCanceled (an active
+// goal's cancel is reported PREEMPTED, a pending one's RECALLED, as actionlib does).
+enum class GoalOutcome { Rejected, Succeeded, Aborted, Canceled };
+
+template <class Result>
+struct ActionResult
+{
+  std::string id;
+  GoalOutcome outcome = GoalOutcome::Succeeded;
+  Result result;
+  std::string text;
+};
+
+template <class Feedback>
+struct ActionFeedback
+{
+  std::string id;
+  Feedback feedback;
+};
+
+}  // namespace bullet_plant
