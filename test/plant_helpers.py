@@ -247,7 +247,7 @@ def arm_controllers(kind='position_controllers', **arm_controller):
                                   'elbow': {'trajectory': 0.2, 'goal': 0.02}},
                   'state_publish_rate': 25, 'action_monitor_rate': 10}
     if kind == 'effort_controllers':
-        controller['gains'] = {'shoulder': {'p': 400.0, 'd': 20.0, 'i': 0.0, 'i_clamp': 1.0},
+        controller['gains'] = {'shoulder': {'p': 100.0, 'd': 2.0, 'i': 0.0, 'i_clamp': 1.0},
                                'elbow': {'p': 400.0, 'd': 20.0, 'i': 0.0, 'i_clamp': 1.0},
                                'wrist': {'p': 2.0, 'd': 0.05, 'i': 0.0, 'i_clamp': 1.0}}
     if kind == 'velocity_controllers':
