@@ -39,6 +39,7 @@ enum class PluginKind
   ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
   P3d,           // libgazebo_ros_p3d.so, a model plugin
   Range,         // libgazebo_ros_range.so inside <sensor type="ray">
+  Velodyne,      // velodyne_simulator's libgazebo_ros_velodyne_(gpu_)laser.so inside <sensor type="(gpu_)ray">
   // Model plugins that act on the physics (model_plugin.h), from <gazebo><plugin>:
   DiffDrive,            // libgazebo_ros_diff_drive.so
   SkidSteerDrive,       // libgazebo_ros_skid_steer_drive.so

@@ -25,12 +25,14 @@ std::string underCameraName(const SensorDescription& d, const std::string& topic
 
 // Whose rules name a sensor: its type's plugin family, as the plant builds its sensor class from
 // the type (a <plugin> of another family is refused at load by the node).
-enum class Family { Laser, Range, Camera, ImuSensor, ImuModel, P3d, Other };
+enum class Family { Laser, Range, Velodyne, Camera, ImuSensor, ImuModel, P3d, Other };
 
 Family familyOf(const SensorDescription& d)
 {
   if (d.type == "ray" || d.type == "gpu_ray")
-    return d.plugin_kind == PluginKind::Range ? Family::Range : Family::Laser;
+    return d.plugin_kind == PluginKind::Range      ? Family::Range
+           : d.plugin_kind == PluginKind::Velodyne ? Family::Velodyne
+                                                   : Family::Laser;
   if (d.type == "camera" || d.type == "depth")
     return Family::Camera;
   if (d.type == "imu")
@@ -69,6 +71,7 @@ std::string pluginNamespace(const SensorDescription& d, const std::string& spawn
     case Family::ImuModel:
     case Family::P3d:
     case Family::Range:
+    case Family::Velodyne:
       return namespaceOfModelPlugin(d, spawn_namespace, "");
     default:
       if (d.hasPluginParam("robotNamespace"))  // GetRobotNamespace: an empty element means the model's name
@@ -85,6 +88,7 @@ std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugi
     case Family::ImuModel:  // neither IMU plugin resolves its frame against a tf_prefix
     case Family::P3d:       // only a tf_prefix parameter prefixes its frame
     case Family::Range:
+    case Family::Velodyne:
       return "";
     default:
       return withoutTrailingSlashes(plugin_namespace);
@@ -97,6 +101,7 @@ std::string pluginFrameId(const SensorDescription& d, const std::string& tf_pref
   {
     case Family::Laser:  // no <frameName> means "/world"
     case Family::Range:
+    case Family::Velodyne:
       return resolveTfFrame(tf_prefix, d.pluginParam("frameName", "/world"));
     case Family::ImuSensor:  // frameName as given, without a leading '/' (tf2 refuses it)
       return withoutLeadingSlash(d.pluginParam("frameName", ""));
@@ -139,6 +144,8 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
       return d.pluginParam("topicName", "/world");
     case Family::Range:
       return d.pluginParam("topicName", "/range");
+    case Family::Velodyne:
+      return d.pluginParam("topicName", "/points");
     case Family::ImuModel:
       return d.pluginParam("topicName", "/default_imu");
     case Family::ImuSensor:  // appended to "<namespace>/": never absolute on its own

@@ -41,6 +41,8 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
       {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
       {"libgazebo_ros_range.so", PluginKind::Range},
+      {"libgazebo_ros_velodyne_laser.so", PluginKind::Velodyne},
+      {"libgazebo_ros_velodyne_gpu_laser.so", PluginKind::Velodyne},
       {"libhector_gazebo_ros_gps.so", PluginKind::HectorGps},
       {"libhector_gazebo_ros_imu.so", PluginKind::HectorImu},
       {"libhector_gazebo_ros_magnetic.so", PluginKind::HectorMagnetic},
@@ -490,10 +492,12 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
         out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));
         d.plugin_kind = PluginKind::Unknown;  // a model plugin's file in a <sensor> is no sensor plugin
       }
-      if (d.plugin_kind == PluginKind::Range && d.type != "ray" && d.type != "gpu_ray")
+      if ((d.plugin_kind == PluginKind::Range || d.plugin_kind == PluginKind::Velodyne) && d.type != "ray" &&
+          d.type != "gpu_ray")
       {
-        out.errors.push_back("sensor '" + d.name + "': gazebo_ros_range needs a <sensor type=\"ray\"> (\"requires a Ray "
-                             "Sensor as its parent\"), not '" + d.type + "'; it publishes nothing");
+        out.errors.push_back("sensor '" + d.name + "': " + d.plugin_filename + " needs a <sensor type=\"ray\"> or "
+                             "\"gpu_ray\" (\"requires a Ray Sensor as its parent\"), not '" + d.type +
+                             "'; it publishes nothing");
         d.plugin_kind = PluginKind::None;
       }
       if (d.type == "imu" && d.plugin_kind == PluginKind::ImuSensor && !d.hasPluginParam("frameName"))
