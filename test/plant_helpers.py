@@ -195,6 +195,12 @@ def force_bot(**params):
     return with_plugin_params(urdf[:start] + block + urdf[end:], 'push', **params)
 
 
+def tricycle_bot(**params):
+    """tricycle_bot.urdf (a front wheel steered and driven, two free rear wheels) with its tricycle
+    drive plugin's parameters changed."""
+    return fixture_urdf('tricycle_bot', 'tricycle_drive', **params)
+
+
 def gripper(**params):
     """gripper.urdf (two fingers, the second following the first, as turtlebot3_manipulation's) with
     its mimic joint plugin's parameters changed."""

@@ -43,6 +43,7 @@ enum class PluginKind
   // Model plugins that act on the physics (model_plugin.h), from <gazebo><plugin>:
   DiffDrive,            // libgazebo_ros_diff_drive.so
   SkidSteerDrive,       // libgazebo_ros_skid_steer_drive.so
+  TricycleDrive,        // libgazebo_ros_tricycle_drive.so
   PlanarMove,           // libgazebo_ros_planar_move.so
   JointStatePublisher,  // libgazebo_ros_joint_state_publisher.so
   MimicJoint,           // lib roboticsgroup(_upatras)_gazebo_mimic_joint_plugin.so

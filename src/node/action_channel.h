@@ -1,4 +1,4 @@
-// An action an owner in the plant serves (trajectory_messages.h's four ports), served over ROS by
+// An action an owner in the plant serves (action_messages.h's four ports), served over ROS by
 // actionlib's own ActionServer: goals and cancels arrive on ROS threads and are posted to the
 // simulation thread, where the owner's goal port says accepted or not; the owner's result and
 // feedback ports, drained after each step, end and inform the goals by id.
@@ -13,7 +13,7 @@
 #include <actionlib/server/action_server.h>
 
 #include "bullet_plant/message_ports.h"
-#include "bullet_plant/trajectory_messages.h"
+#include "bullet_plant/action_messages.h"
 #include "msg_conversions.h"
 
 namespace bullet_plant
@@ -32,7 +32,7 @@ public:
 };
 
 // Serves RosAction on `name`; Goal, Result and Feedback are the plant's types for its goal, result
-// and feedback (converted by msg_conversions.h's fromMsg / toMsg).
+// and feedback (converted by msg_conversions.h's fromMsg(goal) and toMsg(plant, ros&)).
 template <class RosAction, class Goal, class Result, class Feedback>
 class ActionChannelOf : public ActionChannel
 {
@@ -69,7 +69,11 @@ public:
         std::lock_guard<std::mutex> lock(mutex_);
         auto it = goals_.find(f.id);
         if (it != goals_.end())
-          it->second.publishFeedback(trajectoryStateMsg<RosFeedback>(f.feedback));
+        {
+          RosFeedback m;
+          toMsg(f.feedback, m);
+          it->second.publishFeedback(m);
+        }
       }
   }
 
@@ -119,7 +123,8 @@ private:
     auto it = goals_.find(r.id);
     if (it == goals_.end())
       return;
-    const RosResult result = toMsg(r.result);
+    RosResult result;
+    toMsg(r.result, result);
     switch (r.outcome)
     {
       case GoalOutcome::Rejected: it->second.setRejected(result, r.text); break;

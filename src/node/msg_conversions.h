@@ -6,6 +6,7 @@
 #include <string>
 
 #include <control_msgs/FollowJointTrajectoryAction.h>
+#include <control_msgs/GripperCommandAction.h>
 #include <control_msgs/JointControllerState.h>
 #include <control_msgs/JointTrajectoryControllerState.h>
 #include <geometry_msgs/Pose.h>
@@ -27,7 +28,7 @@
 #include "bullet_plant/plugin_messages.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
-#include "bullet_plant/trajectory_messages.h"
+#include "bullet_plant/action_messages.h"
 #include "ros_time.h"
 
 namespace bullet_plant
@@ -310,12 +311,30 @@ inline control_msgs::JointTrajectoryControllerState toMsg(const TrajectoryStateS
   return trajectoryStateMsg<control_msgs::JointTrajectoryControllerState>(s);
 }
 
-inline control_msgs::FollowJointTrajectoryResult toMsg(const FollowJointTrajectoryResult& r)
+// An action's result and feedback, filled into the ROS type actionlib's server wants.
+inline void toMsg(const FollowJointTrajectoryResult& r, control_msgs::FollowJointTrajectoryResult& m)
 {
-  control_msgs::FollowJointTrajectoryResult m;
   m.error_code = r.error_code;
   m.error_string = r.error_string;
-  return m;
+}
+
+inline void toMsg(const TrajectoryStateSample& s, control_msgs::FollowJointTrajectoryFeedback& m)
+{
+  m = trajectoryStateMsg<control_msgs::FollowJointTrajectoryFeedback>(s);
+}
+
+inline GripperCommandGoal fromMsg(const control_msgs::GripperCommandGoal& m)
+{
+  return GripperCommandGoal{m.command.position, m.command.max_effort};
+}
+
+template <class RosMsg>  // GripperCommandResult and GripperCommandFeedback
+void toMsg(const GripperCommandResult& r, RosMsg& m)
+{
+  m.position = r.position;
+  m.effort = r.effort;
+  m.stalled = r.stalled;
+  m.reached_goal = r.reached_goal;
 }
 
 }  // namespace bullet_plant

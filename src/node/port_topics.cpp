@@ -20,7 +20,7 @@ struct PortTransport
   std::function<ros::Subscriber(ros::NodeHandle&, const std::string& topic, Post)> subscribe;
   std::function<ros::Publisher(ros::NodeHandle&, const std::string& topic)> advertise;
   std::function<void(Port&, const ros::Publisher&)> drain;
-  // An action (trajectory_messages.h): its goal port's transport serves it; the cancel, result and
+  // An action (action_messages.h): its goal port's transport serves it; the cancel, result and
   // feedback ports are carried by that server (`by_action`).
   std::function<std::shared_ptr<ActionChannel>(ros::NodeHandle&, const std::string& action, RosPlant&,
                                                ActionChannel::FindPort)>
@@ -102,6 +102,8 @@ const PortTransport* transportOf(const Port& port)
       {typeid(ActionGoal<FollowJointTrajectoryGoal>),
        action<control_msgs::FollowJointTrajectoryAction, FollowJointTrajectoryGoal, FollowJointTrajectoryResult,
               TrajectoryStateSample>()},
+      {typeid(ActionGoal<GripperCommandGoal>),
+       action<control_msgs::GripperCommandAction, GripperCommandGoal, GripperCommandResult, GripperCommandResult>()},
       {typeid(ActionCancel), carriedByAction()},
   };
   static const std::map<std::type_index, PortTransport> outputs = {
@@ -115,6 +117,8 @@ const PortTransport* transportOf(const Port& port)
       {typeid(TrajectoryStateSample), output<TrajectoryStateSample, control_msgs::JointTrajectoryControllerState>(1)},
       {typeid(ActionResult<FollowJointTrajectoryResult>), carriedByAction()},
       {typeid(ActionFeedback<TrajectoryStateSample>), carriedByAction()},
+      {typeid(ActionResult<GripperCommandResult>), carriedByAction()},
+      {typeid(ActionFeedback<GripperCommandResult>), carriedByAction()},
   };
   const auto& table = port.direction() == Port::Direction::In ? inputs : outputs;
   auto it = table.find(port.messageType());

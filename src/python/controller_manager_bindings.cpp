@@ -2,7 +2,7 @@
 // control_toolbox's Pid, driven from Python.
 #include "bindings.h"
 
-#include "bullet_plant/trajectory_messages.h"
+#include "bullet_plant/action_messages.h"
 
 namespace bullet_plant
 {

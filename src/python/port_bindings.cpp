@@ -6,7 +6,7 @@
 
 #include "bullet_plant/model_plugin.h"
 #include "bullet_plant/plugin_messages.h"
-#include "bullet_plant/trajectory_messages.h"
+#include "bullet_plant/action_messages.h"
 
 namespace bullet_plant
 {
@@ -129,14 +129,32 @@ py::dict trajectoryFeedbackDict(const ActionFeedback<TrajectoryStateSample>& f)
   return d;
 }
 
+// actionlib's terminal states as Python names them.
+const char* outcomeName(GoalOutcome outcome)
+{
+  static const char* names[] = {"rejected", "succeeded", "aborted", "canceled"};
+  return names[int(outcome)];
+}
+
 py::dict trajectoryResultDict(const ActionResult<FollowJointTrajectoryResult>& r)
 {
-  static const char* outcomes[] = {"rejected", "succeeded", "aborted", "canceled"};
   py::dict d;
   d["goal_id"] = r.id;
-  d["outcome"] = outcomes[int(r.outcome)];
+  d["outcome"] = outcomeName(r.outcome);
   d["error_code"] = r.result.error_code;
   d["error_string"] = r.result.error_string;
+  return d;
+}
+
+py::dict gripperResultDict(const ActionResult<GripperCommandResult>& r)
+{
+  py::dict d;
+  d["goal_id"] = r.id;
+  d["outcome"] = outcomeName(r.outcome);
+  d["position"] = r.result.position;
+  d["effort"] = r.result.effort;
+  d["stalled"] = r.result.stalled;
+  d["reached_goal"] = r.result.reached_goal;
   return d;
 }
 
@@ -228,6 +246,14 @@ bool deliverToPort(Port& port, py::object value)
     goal.goal_time_tolerance_ns = nsOfSeconds(d.contains("goal_time_tolerance") ? d["goal_time_tolerance"].cast<double>() : 0.0);
     return in->deliver(ActionGoal<FollowJointTrajectoryGoal>{d["goal_id"].cast<std::string>(), goal});
   }
+  if (auto* in = dynamic_cast<InputPort<ActionGoal<GripperCommandGoal>>*>(&port))
+  {
+    // {"goal_id": ..., "position": ..., "max_effort": ...}
+    const py::dict d = value.cast<py::dict>();
+    return in->deliver(ActionGoal<GripperCommandGoal>{
+        d["goal_id"].cast<std::string>(),
+        GripperCommandGoal{d["position"].cast<double>(), d.contains("max_effort") ? d["max_effort"].cast<double>() : 0.0}});
+  }
   if (auto* in = dynamic_cast<InputPort<ActionCancel>*>(&port))
     return in->deliver(ActionCancel{value.cast<std::string>()});  // the goal id
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot send; add it to port_bindings.cpp");
@@ -242,7 +268,8 @@ py::object latestOfPort(const Port& port)
       latestAs<NavSatFixSample>(port, navSatFixDict, out) || latestAs<Vector3StampedSample>(port, vector3StampedDict, out) ||
       latestAs<ImuSample>(port, imuDict, out) || latestAs<TrajectoryStateSample>(port, trajectoryStateDict, out) ||
       latestAs<ActionResult<FollowJointTrajectoryResult>>(port, trajectoryResultDict, out) ||
-      latestAs<ActionFeedback<TrajectoryStateSample>>(port, trajectoryFeedbackDict, out))
+      latestAs<ActionFeedback<TrajectoryStateSample>>(port, trajectoryFeedbackDict, out) ||
+      latestAs<ActionResult<GripperCommandResult>>(port, gripperResultDict, out))
     return out;
   throw py::type_error("port '" + port.topic() + "' carries a message Python cannot read; add it to port_bindings.cpp");
 }

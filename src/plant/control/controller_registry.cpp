@@ -13,6 +13,7 @@ std::unique_ptr<Controller> makeEffortGroupPositionController();
 std::unique_ptr<Controller> makeEffortPidController(bool position);
 std::unique_ptr<Controller> makeForwardCommandController(JointInterface iface);
 std::unique_ptr<Controller> makeForwardGroupController(JointInterface iface);
+std::unique_ptr<Controller> makeGripperActionController(JointInterface iface);
 std::unique_ptr<Controller> makeJointStateController();
 std::unique_ptr<Controller> makeJointTrajectoryController(JointInterface iface);
 
@@ -31,6 +32,8 @@ const std::vector<ControllerType>& registry()
        makeAckermannSteeringController},
       {"diff_drive_controller/DiffDriveController",
        makeDiffDriveController},
+      {"effort_controllers/GripperActionController",
+       [] { return makeGripperActionController(JointInterface::Effort); }},
       {"effort_controllers/JointEffortController",
        [] { return makeForwardCommandController(JointInterface::Effort); }},
       {"effort_controllers/JointGroupEffortController",
@@ -45,6 +48,8 @@ const std::vector<ControllerType>& registry()
        [] { return makeEffortPidController(false); }},
       {"joint_state_controller/JointStateController",
        makeJointStateController},
+      {"position_controllers/GripperActionController",
+       [] { return makeGripperActionController(JointInterface::Position); }},
       {"position_controllers/JointGroupPositionController",
        [] { return makeForwardGroupController(JointInterface::Position); }},
       {"position_controllers/JointPositionController",

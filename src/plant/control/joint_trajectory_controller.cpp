@@ -13,7 +13,7 @@
 #include <map>
 #include <sstream>
 
-#include "bullet_plant/trajectory_messages.h"
+#include "bullet_plant/action_messages.h"
 #include "control/controller_support.h"
 #include "control/spline_segment.h"
 

@@ -123,6 +123,7 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
   switch (d.kind)
   {
     case PluginKind::DiffDrive:  // the GazeboRos helper
+    case PluginKind::TricycleDrive:
     case PluginKind::JointStatePublisher:
       return ns.empty() ? model_name : ns;
     default:  // skid_steer_drive, planar_move, the mimic joint plugin: "" is the global namespace
@@ -133,7 +134,8 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
 std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace)
 {
   // The GazeboRos helper falls back to its namespace; the others read only a tf_prefix parameter.
-  return d.kind == PluginKind::DiffDrive ? withoutTrailingSlashes(plugin_namespace) : "";
+  return d.kind == PluginKind::DiffDrive || d.kind == PluginKind::TricycleDrive ? withoutTrailingSlashes(plugin_namespace)
+                                                                                : "";
 }
 
 std::string pluginTopic(const SensorDescription& d, PluginTopic which)

@@ -49,6 +49,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_force_based_move.so", PluginKind::ForceBasedMove},
       {"libgazebo_ros_force.so", PluginKind::Force},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
+      {"libgazebo_ros_tricycle_drive.so", PluginKind::TricycleDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
       {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
       {"libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so", PluginKind::MimicJoint},
@@ -63,6 +64,7 @@ bool isModelPluginKind(PluginKind kind)
   {
     case PluginKind::DiffDrive:
     case PluginKind::SkidSteerDrive:
+    case PluginKind::TricycleDrive:
     case PluginKind::PlanarMove:
     case PluginKind::JointStatePublisher:
     case PluginKind::MimicJoint:

@@ -6,6 +6,7 @@ namespace bullet_plant
 {
 std::unique_ptr<ModelPlugin> makeGazeboRosDiffDrive();
 std::unique_ptr<ModelPlugin> makeGazeboRosSkidSteerDrive();
+std::unique_ptr<ModelPlugin> makeGazeboRosTricycleDrive();
 std::unique_ptr<ModelPlugin> makeGazeboRosPlanarMove();
 std::unique_ptr<ModelPlugin> makeGazeboRosJointStatePublisher();
 std::unique_ptr<ModelPlugin> makeMimicJointPlugin();
@@ -21,6 +22,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
   {
     case PluginKind::DiffDrive: return makeGazeboRosDiffDrive();
     case PluginKind::SkidSteerDrive: return makeGazeboRosSkidSteerDrive();
+    case PluginKind::TricycleDrive: return makeGazeboRosTricycleDrive();
     case PluginKind::PlanarMove: return makeGazeboRosPlanarMove();
     case PluginKind::JointStatePublisher: return makeGazeboRosJointStatePublisher();
     case PluginKind::MimicJoint: return makeMimicJointPlugin();

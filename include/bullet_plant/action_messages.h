@@ -1,5 +1,6 @@
-// The messages of joint trajectories (trajectory_msgs, control_msgs) and the shape of an action an
-// owner serves (actionlib's server side), as the plant's controllers exchange them through ports.
+// The controllers' actions as the plant's ports carry them: the shape of an action an owner serves
+// (actionlib's server side) and the messages of FollowJointTrajectory (trajectory_msgs,
+// control_msgs) and GripperCommand.
 // The node carries an action with actionlib itself (src/node/port_topics.cpp); here an action is
 // four ports on actionlib's own topic names under the action's name:
 //   <action>/goal      in   ActionGoal<Goal>: delivered true = accepted, false = rejected (the owner
@@ -67,6 +68,19 @@ struct TrajectoryStateSample
   int64_t stamp_ns = 0;
   std::vector<std::string> joint_names;
   TrajectoryPointSample desired, actual, error;  // error = desired - actual
+};
+
+// control_msgs/GripperCommand: the goal of GripperCommand.action.
+struct GripperCommandGoal
+{
+  double position = 0, max_effort = 0;
+};
+
+// control_msgs/GripperCommandResult (and its Feedback, the same fields).
+struct GripperCommandResult
+{
+  double position = 0, effort = 0;
+  bool stalled = false, reached_goal = false;
 };
 
 // A goal as actionlib's server hands it over: its id (unique per goal) and the goal.
