@@ -97,10 +97,6 @@ struct Scene : HandBuiltWorld
 double stepDifference(bool fixed_base, bool on_ground, unsigned seed)
 {
   Scene plant(true, fixed_base, on_ground, seed), bullet(false, fixed_base, on_ground, seed);
-  // The plant pushes penetration out in a pass of its own (DenseRowSolver::pushOut), Bullet within
-  // its rows: the rows compared are those that stop the contacts.
-  plant.world->getSolverInfo().m_erp2 = 0;
-  bullet.world->getSolverInfo().m_erp2 = 0;
   const std::vector<btScalar> before = plant.velocities();
   plant.world->stepSimulation(btScalar(0.001), 0, btScalar(0.001));
   bullet.world->stepSimulation(btScalar(0.001), 0, btScalar(0.001));

@@ -57,11 +57,11 @@ void DenseRowSolver::needArticulatedPass(btMultiBody* body)
 }
 
 void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
-                                   btScalar cfm, btScalar sor, btScalar penetration)
+                                   btScalar cfm, btScalar sor)
 {
   std::vector<int>& own = body_rows_[slot].rows;
   own.push_back(int(deferred_.size()));
-  deferred_.push_back(DeferredRow{&rows, index, slot, int(own.size() - 1), velocity_error, cfm, sor, penetration});
+  deferred_.push_back(DeferredRow{&rows, index, slot, int(own.size() - 1), velocity_error, cfm, sor});
 }
 
 // The responses M^-1 J^T of each multibody's deferred rows, all at once, and what Bullet derives
@@ -100,7 +100,6 @@ void DenseRowSolver::finishDeferredRows()
       const btScalar denominator = slot.gram[size_t(p) * padded + p] + d.cfm;
       row.m_jacDiagABInv = denominator > SIMD_EPSILON ? d.sor / denominator : btScalar(0);
       row.m_rhs = d.velocity_error * row.m_jacDiagABInv;
-      row.m_rhsPenetration = d.penetration * row.m_jacDiagABInv;
       row.m_cfm = d.cfm * row.m_jacDiagABInv;
     }
   }
@@ -246,12 +245,7 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
   row.m_appliedImpulse = 0;
   row.m_appliedPushImpulse = 0;
-  // A normal row's positional error is the push pass's (pushOut): the row itself only stops the
-  // contact. Friction keeps its anchor's (zero without BT_CONTACT_FLAG_FRICTION_ANCHOR).
-  if (friction)
-    deferResponse(rows, index, slot, positional_error + velocity_error, cfm, info.m_sor);
-  else
-    deferResponse(rows, index, slot, velocity_error, cfm, info.m_sor, positional_error);
+  deferResponse(rows, index, slot, positional_error + velocity_error, cfm, info.m_sor);
 }
 
 // convertMultiBodyContact's rows (a normal row, then one or two friction rows per point), built by
@@ -527,8 +521,6 @@ void DenseRowSolver::loadRows()
     row.upper = c.m_upperLimit;
     row.friction = c.m_friction;
     row.impulse = row.start_impulse = c.m_appliedImpulse;
-    row.penetration = int(k) >= non_contact && int(k) < non_contact + normal ? c.m_rhsPenetration : btScalar(0);
-    row.push = 0;
     row.normal = int(k) >= non_contact + normal ? non_contact + c.m_frictionIndex : -1;
   }
 }
@@ -625,43 +617,12 @@ inline btScalar DenseRowSolver::visit(Row& row)
   return delta * row.mass;
 }
 
-// Bullet's split impulse iterations (resolveSplitPenetrationImpulse) over the normal rows, on the
-// same Delassus blocks: from zero, the push of each row >= 0, friction left out. The pushes go into
-// the velocities with the rows' impulses (applyVelocityChanges) but not into the impulses kept for
-// the next step's warm start.
-void DenseRowSolver::pushOut(const btContactSolverInfo& info)
-{
-  const int non_contact = m_multiBodyNonContactConstraints.size();
-  const int normal = m_multiBodyNormalContactConstraints.size();
-  bool any = false;
-  for (int j = 0; j < normal && !any; ++j)
-    any = rows_[non_contact + j].penetration > 0;
-  if (!any)
-    return;
-  push_velocity_.assign(row_velocity_.size(), 0);
-  for (int iteration = 0; iteration < info.m_numIterations; ++iteration)
-    for (int j = 0; j < normal; ++j)
-    {
-      Row& row = rows_[non_contact + j];
-      btScalar delta = row.penetration - row.push * row.cfm - push_velocity_[row.velocity + row.local] * row.inverse_mass;
-      if (row.push + delta < 0)
-        delta = -row.push;
-      if (delta == 0)
-        continue;
-      row.push += delta;
-      Lanes* velocity = reinterpret_cast<Lanes*>(&push_velocity_[row.velocity]);
-      const Lanes* column = reinterpret_cast<const Lanes*>(&delassus_[row.column]);
-      for (int q = 0; q < row.stride / kLanes; ++q)
-        velocity[q] += delta * column[q];
-    }
-}
-
 void DenseRowSolver::applyVelocityChanges()
 {
   velocity_change_.assign(m_data.m_deltaVelocities.size(), 0);
   for (const Row& row : rows_)
   {
-    const btScalar impulse = row.impulse - row.start_impulse + row.push;
+    const btScalar impulse = row.impulse - row.start_impulse;
     if (impulse == 0)
       continue;
     const btMultiBodySolverConstraint& c = *row.constraint;
@@ -697,17 +658,8 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
                                                            const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
 {
   if (!denseApplies(info))
-  {
-    // Bullet's iterations have no push pass: the positional error goes back into the target.
-    for (int k = 0; k < m_multiBodyNormalContactConstraints.size(); ++k)
-    {
-      btMultiBodySolverConstraint& c = m_multiBodyNormalContactConstraints[k];
-      c.m_rhs += c.m_rhsPenetration;
-      c.m_rhsPenetration = 0;
-    }
     return btMultiBodyConstraintSolver::solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds,
                                                                           constraints, numConstraints, info, debugDrawer);
-  }
   collectRows();
   buildBlocks();
   loadRows();
@@ -764,7 +716,6 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
       break;
     }
   }
-  pushOut(info);
   storeRows();
   applyVelocityChanges();
   return 0;

@@ -21,17 +21,6 @@
 // of the previous step times m_warmstartingFactor, friction included. Bullet's multibody solver
 // starts friction and joint motor rows from zero each step, so a wheel's traction and a drive's
 // torque had to be rebuilt from nothing by the iterations of every step.
-//
-// A second: the contacts' correction of their penetration (depth * erp / dt) is not part of the
-// rows' targets. Where a link's joints cannot move a contact point along some contact direction
-// (an arm whose joints all turn about one point cannot move its hand towards that point) the rows'
-// Delassus block is singular, and a separating speed that partly points there is out of its reach:
-// the iterations then grow the impulses along the block's null space without end, warm starting carries
-// them on, and the rest of the target comes out as a push along the reachable directions, against
-// friction, that fed the arm energy on every step. The rows here stop the contact (velocity
-// targets: always within reach); a second pass over the normal rows alone, from zero each step and
-// without friction, then pushes the penetration out as Bullet's split impulse would, only into the
-// velocities (Bullet's multibody has no pseudo-velocities).
 #pragma once
 
 #include <vector>
@@ -100,8 +89,6 @@ private:
     btScalar rhs, cfm, inverse_mass, lower, upper, friction;
     btScalar mass;  // 1 / inverse_mass, or 0 for a row Bullet disabled: the residual is delta * mass
     btScalar impulse, start_impulse;
-    btScalar penetration;  // Bullet's m_rhsPenetration: the push pass's target (normal rows)
-    btScalar push;         // the push pass's impulse, >= 0; not warm started
   };
   struct Group
   {
@@ -120,7 +107,6 @@ private:
     btScalar velocity_error;  // the row's rhs, cfm and relaxation before Bullet's scaling by
     btScalar cfm;             // its inverse effective mass
     btScalar sor;
-    btScalar penetration;  // a contact's positional error (velocity), kept out of velocity_error
   };
   // A multibody with rows in this solve: its state, and its deferred rows' responses and Delassus
   // block (gram).
@@ -135,7 +121,7 @@ private:
   // The multibody's slot in body_rows_ for this solve, or -1 where Bullet's passes must answer.
   int bodySlot(btMultiBody* body);
   void deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error, btScalar cfm,
-                     btScalar sor, btScalar penetration = 0);
+                     btScalar sor);
   void finishDeferredRows();
   // Bullet's rows of `body` (none if null) are about to be built.
   void needArticulatedPass(btMultiBody* body);
@@ -155,8 +141,6 @@ private:
   void addToVelocities(const Row& row, btScalar impulse);
   // Bullet's resolveSingleConstraintRowGeneric on the dense block; returns Bullet's residual.
   btScalar visit(Row& row);
-  // The normal rows' push out of penetration, after the iterations.
-  void pushOut(const btContactSolverInfo& info);
   void applyVelocityChanges();
 
   MultibodyStates* states_ = nullptr;
@@ -171,7 +155,6 @@ private:
   std::vector<int> parent_;
   std::vector<btScalar> delassus_;           // each group's block, row-major (symmetric)
   std::vector<btScalar> row_velocity_;       // J.dv of each row, kept current
-  std::vector<btScalar> push_velocity_;      // J.dv of the pushes alone (pushOut), laid out as row_velocity_
   std::vector<btScalar> velocity_change_;    // per degree of freedom, laid out as m_data.m_deltaVelocities
 };
 
