@@ -136,11 +136,19 @@ const char* outcomeName(GoalOutcome outcome)
   return names[int(outcome)];
 }
 
-py::dict trajectoryResultDict(const ActionResult<FollowJointTrajectoryResult>& r)
+// Every action result's dict starts with the goal's id and how it ended.
+template <class Result>
+py::dict actionResultDict(const ActionResult<Result>& r)
 {
   py::dict d;
   d["goal_id"] = r.id;
   d["outcome"] = outcomeName(r.outcome);
+  return d;
+}
+
+py::dict trajectoryResultDict(const ActionResult<FollowJointTrajectoryResult>& r)
+{
+  py::dict d = actionResultDict(r);
   d["error_code"] = r.result.error_code;
   d["error_string"] = r.result.error_string;
   return d;
@@ -148,9 +156,7 @@ py::dict trajectoryResultDict(const ActionResult<FollowJointTrajectoryResult>& r
 
 py::dict gripperResultDict(const ActionResult<GripperCommandResult>& r)
 {
-  py::dict d;
-  d["goal_id"] = r.id;
-  d["outcome"] = outcomeName(r.outcome);
+  py::dict d = actionResultDict(r);
   d["position"] = r.result.position;
   d["effort"] = r.result.effort;
   d["stalled"] = r.result.stalled;

@@ -146,12 +146,7 @@ private:
   void publishOdometry(int64_t time_ns)
   {
     if (!encoder_odometry_)
-    {
-      const LinkMotion model = context_->linkMotion(context_->rootLink());
-      odometry_.pose = model.pose;
-      odometry_.linear = inHeading(yawOf(model.pose.rotation), model.velocity);
-      odometry_.angular = urdf::Vector3(0, 0, model.angular_velocity.z);
-    }
+      readWorldOdometry(*context_, odometry_);
     odometry_.stamp_ns = time_ns;
     tf_port_->publish(TransformSample{time_ns, odometry_.frame_id, odometry_.child_frame_id, odometry_.pose});
     odometry_port_->publish(odometry_);

@@ -59,6 +59,16 @@ protected:
   // Called as each accepted command is stored, for plugins that note when commands come.
   virtual void commandArrived() {}
 
+  // World odometry as diff_drive and tricycle_drive read it: the model frame's pose, its world
+  // velocity turned into its heading, the world yaw rate.
+  static void readWorldOdometry(const ModelPluginContext& context, OdometrySample& out)
+  {
+    const LinkMotion model = context.linkMotion(context.rootLink());
+    out.pose = model.pose;
+    out.linear = inHeading(yawOf(model.pose.rotation), model.velocity);
+    out.angular = urdf::Vector3(0, 0, model.angular_velocity.z);
+  }
+
   TwistCommand command_;  // the last command; Reset zeroes it
 };
 
