@@ -40,6 +40,8 @@ enum class PluginKind
   P3d,           // libgazebo_ros_p3d.so, a model plugin
   Range,         // libgazebo_ros_range.so inside <sensor type="ray">
   Velodyne,      // velodyne_simulator's libgazebo_ros_velodyne_(gpu_)laser.so inside <sensor type="(gpu_)ray">
+  BlockLaser,    // libgazebo_ros_block_laser.so inside <sensor type="ray">
+  HectorSonar,   // libhector_gazebo_ros_sonar.so inside <sensor type="ray">
   // Model plugins that act on the physics (model_plugin.h), from <gazebo><plugin>:
   DiffDrive,            // libgazebo_ros_diff_drive.so
   SkidSteerDrive,       // libgazebo_ros_skid_steer_drive.so
@@ -110,6 +112,8 @@ struct SensorDescription
   // A number from the plugin block, or fallback when absent; throws DescriptionError naming the
   // sensor and the element when the text is not a number.
   double pluginNumber(const std::string& key, double fallback) const;
+  // The plugin block with a model plugin's typed readers (hector's sensor plugins share them).
+  ModelPluginDescription pluginBlock() const { return {plugin_name, plugin_filename, plugin_kind, plugin}; }
 };
 
 struct SurfaceDescription

@@ -38,6 +38,8 @@ public:
   virtual ~Sensor() = default;
   const SensorDescription& description() const { return description_; }
   const std::string& name() const { return description_.name; }
+  // The seed of its noise: a plugin with a noise model of its own seeds its generator from it.
+  uint32_t noiseSeed() const { return noise_seed_; }
   // Whether the plugin publishes on ROS at all (a known gazebo_ros plugin that loaded).
   bool publishesOnRos() const;
 
@@ -53,6 +55,7 @@ public:
 
 protected:
   SensorDescription description_;
+  uint32_t noise_seed_;
   std::mt19937 noise_;
   bool active_ = false;
   uint64_t updates_ = 0;

@@ -4,7 +4,6 @@
 // <gaussianNoise> added to a range short of the maximum, the sum held to it; at most <updateRate>
 // (0: every scan). Upstream's rules (docs/interfaces.md section 11).
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 
 #include <sensor_msgs/Range.h>
@@ -55,26 +54,17 @@ public:
     for (float r : scan.ranges)
       shortest = std::min(shortest, std::isfinite(r) ? r : range_.max_range);
     if (shortest < range_.max_range)
-      shortest = float(std::min(shortest + gaussianKernel(0.0, gaussian_noise_), double(range_.max_range)));
+      shortest = float(std::min(shortest + gaussian_kernel_(0.0, gaussian_noise_), double(range_.max_range)));
     range_.range = shortest;
     range_pub_.publish(range_);
   }
 
 private:
-  // Box-Muller from rand_r seeded with 0, as upstream draws its noise: the same sequence every run.
-  double gaussianKernel(double mu, double sigma)
-  {
-    if (sigma == 0.0)
-      return mu;
-    const double u = double(rand_r(&seed_)) / double(RAND_MAX), v = double(rand_r(&seed_)) / double(RAND_MAX);
-    return sigma * std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * v) + mu;
-  }
-
   Lidar* lidar_ = nullptr;
   sensor_msgs::Range range_;
   double gaussian_noise_ = 0.0;
   int64_t update_period_ns_ = 0, last_publish_ns_ = std::numeric_limits<int64_t>::min() / 2;
-  unsigned int seed_ = 0;
+  GaussianKernel gaussian_kernel_;
   ros::Publisher range_pub_;
 };
 

@@ -7,7 +7,6 @@
 // azimuth, every ring at each, ring 0 the lowest, as the driver orders them. Upstream's rules
 // (docs/interfaces.md section 11).
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -72,7 +71,7 @@ public:
         if (!kept && !organize_cloud_)
           continue;
         if (kept && gaussian_noise_ != 0.0)
-          r += gaussianKernel(0.0, gaussian_noise_);
+          r += gaussian_kernel_(0.0, gaussian_noise_);
         const double yaw = d.horizontal_min_angle + i * yaw_step, pitch = d.vertical_min_angle + j * pitch_step;
         const bool inside = near < r && r < far;  // noise may push a kept range out: upstream drops it
         if (!inside && !organize_cloud_)
@@ -122,19 +121,11 @@ private:
             field("intensity", 12, P::FLOAT32), field("ring", 16, P::UINT16), field("time", 18, P::FLOAT32)};
   }
 
-  // Box-Muller from rand_r seeded with 0, as the range plugin draws: the same sequence every run
-  // (upstream uses the process-wide rand()).
-  double gaussianKernel(double mu, double sigma)
-  {
-    const double u = double(rand_r(&seed_)) / double(RAND_MAX), v = double(rand_r(&seed_)) / double(RAND_MAX);
-    return sigma * std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * v) + mu;
-  }
-
   Lidar* lidar_ = nullptr;
   sensor_msgs::PointCloud2 cloud_;
   bool organize_cloud_ = false;
   double min_range_ = 0, max_range_ = 0, min_intensity_ = 0, gaussian_noise_ = 0;
-  unsigned int seed_ = 0;
+  GaussianKernel gaussian_kernel_;
   ros::Publisher cloud_pub_;
 };
 

@@ -28,7 +28,7 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
   if (!plugin_odometry_)
     odometry_.reset(new OdometryPublisher(robot, nh_));
   for (Sensor* sensor : robot.sensors())
-    if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor, robot))
+    if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor, robot, plant.world().timeStep()))
       sensor_plugins_.push_back({sensor, std::move(plugin)});
   const std::string& estop = robot.description().control.e_stop_topic;
   if (!estop.empty())
@@ -52,7 +52,7 @@ void RobotInterface::OnUpdate(int64_t time_ns)
   if (odometry_)
     odometry_->publish(time_ns, !(controller_topics_ && controller_topics_->publishesOdometryTransform()));
   for (LoadedPlugin& loaded : sensor_plugins_)
-    loaded.plugin->OnUpdate();
+    loaded.plugin->update(time_ns);
 }
 
 void RobotInterface::updateSubscriptions()

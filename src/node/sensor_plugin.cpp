@@ -23,7 +23,7 @@ SensorPluginRegistration::SensorPluginRegistration(const std::vector<std::string
     registry()[filename] = factory;
 }
 
-std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& robot)
+std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& robot, double step_size)
 {
   if (!sensor.publishesOnRos())
     return nullptr;
@@ -32,6 +32,7 @@ std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& 
     return nullptr;
   std::unique_ptr<SensorPlugin> plugin = factory->second();
   plugin->namespace_ = pluginNamespace(sensor.description(), robot.spawnNamespace(), robot.name());
+  plugin->step_size_ = step_size;
   plugin->Load(sensor);
   return plugin;
 }

@@ -1,12 +1,14 @@
 // A gazebo_ros sensor plugin on the plant, shaped as gazebo_plugins' own: Load() takes the plant's
 // sensor (its <plugin> block parsed at spawn) and advertises the plugin's topics in its namespace,
 // named by the rules of plugin_names.h;
-// OnUpdate() runs after each step and publishes what the sensor computed since the last call (the
-// sensor itself keeps <update_rate>: Sensor::due). A plugin registers itself under its library's
+// OnUpdate() runs after each step (simTimeNs() is the step's time) and publishes what the sensor
+// computed since the last call (the sensor itself keeps <update_rate>: Sensor::due). A plugin registers itself under its library's
 // file names with GAZEBO_ROS_SENSOR_PLUGIN in its own file, so adding one touches only that file
 // (and CMakeLists.txt). Everything runs on the simulation thread.
 #pragma once
 
+#include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -33,9 +35,19 @@ public:
   // The plugin for `sensor`'s <plugin filename>; null for a sensor without one, or with a file no
   // plugin registered (the plant warned about that at spawn).
   // `robot` is the model it belongs to: its name and spawn namespace name the plugin's namespace.
-  static std::unique_ptr<SensorPlugin> create(Sensor& sensor, const Robot& robot);
+  // `step_size` is the world's step (s).
+  static std::unique_ptr<SensorPlugin> create(Sensor& sensor, const Robot& robot, double step_size);
+
+  // After each step at simulated time `time_ns`: OnUpdate with simTimeNs() set.
+  void update(int64_t time_ns)
+  {
+    sim_time_ns_ = time_ns;
+    OnUpdate();
+  }
 
 protected:
+  int64_t simTimeNs() const { return sim_time_ns_; }
+  double stepSize() const { return step_size_; }
   // The plugin's namespace (pluginNamespace), set before Load.
   const std::string& robotNamespace() const { return namespace_; }
   // The node handle of the plugin, in its namespace.
@@ -49,6 +61,26 @@ protected:
 private:
   std::string namespace_;
   uint64_t seen_updates_ = 0;
+  int64_t sim_time_ns_ = 0;
+  double step_size_ = 0.001;
+};
+
+// gazebo_plugins' GaussianKernel: Box-Muller from one uniform pair per draw, the cosine half kept.
+// Upstream draws from the process-wide rand(); here each plugin has its own rand_r state seeded
+// with 0, so a plugin's noise is the same sequence on every run whatever else draws.
+class GaussianKernel
+{
+public:
+  double operator()(double mu, double sigma)
+  {
+    if (sigma == 0.0)
+      return mu;
+    const double u = double(rand_r(&seed_)) / double(RAND_MAX), v = double(rand_r(&seed_)) / double(RAND_MAX);
+    return sigma * std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * v) + mu;
+  }
+
+private:
+  unsigned int seed_ = 0;
 };
 
 using SensorPluginFactory = std::function<std::unique_ptr<SensorPlugin>()>;

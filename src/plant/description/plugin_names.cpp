@@ -25,14 +25,24 @@ std::string underCameraName(const SensorDescription& d, const std::string& topic
 
 // Whose rules name a sensor: its type's plugin family, as the plant builds its sensor class from
 // the type (a <plugin> of another family is refused at load by the node).
-enum class Family { Laser, Range, Velodyne, Camera, ImuSensor, ImuModel, P3d, Other };
+enum class Family { Laser, Range, Velodyne, BlockLaser, HectorSonar, Camera, ImuSensor, ImuModel, P3d, Other };
 
 Family familyOf(const SensorDescription& d)
 {
   if (d.type == "ray" || d.type == "gpu_ray")
-    return d.plugin_kind == PluginKind::Range      ? Family::Range
-           : d.plugin_kind == PluginKind::Velodyne ? Family::Velodyne
-                                                   : Family::Laser;
+    switch (d.plugin_kind)
+    {
+      case PluginKind::Range:
+        return Family::Range;
+      case PluginKind::Velodyne:
+        return Family::Velodyne;
+      case PluginKind::BlockLaser:
+        return Family::BlockLaser;
+      case PluginKind::HectorSonar:
+        return Family::HectorSonar;
+      default:
+        return Family::Laser;
+    }
   if (d.type == "camera" || d.type == "depth")
     return Family::Camera;
   if (d.type == "imu")
@@ -72,6 +82,8 @@ std::string pluginNamespace(const SensorDescription& d, const std::string& spawn
     case Family::P3d:
     case Family::Range:
     case Family::Velodyne:
+    case Family::BlockLaser:
+    case Family::HectorSonar:
       return namespaceOfModelPlugin(d, spawn_namespace, "");
     default:
       if (d.hasPluginParam("robotNamespace"))  // GetRobotNamespace: an empty element means the model's name
@@ -89,6 +101,8 @@ std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugi
     case Family::P3d:       // only a tf_prefix parameter prefixes its frame
     case Family::Range:
     case Family::Velodyne:
+    case Family::BlockLaser:
+    case Family::HectorSonar:  // frameId verbatim
       return "";
     default:
       return withoutTrailingSlashes(plugin_namespace);
@@ -102,7 +116,10 @@ std::string pluginFrameId(const SensorDescription& d, const std::string& tf_pref
     case Family::Laser:  // no <frameName> means "/world"
     case Family::Range:
     case Family::Velodyne:
+    case Family::BlockLaser:
       return resolveTfFrame(tf_prefix, d.pluginParam("frameName", "/world"));
+    case Family::HectorSonar:  // as given, a leading '/' kept (tf2 consumers refuse one: give <frameId>)
+      return d.pluginParam("frameId", "/sonar_link");
     case Family::ImuSensor:  // frameName as given, without a leading '/' (tf2 refuses it)
       return withoutLeadingSlash(d.pluginParam("frameName", ""));
     case Family::ImuModel:  // default bodyName
@@ -148,6 +165,10 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
       return d.pluginParam("topicName", "/range");
     case Family::Velodyne:
       return d.pluginParam("topicName", "/points");
+    case Family::BlockLaser:  // no <topicName> means "/world" (sic), as the laser's
+      return d.pluginParam("topicName", "/world");
+    case Family::HectorSonar:
+      return d.pluginParam("topicName", "sonar");
     case Family::ImuModel:
       return d.pluginParam("topicName", "/default_imu");
     case Family::ImuSensor:  // appended to "<namespace>/": never absolute on its own

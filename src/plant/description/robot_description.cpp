@@ -43,6 +43,8 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_range.so", PluginKind::Range},
       {"libgazebo_ros_velodyne_laser.so", PluginKind::Velodyne},
       {"libgazebo_ros_velodyne_gpu_laser.so", PluginKind::Velodyne},
+      {"libgazebo_ros_block_laser.so", PluginKind::BlockLaser},
+      {"libhector_gazebo_ros_sonar.so", PluginKind::HectorSonar},
       {"libhector_gazebo_ros_gps.so", PluginKind::HectorGps},
       {"libhector_gazebo_ros_imu.so", PluginKind::HectorImu},
       {"libhector_gazebo_ros_magnetic.so", PluginKind::HectorMagnetic},
@@ -494,7 +496,10 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
         out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));
         d.plugin_kind = PluginKind::Unknown;  // a model plugin's file in a <sensor> is no sensor plugin
       }
-      if ((d.plugin_kind == PluginKind::Range || d.plugin_kind == PluginKind::Velodyne) && d.type != "ray" &&
+      const PluginKind k = d.plugin_kind;
+      const bool needs_ray = k == PluginKind::Range || k == PluginKind::Velodyne || k == PluginKind::BlockLaser ||
+                             k == PluginKind::HectorSonar;
+      if (needs_ray && d.type != "ray" &&
           d.type != "gpu_ray")
       {
         out.errors.push_back("sensor '" + d.name + "': " + d.plugin_filename + " needs a <sensor type=\"ray\"> or "

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "bullet_plant/plugin_messages.h"
-#include "gazebo_plugins/hector_sensor_model.h"
+#include "bullet_plant/hector_sensor_model.h"
 
 namespace bullet_plant
 {

@@ -9,7 +9,7 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/plugin_messages.h"
-#include "gazebo_plugins/hector_sensor_model.h"
+#include "bullet_plant/hector_sensor_model.h"
 
 namespace bullet_plant
 {

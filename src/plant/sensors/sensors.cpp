@@ -11,7 +11,7 @@
 namespace bullet_plant
 {
 Sensor::Sensor(const SensorDescription& d, uint32_t noise_seed)
-  : description_(d), noise_(noise_seed), gate_(periodNsOfRate(d.update_rate))
+  : description_(d), noise_seed_(noise_seed), noise_(noise_seed), gate_(periodNsOfRate(d.update_rate))
 {
 }
 

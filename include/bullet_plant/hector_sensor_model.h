@@ -53,14 +53,12 @@ public:
   {
     urdf::Vector3 out;
     for (int i = 0; i < 3; ++i)
-    {
-      const double f = at(drift_frequency_, i);
-      at(current_drift_, i) = std::exp(-dt * f) * at(current_drift_, i) + dt * normal(rng, std::sqrt(2 * f) * at(drift_, i));
-      const double error = at(offset_, i) + at(current_drift_, i) + normal(rng, at(gaussian_noise_, i));
-      at(out, i) = at(value, i) * at(scale_error_, i) + error;
-    }
+      at(out, i) = axis(i, at(value, i), dt, rng);
     return out;
   }
+
+  // hector's scalar SensorModel (the sonar's): the x parameters alone, one drift.
+  double operator()(double value, double dt, std::mt19937& rng) { return axis(0, value, dt, rng); }
 
   void setGaussianNoise(const urdf::Vector3& noise) { gaussian_noise_ = noise; }
   // getCurrentBias: the drift now plus the offset.
@@ -74,6 +72,14 @@ public:
   void setCurrentDrift(const urdf::Vector3& drift) { current_drift_ = drift; }
 
 private:
+  double axis(int i, double value, double dt, std::mt19937& rng)
+  {
+    const double f = at(drift_frequency_, i);
+    at(current_drift_, i) = std::exp(-dt * f) * at(current_drift_, i) + dt * normal(rng, std::sqrt(2 * f) * at(drift_, i));
+    const double error = at(offset_, i) + at(current_drift_, i) + normal(rng, at(gaussian_noise_, i));
+    return value * at(scale_error_, i) + error;
+  }
+
   static double& at(urdf::Vector3& v, int i) { return i == 0 ? v.x : i == 1 ? v.y : v.z; }
   static double at(const urdf::Vector3& v, int i) { return i == 0 ? v.x : i == 1 ? v.y : v.z; }
   // Zero deviation draws nothing: a noiseless model keeps the generator where it was.
@@ -94,12 +100,17 @@ class HectorUpdateTimer
 public:
   void load(const ModelPluginDescription& d, double default_rate, const ModelPluginContext& context)
   {
+    load(d, default_rate, context.stepSize());
+  }
+
+  void load(const ModelPluginDescription& d, double default_rate, double step_size)
+  {
     const double rate = d.number("updateRate", default_rate);
     double period = rate > 0 ? 1.0 / rate : 0.0;
     period = d.number("updatePeriod", period);
     period_ns_ = std::llround(period * 1e9);
     offset_ns_ = std::llround(d.number("updateOffset", 0.0) * 1e9);
-    step_ns_ = std::llround(context.stepSize() * 1e9);
+    step_ns_ = std::llround(step_size * 1e9);
   }
 
   bool due(int64_t time_ns) const
@@ -121,6 +132,8 @@ public:
   }
 
   void reset() { last_update_ns_ = 0; }
+  // Whether time_ns lies before the last update: the world was reset since.
+  bool wentBack(int64_t time_ns) const { return time_ns < last_update_ns_; }
 
 private:
   int64_t period_ns_ = 0, offset_ns_ = 0, step_ns_ = 1000000, last_update_ns_ = 0;
