@@ -42,6 +42,7 @@ enum class PluginKind
   Velodyne,      // velodyne_simulator's libgazebo_ros_velodyne_(gpu_)laser.so inside <sensor type="(gpu_)ray">
   BlockLaser,    // libgazebo_ros_block_laser.so inside <sensor type="ray">
   HectorSonar,   // libhector_gazebo_ros_sonar.so inside <sensor type="ray">
+  Bumper,        // libgazebo_ros_bumper.so inside <sensor type="contact">
   // Model plugins that act on the physics (model_plugin.h), from <gazebo><plugin>:
   DiffDrive,            // libgazebo_ros_diff_drive.so
   SkidSteerDrive,       // libgazebo_ros_skid_steer_drive.so
@@ -86,7 +87,7 @@ struct ModelPluginDescription
 struct SensorDescription
 {
   std::string name;
-  std::string type;  // "ray", "gpu_ray", "camera", "depth", "imu", "p3d"
+  std::string type;  // "ray", "gpu_ray", "camera", "depth", "imu", "p3d", "contact"
   std::string link;
   urdf::Pose pose;   // in the link frame (<pose>)
   double update_rate = 0.0;  // Hz; 0 = every physics step
@@ -101,6 +102,8 @@ struct SensorDescription
   int image_width = 0, image_height = 0;
   std::string image_format;
   double clip_near = 0.0, clip_far = 0.0;
+  // contact: the <contact><collision> names, SDF collisions of the sensor's link (after lumping)
+  std::vector<std::string> contact_collisions;
   Noise noise;
   // the plugin block: filename and its child elements as text (topicName, frameName, cameraName, ...)
   std::string plugin_name, plugin_filename;

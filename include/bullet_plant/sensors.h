@@ -112,4 +112,43 @@ private:
   std::vector<float> noise_table_;     // gaussian samples of the image noise, drawn at the first frame
 };
 
+// One touching point of a contact sensor's collision, as Gazebo's ContactSensor reports it: the
+// point and the normal in the world, the normal pointing out of the other collision into the
+// sensor's (the direction the contact pushes it); depth > 0 is penetration. The wrench is what the
+// contact exerts on the sensor's body in its link frame, the torque about the body's centre of mass.
+struct ContactPoint
+{
+  urdf::Vector3 position, normal;
+  double depth = 0;
+  urdf::Vector3 force, torque;
+};
+
+// The touching points between one of the sensor's collisions (collision1) and another
+// (collision2), both "model::link::collision".
+struct ContactState
+{
+  std::string collision1, collision2;
+  std::vector<ContactPoint> points;
+};
+
+struct ContactReading
+{
+  int64_t stamp_ns = 0;
+  std::vector<ContactState> states;
+};
+
+// A <sensor type="contact">: each update, the contacts of its <contact><collision>s at the end of
+// the step (the impulses the step's solver applied, over the step).
+class ContactSensor : public Sensor
+{
+public:
+  ContactSensor(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed) {}
+  void update(SensorContext& context, int64_t time_ns) override;
+  bool hasReading() const { return updates_ > 0; }
+  const ContactReading& latest() const { return reading_; }
+
+private:
+  ContactReading reading_;
+};
+
 }  // namespace bullet_plant

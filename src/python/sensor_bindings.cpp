@@ -81,6 +81,39 @@ void init_sensors(py::class_<RobotRef>& robot)
         d["angular"] = std::vector<double>{m.angular.x, m.angular.y, m.angular.z};
         return std::move(d);
       }), "the latest nav_msgs/Odometry fields of a gazebo_ros_p3d plugin, or None before the first")
+      .def("contacts", onRobot([](Robot& r, const std::string& name) -> py::object {
+        ContactSensor& sensor = sensorAs<ContactSensor>(r, name, "a contact sensor");
+        if (!sensor.hasReading())
+          return py::none();
+        const ContactReading& m = sensor.latest();
+        py::dict d = stampedDict(m.stamp_ns, frameOf(r, sensor));
+        py::list states;
+        for (const ContactState& s : m.states)
+        {
+          py::dict state;
+          state["collision1_name"] = s.collision1;
+          state["collision2_name"] = s.collision2;
+          py::list positions, normals, depths, forces, torques;
+          for (const ContactPoint& p : s.points)
+          {
+            positions.append(xyzList(p.position));
+            normals.append(xyzList(p.normal));
+            depths.append(p.depth);
+            forces.append(xyzList(p.force));
+            torques.append(xyzList(p.torque));
+          }
+          state["contact_positions"] = positions;
+          state["contact_normals"] = normals;
+          state["depths"] = depths;
+          state["forces"] = forces;
+          state["torques"] = torques;
+          states.append(state);
+        }
+        d["states"] = states;
+        return std::move(d);
+      }), "the latest gazebo_msgs/ContactsState of a contact sensor as a dict (states: collision names, world "
+          "positions and normals, depths, each point's force and torque on the sensor's body in its link frame), "
+          "or None before the first")
       .def("scan", onRobot([](Robot& r, const std::string& name) -> py::object {
         Lidar& lidar = sensorAs<Lidar>(r, name, "a lidar");
         if (!lidar.hasScan())

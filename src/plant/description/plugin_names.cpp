@@ -25,7 +25,7 @@ std::string underCameraName(const SensorDescription& d, const std::string& topic
 
 // Whose rules name a sensor: its type's plugin family, as the plant builds its sensor class from
 // the type (a <plugin> of another family is refused at load by the node).
-enum class Family { Laser, Range, Velodyne, BlockLaser, HectorSonar, Camera, ImuSensor, ImuModel, P3d, Other };
+enum class Family { Laser, Range, Velodyne, BlockLaser, HectorSonar, Camera, ImuSensor, ImuModel, P3d, Bumper, Other };
 
 Family familyOf(const SensorDescription& d)
 {
@@ -49,6 +49,8 @@ Family familyOf(const SensorDescription& d)
     return d.model_plugin ? Family::ImuModel : Family::ImuSensor;
   if (d.type == "p3d")
     return Family::P3d;
+  if (d.type == "contact")
+    return Family::Bumper;
   return Family::Other;
 }
 
@@ -84,6 +86,7 @@ std::string pluginNamespace(const SensorDescription& d, const std::string& spawn
     case Family::Velodyne:
     case Family::BlockLaser:
     case Family::HectorSonar:
+    case Family::Bumper:
       return namespaceOfModelPlugin(d, spawn_namespace, "");
     default:
       if (d.hasPluginParam("robotNamespace"))  // GetRobotNamespace: an empty element means the model's name
@@ -103,6 +106,7 @@ std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugi
     case Family::Velodyne:
     case Family::BlockLaser:
     case Family::HectorSonar:  // frameId verbatim
+    case Family::Bumper:
       return "";
     default:
       return withoutTrailingSlashes(plugin_namespace);
@@ -125,6 +129,7 @@ std::string pluginFrameId(const SensorDescription& d, const std::string& tf_pref
     case Family::ImuModel:  // default bodyName
       return withoutLeadingSlash(d.pluginParam("frameName", d.link));
     case Family::P3d:
+    case Family::Bumper:
       return resolveTfFrame(tf_prefix, d.pluginParam("frameName", "world"));
     default:
       // Cameras: tf::resolve(tf_prefix, frameName). A camera without <frameName> would get
@@ -169,6 +174,8 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
       return d.pluginParam("topicName", "/world");
     case Family::HectorSonar:
       return d.pluginParam("topicName", "sonar");
+    case Family::Bumper:
+      return d.pluginParam("bumperTopicName", "bumper_states");
     case Family::ImuModel:
       return d.pluginParam("topicName", "/default_imu");
     case Family::ImuSensor:  // appended to "<namespace>/": never absolute on its own

@@ -45,6 +45,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_velodyne_gpu_laser.so", PluginKind::Velodyne},
       {"libgazebo_ros_block_laser.so", PluginKind::BlockLaser},
       {"libhector_gazebo_ros_sonar.so", PluginKind::HectorSonar},
+      {"libgazebo_ros_bumper.so", PluginKind::Bumper},
       {"libhector_gazebo_ros_gps.so", PluginKind::HectorGps},
       {"libhector_gazebo_ros_imu.so", PluginKind::HectorImu},
       {"libhector_gazebo_ros_magnetic.so", PluginKind::HectorMagnetic},
@@ -432,6 +433,9 @@ SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& l
     }
     readNoise(cam, d.noise);
   }
+  if (auto* contact = s->FirstChildElement("contact"))
+    for (auto* c = contact->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
+      d.contact_collisions.push_back(xml::trimmed(c->GetText() ? c->GetText() : ""));
   if (auto* plugin = s->FirstChildElement("plugin"))
     readPluginBlock(plugin, d);
   return d;
@@ -505,6 +509,12 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
         out.errors.push_back("sensor '" + d.name + "': " + d.plugin_filename + " needs a <sensor type=\"ray\"> or "
                              "\"gpu_ray\" (\"requires a Ray Sensor as its parent\"), not '" + d.type +
                              "'; it publishes nothing");
+        d.plugin_kind = PluginKind::None;
+      }
+      if (k == PluginKind::Bumper && d.type != "contact")
+      {
+        out.errors.push_back("sensor '" + d.name + "': libgazebo_ros_bumper.so needs a <sensor type=\"contact\"> (\"Contact "
+                             "sensor parent is not of type ContactSensor\"), not '" + d.type + "'; it publishes nothing");
         d.plugin_kind = PluginKind::None;
       }
       if (d.type == "imu" && d.plugin_kind == PluginKind::ImuSensor && !d.hasPluginParam("frameName"))

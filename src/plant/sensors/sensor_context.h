@@ -4,10 +4,12 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <urdf_model/pose.h>
 
 #include "bullet_plant/inertial_sensors.h"
+#include "bullet_plant/sensors.h"
 #include "rendering/ray_caster.h"
 
 namespace bullet_plant
@@ -23,6 +25,9 @@ public:
   // does not see its robot; cameras do, as Gazebo's).
   virtual const RayScene& rayScene(bool with_own_robot) = 0;
   virtual Lighting lighting() const = 0;
+  // The touching points of `link`'s collisions named in `collisions` (SDF names), grouped by the
+  // pair of collisions, as ContactSensor reports them.
+  virtual std::vector<ContactState> contacts(const std::string& link, const std::vector<std::string>& collisions) const = 0;
 
 protected:
   ~SensorContext() = default;

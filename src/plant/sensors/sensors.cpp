@@ -45,6 +45,12 @@ void Lidar::update(SensorContext& context, int64_t time_ns)
   detail::SensorRendering::scan(*this, context.rayScene(false), sensorPose(context, description_), time_ns);
 }
 
+void ContactSensor::update(SensorContext& context, int64_t time_ns)
+{
+  reading_.stamp_ns = time_ns;
+  reading_.states = context.contacts(description_.link, description_.contact_collisions);
+}
+
 void Camera::update(SensorContext& context, int64_t time_ns)
 {
   detail::SensorRendering::render(*this, context.rayScene(true), sensorPose(context, description_),

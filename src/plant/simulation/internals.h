@@ -92,6 +92,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   urdf::Vector3 gravity() const override;
   const RayScene& rayScene(bool with_own_robot) override;
   Lighting lighting() const override;
+  std::vector<ContactState> contacts(const std::string& link, const std::vector<std::string>& collisions) const override;
   // What its model plugins reach (ModelPluginContext).
   const std::string& modelName() const override { return name; }
   const RobotDescription& robotDescription() const override { return description; }
@@ -144,6 +145,9 @@ struct World::Internals
 
   // "robot::link" or the static collision's name, for messages.
   std::string nameOf(const btCollisionObject* object) const;
+  // "model::link::collision" of the collision Bullet reports as `child` of `object` (a compound's
+  // child index), as Gazebo's contacts name it.
+  std::string collisionNameOf(const btCollisionObject* object, int child) const;
   // Everything sensors can see: the static scene and every robot's bodies where they are now
   // (a robot's bodies are built into it once). `hidden` as RayScene::commit.
   const RayScene& rayScene(const void* hidden);

@@ -167,6 +167,63 @@ const RayScene& Robot::Internals::rayScene(bool with_own_robot) { return world->
 
 Lighting Robot::Internals::lighting() const { return world->lighting(); }
 
+std::vector<ContactState> Robot::Internals::contacts(const std::string& link, const std::vector<std::string>& collisions) const
+{
+  std::vector<ContactState> states;
+  const auto placed = multibody.link_in_body.find(link);
+  if (placed == multibody.link_in_body.end())
+    return states;
+  const int bi = placed->second.first;
+  const Body& body = multibody.bodies[size_t(bi)];
+  const btCollisionObject* ours = bi == 0 ? multibody.bullet->getBaseCollider() : multibody.bullet->getLink(bi - 1).m_collider;
+  if (!ours)
+    return states;
+  const btVector3 com = multibody.bodyWorldTransform(bi).getOrigin();
+  // The body's link frame: the link Gazebo keeps after lumping the fixed joints.
+  const btMatrix3x3 to_link = multibody.linkWorldTransform(body.link, name).getBasis().transpose();
+  const btScalar per_step = btScalar(1.0 / world->step_s);
+  btDispatcher& dispatcher = *world->dispatcher;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
+  {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    const bool ours_is_a = manifold.getBody0() == ours;
+    if (!ours_is_a && manifold.getBody1() != ours)
+      continue;
+    const btCollisionObject* other = ours_is_a ? manifold.getBody1() : manifold.getBody0();
+    // Bullet's normal points from B into A, and an impulse pushes A along it (B the other way).
+    const btScalar sign = ours_is_a ? 1 : -1;
+    for (int p = 0; p < manifold.getNumContacts(); ++p)
+    {
+      const btManifoldPoint& point = manifold.getContactPoint(p);
+      if (point.getDistance() > 0 && point.getAppliedImpulse() == 0)
+        continue;  // kept by the manifold, not touching
+      const std::string& mine = body.collisionName(ours_is_a ? point.m_index0 : point.m_index1);
+      if (std::find(collisions.begin(), collisions.end(), mine) == collisions.end())
+        continue;
+      const std::string collision1 = name + "::" + body.link + "::" + mine;
+      const std::string collision2 = world->collisionNameOf(other, ours_is_a ? point.m_index1 : point.m_index0);
+      auto state = std::find_if(states.begin(), states.end(), [&](const ContactState& s) {
+        return s.collision1 == collision1 && s.collision2 == collision2;
+      });
+      if (state == states.end())
+        state = states.insert(states.end(), ContactState{collision1, collision2, {}});
+      const btVector3 position = ours_is_a ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+      const btVector3 force = sign * per_step *
+                              (point.m_appliedImpulse * point.m_normalWorldOnB +
+                               point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
+                               point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2);
+      ContactPoint out;
+      out.position = fromBullet(position);
+      out.normal = fromBullet(sign * point.m_normalWorldOnB);
+      out.depth = -point.getDistance();
+      out.force = fromBullet(to_link * force);
+      out.torque = fromBullet(to_link * (position - com).cross(force));
+      state->points.push_back(out);
+    }
+  }
+  return states;
+}
+
 void Robot::Internals::settleAfterTeleport()
 {
   multibody.updateKinematics();

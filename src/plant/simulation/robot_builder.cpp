@@ -214,6 +214,30 @@ bool fitWheelToJoint(const urdf::Joint* joint, Collider& collider, Shape& shape,
   return true;
 }
 
+// The SDF names sdformat's URDF converter gives the collisions of `owner` (a body's link) and of the
+// links fixed to it, which it lumps into `owner`: by (URDF link, index in its collision_array).
+// Its order: the owner's own, then each fixed child's, depth first in child-joint order (urdfdom's,
+// by joint name). Entry i is named (the URDF name, or its original link's) + "_collision", + "_i" for
+// i > 0, then prefixed "<owner>_fixed_joint_lump__" unless it starts with the owner's name.
+void nameLumpedCollisions(const urdf::ModelInterface& model, const std::string& owner, const urdf::Link& link,
+                          std::map<std::pair<std::string, size_t>, std::string>& names, size_t& index)
+{
+  for (size_t c = 0; c < link.collision_array.size(); ++c, ++index)
+  {
+    const urdf::CollisionSharedPtr& collision = link.collision_array[c];
+    std::string name = (collision && !collision->name.empty() ? collision->name : link.name) + "_collision";
+    if (index > 0)
+      name += "_" + std::to_string(index);
+    if (name.compare(0, owner.size(), owner) != 0)
+      name = owner + "_fixed_joint_lump__" + name;
+    names[{link.name, c}] = name;
+  }
+  for (const urdf::JointSharedPtr& joint : link.child_joints)
+    if (joint && joint->type == urdf::Joint::FIXED)
+      if (urdf::LinkConstSharedPtr child = model.getLink(joint->child_link_name))
+        nameLumpedCollisions(model, owner, *child, names, index);
+}
+
 // 3. Collision shapes, in each body's COM frame: a compound of the links' shapes, or the only shape
 // itself where it is aligned with the body's frame. Meshes on the base of a robot fixed in the world
 // are their triangles, elsewhere their convex hulls. Surface friction per body.
@@ -223,6 +247,13 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
   const urdf::ModelInterface& model = *r.description.model;
   std::vector<Body>& bodies = r.multibody.bodies;
   std::vector<Shape> last_child(bodies.size());  // the last shape added to each body's compound
+  std::map<std::pair<std::string, size_t>, std::string> sdf_names;
+  for (const Body& body : bodies)
+    if (urdf::LinkConstSharedPtr owner = model.getLink(body.link))
+    {
+      size_t index = 0;
+      nameLumpedCollisions(model, body.link, *owner, sdf_names, index);
+    }
   for (const auto& kv : placement)
   {
     urdf::LinkConstSharedPtr link = model.getLink(kv.first);
@@ -230,8 +261,9 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
     btTransform com_from_link = body.urdf_from_com.inverse() * kv.second.second;
     r.multibody.link_in_body[kv.first] = {kv.second.first, com_from_link};
     const Mobility mobility = fixed_base && kv.second.first == 0 ? Mobility::Static : Mobility::Moving;
-    for (const urdf::CollisionSharedPtr& c : link->collision_array)
+    for (size_t ci = 0; ci < link->collision_array.size(); ++ci)
     {
+      const urdf::CollisionSharedPtr& c = link->collision_array[ci];
       if (!c || !c->geometry)
         continue;
       Shape shape;
@@ -257,6 +289,7 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
         body.compound.reset(new btCompoundShape(false, 4));
       body.child_shapes.push_back(std::move(collider.shape));
       body.compound->addChildShape(in_com, body.child_shapes.back().get());
+      body.collision_names.push_back(sdf_names[{link->name, ci}]);
       body.shape = body.compound.get();
       last_child[kv.second.first] = shape;
       body.ray_shapes.push_back(std::move(collider.ray));
@@ -598,8 +631,10 @@ std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescriptio
   }
   if (s.type == "p3d")
     return std::unique_ptr<Sensor>(new GroundTruthOdometry(s, seed));
+  if (s.type == "contact")
+    return std::unique_ptr<Sensor>(new ContactSensor(s, seed));
   log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name +
-           "' is not simulated (ray, gpu_ray, camera, depth, imu are)");
+           "' is not simulated (ray, gpu_ray, camera, depth, imu, contact are)");
   return nullptr;
 }
 

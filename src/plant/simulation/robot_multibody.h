@@ -42,8 +42,21 @@ struct Body
   btCollisionShape* shape = nullptr;
   std::unique_ptr<btCompoundShape> compound;
   std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
+  // The SDF names of the collisions, in the compound's child order (sdfCollisionNames): what
+  // contact sensors and contact messages call them.
+  std::vector<std::string> collision_names;
   std::vector<RayPrimitive> ray_shapes;  // for sensors, in the COM frame: the collisions (lidars) and visuals (cameras)
   double mu = 1.0;
+
+  // The name of the collision Bullet reports as `child` (a compound's child index); the only one
+  // of a body with one collision; empty for an index that is none of them.
+  const std::string& collisionName(int child) const
+  {
+    static const std::string none;
+    if (collision_names.size() == 1)
+      return collision_names[0];
+    return child >= 0 && size_t(child) < collision_names.size() ? collision_names[size_t(child)] : none;
+  }
 };
 
 struct RobotMultibody

@@ -91,6 +91,21 @@ std::string World::Internals::nameOf(const btCollisionObject* object) const
   return "?";
 }
 
+std::string World::Internals::collisionNameOf(const btCollisionObject* object, int child) const
+{
+  if (const auto* collider = btMultiBodyLinkCollider::upcast(object))
+    for (const auto& robot : robots)
+    {
+      const RobotMultibody& multibody = internalsOf(*robot).multibody;
+      if (multibody.bullet.get() == collider->m_multiBody)
+      {
+        const Body& body = multibody.bodies[size_t(collider->m_link + 1)];
+        return robot->name() + "::" + body.link + "::" + body.collisionName(child);
+      }
+    }
+  return nameOf(object);
+}
+
 World::World(const WorldDescription& description) : in_(new Internals)
 {
   Internals& w = *in_;
