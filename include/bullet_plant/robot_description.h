@@ -34,7 +34,7 @@ enum class PluginKind
   None,          // a <sensor> without a plugin: rendered for the Python API, nothing on ROS
   Laser,         // libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so
   Camera,        // libgazebo_ros_camera.so
-  OpenniKinect,  // libgazebo_ros_openni_kinect.so
+  OpenniKinect,  // libgazebo_ros_openni_kinect.so, libgazebo_ros_depth_camera.so
   ImuSensor,     // libgazebo_ros_imu_sensor.so inside <sensor type="imu">
   ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
   P3d,           // libgazebo_ros_p3d.so, a model plugin

@@ -42,6 +42,7 @@ struct PointCloudOf  // sensor_msgs/PointCloud2: x y z float32 (NaN outside the 
   const CameraFrame& frame;
   const std_msgs::Header& header;
   DepthCutoff cutoff;
+  bool organized = true;  // height x width as the image; else one row of every pixel
 };
 
 // The header the frame's messages carry (seq is filled in by roscpp as it publishes); the frame id
@@ -179,13 +180,14 @@ struct Serializer<bullet_plant::PointCloudOf>
   {
     const bullet_plant::CameraFrame& f = m.frame;
     const size_t pixels = size_t(f.width) * f.height;
+    const uint32_t height = m.organized ? uint32_t(f.height) : 1, width = uint32_t(pixels / height);
     s.next(m.header);
-    s.next(uint32_t(f.height));
-    s.next(uint32_t(f.width));
+    s.next(height);
+    s.next(width);
     s.next(bullet_plant::pointCloudFields());
     s.next(uint8_t(0));  // is_bigendian
     s.next(bullet_plant::kPointStep);
-    s.next(uint32_t(bullet_plant::kPointStep * f.width));  // row_step
+    s.next(uint32_t(bullet_plant::kPointStep * width));  // row_step
     s.next(uint32_t(bullet_plant::kPointStep * pixels));
     uint8_t* out = s.advance(uint32_t(bullet_plant::kPointStep * pixels));
     static const float kNaN[3] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN(),

@@ -1,6 +1,9 @@
 // gazebo_ros_openni_kinect: the camera's image and info, plus a 32FC1 depth image with its
-// CameraInfo and a PointCloud2, NaN outside (pointCloudCutoff, pointCloudCutoffMax) (docs/
-// interfaces.md section 11).
+// CameraInfo and an organized PointCloud2, NaN outside (pointCloudCutoff, pointCloudCutoffMax);
+// gazebo_ros_depth_camera: the same with no far cutoff and the cloud as one row (Noetic's, whose
+// PointCloud2Modifier::resize flattens it) (docs/interfaces.md section 11).
+#include <limits>
+
 #include "gazebo_ros_camera.h"
 #include "ros_names.h"
 
@@ -34,6 +37,10 @@ public:
                                                     points_pub_.getNumSubscribers() > 0;
   }
 
+protected:
+  DepthCutoff cutoff_;
+  bool organized_cloud_ = true;
+
 private:
   void publishFrame(const CameraFrame& frame, const std_msgs::Header& header) override
   {
@@ -41,13 +48,24 @@ private:
       return;
     depth_pub_.publish(DepthImageOf{frame, header, cutoff_});
     depth_info_pub_.publish(cameraInfo(frame, header));
-    points_pub_.publish(PointCloudOf{frame, header, cutoff_});
+    points_pub_.publish(PointCloudOf{frame, header, cutoff_, organized_cloud_});
   }
 
   ros::Publisher depth_pub_, depth_info_pub_, points_pub_;
-  DepthCutoff cutoff_;
+};
+
+class GazeboRosDepthCamera : public GazeboRosOpenniKinect
+{
+public:
+  void Load(Sensor& sensor) override
+  {
+    GazeboRosOpenniKinect::Load(sensor);
+    cutoff_.far = std::numeric_limits<double>::infinity();  // Noetic's depth camera reads no pointCloudCutoffMax
+    organized_cloud_ = false;
+  }
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosOpenniKinect, "libgazebo_ros_openni_kinect.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosDepthCamera, "libgazebo_ros_depth_camera.so")
 
 }  // namespace bullet_plant

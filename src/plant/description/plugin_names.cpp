@@ -185,10 +185,12 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
     default:
       break;
   }
+  // The depth plugins default their camera's image to the infrared one: "ir/image_raw".
+  const bool depth_plugin = d.plugin_kind == PluginKind::OpenniKinect;
   switch (which)
   {
     case PluginTopic::CameraInfo:
-      return underCameraName(d, d.pluginParam("cameraInfoTopicName", "camera_info"));
+      return underCameraName(d, d.pluginParam("cameraInfoTopicName", depth_plugin ? "ir/camera_info" : "camera_info"));
     case PluginTopic::DepthImage:
       return underCameraName(d, d.pluginParam("depthImageTopicName", "depth/image_raw"));
     case PluginTopic::DepthCameraInfo:
@@ -196,7 +198,7 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
     case PluginTopic::Points:
       return underCameraName(d, d.pluginParam("pointCloudTopicName", "points"));
     default:
-      return underCameraName(d, d.pluginParam("imageTopicName", "image_raw"));
+      return underCameraName(d, d.pluginParam("imageTopicName", depth_plugin ? "ir/image_raw" : "image_raw"));
   }
 }
 

@@ -38,6 +38,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
   static const std::map<std::string, PluginKind> kinds = {
       {"libgazebo_ros_laser.so", PluginKind::Laser},          {"libgazebo_ros_gpu_laser.so", PluginKind::Laser},
       {"libgazebo_ros_camera.so", PluginKind::Camera},        {"libgazebo_ros_openni_kinect.so", PluginKind::OpenniKinect},
+      {"libgazebo_ros_depth_camera.so", PluginKind::OpenniKinect},
       {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
       {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
       {"libgazebo_ros_range.so", PluginKind::Range},
