@@ -195,6 +195,16 @@ def force_bot(**params):
     return with_plugin_params(urdf[:start] + block + urdf[end:], 'push', **params)
 
 
+def f3d_bot(**params):
+    """force_bot with gazebo_plugins' f3d (name 'f3d', WrenchStamped on 'force_truth') reporting
+    base_link after the push, its parameters changed as the others'."""
+    urdf = force_bot()
+    end = urdf.index('</plugin>', urdf.index('<plugin name="push"')) + len('</plugin>')
+    block = '<plugin name="f3d" filename="libgazebo_ros_f3d.so"><bodyName>base_link</bodyName>' \
+            '<topicName>force_truth</topicName></plugin>'
+    return with_plugin_params(urdf[:end] + block + urdf[end:], 'f3d', **params)
+
+
 def tricycle_bot(**params):
     """tricycle_bot.urdf (a front wheel steered and driven, two free rear wheels) with its tricycle
     drive plugin's parameters changed."""

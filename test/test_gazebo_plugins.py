@@ -9,7 +9,7 @@ import math
 import pytest
 
 from plant_helpers import (DIFF_DRIVE_CONTROLLERS, diff_bot, diff_bot_with_gazebo_ros_control, fixture_urdf,
-                           force_based_bot, force_bot, gripper, logged, planar_bot, skid_bot, tricycle_bot, yaw_of)
+                           f3d_bot, force_based_bot, force_bot, gripper, logged, planar_bot, skid_bot, tricycle_bot, yaw_of)
 from tianracer_description import bullet_plant
 
 WHEEL_RADIUS, SEPARATION = 0.035, 0.30
@@ -542,6 +542,27 @@ def test_force_plugin_applies_the_last_wrench_every_step():
     world, robot = spawned(force_bot(topicName=None), name='pushed')
     assert robot.model_plugins == [] and any("plugin 'push' (libgazebo_ros_force.so) has no <topicName>" in m
                                              for m in logged(world, 'ERROR'))
+
+
+# gazebo_plugins' libgazebo_ros_f3d.so: the wrench added to a link before it in the step, every step.
+
+def test_f3d_reports_the_wrench_pushed_on_its_link_but_neither_gravity_nor_contacts():
+    world, robot = spawned(f3d_bot(), name='pushed', namespace='/')
+    assert robot.plugin_topics('f3d') == {'subscribes': [], 'publishes': ['force_truth']}
+    world.step(200)  # resting on its wheels: weight and contacts act, nothing is added
+    at_rest = robot.plugin_latest('f3d', 'force_truth')
+    assert at_rest['frame_id'] == 'world' and at_rest['stamp'] == pytest.approx(world.time - 0.001, abs=1e-9)
+    assert at_rest['force'] == [0, 0, 0] and at_rest['torque'] == [0, 0, 0]
+    assert robot.plugin_send('push', 'force', (1.0, -2.0, 30.0, 0.0, 0.0, 0.5))
+    world.step(3)
+    pushed = robot.plugin_latest('f3d', 'force_truth')
+    assert pushed['force'] == pytest.approx([1.0, -2.0, 30.0]) and pushed['torque'] == pytest.approx([0, 0, 0.5])
+    world, robot = spawned(f3d_bot(frameName='/map', bodyName='nowhere'), name='pushed')
+    assert robot.model_plugins == ['push'] and any("plugin 'f3d' (libgazebo_ros_f3d.so)" in m and "'nowhere'" in m
+                                                  for m in logged(world, 'ERROR'))
+    world, robot = spawned(f3d_bot(frameName='/map'), name='pushed')
+    world.step(2)
+    assert robot.plugin_latest('f3d', 'force_truth')['frame_id'] == 'map', 'tf::resolve drops the leading slash'
 
 
 # ------------------------------------------------------------------------------------------------

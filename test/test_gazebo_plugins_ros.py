@@ -5,13 +5,14 @@ gazebo_ros_control and diff_drive_controller started by the spawner. A skid-stee
 GPS and IMU) and a holonomic base in one world, each in its spawn namespace; a gripper whose second finger follows the
 first by the mimic joint plugin's PID, its gains from the parameter server. gazebo_ros_range's
 sensor_msgs/Range against a wall at a known distance. A turtlebot3-like diff-drive robot and the
-tutorial's car together in one world, each driven on its own topics. gazebo_ros_force's Wrench topic."""
+tutorial's car together in one world, each driven on its own topics. gazebo_ros_force's Wrench topic
+and gazebo_ros_f3d's WrenchStamped of it."""
 import os
 
 import pytest
 import yaml
 
-from plant_helpers import (DIFF_BOT, DIFF_DRIVE_CONTROLLERS, box_model, diff_bot_with_gazebo_ros_control, force_bot,
+from plant_helpers import (DIFF_BOT, DIFF_DRIVE_CONTROLLERS, box_model, diff_bot_with_gazebo_ros_control, f3d_bot,
                            gripper, planar_bot, sdf_world, skid_bot)
 from tianracer_description.ros_harness import spawn_urdf, start_plant
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
@@ -266,15 +267,15 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
         "the diff drive's frames carry its namespace: tb3/odom -> tb3/base_footprint"
 
 
-def test_force_plugin_takes_its_wrench_from_ros(ros, tmp_path):
-    (tmp_path / 'pushed.urdf').write_text(force_bot())
+def test_force_plugin_takes_its_wrench_from_ros_and_f3d_reports_it(ros, tmp_path):
+    (tmp_path / 'pushed.urdf').write_text(f3d_bot())
     plant = start_plant(ros)
     ros.run(['rosparam', 'set', '/robot_description', '--textfile', str(tmp_path / 'pushed.urdf')])
     spawn_urdf(ros, plant, '/robot_description', 'pushed')
     seen = ros.python("""
         import json, rospy
         from gazebo_msgs.srv import GetModelState
-        from geometry_msgs.msg import Wrench
+        from geometry_msgs.msg import Wrench, WrenchStamped
         rospy.init_node('probe')
         state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
         pub = rospy.Publisher('/force', Wrench, queue_size=1, latch=True)
@@ -283,6 +284,20 @@ def test_force_plugin_takes_its_wrench_from_ros(ros, tmp_path):
         before = state('pushed', '').pose.position.z
         pub.publish(wrench)
         rospy.sleep(1.0)
-        print(json.dumps({'rise': state('pushed', '').pose.position.z - before}))
+        truth = rospy.wait_for_message('/force_truth', WrenchStamped, 10)
+        # gazebo_ros's apply_body_wrench runs before the model plugins: f3d sees the sum
+        from gazebo_msgs.srv import ApplyBodyWrench
+        apply = rospy.ServiceProxy('/gazebo/apply_body_wrench', ApplyBodyWrench)
+        extra = Wrench()
+        extra.force.x = 5.0
+        apply('pushed::base_link', '', None, extra, rospy.Time(0), rospy.Duration(-1))
+        rospy.sleep(0.2)
+        both = rospy.wait_for_message('/force_truth', WrenchStamped, 10).wrench.force
+        print(json.dumps({'both': [both.x, both.y, both.z], 'rise': state('pushed', '').pose.position.z - before, 'frame': truth.header.frame_id,
+                          'force': [truth.wrench.force.x, truth.wrench.force.y, truth.wrench.force.z],
+                          'stamped': truth.header.stamp.to_sec()}))
     """, timeout=60)
     assert seen['rise'] > 0.3, 'geometry_msgs/Wrench on /force lifted the 5 kg base (2.2 m/s^2 net)'
+    assert seen['frame'] == 'world' and seen['force'] == [0, 0, 60.0] and seen['stamped'] > 1.0, \
+        'gazebo_ros_f3d: the pushed wrench on /force_truth, stamped with sim time'
+    assert seen['both'] == [5.0, 0, 60.0]

@@ -71,6 +71,11 @@ public:
   // Link::AddForce and AddTorque: a force at the centre of mass of `link`'s body and a torque, both
   // in world axes, for the coming step only. An unknown link or a non-finite value does nothing.
   virtual void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) = 0;
+  // Link::WorldForce and WorldTorque: what has been added to `link`'s body for the coming step so far
+  // (addLinkWrench, gazebo_ros's apply_body_wrench), world axes, the torque about its centre of mass;
+  // neither gravity nor contacts, which the physics adds later, as in ODE's accumulators. Zero for
+  // an unknown link.
+  virtual void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const = 0;
   // The world's gravity (m/s^2, world frame).
   virtual urdf::Vector3 gravity() const = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.

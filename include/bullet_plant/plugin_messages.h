@@ -17,6 +17,14 @@ struct WrenchCommand
   urdf::Vector3 force, torque;
 };
 
+// geometry_msgs/WrenchStamped: a force (N) and a torque (N m).
+struct WrenchStampedSample
+{
+  int64_t stamp_ns = 0;
+  std::string frame_id;
+  urdf::Vector3 force, torque;
+};
+
 // sensor_msgs/NavSatFix with a diagonal covariance (COVARIANCE_TYPE_DIAGONAL_KNOWN).
 struct NavSatFixSample
 {

@@ -55,6 +55,7 @@ enum class PluginKind
   HectorMagnetic,       // libhector_gazebo_ros_magnetic.so
   ForceBasedMove,       // libgazebo_ros_force_based_move.so (hector's omnidirectional base)
   Force,                // libgazebo_ros_force.so
+  F3d,                  // libgazebo_ros_f3d.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);

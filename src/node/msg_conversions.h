@@ -13,6 +13,7 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
 #include <geometry_msgs/Vector3Stamped.h>
+#include <geometry_msgs/WrenchStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
@@ -242,6 +243,15 @@ inline sensor_msgs::Imu toMsg(const ImuSample& s)
     m.angular_velocity_covariance[4 * k] = s.angular_velocity_covariance_diagonal[k];
     m.linear_acceleration_covariance[4 * k] = s.linear_acceleration_covariance_diagonal[k];
   }
+  return m;
+}
+
+inline geometry_msgs::WrenchStamped toMsg(const WrenchStampedSample& s)
+{
+  geometry_msgs::WrenchStamped m;
+  m.header = rosHeader(s.stamp_ns, s.frame_id);
+  m.wrench.force = toMsg(s.force);
+  m.wrench.torque = toMsg(s.torque);
   return m;
 }
 

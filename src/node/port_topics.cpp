@@ -114,6 +114,7 @@ const PortTransport* transportOf(const Port& port)
       {typeid(NavSatFixSample), output<NavSatFixSample, sensor_msgs::NavSatFix>(10)},
       {typeid(ImuSample), output<ImuSample, sensor_msgs::Imu>(10)},
       {typeid(Vector3StampedSample), output<Vector3StampedSample, geometry_msgs::Vector3Stamped>(10)},
+      {typeid(WrenchStampedSample), output<WrenchStampedSample, geometry_msgs::WrenchStamped>(10)},
       {typeid(TrajectoryStateSample), output<TrajectoryStateSample, control_msgs::JointTrajectoryControllerState>(1)},
       {typeid(ActionResult<FollowJointTrajectoryResult>), carriedByAction()},
       {typeid(ActionFeedback<TrajectoryStateSample>), carriedByAction()},

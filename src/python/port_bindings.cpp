@@ -93,6 +93,14 @@ py::dict vector3StampedDict(const Vector3StampedSample& s)
   return d;
 }
 
+py::dict wrenchStampedDict(const WrenchStampedSample& s)
+{
+  py::dict d = stampedDict(s.stamp_ns, s.frame_id);
+  d["force"] = xyzList(s.force);
+  d["torque"] = xyzList(s.torque);
+  return d;
+}
+
 py::dict transformDict(const TransformSample& s)
 {
   py::dict d = stampedDict(s.stamp_ns, s.frame_id);
@@ -272,6 +280,7 @@ py::object latestOfPort(const Port& port)
       latestAs<ControllerStateSample>(port, controllerStateDict, out) ||
       latestAs<OdometrySample>(port, odometryDict, out) || latestAs<TransformSample>(port, transformDict, out) ||
       latestAs<NavSatFixSample>(port, navSatFixDict, out) || latestAs<Vector3StampedSample>(port, vector3StampedDict, out) ||
+      latestAs<WrenchStampedSample>(port, wrenchStampedDict, out) ||
       latestAs<ImuSample>(port, imuDict, out) || latestAs<TrajectoryStateSample>(port, trajectoryStateDict, out) ||
       latestAs<ActionResult<FollowJointTrajectoryResult>>(port, trajectoryResultDict, out) ||
       latestAs<ActionFeedback<TrajectoryStateSample>>(port, trajectoryFeedbackDict, out) ||

@@ -52,6 +52,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libhector_gazebo_ros_magnetic.so", PluginKind::HectorMagnetic},
       {"libgazebo_ros_force_based_move.so", PluginKind::ForceBasedMove},
       {"libgazebo_ros_force.so", PluginKind::Force},
+      {"libgazebo_ros_f3d.so", PluginKind::F3d},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_tricycle_drive.so", PluginKind::TricycleDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
@@ -76,7 +77,8 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::HectorImu:
     case PluginKind::HectorMagnetic:
     case PluginKind::ForceBasedMove:
-    case PluginKind::Force: return true;
+    case PluginKind::Force:
+    case PluginKind::F3d: return true;
     default: return false;
   }
 }

@@ -15,6 +15,7 @@ std::unique_ptr<ModelPlugin> makeHectorGazeboRosImu();
 std::unique_ptr<ModelPlugin> makeHectorGazeboRosMagnetic();
 std::unique_ptr<ModelPlugin> makeGazeboRosForceBasedMove();
 std::unique_ptr<ModelPlugin> makeGazeboRosForce();
+std::unique_ptr<ModelPlugin> makeGazeboRosF3d();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -31,6 +32,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::HectorMagnetic: return makeHectorGazeboRosMagnetic();
     case PluginKind::ForceBasedMove: return makeGazeboRosForceBasedMove();
     case PluginKind::Force: return makeGazeboRosForce();
+    case PluginKind::F3d: return makeGazeboRosF3d();
     default: return nullptr;
   }
 }

@@ -102,6 +102,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   LinkMotion linkMotion(const std::string& link) const override { return linkMotion(link, urdf::Pose()); }
   void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) override;
   void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) override;
+  void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const override;
   uint32_t noiseSeed(const ModelPluginDescription& plugin) const override;
   double stepSize() const override;
   const Param& params() const override;

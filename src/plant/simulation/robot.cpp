@@ -387,6 +387,20 @@ void Robot::Internals::addLinkWrench(const std::string& link, const urdf::Vector
   }
 }
 
+void Robot::Internals::addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const
+{
+  force = torque = urdf::Vector3();
+  auto it = multibody.link_in_body.find(link);
+  if (it == multibody.link_in_body.end())
+    return;
+  const btMultiBody& mb = *multibody.bullet;
+  const int body = it->second.first;
+  const btVector3 f = body == 0 ? mb.getBaseForce() : mb.getLinkForce(body - 1);
+  const btVector3 t = body == 0 ? mb.getBaseTorque() : mb.getLinkTorque(body - 1);
+  force = urdf::Vector3(f.x(), f.y(), f.z());
+  torque = urdf::Vector3(t.x(), t.y(), t.z());
+}
+
 double Robot::Internals::stepSize() const { return world->step_s; }
 
 const Param& Robot::Internals::params() const { return world->params; }

@@ -308,9 +308,10 @@ std::vector<Robot*> World::robots()
   return out;
 }
 
-// gazebo_ros_control's order: the controllers of each robot whose control period has come and its
-// model plugins (Gazebo's world update begin), every robot's joint layer writes its commands (writeSim), one physics step, then each robot's state is
-// checked and read back into its handles (readSim) and its sensors render what is due.
+// Gazebo's order: at world update begin each robot's due wrench and effort jobs, the controllers
+// whose control period has come (gazebo_ros_control) and its model plugins; every robot's joint layer
+// writes its commands (writeSim), one physics step, then each robot's state is checked and read back
+// into its handles (readSim) and its sensors render what is due.
 void World::step(int n)
 {
   Internals& w = *in_;
@@ -319,16 +320,16 @@ void World::step(int n)
     for (auto& r : w.robots)
       if (!r->in_->disabled)
       {
+        // gazebo_ros's wrench and effort jobs first: its system plugin's world update begin
+        // callback runs before any model's, so gazebo_ros_f3d sees apply_body_wrench's force.
+        if (r->in_->hasExternalEfforts())
+          r->in_->applyExternalEfforts(w.time_ns);
         r->in_->updateControllers(w.time_ns);
         r->in_->updateModelPlugins(w.time_ns);
       }
     for (auto& r : w.robots)
       if (!r->in_->disabled)
-      {
         r->in_->joint_layer.writeSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
-        if (r->in_->hasExternalEfforts())
-          r->in_->applyExternalEfforts(w.time_ns);
-      }
     w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
     w.time_ns += w.step_ns;
     ++w.steps;
