@@ -33,6 +33,11 @@ inline std::string pluginChildFrameId(const SensorDescription& d) { return d.lin
 enum class PluginTopic { Main, CameraInfo, DepthImage, DepthCameraInfo, Points };
 std::string pluginTopic(const SensorDescription& d, PluginTopic which = PluginTopic::Main);
 
+// Which camera of a multicamera sensor gazebo_ros_multicamera publishes it as: "left" when the
+// <camera>'s name contains "left", else "right" when it contains "right", else "" (upstream loads
+// no publisher for it).
+std::string multicameraSide(const SensorDescription& d);
+
 // A model plugin's namespace: its <robotNamespace>, which spawn_model writes into every plugin
 // without one (the spawner's namespace). Where that is empty, the plugins built on gazebo_ros's
 // GazeboRos helper (diff_drive) and joint_state_publisher take the model's name; skid_steer_drive,

@@ -35,6 +35,7 @@ enum class PluginKind
   Laser,         // libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so
   Camera,        // libgazebo_ros_camera.so
   OpenniKinect,  // libgazebo_ros_openni_kinect.so, libgazebo_ros_depth_camera.so
+  MultiCamera,   // libgazebo_ros_multicamera.so (each <camera> of a <sensor type="multicamera">)
   ImuSensor,     // libgazebo_ros_imu_sensor.so inside <sensor type="imu">
   ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
   P3d,           // libgazebo_ros_p3d.so, a model plugin
@@ -91,6 +92,10 @@ struct SensorDescription
   std::string type;  // "ray", "gpu_ray", "camera", "depth", "imu", "p3d", "contact"
   std::string link;
   urdf::Pose pose;   // in the link frame (<pose>)
+  // A <sensor type="multicamera"> is one "camera" description per <camera>, named
+  // "<sensor>::<camera>", its pose the sensor's composed with the camera's: this is the <camera>'s
+  // name ("left"); empty for every other sensor.
+  std::string multicamera_camera;
   double update_rate = 0.0;  // Hz; 0 = every physics step
   // ray
   int horizontal_samples = 1;

@@ -13,6 +13,7 @@ void GazeboRosCamera::Load(Sensor& sensor)
   frame_id_ = pluginFrameId(d, searchedTfPrefix(sensor, camera_name.empty() ? nh_ : ros::NodeHandle(nh_, camera_name)));
   image_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(pluginTopic(d), owner()), 2);
   info_pub_ = nh_.advertise<sensor_msgs::CameraInfo>(requireValidRosName(pluginTopic(d, PluginTopic::CameraInfo), owner()), 2);
+  hack_baseline_ = d.pluginNumber("hackBaseline", 0.0);
 }
 
 bool GazeboRosCamera::subscribed() const
@@ -33,7 +34,7 @@ void GazeboRosCamera::OnUpdate()
   publishFrame(frame, header);
 }
 
-sensor_msgs::CameraInfo GazeboRosCamera::cameraInfo(const CameraFrame& f, const std_msgs::Header& header)
+sensor_msgs::CameraInfo GazeboRosCamera::cameraInfo(const CameraFrame& f, const std_msgs::Header& header) const
 {
   sensor_msgs::CameraInfo info;
   info.header = header;
@@ -43,7 +44,7 @@ sensor_msgs::CameraInfo GazeboRosCamera::cameraInfo(const CameraFrame& f, const 
   info.D.assign(5, 0.0);
   info.K = {f.fx, 0, f.cx, 0, f.fy, f.cy, 0, 0, 1};
   info.R = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-  info.P = {f.fx, 0, f.cx, 0, 0, f.fy, f.cy, 0, 0, 0, 1, 0};
+  info.P = {f.fx, 0, f.cx, -f.fx * hack_baseline_, 0, f.fy, f.cy, 0, 0, 0, 1, 0};
   return info;
 }
 

@@ -1,7 +1,9 @@
 // gazebo_ros_camera: a camera's sensor_msgs/Image (rgb8) on <imageTopicName> and its CameraInfo on
 // <cameraInfoTopicName>, both under <cameraName>, frame tf::resolve(tf_prefix, <frameName>); the
 // tf_prefix parameter is searched from the camera's namespace (docs/interfaces.md section 11).
-// gazebo_ros_openni_kinect extends it, as upstream's both build on GazeboRosCameraUtils.
+// <hackBaseline> (0) puts -fx * baseline into P[3] (a stereo pair's right camera).
+// gazebo_ros_openni_kinect and gazebo_ros_multicamera extend it, as upstream's build on
+// GazeboRosCameraUtils.
 #pragma once
 
 #include <sensor_msgs/CameraInfo.h>
@@ -21,12 +23,13 @@ public:
 protected:
   // After the image and its info, with the same frame (the depth plugin's extra topics).
   virtual void publishFrame(const CameraFrame& frame, const std_msgs::Header& header) {}
-  static sensor_msgs::CameraInfo cameraInfo(const CameraFrame& f, const std_msgs::Header& header);
+  sensor_msgs::CameraInfo cameraInfo(const CameraFrame& f, const std_msgs::Header& header) const;
   std::string owner() const { return "sensor '" + camera_->name() + "' topic"; }
 
   Camera* camera_ = nullptr;
   ros::NodeHandle nh_;
   std::string frame_id_;
+  double hack_baseline_ = 0.0;  // m
 
 private:
   ros::Publisher image_pub_, info_pub_;

@@ -14,10 +14,13 @@ std::string withoutTrailingSlashes(std::string name)
   return name;
 }
 
-// gazebo_ros_camera and gazebo_ros_openni_kinect put relative topics under <cameraName>.
+// gazebo_ros_camera and gazebo_ros_openni_kinect put relative topics under <cameraName>;
+// gazebo_ros_multicamera under <cameraName>/left or /right (an empty <cameraName>: left, right).
 std::string underCameraName(const SensorDescription& d, const std::string& topic)
 {
-  const std::string camera = d.pluginParam("cameraName");
+  std::string camera = d.pluginParam("cameraName");
+  if (d.plugin_kind == PluginKind::MultiCamera)
+    camera = camera.empty() ? multicameraSide(d) : camera + "/" + multicameraSide(d);
   if (!topic.empty() && topic[0] == '/')
     return topic;
   return camera.empty() ? topic : camera + "/" + topic;
@@ -158,6 +161,13 @@ std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::stri
   // The GazeboRos helper falls back to its namespace; the others read only a tf_prefix parameter.
   return d.kind == PluginKind::DiffDrive || d.kind == PluginKind::TricycleDrive ? withoutTrailingSlashes(plugin_namespace)
                                                                                 : "";
+}
+
+std::string multicameraSide(const SensorDescription& d)
+{
+  if (d.multicamera_camera.find("left") != std::string::npos)
+    return "left";
+  return d.multicamera_camera.find("right") != std::string::npos ? "right" : "";
 }
 
 std::string pluginTopic(const SensorDescription& d, PluginTopic which)

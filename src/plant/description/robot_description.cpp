@@ -12,6 +12,7 @@
 #include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 
+#include "bullet_plant/geometry.h"
 #include "description/xml_util.h"
 
 namespace bullet_plant
@@ -39,6 +40,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_laser.so", PluginKind::Laser},          {"libgazebo_ros_gpu_laser.so", PluginKind::Laser},
       {"libgazebo_ros_camera.so", PluginKind::Camera},        {"libgazebo_ros_openni_kinect.so", PluginKind::OpenniKinect},
       {"libgazebo_ros_depth_camera.so", PluginKind::OpenniKinect},
+      {"libgazebo_ros_multicamera.so", PluginKind::MultiCamera},
       {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
       {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
       {"libgazebo_ros_range.so", PluginKind::Range},
@@ -390,6 +392,24 @@ int countOf(double written)
   return int(std::max(double(std::numeric_limits<int>::min()), std::min(written, double(std::numeric_limits<int>::max()))));
 }
 
+// A <camera>: its field of view, image, clip and noise.
+void readCamera(const tinyxml2::XMLElement* cam, SensorDescription& d)
+{
+  d.horizontal_fov = xml::childDouble(cam, "horizontal_fov", 1.047);
+  if (auto* image = cam->FirstChildElement("image"))
+  {
+    d.image_width = countOf(xml::childDouble(image, "width", 320));
+    d.image_height = countOf(xml::childDouble(image, "height", 240));
+    d.image_format = xml::childText(image, "format", "R8G8B8");
+  }
+  if (auto* clip = cam->FirstChildElement("clip"))
+  {
+    d.clip_near = xml::childDouble(clip, "near", 0.1);
+    d.clip_far = xml::childDouble(clip, "far", 100.0);
+  }
+  readNoise(cam, d.noise);
+}
+
 SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& link)
 {
   SensorDescription d;
@@ -421,27 +441,37 @@ SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& l
     readNoise(ray, d.noise);
   }
   if (auto* cam = s->FirstChildElement("camera"))
-  {
-    d.horizontal_fov = xml::childDouble(cam, "horizontal_fov", 1.047);
-    if (auto* image = cam->FirstChildElement("image"))
-    {
-      d.image_width = countOf(xml::childDouble(image, "width", 320));
-      d.image_height = countOf(xml::childDouble(image, "height", 240));
-      d.image_format = xml::childText(image, "format", "R8G8B8");
-    }
-    if (auto* clip = cam->FirstChildElement("clip"))
-    {
-      d.clip_near = xml::childDouble(clip, "near", 0.1);
-      d.clip_far = xml::childDouble(clip, "far", 100.0);
-    }
-    readNoise(cam, d.noise);
-  }
+    readCamera(cam, d);
   if (auto* contact = s->FirstChildElement("contact"))
     for (auto* c = contact->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
       d.contact_collisions.push_back(xml::trimmed(c->GetText() ? c->GetText() : ""));
   if (auto* plugin = s->FirstChildElement("plugin"))
     readPluginBlock(plugin, d);
   return d;
+}
+
+// A <sensor type="multicamera">: one camera per <camera>, sharing the sensor's rate and plugin.
+std::vector<SensorDescription> readMulticamera(const tinyxml2::XMLElement* s, const std::string& link)
+{
+  std::vector<SensorDescription> cameras;
+  for (auto* cam = s->FirstChildElement("camera"); cam; cam = cam->NextSiblingElement("camera"))
+  {
+    SensorDescription d = readSensor(s, link);
+    const SensorDescription defaults;
+    d.type = "camera";
+    d.image_width = defaults.image_width;
+    d.image_height = defaults.image_height;
+    d.image_format = defaults.image_format;
+    d.clip_near = defaults.clip_near;
+    d.clip_far = defaults.clip_far;
+    d.noise = defaults.noise;
+    readCamera(cam, d);
+    d.multicamera_camera = cam->Attribute("name") ? cam->Attribute("name") : "";
+    d.name += "::" + d.multicamera_camera;
+    d.pose = compose(d.pose, xml::parseSdfPose(xml::childText(cam, "pose", "")));
+    cameras.push_back(std::move(d));
+  }
+  return cameras;
 }
 
 void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& out)
@@ -493,9 +523,18 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     surface.mu2 = xml::childDouble(g, "mu2", surface.mu2);
     surface.kp = xml::childDouble(g, "kp", surface.kp);
     surface.kd = xml::childDouble(g, "kd", surface.kd);
+    std::vector<SensorDescription> sensors;
     for (auto* s = g->FirstChildElement("sensor"); s; s = s->NextSiblingElement("sensor"))
     {
-      out.sensors.push_back(readSensor(s, link));
+      if (!s->Attribute("type", "multicamera"))
+        sensors.push_back(readSensor(s, link));
+      else
+        for (SensorDescription& camera : readMulticamera(s, link))
+          sensors.push_back(std::move(camera));
+    }
+    for (SensorDescription& sensor : sensors)
+    {
+      out.sensors.push_back(std::move(sensor));
       SensorDescription& d = out.sensors.back();
       if (d.plugin_kind == PluginKind::Unknown || d.plugin_kind == PluginKind::ImuModel ||
           d.plugin_kind == PluginKind::P3d || isModelPluginKind(d.plugin_kind))
