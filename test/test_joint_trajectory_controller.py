@@ -116,6 +116,33 @@ def test_waypoints_are_joined_by_the_spline_their_fields_allow(given):
         'the last point is held'
 
 
+def test_query_state_samples_the_trajectory_at_any_time_of_it():
+    world, robot, manager = arm_world()
+    started = world.time - 0.1  # the hold trajectory begins when the controller starts
+    held = manager.query_state('arm_controller', world.time)
+    assert held['name'] == ARM_JOINTS and held['velocity'] == [0, 0, 0]
+    assert held['position'] == pytest.approx(positions(robot), abs=0.02)
+    stamp = world.time + 0.5
+    first, second = (0.4, 0.5, -0.2), (0.9, 0.1, 0.3)
+    points = [point(1.0, [first[0], 0.3, 0.5], [first[1], 0.0, 0.0], [first[2], 0.0, 0.0]),
+              point(2.0, [second[0], 0.3, 0.5], [second[1], 0.0, 0.0], [second[2], 0.0, 0.0])]
+    assert manager.command('arm_controller', {'joint_names': ARM_JOINTS, 'points': points, 'stamp': stamp})
+    world.step(1)
+    # ahead of time and in the past of the new trajectory alike: the quintic between the waypoints
+    for t in (stamp + 1.25, stamp + 1.5, stamp + 1.75):
+        sampled = manager.query_state('arm_controller', t)
+        assert sampled['position'][0] == pytest.approx(hermite(t, stamp + 1.0, first, stamp + 2.0, second), abs=1e-9)
+        assert sampled['position'][1:] == pytest.approx([0.3, 0.5], abs=1e-9)
+    world.step(3000)
+    assert manager.query_state('arm_controller', world.time + 10)['position'][0] == pytest.approx(0.9, abs=1e-12)
+    assert manager.query_state('arm_controller', started - 1.0) is None
+    assert any('Requested sample time precedes trajectory start time.' in m for m in logged(world, 'ERROR'))
+    manager.switch([], ['arm_controller'])
+    world.step(10)  # the switch happens at the next update, as ros_control's
+    assert manager.query_state('arm_controller', world.time) is None
+    assert any("Can't sample trajectory. Controller is not running." in m for m in logged(world, 'ERROR'))
+
+
 def test_goals_are_rejected_with_upstreams_codes_and_reasons():
     world, robot, manager = arm_world()
     reach = point(1.0, [0.2, 0.2, 0.2])

@@ -88,7 +88,7 @@ print(json.dumps(done))
     assert seen['rejected'] == [REJECTED, -2, "Joints on incoming goal don't match the controller joints."]
 
 
-def test_a_trajectory_on_the_command_topic_and_the_state_topic(ros, tmp_path):
+def test_a_trajectory_on_the_command_topic_the_state_topic_and_query_state(ros, tmp_path):
     start_arm(ros, tmp_path)
     seen = ros.python("""
 import json, rospy
@@ -105,9 +105,21 @@ pub.publish(t)
 rospy.sleep(2.5)
 last = states[-1]
 stamps = [s.header.stamp.to_sec() for s in states[-20:]]
+from control_msgs.srv import QueryTrajectoryState
+query = rospy.ServiceProxy('/arm/arm_controller/query_state', QueryTrajectoryState)
+queried = query(rospy.Time.now())
+try:
+    query(rospy.Time(0.001))
+    early = 'answered'
+except rospy.ServiceException as e:
+    early = 'failed'
 print(json.dumps({'names': list(last.joint_names), 'actual': list(last.actual.positions),
-                  'error': list(last.error.positions), 'period': (stamps[-1] - stamps[0]) / (len(stamps) - 1)}))
+                  'error': list(last.error.positions), 'period': (stamps[-1] - stamps[0]) / (len(stamps) - 1),
+                  'queried': [list(queried.name), list(queried.position), list(queried.velocity)], 'early': early}))
 """, timeout=60)
+    assert seen['queried'] == [['shoulder', 'elbow', 'wrist'], pytest.approx([-0.6, 0.4, 0.0], abs=1e-9), [0, 0, 0]], \
+        'query_state: the trajectory held at its last point'
+    assert seen['early'] == 'failed', 'a time before the trajectory fails the call, as upstream returns false'
     assert seen['names'] == ['shoulder', 'elbow', 'wrist']
     assert seen['actual'] == pytest.approx([-0.6, 0.4, 0.0], abs=0.02), 'reordered by name'
     assert max(abs(e) for e in seen['error']) < 0.02

@@ -70,6 +70,18 @@ struct TrajectoryStateSample
   TrajectoryPointSample desired, actual, error;  // error = desired - actual
 };
 
+// control_msgs/QueryTrajectoryState: the controller's trajectory sampled at a time (ROS time, ns).
+struct QueryTrajectoryStateRequest
+{
+  int64_t time_ns = 0;
+};
+
+struct QueryTrajectoryStateResponse
+{
+  std::vector<std::string> name;
+  std::vector<double> position, velocity, acceleration;
+};
+
 // control_msgs/GripperCommand: the goal of GripperCommand.action.
 struct GripperCommandGoal
 {

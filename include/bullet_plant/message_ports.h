@@ -2,7 +2,7 @@
 // ros_controllers' controllers and gazebo_plugins' plugins subscribe to their commands and advertise
 // what they publish on their own node handles; the plant has no ROS, so they declare typed ports
 // instead (MessagePorts), and each transport maps a message type to its wire once: the ROS node
-// (src/node/port_transport.cpp) and the Python module (src/python/port_bindings.cpp). A new
+// (src/node/port_topics.cpp) and the Python module (src/python/port_bindings.cpp). A new
 // controller or plugin that speaks known messages touches only its own file and its registry.
 #pragma once
 
@@ -25,7 +25,7 @@ enum class TopicScope { Controller, Robot };
 class Port
 {
 public:
-  enum class Direction { In, Out };
+  enum class Direction { In, Out, Service };
 
   Port(std::string topic, TopicScope scope, Direction direction, std::type_index message_type)
     : topic_(std::move(topic)), scope_(scope), direction_(direction), message_type_(message_type)
@@ -100,7 +100,23 @@ private:
   bool has_latest_ = false;
 };
 
-// What owns ports: it opens them (subscribe, advertise) and the transports find them.
+// A service the owner answers (what it would advertiseService), on the simulation thread: false
+// (the reason logged by the owner) fails the call, as a ROS service callback returning false.
+template <class Request, class Response>
+class ServicePort : public Port
+{
+public:
+  ServicePort(std::string name, TopicScope scope, std::function<bool(const Request&, Response&)> answer)
+    : Port(std::move(name), scope, Direction::Service, typeid(Request)), answer_(std::move(answer))
+  {
+  }
+  bool call(const Request& request, Response& response) { return answer_(request, response); }
+
+private:
+  std::function<bool(const Request&, Response&)> answer_;
+};
+
+// What owns ports: it opens them (subscribe, advertise, serve) and the transports find them.
 class MessagePorts
 {
 public:
@@ -141,6 +157,13 @@ protected:
   void subscribe(std::string topic, std::function<bool(const Msg&)> accept, TopicScope scope = TopicScope::Controller)
   {
     ports_.emplace_back(new InputPort<Msg>(std::move(topic), scope, std::move(accept)));
+  }
+
+  template <class Request, class Response>
+  void serve(std::string name, std::function<bool(const Request&, Response&)> answer,
+             TopicScope scope = TopicScope::Controller)
+  {
+    ports_.emplace_back(new ServicePort<Request, Response>(std::move(name), scope, std::move(answer)));
   }
 
 private:

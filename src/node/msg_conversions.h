@@ -9,6 +9,7 @@
 #include <control_msgs/GripperCommandAction.h>
 #include <control_msgs/JointControllerState.h>
 #include <control_msgs/JointTrajectoryControllerState.h>
+#include <control_msgs/QueryTrajectoryState.h>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -172,6 +173,19 @@ inline sensor_msgs::JointState toMsg(const JointStateSample& s)
   msg.velocity = s.velocity;
   msg.effort = s.effort;
   return msg;
+}
+
+inline QueryTrajectoryStateRequest fromMsg(const control_msgs::QueryTrajectoryState::Request& m)
+{
+  return QueryTrajectoryStateRequest{int64_t(m.time.toNSec())};
+}
+
+inline void toMsg(const QueryTrajectoryStateResponse& s, control_msgs::QueryTrajectoryState::Response& m)
+{
+  m.name = s.name;
+  m.position = s.position;
+  m.velocity = s.velocity;
+  m.acceleration = s.acceleration;
 }
 
 inline control_msgs::JointControllerState toMsg(const ControllerStateSample& s)

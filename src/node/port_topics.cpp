@@ -26,6 +26,9 @@ struct PortTransport
                                                ActionChannel::FindPort)>
       serve;
   bool by_action = false;
+  // A service: its callback runs the port's answer on the simulation thread and waits for it.
+  using FindService = std::function<Port*()>;  // on the simulation thread; null when the owner is gone
+  std::function<ros::ServiceServer(ros::NodeHandle&, const std::string& name, RosPlant&, FindService)> advertise_service;
 };
 
 namespace
@@ -66,6 +69,29 @@ PortTransport action()
   t.serve = [](ros::NodeHandle& nh, const std::string& name, RosPlant& plant, ActionChannel::FindPort find_port) {
     return std::make_shared<ActionChannelOf<RosAction, Goal, Result, Feedback>>(
         nh, name, [&plant](std::function<void()> work) { plant.post(std::move(work)); }, std::move(find_port));
+  };
+  return t;
+}
+
+template <class Request, class Response, class RosService>
+PortTransport service()
+{
+  PortTransport t;
+  t.advertise_service = [](ros::NodeHandle& nh, const std::string& name, RosPlant& plant, PortTransport::FindService find) {
+    using RosRequest = typename RosService::Request;
+    using RosResponse = typename RosService::Response;
+    boost::function<bool(RosRequest&, RosResponse&)> callback = [&plant, find](RosRequest& req, RosResponse& res) {
+      const Request request = fromMsg(req);
+      Response response;
+      const bool answered = plant.onSimThread<bool>([&] {
+        auto* port = dynamic_cast<ServicePort<Request, Response>*>(find());
+        return port && port->call(request, response);
+      });
+      if (answered)
+        toMsg(response, res);
+      return answered;
+    };
+    return nh.advertiseService(name, callback);
   };
   return t;
 }
@@ -121,7 +147,13 @@ const PortTransport* transportOf(const Port& port)
       {typeid(ActionResult<GripperCommandResult>), carriedByAction()},
       {typeid(ActionFeedback<GripperCommandResult>), carriedByAction()},
   };
-  const auto& table = port.direction() == Port::Direction::In ? inputs : outputs;
+  static const std::map<std::type_index, PortTransport> services = {
+      {typeid(QueryTrajectoryStateRequest),
+       service<QueryTrajectoryStateRequest, QueryTrajectoryStateResponse, control_msgs::QueryTrajectoryState>()},
+  };
+  const auto& table = port.direction() == Port::Direction::In    ? inputs
+                      : port.direction() == Port::Direction::Out ? outputs
+                                                                 : services;
   auto it = table.find(port.messageType());
   return it == table.end() ? nullptr : &it->second;
 }
@@ -146,6 +178,7 @@ void PortTopics::refresh(const std::vector<std::pair<std::string, const MessageP
   std::map<std::string, ros::Subscriber> subscribers;
   std::map<std::string, ros::Publisher> publishers;
   std::map<std::string, std::shared_ptr<ActionChannel>> actions;
+  std::map<std::string, ros::ServiceServer> services;
   std::vector<std::pair<Port*, std::string>> action_outputs;
   outputs_.clear();
   for (const auto& owner : owners)
@@ -173,6 +206,12 @@ void PortTopics::refresh(const std::vector<std::pair<std::string, const MessageP
           action_outputs.emplace_back(port.get(), action);
         continue;
       }
+      if (port->direction() == Port::Direction::Service)
+      {
+        auto kept = services_.find(topic);
+        services[topic] = kept != services_.end() ? kept->second : advertiseService(owner.first, *port, *transport);
+        continue;
+      }
       if (port->direction() == Port::Direction::In)
       {
         const std::string key = owner.first + " " + topic;
@@ -190,6 +229,7 @@ void PortTopics::refresh(const std::vector<std::pair<std::string, const MessageP
   subscribers_.swap(subscribers);
   publishers_.swap(publishers);
   actions_.swap(actions);
+  services_.swap(services);
   action_outputs_.clear();
   for (const auto& out : action_outputs)
   {
@@ -210,6 +250,19 @@ std::shared_ptr<ActionChannel> PortTopics::serve(const std::string& owner, const
   return transport.serve(nh_, action, plant_, [this, owner, prefix](const std::string& topic) -> Port* {
     const MessagePorts* ports = find_owner_(owner);
     return ports ? ports->port(prefix + topic, Port::Direction::In) : nullptr;
+  });
+}
+
+ros::ServiceServer PortTopics::advertiseService(const std::string& owner, const Port& port, const PortTransport& transport)
+{
+  const std::string name = port.topic();
+  std::weak_ptr<bool> alive = alive_;
+  return transport.advertise_service(nh_, topicOf(owner, port), plant_, [this, alive, owner, name]() -> Port* {
+    std::shared_ptr<bool> still = alive.lock();
+    if (!still || !*still)
+      return nullptr;  // the robot (and its services) went before the call was answered
+    const MessagePorts* ports = find_owner_(owner);
+    return ports ? ports->port(name, Port::Direction::Service) : nullptr;
   });
 }
 

@@ -2,7 +2,8 @@
 // controllers, a model plugin), a subscriber per input and a publisher per output topic, each
 // port's message type mapped to its ROS message once (port_topics.cpp). Messages that arrive are
 // posted to the simulation thread and handed to the port found again there (its owner may be gone
-// by then); outputs are drained after each step.
+// by then); outputs are drained after each step; a service call waits for its answer from the
+// simulation thread.
 #pragma once
 
 #include <functional>
@@ -45,6 +46,7 @@ private:
   };
   std::string topicOf(const std::string& owner, const Port& port) const;
   ros::Subscriber subscribe(const std::string& owner, const Port& port, const PortTransport& transport);
+  ros::ServiceServer advertiseService(const std::string& owner, const Port& port, const PortTransport& transport);
   std::shared_ptr<ActionChannel> serve(const std::string& owner, const Port& goal_port, const std::string& action,
                                        const PortTransport& transport);
 
@@ -56,6 +58,7 @@ private:
   std::map<std::string, ros::Publisher> publishers_;    // by topic, shared by the owners on it
   std::vector<Output> outputs_;                         // owners' order, ports' order
   std::map<std::string, std::shared_ptr<ActionChannel>> actions_;       // by action name (topic)
+  std::map<std::string, ros::ServiceServer> services_;                  // by service name
   std::vector<std::pair<Port*, std::shared_ptr<ActionChannel>>> action_outputs_;  // result, feedback
 };
 

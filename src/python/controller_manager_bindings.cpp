@@ -172,6 +172,24 @@ void init_controller_manager(py::module_& m)
         return latestOfPort(actionPort(controllerOf(cm, name), action, "feedback", Port::Direction::Out));
       }), py::arg("name"), py::arg("action") = "follow_joint_trajectory",
            "the latest feedback of the goal in force (FollowJointTrajectory: goal_id, desired, actual, error)")
+      .def("query_state", onManager([](ControllerManager& cm, const std::string& name, double time) -> py::object {
+        auto* port = dynamic_cast<ServicePort<QueryTrajectoryStateRequest, QueryTrajectoryStateResponse>*>(
+            controllerOf(cm, name).port("query_state", Port::Direction::Service));
+        if (!port)
+          throw py::key_error("controller '" + name + "' serves no query_state (JointTrajectoryController does)");
+        QueryTrajectoryStateResponse r;
+        if (!port->call(QueryTrajectoryStateRequest{int64_t(std::llround(time * 1e9))}, r))
+          return py::none();
+        py::dict d;
+        d["name"] = r.name;
+        d["position"] = r.position;
+        d["velocity"] = r.velocity;
+        d["acceleration"] = r.acceleration;
+        return d;
+      }), py::arg("name"), py::arg("time"),
+           "what <controller>/query_state (control_msgs/QueryTrajectoryState) answers: the trajectory sampled "
+           "at `time` (s of sim time) as a dict of name, position, velocity, acceleration; None where the "
+           "service fails (the controller not running, a time before the trajectory)")
       .def("samples", onManager([](ControllerManager& cm, const std::string& name) { return controllerOf(cm, name).messagesPublished(); }),
            py::arg("name"), "how many messages the controller has produced");
 }

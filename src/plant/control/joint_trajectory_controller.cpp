@@ -88,6 +88,10 @@ public:
     state_port_ = &advertise<TrajectoryStateSample>("state");
     result_port_ = &advertise<ActionResult<FollowJointTrajectoryResult>>("follow_joint_trajectory/result");
     feedback_port_ = &advertise<ActionFeedback<TrajectoryStateSample>>("follow_joint_trajectory/feedback");
+    serve<QueryTrajectoryStateRequest, QueryTrajectoryStateResponse>(
+        "query_state", [this](const QueryTrajectoryStateRequest& q, QueryTrajectoryStateResponse& r) {
+          return queryState(q, r);
+        });
   }
 
   bool init(ControllerContext& c) override
@@ -187,6 +191,32 @@ public:
   }
 
 private:
+  // The query_state service: the trajectory in force sampled at the request's time (sim time, which
+  // upstream's uptime mapping reduces to), as upstream's queryStateService.
+  bool queryState(const QueryTrajectoryStateRequest& q, QueryTrajectoryStateResponse& r)
+  {
+    if (!running_)
+    {
+      log_->error("Can't sample trajectory. Controller is not running.");
+      return false;
+    }
+    const double time = q.time_ns * kNs;
+    r = QueryTrajectoryStateResponse{joint_names_, {}, {}, {}};
+    for (const JointTrajectory& t : trajectory_)
+    {
+      if (t.empty() || time < t.front().spline.startTime())
+      {
+        log_->error("Requested sample time precedes trajectory start time.");
+        return false;
+      }
+      const SplineState s = t[findSegment(t, time)].spline.sample(time);
+      r.position.push_back(s.position);
+      r.velocity.push_back(s.velocity);
+      r.acceleration.push_back(s.acceleration);
+    }
+    return true;
+  }
+
   bool readJoints(ControllerContext& c)
   {
     const Param* names = param(c, "joints");
