@@ -243,6 +243,23 @@ DIFF_DRIVE_CONTROLLERS = {'diff_bot': {
         'linear': {'x': {'has_acceleration_limits': True, 'max_acceleration': 1.0}}}}}
 
 
+def mecanum_bot():
+    """mecanum_bot.urdf: a Ridgeback-like base (four frictionless mecanum wheels on velocity
+    transmissions, gazebo_ros_control in /mecanum_bot, hector's force-based move on cmd_vel)."""
+    return fixture_urdf('mecanum_bot', 'force_based_move')
+
+
+MECANUM_CONTROLLERS = {'mecanum_bot': {
+    'joint_state_controller': {'type': 'joint_state_controller/JointStateController', 'publish_rate': 50},
+    'mecanum_controller': {
+        'type': 'mecanum_drive_controller/MecanumDriveController', 'front_left_wheel_joint': 'front_left_wheel',
+        'back_left_wheel_joint': 'rear_left_wheel', 'front_right_wheel_joint': 'front_right_wheel',
+        'back_right_wheel_joint': 'rear_right_wheel', 'publish_rate': 50, 'cmd_vel_timeout': 0.25,
+        'base_frame_id': 'base_footprint',
+        'pose_covariance_diagonal': [0.001, 0.001, 1e6, 1e6, 1e6, 0.03],
+        'twist_covariance_diagonal': [0.001, 0.001, 0.001, 1e6, 1e6, 0.03]}}}
+
+
 ARM_JOINTS = ['shoulder', 'elbow', 'wrist']
 
 

@@ -16,6 +16,7 @@ std::unique_ptr<Controller> makeForwardGroupController(JointInterface iface);
 std::unique_ptr<Controller> makeGripperActionController(JointInterface iface);
 std::unique_ptr<Controller> makeJointStateController();
 std::unique_ptr<Controller> makeJointTrajectoryController(JointInterface iface);
+std::unique_ptr<Controller> makeMecanumDriveController();
 
 namespace
 {
@@ -48,6 +49,8 @@ const std::vector<ControllerType>& registry()
        [] { return makeEffortPidController(false); }},
       {"joint_state_controller/JointStateController",
        makeJointStateController},
+      {"mecanum_drive_controller/MecanumDriveController",
+       makeMecanumDriveController},
       {"position_controllers/GripperActionController",
        [] { return makeGripperActionController(JointInterface::Position); }},
       {"position_controllers/JointGroupPositionController",
