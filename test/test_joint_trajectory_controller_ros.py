@@ -12,8 +12,8 @@ from tianracer_description.ros_harness import spawn_urdf, start_plant
 pytestmark = pytest.mark.ros
 
 
-def start_arm(ros, tmp_path, kind='position_controllers'):
-    (tmp_path / 'arm.urdf').write_text(arm({'position_controllers': 'Position', 'effort_controllers': 'Effort'}[kind]))
+def start_arm(ros, tmp_path, kind='position_controllers', urdf=None):
+    (tmp_path / 'arm.urdf').write_text(urdf or arm({'position_controllers': 'Position', 'effort_controllers': 'Effort'}[kind]))
     (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(arm_controllers(kind)))
     plant = start_plant(ros)
     ros.run(['rosparam', 'set', '/arm/robot_description', '--textfile', str(tmp_path / 'arm.urdf')])

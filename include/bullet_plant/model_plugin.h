@@ -76,6 +76,14 @@ public:
   // neither gravity nor contacts, which the physics adds later, as in ODE's accumulators. Zero for
   // an unknown link.
   virtual void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const = 0;
+  // Joint::GetForceTorque(0) as gazebo_ros_ft_sensor reads it: watch a movable joint once (at
+  // Load; false for a joint the robot lacks or a fixed one), then after each step the wrench the
+  // joint transmitted to its child over that step: the force on the child's side of the robot
+  // and the torque about the child link's origin (the joint's), both in the child link's frame. It
+  // is what the child's subtree needed for its motion less gravity, contacts and the forces added
+  // to it: everything the parent passed on, the joint's own drive and limits included.
+  virtual bool watchJointWrench(const std::string& joint) = 0;
+  virtual void jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const = 0;
   // The world's gravity (m/s^2, world frame).
   virtual urdf::Vector3 gravity() const = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.

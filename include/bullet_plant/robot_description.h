@@ -57,6 +57,7 @@ enum class PluginKind
   ForceBasedMove,       // libgazebo_ros_force_based_move.so (hector's omnidirectional base)
   Force,                // libgazebo_ros_force.so
   F3d,                  // libgazebo_ros_f3d.so
+  FtSensor,             // libgazebo_ros_ft_sensor.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);

@@ -17,6 +17,7 @@
 
 #include <ros/ros.h>
 
+#include "bullet_plant/gaussian_kernel.h"
 #include "bullet_plant/plugin_names.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
@@ -63,24 +64,6 @@ private:
   uint64_t seen_updates_ = 0;
   int64_t sim_time_ns_ = 0;
   double step_size_ = 0.001;
-};
-
-// gazebo_plugins' GaussianKernel: Box-Muller from one uniform pair per draw, the cosine half kept.
-// Upstream draws from the process-wide rand(); here each plugin has its own rand_r state seeded
-// with 0, so a plugin's noise is the same sequence on every run whatever else draws.
-class GaussianKernel
-{
-public:
-  double operator()(double mu, double sigma)
-  {
-    if (sigma == 0.0)
-      return mu;
-    const double u = double(rand_r(&seed_)) / double(RAND_MAX), v = double(rand_r(&seed_)) / double(RAND_MAX);
-    return sigma * std::sqrt(-2.0 * std::log(u)) * std::cos(2.0 * M_PI * v) + mu;
-  }
-
-private:
-  unsigned int seed_ = 0;
 };
 
 using SensorPluginFactory = std::function<std::unique_ptr<SensorPlugin>()>;

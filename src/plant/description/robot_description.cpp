@@ -55,6 +55,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_force_based_move.so", PluginKind::ForceBasedMove},
       {"libgazebo_ros_force.so", PluginKind::Force},
       {"libgazebo_ros_f3d.so", PluginKind::F3d},
+      {"libgazebo_ros_ft_sensor.so", PluginKind::FtSensor},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_tricycle_drive.so", PluginKind::TricycleDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
@@ -80,7 +81,8 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::HectorMagnetic:
     case PluginKind::ForceBasedMove:
     case PluginKind::Force:
-    case PluginKind::F3d: return true;
+    case PluginKind::F3d:
+    case PluginKind::FtSensor: return true;
     default: return false;
   }
 }

@@ -16,6 +16,7 @@ std::unique_ptr<ModelPlugin> makeHectorGazeboRosMagnetic();
 std::unique_ptr<ModelPlugin> makeGazeboRosForceBasedMove();
 std::unique_ptr<ModelPlugin> makeGazeboRosForce();
 std::unique_ptr<ModelPlugin> makeGazeboRosF3d();
+std::unique_ptr<ModelPlugin> makeGazeboRosFtSensor();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -33,6 +34,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::ForceBasedMove: return makeGazeboRosForceBasedMove();
     case PluginKind::Force: return makeGazeboRosForce();
     case PluginKind::F3d: return makeGazeboRosF3d();
+    case PluginKind::FtSensor: return makeGazeboRosFtSensor();
     default: return nullptr;
   }
 }

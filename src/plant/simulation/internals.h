@@ -76,6 +76,16 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   std::vector<LinkWrench> wrenches;
   std::vector<JointEffort> joint_efforts;
   std::vector<int> ray_bodies;            // each body's handle in the world's RayScene (-1: no shapes)
+  // Joints whose transmitted wrench is measured each step (ModelPluginContext::watchJointWrench):
+  // the child's subtree, its momenta and added forces before the step, the wrench after it.
+  struct JointWrenchWatch
+  {
+    std::string joint, child_link;
+    std::vector<int> bodies;                  // the child's body and every body below it
+    std::vector<btVector3> momentum, angular_momentum, force_added, torque_added;  // per body, before
+    urdf::Vector3 force, torque;              // the last step's, in the child link frame
+  };
+  std::vector<JointWrenchWatch> wrench_watches;
 
   // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
   // then recovery, readSim, sensors.
@@ -84,6 +94,9 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   void updateModelPlugins(int64_t time_ns);
   void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
+  // Around the physics step: the watched joints' subtrees before it, their wrenches after it.
+  void beginJointWrenches();
+  void endJointWrenches();
   // What its sensors read (SensorContext). linkMotion: a link frame's (or a point's of it, frame
   // `offset` in the link) pose and velocities in the world.
   bool hasLink(const std::string& link) const override;
@@ -103,6 +116,8 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) override;
   void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) override;
   void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const override;
+  bool watchJointWrench(const std::string& joint) override;
+  void jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const override;
   uint32_t noiseSeed(const ModelPluginDescription& plugin) const override;
   double stepSize() const override;
   const Param& params() const override;
