@@ -27,6 +27,7 @@ struct TrajectoryPointSample
 struct JointTrajectoryCommand
 {
   int64_t stamp_ns = 0;
+  std::string frame_id;  // the header's (gazebo_ros_joint_pose_trajectory's reference link)
   std::vector<std::string> joint_names;
   std::vector<TrajectoryPointSample> points;
 };

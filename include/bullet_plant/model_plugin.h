@@ -76,6 +76,16 @@ public:
   // neither gravity nor contacts, which the physics adds later, as in ODE's accumulators. Zero for
   // an unknown link.
   virtual void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const = 0;
+  // Joint::SetPosition on any movable joint (a controller's too), the joint then at rest; false for
+  // a joint the robot lacks or a fixed one. Within the URDF limits.
+  virtual bool setJointPosition(const std::string& joint, double position) = 0;
+  // Model::SetLinkWorldPose: the model moved, joints as they are and at rest, so that `link` is at
+  // `pose` (world). Nothing for a model fixed to the world.
+  virtual void setLinkWorldPose(const std::string& link, const urdf::Pose& pose) = 0;
+  // World::SetPhysicsEnabled / PhysicsEnabled: the whole world's. Without physics time goes on and
+  // controllers, plugins and sensors run, but nothing moves unless set by hand.
+  virtual void setPhysicsEnabled(bool enabled) = 0;
+  virtual bool physicsEnabled() const = 0;
   // Joint::GetForceTorque(0) as gazebo_ros_ft_sensor reads it: watch a movable joint once (at
   // Load; false for a joint the robot lacks or a fixed one), then after each step the wrench the
   // joint transmitted to its child over that step: the force on the child's side of the robot

@@ -58,6 +58,7 @@ enum class PluginKind
   Force,                // libgazebo_ros_force.so
   F3d,                  // libgazebo_ros_f3d.so
   FtSensor,             // libgazebo_ros_ft_sensor.so
+  JointPoseTrajectory,  // libgazebo_ros_joint_pose_trajectory.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);

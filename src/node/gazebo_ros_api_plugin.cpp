@@ -144,6 +144,7 @@ void GazeboRosApiPlugin::advertiseServices()
                                                            &GazeboRosApiPlugin::setModelConfiguration);
   advertiseOnSimThread<gazebo_msgs::GetWorldProperties>("get_world_properties", &GazeboRosApiPlugin::getWorldProperties);
   advertiseOnSimThread<gazebo_msgs::GetModelProperties>("get_model_properties", &GazeboRosApiPlugin::getModelProperties);
+  advertiseOnSimThread<gazebo_msgs::GetJointProperties>("get_joint_properties", &GazeboRosApiPlugin::getJointProperties);
   advertiseOnSimThread<gazebo_msgs::GetPhysicsProperties>("get_physics_properties",
                                                           &GazeboRosApiPlugin::getPhysicsProperties);
   advertiseOnSimThread<gazebo_msgs::SetPhysicsProperties>("set_physics_properties",
@@ -474,6 +475,28 @@ bool GazeboRosApiPlugin::getModelProperties(gazebo_msgs::GetModelProperties::Req
   res.is_static = robot->description().is_static;
   res.success = true;
   res.status_message = "GetModelProperties: got properties";
+  return true;
+}
+
+// Upstream's: the first model with a joint of that (unscoped) name; its type always REVOLUTE and
+// no damping (both marked FIXME upstream), its position and rate.
+bool GazeboRosApiPlugin::getJointProperties(gazebo_msgs::GetJointProperties::Request& req,
+                                            gazebo_msgs::GetJointProperties::Response& res)
+{
+  for (Robot* robot : world_.robots())
+  {
+    double position = 0, velocity = 0, effort = 0;
+    if (!robot->jointState(req.joint_name, position, velocity, effort))
+      continue;
+    res.type = gazebo_msgs::GetJointProperties::Response::REVOLUTE;
+    res.position.assign(1, position);
+    res.rate.assign(1, velocity);
+    res.success = true;
+    res.status_message = "GetJointProperties: got properties";
+    return true;
+  }
+  res.success = false;
+  res.status_message = "GetJointProperties: joint not found";
   return true;
 }
 

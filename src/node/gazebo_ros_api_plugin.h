@@ -15,6 +15,7 @@
 #include <gazebo_msgs/ApplyJointEffort.h>
 #include <gazebo_msgs/BodyRequest.h>
 #include <gazebo_msgs/DeleteModel.h>
+#include <gazebo_msgs/GetJointProperties.h>
 #include <gazebo_msgs/GetLinkState.h>
 #include <gazebo_msgs/GetModelProperties.h>
 #include <gazebo_msgs/GetModelState.h>
@@ -73,6 +74,7 @@ private:
                              gazebo_msgs::SetModelConfiguration::Response& res);
   bool getWorldProperties(gazebo_msgs::GetWorldProperties::Request& req, gazebo_msgs::GetWorldProperties::Response& res);
   bool getModelProperties(gazebo_msgs::GetModelProperties::Request& req, gazebo_msgs::GetModelProperties::Response& res);
+  bool getJointProperties(gazebo_msgs::GetJointProperties::Request& req, gazebo_msgs::GetJointProperties::Response& res);
   bool getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Request& req,
                             gazebo_msgs::GetPhysicsProperties::Response& res);
   bool setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Request& req,

@@ -287,6 +287,7 @@ inline JointTrajectoryCommand fromMsg(const trajectory_msgs::JointTrajectory& m)
 {
   JointTrajectoryCommand t;
   t.stamp_ns = int64_t(m.header.stamp.toNSec());
+  t.frame_id = m.header.frame_id;
   t.joint_names = m.joint_names;
   for (const trajectory_msgs::JointTrajectoryPoint& p : m.points)
     t.points.push_back(fromMsg(p));

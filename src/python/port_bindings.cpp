@@ -175,11 +175,13 @@ py::dict gripperResultDict(const ActionResult<GripperCommandResult>& r)
 int64_t nsOfSeconds(double s) { return int64_t(std::llround(s * 1e9)); }
 
 // trajectory_msgs/JointTrajectory from {"joint_names": [...], "points": [{"positions": [...],
-// "velocities": [...], "accelerations": [...], "time_from_start": s}, ...], "stamp": s (0: now)}.
+// "velocities": [...], "accelerations": [...], "time_from_start": s}, ...], "stamp": s (0: now),
+// "frame_id": the header's (optional)}.
 JointTrajectoryCommand trajectoryOf(const py::dict& d)
 {
   JointTrajectoryCommand t;
   t.stamp_ns = nsOfSeconds(d.contains("stamp") ? d["stamp"].cast<double>() : 0.0);
+  t.frame_id = d.contains("frame_id") ? d["frame_id"].cast<std::string>() : "";
   t.joint_names = d["joint_names"].cast<std::vector<std::string>>();
   for (const py::handle& item : d["points"])
   {

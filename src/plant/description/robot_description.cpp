@@ -56,6 +56,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_force.so", PluginKind::Force},
       {"libgazebo_ros_f3d.so", PluginKind::F3d},
       {"libgazebo_ros_ft_sensor.so", PluginKind::FtSensor},
+      {"libgazebo_ros_joint_pose_trajectory.so", PluginKind::JointPoseTrajectory},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_tricycle_drive.so", PluginKind::TricycleDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
@@ -82,7 +83,8 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::ForceBasedMove:
     case PluginKind::Force:
     case PluginKind::F3d:
-    case PluginKind::FtSensor: return true;
+    case PluginKind::FtSensor:
+    case PluginKind::JointPoseTrajectory: return true;
     default: return false;
   }
 }

@@ -17,6 +17,7 @@ std::unique_ptr<ModelPlugin> makeGazeboRosForceBasedMove();
 std::unique_ptr<ModelPlugin> makeGazeboRosForce();
 std::unique_ptr<ModelPlugin> makeGazeboRosF3d();
 std::unique_ptr<ModelPlugin> makeGazeboRosFtSensor();
+std::unique_ptr<ModelPlugin> makeGazeboRosJointPoseTrajectory();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -35,6 +36,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::Force: return makeGazeboRosForce();
     case PluginKind::F3d: return makeGazeboRosF3d();
     case PluginKind::FtSensor: return makeGazeboRosFtSensor();
+    case PluginKind::JointPoseTrajectory: return makeGazeboRosJointPoseTrajectory();
     default: return nullptr;
   }
 }

@@ -116,6 +116,10 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) override;
   void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) override;
   void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const override;
+  bool setJointPosition(const std::string& joint, double position) override;
+  void setLinkWorldPose(const std::string& link, const urdf::Pose& pose) override;
+  void setPhysicsEnabled(bool enabled) override;
+  bool physicsEnabled() const override;
   bool watchJointWrench(const std::string& joint) override;
   void jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const override;
   uint32_t noiseSeed(const ModelPluginDescription& plugin) const override;
@@ -145,6 +149,7 @@ struct World::Internals
   int64_t time_ns = 0;
   uint64_t steps = 0;
   bool paused = false;
+  bool physics_enabled = true;  // World::SetPhysicsEnabled (gazebo_ros_joint_pose_trajectory)
 
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;

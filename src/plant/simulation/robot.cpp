@@ -253,6 +253,25 @@ void bodyMomenta(const RobotMultibody& m, std::vector<btVector3>& momentum, std:
 }
 }  // namespace
 
+bool Robot::Internals::setJointPosition(const std::string& joint, double position)
+{
+  if (!multibody.joint_index.count(joint) || !std::isfinite(position))
+    return false;
+  self->setJointPositions({{joint, position}});
+  return true;
+}
+
+void Robot::Internals::setLinkWorldPose(const std::string& link, const urdf::Pose& pose)
+{
+  if (!multibody.link_in_body.count(link) || multibody.bullet->hasFixedBase())
+    return;
+  self->setLinkState(link, pose, Twist());
+}
+
+void Robot::Internals::setPhysicsEnabled(bool enabled) { world->physics_enabled = enabled; }
+
+bool Robot::Internals::physicsEnabled() const { return world->physics_enabled; }
+
 bool Robot::Internals::watchJointWrench(const std::string& joint)
 {
   auto index = multibody.joint_index.find(joint);

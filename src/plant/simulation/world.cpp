@@ -330,13 +330,16 @@ void World::step(int n)
     for (auto& r : w.robots)
       if (!r->in_->disabled)
         r->in_->joint_layer.writeSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
-    for (auto& r : w.robots)
-      if (!r->in_->disabled && !r->in_->wrench_watches.empty())
-        r->in_->beginJointWrenches();
-    w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
-    for (auto& r : w.robots)
-      if (!r->in_->disabled && !r->in_->wrench_watches.empty())
-        r->in_->endJointWrenches();
+    if (w.physics_enabled)
+    {
+      for (auto& r : w.robots)
+        if (!r->in_->disabled && !r->in_->wrench_watches.empty())
+          r->in_->beginJointWrenches();
+      w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
+      for (auto& r : w.robots)
+        if (!r->in_->disabled && !r->in_->wrench_watches.empty())
+          r->in_->endJointWrenches();
+    }
     w.time_ns += w.step_ns;
     ++w.steps;
     for (auto& r : w.robots)
