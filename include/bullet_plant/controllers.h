@@ -67,6 +67,12 @@ struct TransformSample
   urdf::Pose pose;  // of child_frame_id in frame_id
 };
 
+// tf2_msgs/TFMessage as something that listens to /tf takes it: every transform of one message.
+struct TransformsCommand
+{
+  std::vector<TransformSample> transforms;
+};
+
 // A pose in the plane, the yaw about z (as the drives' odometry has it).
 inline urdf::Pose planarPose(double x, double y, double heading)
 {

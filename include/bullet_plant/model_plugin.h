@@ -96,6 +96,10 @@ public:
   virtual void jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const = 0;
   // The world's gravity (m/s^2, world frame).
   virtual urdf::Vector3 gravity() const = 0;
+  // The mass (kg) of `link`'s body (with what fixed joints merge into it, as Gazebo's lumped
+  // link) and the link's own URDF <inertia ixx> (kg m^2); 0 for an unknown link.
+  virtual double linkMass(const std::string& link) const = 0;
+  virtual double linkIxx(const std::string& link) const = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.
   virtual double stepSize() const = 0;
   // The world's parameter tree (params.h): where the node has copied the ROS parameters a plugin

@@ -59,6 +59,7 @@ enum class PluginKind
   F3d,                  // libgazebo_ros_f3d.so
   FtSensor,             // libgazebo_ros_ft_sensor.so
   JointPoseTrajectory,  // libgazebo_ros_joint_pose_trajectory.so
+  HandOfGod,            // libgazebo_ros_hand_of_god.so
   Unknown,       // any other file: warned about once, at spawn
 };
 PluginKind pluginKind(const std::string& filename);

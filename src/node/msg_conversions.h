@@ -217,6 +217,23 @@ inline nav_msgs::Odometry toMsg(const OdometrySample& s)
   return odom;
 }
 
+inline TransformsCommand fromMsg(const tf2_msgs::TFMessage& m)
+{
+  TransformsCommand out;
+  for (const geometry_msgs::TransformStamped& tf : m.transforms)
+  {
+    TransformSample s;
+    s.stamp_ns = int64_t(tf.header.stamp.toNSec());
+    s.frame_id = tf.header.frame_id;
+    s.child_frame_id = tf.child_frame_id;
+    s.pose.position = urdf::Vector3(tf.transform.translation.x, tf.transform.translation.y, tf.transform.translation.z);
+    s.pose.rotation = urdf::Rotation(tf.transform.rotation.x, tf.transform.rotation.y, tf.transform.rotation.z,
+                                     tf.transform.rotation.w);
+    out.transforms.push_back(s);
+  }
+  return out;
+}
+
 inline tf2_msgs::TFMessage toMsg(const TransformSample& s)
 {
   geometry_msgs::TransformStamped tf;

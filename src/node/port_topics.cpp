@@ -119,6 +119,9 @@ const PortTransport* transportOf(const Port& port)
                                                          urdf::Vector3(m.torque.x, m.torque.y, m.torque.z)};
                                   },
                                   [](const WrenchCommand&) { return "a non-finite wrench"; })},
+      {typeid(TransformsCommand), input<TransformsCommand, tf2_msgs::TFMessage>(
+                                      [](const tf2_msgs::TFMessage& m) { return fromMsg(m); },
+                                      [](const TransformsCommand&) { return "transforms (the plugin logs why)"; })},
       {typeid(TwistCommand), input<TwistCommand, geometry_msgs::Twist>(
                                  [](const geometry_msgs::Twist& m) { return TwistCommand{m.linear.x, m.angular.z, m.linear.y}; },
                                  [](const TwistCommand&) { return "a velocity command (the controller logs why)"; })},

@@ -239,6 +239,27 @@ bool deliverToPort(Port& port, py::object value)
     throw py::value_error("port '" + port.topic() + "' takes (linear_x, angular_z) or (linear_x, linear_y, angular_z); got " +
                           std::to_string(twist.size()) + " numbers");
   }
+  if (auto* in = dynamic_cast<InputPort<TransformsCommand>*>(&port))
+  {
+    // a tf2_msgs/TFMessage: [{"frame_id", "child_frame_id", "pose": (x, y, z, qx, qy, qz, qw), "stamp"}, ...]
+    TransformsCommand message;
+    for (const py::handle& item : value)
+    {
+      const py::dict d = item.cast<py::dict>();
+      const auto pose = d["pose"].cast<std::vector<double>>();
+      if (pose.size() != 7)
+        throw py::value_error("a transform's pose is (x, y, z, qx, qy, qz, qw); got " + std::to_string(pose.size()) +
+                              " numbers");
+      TransformSample s;
+      s.stamp_ns = nsOfSeconds(d.contains("stamp") ? d["stamp"].cast<double>() : 0.0);
+      s.frame_id = d["frame_id"].cast<std::string>();
+      s.child_frame_id = d["child_frame_id"].cast<std::string>();
+      s.pose.position = urdf::Vector3(pose[0], pose[1], pose[2]);
+      s.pose.rotation = urdf::Rotation(pose[3], pose[4], pose[5], pose[6]);
+      message.transforms.push_back(s);
+    }
+    return in->deliver(message);
+  }
   if (auto* in = dynamic_cast<InputPort<WrenchCommand>*>(&port))
   {
     const auto w = value.cast<std::vector<double>>();  // (fx, fy, fz, tx, ty, tz)

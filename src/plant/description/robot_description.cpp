@@ -57,6 +57,7 @@ const std::map<std::string, PluginKind>& pluginKinds()
       {"libgazebo_ros_f3d.so", PluginKind::F3d},
       {"libgazebo_ros_ft_sensor.so", PluginKind::FtSensor},
       {"libgazebo_ros_joint_pose_trajectory.so", PluginKind::JointPoseTrajectory},
+      {"libgazebo_ros_hand_of_god.so", PluginKind::HandOfGod},
       {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
       {"libgazebo_ros_tricycle_drive.so", PluginKind::TricycleDrive},
       {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
@@ -84,7 +85,8 @@ bool isModelPluginKind(PluginKind kind)
     case PluginKind::Force:
     case PluginKind::F3d:
     case PluginKind::FtSensor:
-    case PluginKind::JointPoseTrajectory: return true;
+    case PluginKind::JointPoseTrajectory:
+    case PluginKind::HandOfGod: return true;
     default: return false;
   }
 }

@@ -18,6 +18,7 @@ std::unique_ptr<ModelPlugin> makeGazeboRosForce();
 std::unique_ptr<ModelPlugin> makeGazeboRosF3d();
 std::unique_ptr<ModelPlugin> makeGazeboRosFtSensor();
 std::unique_ptr<ModelPlugin> makeGazeboRosJointPoseTrajectory();
+std::unique_ptr<ModelPlugin> makeGazeboRosHandOfGod();
 
 std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
 {
@@ -37,6 +38,7 @@ std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind)
     case PluginKind::F3d: return makeGazeboRosF3d();
     case PluginKind::FtSensor: return makeGazeboRosFtSensor();
     case PluginKind::JointPoseTrajectory: return makeGazeboRosJointPoseTrajectory();
+    case PluginKind::HandOfGod: return makeGazeboRosHandOfGod();
     default: return nullptr;
   }
 }

@@ -116,6 +116,8 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) override;
   void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) override;
   void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const override;
+  double linkMass(const std::string& link) const override;
+  double linkIxx(const std::string& link) const override;
   bool setJointPosition(const std::string& joint, double position) override;
   void setLinkWorldPose(const std::string& link, const urdf::Pose& pose) override;
   void setPhysicsEnabled(bool enabled) override;

@@ -253,6 +253,18 @@ void bodyMomenta(const RobotMultibody& m, std::vector<btVector3>& momentum, std:
 }
 }  // namespace
 
+double Robot::Internals::linkMass(const std::string& link) const
+{
+  auto it = multibody.link_in_body.find(link);
+  return it == multibody.link_in_body.end() ? 0.0 : multibody.bodies[size_t(it->second.first)].mass;
+}
+
+double Robot::Internals::linkIxx(const std::string& link) const
+{
+  urdf::LinkConstSharedPtr l = description.model->getLink(link);
+  return l && l->inertial ? l->inertial->ixx : 0.0;
+}
+
 bool Robot::Internals::setJointPosition(const std::string& joint, double position)
 {
   if (!multibody.joint_index.count(joint) || !std::isfinite(position))
