@@ -14,7 +14,7 @@ import yaml
 
 from plant_helpers import (DIFF_BOT, DIFF_DRIVE_CONTROLLERS, box_model, diff_bot_with_gazebo_ros_control, f3d_bot,
                            gripper, planar_bot, sdf_world, skid_bot)
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from tianracer_description.ros_harness import spawn_urdf, spawn_with_controllers, start_plant
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 pytestmark = pytest.mark.ros
@@ -71,13 +71,9 @@ def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states
 def test_diff_drive_controller_through_gazebo_ros_control_and_the_spawner(ros, tmp_path):
     (tmp_path / 'diff_bot.urdf').write_text(diff_bot_with_gazebo_ros_control())
     (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(DIFF_DRIVE_CONTROLLERS))
-    plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/diff_bot/robot_description', '--textfile', str(tmp_path / 'diff_bot.urdf')])
-    ros.run(['rosparam', 'load', str(tmp_path / 'controllers.yaml')])
-    spawn_urdf(ros, plant, '/diff_bot/robot_description', 'diff_bot')
-    spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/diff_bot', 'joint_state_controller',
-                         'mobile_base_controller'], 'spawner')
-    ros.wait_for_controllers(2, namespace='/diff_bot')
+    spawner = spawn_with_controllers(ros, start_plant(ros), str(tmp_path / 'diff_bot.urdf'),
+                                     str(tmp_path / 'controllers.yaml'), '/diff_bot', 'diff_bot',
+                                     ['joint_state_controller', 'mobile_base_controller'])
     seen = ros.python("""
         import json, rospy
         from geometry_msgs.msg import Twist

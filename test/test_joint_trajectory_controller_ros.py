@@ -7,7 +7,7 @@ import pytest
 import yaml
 
 from plant_helpers import arm, arm_controllers
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from tianracer_description.ros_harness import spawn_with_controllers, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -16,12 +16,8 @@ def start_arm(ros, tmp_path, kind='position_controllers', urdf=None):
     (tmp_path / 'arm.urdf').write_text(urdf or arm({'position_controllers': 'Position', 'effort_controllers': 'Effort'}[kind]))
     (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(arm_controllers(kind)))
     plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/arm/robot_description', '--textfile', str(tmp_path / 'arm.urdf')])
-    ros.run(['rosparam', 'load', str(tmp_path / 'controllers.yaml')])
-    spawn_urdf(ros, plant, '/arm/robot_description', 'arm')
-    ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/arm', 'joint_state_controller', 'arm_controller'],
-              'spawner')
-    ros.wait_for_controllers(2, namespace='/arm')
+    spawn_with_controllers(ros, plant, str(tmp_path / 'arm.urdf'), str(tmp_path / 'controllers.yaml'), '/arm', 'arm',
+                           ['joint_state_controller', 'arm_controller'])
     return plant
 
 

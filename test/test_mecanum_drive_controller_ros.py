@@ -7,7 +7,7 @@ import pytest
 import yaml
 
 from plant_helpers import MECANUM_CONTROLLERS, mecanum_bot
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from tianracer_description.ros_harness import spawn_with_controllers, start_plant
 from test_mecanum_drive_controller import WHEELS, inverse_kinematics
 
 pytestmark = pytest.mark.ros
@@ -16,13 +16,9 @@ pytestmark = pytest.mark.ros
 def test_mecanum_controller_through_the_spawner_with_the_body_moved_by_force_based_move(ros, tmp_path):
     (tmp_path / 'mecanum_bot.urdf').write_text(mecanum_bot())
     (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(MECANUM_CONTROLLERS))
-    plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/mecanum_bot/robot_description', '--textfile', str(tmp_path / 'mecanum_bot.urdf')])
-    ros.run(['rosparam', 'load', str(tmp_path / 'controllers.yaml')])
-    spawn_urdf(ros, plant, '/mecanum_bot/robot_description', 'mecanum_bot')
-    spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/mecanum_bot', 'joint_state_controller',
-                         'mecanum_controller'], 'spawner')
-    ros.wait_for_controllers(2, namespace='/mecanum_bot')
+    spawner = spawn_with_controllers(ros, start_plant(ros), str(tmp_path / 'mecanum_bot.urdf'),
+                                     str(tmp_path / 'controllers.yaml'), '/mecanum_bot', 'mecanum_bot',
+                                     ['joint_state_controller', 'mecanum_controller'])
     seen = ros.python("""
         import json, rospy, tf2_ros
         from gazebo_msgs.srv import GetModelState

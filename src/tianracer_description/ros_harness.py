@@ -167,6 +167,18 @@ def tianracer_plant(ros, urdf_path, world=None, paused=False):
     return plant
 
 
+def spawn_with_controllers(ros, plant, urdf_path, controllers_yaml, namespace, model, controllers):
+    """A robot driven through gazebo_ros_control, as a robot maker's launch file brings it up: its
+    URDF on <namespace>/robot_description, its controllers' YAML loaded, spawn_model, then
+    controller_manager's spawner in the namespace; returns the spawner once they all run."""
+    ros.run(['rosparam', 'set', namespace + '/robot_description', '--textfile', urdf_path])
+    ros.run(['rosparam', 'load', controllers_yaml])
+    spawn_urdf(ros, plant, namespace + '/robot_description', model)
+    spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=' + namespace, *controllers], 'spawner')
+    ros.wait_for_controllers(len(controllers), namespace=namespace)
+    return spawner
+
+
 def frames_in(ros, target, topics, timeout=30):
     """Through a tf2 buffer (tf2_ros, as rviz and navigation use it): one message of each topic, its
     header's frame id and that frame's origin in `target` at the message's stamp.
