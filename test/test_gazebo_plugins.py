@@ -451,7 +451,8 @@ def imu_bot(**params):
 
 def test_hector_imu_at_rest_feels_gravitys_reaction_and_turns_with_the_robot():
     world, robot = imu_bot(**NOISELESS_IMU)
-    assert robot.plugin_topics('imu') == {'subscribes': [], 'publishes': ['imu/data', 'imu/data/bias']}
+    assert robot.plugin_topics('imu') == {'subscribes': [], 'publishes': ['imu/data', 'imu/data/bias'],
+                                          'serves': ['imu/data/calibrate', 'imu/data/set_accel_bias', 'imu/data/set_rate_bias']}
     imu = robot.plugin_latest('imu', 'imu/data')
     assert imu['frame_id'] == 'base_link' and world.time - imu['stamp'] <= 0.021, 'updateRate 50'
     assert imu['linear_acceleration'] == pytest.approx([0, 0, 9.8], abs=1e-3)
@@ -485,6 +486,23 @@ def test_hector_imu_error_models_biases_and_covariances():
     world, robot = imu_bot(gaussianNoise=0.1)
     assert robot.plugin_latest('imu', 'imu/data')['angular_velocity_covariance'] == pytest.approx([0.01] * 3), \
         'the legacy <gaussianNoise> sets both noises'
+
+
+def test_hector_imu_services_set_the_biases_and_calibrate_draws_the_rate_drift_anew():
+    world, robot = imu_bot(accelGaussianNoise=None, rateGaussianNoise=None, yawGaussianNoise=None, accelDrift=None)
+    assert robot.plugin_call('imu', 'imu/data/set_accel_bias', (0.3, -0.1, 0.0))
+    assert robot.plugin_call('imu', 'imu/data/set_rate_bias', (0.0, 0.0, 0.02))
+    world.step(40)
+    imu, bias = robot.plugin_latest('imu', 'imu/data'), robot.plugin_latest('imu', 'imu/data/bias')
+    assert bias['linear_acceleration'] == pytest.approx([0.3, -0.1, 0.0], abs=1e-4) and imu['linear_acceleration'] == \
+        pytest.approx([0.3, -0.1, 9.8], abs=1e-3), 'set_accel_bias: the drift now (fading at its drift frequency)'
+    assert bias['angular_velocity'][2] == pytest.approx(0.02, abs=1e-3)
+    assert robot.plugin_call('imu', 'imu/data/calibrate')
+    world.step(40)
+    calibrated = robot.plugin_latest('imu', 'imu/data/bias')['angular_velocity'][2]
+    assert calibrated != pytest.approx(0.02, abs=1e-3) and abs(calibrated) < 0.03, 'a new drift drawn, N(0, 5 mrad/s)'
+    world, robot = imu_bot(serviceName='')
+    assert 'imu/data/calibrate' not in robot.plugin_topics('imu')['serves'], 'an empty serviceName: no calibrate'
 
 
 def test_hector_magnetometer_reads_the_reference_field_in_the_body_frame():

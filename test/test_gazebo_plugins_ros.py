@@ -132,6 +132,14 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         # the skid bot still drives (skid_steer_drive has no timeout): compare the fix with the odometry of its time
         odom_at_fix = min(skid_odoms, key=lambda odom: abs((odom.header.stamp - fix.header.stamp).to_sec()))
         imu = rospy.wait_for_message('/imu/data', Imu, 10)
+        # hector's IMU services: set_accel_bias shows on the bias topic, calibrate answers
+        from geometry_msgs.msg import Vector3
+        from hector_gazebo_plugins.srv import SetBias
+        from std_srvs.srv import Empty
+        rospy.ServiceProxy('/imu/data/set_accel_bias', SetBias)(Vector3(0.4, 0.0, 0.0))
+        rospy.ServiceProxy('/imu/data/calibrate', Empty)()
+        rospy.sleep(0.1)
+        accel_bias = rospy.wait_for_message('/imu/data/bias', Imu, 10).linear_acceleration.x
         tf = buffer.lookup_transform('odom', 'planar_base', rospy.Time(0), rospy.Duration(5))
         print(json.dumps({
             'skid': [skid_odom.header.frame_id, skid_odom.child_frame_id, skid_odom.twist.twist.linear.x,
@@ -141,7 +149,8 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
             'joints': list(joints.name), 'wheel_speeds': list(joints.velocity),
             'fix': [fix.header.frame_id, fix.latitude, fix.position_covariance_type, fix.position_covariance[0]],
             'x_at_fix': odom_at_fix.pose.pose.position.x,
-            'imu': [imu.header.frame_id, imu.linear_acceleration.z, imu.angular_velocity_covariance[0]]}))
+            'imu': [imu.header.frame_id, imu.linear_acceleration.z, imu.angular_velocity_covariance[0]],
+            'accel_bias': accel_bias}))
     """, timeout=90)
     frame, child, speed, x, yaw_covariance = seen['skid']
     assert (frame, child) == ('odom', 'base_footprint'), 'skid_steer_drive prefixes no frame'
@@ -155,6 +164,7 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         "hector's GPS in its own <robotNamespace> '/': /navsat/fix, drift^2 on the diagonal"
     assert seen['imu'][0] == 'base_link' and seen['imu'][1] == pytest.approx(9.8, abs=0.3), "hector's IMU on /imu/data"
     assert seen['imu'][2] == pytest.approx(0.005 ** 2)
+    assert seen['accel_bias'] == pytest.approx(0.4, abs=0.02), 'set through /imu/data/set_accel_bias'
     assert (latitude - 49.9) * 111_260 == pytest.approx(seen['x_at_fix'], abs=0.02), 'about 111.26 km a degree of latitude at 49.9'
 
 

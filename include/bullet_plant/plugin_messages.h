@@ -25,6 +25,17 @@ struct WrenchStampedSample
   urdf::Vector3 force, torque;
 };
 
+// std_srvs/Empty, as a request and as its (empty) answer.
+struct EmptyRequest
+{
+};
+
+// hector_gazebo_plugins/SetBias: a bias for one of the IMU's error models (m/s^2 or rad/s).
+struct SetBiasRequest
+{
+  urdf::Vector3 bias;
+};
+
 // sensor_msgs/NavSatFix with a diagonal covariance (COVARIANCE_TYPE_DIAGONAL_KNOWN).
 struct NavSatFixSample
 {

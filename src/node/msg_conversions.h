@@ -15,12 +15,14 @@
 #include <geometry_msgs/Twist.h>
 #include <geometry_msgs/Vector3Stamped.h>
 #include <geometry_msgs/WrenchStamped.h>
+#include <hector_gazebo_plugins/SetBias.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
 #include <sensor_msgs/NavSatFix.h>
 #include <std_msgs/Header.h>
+#include <std_srvs/Empty.h>
 #include <tf2_msgs/TFMessage.h>
 #include <trajectory_msgs/JointTrajectory.h>
 #include <urdf_model/pose.h>
@@ -174,6 +176,15 @@ inline sensor_msgs::JointState toMsg(const JointStateSample& s)
   msg.effort = s.effort;
   return msg;
 }
+
+inline EmptyRequest fromMsg(const std_srvs::Empty::Request&) { return EmptyRequest(); }
+inline void toMsg(const EmptyRequest&, std_srvs::Empty::Response&) {}
+
+inline SetBiasRequest fromMsg(const hector_gazebo_plugins::SetBias::Request& m)
+{
+  return SetBiasRequest{urdf::Vector3(m.bias.x, m.bias.y, m.bias.z)};
+}
+inline void toMsg(const EmptyRequest&, hector_gazebo_plugins::SetBias::Response&) {}
 
 inline QueryTrajectoryStateRequest fromMsg(const control_msgs::QueryTrajectoryState::Request& m)
 {

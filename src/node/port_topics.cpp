@@ -151,6 +151,8 @@ const PortTransport* transportOf(const Port& port)
       {typeid(ActionFeedback<GripperCommandResult>), carriedByAction()},
   };
   static const std::map<std::type_index, PortTransport> services = {
+      {typeid(EmptyRequest), service<EmptyRequest, EmptyRequest, std_srvs::Empty>()},
+      {typeid(SetBiasRequest), service<SetBiasRequest, EmptyRequest, hector_gazebo_plugins::SetBias>()},
       {typeid(QueryTrajectoryStateRequest),
        service<QueryTrajectoryStateRequest, QueryTrajectoryStateResponse, control_msgs::QueryTrajectoryState>()},
   };

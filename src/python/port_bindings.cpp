@@ -331,7 +331,10 @@ Port& portOf(ModelPlugin& plugin, const std::string& topic, Port::Direction dire
     if (p->direction() == direction)
       topics += (topics.empty() ? "" : ", ") + p->topic();
   throw py::key_error("model plugin '" + plugin.description().name + "' " +
-                      (direction == Port::Direction::In ? "subscribes to" : "publishes") + " no topic '" + topic +
+                      (direction == Port::Direction::In    ? "subscribes to"
+                       : direction == Port::Direction::Out ? "publishes"
+                                                           : "serves") +
+                      " no topic '" + topic +
                       "' (it has: " + topics + ")");
 }
 }  // namespace
@@ -348,16 +351,38 @@ void init_model_plugins(py::class_<RobotRef>& robot)
       .def("plugin_topics", onRobot([](Robot& r, const std::string& name) {
         py::dict d;
         std::vector<std::string> in, out;
+        std::vector<std::string> services;
         for (const std::unique_ptr<Port>& p : pluginOf(r, name).ports())
-          (p->direction() == Port::Direction::In ? in : out).push_back(p->topic());
+          (p->direction() == Port::Direction::In ? in : p->direction() == Port::Direction::Out ? out : services)
+              .push_back(p->topic());
         d["subscribes"] = in;
         d["publishes"] = out;
+        if (!services.empty())
+          d["serves"] = services;
         return d;
-      }), py::arg("name"), "the topics the plugin subscribes to and publishes (relative to its namespace)")
+      }), py::arg("name"), "the topics the plugin subscribes to and publishes, and the services it serves (relative "
+                           "to its namespace)")
       .def("plugin_send", onRobot([](Robot& r, const std::string& name, const std::string& topic, py::object value) {
         return deliverToPort(portOf(pluginOf(r, name), topic, Port::Direction::In), value);
       }), py::arg("name"), py::arg("topic"), py::arg("value"),
            "what a message on the plugin's topic does: a Twist as (linear.x, angular.z); False when refused")
+      .def("plugin_call", onRobot([](Robot& r, const std::string& name, const std::string& service, py::object request) {
+        Port& port = portOf(pluginOf(r, name), service, Port::Direction::Service);
+        EmptyRequest answer;
+        if (auto* empty = dynamic_cast<ServicePort<EmptyRequest, EmptyRequest>*>(&port))
+          return empty->call(EmptyRequest(), answer);
+        if (auto* bias = dynamic_cast<ServicePort<SetBiasRequest, EmptyRequest>*>(&port))
+        {
+          const auto b = request.cast<std::vector<double>>();
+          if (b.size() != 3)
+            throw py::value_error("service '" + service + "' takes a bias (x, y, z); got " + std::to_string(b.size()) +
+                                  " numbers");
+          return bias->call(SetBiasRequest{urdf::Vector3(b[0], b[1], b[2])}, answer);
+        }
+        throw py::type_error("service '" + service + "' takes a request Python cannot send; add it to port_bindings.cpp");
+      }), py::arg("name"), py::arg("service"), py::arg("request") = py::none(),
+           "what a call of the plugin's service does (std_srvs/Empty: no request; hector's SetBias: (x, y, z)); "
+           "True when it succeeded")
       .def("plugin_latest", onRobot([](Robot& r, const std::string& name, const std::string& topic) {
         return latestOfPort(portOf(pluginOf(r, name), topic, Port::Direction::Out));
       }), py::arg("name"), py::arg("topic"),

@@ -352,11 +352,12 @@ TEST_F(ControllerManagerTest, ListsTheTypesItOffers)
                                   std::string("effort_controllers/JointGroupPositionController"),
                                   std::string("ackermann_steering_controller/AckermannSteeringController"),
                                   std::string("diff_drive_controller/DiffDriveController"),
+                                  std::string("mecanum_drive_controller/MecanumDriveController"),
                                   std::string("position_controllers/JointTrajectoryController"),
                                   std::string("velocity_controllers/JointTrajectoryController"),
                                   std::string("effort_controllers/JointTrajectoryController"),
                                   std::string("position_controllers/GripperActionController"),
                                   std::string("effort_controllers/GripperActionController")})
     EXPECT_NE(std::find(types.begin(), types.end(), type), types.end()) << type;
-  EXPECT_EQ(types.size(), 17u);
+  EXPECT_EQ(types.size(), 18u);
 }

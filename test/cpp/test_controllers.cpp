@@ -55,7 +55,7 @@ protected:
 TEST(ControllerTypes, UnknownTypeMakesNothing)
 {
   EXPECT_EQ(createController("velocity_controllers/JointPositionController"), nullptr);
-  EXPECT_EQ(controllerTypes().size(), 17u);  // each one listed in ControllerManagerTest.ListsTheTypesItOffers
+  EXPECT_EQ(controllerTypes().size(), 18u);  // each one listed in ControllerManagerTest.ListsTheTypesItOffers
   for (const std::string& type : controllerTypes())
     EXPECT_NE(createController(type), nullptr) << type;
 }

@@ -54,6 +54,21 @@ public:
                                              yaw_model_.gaussianNoise().x * yaw_model_.gaussianNoise().x}};
     imu_port_ = &advertise<ImuSample>(topic);
     bias_port_ = &advertise<ImuSample>(d.text("biasTopicName", topic + "/bias"));
+    // Upstream's services: calibrate draws the rate model's drift anew, the two others set a bias.
+    const std::string calibrate = d.has("serviceName") ? d.text("serviceName", "") : topic + "/calibrate";
+    if (!calibrate.empty())
+      serve<EmptyRequest, EmptyRequest>(calibrate, [this](const EmptyRequest&, EmptyRequest&) {
+        rate_model_.reset(rng_);
+        return true;
+      });
+    serve<SetBiasRequest, EmptyRequest>(topic + "/set_accel_bias", [this](const SetBiasRequest& r, EmptyRequest&) {
+      accel_model_.setCurrentDrift(r.bias);
+      return true;
+    });
+    serve<SetBiasRequest, EmptyRequest>(topic + "/set_rate_bias", [this](const SetBiasRequest& r, EmptyRequest&) {
+      rate_model_.setCurrentDrift(r.bias);
+      return true;
+    });
     Reset(time_ns);
     return true;
   }
