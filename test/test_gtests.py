@@ -11,7 +11,9 @@ cases, GTEST_SKIP).
 The sources that cast rays run every case once per instruction set of Embree's kernels that this
 CPU runs (TIANRACER_EMBREE_ISA, see include/bullet_plant/ray_kernels.h): Embree runs only the widest
 by default, and its narrower kernels take a different path (an AVX-512 machine alone would never
-run the 8-wide AVX2 one many users have)."""
+run the 8-wide AVX2 one many users have). The sources that render with OpenGL run every case once
+per vector width of Mesa's llvmpipe (LP_NATIVE_VECTOR_WIDTH 128: SSE; 256: AVX2, the widest it
+has), for the same reason."""
 import glob
 import os
 import signal
@@ -26,11 +28,23 @@ PACKAGE = 'tianracer_description'
 SOURCES = sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), 'cpp', 'test_*.cpp')))
 CASE_TIMEOUT = 300  # s; a case that hangs fails instead of stalling the suite
 RAY_CASTING_SOURCES = {'test_ray_caster', 'test_world_meshes'}
+GL_SOURCES = {'test_gl_renderer'}
+LLVMPIPE_WIDTH = 'LP_NATIVE_VECTOR_WIDTH'
 
 
-def isa_prefix(isa):
-    """How a failing case's command line starts: with the ISA it ran on, to run it again."""
-    return '%s=%s ' % (ISA_VARIABLE, isa) if isa else ''
+def variants(stem):
+    """The (variable, value) pairs each case of a source runs under: the Embree ISAs, the llvmpipe
+    widths, or [None] (as it comes)."""
+    if stem in RAY_CASTING_SOURCES:
+        return [(ISA_VARIABLE, isa) for isa in embree_isas()]
+    if stem in GL_SOURCES:
+        return [(LLVMPIPE_WIDTH, width) for width in ('128', '256')]
+    return [None]
+
+
+def isa_prefix(variant):
+    """How a failing case's command line starts: with the variable it ran under, to run it again."""
+    return '%s=%s ' % variant if variant else ''
 
 
 def gtest_executable(source):
@@ -63,8 +77,8 @@ class Problem:
 
 
 def gtest_cases():
-    """(stem, isa, executable, case or Problem) for every case of every test/cpp source; isa is None
-    (Embree's own choice) but for RAY_CASTING_SOURCES, whose cases come once per ISA."""
+    """(stem, variant, executable, case or Problem) for every case of every test/cpp source; variant
+    is None but for RAY_CASTING_SOURCES and GL_SOURCES, whose cases come once per variant."""
     params = []
     for source in SOURCES:
         stem = os.path.splitext(os.path.basename(source))[0]
@@ -88,9 +102,9 @@ def gtest_cases():
                 '%s --gtest_list_tests exited %d and listed no test cases:\n%s%s' %
                 (executable, listing.returncode, listing.stdout, listing.stderr)), id=stem))
             continue
-        isas = embree_isas() if stem in RAY_CASTING_SOURCES else [None]
-        params += [pytest.param(stem, isa, executable, case, id='%s%s:%s' % (stem, '[%s]' % isa if isa else '', case))
-                   for isa in isas for case in cases]
+        params += [pytest.param(stem, variant, executable, case,
+                                id='%s%s:%s' % (stem, '[%s]' % variant[1] if variant else '', case))
+                   for variant in variants(stem) for case in cases]
     return params
 
 
@@ -110,9 +124,11 @@ def test_gtest_case(stem, isa, executable, case, tmp_path):
     report = tmp_path / 'gtest.xml'
     env = dict(os.environ)
     env.pop(ISA_VARIABLE, None)
+    env.pop(LLVMPIPE_WIDTH, None)
     if isa:
-        env[ISA_VARIABLE] = isa
-        ISAS_RUN.add(isa)
+        env[isa[0]] = isa[1]
+        if isa[0] == ISA_VARIABLE:
+            ISAS_RUN.add(isa[1])
     try:
         run = subprocess.run([executable, '--gtest_filter=' + case, '--gtest_output=xml:%s' % report],
                              capture_output=True, text=True, timeout=CASE_TIMEOUT, env=env)

@@ -27,6 +27,8 @@ APT_PACKAGES=(
   libconsole-bridge-dev libassimp-dev
   # the sensors: ray casting (Embree) and mesh textures (stb_image)
   libembree-dev libstb-dev
+  # the cameras' OpenGL: EGL without a display, OpenGL ES 3, Mesa's llvmpipe where there is no GPU
+  libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   pybind11-dev python3-dev
   # rviz: what gui:=true opens in place of gzclient
   rviz

@@ -1,0 +1,359 @@
+#include "rendering/gl_renderer.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include <GLES3/gl3.h>
+
+namespace bullet_plant
+{
+namespace
+{
+const char* const kVertexShader = R"(#version 300 es
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec4 colour;
+uniform mat4 clip_from_body;
+uniform mat4 world_from_body;
+out vec3 world_position;
+flat out vec3 world_normal;
+flat out vec4 face_colour;
+void main()
+{
+  world_position = (world_from_body * vec4(position, 1.0)).xyz;
+  world_normal = mat3(world_from_body) * normal;
+  face_colour = colour;
+  gl_Position = clip_from_body * vec4(position, 1.0);
+}
+)";
+
+// ray_caster's CameraShading: the face the camera sees lit by the directional light over the
+// ambient term; the depth along the optical axis into the second attachment.
+const char* const kFragmentShader = R"(#version 300 es
+precision highp float;
+in vec3 world_position;
+flat in vec3 world_normal;
+flat in vec4 face_colour;
+uniform vec3 camera_origin;
+uniform vec3 camera_forward;
+uniform vec3 towards_light;
+uniform float ambient;
+layout(location = 0) out vec4 colour;
+layout(location = 1) out float depth;
+void main()
+{
+  vec3 ray = world_position - camera_origin;
+  float length_n = length(world_normal);
+  float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
+  float diffuse = length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_light) / length_n) : 0.0;
+  float lit = ambient + (1.0 - ambient) * diffuse;
+  colour = vec4(face_colour.rgb * lit, face_colour.a);
+  depth = dot(ray, camera_forward);
+}
+)";
+
+unsigned compile(unsigned kind, const char* source)
+{
+  const unsigned shader = glCreateShader(kind);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok)
+  {
+    char log[2048] = {0};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    throw std::runtime_error(std::string("GL camera shader does not compile: ") + log);
+  }
+  return shader;
+}
+
+// Column-major 4 x 4, as GL takes it.
+struct Matrix4
+{
+  float m[16] = {0};
+  float& at(int row, int column) { return m[column * 4 + row]; }
+};
+
+Matrix4 fromFrame(const Frame& f)
+{
+  Matrix4 out;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+      out.at(r, c) = float(f.R[3 * r + c]);
+    out.at(r, 3) = float(f.t[r]);
+  }
+  out.at(3, 3) = 1;
+  return out;
+}
+
+// Body coordinates to clip coordinates, in double until the end: the optical frame (x right, y
+// down, z forward) of the camera at `pose`, then the pinhole's projection with pixel centres at
+// integer pixel coordinates (window coordinates have them at + 0.5) and rows from the top.
+Matrix4 clipFromBody(const Frame& pose, const Frame& world_from_body, const PinholeRays& rays)
+{
+  const Frame camera_from_body = [&] {
+    Frame inverse;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        inverse.R[3 * r + c] = pose.R[3 * c + r];
+    double t[3];
+    inverse.rotate(pose.t, t);
+    for (int r = 0; r < 3; ++r)
+      inverse.t[r] = -t[r];
+    return inverse * world_from_body;
+  }();
+  // optical x = -camera y, y = -camera z, z = camera x
+  double optical[3][4];
+  const int row_of[3] = {1, 2, 0};
+  const double sign_of[3] = {-1, -1, 1};
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+      optical[i][c] = sign_of[i] * camera_from_body.R[3 * row_of[i] + c];
+    optical[i][3] = sign_of[i] * camera_from_body.t[row_of[i]];
+  }
+  const double w = rays.width, h = rays.height, n = rays.near, f = rays.far;
+  double projection[4][3] = {{2 * rays.fx / w, 0, 2 * (rays.cx + 0.5) / w - 1},
+                             {0, -2 * rays.fy / h, 1 - 2 * (rays.cy + 0.5) / h},
+                             {0, 0, std::isfinite(f) ? (f + n) / (f - n) : 1.0},
+                             {0, 0, 1}};
+  const double z_offset = std::isfinite(f) ? -2 * f * n / (f - n) : -2 * n;
+  Matrix4 out;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+    {
+      double v = 0;
+      for (int k = 0; k < 3; ++k)
+        v += projection[r][k] * optical[k][c];
+      if (r == 2 && c == 3)
+        v += z_offset;
+      out.at(r, c) = float(v);
+    }
+  return out;
+}
+}  // namespace
+
+GlTriangles glTrianglesOf(const RayPrimitive& primitive)
+{
+  GlTriangles out;
+  auto vertex = [&](double x, double y, double z) {
+    const double in[3] = {x, y, z};
+    double at[3];
+    primitive.frame.apply(in, at);
+    out.xyz.insert(out.xyz.end(), {float(at[0]), float(at[1]), float(at[2])});
+  };
+  auto colour = [&](const Rgba& c) { out.colour.insert(out.colour.end(), {c.r, c.g, c.b, c.a}); };
+  if (primitive.kind == Shape::Kind::Box)
+  {
+    const double* h = primitive.half;
+    // each face as two triangles, its corners counter-clockwise seen from outside
+    static const int faces[6][4][3] = {{{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},
+                                       {{-1, 1, -1}, {-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}},
+                                       {{1, 1, -1}, {-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}},
+                                       {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}},
+                                       {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},
+                                       {{-1, 1, -1}, {1, 1, -1}, {1, -1, -1}, {-1, -1, -1}}};
+    static const int triangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    for (const auto& face : faces)
+      for (const auto& triangle : triangles)
+      {
+        for (int k : triangle)
+          vertex(face[k][0] * h[0], face[k][1] * h[1], face[k][2] * h[2]);
+        colour(primitive.colour);
+      }
+  }
+  else if (primitive.kind == Shape::Kind::Mesh && primitive.mesh)
+  {
+    const MeshData& mesh = *primitive.mesh;
+    for (int t = 0; t < mesh.triangleCount(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const float* v = &mesh.vertices[3 * size_t(mesh.indices[3 * size_t(t) + size_t(k)])];
+        vertex(v[0], v[1], v[2]);
+      }
+      const MeshData::SubMesh& sub = mesh.subMeshOf(t);
+      colour(sub.has_colour ? sub.diffuse : primitive.colour);
+    }
+  }
+  return out;
+}
+
+GlRenderer::GlRenderer(const GlContext& context) : context_(context)
+{
+  context_.makeCurrent();
+  const char* extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  if (!extensions || !std::strstr(extensions, "GL_EXT_color_buffer_float"))
+  {
+    context_.release();
+    throw std::runtime_error("the GL (" + context.renderer() +
+                             ") cannot render into float colour buffers (GL_EXT_color_buffer_float): no depth images");
+  }
+  const unsigned vertex = compile(GL_VERTEX_SHADER, kVertexShader), fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+  program_ = glCreateProgram();
+  glAttachShader(program_, vertex);
+  glAttachShader(program_, fragment);
+  glLinkProgram(program_);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint linked = 0;
+  glGetProgramiv(program_, GL_LINK_STATUS, &linked);
+  if (!linked)
+  {
+    char log[2048] = {0};
+    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
+    context_.release();
+    throw std::runtime_error(std::string("GL camera program does not link: ") + log);
+  }
+  glGenFramebuffers(1, &framebuffer_);
+  context_.release();
+}
+
+GlRenderer::~GlRenderer()
+{
+  context_.makeCurrent();
+  for (Mesh& m : meshes_)
+  {
+    glDeleteVertexArrays(1, &m.vertex_array);
+    glDeleteBuffers(1, &m.buffer);
+  }
+  glDeleteTextures(1, &colour_);
+  glDeleteTextures(1, &depth_);
+  glDeleteRenderbuffers(1, &depth_buffer_);
+  glDeleteFramebuffers(1, &framebuffer_);
+  glDeleteProgram(program_);
+  context_.release();
+}
+
+int GlRenderer::addMesh(const GlTriangles& triangles)
+{
+  context_.makeCurrent();
+  const size_t count = triangles.xyz.size() / 9;
+  // position, the triangle's normal, its colour: ten floats a vertex
+  std::vector<float> vertices;
+  vertices.reserve(count * 30);
+  for (size_t t = 0; t < count; ++t)
+  {
+    const float* p = &triangles.xyz[9 * t];
+    const float e1[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]}, e2[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+    const float normal[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    for (int v = 0; v < 3; ++v)
+    {
+      vertices.insert(vertices.end(), p + 3 * v, p + 3 * v + 3);
+      vertices.insert(vertices.end(), normal, normal + 3);
+      vertices.insert(vertices.end(), &triangles.colour[4 * t], &triangles.colour[4 * t] + 4);
+    }
+  }
+  Mesh mesh;
+  mesh.vertices = int(count * 3);
+  glGenVertexArrays(1, &mesh.vertex_array);
+  glGenBuffers(1, &mesh.buffer);
+  glBindVertexArray(mesh.vertex_array);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh.buffer);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  const GLsizei stride = 10 * sizeof(float);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(0));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+  glBindVertexArray(0);
+  meshes_.push_back(mesh);
+  context_.release();
+  return int(meshes_.size()) - 1;
+}
+
+void GlRenderer::resize(int width, int height)
+{
+  if (width == width_ && height == height_)
+    return;
+  width_ = width;
+  height_ = height;
+  glDeleteTextures(1, &colour_);
+  glDeleteTextures(1, &depth_);
+  glDeleteRenderbuffers(1, &depth_buffer_);
+  glGenTextures(1, &colour_);
+  glBindTexture(GL_TEXTURE_2D, colour_);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
+  glGenTextures(1, &depth_);
+  glBindTexture(GL_TEXTURE_2D, depth_);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, width, height);
+  glGenRenderbuffers(1, &depth_buffer_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_buffer_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, depth_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_buffer_);
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, buffers);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error("GL camera framebuffer of " + std::to_string(width) + " x " + std::to_string(height) +
+                             " is incomplete on " + context_.renderer());
+}
+
+void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const PinholeRays& rays,
+                        const Lighting& lighting, PinholeImage& out)
+{
+  context_.makeCurrent();
+  resize(rays.width, rays.height);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, rays.width, rays.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DITHER);
+  const float background[4] = {lighting.background[0], lighting.background[1], lighting.background[2], 1.0f};
+  const float no_depth[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, background);
+  glClearBufferfv(GL_COLOR, 1, no_depth);
+  const float farthest = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &farthest);
+  glUseProgram(program_);
+  const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
+  glUniform3f(glGetUniformLocation(program_, "camera_origin"), float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
+  glUniform3fv(glGetUniformLocation(program_, "camera_forward"), 1, forward);
+  glUniform3f(glGetUniformLocation(program_, "towards_light"), float(lighting.towards_light[0]),
+              float(lighting.towards_light[1]), float(lighting.towards_light[2]));
+  glUniform1f(glGetUniformLocation(program_, "ambient"), float(lighting.ambient));
+  const GLint clip_from_body = glGetUniformLocation(program_, "clip_from_body");
+  const GLint world_from_body = glGetUniformLocation(program_, "world_from_body");
+  for (const Draw& d : draws)
+  {
+    const Mesh& mesh = meshes_.at(size_t(d.mesh));
+    glUniformMatrix4fv(clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, rays).m);
+    glUniformMatrix4fv(world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
+    glBindVertexArray(mesh.vertex_array);
+    glDrawArrays(GL_TRIANGLES, 0, mesh.vertices);
+  }
+  glBindVertexArray(0);
+  // Read back, rows from the top as the image's.
+  const size_t w = size_t(rays.width), h = size_t(rays.height);
+  colour_pixels_.resize(w * h * 4);
+  depth_pixels_.resize(w * h * 4);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_UNSIGNED_BYTE, colour_pixels_.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_FLOAT, depth_pixels_.data());  // ES 3's float read
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  context_.release();
+  out.rgb8.resize(w * h * 3);
+  out.depth.resize(w * h);
+  for (size_t row = 0; row < h; ++row)
+  {
+    const size_t from = (h - 1 - row) * w;
+    for (size_t column = 0; column < w; ++column)
+    {
+      for (int c = 0; c < 3; ++c)
+        out.rgb8[3 * (row * w + column) + size_t(c)] = colour_pixels_[4 * (from + column) + size_t(c)];
+      out.depth[row * w + column] = depth_pixels_[4 * (from + column)];
+    }
+  }
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,73 @@
+// Pinhole frames by OpenGL ES 3 rasterization on a GlContext (gl_context.h), into an off-screen
+// framebuffer: the same camera model, light and outputs as RayScene::castPinhole (ray_caster.h), so
+// cameras can be rendered the way Gazebo renders them. Triangles are uploaded once per mesh and
+// drawn with a pose per frame. Shading is ray_caster's: flat (each triangle's own normal),
+// ambient + (1 - ambient) * max(0, n . towards_light) on the face the camera sees, times the colour;
+// depth is the distance along the optical axis, written by the fragment shader into a float
+// attachment (exact where a depth buffer is not), +inf where nothing is drawn within the clip range.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "physics/spatial.h"
+#include "rendering/gl_context.h"
+#include "rendering/ray_caster.h"
+
+namespace bullet_plant
+{
+// Triangles in their body's frame: three vertices each (x y z), each triangle with its colour
+// (r g b a, 0..1).
+struct GlTriangles
+{
+  std::vector<float> xyz;     // 9 per triangle
+  std::vector<float> colour;  // 4 per triangle
+};
+
+// A box's or a mesh's triangles in the frame its primitive is placed in (the primitive's frame
+// applied), each in the colour cameras see on it: a mesh's sub-mesh diffuse colour where the file
+// gives one, else the primitive's (textures: not yet). Spheres, cylinders and planes give none yet.
+GlTriangles glTrianglesOf(const RayPrimitive& primitive);
+
+class GlRenderer
+{
+public:
+  // Compiles its program on `context` (made current here and whenever it draws); throws
+  // std::runtime_error with the GL's log if it cannot (no float colour attachments: a driver too old).
+  explicit GlRenderer(const GlContext& context);
+  ~GlRenderer();
+  GlRenderer(const GlRenderer&) = delete;
+  GlRenderer& operator=(const GlRenderer&) = delete;
+
+  // Uploads a mesh once; its handle for draws.
+  int addMesh(const GlTriangles& triangles);
+
+  struct Draw
+  {
+    int mesh;
+    Frame world_from_body;
+  };
+  // A camera at `pose` (x forward, y left, z up, as RayScene::castPinhole's), its pixels the
+  // rays' (PinholeRays: size, fx, fy, cx, cy for pixel centres at integer coordinates, near and
+  // far along the optical axis; noise is not applied here): rgb8 rounded, depth in metres.
+  void render(const std::vector<Draw>& draws, const Frame& pose, const PinholeRays& rays, const Lighting& lighting,
+              PinholeImage& out);
+
+private:
+  struct Mesh
+  {
+    unsigned vertex_array = 0, buffer = 0;
+    int vertices = 0;
+  };
+  void resize(int width, int height);
+
+  const GlContext& context_;
+  unsigned program_ = 0, framebuffer_ = 0, colour_ = 0, depth_ = 0, depth_buffer_ = 0;
+  int width_ = 0, height_ = 0;
+  std::vector<Mesh> meshes_;
+  std::vector<float> depth_pixels_;
+  std::vector<uint8_t> colour_pixels_;
+};
+
+}  // namespace bullet_plant

@@ -1,0 +1,170 @@
+// gl_context.cpp and gl_renderer.cpp (OpenGL ES 3 through EGL, no window): a context on Mesa's
+// llvmpipe when the CPU is asked for, TIANRACER_GL_DEVICE read as documented, and frames that look
+// as the ray-cast camera's (ray_caster.cpp) of the same boxes, light and pinhole: colours within
+// 3/255 and depths within 1 mm away from silhouette edges, and bit for bit the same on every run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "rendering/gl_context.h"
+#include "rendering/gl_renderer.h"
+#include "rendering/ray_caster.h"
+
+using namespace bullet_plant;
+
+namespace
+{
+std::unique_ptr<GlContext> llvmpipe()
+{
+  std::string why_not;
+  std::unique_ptr<GlContext> gl = GlContext::create(GlDevice::Cpu, why_not);
+  EXPECT_TRUE(gl) << why_not;
+  return gl;
+}
+
+RayPrimitive box(double sx, double sy, double sz, const urdf::Pose& pose, Rgba colour)
+{
+  Shape s;
+  s.kind = Shape::Kind::Box;
+  s.box_size = {{sx, sy, sz}};
+  RayPrimitive p = RayPrimitive::fromShape(s, pose, nullptr);
+  p.colour = colour;
+  return p;
+}
+
+// A floor, three coloured boxes (one turned) and a wall, seen from a camera looking down at them.
+std::vector<RayPrimitive> scene()
+{
+  return {box(10, 10, 0.1, poseFromXyzRpy(0, 0, -0.05, 0, 0, 0), Rgba{0.6f, 0.6f, 0.6f, 1}),
+          box(0.5, 0.5, 0.5, poseFromXyzRpy(1.0, 0.4, 0.25, 0, 0, 0.3), Rgba{0.9f, 0.2f, 0.1f, 1}),
+          box(0.3, 1.0, 0.8, poseFromXyzRpy(2.0, -0.6, 0.4, 0, 0, -0.2), Rgba{0.1f, 0.7f, 0.2f, 1}),
+          box(0.2, 0.2, 1.5, poseFromXyzRpy(3.0, 0.8, 0.75, 0.1, 0.2, 0.0), Rgba{0.2f, 0.3f, 0.9f, 1}),
+          box(0.1, 8.0, 2.0, poseFromXyzRpy(5.0, 0.0, 1.0, 0, 0, 0), Rgba{0.8f, 0.8f, 0.5f, 1})};
+}
+
+PinholeRays pinhole()
+{
+  PinholeRays rays;
+  rays.width = 160;
+  rays.height = 120;
+  rays.fx = rays.fy = 120.0;
+  rays.cx = (rays.width - 1) / 2.0;
+  rays.cy = (rays.height - 1) / 2.0;
+  rays.near = 0.05;
+  rays.far = 30.0;
+  return rays;
+}
+
+const Frame kCamera = Frame::fromPose(poseFromXyzRpy(-1.5, 0.2, 1.2, 0, 0.35, 0.05));
+}  // namespace
+
+TEST(GlContext, MesasSoftwareRendererWhenTheCpuIsAskedFor)
+{
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  EXPECT_TRUE(gl->software());
+  EXPECT_NE(gl->renderer().find("llvmpipe"), std::string::npos) << gl->renderer();
+  EXPECT_NE(gl->version().find("OpenGL ES 3"), std::string::npos) << gl->version();
+  // test_gtests.py runs each case at each of llvmpipe's vector widths: it says which it runs
+  if (const char* width = std::getenv("LP_NATIVE_VECTOR_WIDTH"))
+    EXPECT_NE(gl->renderer().find(std::string(width) + " bits"), std::string::npos) << gl->renderer();
+}
+
+TEST(GlContext, TheEnvironmentChoosesTheDevice)
+{
+  std::string error;
+  setenv("TIANRACER_GL_DEVICE", "cpu", 1);
+  EXPECT_EQ(glDeviceFromEnvironment(error), GlDevice::Cpu);
+  setenv("TIANRACER_GL_DEVICE", "gpu", 1);
+  EXPECT_EQ(glDeviceFromEnvironment(error), GlDevice::Gpu);
+  EXPECT_TRUE(error.empty());
+  setenv("TIANRACER_GL_DEVICE", "voodoo", 1);
+  EXPECT_EQ(glDeviceFromEnvironment(error), GlDevice::Any);
+  EXPECT_NE(error.find("TIANRACER_GL_DEVICE is 'voodoo'"), std::string::npos) << error;
+  unsetenv("TIANRACER_GL_DEVICE");
+  error.clear();
+  EXPECT_EQ(glDeviceFromEnvironment(error), GlDevice::Any);
+  EXPECT_TRUE(error.empty());
+}
+
+TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem)
+{
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  const std::vector<RayPrimitive> shapes = scene();
+  std::vector<GlRenderer::Draw> draws;
+  for (const RayPrimitive& p : shapes)
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+  const Lighting lighting;
+  PinholeImage rasterized, cast;
+  renderer.render(draws, kCamera, pinhole(), lighting, rasterized);
+  RayScene rays(shapes);
+  rays.commit(nullptr);
+  rays.castPinhole(kCamera, pinhole(), lighting, cast);
+
+  const int w = pinhole().width, h = pinhole().height;
+  // Away from silhouette edges: the pixel and its eight neighbours on one surface (depths within
+  // 5 % of each other in the ray-cast frame, or all of them background).
+  auto interior = [&](int u, int v) {
+    const float d = cast.depth[size_t(v * w + u)];
+    for (int dv = -1; dv <= 1; ++dv)
+      for (int du = -1; du <= 1; ++du)
+      {
+        const int x = u + du, y = v + dv;
+        if (x < 0 || y < 0 || x >= w || y >= h)
+          return false;
+        const float n = cast.depth[size_t(y * w + x)];
+        if (std::isinf(d) != std::isinf(n) || (!std::isinf(d) && std::fabs(n - d) > 0.05f * d))
+          return false;
+      }
+    return true;
+  };
+  int compared = 0, close = 0, depths = 0;
+  double worst_depth = 0;
+  for (int v = 0; v < h; ++v)
+    for (int u = 0; u < w; ++u)
+    {
+      if (!interior(u, v))
+        continue;
+      ++compared;
+      const size_t k = size_t(v * w + u);
+      int worst = 0;
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(int(rasterized.rgb8[3 * k + size_t(c)]) - int(cast.rgb8[3 * k + size_t(c)])));
+      close += worst <= 3;
+      if (std::isfinite(cast.depth[k]))
+      {
+        ++depths;
+        worst_depth = std::max(worst_depth, double(std::fabs(rasterized.depth[k] - cast.depth[k])));
+      }
+      else
+        EXPECT_TRUE(std::isinf(rasterized.depth[k])) << u << ", " << v;
+    }
+  EXPECT_GT(compared, w * h * 8 / 10);
+  EXPECT_GT(depths, w * h / 2);
+  EXPECT_GE(double(close) / compared, 0.99) << close << " of " << compared << " within 3/255";
+  EXPECT_LT(worst_depth, 1e-3);
+  std::printf("GL (%s) against ray casting: %d of %d interior pixels within 3/255, worst depth %.2g m\n",
+              gl->renderer().c_str(), close, compared, worst_depth);
+}
+
+TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)
+{
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  std::vector<GlRenderer::Draw> draws;
+  for (const RayPrimitive& p : scene())
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+  PinholeImage first, second;
+  renderer.render(draws, kCamera, pinhole(), Lighting(), first);
+  renderer.render(draws, kCamera, pinhole(), Lighting(), second);
+  EXPECT_EQ(first.rgb8, second.rgb8);
+  EXPECT_EQ(0, std::memcmp(first.depth.data(), second.depth.data(), first.depth.size() * sizeof(float)));
+}
