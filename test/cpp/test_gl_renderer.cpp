@@ -1,6 +1,7 @@
 // gl_context.cpp and gl_renderer.cpp (OpenGL ES 3 through EGL, no window): a context on Mesa's
 // llvmpipe when the CPU is asked for, TIANRACER_GL_DEVICE read as documented, and frames that look
-// as the ray-cast camera's (ray_caster.cpp) of the same boxes, light and pinhole: colours within
+// as the ray-cast camera's (ray_caster.cpp) of the same boxes (or spheres, cylinders and a plane),
+// light and pinhole: colours within
 // 3/255 and depths within 1 mm away from silhouette edges, and bit for bit the same on every run.
 #include <gtest/gtest.h>
 
@@ -45,6 +46,32 @@ std::vector<RayPrimitive> scene()
           box(0.3, 1.0, 0.8, poseFromXyzRpy(2.0, -0.6, 0.4, 0, 0, -0.2), Rgba{0.1f, 0.7f, 0.2f, 1}),
           box(0.2, 0.2, 1.5, poseFromXyzRpy(3.0, 0.8, 0.75, 0.1, 0.2, 0.0), Rgba{0.2f, 0.3f, 0.9f, 1}),
           box(0.1, 8.0, 2.0, poseFromXyzRpy(5.0, 0.0, 1.0, 0, 0, 0), Rgba{0.8f, 0.8f, 0.5f, 1})};
+}
+
+RayPrimitive curved(Shape::Kind kind, double radius, double length, const urdf::Pose& pose, Rgba colour)
+{
+  Shape s;
+  s.kind = kind;
+  s.radius = radius;
+  s.length = length;
+  RayPrimitive p = RayPrimitive::fromShape(s, pose, nullptr);
+  p.colour = colour;
+  return p;
+}
+
+// A ground plane, spheres and cylinders (upright, lying, tilted) of several sizes.
+std::vector<RayPrimitive> curvedScene()
+{
+  Shape ground;
+  ground.kind = Shape::Kind::Plane;
+  RayPrimitive plane = RayPrimitive::fromShape(ground, urdf::Pose(), nullptr);
+  plane.colour = Rgba{0.5f, 0.55f, 0.5f, 1};
+  return {plane,
+          curved(Shape::Kind::Sphere, 0.4, 0, poseFromXyzRpy(1.5, 0.5, 0.4, 0, 0, 0), Rgba{0.9f, 0.3f, 0.2f, 1}),
+          curved(Shape::Kind::Sphere, 0.05, 0, poseFromXyzRpy(0.6, -0.2, 0.3, 0, 0, 0), Rgba{0.9f, 0.9f, 0.2f, 1}),
+          curved(Shape::Kind::Cylinder, 0.3, 1.2, poseFromXyzRpy(3.0, -0.8, 0.6, 0, 0, 0), Rgba{0.2f, 0.6f, 0.9f, 1}),
+          curved(Shape::Kind::Cylinder, 0.1, 0.6, poseFromXyzRpy(1.0, -0.6, 0.1, 1.5707963, 0, 0.4), Rgba{0.3f, 0.3f, 0.3f, 1}),
+          curved(Shape::Kind::Cylinder, 1.5, 0.4, poseFromXyzRpy(6.0, 1.0, 1.0, 0.3, 0.5, 0), Rgba{0.7f, 0.4f, 0.8f, 1})};
 }
 
 PinholeRays pinhole()
@@ -92,12 +119,15 @@ TEST(GlContext, TheEnvironmentChoosesTheDevice)
   EXPECT_TRUE(error.empty());
 }
 
-TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem)
+// Renders `shapes` both ways and compares away from silhouette edges: the pixel and its eight
+// neighbours on one surface (depths within 5 % of each other in the ray-cast frame, or all of them
+// background). The share of pixels within 3/255 and the worst depth difference where both see a
+// surface, printed.
+void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name)
 {
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
-  const std::vector<RayPrimitive> shapes = scene();
   std::vector<GlRenderer::Draw> draws;
   for (const RayPrimitive& p : shapes)
     draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
@@ -109,8 +139,6 @@ TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem)
   rays.castPinhole(kCamera, pinhole(), lighting, cast);
 
   const int w = pinhole().width, h = pinhole().height;
-  // Away from silhouette edges: the pixel and its eight neighbours on one surface (depths within
-  // 5 % of each other in the ray-cast frame, or all of them background).
   auto interior = [&](int u, int v) {
     const float d = cast.depth[size_t(v * w + u)];
     for (int dv = -1; dv <= 1; ++dv)
@@ -150,8 +178,15 @@ TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem)
   EXPECT_GT(depths, w * h / 2);
   EXPECT_GE(double(close) / compared, 0.99) << close << " of " << compared << " within 3/255";
   EXPECT_LT(worst_depth, 1e-3);
-  std::printf("GL (%s) against ray casting: %d of %d interior pixels within 3/255, worst depth %.2g m\n",
-              gl->renderer().c_str(), close, compared, worst_depth);
+  std::printf("%s, GL (%s) against ray casting: %d of %d interior pixels within 3/255, worst depth %.2g m\n",
+              scene_name, gl->renderer().c_str(), close, compared, worst_depth);
+}
+
+TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem) { expectTheRayCastFrame(scene(), "boxes"); }
+
+TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsTheRayCastCameraSeesThem)
+{
+  expectTheRayCastFrame(curvedScene(), "spheres, cylinders, a plane");
 }
 
 TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)

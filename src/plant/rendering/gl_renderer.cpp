@@ -1,5 +1,7 @@
 #include "rendering/gl_renderer.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -18,7 +20,7 @@ layout(location = 2) in vec4 colour;
 uniform mat4 clip_from_body;
 uniform mat4 world_from_body;
 out vec3 world_position;
-flat out vec3 world_normal;
+out vec3 world_normal;
 flat out vec4 face_colour;
 void main()
 {
@@ -34,7 +36,7 @@ void main()
 const char* const kFragmentShader = R"(#version 300 es
 precision highp float;
 in vec3 world_position;
-flat in vec3 world_normal;
+in vec3 world_normal;
 flat in vec4 face_colour;
 uniform vec3 camera_origin;
 uniform vec3 camera_forward;
@@ -166,6 +168,76 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
         colour(primitive.colour);
       }
   }
+  else if (primitive.kind == Shape::Kind::Plane)
+  {
+    std::vector<float> vertices;
+    std::vector<int> indices;
+    planeTriangles(primitive.normal, vertices, indices);
+    for (size_t i = 0; i < indices.size(); ++i)
+    {
+      const float* v = &vertices[3 * size_t(indices[i])];
+      vertex(v[0], v[1], v[2]);
+      if (i % 3 == 2)
+        colour(primitive.colour);
+    }
+  }
+  else if (primitive.kind == Shape::Kind::Sphere || primitive.kind == Shape::Kind::Cylinder)
+  {
+    const double r = primitive.radius;
+    // segments around: the chord's sagitta r (1 - cos(pi / n)) within the tolerance
+    const int n = std::min(1024, std::max(8, int(std::ceil(M_PI / std::acos(std::max(-1.0, 1.0 - kCurvedTolerance / r))))));
+    auto normal = [&](double x, double y, double z) {
+      const double in[3] = {x, y, z};
+      double n_world[3];
+      primitive.frame.rotate(in, n_world);
+      out.normal.insert(out.normal.end(), {float(n_world[0]), float(n_world[1]), float(n_world[2])});
+    };
+    // a vertex on the surface with its normal (unit, in the shape frame)
+    auto at = [&](double x, double y, double z, double nx, double ny, double nz) {
+      vertex(x, y, z);
+      normal(nx, ny, nz);
+    };
+    auto quad = [&](const std::array<double, 6>& a, const std::array<double, 6>& b, const std::array<double, 6>& c,
+                    const std::array<double, 6>& d) {
+      for (const auto* v : {&a, &b, &c, &a, &c, &d})
+        at((*v)[0], (*v)[1], (*v)[2], (*v)[3], (*v)[4], (*v)[5]);
+      colour(primitive.colour);
+      colour(primitive.colour);
+    };
+    if (primitive.kind == Shape::Kind::Sphere)
+    {
+      const int rings = std::max(4, n / 2);
+      auto point = [&](int ring, int segment) {
+        const double polar = M_PI * ring / rings, azimuth = 2 * M_PI * segment / n;
+        const double x = std::sin(polar) * std::cos(azimuth), y = std::sin(polar) * std::sin(azimuth), z = std::cos(polar);
+        return std::array<double, 6>{r * x, r * y, r * z, x, y, z};
+      };
+      for (int ring = 0; ring < rings; ++ring)
+        for (int segment = 0; segment < n; ++segment)
+          quad(point(ring, segment), point(ring + 1, segment), point(ring + 1, segment + 1), point(ring, segment + 1));
+    }
+    else
+    {
+      const double h = primitive.half_length;
+      auto side = [&](int segment, double z) {
+        const double a = 2 * M_PI * segment / n, x = std::cos(a), y = std::sin(a);
+        return std::array<double, 6>{r * x, r * y, z, x, y, 0};
+      };
+      for (int segment = 0; segment < n; ++segment)
+      {
+        quad(side(segment, -h), side(segment + 1, -h), side(segment + 1, h), side(segment, h));
+        for (const double z : {h, -h})  // the caps: fans about the axis
+        {
+          const double up = z > 0 ? 1 : -1;
+          const auto a = side(segment, z), b = side(segment + (z > 0 ? 1 : -1), z);
+          at(0, 0, z, 0, 0, up);
+          at(a[0], a[1], z, 0, 0, up);
+          at(b[0], b[1], z, 0, 0, up);
+          colour(primitive.colour);
+        }
+      }
+    }
+  }
   else if (primitive.kind == Shape::Kind::Mesh && primitive.mesh)
   {
     const MeshData& mesh = *primitive.mesh;
@@ -240,9 +312,10 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   {
     const float* p = &triangles.xyz[9 * t];
     const float e1[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]}, e2[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
-    const float normal[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const float face[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
     for (int v = 0; v < 3; ++v)
     {
+      const float* normal = triangles.normal.empty() ? face : &triangles.normal[9 * t + 3 * size_t(v)];
       vertices.insert(vertices.end(), p + 3 * v, p + 3 * v + 3);
       vertices.insert(vertices.end(), normal, normal + 3);
       vertices.insert(vertices.end(), &triangles.colour[4 * t], &triangles.colour[4 * t] + 4);

@@ -18,16 +18,20 @@
 namespace bullet_plant
 {
 // Triangles in their body's frame: three vertices each (x y z), each triangle with its colour
-// (r g b a, 0..1).
+// (r g b a, 0..1) and, for a curved surface, each vertex's normal.
 struct GlTriangles
 {
   std::vector<float> xyz;     // 9 per triangle
   std::vector<float> colour;  // 4 per triangle
+  std::vector<float> normal;  // 9 per triangle (the surface's at each vertex), or empty: each triangle's own
 };
 
-// A box's or a mesh's triangles in the frame its primitive is placed in (the primitive's frame
-// applied), each in the colour cameras see on it: a mesh's sub-mesh diffuse colour where the file
-// gives one, else the primitive's (textures: not yet). Spheres, cylinders and planes give none yet.
+// A primitive's triangles in the frame it is placed in (its frame applied), each in the colour
+// cameras see on it: a mesh's sub-mesh diffuse colour where the file gives one, else the
+// primitive's (textures: not yet). Boxes and meshes exactly; a plane as the ray caster's square;
+// spheres and cylinders tessellated finely enough that no facet lies more than kCurvedTolerance
+// from the surface, with the surface's normals at the vertices.
+constexpr double kCurvedTolerance = 2e-5;  // m: 1 mm in depth even where a ray grazes the surface
 GlTriangles glTrianglesOf(const RayPrimitive& primitive);
 
 class GlRenderer

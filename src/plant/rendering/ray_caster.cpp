@@ -168,33 +168,6 @@ void boxTriangles(const double half[3], std::vector<float>& vertices, std::vecto
   indices = {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
 }
 
-void planeTriangles(const double normal[3], std::vector<float>& vertices, std::vector<int>& indices)
-{
-  // two unit vectors across the plane
-  double a[3] = {1, 0, 0};
-  if (std::abs(normal[0]) > 0.9)
-    a[0] = 0, a[1] = 1;
-  double s[3], t[3];
-  cross(normal, a, s);
-  const double ls = norm(s);
-  for (double& x : s)
-    x /= ls;
-  cross(normal, s, t);
-  const int n = int(2 * kPlaneHalfSize / kPlaneTile);
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j)
-    {
-      const double x = -kPlaneHalfSize + i * kPlaneTile, y = -kPlaneHalfSize + j * kPlaneTile;
-      for (int k = 0; k < 3; ++k)
-        vertices.push_back(float(x * s[k] + y * t[k]));
-    }
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-    {
-      const int v = i * (n + 1) + j;
-      indices.insert(indices.end(), {v, v + n + 1, v + n + 2, v, v + n + 2, v + 1});
-    }
-}
 
 void curvedBounds(const RTCBoundsFunctionArguments* args)
 {
@@ -262,6 +235,34 @@ void frameToColumnMajor(const Frame& f, float out[12])
 }
 
 }  // namespace
+
+void planeTriangles(const double normal[3], std::vector<float>& vertices, std::vector<int>& indices)
+{
+  // two unit vectors across the plane
+  double a[3] = {1, 0, 0};
+  if (std::abs(normal[0]) > 0.9)
+    a[0] = 0, a[1] = 1;
+  double s[3], t[3];
+  cross(normal, a, s);
+  const double ls = norm(s);
+  for (double& x : s)
+    x /= ls;
+  cross(normal, s, t);
+  const int n = int(2 * kPlaneHalfSize / kPlaneTile);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+    {
+      const double x = -kPlaneHalfSize + i * kPlaneTile, y = -kPlaneHalfSize + j * kPlaneTile;
+      for (int k = 0; k < 3; ++k)
+        vertices.push_back(float(x * s[k] + y * t[k]));
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+    {
+      const int v = i * (n + 1) + j;
+      indices.insert(indices.end(), {v, v + n + 1, v + n + 2, v, v + n + 2, v + 1});
+    }
+}
 
 // ------------------------------------------------------------------------ analytic intersections
 

@@ -101,6 +101,10 @@ struct PinholeImage
 double intersectSphere(const double o[3], const double d[3], double radius);
 double intersectCylinder(const double o[3], const double d[3], double radius, double half_length);
 
+// A plane (through the origin, unit `normal`) as the sensors see it: a square of 2 km a side in
+// tiles of 100 m, triangles (x y z per vertex, three indices each), far beyond any sensor's range.
+void planeTriangles(const double normal[3], std::vector<float>& vertices, std::vector<int>& indices);
+
 // A lidar's ray directions in its frame: azimuth a_i = a0 + i*da for i < n_azimuth, elevations e_j
 // (up towards +z, Gazebo's convention), row by row (elevation major).
 std::vector<double> fanDirections(double a0, double da, int n_azimuth, const std::vector<double>& elevations);
