@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <random>
 #include <string>
 
 #include "rendering/gl_context.h"
@@ -123,7 +124,8 @@ TEST(GlContext, TheEnvironmentChoosesTheDevice)
 // neighbours on one surface (depths within 5 % of each other in the ray-cast frame, or all of them
 // background). The share of pixels within 3/255 and the worst depth difference where both see a
 // surface, printed.
-void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name)
+void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name,
+                           const PinholeRays& camera = pinhole())
 {
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
@@ -133,10 +135,10 @@ void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* 
     draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
   const Lighting lighting;
   PinholeImage rasterized, cast;
-  renderer.render(draws, kCamera, pinhole(), lighting, rasterized);
+  renderer.render(draws, kCamera, camera, lighting, rasterized);
   RayScene rays(shapes);
   rays.commit(nullptr);
-  rays.castPinhole(kCamera, pinhole(), lighting, cast);
+  rays.castPinhole(kCamera, camera, lighting, cast);
 
   const int w = pinhole().width, h = pinhole().height;
   auto interior = [&](int u, int v) {
@@ -187,6 +189,20 @@ TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem) { expectTheRayCastFrame(sc
 TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsTheRayCastCameraSeesThem)
 {
   expectTheRayCastFrame(curvedScene(), "spheres, cylinders, a plane");
+}
+
+TEST(GlRenderer, CameraNoiseIsTheRayCastersOwn)
+{
+  // the same noise samples picked by the same seed and pixel, added before the one rounding
+  std::vector<float> noise(PinholeRays::kNoiseTableSize);
+  std::mt19937 rng(7);
+  std::normal_distribution<float> gaussian(0.0f, 0.01f);
+  for (float& n : noise)
+    n = gaussian(rng);
+  PinholeRays camera = pinhole();
+  camera.noise = noise.data();
+  camera.noise_seed = 12345;
+  expectTheRayCastFrame(scene(), "boxes with noise", camera);
 }
 
 TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)

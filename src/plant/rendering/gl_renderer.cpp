@@ -32,7 +32,8 @@ void main()
 )";
 
 // ray_caster's CameraShading: the face the camera sees lit by the directional light over the
-// ambient term; the depth along the optical axis into the second attachment.
+// ambient term, unrounded (noise and rounding are the ray caster's, on the CPU), and the depth
+// along the optical axis in alpha: one float attachment, one read back.
 const char* const kFragmentShader = R"(#version 300 es
 precision highp float;
 in vec3 world_position;
@@ -42,8 +43,7 @@ uniform vec3 camera_origin;
 uniform vec3 camera_forward;
 uniform vec3 towards_light;
 uniform float ambient;
-layout(location = 0) out vec4 colour;
-layout(location = 1) out float depth;
+layout(location = 0) out vec4 colour_and_depth;
 void main()
 {
   vec3 ray = world_position - camera_origin;
@@ -51,8 +51,7 @@ void main()
   float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
   float diffuse = length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_light) / length_n) : 0.0;
   float lit = ambient + (1.0 - ambient) * diffuse;
-  colour = vec4(face_colour.rgb * lit, face_colour.a);
-  depth = dot(ray, camera_forward);
+  colour_and_depth = vec4(face_colour.rgb * lit, dot(ray, camera_forward));
 }
 )";
 
@@ -294,7 +293,6 @@ GlRenderer::~GlRenderer()
     glDeleteBuffers(1, &m.buffer);
   }
   glDeleteTextures(1, &colour_);
-  glDeleteTextures(1, &depth_);
   glDeleteRenderbuffers(1, &depth_buffer_);
   glDeleteFramebuffers(1, &framebuffer_);
   glDeleteProgram(program_);
@@ -348,23 +346,18 @@ void GlRenderer::resize(int width, int height)
   width_ = width;
   height_ = height;
   glDeleteTextures(1, &colour_);
-  glDeleteTextures(1, &depth_);
   glDeleteRenderbuffers(1, &depth_buffer_);
   glGenTextures(1, &colour_);
   glBindTexture(GL_TEXTURE_2D, colour_);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
-  glGenTextures(1, &depth_);
-  glBindTexture(GL_TEXTURE_2D, depth_);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, width, height);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, width, height);
   glGenRenderbuffers(1, &depth_buffer_);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_buffer_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, depth_, 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_buffer_);
-  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(2, buffers);
+  const GLenum buffers[1] = {GL_COLOR_ATTACHMENT0};
+  glDrawBuffers(1, buffers);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("GL camera framebuffer of " + std::to_string(width) + " x " + std::to_string(height) +
                              " is incomplete on " + context_.renderer());
@@ -381,10 +374,9 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DITHER);
-  const float background[4] = {lighting.background[0], lighting.background[1], lighting.background[2], 1.0f};
-  const float no_depth[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
+  const float background[4] = {lighting.background[0], lighting.background[1], lighting.background[2],
+                               std::numeric_limits<float>::infinity()};
   glClearBufferfv(GL_COLOR, 0, background);
-  glClearBufferfv(GL_COLOR, 1, no_depth);
   const float farthest = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farthest);
   glUseProgram(program_);
@@ -407,24 +399,21 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
   glBindVertexArray(0);
   // Read back, rows from the top as the image's.
   const size_t w = size_t(rays.width), h = size_t(rays.height);
-  colour_pixels_.resize(w * h * 4);
-  depth_pixels_.resize(w * h * 4);
+  pixels_.resize(w * h * 4);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_UNSIGNED_BYTE, colour_pixels_.data());
-  glReadBuffer(GL_COLOR_ATTACHMENT1);
-  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_FLOAT, depth_pixels_.data());  // ES 3's float read
+  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_FLOAT, pixels_.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   context_.release();
   out.rgb8.resize(w * h * 3);
   out.depth.resize(w * h);
-  for (size_t row = 0; row < h; ++row)
+  for (size_t row = 0; row < h; ++row)  // GL's rows from the bottom, the image's from the top
   {
-    const size_t from = (h - 1 - row) * w;
+    const float* from = &pixels_[4 * (h - 1 - row) * w];
     for (size_t column = 0; column < w; ++column)
     {
-      for (int c = 0; c < 3; ++c)
-        out.rgb8[3 * (row * w + column) + size_t(c)] = colour_pixels_[4 * (from + column) + size_t(c)];
-      out.depth[row * w + column] = depth_pixels_[4 * (from + column)];
+      const size_t pixel = row * w + column;
+      writePixelColour(rays, pixel, from + 4 * column, &out.rgb8[3 * pixel]);
+      out.depth[pixel] = from[4 * column + 3];
     }
   }
 }

@@ -54,7 +54,8 @@ public:
   };
   // A camera at `pose` (x forward, y left, z up, as RayScene::castPinhole's), its pixels the
   // rays' (PinholeRays: size, fx, fy, cx, cy for pixel centres at integer coordinates, near and
-  // far along the optical axis; noise is not applied here): rgb8 rounded, depth in metres.
+  // far along the optical axis, noise): rgb8 through writePixelColour as the ray caster's, depth
+  // in metres.
   void render(const std::vector<Draw>& draws, const Frame& pose, const PinholeRays& rays, const Lighting& lighting,
               PinholeImage& out);
 
@@ -67,11 +68,10 @@ private:
   void resize(int width, int height);
 
   const GlContext& context_;
-  unsigned program_ = 0, framebuffer_ = 0, colour_ = 0, depth_ = 0, depth_buffer_ = 0;
+  unsigned program_ = 0, framebuffer_ = 0, colour_ = 0, depth_buffer_ = 0;
   int width_ = 0, height_ = 0;
   std::vector<Mesh> meshes_;
-  std::vector<float> depth_pixels_;
-  std::vector<uint8_t> colour_pixels_;
+  std::vector<float> pixels_;  // read back: r g b (lit, unrounded) and depth per pixel
 };
 
 }  // namespace bullet_plant

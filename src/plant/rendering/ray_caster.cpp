@@ -881,7 +881,9 @@ struct PinholeAim
 };
 
 // A pixel's colour values, with the frame's noise, rounded to 0..255.
-void writeColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint8_t* rgb8)
+}  // namespace
+
+void writePixelColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint8_t* rgb8)
 {
   if (rays.noise)
   {
@@ -893,7 +895,6 @@ void writeColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint
     for (int k = 0; k < 3; ++k)
       rgb8[k] = toByte(rgb[k]);
 }
-}  // namespace
 
 RayScene::CameraShading::CameraShading(const RayScene& scene, const Lighting& lighting)
   : scene_(scene),
@@ -982,7 +983,7 @@ void RayScene::castPinhole(const Frame& pose, const PinholeRays& rays, const Lig
           continue;
         const size_t pixel = size_t(v) * size_t(w) + size_t(u);
         const float colour[3] = {rgb[0][lane], rgb[1][lane], rgb[2][lane]};
-        writeColour(rays, pixel, colour, &out.rgb8[3 * pixel]);
+        writePixelColour(rays, pixel, colour, &out.rgb8[3 * pixel]);
         out.depth[pixel] = packet.rh.ray.tfar[lane];
       }
     }

@@ -90,6 +90,10 @@ struct PinholeRays
   const float* noise = nullptr;
   uint64_t noise_seed = 0;
 };
+// A pixel's lit colour (0..1 per channel) into its three bytes: the rays' noise added (the sample
+// their seed and the pixel pick), clamped, rounded half up. The one rounding of every camera frame.
+void writePixelColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint8_t* rgb8);
+
 struct PinholeImage
 {
   std::vector<uint8_t> rgb8;  // lit colour per pixel (plus noise), rounded to 0..255, background where nothing is hit
