@@ -15,6 +15,7 @@
 
 #include "rendering/gl_context.h"
 #include "rendering/gl_renderer.h"
+#include "rendering/gl_scene.h"
 #include "rendering/ray_caster.h"
 
 using namespace bullet_plant;
@@ -120,27 +121,14 @@ TEST(GlContext, TheEnvironmentChoosesTheDevice)
   EXPECT_TRUE(error.empty());
 }
 
-// Renders `shapes` both ways and compares away from silhouette edges: the pixel and its eight
-// neighbours on one surface (depths within 5 % of each other in the ray-cast frame, or all of them
-// background). The share of pixels within 3/255 and the worst depth difference where both see a
-// surface, printed.
-void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name,
-                           const PinholeRays& camera = pinhole())
+// Compares a rasterized frame with the ray-cast one away from silhouette edges: the pixel and its
+// eight neighbours on one surface (depths within 5 % of each other in the ray-cast frame, or all of
+// them background). Expects 99 % of them within 3/255 and depths within 1 mm where both see a
+// surface, and a frame mostly of such pixels; prints the measures.
+void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, const PinholeRays& camera,
+                     const std::string& what)
 {
-  std::unique_ptr<GlContext> gl = llvmpipe();
-  ASSERT_TRUE(gl);
-  GlRenderer renderer(*gl);
-  std::vector<GlRenderer::Draw> draws;
-  for (const RayPrimitive& p : shapes)
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
-  const Lighting lighting;
-  PinholeImage rasterized, cast;
-  renderer.render(draws, kCamera, camera, lighting, rasterized);
-  RayScene rays(shapes);
-  rays.commit(nullptr);
-  rays.castPinhole(kCamera, camera, lighting, cast);
-
-  const int w = pinhole().width, h = pinhole().height;
+  const int w = camera.width, h = camera.height;
   auto interior = [&](int u, int v) {
     const float d = cast.depth[size_t(v * w + u)];
     for (int dv = -1; dv <= 1; ++dv)
@@ -174,14 +162,33 @@ void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* 
         worst_depth = std::max(worst_depth, double(std::fabs(rasterized.depth[k] - cast.depth[k])));
       }
       else
-        EXPECT_TRUE(std::isinf(rasterized.depth[k])) << u << ", " << v;
+        EXPECT_TRUE(std::isinf(rasterized.depth[k])) << what << ": " << u << ", " << v;
     }
-  EXPECT_GT(compared, w * h * 8 / 10);
-  EXPECT_GT(depths, w * h / 2);
-  EXPECT_GE(double(close) / compared, 0.99) << close << " of " << compared << " within 3/255";
-  EXPECT_LT(worst_depth, 1e-3);
-  std::printf("%s, GL (%s) against ray casting: %d of %d interior pixels within 3/255, worst depth %.2g m\n",
-              scene_name, gl->renderer().c_str(), close, compared, worst_depth);
+  EXPECT_GT(compared, w * h * 8 / 10) << what;
+  EXPECT_GT(depths, w * h / 2) << what;
+  EXPECT_GE(double(close) / compared, 0.99) << what << ": " << close << " of " << compared << " within 3/255";
+  EXPECT_LT(worst_depth, 1e-3) << what;
+  std::printf("%s against ray casting: %d of %d interior pixels within 3/255, worst depth %.2g m\n", what.c_str(),
+              close, compared, worst_depth);
+}
+
+// Renders `shapes` (the world's) both ways from kCamera.
+void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name,
+                           const PinholeRays& camera = pinhole())
+{
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  std::vector<GlRenderer::Draw> draws;
+  for (const RayPrimitive& p : shapes)
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+  const Lighting lighting;
+  PinholeImage rasterized, cast;
+  renderer.render(draws, kCamera, camera, lighting, rasterized);
+  RayScene rays(shapes);
+  rays.commit(nullptr);
+  rays.castPinhole(kCamera, camera, lighting, cast);
+  expectAgreement(rasterized, cast, camera, std::string(scene_name) + ", GL (" + gl->renderer() + ")");
 }
 
 TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem) { expectTheRayCastFrame(scene(), "boxes"); }
@@ -203,6 +210,51 @@ TEST(GlRenderer, CameraNoiseIsTheRayCastersOwn)
   camera.noise = noise.data();
   camera.noise_seed = 12345;
   expectTheRayCastFrame(scene(), "boxes with noise", camera);
+}
+
+// GlScene keeps RayScene's bodies: the world, a robot's body moved between frames, hidden from
+// one frame, removed; shapes only lidars see are not drawn.
+TEST(GlScene, BodiesAreWhereRaySceneHasThem)
+{
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  std::vector<RayPrimitive> world = curvedScene();
+  world.resize(2);  // the plane and a sphere
+  RayPrimitive lidar_only = box(0.5, 0.5, 3.0, poseFromXyzRpy(0.3, 0.0, 1.0, 0, 0, 0), Rgba{1, 0, 1, 1});
+  lidar_only.seen_by = kSeenByLidars;
+  world.push_back(lidar_only);
+  const int robot = 1;
+  const std::vector<RayPrimitive> body = {box(0.6, 0.4, 0.3, urdf::Pose(), Rgba{0.9f, 0.5f, 0.1f, 1}),
+                                          curved(Shape::Kind::Cylinder, 0.1, 0.1, poseFromXyzRpy(0.2, 0.25, 0, 1.5707963, 0, 0),
+                                                 Rgba{0.1f, 0.1f, 0.1f, 1})};
+  GlScene gl_scene(*gl, world);
+  RayScene ray_scene(world);
+  const int gl_body = gl_scene.addBody(&robot, body), ray_body = ray_scene.addBody(&robot, body);
+  const PinholeRays camera = pinhole();
+  const Lighting lighting;
+  PinholeImage rasterized, cast;
+  for (const Frame& pose : {Frame::fromPose(poseFromXyzRpy(1.0, -0.3, 0.2, 0, 0, 0.5)),
+                            Frame::fromPose(poseFromXyzRpy(2.5, 0.6, 0.6, 0.2, 0.1, -0.8))})
+  {
+    gl_scene.setPose(gl_body, pose);
+    ray_scene.setPose(ray_body, pose);
+    ray_scene.commit(nullptr);
+    gl_scene.renderPinhole(kCamera, camera, lighting, rasterized);
+    ray_scene.castPinhole(kCamera, camera, lighting, cast);
+    expectAgreement(rasterized, cast, camera, "a moving body");
+  }
+  ray_scene.commit(&robot);
+  gl_scene.renderPinhole(kCamera, camera, lighting, rasterized, &robot);
+  ray_scene.castPinhole(kCamera, camera, lighting, cast);
+  expectAgreement(rasterized, cast, camera, "the body hidden");
+  gl_scene.removeOwner(&robot);
+  ray_scene.removeOwner(&robot);
+  ray_scene.commit(nullptr);
+  PinholeImage removed;
+  gl_scene.renderPinhole(kCamera, camera, lighting, removed);
+  ray_scene.castPinhole(kCamera, camera, lighting, cast);
+  expectAgreement(removed, cast, camera, "the body removed");
+  EXPECT_EQ(removed.rgb8, rasterized.rgb8) << "removed is as hidden";
 }
 
 TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)

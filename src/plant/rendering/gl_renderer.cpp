@@ -138,6 +138,25 @@ Matrix4 clipFromBody(const Frame& pose, const Frame& world_from_body, const Pinh
 }
 }  // namespace
 
+namespace
+{
+// Each triangle's own normal (unnormalised: the shader divides) at its three vertices.
+std::vector<float> flatNormals(const std::vector<float>& xyz)
+{
+  std::vector<float> normals;
+  normals.reserve(xyz.size());
+  for (size_t t = 0; t + 9 <= xyz.size(); t += 9)
+  {
+    const float* p = &xyz[t];
+    const float e1[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]}, e2[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+    const float face[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    for (int v = 0; v < 3; ++v)
+      normals.insert(normals.end(), face, face + 3);
+  }
+  return normals;
+}
+}  // namespace
+
 GlTriangles glTrianglesOf(const RayPrimitive& primitive)
 {
   GlTriangles out;
@@ -251,6 +270,8 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
       colour(sub.has_colour ? sub.diffuse : primitive.colour);
     }
   }
+  if (out.normal.empty())
+    out.normal = flatNormals(out.xyz);
   return out;
 }
 
@@ -306,14 +327,13 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   // position, the triangle's normal, its colour: ten floats a vertex
   std::vector<float> vertices;
   vertices.reserve(count * 30);
+  const std::vector<float> normals = triangles.normal.empty() ? flatNormals(triangles.xyz) : triangles.normal;
   for (size_t t = 0; t < count; ++t)
   {
     const float* p = &triangles.xyz[9 * t];
-    const float e1[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]}, e2[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
-    const float face[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
     for (int v = 0; v < 3; ++v)
     {
-      const float* normal = triangles.normal.empty() ? face : &triangles.normal[9 * t + 3 * size_t(v)];
+      const float* normal = &normals[9 * t + 3 * size_t(v)];
       vertices.insert(vertices.end(), p + 3 * v, p + 3 * v + 3);
       vertices.insert(vertices.end(), normal, normal + 3);
       vertices.insert(vertices.end(), &triangles.colour[4 * t], &triangles.colour[4 * t] + 4);

@@ -23,14 +23,14 @@ struct GlTriangles
 {
   std::vector<float> xyz;     // 9 per triangle
   std::vector<float> colour;  // 4 per triangle
-  std::vector<float> normal;  // 9 per triangle (the surface's at each vertex), or empty: each triangle's own
+  std::vector<float> normal;  // 9 per triangle: the surface's at each vertex (empty: each triangle's own)
 };
 
 // A primitive's triangles in the frame it is placed in (its frame applied), each in the colour
 // cameras see on it: a mesh's sub-mesh diffuse colour where the file gives one, else the
-// primitive's (textures: not yet). Boxes and meshes exactly; a plane as the ray caster's square;
-// spheres and cylinders tessellated finely enough that no facet lies more than kCurvedTolerance
-// from the surface, with the surface's normals at the vertices.
+// primitive's (textures: not yet). Boxes and meshes exactly, each triangle with its own normal; a
+// plane as the ray caster's square; spheres and cylinders tessellated finely enough that no facet
+// lies more than kCurvedTolerance from the surface, with the surface's normals at the vertices.
 constexpr double kCurvedTolerance = 2e-5;  // m: 1 mm in depth even where a ray grazes the surface
 GlTriangles glTrianglesOf(const RayPrimitive& primitive);
 

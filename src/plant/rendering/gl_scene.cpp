@@ -1,0 +1,52 @@
+#include "rendering/gl_scene.h"
+
+namespace bullet_plant
+{
+GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes)
+{
+  GlTriangles all;
+  for (const RayPrimitive& p : shapes)
+    if (p.seen_by & kSeenByCameras)
+    {
+      const GlTriangles t = glTrianglesOf(p);
+      all.xyz.insert(all.xyz.end(), t.xyz.begin(), t.xyz.end());
+      all.colour.insert(all.colour.end(), t.colour.begin(), t.colour.end());
+      all.normal.insert(all.normal.end(), t.normal.begin(), t.normal.end());
+    }
+  return all;
+}
+
+GlScene::GlScene(const GlContext& context, const std::vector<RayPrimitive>& world_shapes)
+  : context_(context), renderer_(context)
+{
+  const GlTriangles world = camerasView(world_shapes);
+  bodies_.push_back(Body{nullptr, world.xyz.empty() ? -1 : renderer_.addMesh(world), Frame()});
+}
+
+int GlScene::addBody(const void* owner, const std::vector<RayPrimitive>& shapes)
+{
+  const GlTriangles body = camerasView(shapes);
+  bodies_.push_back(Body{owner, body.xyz.empty() ? -1 : renderer_.addMesh(body), Frame()});
+  return int(bodies_.size()) - 1;
+}
+
+void GlScene::removeOwner(const void* owner)
+{
+  for (Body& b : bodies_)
+    if (b.owner == owner && owner)
+      b.mesh = -1;
+}
+
+void GlScene::setPose(int body, const Frame& world_from_body) { bodies_.at(size_t(body)).pose = world_from_body; }
+
+void GlScene::renderPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out,
+                            const void* hidden)
+{
+  draws_.clear();
+  for (const Body& b : bodies_)
+    if (b.mesh >= 0 && !(hidden && b.owner == hidden))
+      draws_.push_back(GlRenderer::Draw{b.mesh, b.pose});
+  renderer_.render(draws_, pose, rays, lighting, out);
+}
+
+}  // namespace bullet_plant

@@ -1,0 +1,45 @@
+// What cameras see of the world, for the GL renderer: RayScene's bodies and poses (ray_caster.h)
+// on the GPU (or llvmpipe). The world's static shapes form one mesh, each robot body another, each
+// uploaded once; a frame only sets the bodies' poses and draws. Only the shapes cameras see
+// (visuals: kSeenByCameras) are uploaded.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "rendering/gl_renderer.h"
+
+namespace bullet_plant
+{
+class GlScene
+{
+public:
+  GlScene(const GlContext& context, const std::vector<RayPrimitive>& world_shapes);
+
+  // A robot body's shapes in the body frame, uploaded once; its handle for setPose.
+  int addBody(const void* owner, const std::vector<RayPrimitive>& shapes);
+  // Takes every body of `owner` out of the frames from now on.
+  void removeOwner(const void* owner);
+  void setPose(int body, const Frame& world_from_body);
+
+  // As RayScene::castPinhole, with `hidden`'s bodies left out (null: none).
+  void renderPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out,
+                     const void* hidden = nullptr);
+  const GlContext& context() const { return context_; }
+
+private:
+  struct Body
+  {
+    const void* owner;
+    int mesh;  // -1: nothing cameras see, or removed
+    Frame pose;
+  };
+  static GlTriangles camerasView(const std::vector<RayPrimitive>& shapes);
+
+  const GlContext& context_;
+  GlRenderer renderer_;
+  std::vector<Body> bodies_;  // [0]: the world's static shapes
+  std::vector<GlRenderer::Draw> draws_;
+};
+
+}  // namespace bullet_plant
