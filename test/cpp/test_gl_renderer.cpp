@@ -3,12 +3,16 @@
 // as the ray-cast camera's (ray_caster.cpp) of the same boxes (or spheres, cylinders and a plane),
 // light and pinhole: colours within
 // 3/255 and depths within 1 mm away from silhouette edges, and bit for bit the same on every run.
+// GL_DUMP=/tmp/x writes each compared pair as /tmp/x_gl.png and /tmp/x_rays.png, to look at.
 #include <gtest/gtest.h>
+
+#include <stb/stb_image_write.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <random>
 #include <string>
@@ -129,6 +133,11 @@ void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, c
                      const std::string& what)
 {
   const int w = camera.width, h = camera.height;
+  if (const char* dump = std::getenv("GL_DUMP"))
+  {
+    stbi_write_png((std::string(dump) + "_gl.png").c_str(), w, h, 3, rasterized.rgb8.data(), 3 * w);
+    stbi_write_png((std::string(dump) + "_rays.png").c_str(), w, h, 3, cast.rgb8.data(), 3 * w);
+  }
   auto interior = [&](int u, int v) {
     const float d = cast.depth[size_t(v * w + u)];
     for (int dv = -1; dv <= 1; ++dv)
@@ -210,6 +219,36 @@ TEST(GlRenderer, CameraNoiseIsTheRayCastersOwn)
   camera.noise = noise.data();
   camera.noise_seed = 12345;
   expectTheRayCastFrame(scene(), "boxes with noise", camera);
+}
+
+// A wall textured with a repeating 8 x 8 image of 64 colours (texture coordinates 0 to 2 across
+// it), before the floor.
+std::vector<RayPrimitive> texturedScene(const std::string& dir)
+{
+  std::vector<uint8_t> rgb;
+  for (int r = 0; r < 8; ++r)
+    for (int c = 0; c < 8; ++c)
+      rgb.insert(rgb.end(), {uint8_t(30 * c + 10), uint8_t(30 * r + 10), uint8_t(200 - 20 * ((r + c) % 8))});
+  EXPECT_TRUE(stbi_write_png((dir + "/tiles.png").c_str(), 8, 8, 3, rgb.data(), 24));
+  std::ofstream(dir + "/wall.mtl") << "newmtl tiles\nKd 1 1 1\nmap_Kd tiles.png\n";
+  std::ofstream(dir + "/wall.obj") << "mtllib wall.mtl\n"
+                                      "v 0 -1.5 0\nv 0 1.5 0\nv 0 1.5 2\nv 0 -1.5 2\n"
+                                      "vt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n"
+                                      "usemtl tiles\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+  std::string reason;
+  std::shared_ptr<const MeshData> wall = loadMesh(dir + "/wall.obj", urdf::Vector3(1, 1, 1), reason);
+  EXPECT_TRUE(wall && wall->submeshes[0].image) << reason;
+  std::vector<RayPrimitive> shapes = scene();
+  shapes.resize(1);  // the floor
+  shapes.push_back(RayPrimitive::fromMesh(wall, poseFromXyzRpy(1.2, 0.2, 0, 0, 0, 0.2), nullptr));
+  return shapes;
+}
+
+TEST(GlRenderer, TexturesShowTheTexelsTheRayCasterShows)
+{
+  char dir[] = "/tmp/gl_textures_XXXXXX";
+  ASSERT_TRUE(mkdtemp(dir));
+  expectTheRayCastFrame(texturedScene(dir), "a textured wall");
 }
 
 // GlScene keeps RayScene's bodies: the world, a robot's body moved between frames, hidden from

@@ -17,13 +17,16 @@ const char* const kVertexShader = R"(#version 300 es
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec4 colour;
+layout(location = 3) in vec2 uv;
 uniform mat4 clip_from_body;
 uniform mat4 world_from_body;
 out vec3 world_position;
 out vec3 world_normal;
+out vec2 texture_uv;
 flat out vec4 face_colour;
 void main()
 {
+  texture_uv = uv;
   world_position = (world_from_body * vec4(position, 1.0)).xyz;
   world_normal = mat3(world_from_body) * normal;
   face_colour = colour;
@@ -38,7 +41,10 @@ const char* const kFragmentShader = R"(#version 300 es
 precision highp float;
 in vec3 world_position;
 in vec3 world_normal;
+in vec2 texture_uv;
 flat in vec4 face_colour;
+uniform sampler2D image;
+uniform bool textured;
 uniform vec3 camera_origin;
 uniform vec3 camera_forward;
 uniform vec3 towards_light;
@@ -51,7 +57,9 @@ void main()
   float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
   float diffuse = length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_light) / length_n) : 0.0;
   float lit = ambient + (1.0 - ambient) * diffuse;
-  colour_and_depth = vec4(face_colour.rgb * lit, dot(ray, camera_forward));
+  // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
+  vec3 base = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)).rgb : face_colour.rgb;
+  colour_and_depth = vec4(base * lit, dot(ray, camera_forward));
 }
 )";
 
@@ -259,6 +267,8 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
   else if (primitive.kind == Shape::Kind::Mesh && primitive.mesh)
   {
     const MeshData& mesh = *primitive.mesh;
+    const bool any_textured = !mesh.uvs.empty() && std::any_of(mesh.submeshes.begin(), mesh.submeshes.end(),
+                                                               [](const MeshData::SubMesh& s) { return bool(s.image); });
     for (int t = 0; t < mesh.triangleCount(); ++t)
     {
       for (int k = 0; k < 3; ++k)
@@ -268,6 +278,17 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
       }
       const MeshData::SubMesh& sub = mesh.subMeshOf(t);
       colour(sub.has_colour ? sub.diffuse : primitive.colour);
+      const bool textured = sub.image && !mesh.uvs.empty();
+      if (any_textured)
+      {
+        out.texture.push_back(textured ? sub.image : nullptr);
+        for (int k = 0; k < 3; ++k)
+        {
+          const int corner = mesh.indices[3 * size_t(t) + size_t(k)];
+          out.uv.insert(out.uv.end(), {textured ? mesh.uvs[2 * size_t(corner)] : 0.0f,
+                                       textured ? mesh.uvs[2 * size_t(corner) + 1] : 0.0f});
+        }
+      }
     }
   }
   if (out.normal.empty())
@@ -313,6 +334,8 @@ GlRenderer::~GlRenderer()
     glDeleteVertexArrays(1, &m.vertex_array);
     glDeleteBuffers(1, &m.buffer);
   }
+  for (auto& uploaded : textures_)
+    glDeleteTextures(1, &uploaded.second);
   glDeleteTextures(1, &colour_);
   glDeleteRenderbuffers(1, &depth_buffer_);
   glDeleteFramebuffers(1, &framebuffer_);
@@ -324,9 +347,9 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
 {
   context_.makeCurrent();
   const size_t count = triangles.xyz.size() / 9;
-  // position, the triangle's normal, its colour: ten floats a vertex
+  // position, normal, colour, texture coordinates: twelve floats a vertex
   std::vector<float> vertices;
-  vertices.reserve(count * 30);
+  vertices.reserve(count * 36);
   const std::vector<float> normals = triangles.normal.empty() ? flatNormals(triangles.xyz) : triangles.normal;
   for (size_t t = 0; t < count; ++t)
   {
@@ -337,26 +360,59 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
       vertices.insert(vertices.end(), p + 3 * v, p + 3 * v + 3);
       vertices.insert(vertices.end(), normal, normal + 3);
       vertices.insert(vertices.end(), &triangles.colour[4 * t], &triangles.colour[4 * t] + 4);
+      if (triangles.uv.empty())
+        vertices.insert(vertices.end(), {0.0f, 0.0f});
+      else
+        vertices.insert(vertices.end(), &triangles.uv[6 * t + 2 * size_t(v)], &triangles.uv[6 * t + 2 * size_t(v)] + 2);
     }
   }
   Mesh mesh;
-  mesh.vertices = int(count * 3);
+  for (size_t t = 0; t < count; ++t)
+  {
+    const unsigned texture = triangles.texture.empty() ? 0 : textureOf(triangles.texture[t]);
+    if (mesh.runs.empty() || mesh.runs.back().texture != texture)
+      mesh.runs.push_back(Run{int(3 * t), 0, texture});
+    mesh.runs.back().count += 3;
+  }
   glGenVertexArrays(1, &mesh.vertex_array);
   glGenBuffers(1, &mesh.buffer);
   glBindVertexArray(mesh.vertex_array);
   glBindBuffer(GL_ARRAY_BUFFER, mesh.buffer);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
-  const GLsizei stride = 10 * sizeof(float);
+  const GLsizei stride = 12 * sizeof(float);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(0));
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(10 * sizeof(float)));
   glBindVertexArray(0);
   meshes_.push_back(mesh);
   context_.release();
   return int(meshes_.size()) - 1;
+}
+
+// The ray caster's sampling: the nearest texel, repeating, no mipmaps.
+unsigned GlRenderer::textureOf(const std::shared_ptr<const Texture>& image)
+{
+  if (!image)
+    return 0;
+  for (const auto& uploaded : textures_)
+    if (uploaded.first == image)
+      return uploaded.second;
+  unsigned id = 0;
+  glGenTextures(1, &id);
+  glBindTexture(GL_TEXTURE_2D, id);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image->width, image->height, 0, GL_RGB, GL_UNSIGNED_BYTE, image->rgb.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  textures_.emplace_back(image, id);
+  return id;
 }
 
 void GlRenderer::resize(int width, int height)
@@ -408,13 +464,21 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
   glUniform1f(glGetUniformLocation(program_, "ambient"), float(lighting.ambient));
   const GLint clip_from_body = glGetUniformLocation(program_, "clip_from_body");
   const GLint world_from_body = glGetUniformLocation(program_, "world_from_body");
+  const GLint textured = glGetUniformLocation(program_, "textured");
+  glUniform1i(glGetUniformLocation(program_, "image"), 0);
+  glActiveTexture(GL_TEXTURE0);
   for (const Draw& d : draws)
   {
     const Mesh& mesh = meshes_.at(size_t(d.mesh));
     glUniformMatrix4fv(clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, rays).m);
     glUniformMatrix4fv(world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
     glBindVertexArray(mesh.vertex_array);
-    glDrawArrays(GL_TRIANGLES, 0, mesh.vertices);
+    for (const Run& run : mesh.runs)
+    {
+      glUniform1i(textured, run.texture != 0);
+      glBindTexture(GL_TEXTURE_2D, run.texture);
+      glDrawArrays(GL_TRIANGLES, run.first, run.count);
+    }
   }
   glBindVertexArray(0);
   // Read back, rows from the top as the image's.

@@ -8,7 +8,9 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "physics/spatial.h"
@@ -24,11 +26,15 @@ struct GlTriangles
   std::vector<float> xyz;     // 9 per triangle
   std::vector<float> colour;  // 4 per triangle
   std::vector<float> normal;  // 9 per triangle: the surface's at each vertex (empty: each triangle's own)
+  // A textured triangle's image (in place of its colour) and its texture coordinates (s, t) at each
+  // vertex; both empty when no triangle is textured.
+  std::vector<std::shared_ptr<const Texture>> texture;  // 1 per triangle, null: its colour
+  std::vector<float> uv;                                 // 6 per triangle
 };
 
-// A primitive's triangles in the frame it is placed in (its frame applied), each in the colour
-// cameras see on it: a mesh's sub-mesh diffuse colour where the file gives one, else the
-// primitive's (textures: not yet). Boxes and meshes exactly, each triangle with its own normal; a
+// A primitive's triangles in the frame it is placed in (its frame applied), each in what cameras
+// see on it (RayPrimitive::surfaceColour): a mesh's sub-mesh texture (the nearest texel, repeating,
+// as the ray caster samples it) or diffuse colour where the file gives one, else the primitive's. Boxes and meshes exactly, each triangle with its own normal; a
 // plane as the ray caster's square; spheres and cylinders tessellated finely enough that no facet
 // lies more than kCurvedTolerance from the surface, with the surface's normals at the vertices.
 constexpr double kCurvedTolerance = 2e-5;  // m: 1 mm in depth even where a ray grazes the surface
@@ -60,17 +66,24 @@ public:
               PinholeImage& out);
 
 private:
+  struct Run  // consecutive vertices drawn with one texture (0: none)
+  {
+    int first = 0, count = 0;
+    unsigned texture = 0;
+  };
   struct Mesh
   {
     unsigned vertex_array = 0, buffer = 0;
-    int vertices = 0;
+    std::vector<Run> runs;
   };
+  unsigned textureOf(const std::shared_ptr<const Texture>& image);
   void resize(int width, int height);
 
   const GlContext& context_;
   unsigned program_ = 0, framebuffer_ = 0, colour_ = 0, depth_buffer_ = 0;
   int width_ = 0, height_ = 0;
   std::vector<Mesh> meshes_;
+  std::vector<std::pair<std::shared_ptr<const Texture>, unsigned>> textures_;  // uploaded once each
   std::vector<float> pixels_;  // read back: r g b (lit, unrounded) and depth per pixel
 };
 

@@ -4,15 +4,35 @@ namespace bullet_plant
 {
 GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes)
 {
-  GlTriangles all;
+  std::vector<GlTriangles> each;
+  bool any_textured = false;
   for (const RayPrimitive& p : shapes)
     if (p.seen_by & kSeenByCameras)
     {
-      const GlTriangles t = glTrianglesOf(p);
-      all.xyz.insert(all.xyz.end(), t.xyz.begin(), t.xyz.end());
-      all.colour.insert(all.colour.end(), t.colour.begin(), t.colour.end());
-      all.normal.insert(all.normal.end(), t.normal.begin(), t.normal.end());
+      each.push_back(glTrianglesOf(p));
+      any_textured = any_textured || !each.back().texture.empty();
     }
+  GlTriangles all;
+  for (const GlTriangles& t : each)
+  {
+    if (any_textured)
+    {
+      const size_t n = t.colour.size() / 4;
+      if (t.texture.empty())
+      {
+        all.texture.insert(all.texture.end(), n, nullptr);
+        all.uv.insert(all.uv.end(), 6 * n, 0.0f);
+      }
+      else
+      {
+        all.texture.insert(all.texture.end(), t.texture.begin(), t.texture.end());
+        all.uv.insert(all.uv.end(), t.uv.begin(), t.uv.end());
+      }
+    }
+    all.xyz.insert(all.xyz.end(), t.xyz.begin(), t.xyz.end());
+    all.colour.insert(all.colour.end(), t.colour.begin(), t.colour.end());
+    all.normal.insert(all.normal.end(), t.normal.begin(), t.normal.end());
+  }
   return all;
 }
 
