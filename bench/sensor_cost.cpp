@@ -137,8 +137,12 @@ int main(int argc, char** argv)
     for (int threads : thread_counts)
     {
       setRayThreads(threads);
+      const RayScene& scene = w.rayScene(nullptr);
+      const auto cast = [&scene](const Frame& at, const PinholeRays& pinhole, const Lighting& light, PinholeImage& image) {
+        scene.castPinhole(at, pinhole, light, image);
+      };
       report(c.name, threads, rays, bestCost(frames, [&] {
-               detail::SensorRendering::render(*c.camera, w.rayScene(nullptr), pose, lighting, 0);
+               detail::SensorRendering::render(*c.camera, cast, pose, lighting, 0);
              }));
     }
   }

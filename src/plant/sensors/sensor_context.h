@@ -10,6 +10,7 @@
 
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/sensors.h"
+#include "rendering/gl_scene.h"
 #include "rendering/ray_caster.h"
 
 namespace bullet_plant
@@ -24,6 +25,9 @@ public:
   // The world's scene where everything is now; without the robot's own bodies for a lidar (a lidar
   // does not see its robot; cameras do, as Gazebo's).
   virtual const RayScene& rayScene(bool with_own_robot) = 0;
+  // What cameras render with: the world's GL scene where everything is now (the robot's own bodies
+  // included), or null where there is no OpenGL (cameras then cast rays through rayScene).
+  virtual GlScene* glScene() = 0;
   virtual Lighting lighting() const = 0;
   // The touching points of `link`'s collisions named in `collisions` (SDF names), grouped by the
   // pair of collisions, as ContactSensor reports them.

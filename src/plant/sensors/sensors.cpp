@@ -53,8 +53,20 @@ void ContactSensor::update(SensorContext& context, int64_t time_ns)
 
 void Camera::update(SensorContext& context, int64_t time_ns)
 {
-  detail::SensorRendering::render(*this, context.rayScene(true), sensorPose(context, description_),
-                                  context.lighting(), time_ns);
+  const Frame pose = sensorPose(context, description_);
+  if (GlScene* gl = context.glScene())
+    detail::SensorRendering::render(
+        *this, [gl](const Frame& at, const PinholeRays& rays, const Lighting& light, PinholeImage& image) {
+          gl->renderPinhole(at, rays, light, image);
+        }, pose, context.lighting(), time_ns);
+  else
+  {
+    const RayScene& scene = context.rayScene(true);
+    detail::SensorRendering::render(
+        *this, [&scene](const Frame& at, const PinholeRays& rays, const Lighting& light, PinholeImage& image) {
+          scene.castPinhole(at, rays, light, image);
+        }, pose, context.lighting(), time_ns);
+  }
 }
 
 Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
@@ -122,12 +134,11 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
   }
 }
 
-// Ray casting through every pixel centre of a pinhole camera (RayScene::castPinhole: lit colours
-// with noise, and depths, in parallel); the noise comes from a table of gaussian samples drawn once
-// from the camera's own generator and a per-frame seed from it, so frames are the same on every run
-// whatever the number of threads.
-void detail::SensorRendering::render(Camera& camera, const RayScene& scene, const Frame& pose, const Lighting& lighting,
-                                     int64_t time_ns)
+// A pinhole camera's frame by `draw` (GL rasterization or ray casting: lit colours with noise, and
+// depths); the noise comes from a table of gaussian samples drawn once from the camera's own
+// generator and a per-frame seed from it, so frames are the same on every run.
+void detail::SensorRendering::render(Camera& camera, const DrawPinhole& draw, const Frame& pose,
+                                     const Lighting& lighting, int64_t time_ns)
 {
   const SensorDescription& d = camera.description();
   CameraFrame& out = camera.frame_;
@@ -161,7 +172,7 @@ void detail::SensorRendering::render(Camera& camera, const RayScene& scene, cons
   PinholeImage image;  // the camera's buffers, kept from frame to frame
   image.rgb8.swap(out.rgb);
   image.depth.swap(camera.rendered_depth_);
-  scene.castPinhole(pose, rays, lighting, image);
+  draw(pose, rays, lighting, image);
   out.rgb.swap(image.rgb8);
 
   const size_t pixels = size_t(w) * h;

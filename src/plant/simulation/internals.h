@@ -76,6 +76,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   std::vector<LinkWrench> wrenches;
   std::vector<JointEffort> joint_efforts;
   std::vector<int> ray_bodies;            // each body's handle in the world's RayScene (-1: no shapes)
+  std::vector<int> gl_bodies;             // the same in its GlScene
   // Joints whose transmitted wrench is measured each step (ModelPluginContext::watchJointWrench):
   // the child's subtree, its momenta and added forces before the step, the wrench after it.
   struct JointWrenchWatch
@@ -104,6 +105,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const override;
   urdf::Vector3 gravity() const override;
   const RayScene& rayScene(bool with_own_robot) override;
+  GlScene* glScene() override;
   Lighting lighting() const override;
   std::vector<ContactState> contacts(const std::string& link, const std::vector<std::string>& collisions) const override;
   // What its model plugins reach (ModelPluginContext).
@@ -163,6 +165,11 @@ struct World::Internals
   std::vector<std::string> static_names;  // of static_objects, model::link::collision
   std::vector<RayPrimitive> static_ray_shapes;
   std::unique_ptr<RayScene> ray_scene;  // built when a sensor first needs it
+  // The cameras' OpenGL: tried when a camera first renders; null (said once, in the log) where
+  // there is none.
+  bool gl_tried = false;
+  std::unique_ptr<GlContext> gl_context;
+  std::unique_ptr<GlScene> gl_scene;
 
   std::vector<std::unique_ptr<Robot>> robots;
 
@@ -174,6 +181,8 @@ struct World::Internals
   // Everything sensors can see: the static scene and every robot's bodies where they are now
   // (a robot's bodies are built into it once). `hidden` as RayScene::commit.
   const RayScene& rayScene(const void* hidden);
+  // The same for cameras, or null without OpenGL.
+  GlScene* glScene();
   Lighting lighting() const;
 };
 

@@ -165,6 +165,8 @@ urdf::Vector3 Robot::Internals::gravity() const { return world->description.grav
 
 const RayScene& Robot::Internals::rayScene(bool with_own_robot) { return world->rayScene(with_own_robot ? nullptr : this); }
 
+GlScene* Robot::Internals::glScene() { return world->glScene(); }
+
 Lighting Robot::Internals::lighting() const { return world->lighting(); }
 
 std::vector<ContactState> Robot::Internals::contacts(const std::string& link, const std::vector<std::string>& collisions) const

@@ -285,6 +285,8 @@ bool World::remove(const std::string& name)
     {
       if (in_->ray_scene)
         in_->ray_scene->removeOwner((*it)->in_.get());
+      if (in_->gl_scene)
+        in_->gl_scene->removeOwner((*it)->in_.get());
       removeRobot(*(*it)->in_);
       in_->robots.erase(it);
       return true;
@@ -404,6 +406,51 @@ const RayScene& World::Internals::rayScene(const void* hidden)
   }
   ray_scene->commit(hidden);
   return *ray_scene;
+}
+
+GlScene* World::Internals::glScene()
+{
+  if (!gl_tried)
+  {
+    gl_tried = true;
+    std::string problem;
+    const GlDevice device = glDeviceFromEnvironment(problem);
+    if (!problem.empty())
+      log.warn("cameras: " + problem);
+    problem.clear();
+    gl_context = GlContext::create(device, problem);
+    if (gl_context)
+      try
+      {
+        gl_scene.reset(new GlScene(*gl_context, static_ray_shapes));
+        log.info("cameras: OpenGL ES on " + gl_context->renderer());
+      }
+      catch (const std::exception& e)
+      {
+        problem = e.what();
+        gl_context.reset();
+      }
+    if (!gl_scene)
+      log.warn("cameras: no OpenGL (" + problem + "); they cast rays instead");
+  }
+  if (!gl_scene)
+    return nullptr;
+  for (auto& robot : robots)
+  {
+    Robot::Internals& r = *robot->in_;
+    std::vector<Body>& bodies = r.multibody.bodies;
+    if (r.gl_bodies.size() != bodies.size())
+    {
+      r.gl_bodies.assign(bodies.size(), -1);
+      for (size_t b = 0; b < bodies.size(); ++b)
+        if (!bodies[b].ray_shapes.empty())
+          r.gl_bodies[b] = gl_scene->addBody(&r, bodies[b].ray_shapes);
+    }
+    for (size_t b = 0; b < bodies.size(); ++b)
+      if (r.gl_bodies[b] >= 0)
+        gl_scene->setPose(r.gl_bodies[b], Frame::fromPose(fromBullet(r.multibody.bodyWorldTransform(int(b)))));
+  }
+  return gl_scene.get();
 }
 
 Lighting World::Internals::lighting() const
