@@ -378,6 +378,32 @@ void World::resetWorld()
     r->in_->resetToSpawn();
 }
 
+namespace
+{
+// Every robot's bodies in a sensor scene (RayScene or GlScene): added the first time (their
+// handles kept in the robot's `handles`), then at their poses now.
+template <class Scene>
+void placeBodies(Scene& scene, const std::vector<std::unique_ptr<Robot>>& robots, std::vector<int> Robot::Internals::*handles)
+{
+  for (const auto& robot : robots)
+  {
+    Robot::Internals& r = internalsOf(*robot);
+    std::vector<int>& in_scene = r.*handles;
+    const std::vector<Body>& bodies = r.multibody.bodies;
+    if (in_scene.size() != bodies.size())
+    {
+      in_scene.assign(bodies.size(), -1);
+      for (size_t b = 0; b < bodies.size(); ++b)
+        if (!bodies[b].ray_shapes.empty())
+          in_scene[b] = scene.addBody(&r, bodies[b].ray_shapes);
+    }
+    for (size_t b = 0; b < bodies.size(); ++b)
+      if (in_scene[b] >= 0)
+        scene.setPose(in_scene[b], Frame::fromPose(fromBullet(r.multibody.bodyWorldTransform(int(b)))));
+  }
+}
+}  // namespace
+
 const RayScene& World::Internals::rayScene(const void* hidden)
 {
   if (!ray_scene)
@@ -389,21 +415,7 @@ const RayScene& World::Internals::rayScene(const void* hidden)
     else if (isa.forced)
       log.info(std::string("sensors: rays cast with Embree's ") + isa.name + " kernels (" + kEmbreeIsaVariable + ")");
   }
-  for (auto& robot : robots)
-  {
-    Robot::Internals& r = *robot->in_;
-    std::vector<Body>& bodies = r.multibody.bodies;
-    if (!ray_scene->hasOwner(&r))
-    {
-      r.ray_bodies.assign(bodies.size(), -1);
-      for (size_t b = 0; b < bodies.size(); ++b)
-        if (!bodies[b].ray_shapes.empty())
-          r.ray_bodies[b] = ray_scene->addBody(&r, bodies[b].ray_shapes);
-    }
-    for (size_t b = 0; b < bodies.size(); ++b)
-      if (r.ray_bodies[b] >= 0)
-        ray_scene->setPose(r.ray_bodies[b], Frame::fromPose(fromBullet(r.multibody.bodyWorldTransform(int(b)))));
-  }
+  placeBodies(*ray_scene, robots, &Robot::Internals::ray_bodies);
   ray_scene->commit(hidden);
   return *ray_scene;
 }
@@ -435,21 +447,7 @@ GlScene* World::Internals::glScene()
   }
   if (!gl_scene)
     return nullptr;
-  for (auto& robot : robots)
-  {
-    Robot::Internals& r = *robot->in_;
-    std::vector<Body>& bodies = r.multibody.bodies;
-    if (r.gl_bodies.size() != bodies.size())
-    {
-      r.gl_bodies.assign(bodies.size(), -1);
-      for (size_t b = 0; b < bodies.size(); ++b)
-        if (!bodies[b].ray_shapes.empty())
-          r.gl_bodies[b] = gl_scene->addBody(&r, bodies[b].ray_shapes);
-    }
-    for (size_t b = 0; b < bodies.size(); ++b)
-      if (r.gl_bodies[b] >= 0)
-        gl_scene->setPose(r.gl_bodies[b], Frame::fromPose(fromBullet(r.multibody.bodyWorldTransform(int(b)))));
-  }
+  placeBodies(*gl_scene, robots, &Robot::Internals::gl_bodies);
   return gl_scene.get();
 }
 
