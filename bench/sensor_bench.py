@@ -162,26 +162,37 @@ def write_mesh_track(directory):
 
 
 def rays_per_second(urdf_file, world, env=None, one_thread=False):
-    """(isa, {(sensor, threads): (rays per CPU second, rays per wall second)}) of one sensor_cost run."""
+    """(isa, {(sensor, threads): (rays per CPU second, rays per wall second)}) of one sensor_cost run;
+    the GL cameras' pixels per second under (sensor_gl, 0), and the GL renderer under 'gl'."""
     out = subprocess.run([binary(), urdf_file, world, str(FRAMES)] + (['--one-thread'] if one_thread else []),
                          capture_output=True, text=True, check=True, env=env).stdout.split('\n')
     isa = out[0].split()[1]
     rates = {}
     for line in out[1:]:
         words = line.split()
-        if len(words) == 4:
+        if words and words[0] == 'gl':
+            rates['gl'] = line.split(' ', 1)[1]
+        elif len(words) == 4:
             rates[(words[0], int(words[1]))] = (float(words[2]), float(words[3]))
     return isa, rates
 
 
 def print_rates(title, rates):
-    threads = max(t for _, t in rates)
+    threads = max(key[1] for key in rates if isinstance(key, tuple))
     print(title)
     print('  %-26s %16s %17s   (M rays per CPU second / per wall second)'
           % ('', 'Embree, 1 thread', 'Embree, %d threads' % threads))
     for sensor, label in SENSOR_LABELS:
         cells = ['%6.1f / %5.1f' % (rates[(sensor, t)][0] / 1e6, rates[(sensor, t)][1] / 1e6) for t in (1, threads)]
         print('  %-26s %16s %17s' % (label, cells[0], cells[1]))
+    if 'gl' in rates:  # what cameras render with: OpenGL
+        print('  the cameras with OpenGL (%s), M pixels per CPU second / per wall second, and a frame\'s cost:'
+              % rates['gl'])
+        for sensor, label, rate in (('camera_gl', 'colour 800 x 800', 30), ('depth_gl', 'depth 640 x 480', 20)):
+            cpu, wall = rates[(sensor, 0)]
+            pixels = 800 * 800 if sensor == 'camera_gl' else 640 * 480
+            print('  %-26s %6.1f / %5.1f   %5.2f ms CPU a frame: %.3f of a core at %d Hz'
+                  % (label, cpu / 1e6, wall / 1e6, 1e3 * pixels / cpu, rate * pixels / cpu, rate))
 
 
 def print_previous_ray_caster():

@@ -4,8 +4,10 @@
 // times each (SensorRendering on the Embree RayScene) with one thread and, unless --one-thread, with
 // all. Prints "isa NAME" (the ISA of Embree's kernels: TIANRACER_EMBREE_ISA or the widest the CPU
 // has), then one line per sensor and thread count: "SENSOR THREADS RAYS_PER_CPU_S RAYS_PER_WALL_S"
-// (of the cheapest frames). The cameras render without noise; with SENSOR_COST_NOISE set in the
-// environment the colour camera keeps its URDF's noise.
+// (of the cheapest frames). Then, where there is OpenGL, "gl RENDERER" and the two cameras rendered
+// with it (what cameras use): "camera_gl 0 PIXELS_PER_CPU_S PIXELS_PER_WALL_S" (0: the renderer's
+// own threads). The cameras render without noise; with SENSOR_COST_NOISE set in the environment the
+// colour camera keeps its URDF's noise.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -144,6 +146,21 @@ int main(int argc, char** argv)
       report(c.name, threads, rays, bestCost(frames, [&] {
                detail::SensorRendering::render(*c.camera, cast, pose, lighting, 0);
              }));
+    }
+  }
+
+  if (GlScene* gl = w.glScene())
+  {
+    std::printf("gl %s\n", gl->context().renderer().c_str());
+    const auto draw = [gl](const Frame& at, const PinholeRays& pinhole, const Lighting& light, PinholeImage& image) {
+      gl->renderPinhole(at, pinhole, light, image);
+    };
+    for (CameraCase c : {CameraCase{"camera_gl", &colour_camera}, CameraCase{"depth_gl", &depth_camera}})
+    {
+      const SensorDescription& d = c.camera->description();
+      const Frame pose = sensorPose(r, d);
+      report(c.name, 0, double(d.image_width) * d.image_height,
+             bestCost(frames, [&] { detail::SensorRendering::render(*c.camera, draw, pose, lighting, 0); }));
     }
   }
 
