@@ -35,8 +35,8 @@ void main()
 )";
 
 // ray_caster's CameraShading: the face the camera sees lit by the directional light over the
-// ambient term, unrounded (noise and rounding are the ray caster's, on the CPU), and the depth
-// along the optical axis in alpha: one float attachment, one read back.
+// ambient term, rounded to bytes by the GL (the noise is added on the CPU), and the depth along
+// the optical axis into a float attachment, read back only when wanted.
 const char* const kFragmentShader = R"(#version 300 es
 precision highp float;
 in vec3 world_position;
@@ -49,7 +49,8 @@ uniform vec3 camera_origin;
 uniform vec3 camera_forward;
 uniform vec3 towards_light;
 uniform float ambient;
-layout(location = 0) out vec4 colour_and_depth;
+layout(location = 0) out vec4 colour;
+layout(location = 1) out float depth;
 void main()
 {
   vec3 ray = world_position - camera_origin;
@@ -59,7 +60,8 @@ void main()
   float lit = ambient + (1.0 - ambient) * diffuse;
   // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
   vec3 base = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)).rgb : face_colour.rgb;
-  colour_and_depth = vec4(base * lit, dot(ray, camera_forward));
+  colour = vec4(base * lit, 1.0);
+  depth = dot(ray, camera_forward);
 }
 )";
 
@@ -336,7 +338,8 @@ GlRenderer::~GlRenderer()
   }
   for (auto& uploaded : textures_)
     glDeleteTextures(1, &uploaded.second);
-  glDeleteTextures(1, &colour_);
+  glDeleteRenderbuffers(1, &colour_);
+  glDeleteRenderbuffers(1, &depth_);
   glDeleteRenderbuffers(1, &depth_buffer_);
   glDeleteFramebuffers(1, &framebuffer_);
   glDeleteProgram(program_);
@@ -421,19 +424,24 @@ void GlRenderer::resize(int width, int height)
     return;
   width_ = width;
   height_ = height;
-  glDeleteTextures(1, &colour_);
+  glDeleteRenderbuffers(1, &colour_);
+  glDeleteRenderbuffers(1, &depth_);
   glDeleteRenderbuffers(1, &depth_buffer_);
-  glGenTextures(1, &colour_);
-  glBindTexture(GL_TEXTURE_2D, colour_);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, width, height);
+  glGenRenderbuffers(1, &colour_);
+  glBindRenderbuffer(GL_RENDERBUFFER, colour_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glGenRenderbuffers(1, &depth_);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_R32F, width, height);
   glGenRenderbuffers(1, &depth_buffer_);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_buffer_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, depth_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_buffer_);
-  const GLenum buffers[1] = {GL_COLOR_ATTACHMENT0};
-  glDrawBuffers(1, buffers);
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, buffers);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("GL camera framebuffer of " + std::to_string(width) + " x " + std::to_string(height) +
                              " is incomplete on " + context_.renderer());
@@ -450,9 +458,14 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glDisable(GL_DITHER);
-  const float background[4] = {lighting.background[0], lighting.background[1], lighting.background[2],
-                               std::numeric_limits<float>::infinity()};
+  const float background[4] = {lighting.background[0], lighting.background[1], lighting.background[2], 1.0f};
+  const float no_depth[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
+  // a colour camera's frame writes no depths
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GLenum(rays.depth ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
+  glDrawBuffers(2, buffers);
   glClearBufferfv(GL_COLOR, 0, background);
+  if (rays.depth)
+    glClearBufferfv(GL_COLOR, 1, no_depth);
   const float farthest = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farthest);
   glUseProgram(program_);
@@ -483,22 +496,38 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
   glBindVertexArray(0);
   // Read back, rows from the top as the image's.
   const size_t w = size_t(rays.width), h = size_t(rays.height);
-  pixels_.resize(w * h * 4);
+  colour_pixels_.resize(w * h * 4);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_FLOAT, pixels_.data());
+  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_UNSIGNED_BYTE, colour_pixels_.data());
+  size_t depth_stride = 4;  // ES 3 reads a float buffer as RGBA, or as the driver's own format
+  if (rays.depth)
+  {
+    glReadBuffer(GL_COLOR_ATTACHMENT1);
+    GLint format = 0, type = 0;
+    glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT, &format);
+    glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE, &type);
+    depth_stride = format == GL_RED && type == GL_FLOAT ? 1 : 4;
+    depth_pixels_.resize(w * h * depth_stride);
+    glReadPixels(0, 0, rays.width, rays.height, depth_stride == 1 ? GL_RED : GL_RGBA, GL_FLOAT, depth_pixels_.data());
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   context_.release();
   out.rgb8.resize(w * h * 3);
-  out.depth.resize(w * h);
+  out.depth.resize(rays.depth ? w * h : 0);
   for (size_t row = 0; row < h; ++row)  // GL's rows from the bottom, the image's from the top
   {
-    const float* from = &pixels_[4 * (h - 1 - row) * w];
+    const size_t from = (h - 1 - row) * w;
+    const uint8_t* colour = &colour_pixels_[4 * from];
+    uint8_t* rgb8 = &out.rgb8[3 * row * w];
     for (size_t column = 0; column < w; ++column)
-    {
-      const size_t pixel = row * w + column;
-      writePixelColour(rays, pixel, from + 4 * column, &out.rgb8[3 * pixel]);
-      out.depth[pixel] = from[4 * column + 3];
-    }
+      for (int c = 0; c < 3; ++c)
+        rgb8[3 * column + size_t(c)] = colour[4 * column + size_t(c)];
+    if (rays.noise)
+      for (size_t column = 0; column < w; ++column)
+        addPixelNoise(rays, row * w + column, rgb8 + 3 * column);
+    if (rays.depth)
+      for (size_t column = 0; column < w; ++column)
+        out.depth[row * w + column] = depth_pixels_[depth_stride * (from + column)];
   }
 }
 

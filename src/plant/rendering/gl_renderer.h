@@ -60,8 +60,8 @@ public:
   };
   // A camera at `pose` (x forward, y left, z up, as RayScene::castPinhole's), its pixels the
   // rays' (PinholeRays: size, fx, fy, cx, cy for pixel centres at integer coordinates, near and
-  // far along the optical axis, noise): rgb8 through writePixelColour as the ray caster's, depth
-  // in metres.
+  // far along the optical axis, noise): rgb8 rounded by the GL, the noise added as the ray
+  // caster's (addPixelNoise), depth in metres when rays.depth, else none.
   void render(const std::vector<Draw>& draws, const Frame& pose, const PinholeRays& rays, const Lighting& lighting,
               PinholeImage& out);
 
@@ -80,11 +80,12 @@ private:
   void resize(int width, int height);
 
   const GlContext& context_;
-  unsigned program_ = 0, framebuffer_ = 0, colour_ = 0, depth_buffer_ = 0;
+  unsigned program_ = 0, framebuffer_ = 0, colour_ = 0, depth_ = 0, depth_buffer_ = 0;
   int width_ = 0, height_ = 0;
   std::vector<Mesh> meshes_;
   std::vector<std::pair<std::shared_ptr<const Texture>, unsigned>> textures_;  // uploaded once each
-  std::vector<float> pixels_;  // read back: r g b (lit, unrounded) and depth per pixel
+  std::vector<uint8_t> colour_pixels_;  // read back: r g b a per pixel
+  std::vector<float> depth_pixels_;     // read back: depth per pixel (and three unused floats where read as RGBA)
 };
 
 }  // namespace bullet_plant

@@ -883,6 +883,13 @@ struct PinholeAim
 // A pixel's colour values, with the frame's noise, rounded to 0..255.
 }  // namespace
 
+void addPixelNoise(const PinholeRays& rays, size_t pixel, uint8_t* rgb8)
+{
+  constexpr float kScale = 1.0f / 255.0f;
+  const float rgb[3] = {rgb8[0] * kScale, rgb8[1] * kScale, rgb8[2] * kScale};
+  writePixelColour(rays, pixel, rgb, rgb8);
+}
+
 void writePixelColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint8_t* rgb8)
 {
   if (rays.noise)

@@ -89,10 +89,14 @@ struct PinholeRays
   static constexpr int kNoiseTableSize = 1 << 16;
   const float* noise = nullptr;
   uint64_t noise_seed = 0;
+  // Whether the frame's depths are wanted (a colour camera's are not): a renderer may skip them.
+  bool depth = true;
 };
 // A pixel's lit colour (0..1 per channel) into its three bytes: the rays' noise added (the sample
-// their seed and the pixel pick), clamped, rounded half up. The one rounding of every camera frame.
+// their seed and the pixel pick), clamped, rounded half up.
 void writePixelColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint8_t* rgb8);
+// The same noise added to a colour already rounded to bytes (the GL renderer's), rounded again.
+void addPixelNoise(const PinholeRays& rays, size_t pixel, uint8_t* rgb8);
 
 struct PinholeImage
 {

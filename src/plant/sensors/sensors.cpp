@@ -155,6 +155,7 @@ void detail::SensorRendering::render(Camera& camera, const DrawPinhole& draw, co
   rays.fy = out.fy;
   rays.cx = out.cx;
   rays.cy = out.cy;
+  rays.depth = depth;
   rays.near = d.clip_near > 0 ? d.clip_near : 0.0;
   rays.far = d.clip_far > 0 ? d.clip_far : 100.0;
   if (d.noise.gaussian && d.noise.stddev > 0)
