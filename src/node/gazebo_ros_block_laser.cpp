@@ -35,10 +35,7 @@ public:
     nh.getParam("tf_prefix", prefix);  // its own namespace only, no search
     cloud_.header.frame_id = pluginFrameId(d, prefix);
     gaussian_noise_ = d.pluginNumber("gaussianNoise", 0.0);
-    const std::string topic = pluginTopic(d);
-    if (!topic.empty())  // upstream advertises nothing for an empty <topicName>
-      cloud_pub_ = nh.advertise<sensor_msgs::PointCloud>(
-          requireValidRosName(topic, "sensor '" + sensor.name() + "' topicName"), 1);
+    cloud_pub_ = advertiseUnlessEmpty<sensor_msgs::PointCloud>(nh, sensor, pluginTopic(d), 1);
   }
 
   bool subscribed() const override { return cloud_pub_ && cloud_pub_.getNumSubscribers() > 0; }

@@ -40,10 +40,7 @@ public:
     cloud_.fields = fields();
     cloud_.point_step = kPointStep;
     cloud_.is_bigendian = false;
-    const std::string topic = pluginTopic(d);
-    if (!topic.empty())  // upstream advertises nothing for an empty <topicName>
-      cloud_pub_ = nh.advertise<sensor_msgs::PointCloud2>(
-          requireValidRosName(topic, "sensor '" + sensor.name() + "' topicName"), 10);
+    cloud_pub_ = advertiseUnlessEmpty<sensor_msgs::PointCloud2>(nh, sensor, pluginTopic(d), 10);
   }
 
   bool subscribed() const override { return cloud_pub_ && cloud_pub_.getNumSubscribers() > 0; }

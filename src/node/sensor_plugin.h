@@ -19,6 +19,7 @@
 
 #include "bullet_plant/gaussian_kernel.h"
 #include "bullet_plant/plugin_names.h"
+#include "ros_names.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
 
@@ -65,6 +66,16 @@ private:
   int64_t sim_time_ns_ = 0;
   double step_size_ = 0.001;
 };
+
+// The publisher of a plugin's point cloud topic, or none for an empty <topicName>: upstream
+// advertises nothing then (velodyne_simulator, gazebo_ros_block_laser).
+template <class Msg>
+ros::Publisher advertiseUnlessEmpty(ros::NodeHandle& nh, const Sensor& sensor, const std::string& topic, uint32_t queue)
+{
+  if (topic.empty())
+    return ros::Publisher();
+  return nh.advertise<Msg>(requireValidRosName(topic, "sensor '" + sensor.name() + "' topicName"), queue);
+}
 
 using SensorPluginFactory = std::function<std::unique_ptr<SensorPlugin>()>;
 

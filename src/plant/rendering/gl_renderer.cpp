@@ -65,19 +65,25 @@ void main()
 }
 )";
 
+// Throws with the GL's log when a shader did not compile or a program did not link.
+template <class GetStatus, class GetLog>
+void requireBuilt(unsigned object, unsigned status, GetStatus get_status, GetLog get_log, const char* what)
+{
+  GLint ok = 0;
+  get_status(object, status, &ok);
+  if (ok)
+    return;
+  char log[2048] = {0};
+  get_log(object, sizeof log, nullptr, log);
+  throw std::runtime_error(std::string("GL camera ") + what + ": " + log);
+}
+
 unsigned compile(unsigned kind, const char* source)
 {
   const unsigned shader = glCreateShader(kind);
   glShaderSource(shader, 1, &source, nullptr);
   glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok)
-  {
-    char log[2048] = {0};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    throw std::runtime_error(std::string("GL camera shader does not compile: ") + log);
-  }
+  requireBuilt(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, "shader does not compile");
   return shader;
 }
 
@@ -315,14 +321,14 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
   glLinkProgram(program_);
   glDeleteShader(vertex);
   glDeleteShader(fragment);
-  GLint linked = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &linked);
-  if (!linked)
+  try
   {
-    char log[2048] = {0};
-    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
+    requireBuilt(program_, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, "program does not link");
+  }
+  catch (const std::runtime_error&)
+  {
     context_.release();
-    throw std::runtime_error(std::string("GL camera program does not link: ") + log);
+    throw;
   }
   glGenFramebuffers(1, &framebuffer_);
   context_.release();
