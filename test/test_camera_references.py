@@ -3,8 +3,11 @@ written by tools/make_camera_references.py with the ray caster): the car's colou
 on the worlds this package ships, from the same poses, after the same 0.3 s. Away from silhouette
 edges (a pixel whose neighbours' reference depths lie within 5 % of its own) at least 99 % of the
 colour pixels within 3/255, and depths within 1 mm where both see a surface. The cameras' noise is
-the same rule both ways."""
+the same rule both ways. Each scene renders at both of llvmpipe's vector widths
+(LP_NATIVE_VECTOR_WIDTH 128: SSE, 256: AVX2), in a process of its own (llvmpipe reads it once)."""
+import json
 import os
+import subprocess
 import sys
 
 import matplotlib.image
@@ -13,7 +16,7 @@ import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'tools'))
-from make_camera_references import OUT, SCENES, frames  # noqa: E402
+from make_camera_references import OUT, SCENES  # noqa: E402
 
 
 def away_from_edges(depth):
@@ -32,13 +35,36 @@ def away_from_edges(depth):
     return keep
 
 
+RENDER = """
+import json, sys
+sys.path.insert(0, %r)
+from make_camera_references import frames
+rgb, depth, said = frames(%r, %r)
+print(json.dumps({'rgb': rgb.tolist(), 'depth': [[None if d != d else float(d) for d in row] for row in depth],
+                  'said': said}))
+"""
+
+
+def frames_at_width(world_file, pose, width):
+    """frames() in a process of its own with llvmpipe at `width` bits."""
+    env = dict(os.environ, LP_NATIVE_VECTOR_WIDTH=width)
+    env.pop('TIANRACER_GL_DEVICE', None)
+    run = subprocess.run([sys.executable, '-c', RENDER % (os.path.join(HERE, os.pardir, 'tools'), world_file, pose)],
+                         capture_output=True, text=True, env=env, timeout=120)
+    assert run.returncode == 0, run.stderr
+    out = json.loads(run.stdout.strip().splitlines()[-1])
+    depth = np.array([[np.nan if d is None else d for d in row] for row in out['depth']], dtype=np.float32)
+    return np.array(out['rgb']), depth, out['said']
+
+
+@pytest.mark.parametrize('width', ['128', '256'])
 @pytest.mark.parametrize('world,pose,name', SCENES, ids=[s[2] + '@' + s[0] for s in SCENES])
-def test_opengl_cameras_give_the_recorded_ray_cast_frames(world, pose, name):
+def test_opengl_cameras_give_the_recorded_ray_cast_frames(world, pose, name, width):
     stem = os.path.join(OUT, '%s_%s' % (os.path.splitext(world)[0], name))
     reference_rgb = np.round(matplotlib.image.imread(stem + '_camera.png')[..., :3] * 255).astype(int)
     reference_depth = np.load(stem + '_depth_camera_depth.npy')
-    rgb, depth, said = frames(os.path.join(HERE, os.pardir, 'worlds', world), pose)
-    assert said and said[0].startswith('cameras: OpenGL ES on'), said
+    rgb, depth, said = frames_at_width(os.path.join(HERE, os.pardir, 'worlds', world), pose, width)
+    assert said and said[0].startswith('cameras: OpenGL ES on llvmpipe') and '%s bits' % width in said[0], said
     # colour: away from the edges the colour frame's own content shows (its neighbours alike)
     rgb = rgb.astype(int)
     worst = np.abs(rgb - reference_rgb).max(axis=2)
