@@ -169,6 +169,17 @@ GlScene* Robot::Internals::glScene() { return world->glScene(); }
 
 Lighting Robot::Internals::lighting() const { return world->lighting(); }
 
+namespace
+{
+// The impulse the step's solver gave a contact point, on its body A (normal and friction rows):
+// Bullet's normal points from B into A.
+btVector3 impulseOnA(const btManifoldPoint& point)
+{
+  return point.m_appliedImpulse * point.m_normalWorldOnB + point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
+         point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2;
+}
+}  // namespace
+
 std::vector<ContactState> Robot::Internals::contacts(const std::string& link, const std::vector<std::string>& collisions) const
 {
   std::vector<ContactState> states;
@@ -210,10 +221,7 @@ std::vector<ContactState> Robot::Internals::contacts(const std::string& link, co
       if (state == states.end())
         state = states.insert(states.end(), ContactState{collision1, collision2, {}});
       const btVector3 position = ours_is_a ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
-      const btVector3 force = sign * per_step *
-                              (point.m_appliedImpulse * point.m_normalWorldOnB +
-                               point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
-                               point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2);
+      const btVector3 force = sign * per_step * impulseOnA(point);
       ContactPoint out;
       out.position = fromBullet(position);
       out.normal = fromBullet(sign * point.m_normalWorldOnB);
@@ -384,10 +392,7 @@ void Robot::Internals::endJointWrenches()
         for (int p = 0; p < manifold.getNumContacts(); ++p)
         {
           const btManifoldPoint& point = manifold.getContactPoint(p);
-          const btVector3 contact = sign / dt *
-                                    (point.m_appliedImpulse * point.m_normalWorldOnB +
-                                     point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
-                                     point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2);
+          const btVector3 contact = sign / dt * impulseOnA(point);
           const btVector3 position = side == 0 ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
           force -= contact;
           torque -= (position - at).cross(contact);
