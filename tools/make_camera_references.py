@@ -9,6 +9,7 @@ this package ships, from the poses SCENES names. Writes test/data/camera_referen
 """
 import os
 import sys
+import tempfile
 
 import matplotlib
 matplotlib.use('Agg')
@@ -17,11 +18,24 @@ import numpy as np  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, os.pardir, 'test', 'data', 'camera_references')
+BENCH = os.path.join(HERE, os.pardir, 'bench')
+MESH_RACE_TRACK = 'mesh_race_track.world'  # written by bench/sensor_bench.py, not shipped
 
 # world file (in worlds/), the car's pose (x y z roll pitch yaw), a name for both
 SCENES = [('race_track.world', (0.0, 0.0, 0.05, 0, 0, 0.0), 'start'),
           ('race_track.world', (1.5, -0.4, 0.05, 0, 0, 0.8), 'turned'),
-          ('arena.world', (0.0, 0.0, 0.05, 0, 0, 0.4), 'centre')]
+          ('arena.world', (0.0, 0.0, 0.05, 0, 0, 0.4), 'centre'),
+          (MESH_RACE_TRACK, (0.0, 0.0, 0.05, 0, 0, 0.0), 'start'),
+          (MESH_RACE_TRACK, (-4.4, 2.2, 0.05, 0, 0, -1.9), 'bend')]
+
+
+def world_file(world, directory):
+    """The path of `world`: one of worlds/, or the mesh race track written into `directory`."""
+    if world != MESH_RACE_TRACK:
+        return os.path.join(HERE, os.pardir, 'worlds', world)
+    sys.path.insert(0, BENCH)
+    from sensor_bench import write_mesh_track
+    return write_mesh_track(directory)[0]
 
 
 def frames(world_file, pose):
@@ -42,12 +56,16 @@ def frames(world_file, pose):
 
 def main():
     os.makedirs(OUT, exist_ok=True)
+    only = sys.argv[1:]  # scene stems (race_track_start ...) to record again; all when none
+    directory = tempfile.mkdtemp()
     for world, pose, name in SCENES:
-        rgb, depth, said = frames(os.path.join(HERE, os.pardir, 'worlds', world), pose)
+        stem = os.path.join(OUT, '%s_%s' % (os.path.splitext(world)[0], name))
+        if only and os.path.basename(stem) not in only:
+            continue
+        rgb, depth, said = frames(world_file(world, directory), pose)
         if not said or 'they cast rays instead' not in said[0]:
             sys.exit('make_camera_references: the cameras did not cast rays (%s): run it with '
                      'TIANRACER_GL_DEVICE=gpu on a machine without a GPU' % said)
-        stem = os.path.join(OUT, '%s_%s' % (os.path.splitext(world)[0], name))
         matplotlib.image.imsave(stem + '_camera.png', rgb)
         np.save(stem + '_depth_camera_depth.npy', depth.astype(np.float32))
         print('wrote', stem + '_*')
