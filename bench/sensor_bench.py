@@ -1,19 +1,22 @@
 """The sensors' cost (`make bench`, after the plant against its peers).
 
-1. Rays per second of the real Tianracer's sensors, an 800 x 800 colour camera (80 degrees), a
-   640 x 480 depth camera (60 degrees, 0.3 to 8 m) and the 1081-ray lidar, rendered from the car on
-   worlds/race_track.world and on a race track made of meshes (the same walls as one OBJ, a textured
-   OBJ floor), with one thread and with all: per CPU second (what one core does) and per wall
-   second. The subject is bench/sensor_cost.cpp (built by `make build`). The ray caster Embree
-   replaced is gone from bench/; its figures, measured beside Embree's, are data
-   (bench/data/previous_ray_caster.csv), printed after the tables.
+1. The real Tianracer's sensors rendered from the car on worlds/race_track.world and on a race track
+   made of meshes (the same walls as one OBJ, a textured OBJ floor): the 1081-ray lidar's rays per
+   second through Embree with one thread and with all, per CPU second (what one core does) and per
+   wall second; an 800 x 800 colour camera (80 degrees) and a 640 x 480 depth camera (60 degrees,
+   0.3 to 8 m) through OpenGL on llvmpipe, pixels per CPU second without noise and with the URDF's,
+   at llvmpipe's 256-bit width (what AVX2 and AVX-512 CPUs run) and its 128-bit one (SSE CPUs),
+   medians of ISA_RUNS, with a frame's CPU and the cores it takes at the real car's rate. The
+   subject is bench/sensor_cost.cpp (built by `make build`). The ray caster Embree replaced is gone
+   from bench/; its figures, measured beside Embree's, are data (bench/data/previous_ray_caster.csv),
+   printed after the tables.
 2. The real car's sensor set at its rates (800 x 800 colour at 30 Hz, 640 x 480 depth at 20 Hz, the
    1081-ray lidar at 40 Hz, the 100 Hz IMU, all subscribed) on the mesh race track while the car drives: simulated
    seconds per wall second unpaced (the real time factor the node can hold is the smaller of that and
    1) and process CPU seconds per simulated second (at real time: the cores' worth of CPU it takes);
    then the same through the ROS node, paced at real time, with every sensor topic subscribed.
    `bench/sensor_bench.py --real-car` runs only this part.
-3. Rays per CPU second of one thread on each instruction set of Embree's kernels this CPU runs
+3. The lidar's rays per CPU second of one thread on each instruction set of Embree's kernels this CPU runs
    (TIANRACER_EMBREE_ISA: SSE 4-wide, AVX 8-wide, AVX-512 16-wide), on the mesh race track, side by
    side, medians of ISA_RUNS runs taken in turn: Embree runs the widest by default, so the figures
    above are those of the widest ISA, and a user's CPU may have a narrower one.
@@ -47,7 +50,6 @@ REAL_CAR = {'camera': (800, 800, 30.0), 'depth': (640, 480, 20.0)}  # width, hei
 FLOOR_TOP = 0.002  # above the ground plane the world gets anyway
 NODE_WINDOW = 20.0  # s of wall time
 ISA_RUNS = 3
-SENSOR_LABELS = (('camera', 'colour 800 x 800, shaded'), ('depth', 'depth 640 x 480'), ('lidar', 'lidar 1081 rays'))
 
 # Subscribes to every sensor topic of the car (a Python subscriber, as rviz or a user's node would;
 # spawned as the tutorial spawns it, no robotNamespace, so the plugins' topics are at the root),
@@ -162,8 +164,9 @@ def write_mesh_track(directory):
 
 
 def rays_per_second(urdf_file, world, env=None, one_thread=False):
-    """(isa, {(sensor, threads): (rays per CPU second, rays per wall second)}) of one sensor_cost run;
-    the GL cameras' pixels per second under (sensor_gl, 0), and the GL renderer under 'gl'."""
+    """(isa, {(sensor, threads): (rays per CPU second, rays per wall second)}) of one sensor_cost run:
+    the lidar's rays by Embree threads, the cameras' pixels under (camera, 0) and (depth, 0) (0: the
+    GL renderer's own threads), and the GL renderer under 'gl'."""
     out = subprocess.run([binary(), urdf_file, world, str(FRAMES)] + (['--one-thread'] if one_thread else []),
                          capture_output=True, text=True, check=True, env=env).stdout.split('\n')
     isa = out[0].split()[1]
@@ -182,17 +185,39 @@ def print_rates(title, rates):
     print(title)
     print('  %-26s %16s %17s   (M rays per CPU second / per wall second)'
           % ('', 'Embree, 1 thread', 'Embree, %d threads' % threads))
-    for sensor, label in SENSOR_LABELS:
-        cells = ['%6.1f / %5.1f' % (rates[(sensor, t)][0] / 1e6, rates[(sensor, t)][1] / 1e6) for t in (1, threads)]
-        print('  %-26s %16s %17s' % (label, cells[0], cells[1]))
-    if 'gl' in rates:  # what cameras render with: OpenGL
-        print('  the cameras with OpenGL (%s), M pixels per CPU second / per wall second, and a frame\'s cost:'
-              % rates['gl'])
-        for sensor, label, rate in (('camera_gl', 'colour 800 x 800', 30), ('depth_gl', 'depth 640 x 480', 20)):
-            cpu, wall = rates[(sensor, 0)]
-            pixels = 800 * 800 if sensor == 'camera_gl' else 640 * 480
-            print('  %-26s %6.1f / %5.1f   %5.2f ms CPU a frame: %.3f of a core at %d Hz'
-                  % (label, cpu / 1e6, wall / 1e6, 1e3 * pixels / cpu, rate * pixels / cpu, rate))
+    cells = ['%6.1f / %5.1f' % (rates[('lidar', t)][0] / 1e6, rates[('lidar', t)][1] / 1e6) for t in (1, threads)]
+    print('  %-26s %16s %17s' % ('lidar 1081 rays', cells[0], cells[1]))
+
+
+def camera_costs(urdf_file, world, width):
+    """{(camera, noisy): M pixels per CPU second}, medians of ISA_RUNS sensor_cost runs, the cameras
+    rendered by llvmpipe at `width` bits (LP_NATIVE_VECTOR_WIDTH: 256 on AVX2 and AVX-512 CPUs, 128 on
+    SSE ones), without noise and with the URDF's (the colour camera's), and the renderer's name."""
+    samples, renderer = {}, '?'
+    for _ in range(ISA_RUNS):
+        for noisy in (False, True):
+            env = dict(os.environ, LP_NATIVE_VECTOR_WIDTH=str(width), TIANRACER_GL_DEVICE='cpu')
+            if noisy:
+                env['SENSOR_COST_NOISE'] = '1'
+            _, rates = rays_per_second(urdf_file, world, env=env, one_thread=True)
+            renderer = rates['gl']
+            for camera in ('camera', 'depth'):
+                samples.setdefault((camera, noisy), []).append(rates[(camera, 0)][0])
+    return {key: float(np.median(values)) for key, values in samples.items()}, renderer
+
+
+def print_camera_costs(world_name, urdf_file, world):
+    for width in (256, 128):
+        costs, renderer = camera_costs(urdf_file, world, width)
+        print('the cameras with OpenGL on %s, %s, median of %d: M pixels per CPU second, a frame\'s CPU and the'
+              ' cores at the real car\'s rate' % (world_name, renderer, ISA_RUNS))
+        for camera, label, pixels, rate in (('camera', 'colour 800 x 800', 800 * 800, 30),
+                                            ('depth', 'depth 640 x 480', 640 * 480, 20)):
+            for noisy in (False, True):
+                cpu = costs[(camera, noisy)]
+                print('  %-16s %-13s %6.1f   %5.2f ms a frame: %.3f of a core at %d Hz'
+                      % (label, 'with noise' if noisy else 'without noise', cpu / 1e6, 1e3 * pixels / cpu,
+                         rate * pixels / cpu, rate))
 
 
 def print_previous_ray_caster():
@@ -211,26 +236,23 @@ def print_previous_ray_caster():
 
 
 def rays_per_cpu_second_by_isa(urdf_file, world):
-    """{isa: {sensor: rays per CPU second of one thread}}, medians of ISA_RUNS runs of every ISA in turn."""
+    """{isa: the lidar's rays per CPU second of one thread}, medians of ISA_RUNS runs of every ISA in turn."""
     isas = bullet_plant.embree_isas()
-    samples = {isa: {sensor: [] for sensor, _ in SENSOR_LABELS} for isa in isas}
+    samples = {isa: [] for isa in isas}
     for _ in range(ISA_RUNS):
         for isa in isas:
             ran, rates = rays_per_second(urdf_file, world, env=dict(os.environ, TIANRACER_EMBREE_ISA=isa),
                                          one_thread=True)
             assert ran == isa, 'sensor_cost ran %s, not %s' % (ran, isa)
-            for sensor, _ in SENSOR_LABELS:
-                samples[isa][sensor].append(rates[(sensor, 1)][0])
-    return {isa: {sensor: float(np.median(rates)) for sensor, rates in by_sensor.items()}
-            for isa, by_sensor in samples.items()}
+            samples[isa].append(rates[('lidar', 1)][0])
+    return {isa: float(np.median(rates)) for isa, rates in samples.items()}
 
 
 def print_rates_by_isa(title, rates):
     isas = list(rates)
     print(title)
     print('  %-26s' % 'M rays per CPU second' + ''.join('%9s' % isa for isa in isas))
-    for sensor, label in SENSOR_LABELS:
-        print('  %-26s' % label + ''.join('%9.1f' % (rates[isa][sensor] / 1e6) for isa in isas))
+    print('  %-26s' % 'lidar 1081 rays' + ''.join('%9.1f' % (rates[isa] / 1e6) for isa in isas))
 
 
 def cpu_name():
@@ -303,15 +325,17 @@ def main():
         print('CPU: %s, %d cores; the instruction sets of Embree\'s kernels it runs: %s; the plant uses %s'
               % (cpu_name(), os.cpu_count(), ', '.join(bullet_plant.embree_isas()), isa))
         if sys.argv[1:] != ['--real-car']:
-            print_rates('sensor rays on worlds/race_track.world (boxes and a plane), Embree on %s:' % isa,
+            print_rates('lidar rays on worlds/race_track.world (boxes and a plane), Embree on %s:' % isa,
                         rays_per_second(urdf_file, RACE_TRACK_WORLD)[1])
-            print_rates('sensor rays on the mesh race track (%d walls as %d triangles, a textured floor), Embree on %s:'
+            print_rates('lidar rays on the mesh race track (%d walls as %d triangles, a textured floor), Embree on %s:'
                         % (walls, 12 * walls, isa), rays_per_second(urdf_file, mesh_world)[1])
+            print_camera_costs('worlds/race_track.world', urdf_file, RACE_TRACK_WORLD)
+            print_camera_costs('the mesh race track', urdf_file, mesh_world)
             print_previous_ray_caster()
         real_car_run(mesh_world, urdf)
         node_run(mesh_world, urdf_file)
         if sys.argv[1:] != ['--real-car']:
-            print_rates_by_isa('sensor rays on the mesh race track by ISA of Embree\'s kernels, one thread, median of %d:'
+            print_rates_by_isa('lidar rays on the mesh race track by ISA of Embree\'s kernels, one thread, median of %d:'
                                % ISA_RUNS, rays_per_cpu_second_by_isa(urdf_file, mesh_world))
 
 

@@ -1,13 +1,12 @@
-// The sensors' ray casting, timed, for bench/sensor_bench.py: `sensor_cost URDF WORLD FRAMES
+// The sensors' rendering, timed, for bench/sensor_bench.py: `sensor_cost URDF WORLD FRAMES
 // [--one-thread]` puts the car (URDF) in WORLD and renders, from its own sensors' poses, an 800 x 800
 // colour camera (80 degrees), a 640 x 480 depth camera (60 degrees, 0.3 to 8 m) and its lidar FRAMES
-// times each (SensorRendering on the Embree RayScene) with one thread and, unless --one-thread, with
-// all. Prints "isa NAME" (the ISA of Embree's kernels: TIANRACER_EMBREE_ISA or the widest the CPU
-// has), then one line per sensor and thread count: "SENSOR THREADS RAYS_PER_CPU_S RAYS_PER_WALL_S"
-// (of the cheapest frames). Then, where there is OpenGL, "gl RENDERER" and the two cameras rendered
-// with it (what cameras use): "camera_gl 0 PIXELS_PER_CPU_S PIXELS_PER_WALL_S" (0: the renderer's
-// own threads). The cameras render without noise; with SENSOR_COST_NOISE set in the environment the
-// colour camera keeps its URDF's noise.
+// times each (SensorRendering: cameras by OpenGL, the lidar on the Embree RayScene). Prints "isa NAME"
+// (the ISA of Embree's kernels: TIANRACER_EMBREE_ISA or the widest the CPU has); where there is
+// OpenGL, "gl RENDERER" and the two cameras: "camera 0 PIXELS_PER_CPU_S PIXELS_PER_WALL_S" (0: the
+// renderer's own threads); then the lidar with one thread and, unless --one-thread, with all:
+// "lidar THREADS RAYS_PER_CPU_S RAYS_PER_WALL_S" (of the cheapest frames). The cameras render
+// without noise; with SENSOR_COST_NOISE set in the environment the colour camera keeps its URDF's noise.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -131,36 +130,15 @@ int main(int argc, char** argv)
     const char* name;
     Camera* camera;
   };
-  for (CameraCase c : {CameraCase{"camera", &colour_camera}, CameraCase{"depth", &depth_camera}})
-  {
-    const SensorDescription& d = c.camera->description();
-    const double rays = double(d.image_width) * d.image_height;
-    const Frame pose = sensorPose(r, d);
-    for (int threads : thread_counts)
-    {
-      setRayThreads(threads);
-      const RayScene& scene = w.rayScene(nullptr);
-      const auto cast = [&scene](const Frame& at, const PinholeRays& pinhole, const Lighting& light, PinholeImage& image) {
-        scene.castPinhole(at, pinhole, light, image);
-      };
-      report(c.name, threads, rays, bestCost(frames, [&] {
-               detail::SensorRendering::render(*c.camera, cast, pose, lighting, 0);
-             }));
-    }
-  }
-
   if (GlScene* gl = w.glScene())
   {
     std::printf("gl %s\n", gl->context().renderer().c_str());
-    const auto draw = [gl](const Frame& at, const PinholeRays& pinhole, const Lighting& light, PinholeImage& image) {
-      gl->renderPinhole(at, pinhole, light, image);
-    };
-    for (CameraCase c : {CameraCase{"camera_gl", &colour_camera}, CameraCase{"depth_gl", &depth_camera}})
+    for (CameraCase c : {CameraCase{"camera", &colour_camera}, CameraCase{"depth", &depth_camera}})
     {
       const SensorDescription& d = c.camera->description();
       const Frame pose = sensorPose(r, d);
       report(c.name, 0, double(d.image_width) * d.image_height,
-             bestCost(frames, [&] { detail::SensorRendering::render(*c.camera, draw, pose, lighting, 0); }));
+             bestCost(frames, [&] { detail::SensorRendering::render(*c.camera, *gl, pose, lighting, 0); }));
     }
   }
 

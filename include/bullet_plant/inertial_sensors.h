@@ -35,7 +35,7 @@ class Imu : public Sensor
 {
 public:
   Imu(const SensorDescription& d, uint32_t noise_seed);
-  void update(SensorContext& context, int64_t time_ns) override;
+  bool update(SensorContext& context, int64_t time_ns) override;
   bool modelPlugin() const { return description_.model_plugin; }
   // gazebo_ros_imu_sensor reports the orientation relative to the IMU's orientation at spawn, as
   // Gazebo's ImuSensor does; gazebo_ros_imu the world orientation.
@@ -70,7 +70,7 @@ class GroundTruthOdometry : public Sensor
 {
 public:
   GroundTruthOdometry(const SensorDescription& d, uint32_t noise_seed);
-  void update(SensorContext& context, int64_t time_ns) override;
+  bool update(SensorContext& context, int64_t time_ns) override;
   // The link poses are relative to; empty for the world.
   std::string referenceLink() const;
   void sample(const LinkMotion& body, const LinkMotion* reference, int64_t time_ns);

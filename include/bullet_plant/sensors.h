@@ -45,15 +45,17 @@ public:
 
   void setActive(bool active) { active_ = active; }
   bool active() const { return active_; }
+  // The readings made so far.
   uint64_t updates() const { return updates_; }
   int64_t periodNs() const { return gate_.periodNs(); }
-  // True when an update is due at this simulated time (and marks it done).
-  bool due(int64_t time_ns);
-  // The update: what the sensor reads of the simulation through `context` at `time_ns`. The robot
-  // calls it for each active sensor that is due.
-  virtual void update(SensorContext& context, int64_t time_ns) = 0;
+  // Reads the simulation through `context` when a reading is due at `time_ns` (the robot calls it
+  // for each active sensor every step).
+  void updateIfDue(SensorContext& context, int64_t time_ns);
 
 protected:
+  // The reading at `time_ns`; false when the sensor could make none (a camera without OpenGL).
+  virtual bool update(SensorContext& context, int64_t time_ns) = 0;
+
   SensorDescription description_;
   uint32_t noise_seed_;
   std::mt19937 noise_;
@@ -66,7 +68,7 @@ class Lidar : public Sensor
 {
 public:
   Lidar(const SensorDescription& d, uint32_t noise_seed);
-  void update(SensorContext& context, int64_t time_ns) override;
+  bool update(SensorContext& context, int64_t time_ns) override;
   bool hasScan() const { return updates_ > 0; }
   const LaserScan& latest() const { return scan_; }
 
@@ -88,13 +90,14 @@ struct CameraFrame
   std::vector<float> points;              // depth cameras: x y z per pixel, NaN where nothing is hit
 };
 
-// gazebo_ros_camera (type "camera") and gazebo_ros_openni_kinect (type "depth"). Pixels by ray
-// casting: the colour of what is hit, lit by one directional light, a sky colour elsewhere.
+// gazebo_ros_camera (type "camera") and gazebo_ros_openni_kinect (type "depth"). Pixels by OpenGL
+// (rendering/gl_scene.h): the colour of what is seen, lit by one directional light, the sky colour
+// elsewhere. Without OpenGL a camera makes no frames.
 class Camera : public Sensor
 {
 public:
   Camera(const SensorDescription& d, uint32_t noise_seed);
-  void update(SensorContext& context, int64_t time_ns) override;
+  bool update(SensorContext& context, int64_t time_ns) override;
   bool depthSensor() const { return description_.type == "depth"; }
   // gazebo_ros_openni_kinect publishes depths and points only within (pointCloudCutoff,
   // pointCloudCutoffMax), NaN elsewhere (defaults 0.4 and 5.0 m).
@@ -109,7 +112,7 @@ private:
   friend struct detail::SensorRendering;
   CameraFrame frame_;
   std::vector<float> rendered_depth_;  // what the rays gave, kept from frame to frame
-  std::vector<float> noise_table_;     // gaussian samples of the image noise, drawn at the first frame
+  std::vector<int16_t> noise_table_;   // the image noise's samples in levels of 1/255 (noiseSamples), drawn at the first frame
 };
 
 // One touching point of a contact sensor's collision, as Gazebo's ContactSensor reports it: the
@@ -143,7 +146,7 @@ class ContactSensor : public Sensor
 {
 public:
   ContactSensor(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed) {}
-  void update(SensorContext& context, int64_t time_ns) override;
+  bool update(SensorContext& context, int64_t time_ns) override;
   bool hasReading() const { return updates_ > 0; }
   const ContactReading& latest() const { return reading_; }
 

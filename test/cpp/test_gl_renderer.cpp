@@ -1,17 +1,21 @@
-// gl_context.cpp and gl_renderer.cpp (OpenGL ES 3 through EGL, no window): a context on Mesa's
-// llvmpipe when the CPU is asked for, TIANRACER_GL_DEVICE read as documented, and frames that look
-// as the ray-cast camera's (ray_caster.cpp) of the same boxes (or spheres, cylinders and a plane),
-// light and pinhole: colours within
-// 3/255 and depths within 1 mm away from silhouette edges, and bit for bit the same on every run.
+// gl_context.cpp, gl_renderer.cpp, gl_scene.cpp and pinhole.cpp (OpenGL ES 3 through EGL, no
+// window): a context on Mesa's llvmpipe when the CPU is asked for, TIANRACER_GL_DEVICE read as
+// documented, and frames that look as the same boxes (or spheres, cylinders and a plane, or a
+// textured mesh) seen by rays through each pixel centre (castFrame below: RayScene::castHit, exact
+// for boxes, planes, meshes, spheres and cylinders, and RayPrimitive::surfaceColour) under the same
+// light: colours within 3/255 and depths within 1 mm away from silhouette edges; bit for bit the
+// same on every run; the camera's noise as pinhole.h says.
 // GL_DUMP=/tmp/x writes each compared pair as /tmp/x_gl.png and /tmp/x_rays.png, to look at.
 #include <gtest/gtest.h>
 
 #include <stb/stb_image_write.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <fstream>
 #include <memory>
 #include <random>
@@ -80,9 +84,9 @@ std::vector<RayPrimitive> curvedScene()
           curved(Shape::Kind::Cylinder, 1.5, 0.4, poseFromXyzRpy(6.0, 1.0, 1.0, 0.3, 0.5, 0), Rgba{0.7f, 0.4f, 0.8f, 1})};
 }
 
-PinholeRays pinhole()
+PinholeCamera pinhole()
 {
-  PinholeRays rays;
+  PinholeCamera rays;
   rays.width = 160;
   rays.height = 120;
   rays.fx = rays.fy = 120.0;
@@ -94,6 +98,46 @@ PinholeRays pinhole()
 }
 
 const Frame kCamera = Frame::fromPose(poseFromXyzRpy(-1.5, 0.2, 1.2, 0, 0.35, 0.05));
+
+// What the camera at `pose` sees by a ray through each pixel centre, one castHit each: the lit
+// colour of the face the ray hits (lambert over the ambient term), rounded half up, and the depth
+// along the optical axis (+inf: nothing within the clip range). No noise.
+PinholeImage castFrame(const RayScene& scene, const Frame& pose, const PinholeCamera& camera, const Lighting& lighting)
+{
+  PinholeImage out;
+  out.rgb8.resize(size_t(camera.width) * camera.height * 3);
+  out.depth.resize(size_t(camera.width) * camera.height);
+  const double origin[3] = {pose.t[0], pose.t[1], pose.t[2]};
+  for (int v = 0; v < camera.height; ++v)
+    for (int u = 0; u < camera.width; ++u)
+    {
+      const double xo = (u - camera.cx) / camera.fx, yo = (v - camera.cy) / camera.fy;
+      double dir[3];
+      for (int r = 0; r < 3; ++r)  // forward - xo * left - yo * up, in the world
+        dir[r] = pose.R[3 * r] - xo * pose.R[3 * r + 1] - yo * pose.R[3 * r + 2];
+      const double length = std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+      for (double& d : dir)
+        d /= length;
+      // the clip distances are along the optical axis, the ray's along itself
+      const RayHit hit = scene.castHit(origin, dir, camera.near * length, camera.far * length, kSeenByCameras);
+      const size_t pixel = size_t(v) * camera.width + u;
+      float rgb[3] = {lighting.background[0], lighting.background[1], lighting.background[2]};
+      out.depth[pixel] = std::numeric_limits<float>::infinity();
+      if (std::isfinite(hit.distance))
+      {
+        out.depth[pixel] = float(hit.distance / length);
+        double towards_light = 0;
+        for (int r = 0; r < 3; ++r)
+          towards_light += hit.normal[r] * lighting.towards_light[r];
+        const float lit = float(lighting.ambient + (1 - lighting.ambient) * std::max(0.0, towards_light));
+        const Rgba c = hit.primitive->surfaceColour(hit.triangle, hit.u, hit.v);
+        rgb[0] = c.r * lit, rgb[1] = c.g * lit, rgb[2] = c.b * lit;
+      }
+      for (int k = 0; k < 3; ++k)
+        out.rgb8[3 * pixel + size_t(k)] = uint8_t(int(std::max(0.0f, std::min(1.0f, rgb[k])) * 255.0f + 0.5f));
+    }
+  return out;
+}
 }  // namespace
 
 TEST(GlContext, MesasSoftwareRendererWhenTheCpuIsAskedFor)
@@ -125,11 +169,11 @@ TEST(GlContext, TheEnvironmentChoosesTheDevice)
   EXPECT_TRUE(error.empty());
 }
 
-// Compares a rasterized frame with the ray-cast one away from silhouette edges: the pixel and its
+// Compares a rasterized frame with the ray-cast one (castFrame) away from silhouette edges: the pixel and its
 // eight neighbours on one surface (depths within 5 % of each other in the ray-cast frame, or all of
 // them background). Expects 99 % of them within 3/255 and depths within 1 mm where both see a
 // surface, and a frame mostly of such pixels; prints the measures.
-void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, const PinholeRays& camera,
+void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, const PinholeCamera& camera,
                      const std::string& what)
 {
   const int w = camera.width, h = camera.height;
@@ -183,7 +227,7 @@ void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, c
 
 // Renders `shapes` (the world's) both ways from kCamera.
 void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name,
-                           const PinholeRays& camera = pinhole())
+                           const PinholeCamera& camera = pinhole())
 {
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
@@ -192,33 +236,61 @@ void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* 
   for (const RayPrimitive& p : shapes)
     draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
   const Lighting lighting;
-  PinholeImage rasterized, cast;
+  PinholeImage rasterized;
   renderer.render(draws, kCamera, camera, lighting, rasterized);
   RayScene rays(shapes);
   rays.commit(nullptr);
-  rays.castPinhole(kCamera, camera, lighting, cast);
+  const PinholeImage cast = castFrame(rays, kCamera, camera, lighting);
   expectAgreement(rasterized, cast, camera, std::string(scene_name) + ", GL (" + gl->renderer() + ")");
 }
 
-TEST(GlRenderer, BoxesLookAsTheRayCastCameraSeesThem) { expectTheRayCastFrame(scene(), "boxes"); }
+TEST(GlRenderer, BoxesLookAsRaysThroughThePixelsSeeThem) { expectTheRayCastFrame(scene(), "boxes"); }
 
-TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsTheRayCastCameraSeesThem)
+TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsRaysThroughThePixelsSeeThem)
 {
   expectTheRayCastFrame(curvedScene(), "spheres, cylinders, a plane");
 }
 
-TEST(GlRenderer, CameraNoiseIsTheRayCastersOwn)
+// The noise (pinhole.h): each colour value moved by its sample (in levels) from the frame's offset,
+// the same frame for the same offset, another for another; its spread that of the samples.
+TEST(GlRenderer, CameraNoiseIsTheSamplesFromTheFramesOffset)
 {
-  // the same noise samples picked by the same seed and pixel, added before the one rounding
-  std::vector<float> noise(PinholeRays::kNoiseTableSize);
   std::mt19937 rng(7);
-  std::normal_distribution<float> gaussian(0.0f, 0.01f);
-  for (float& n : noise)
-    n = gaussian(rng);
-  PinholeRays camera = pinhole();
+  const float sigma = 0.01f;
+  std::normal_distribution<float> gaussian(0.0f, sigma);
+  const std::vector<int16_t> noise = noiseSamples(size_t(pinhole().width) * pinhole().height, [&] { return gaussian(rng); });
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  std::vector<GlRenderer::Draw> draws;
+  for (const RayPrimitive& p : scene())
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+  PinholeCamera camera = pinhole();
+  PinholeImage clean, noisy, again, other;
+  renderer.render(draws, kCamera, camera, Lighting(), clean);
   camera.noise = noise.data();
-  camera.noise_seed = 12345;
-  expectTheRayCastFrame(scene(), "boxes with noise", camera);
+  camera.noise_offset = 1234;
+  renderer.render(draws, kCamera, camera, Lighting(), noisy);
+  renderer.render(draws, kCamera, camera, Lighting(), again);
+  camera.noise_offset = PinholeCamera::kNoiseOffsets - 1;
+  renderer.render(draws, kCamera, camera, Lighting(), other);
+  EXPECT_EQ(noisy.rgb8, again.rgb8);
+  EXPECT_NE(noisy.rgb8, other.rgb8);
+  for (size_t k = 0; k < clean.rgb8.size(); ++k)
+    ASSERT_EQ(noisy.rgb8[k], std::min(255, std::max(0, clean.rgb8[k] + noise[1234 + k]))) << "value " << k;
+  double sum = 0, squares = 0;
+  size_t count = 0;
+  for (size_t k = 0; k < clean.rgb8.size(); ++k)
+    if (clean.rgb8[k] > 10 && clean.rgb8[k] < 245)  // no clamping
+    {
+      const double d = (int(noisy.rgb8[k]) - int(clean.rgb8[k])) / 255.0;
+      sum += d, squares += d * d, ++count;
+    }
+  ASSERT_GT(count, clean.rgb8.size() / 2);
+  const double mean = sum / count, spread = std::sqrt(squares / count - mean * mean);
+  EXPECT_NEAR(mean, 0.0, 0.001);
+  // the samples rounded to whole levels: a uniform error 1/255 wide, variance 1 / (12 * 255^2)
+  EXPECT_NEAR(spread, std::sqrt(sigma * sigma + 1.0 / (12 * 255.0 * 255.0)), 0.0005);
 }
 
 // A wall textured with a repeating 8 x 8 image of 64 colours (texture coordinates 0 to 2 across
@@ -244,7 +316,7 @@ std::vector<RayPrimitive> texturedScene(const std::string& dir)
   return shapes;
 }
 
-TEST(GlRenderer, TexturesShowTheTexelsTheRayCasterShows)
+TEST(GlRenderer, TexturesShowTheTexelsARayThroughThePixelHits)
 {
   char dir[] = "/tmp/gl_textures_XXXXXX";
   ASSERT_TRUE(mkdtemp(dir));
@@ -269,9 +341,9 @@ TEST(GlScene, BodiesAreWhereRaySceneHasThem)
   GlScene gl_scene(*gl, world);
   RayScene ray_scene(world);
   const int gl_body = gl_scene.addBody(&robot, body), ray_body = ray_scene.addBody(&robot, body);
-  const PinholeRays camera = pinhole();
+  const PinholeCamera camera = pinhole();
   const Lighting lighting;
-  PinholeImage rasterized, cast;
+  PinholeImage rasterized;
   for (const Frame& pose : {Frame::fromPose(poseFromXyzRpy(1.0, -0.3, 0.2, 0, 0, 0.5)),
                             Frame::fromPose(poseFromXyzRpy(2.5, 0.6, 0.6, 0.2, 0.1, -0.8))})
   {
@@ -279,21 +351,44 @@ TEST(GlScene, BodiesAreWhereRaySceneHasThem)
     ray_scene.setPose(ray_body, pose);
     ray_scene.commit(nullptr);
     gl_scene.renderPinhole(kCamera, camera, lighting, rasterized);
-    ray_scene.castPinhole(kCamera, camera, lighting, cast);
-    expectAgreement(rasterized, cast, camera, "a moving body");
+    expectAgreement(rasterized, castFrame(ray_scene, kCamera, camera, lighting), camera, "a moving body");
   }
   ray_scene.commit(&robot);
   gl_scene.renderPinhole(kCamera, camera, lighting, rasterized, &robot);
-  ray_scene.castPinhole(kCamera, camera, lighting, cast);
-  expectAgreement(rasterized, cast, camera, "the body hidden");
+  expectAgreement(rasterized, castFrame(ray_scene, kCamera, camera, lighting), camera, "the body hidden");
   gl_scene.removeOwner(&robot);
   ray_scene.removeOwner(&robot);
   ray_scene.commit(nullptr);
   PinholeImage removed;
   gl_scene.renderPinhole(kCamera, camera, lighting, removed);
-  ray_scene.castPinhole(kCamera, camera, lighting, cast);
-  expectAgreement(removed, cast, camera, "the body removed");
+  expectAgreement(removed, castFrame(ray_scene, kCamera, camera, lighting), camera, "the body removed");
   EXPECT_EQ(removed.rgb8, rasterized.rgb8) << "removed is as hidden";
+}
+
+// A pose with a NaN or a huge coordinate (bad input from a user's world) draws nothing: the
+// background and no depth in every pixel, and the next frame is whole again.
+TEST(GlRenderer, ACameraPoseThatIsNotFiniteShowsNothing)
+{
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  std::vector<GlRenderer::Draw> draws;
+  for (const RayPrimitive& p : scene())
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+  const Lighting lighting;
+  PinholeImage nothing;  // the background alone, as the GL rounds it
+  renderer.render({}, kCamera, pinhole(), lighting, nothing);
+  for (double bad : {std::nan(""), 1e300, std::numeric_limits<double>::infinity()})
+  {
+    PinholeImage image;
+    renderer.render(draws, Frame::fromPose(poseFromXyzRpy(bad, 0, 0.5, 0, 0, 0)), pinhole(), lighting, image);
+    EXPECT_EQ(image.rgb8, nothing.rgb8) << "x = " << bad;
+    EXPECT_TRUE(std::all_of(image.depth.begin(), image.depth.end(), [](float d) { return std::isinf(d); })) << "x = " << bad;
+  }
+  PinholeImage good;
+  renderer.render(draws, kCamera, pinhole(), lighting, good);
+  EXPECT_GT(std::count_if(good.depth.begin(), good.depth.end(), [](float d) { return std::isfinite(d); }),
+            long(good.depth.size() / 2));
 }
 
 TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)

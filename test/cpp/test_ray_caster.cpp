@@ -265,14 +265,6 @@ std::shared_ptr<const MeshData> texturedQuad(const std::string& dir)
                     "usemtl picture\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n"));
 }
 
-PinholeRays squareImage(int size)
-{
-  PinholeRays rays;
-  rays.width = rays.height = size;
-  rays.fx = rays.fy = size / (2 * std::tan(0.4));
-  rays.cx = rays.cy = (size - 1) / 2.0;
-  return rays;
-}
 }  // namespace
 
 TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
@@ -297,120 +289,6 @@ TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
       EXPECT_NEAR(colour.g * 255, 16 * r + 8, 1e-3) << "texel " << c << ", " << r;
       EXPECT_NEAR(colour.b * 255, 200, 1e-3);
     }
-
-  // A camera 1.5 m in front of the quad, looking at its centre along -x, lit from behind without
-  // ambient: every pixel shows the texel its ray meets, at depth 1.5 m. Facing -x, the camera's
-  // right is +y: image columns run along the texture's s, rows down its t.
-  Lighting light;
-  light.towards_light[0] = 1, light.towards_light[1] = 0, light.towards_light[2] = 0;
-  light.ambient = 0.0;
-  PinholeImage image;
-  const PinholeRays rays = squareImage(64);
-  scene.castPinhole(Frame::fromPose(poseFromXyzRpy(1.5, 0.5, 0.5, 0, 0, M_PI)), rays, light, image);
-  int checked = 0;
-  for (int v = 0; v < rays.height; ++v)
-    for (int u = 0; u < rays.width; ++u)
-    {
-      const double y = 0.5 + (u - rays.cx) / rays.fx * 1.5, z = 0.5 - (v - rays.cy) / rays.fy * 1.5;
-      const size_t pixel = size_t(v) * rays.width + u;
-      const double s = y * 4, t = (1 - z) * 4;
-      if (y <= 0 || y >= 1 || z <= 0 || z >= 1)
-      {
-        if (y < -0.01 || y > 1.01 || z < -0.01 || z > 1.01)
-          EXPECT_EQ(image.rgb8[3 * pixel], std::lround(light.background[0] * 255)) << "background at " << u << ", " << v;
-        continue;
-      }
-      if (std::abs(s - std::round(s)) < 0.05 || std::abs(t - std::round(t)) < 0.05)
-        continue;  // a pixel on a texel border
-      EXPECT_EQ(image.rgb8[3 * pixel], 16 * int(s) + 8) << u << ", " << v;
-      EXPECT_EQ(image.rgb8[3 * pixel + 1], 16 * int(t) + 8) << u << ", " << v;
-      EXPECT_EQ(image.rgb8[3 * pixel + 2], 200) << u << ", " << v;
-      EXPECT_NEAR(image.depth[pixel], 1.5, kFloatTolerance);
-      ++checked;
-    }
-  EXPECT_GT(checked, 400);
-}
-
-TEST(CameraRays, FramesAreTheSameOnEveryRunAndForAnyNumberOfThreads)
-{
-  const std::string dir = tempDir();
-  auto quad = texturedQuad(dir);
-  ASSERT_TRUE(quad);
-  std::vector<RayPrimitive> shapes{
-      primitive(Shape::Kind::Plane, 0, 0, 1, poseFromXyzRpy(0, 0, 0, 0, 0, 0)),
-      primitive(Shape::Kind::Box, 0.4, 0.6, 0.8, poseFromXyzRpy(3, 0.5, 0.4, 0, 0, 0.3)),
-      primitive(Shape::Kind::Sphere, 0.3, 0, 0, poseFromXyzRpy(2, -0.6, 0.3, 0, 0, 0)),
-      primitive(Shape::Kind::Cylinder, 0.2, 0.5, 0, poseFromXyzRpy(4, -1, 0.25, 0, 0, 0)),
-      RayPrimitive::fromMesh(quad, poseFromXyzRpy(5, -0.5, 0, 0, 0, 0), nullptr)};
-  RayScene scene(shapes);
-  scene.commit(nullptr);
-  const Frame camera = Frame::fromPose(poseFromXyzRpy(0, 0, 0.5, 0, 0.1, 0));
-  const PinholeRays rays = squareImage(203);  // not a multiple of the 4 x 4 packets
-  std::vector<PinholeImage> images;
-  for (int threads : {1, 1, 2, 3, 8})
-  {
-    setRayThreads(threads);
-    images.emplace_back();
-    scene.castPinhole(camera, rays, Lighting(), images.back());
-  }
-  // With noise (a table of gaussian samples picked by a hash of seed and pixel): the same again.
-  std::vector<float> table(PinholeRays::kNoiseTableSize);
-  std::mt19937 rng(3);
-  std::normal_distribution<float> gaussian(0.0f, 0.02f);
-  for (float& n : table)
-    n = gaussian(rng);
-  PinholeRays noisy = rays;
-  noisy.noise = table.data();
-  noisy.noise_seed = 42;
-  std::vector<PinholeImage> noisy_images(2);
-  for (int threads : {1, 3})
-  {
-    setRayThreads(threads);
-    scene.castPinhole(camera, noisy, Lighting(), noisy_images[threads == 1 ? 0 : 1]);
-  }
-  setRayThreads(0);
-  EXPECT_TRUE(noisy_images[0].rgb8 == noisy_images[1].rgb8);
-  double sum = 0, sum2 = 0;
-  int count = 0;
-  for (size_t k = 0; k < images[0].rgb8.size(); ++k)
-    if (images[0].rgb8[k] > 30 && images[0].rgb8[k] < 225)
-    {
-      const double e = double(noisy_images[0].rgb8[k]) - images[0].rgb8[k];
-      sum += e;
-      sum2 += e * e;
-      ++count;
-    }
-  ASSERT_GT(count, 10000);
-  EXPECT_NEAR(sum / count, 0.0, 0.1) << "unbiased";
-  EXPECT_NEAR(std::sqrt(sum2 / count), 0.02 * 255, 0.3) << "of the table's spread (5.1 levels)";
-  for (size_t k = 1; k < images.size(); ++k)
-  {
-    EXPECT_TRUE(images[k].rgb8 == images[0].rgb8) << "image " << k;
-    EXPECT_TRUE(images[k].depth == images[0].depth) << "image " << k;
-  }
-  std::set<uint8_t> colours(images[0].rgb8.begin(), images[0].rgb8.end());
-  EXPECT_GT(colours.size(), 20u) << "the scene is in the picture";
-}
-
-TEST(CameraRays, APoseEmbreeCannotTakeShowsNothingInEveryPixel)
-{
-  RayScene scene({primitive(Shape::Kind::Box, 1, 1, 1, poseFromXyzRpy(3, 0, 0, 0, 0, 0))});
-  scene.commit(nullptr);
-  const PinholeRays rays = squareImage(10);  // not a multiple of the 4 x 4 packets
-  const Lighting light;
-  const uint8_t background = uint8_t(std::lround(light.background[0] * 255));
-  for (double bad : {std::nan(""), 1e300})
-  {
-    PinholeImage image;
-    image.rgb8.assign(size_t(3 * rays.width * rays.height), 7);  // last frame's pixels
-    image.depth.assign(size_t(rays.width * rays.height), 1.0f);
-    scene.castPinhole(Frame::fromPose(poseFromXyzRpy(bad, 0, 0.5, 0, 0, 0)), rays, light, image);
-    for (size_t pixel = 0; pixel < image.depth.size(); ++pixel)
-    {
-      EXPECT_EQ(image.rgb8[3 * pixel], background) << "pixel " << pixel << " with x = " << bad;
-      EXPECT_TRUE(std::isinf(image.depth[pixel])) << "pixel " << pixel << " with x = " << bad;
-    }
-  }
 }
 
 // Every case here runs once per ISA of Embree's kernels this CPU runs (test/test_gtests.py sets

@@ -34,7 +34,7 @@ void main()
 }
 )";
 
-// ray_caster's CameraShading: the face the camera sees lit by the directional light over the
+// The face the camera sees lit by the directional light over the
 // ambient term, rounded to bytes by the GL (the noise is added on the CPU), and the depth along
 // the optical axis into a float attachment, read back only when wanted.
 const char* const kFragmentShader = R"(#version 300 es
@@ -109,8 +109,9 @@ Matrix4 fromFrame(const Frame& f)
 
 // Body coordinates to clip coordinates, in double until the end: the optical frame (x right, y
 // down, z forward) of the camera at `pose`, then the pinhole's projection with pixel centres at
-// integer pixel coordinates (window coordinates have them at + 0.5) and rows from the top.
-Matrix4 clipFromBody(const Frame& pose, const Frame& world_from_body, const PinholeRays& rays)
+// integer pixel coordinates (window coordinates have them at + 0.5), the image's top row at the
+// window's bottom: glReadPixels then gives the rows in the image's order, from the top.
+Matrix4 clipFromBody(const Frame& pose, const Frame& world_from_body, const PinholeCamera& camera)
 {
   const Frame camera_from_body = [&] {
     Frame inverse;
@@ -133,9 +134,9 @@ Matrix4 clipFromBody(const Frame& pose, const Frame& world_from_body, const Pinh
       optical[i][c] = sign_of[i] * camera_from_body.R[3 * row_of[i] + c];
     optical[i][3] = sign_of[i] * camera_from_body.t[row_of[i]];
   }
-  const double w = rays.width, h = rays.height, n = rays.near, f = rays.far;
-  double projection[4][3] = {{2 * rays.fx / w, 0, 2 * (rays.cx + 0.5) / w - 1},
-                             {0, -2 * rays.fy / h, 1 - 2 * (rays.cy + 0.5) / h},
+  const double w = camera.width, h = camera.height, n = camera.near, f = camera.far;
+  double projection[4][3] = {{2 * camera.fx / w, 0, 2 * (camera.cx + 0.5) / w - 1},
+                             {0, 2 * camera.fy / h, 2 * (camera.cy + 0.5) / h - 1},
                              {0, 0, std::isfinite(f) ? (f + n) / (f - n) : 1.0},
                              {0, 0, 1}};
   const double z_offset = std::isfinite(f) ? -2 * f * n / (f - n) : -2 * n;
@@ -330,7 +331,14 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
     context_.release();
     throw;
   }
-  glGenFramebuffers(1, &framebuffer_);
+  for (const auto& u : {std::make_pair(&uniforms_.clip_from_body, "clip_from_body"),
+                        std::make_pair(&uniforms_.world_from_body, "world_from_body"),
+                        std::make_pair(&uniforms_.textured, "textured"), std::make_pair(&uniforms_.image, "image"),
+                        std::make_pair(&uniforms_.camera_origin, "camera_origin"),
+                        std::make_pair(&uniforms_.camera_forward, "camera_forward"),
+                        std::make_pair(&uniforms_.towards_light, "towards_light"),
+                        std::make_pair(&uniforms_.ambient, "ambient")})
+    *u.first = glGetUniformLocation(program_, u.second);
   context_.release();
 }
 
@@ -344,10 +352,12 @@ GlRenderer::~GlRenderer()
   }
   for (auto& uploaded : textures_)
     glDeleteTextures(1, &uploaded.second);
-  glDeleteRenderbuffers(1, &colour_);
-  glDeleteRenderbuffers(1, &depth_);
-  glDeleteRenderbuffers(1, &depth_buffer_);
-  glDeleteFramebuffers(1, &framebuffer_);
+  for (Target& t : targets_)
+  {
+    const unsigned buffers[3] = {t.colour, t.depth, t.depth_buffer};
+    glDeleteRenderbuffers(3, buffers);
+    glDeleteFramebuffers(1, &t.framebuffer);
+  }
   glDeleteProgram(program_);
   context_.release();
 }
@@ -424,42 +434,45 @@ unsigned GlRenderer::textureOf(const std::shared_ptr<const Texture>& image)
   return id;
 }
 
-void GlRenderer::resize(int width, int height)
+const GlRenderer::Target& GlRenderer::target(int width, int height)
 {
-  if (width == width_ && height == height_)
-    return;
-  width_ = width;
-  height_ = height;
-  glDeleteRenderbuffers(1, &colour_);
-  glDeleteRenderbuffers(1, &depth_);
-  glDeleteRenderbuffers(1, &depth_buffer_);
-  glGenRenderbuffers(1, &colour_);
-  glBindRenderbuffer(GL_RENDERBUFFER, colour_);
+  for (const Target& t : targets_)
+    if (t.width == width && t.height == height)
+      return t;
+  Target t;
+  t.width = width;
+  t.height = height;
+  unsigned buffers[3];
+  glGenRenderbuffers(3, buffers);
+  t.colour = buffers[0];
+  t.depth = buffers[1];
+  t.depth_buffer = buffers[2];
+  glBindRenderbuffer(GL_RENDERBUFFER, t.colour);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-  glGenRenderbuffers(1, &depth_);
-  glBindRenderbuffer(GL_RENDERBUFFER, depth_);
+  glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_R32F, width, height);
-  glGenRenderbuffers(1, &depth_buffer_);
-  glBindRenderbuffer(GL_RENDERBUFFER, depth_buffer_);
+  glBindRenderbuffer(GL_RENDERBUFFER, t.depth_buffer);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, depth_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_buffer_);
-  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(2, buffers);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+  glGenFramebuffers(1, &t.framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, t.colour);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, t.depth);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_buffer);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  targets_.push_back(t);  // deleted with the renderer, complete or not
+  if (status != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("GL camera framebuffer of " + std::to_string(width) + " x " + std::to_string(height) +
                              " is incomplete on " + context_.renderer());
+  return targets_.back();
 }
 
-void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const PinholeRays& rays,
+void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const PinholeCamera& camera,
                         const Lighting& lighting, PinholeImage& out)
 {
   context_.makeCurrent();
-  resize(rays.width, rays.height);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glViewport(0, 0, rays.width, rays.height);
+  const Target& frame = target(camera.width, camera.height);
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
+  glViewport(0, 0, camera.width, camera.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
@@ -467,74 +480,62 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
   const float background[4] = {lighting.background[0], lighting.background[1], lighting.background[2], 1.0f};
   const float no_depth[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
   // a colour camera's frame writes no depths
-  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GLenum(rays.depth ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GLenum(camera.depth ? GL_COLOR_ATTACHMENT1 : GL_NONE)};
   glDrawBuffers(2, buffers);
   glClearBufferfv(GL_COLOR, 0, background);
-  if (rays.depth)
+  if (camera.depth)
     glClearBufferfv(GL_COLOR, 1, no_depth);
   const float farthest = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farthest);
   glUseProgram(program_);
   const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
-  glUniform3f(glGetUniformLocation(program_, "camera_origin"), float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
-  glUniform3fv(glGetUniformLocation(program_, "camera_forward"), 1, forward);
-  glUniform3f(glGetUniformLocation(program_, "towards_light"), float(lighting.towards_light[0]),
-              float(lighting.towards_light[1]), float(lighting.towards_light[2]));
-  glUniform1f(glGetUniformLocation(program_, "ambient"), float(lighting.ambient));
-  const GLint clip_from_body = glGetUniformLocation(program_, "clip_from_body");
-  const GLint world_from_body = glGetUniformLocation(program_, "world_from_body");
-  const GLint textured = glGetUniformLocation(program_, "textured");
-  glUniform1i(glGetUniformLocation(program_, "image"), 0);
+  glUniform3f(uniforms_.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
+  glUniform3fv(uniforms_.camera_forward, 1, forward);
+  glUniform3f(uniforms_.towards_light, float(lighting.towards_light[0]), float(lighting.towards_light[1]),
+              float(lighting.towards_light[2]));
+  glUniform1f(uniforms_.ambient, float(lighting.ambient));
+  glUniform1i(uniforms_.image, 0);
   glActiveTexture(GL_TEXTURE0);
   for (const Draw& d : draws)
   {
     const Mesh& mesh = meshes_.at(size_t(d.mesh));
-    glUniformMatrix4fv(clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, rays).m);
-    glUniformMatrix4fv(world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
+    glUniformMatrix4fv(uniforms_.clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, camera).m);
+    glUniformMatrix4fv(uniforms_.world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
     glBindVertexArray(mesh.vertex_array);
     for (const Run& run : mesh.runs)
     {
-      glUniform1i(textured, run.texture != 0);
+      glUniform1i(uniforms_.textured, run.texture != 0);
       glBindTexture(GL_TEXTURE_2D, run.texture);
       glDrawArrays(GL_TRIANGLES, run.first, run.count);
     }
   }
   glBindVertexArray(0);
-  // Read back, rows from the top as the image's.
-  const size_t w = size_t(rays.width), h = size_t(rays.height);
-  colour_pixels_.resize(w * h * 4);
+  // Read back: the rows come in the image's order (clipFromBody).
+  const size_t pixels = size_t(camera.width) * size_t(camera.height);
+  colour_pixels_.resize(pixels * 4);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, rays.width, rays.height, GL_RGBA, GL_UNSIGNED_BYTE, colour_pixels_.data());
-  size_t depth_stride = 4;  // ES 3 reads a float buffer as RGBA, or as the driver's own format
-  if (rays.depth)
+  glReadPixels(0, 0, camera.width, camera.height, GL_RGBA, GL_UNSIGNED_BYTE, colour_pixels_.data());
+  out.depth.resize(camera.depth ? pixels : 0);
+  if (camera.depth)
   {
     glReadBuffer(GL_COLOR_ATTACHMENT1);
     GLint format = 0, type = 0;
     glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_FORMAT, &format);
     glGetIntegerv(GL_IMPLEMENTATION_COLOR_READ_TYPE, &type);
-    depth_stride = format == GL_RED && type == GL_FLOAT ? 1 : 4;
-    depth_pixels_.resize(w * h * depth_stride);
-    glReadPixels(0, 0, rays.width, rays.height, depth_stride == 1 ? GL_RED : GL_RGBA, GL_FLOAT, depth_pixels_.data());
+    if (format == GL_RED && type == GL_FLOAT)
+      glReadPixels(0, 0, camera.width, camera.height, GL_RED, GL_FLOAT, out.depth.data());
+    else  // ES 3 reads a float buffer as RGBA: the depth and three unused floats
+    {
+      depth_pixels_.resize(pixels * 4);
+      glReadPixels(0, 0, camera.width, camera.height, GL_RGBA, GL_FLOAT, depth_pixels_.data());
+      for (size_t k = 0; k < pixels; ++k)
+        out.depth[k] = depth_pixels_[4 * k];
+    }
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   context_.release();
-  out.rgb8.resize(w * h * 3);
-  out.depth.resize(rays.depth ? w * h : 0);
-  for (size_t row = 0; row < h; ++row)  // GL's rows from the bottom, the image's from the top
-  {
-    const size_t from = (h - 1 - row) * w;
-    const uint8_t* colour = &colour_pixels_[4 * from];
-    uint8_t* rgb8 = &out.rgb8[3 * row * w];
-    for (size_t column = 0; column < w; ++column)
-      for (int c = 0; c < 3; ++c)
-        rgb8[3 * column + size_t(c)] = colour[4 * column + size_t(c)];
-    if (rays.noise)
-      for (size_t column = 0; column < w; ++column)
-        addPixelNoise(rays, row * w + column, rgb8 + 3 * column);
-    if (rays.depth)
-      for (size_t column = 0; column < w; ++column)
-        out.depth[row * w + column] = depth_pixels_[depth_stride * (from + column)];
-  }
+  out.rgb8.resize(pixels * 3);
+  noisyRgbFromRgba(camera, colour_pixels_.data(), out.rgb8.data());
 }
 
 }  // namespace bullet_plant

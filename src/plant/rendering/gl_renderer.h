@@ -1,8 +1,7 @@
-// Pinhole frames by OpenGL ES 3 rasterization on a GlContext (gl_context.h), into an off-screen
-// framebuffer: the same camera model, light and outputs as RayScene::castPinhole (ray_caster.h), so
-// cameras can be rendered the way Gazebo renders them. Triangles are uploaded once per mesh and
-// drawn with a pose per frame. Shading is ray_caster's: flat (each triangle's own normal),
-// ambient + (1 - ambient) * max(0, n . towards_light) on the face the camera sees, times the colour;
+// Pinhole frames (pinhole.h) by OpenGL ES 3 rasterization on a GlContext (gl_context.h), into an
+// off-screen framebuffer: cameras rendered the way Gazebo renders them. Triangles are uploaded once
+// per mesh and drawn with a pose per frame. Shading: ambient + (1 - ambient) * max(0, n . towards_light)
+// on the face the camera sees, times the colour (flat on flat faces, the surface's normal on curved ones);
 // depth is the distance along the optical axis, written by the fragment shader into a float
 // attachment (exact where a depth buffer is not), +inf where nothing is drawn within the clip range.
 #pragma once
@@ -15,7 +14,8 @@
 
 #include "physics/spatial.h"
 #include "rendering/gl_context.h"
-#include "rendering/ray_caster.h"
+#include "rendering/pinhole.h"
+#include "rendering/ray_caster.h"  // RayPrimitive
 
 namespace bullet_plant
 {
@@ -58,11 +58,10 @@ public:
     int mesh;
     Frame world_from_body;
   };
-  // A camera at `pose` (x forward, y left, z up, as RayScene::castPinhole's), its pixels the
-  // rays' (PinholeRays: size, fx, fy, cx, cy for pixel centres at integer coordinates, near and
-  // far along the optical axis, noise): rgb8 rounded by the GL, the noise added as the ray
-  // caster's (addPixelNoise), depth in metres when rays.depth, else none.
-  void render(const std::vector<Draw>& draws, const Frame& pose, const PinholeRays& rays, const Lighting& lighting,
+  // The frame of `camera` at `pose` (x forward, y left, z up; the optical frame is z forward, x
+  // right, y down): rgb8 rounded by the GL, then the camera's noise (noisyRgbFromRgba); depth in
+  // metres when camera.depth, else none.
+  void render(const std::vector<Draw>& draws, const Frame& pose, const PinholeCamera& camera, const Lighting& lighting,
               PinholeImage& out);
 
 private:
@@ -76,16 +75,27 @@ private:
     unsigned vertex_array = 0, buffer = 0;
     std::vector<Run> runs;
   };
+  // An off-screen framebuffer of one size: a world's cameras of different sizes each draw into
+  // their own, made once (renderbuffer storage is allocated and cleared by the driver).
+  struct Target
+  {
+    int width = 0, height = 0;
+    unsigned framebuffer = 0, colour = 0, depth = 0, depth_buffer = 0;
+  };
   unsigned textureOf(const std::shared_ptr<const Texture>& image);
-  void resize(int width, int height);
+  const Target& target(int width, int height);
 
   const GlContext& context_;
-  unsigned program_ = 0, framebuffer_ = 0, colour_ = 0, depth_ = 0, depth_buffer_ = 0;
-  int width_ = 0, height_ = 0;
+  unsigned program_ = 0;
+  struct
+  {
+    int clip_from_body, world_from_body, textured, image, camera_origin, camera_forward, towards_light, ambient;
+  } uniforms_;  // the program's uniform locations
+  std::vector<Target> targets_;
   std::vector<Mesh> meshes_;
   std::vector<std::pair<std::shared_ptr<const Texture>, unsigned>> textures_;  // uploaded once each
   std::vector<uint8_t> colour_pixels_;  // read back: r g b a per pixel
-  std::vector<float> depth_pixels_;     // read back: depth per pixel (and three unused floats where read as RGBA)
+  std::vector<float> depth_pixels_;     // read back as RGBA where the driver reads no single float channel
 };
 
 }  // namespace bullet_plant

@@ -59,14 +59,14 @@ void GlScene::removeOwner(const void* owner)
 
 void GlScene::setPose(int body, const Frame& world_from_body) { bodies_.at(size_t(body)).pose = world_from_body; }
 
-void GlScene::renderPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out,
+void GlScene::renderPinhole(const Frame& pose, const PinholeCamera& camera, const Lighting& lighting, PinholeImage& out,
                             const void* hidden)
 {
   draws_.clear();
   for (const Body& b : bodies_)
     if (b.mesh >= 0 && !(hidden && b.owner == hidden))
       draws_.push_back(GlRenderer::Draw{b.mesh, b.pose});
-  renderer_.render(draws_, pose, rays, lighting, out);
+  renderer_.render(draws_, pose, camera, lighting, out);
 }
 
 }  // namespace bullet_plant

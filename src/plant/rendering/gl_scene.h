@@ -22,8 +22,8 @@ public:
   void removeOwner(const void* owner);
   void setPose(int body, const Frame& world_from_body);
 
-  // As RayScene::castPinhole, with `hidden`'s bodies left out (null: none).
-  void renderPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out,
+  // GlRenderer::render of the world's and the robots' bodies, `hidden`'s left out (null: none).
+  void renderPinhole(const Frame& pose, const PinholeCamera& camera, const Lighting& lighting, PinholeImage& out,
                      const void* hidden = nullptr);
   const GlContext& context() const { return context_; }
 

@@ -5,8 +5,9 @@
 // link's geometry. Boxes, planes and meshes are triangles (a box's and a plane's faces are exactly
 // planar, so triangles are exact and take Embree's fast path); spheres and cylinders are user
 // geometry intersected analytically in double precision (tessellating them would move a curved
-// surface by up to its chord error). Camera rays go in packets of 16, tiles in parallel on a small
-// thread pool; every pixel is computed alone, so frames do not depend on the number of threads.
+// surface by up to its chord error). Rays go in packets of 16, in parallel on a small thread pool;
+// every ray is computed alone, so scans do not depend on the number of threads. Lidars cast rays;
+// cameras rasterize the same primitives with OpenGL (gl_scene.h).
 #pragma once
 
 #include <cstdint>
@@ -56,8 +57,6 @@ struct RayPrimitive
   Rgba surfaceColour(int triangle, float u, float v) const;
 };
 
-struct SurfaceLook;  // what cameras see on a shape (ray_caster.cpp)
-
 struct RayHit
 {
   double distance = 0;           // +inf: nothing within range
@@ -65,43 +64,6 @@ struct RayHit
   int triangle = -1;             // of a mesh primitive, else -1
   float u = 0, v = 0;            // barycentric point on the triangle
   double normal[3] = {0, 0, 0};  // unit surface normal in the world, facing the ray
-};
-
-// How cameras light what they see: one directional light, lambert shading over an ambient term,
-// the background colour where nothing is hit.
-struct Lighting
-{
-  double towards_light[3] = {0.5, -0.1, 0.9};  // unit
-  double ambient = 0.35;
-  float background[3] = {0.70f, 0.80f, 0.95f};
-  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background);
-};
-
-// The rays of a pinhole camera (one through each pixel centre) and what they give.
-struct PinholeRays
-{
-  int width = 0, height = 0;
-  double fx = 0, fy = 0, cx = 0, cy = 0;
-  double near = 0, far = 100;  // clip distances along the optical axis
-  // Gaussian noise added to each colour value before rounding: kNoiseTableSize samples of it (null:
-  // none), picked by a hash of the frame's seed, the pixel and the channel, so that a frame does
-  // not depend on the order or the threads its pixels are computed in.
-  static constexpr int kNoiseTableSize = 1 << 16;
-  const float* noise = nullptr;
-  uint64_t noise_seed = 0;
-  // Whether the frame's depths are wanted (a colour camera's are not): a renderer may skip them.
-  bool depth = true;
-};
-// A pixel's lit colour (0..1 per channel) into its three bytes: the rays' noise added (the sample
-// their seed and the pixel pick), clamped, rounded half up.
-void writePixelColour(const PinholeRays& rays, size_t pixel, const float rgb[3], uint8_t* rgb8);
-// The same noise added to a colour already rounded to bytes (the GL renderer's), rounded again.
-void addPixelNoise(const PinholeRays& rays, size_t pixel, uint8_t* rgb8);
-
-struct PinholeImage
-{
-  std::vector<uint8_t> rgb8;  // lit colour per pixel (plus noise), rounded to 0..255, background where nothing is hit
-  std::vector<float> depth;   // along the optical axis, +inf where nothing is hit within the clip range
 };
 
 // Distance along the unit ray (o, d), in the shape's frame (a cylinder along z), to a sphere's or a
@@ -144,8 +106,6 @@ public:
   // distances (+inf: nothing in [near, far]) in the same order.
   void castRays(const Frame& sensor, const std::vector<double>& directions, double near, double far,
                 unsigned seen_by, std::vector<double>& out) const;
-  // A camera at `pose` (x forward, y left, z up; the optical frame is z forward, x right, y down).
-  void castPinhole(const Frame& pose, const PinholeRays& rays, const Lighting& lighting, PinholeImage& out) const;
 
   // The instruction set this scene's kernels use, and why not the one asked for if it is not.
   const EmbreeIsa& isa() const { return isa_; }
@@ -158,33 +118,6 @@ private:
     const void* owner = nullptr;
     unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
     Frame pose;
-    float rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // pose.R, row major, for shading
-  };
-  // A camera's lambert shading of its hits, on one thread (RayScene::castPinhole).
-  class CameraShading
-  {
-  public:
-    CameraShading(const RayScene& scene, const Lighting& lighting);
-    // The lit colour of a packet lane's hit (the lane hit something). Inline: once per camera ray
-    // (defined in ray_caster.cpp, its only user).
-    inline Rgba litColour(const RTCRayHit16& rh, int lane);
-
-  private:
-    // The light on either face of the triangle whose geometric normal (in its instance) is ng.
-    void lightFaces(const float ng[3]);
-
-    const RayScene& scene_;
-    const float light_[3];
-    const float ambient_;
-    // What the previous lane hit: lanes on the same shape skip the lookups, lanes on the same
-    // triangle (the same Embree normal) the normal's transform and the light.
-    unsigned instance_id_ = RTC_INVALID_GEOMETRY_ID, geometry_id_ = RTC_INVALID_GEOMETRY_ID;
-    const Instance* instance_ = nullptr;
-    const RayPrimitive* primitive_ = nullptr;
-    const SurfaceLook* look_ = nullptr;
-    float ng_[3] = {std::numeric_limits<float>::quiet_NaN(), 0, 0};
-    float normal_[3] = {0, 0, 0};  // in the world
-    float lit_[2] = {0, 0};        // on the face towards the ray, on the back face
   };
   void attach(Instance& instance);
   // The primitive, triangle and world normal (facing the ray) of an Embree hit.

@@ -51,9 +51,10 @@ double Imu::noise()
   return std::normal_distribution<double>(0.0, stddev_)(noise_);
 }
 
-void Imu::update(SensorContext& context, int64_t time_ns)
+bool Imu::update(SensorContext& context, int64_t time_ns)
 {
   sample(context.linkMotion(description_.link, description_.pose), context.gravity(), time_ns);
+  return true;
 }
 
 void Imu::sample(const LinkMotion& motion, const urdf::Vector3& gravity, int64_t time_ns)
@@ -101,13 +102,14 @@ std::string GroundTruthOdometry::referenceLink() const
   return frame == "world" || frame == "/world" || frame == "map" || frame == "/map" ? "" : frame;
 }
 
-void GroundTruthOdometry::update(SensorContext& context, int64_t time_ns)
+bool GroundTruthOdometry::update(SensorContext& context, int64_t time_ns)
 {
   const std::string reference = referenceLink();
   if (!reference.empty() && !context.hasLink(reference))
-    return;  // said at spawn: gazebo_ros_p3d publishes nothing then
+    return false;  // said at spawn: gazebo_ros_p3d publishes nothing then
   const LinkMotion frame = reference.empty() ? LinkMotion() : context.linkMotion(reference, urdf::Pose());
   sample(context.linkMotion(description_.link, urdf::Pose()), reference.empty() ? nullptr : &frame, time_ns);
+  return true;
 }
 
 void GroundTruthOdometry::sample(const LinkMotion& body, const LinkMotion* reference, int64_t time_ns)

@@ -22,11 +22,11 @@ public:
   virtual urdf::Pose linkPose(const std::string& link) const = 0;  // world
   virtual LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const = 0;
   virtual urdf::Vector3 gravity() const = 0;
-  // The world's scene where everything is now; without the robot's own bodies for a lidar (a lidar
-  // does not see its robot; cameras do, as Gazebo's).
-  virtual const RayScene& rayScene(bool with_own_robot) = 0;
+  // What lidars cast rays into: the world's ray scene where everything is now, without the robot's
+  // own bodies (a lidar does not see its robot).
+  virtual const RayScene& lidarScene() = 0;
   // What cameras render with: the world's GL scene where everything is now (the robot's own bodies
-  // included), or null where there is no OpenGL (cameras then cast rays through rayScene).
+  // included: cameras see them, as Gazebo's do), or null where there is no OpenGL (cameras off).
   virtual GlScene* glScene() = 0;
   virtual Lighting lighting() const = 0;
   // The touching points of `link`'s collisions named in `collisions` (SDF names), grouped by the

@@ -1,11 +1,11 @@
-// What a sensor sees of the world: a lidar's ranges by ray casting, a camera's pixels by OpenGL (or
-// ray casting where there is none), from the sensor's pose in the world, at one simulated time.
+// What a sensor sees of the world: a lidar's ranges by ray casting, a camera's pixels by OpenGL,
+// from the sensor's pose in the world, at one simulated time.
 #pragma once
 
 #include <cstdint>
-#include <functional>
 
 #include "bullet_plant/sensors.h"
+#include "rendering/gl_scene.h"
 #include "rendering/ray_caster.h"
 
 namespace bullet_plant
@@ -16,11 +16,8 @@ struct SensorRendering
 {
   // scene: committed with the lidar's own robot hidden (a lidar does not see its robot).
   static void scan(Lidar& lidar, const RayScene& scene, const Frame& pose, int64_t time_ns);
-  // Cameras see their own robot, as Gazebo's do; `draw` renders the pinhole frame (GlScene's or
-  // RayScene's).
-  using DrawPinhole = std::function<void(const Frame&, const PinholeRays&, const Lighting&, PinholeImage&)>;
-  static void render(Camera& camera, const DrawPinhole& draw, const Frame& pose, const Lighting& lighting,
-                     int64_t time_ns);
+  // Cameras see their own robot, as Gazebo's do.
+  static void render(Camera& camera, GlScene& scene, const Frame& pose, const Lighting& lighting, int64_t time_ns);
 };
 }  // namespace detail
 

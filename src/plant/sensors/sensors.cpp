@@ -21,12 +21,10 @@ bool Sensor::publishesOnRos() const
   return kind != PluginKind::None && kind != PluginKind::Unknown;
 }
 
-bool Sensor::due(int64_t time_ns)
+void Sensor::updateIfDue(SensorContext& context, int64_t time_ns)
 {
-  if (!gate_.due(time_ns))
-    return false;
-  ++updates_;
-  return true;
+  if (gate_.due(time_ns) && update(context, time_ns))
+    ++updates_;
 }
 
 Lidar::Lidar(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed) {}
@@ -40,33 +38,26 @@ Frame sensorPose(const SensorContext& context, const SensorDescription& d)
 }
 }  // namespace
 
-void Lidar::update(SensorContext& context, int64_t time_ns)
+bool Lidar::update(SensorContext& context, int64_t time_ns)
 {
-  detail::SensorRendering::scan(*this, context.rayScene(false), sensorPose(context, description_), time_ns);
+  detail::SensorRendering::scan(*this, context.lidarScene(), sensorPose(context, description_), time_ns);
+  return true;
 }
 
-void ContactSensor::update(SensorContext& context, int64_t time_ns)
+bool ContactSensor::update(SensorContext& context, int64_t time_ns)
 {
   reading_.stamp_ns = time_ns;
   reading_.states = context.contacts(description_.link, description_.contact_collisions);
+  return true;
 }
 
-void Camera::update(SensorContext& context, int64_t time_ns)
+bool Camera::update(SensorContext& context, int64_t time_ns)
 {
-  const Frame pose = sensorPose(context, description_);
-  if (GlScene* gl = context.glScene())
-    detail::SensorRendering::render(
-        *this, [gl](const Frame& at, const PinholeRays& rays, const Lighting& light, PinholeImage& image) {
-          gl->renderPinhole(at, rays, light, image);
-        }, pose, context.lighting(), time_ns);
-  else
-  {
-    const RayScene& scene = context.rayScene(true);
-    detail::SensorRendering::render(
-        *this, [&scene](const Frame& at, const PinholeRays& rays, const Lighting& light, PinholeImage& image) {
-          scene.castPinhole(at, rays, light, image);
-        }, pose, context.lighting(), time_ns);
-  }
+  GlScene* gl = context.glScene();
+  if (!gl)
+    return false;  // cameras are off: the world has said why, once
+  detail::SensorRendering::render(*this, *gl, sensorPose(context, description_), context.lighting(), time_ns);
+  return true;
 }
 
 Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
@@ -134,11 +125,11 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
   }
 }
 
-// A pinhole camera's frame by `draw` (GL rasterization or ray casting: lit colours with noise, and
-// depths); the noise comes from a table of gaussian samples drawn once from the camera's own
-// generator and a per-frame seed from it, so frames are the same on every run.
-void detail::SensorRendering::render(Camera& camera, const DrawPinhole& draw, const Frame& pose,
-                                     const Lighting& lighting, int64_t time_ns)
+// A pinhole camera's frame by GL rasterization (lit colours with noise, and depths); the noise
+// comes from a table of gaussian samples drawn once from the camera's own generator and a
+// per-frame seed from it, so frames are the same on every run.
+void detail::SensorRendering::render(Camera& camera, GlScene& scene, const Frame& pose, const Lighting& lighting,
+                                     int64_t time_ns)
 {
   const SensorDescription& d = camera.description();
   CameraFrame& out = camera.frame_;
@@ -148,32 +139,30 @@ void detail::SensorRendering::render(Camera& camera, const DrawPinhole& draw, co
   out.stamp_ns = time_ns;
   out.width = w;
   out.height = h;
-  PinholeRays rays;
-  rays.width = w;
-  rays.height = h;
-  rays.fx = out.fx;
-  rays.fy = out.fy;
-  rays.cx = out.cx;
-  rays.cy = out.cy;
-  rays.depth = depth;
-  rays.near = d.clip_near > 0 ? d.clip_near : 0.0;
-  rays.far = d.clip_far > 0 ? d.clip_far : 100.0;
+  PinholeCamera pinhole;
+  pinhole.width = w;
+  pinhole.height = h;
+  pinhole.fx = out.fx;
+  pinhole.fy = out.fy;
+  pinhole.cx = out.cx;
+  pinhole.cy = out.cy;
+  pinhole.depth = depth;
+  pinhole.near = d.clip_near > 0 ? d.clip_near : 0.0;
+  pinhole.far = d.clip_far > 0 ? d.clip_far : 100.0;
   if (d.noise.gaussian && d.noise.stddev > 0)
   {
     if (camera.noise_table_.empty())
     {
-      std::normal_distribution<float> noise(float(d.noise.mean), float(d.noise.stddev));
-      camera.noise_table_.resize(PinholeRays::kNoiseTableSize);
-      for (float& n : camera.noise_table_)
-        n = noise(camera.noise_);
+      std::normal_distribution<double> noise(d.noise.mean, d.noise.stddev);
+      camera.noise_table_ = noiseSamples(size_t(w) * size_t(h), [&] { return noise(camera.noise_); });
     }
-    rays.noise = camera.noise_table_.data();
-    rays.noise_seed = (uint64_t(camera.noise_()) << 32) ^ camera.noise_();
+    pinhole.noise = camera.noise_table_.data();
+    pinhole.noise_offset = size_t(camera.noise_() % PinholeCamera::kNoiseOffsets);
   }
   PinholeImage image;  // the camera's buffers, kept from frame to frame
   image.rgb8.swap(out.rgb);
   image.depth.swap(camera.rendered_depth_);
-  draw(pose, rays, lighting, image);
+  scene.renderPinhole(pose, pinhole, lighting, image);
   out.rgb.swap(image.rgb8);
 
   const size_t pixels = size_t(w) * h;

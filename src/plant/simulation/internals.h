@@ -104,7 +104,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   urdf::Pose linkPose(const std::string& link) const override;
   LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const override;
   urdf::Vector3 gravity() const override;
-  const RayScene& rayScene(bool with_own_robot) override;
+  const RayScene& lidarScene() override;
   GlScene* glScene() override;
   Lighting lighting() const override;
   std::vector<ContactState> contacts(const std::string& link, const std::vector<std::string>& collisions) const override;

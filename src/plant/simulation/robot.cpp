@@ -150,8 +150,8 @@ void Robot::Internals::recoverIfDiverged()
 void Robot::Internals::updateSensors(int64_t time_ns)
 {
   for (auto& sensor : sensors)
-    if (sensor->active() && sensor->due(time_ns))
-      sensor->update(*this, time_ns);
+    if (sensor->active())
+      sensor->updateIfDue(*this, time_ns);
 }
 
 bool Robot::Internals::hasLink(const std::string& link) const { return multibody.link_in_body.count(link) > 0; }
@@ -163,7 +163,7 @@ urdf::Pose Robot::Internals::linkPose(const std::string& link) const
 
 urdf::Vector3 Robot::Internals::gravity() const { return world->description.gravity; }
 
-const RayScene& Robot::Internals::rayScene(bool with_own_robot) { return world->rayScene(with_own_robot ? nullptr : this); }
+const RayScene& Robot::Internals::lidarScene() { return world->rayScene(this); }
 
 GlScene* Robot::Internals::glScene() { return world->glScene(); }
 

@@ -443,7 +443,7 @@ GlScene* World::Internals::glScene()
         gl_context.reset();
       }
     if (!gl_scene)
-      log.warn("cameras: no OpenGL (" + problem + "); they cast rays instead");
+      log.warn("cameras: off, no OpenGL (" + problem + "): camera sensors give no frames; every other sensor runs");
   }
   if (!gl_scene)
     return nullptr;

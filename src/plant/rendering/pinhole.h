@@ -1,0 +1,72 @@
+// What a camera renders, whoever renders it: a pinhole (image size, focal lengths and centre,
+// clip range), one directional light over an ambient term, the frame it gives (colour bytes and
+// depths), and the camera's noise on the colour.
+#pragma once
+
+#include <cstddef>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <urdf_model/pose.h>
+
+#include "bullet_plant/geometry.h"  // Rgba
+
+namespace bullet_plant
+{
+// How cameras light what they see: lambert shading by one directional light over an ambient term,
+// the background colour where nothing is seen.
+struct Lighting
+{
+  double towards_light[3] = {0.5, -0.1, 0.9};  // unit
+  double ambient = 0.35;
+  float background[3] = {0.70f, 0.80f, 0.95f};
+  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background);
+};
+
+// A pinhole camera's frame: its pixels (centres at integer coordinates u right, v down from the
+// top-left pixel's), what it sees between the clip distances, and its noise.
+struct PinholeCamera
+{
+  int width = 0, height = 0;
+  double fx = 0, fy = 0, cx = 0, cy = 0;
+  double near = 0, far = 100;  // clip distances along the optical axis
+  // Gaussian noise added to each colour value, in whole levels of 1/255 (null: none): the frame's
+  // k-th value (three per pixel, in image order) takes noise[noise_offset + k]. The camera draws the
+  // samples once (noiseSamples) and the offset per frame from its own generator, so frames are the
+  // same on every run, and each pixel's noise differs from frame to frame.
+  static constexpr size_t kNoiseOffsets = 4096;
+  const int16_t* noise = nullptr;  // noise_offset + 3 * width * height samples at least
+  size_t noise_offset = 0;
+  // Whether the frame's depths are wanted (a colour camera's are not): a renderer may skip them.
+  bool depth = true;
+};
+
+struct PinholeImage
+{
+  std::vector<uint8_t> rgb8;  // lit colour per pixel (plus noise), 0..255, rows from the top; the background where nothing is seen
+  std::vector<float> depth;   // along the optical axis, +inf where nothing is seen within the clip range
+};
+
+// The samples a camera's noise takes its values from: enough for any offset of a frame of
+// `pixels`, each round(255 * draw()) levels, clamped to +-256 (beyond that any value saturates).
+template <class Draw>
+std::vector<int16_t> noiseSamples(size_t pixels, Draw draw);
+
+// The camera's frame of colours (three bytes a pixel, rows from the top) from its RGBA pixels (as a
+// GL reads them back), the noise added: each value v becomes clamp(v + its sample, 0, 255).
+void noisyRgbFromRgba(const PinholeCamera& camera, const uint8_t* rgba, uint8_t* rgb8);
+
+template <class Draw>
+std::vector<int16_t> noiseSamples(size_t pixels, Draw draw)
+{
+  std::vector<int16_t> samples(3 * pixels + PinholeCamera::kNoiseOffsets);
+  for (int16_t& s : samples)
+  {
+    const double level = 255.0 * draw();
+    s = int16_t(level > 256 ? 256 : level < -256 ? -256 : level == level ? std::lround(level) : 0);
+  }
+  return samples;
+}
+
+}  // namespace bullet_plant
