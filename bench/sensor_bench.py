@@ -5,6 +5,7 @@
    second through Embree with one thread and with all, per CPU second (what one core does) and per
    wall second; an 800 x 800 colour camera (80 degrees) and a 640 x 480 depth camera (60 degrees,
    0.3 to 8 m) through OpenGL on llvmpipe, pixels per CPU second without noise and with the URDF's,
+   with the sun's shadows and without,
    at llvmpipe's 256-bit width (what AVX2 and AVX-512 CPUs run) and its 128-bit one (SSE CPUs),
    medians of ISA_RUNS, with a frame's CPU and the cores it takes at the real car's rate. The
    subject is bench/sensor_cost.cpp (built by `make build`). The ray caster Embree replaced is gone
@@ -14,7 +15,8 @@
    1081-ray lidar at 40 Hz, the 100 Hz IMU, all subscribed) on the mesh race track while the car drives: simulated
    seconds per wall second unpaced (the real time factor the node can hold is the smaller of that and
    1) and process CPU seconds per simulated second (at real time: the cores' worth of CPU it takes);
-   then the same through the ROS node, paced at real time, with every sensor topic subscribed.
+   then the same through the ROS node, paced at real time, with every sensor topic subscribed; with
+   the sun's shadows (Gazebo's default) and without.
    `bench/sensor_bench.py --real-car` runs only this part.
 3. The lidar's rays per CPU second of one thread on each instruction set of Embree's kernels this CPU runs
    (TIANRACER_EMBREE_ISA: SSE 4-wide, AVX 8-wide, AVX-512 16-wide), on the mesh race track, side by
@@ -206,18 +208,38 @@ def camera_costs(urdf_file, world, width):
     return {key: float(np.median(values)) for key, values in samples.items()}, renderer
 
 
-def print_camera_costs(world_name, urdf_file, world):
-    for width in (256, 128):
-        costs, renderer = camera_costs(urdf_file, world, width)
-        print('the cameras with OpenGL on %s, %s, median of %d: M pixels per CPU second, a frame\'s CPU and the'
-              ' cores at the real car\'s rate' % (world_name, renderer, ISA_RUNS))
-        for camera, label, pixels, rate in (('camera', 'colour 800 x 800', 800 * 800, 30),
-                                            ('depth', 'depth 640 x 480', 640 * 480, 20)):
-            for noisy in (False, True):
-                cpu = costs[(camera, noisy)]
-                print('  %-16s %-13s %6.1f   %5.2f ms a frame: %.3f of a core at %d Hz'
-                      % (label, 'with noise' if noisy else 'without noise', cpu / 1e6, 1e3 * pixels / cpu,
-                         rate * pixels / cpu, rate))
+def without_shadows(world_file, directory):
+    """A copy of the world file in `directory` with <scene><shadows>false</shadows>."""
+    tree = ET.parse(world_file)
+    world = tree.getroot().find('world')
+    scene = world.find('scene') if world.find('scene') is not None else ET.SubElement(world, 'scene')
+    shadows = scene.find('shadows') if scene.find('shadows') is not None else ET.SubElement(scene, 'shadows')
+    shadows.text = 'false'
+    path = os.path.join(directory, 'without_shadows_' + os.path.basename(world_file))
+    tree.write(path)
+    return path
+
+
+def print_camera_costs(world_name, urdf_file, world, directory):
+    """The cameras' costs with the sun's shadows (Gazebo's default; the car stands, so its shadow map
+    is drawn once) and without, at llvmpipe's two widths."""
+    for shadows, world_file in ((True, world), (False, without_shadows(world, directory))):
+        for width in (256, 128):
+            print_camera_cost_table(world_name + (', shadows' if shadows else ', no shadows'), urdf_file, world_file,
+                                    width)
+
+
+def print_camera_cost_table(world_name, urdf_file, world, width):
+    costs, renderer = camera_costs(urdf_file, world, width)
+    print('the cameras with OpenGL on %s, %s, median of %d: M pixels per CPU second, a frame\'s CPU and the'
+          ' cores at the real car\'s rate' % (world_name, renderer, ISA_RUNS))
+    for camera, label, pixels, rate in (('camera', 'colour 800 x 800', 800 * 800, 30),
+                                        ('depth', 'depth 640 x 480', 640 * 480, 20)):
+        for noisy in (False, True):
+            cpu = costs[(camera, noisy)]
+            print('  %-16s %-13s %6.1f   %5.2f ms a frame: %.3f of a core at %d Hz'
+                  % (label, 'with noise' if noisy else 'without noise', cpu / 1e6, 1e3 * pixels / cpu,
+                     rate * pixels / cpu, rate))
 
 
 def print_previous_ray_caster():
@@ -260,7 +282,7 @@ def cpu_name():
         return next((line.split(':', 1)[1].strip() for line in f if line.startswith('model name')), '?')
 
 
-def real_car_run(world_file, urdf):
+def real_car_run(world_file, urdf, what):
     world = bullet_plant.World.from_file(world_file)
     world.load_params(CONFIG_YAML)
     car = world.spawn(urdf, 'tianracer', pose=(0, 0, 0.05, 0, 0, 0))
@@ -284,8 +306,8 @@ def real_car_run(world_file, urdf):
     bare = timed(False)
     wall, cpu, updates = timed(True)
     sim = steps * world.time_step
-    print('the real car\'s sensors on the mesh race track, all subscribed, driving at %.2f m/s, %.0f s simulated:'
-          % (SPEED, sim))
+    print('the real car\'s sensors on the mesh race track (%s), all subscribed, driving at %.2f m/s, %.0f s simulated:'
+          % (what, SPEED, sim))
     print('  ' + ', '.join('%s %.0f Hz' % (s, updates[s] / sim) for s in sensors))
     print('  simulated seconds per wall second (unpaced): %.2f -> real time factor held: %.2f '
           '(load average %.1f on %d cores: other jobs take their share)'
@@ -329,11 +351,13 @@ def main():
                         rays_per_second(urdf_file, RACE_TRACK_WORLD)[1])
             print_rates('lidar rays on the mesh race track (%d walls as %d triangles, a textured floor), Embree on %s:'
                         % (walls, 12 * walls, isa), rays_per_second(urdf_file, mesh_world)[1])
-            print_camera_costs('worlds/race_track.world', urdf_file, RACE_TRACK_WORLD)
-            print_camera_costs('the mesh race track', urdf_file, mesh_world)
+            print_camera_costs('worlds/race_track.world', urdf_file, RACE_TRACK_WORLD, directory)
+            print_camera_costs('the mesh race track', urdf_file, mesh_world, directory)
             print_previous_ray_caster()
-        real_car_run(mesh_world, urdf)
-        node_run(mesh_world, urdf_file)
+        # with the sun's shadows (Gazebo's default) and without (<scene><shadows>false)
+        for world, what in ((mesh_world, 'shadows'), (without_shadows(mesh_world, directory), 'no shadows')):
+            real_car_run(world, urdf, what)
+            node_run(world, urdf_file)
         if sys.argv[1:] != ['--real-car']:
             print_rates_by_isa('lidar rays on the mesh race track by ISA of Embree\'s kernels, one thread, median of %d:'
                                % ISA_RUNS, rays_per_cpu_second_by_isa(urdf_file, mesh_world))

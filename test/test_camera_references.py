@@ -4,12 +4,15 @@ tools/make_camera_references.py at commit 4180808; that camera path is gone): th
 on the worlds this package ships and the mesh race track (textured), from the same poses, after the same 0.3 s. Away from silhouette
 edges (a pixel whose neighbours' reference depths lie within 5 % of its own) at least 99 % of the
 colour pixels within 3/255 (3 x 3 means: the two frames' noise is drawn by different rules) with
-the same spread of noise, and depths within 1 mm where both see a surface. Each scene renders at both of llvmpipe's vector widths
+the same spread of noise (on the mesh race track its walls: its floor's texture is filtered now, as
+Gazebo filters, where the references took the nearest texel), and depths within 1 mm where both see
+a surface. Each scene renders at both of llvmpipe's vector widths
 (LP_NATIVE_VECTOR_WIDTH 128: SSE, 256: AVX2), in a process of its own (llvmpipe reads it once)."""
 import json
 import os
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 
 import matplotlib.image
 import numpy as np
@@ -28,12 +31,25 @@ SCENES = [('race_track.world', (0.0, 0.0, 0.05, 0, 0, 0.0), 'start'),
 
 
 def world_file(world, directory):
-    """The path of `world`: one of worlds/, or the mesh race track written into `directory`."""
-    if world != MESH_RACE_TRACK:
-        return os.path.join(HERE, os.pardir, 'worlds', world)
-    sys.path.insert(0, os.path.join(HERE, os.pardir, 'bench'))
-    from sensor_bench import write_mesh_track
-    return write_mesh_track(directory)[0]
+    """`world` (one of worlds/, or the mesh race track) written into `directory` with its shadows off:
+    the ray caster that recorded the references drew none."""
+    if world == MESH_RACE_TRACK:
+        sys.path.insert(0, os.path.join(HERE, os.pardir, 'bench'))
+        from sensor_bench import write_mesh_track
+        source = write_mesh_track(directory)[0]
+    else:
+        source = os.path.join(HERE, os.pardir, 'worlds', world)
+    tree = ET.parse(source)
+    scene = tree.getroot().find('world/scene')
+    if scene is None:
+        scene = ET.SubElement(tree.getroot().find('world'), 'scene')
+    shadows = scene.find('shadows')
+    if shadows is None:
+        shadows = ET.SubElement(scene, 'shadows')
+    shadows.text = 'false'
+    path = os.path.join(directory, 'without_shadows_' + world)
+    tree.write(path)
+    return path
 
 
 def away_from_edges(depth):
@@ -108,8 +124,19 @@ def test_opengl_cameras_give_the_recorded_ray_cast_frames(world, pose, name, wid
             smooth &= np.abs(np.roll(np.roll(reference_rgb, dv, 0), du, 1) - reference_rgb).max(axis=2) <= 12
     smooth[0, :] = smooth[-1, :] = smooth[:, 0] = smooth[:, -1] = False
     assert smooth.mean() > 0.8
-    assert (worst[smooth] <= 3).mean() >= 0.99, 'colour pixels within 3/255 away from edges'
-    noise, reference_noise = (np.std((frame - box_mean(frame))[smooth]) for frame in (rgb, reference_rgb))
+    compared = smooth
+    if world == MESH_RACE_TRACK:
+        # The textured floor: the references sample the nearest texel, the GL cameras filter as
+        # Gazebo does (trilinear, mipmaps), which at the camera's grazing view of the floor blurs
+        # its 3 cm lines away; test_gl_renderer.cpp checks that filtering against its own oracle.
+        # Here the walls (red) are compared, the floor's agreement is printed.
+        walls = reference_rgb[..., 0] > reference_rgb[..., 1] + 30
+        print('%s: textured floor pixels within 3/255 of the point-sampled reference: %.1f %%'
+              % (name, 100 * (worst[smooth & ~walls] <= 3).mean()))
+        compared = smooth & walls
+        assert compared.mean() > 0.1
+    assert (worst[compared] <= 3).mean() >= 0.99, 'colour pixels within 3/255 away from edges'
+    noise, reference_noise = (np.std((frame - box_mean(frame))[compared]) for frame in (rgb, reference_rgb))
     assert noise == pytest.approx(reference_noise, rel=0.15), 'the same noise'
     # depth: where both see a surface, away from the depth edges
     interior = away_from_edges(np.where(np.isnan(reference_depth), np.inf, reference_depth))

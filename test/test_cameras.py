@@ -212,3 +212,32 @@ def test_without_opengl_cameras_are_off_and_say_why_and_the_lidar_still_scans(en
     assert out['log'][0].endswith('): camera sensors give no frames; every other sensor runs'), out['log']
     assert out['frames'] == 0 and out['rgb'] is None
     assert out['scans'] > 0
+
+
+def shadow_scene_frame(control_config, urdf_xml, shadows):
+    """The car's camera frame before a 1 m post 1 m ahead in the sun of Gazebo's default (shining
+    towards -x, so the post's shadow falls on the floor before it, 0.6 m long), with <scene><shadows>
+    as given."""
+    box = ("<model name='post'><static>true</static><pose>1.0 0.1 0.5 0 0 0</pose>"
+           "<link name='link'><visual name='visual'><geometry><box><size>0.2 0.4 1.0</size>"
+           "</box></geometry></visual></link></model>"
+           f"<scene><shadows>{str(shadows).lower()}</shadows></scene>")
+    world = make_world(control_config, sdf_world(box))
+    robot = world.spawn(urdf_xml, 'tianracer')
+    robot.enable_sensor('camera')
+    world.step(334)
+    return robot.image('camera')['rgb'].astype(float)
+
+
+def test_the_sun_casts_shadows_unless_the_scene_turns_them_off(control_config, urdf_xml):
+    lit = shadow_scene_frame(control_config, urdf_xml, False)
+    shaded = shadow_scene_frame(control_config, urdf_xml, True)
+    darker = (lit - shaded).mean(axis=2) > 20  # the camera's noise is about 2 levels
+    rows = np.nonzero(darker.any(axis=1))[0]
+    assert darker.mean() > 0.01, 'the box\'s shadow on the floor'
+    assert rows.min() > lit.shape[0] // 2, 'below the horizon: on the floor before the box'
+    assert ((shaded - lit).mean(axis=2) < 8).all(), 'a shadow only takes light away'
+    # in the shadow the floor keeps its ambient share: ambient / (ambient + (1 - ambient) cos)
+    towards = -np.array([-0.5, 0.1, -0.9]) / np.linalg.norm([-0.5, 0.1, -0.9])
+    share = 0.35 / (0.35 + 0.65 * towards[2])
+    assert shaded[darker].mean() / lit[darker].mean() == pytest.approx(share, rel=0.03)

@@ -46,6 +46,7 @@ struct WorldDescription
   // from the sun still gets (the mean of <ambient>'s red, green and blue).
   Rgba background{0.70f, 0.80f, 0.95f, 1.0f};
   double ambient = 0.35;
+  bool shadows = true;  // <scene><shadows>: the sun's shadows in camera images (SDF's default)
   std::vector<StaticCollision> collisions;
   std::vector<StaticVisual> visuals;
   std::vector<std::string> warnings;  // each unsupported element once: what, where, left out

@@ -99,12 +99,50 @@ PinholeCamera pinhole()
 
 const Frame kCamera = Frame::fromPose(poseFromXyzRpy(-1.5, 0.2, 1.2, 0, 0.35, 0.05));
 
-// What the camera at `pose` sees by a ray through each pixel centre, one castHit each: the lit
-// colour of the face the ray hits (lambert over the ambient term), rounded half up, and the depth
-// along the optical axis (+inf: nothing within the clip range). No noise.
-PinholeImage castFrame(const RayScene& scene, const Frame& pose, const PinholeCamera& camera, const Lighting& lighting)
+// The texture of a ray's hit on a textured mesh, bilinear between the four texels nearest its
+// texture coordinates (repeating): what the GL's trilinear filter gives where the texture is
+// magnified (mipmap level 0). False where the hit shows no texture.
+bool bilinearTexel(const RayHit& hit, Rgba& out)
 {
-  PinholeImage out;
+  const RayPrimitive& p = *hit.primitive;
+  if (!p.mesh || hit.triangle < 0 || p.mesh->uvs.empty() || !p.mesh->subMeshOf(hit.triangle).image)
+    return false;
+  const Texture& image = *p.mesh->subMeshOf(hit.triangle).image;
+  const int* corner = &p.mesh->indices[3 * size_t(hit.triangle)];
+  const float w0 = 1.0f - hit.u - hit.v;
+  const std::vector<float>& uv = p.mesh->uvs;
+  const double s = w0 * uv[2 * corner[0]] + hit.u * uv[2 * corner[1]] + hit.v * uv[2 * corner[2]];
+  const double t = w0 * uv[2 * corner[0] + 1] + hit.u * uv[2 * corner[1] + 1] + hit.v * uv[2 * corner[2] + 1];
+  // texel centres at (i + 0.5) / size; rows from the top, t up from the bottom
+  const double x = s * image.width - 0.5, y = (1.0 - t) * image.height - 0.5;
+  const double x0 = std::floor(x), y0 = std::floor(y), fx = x - x0, fy = y - y0;
+  auto texel = [&](double column, double row, int channel) {
+    const int c = ((int(column) % image.width) + image.width) % image.width;
+    const int r = ((int(row) % image.height) + image.height) % image.height;
+    return image.rgb[3 * (size_t(r) * image.width + c) + size_t(channel)] / 255.0;
+  };
+  float rgb[3];
+  for (int k = 0; k < 3; ++k)
+    rgb[k] = float((1 - fy) * ((1 - fx) * texel(x0, y0, k) + fx * texel(x0 + 1, y0, k)) +
+                   fy * ((1 - fx) * texel(x0, y0 + 1, k) + fx * texel(x0 + 1, y0 + 1, k)));
+  out = Rgba{rgb[0], rgb[1], rgb[2], 1.0f};
+  return true;
+}
+
+// A ray-cast frame, and whether each pixel's surface sees the light (1) or lies in a shadow (0).
+struct RayFrame : PinholeImage
+{
+  std::vector<uint8_t> light;
+};
+
+// What the camera at `pose` sees by a ray through each pixel centre, one castHit each: the lit
+// colour of the face the ray hits (lambert over the ambient term; with lighting.shadows, the
+// ambient alone where a second ray from the surface towards the light meets a visual), rounded
+// half up, and the depth along the optical axis (+inf: nothing within the clip range). No noise.
+RayFrame castFrame(const RayScene& scene, const Frame& pose, const PinholeCamera& camera, const Lighting& lighting)
+{
+  RayFrame out;
+  out.light.assign(size_t(camera.width) * camera.height, 1);
   out.rgb8.resize(size_t(camera.width) * camera.height * 3);
   out.depth.resize(size_t(camera.width) * camera.height);
   const double origin[3] = {pose.t[0], pose.t[1], pose.t[2]};
@@ -129,8 +167,17 @@ PinholeImage castFrame(const RayScene& scene, const Frame& pose, const PinholeCa
         double towards_light = 0;
         for (int r = 0; r < 3; ++r)
           towards_light += hit.normal[r] * lighting.towards_light[r];
-        const float lit = float(lighting.ambient + (1 - lighting.ambient) * std::max(0.0, towards_light));
-        const Rgba c = hit.primitive->surfaceColour(hit.triangle, hit.u, hit.v);
+        if (lighting.shadows && towards_light > 0)
+        {
+          double from[3];
+          for (int r = 0; r < 3; ++r)  // just off the surface, on the lit side
+            from[r] = origin[r] + dir[r] * hit.distance + hit.normal[r] * 1e-4;
+          out.light[pixel] = !std::isfinite(scene.castHit(from, lighting.towards_light, 0, 1e4, kSeenByCameras).distance);
+        }
+        const float lit = float(lighting.ambient + (1 - lighting.ambient) * std::max(0.0, towards_light) * out.light[pixel]);
+        Rgba c;
+        if (!bilinearTexel(hit, c))
+          c = hit.primitive->surfaceColour(hit.triangle, hit.u, hit.v);
         rgb[0] = c.r * lit, rgb[1] = c.g * lit, rgb[2] = c.b * lit;
       }
       for (int k = 0; k < 3; ++k)
@@ -173,7 +220,7 @@ TEST(GlContext, TheEnvironmentChoosesTheDevice)
 // eight neighbours on one surface (depths within 5 % of each other in the ray-cast frame, or all of
 // them background). Expects 99 % of them within 3/255 and depths within 1 mm where both see a
 // surface, and a frame mostly of such pixels; prints the measures.
-void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, const PinholeCamera& camera,
+void expectAgreement(const PinholeImage& rasterized, const RayFrame& cast, const PinholeCamera& camera,
                      const std::string& what)
 {
   const int w = camera.width, h = camera.height;
@@ -191,6 +238,8 @@ void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, c
         if (x < 0 || y < 0 || x >= w || y >= h)
           return false;
         const float n = cast.depth[size_t(y * w + x)];
+        if (cast.light[size_t(y * w + x)] != cast.light[size_t(v * w + u)])
+          return false;  // a shadow's edge: the shadow maps' texels and filter soften it
         if (std::isinf(d) != std::isinf(n) || (!std::isinf(d) && std::fabs(n - d) > 0.05f * d))
           return false;
       }
@@ -217,7 +266,7 @@ void expectAgreement(const PinholeImage& rasterized, const PinholeImage& cast, c
       else
         EXPECT_TRUE(std::isinf(rasterized.depth[k])) << what << ": " << u << ", " << v;
     }
-  EXPECT_GT(compared, w * h * 8 / 10) << what;
+  EXPECT_GT(compared, w * h * 3 / 4) << what;
   EXPECT_GT(depths, w * h / 2) << what;
   EXPECT_GE(double(close) / compared, 0.99) << what << ": " << close << " of " << compared << " within 3/255";
   EXPECT_LT(worst_depth, 1e-3) << what;
@@ -234,13 +283,13 @@ void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* 
   GlRenderer renderer(*gl);
   std::vector<GlRenderer::Draw> draws;
   for (const RayPrimitive& p : shapes)
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
   const Lighting lighting;
   PinholeImage rasterized;
   renderer.render(draws, kCamera, camera, lighting, rasterized);
   RayScene rays(shapes);
   rays.commit(nullptr);
-  const PinholeImage cast = castFrame(rays, kCamera, camera, lighting);
+  const RayFrame cast = castFrame(rays, kCamera, camera, lighting);
   expectAgreement(rasterized, cast, camera, std::string(scene_name) + ", GL (" + gl->renderer() + ")");
 }
 
@@ -251,7 +300,7 @@ TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsRaysThroughThePixelsSeeThem)
   expectTheRayCastFrame(curvedScene(), "spheres, cylinders, a plane");
 }
 
-// The noise (pinhole.h): each colour value moved by its sample (in levels) from the frame's offset,
+// The noise (pinhole.h): each pixel's three values moved by its sample (in levels) from the frame's offset,
 // the same frame for the same offset, another for another; its spread that of the samples.
 TEST(GlRenderer, CameraNoiseIsTheSamplesFromTheFramesOffset)
 {
@@ -264,7 +313,7 @@ TEST(GlRenderer, CameraNoiseIsTheSamplesFromTheFramesOffset)
   GlRenderer renderer(*gl);
   std::vector<GlRenderer::Draw> draws;
   for (const RayPrimitive& p : scene())
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
   PinholeCamera camera = pinhole();
   PinholeImage clean, noisy, again, other;
   renderer.render(draws, kCamera, camera, Lighting(), clean);
@@ -277,7 +326,7 @@ TEST(GlRenderer, CameraNoiseIsTheSamplesFromTheFramesOffset)
   EXPECT_EQ(noisy.rgb8, again.rgb8);
   EXPECT_NE(noisy.rgb8, other.rgb8);
   for (size_t k = 0; k < clean.rgb8.size(); ++k)
-    ASSERT_EQ(noisy.rgb8[k], std::min(255, std::max(0, clean.rgb8[k] + noise[1234 + k]))) << "value " << k;
+    ASSERT_EQ(noisy.rgb8[k], std::min(255, std::max(0, clean.rgb8[k] + noise[1234 + k / 3]))) << "value " << k;
   double sum = 0, squares = 0;
   size_t count = 0;
   for (size_t k = 0; k < clean.rgb8.size(); ++k)
@@ -316,11 +365,48 @@ std::vector<RayPrimitive> texturedScene(const std::string& dir)
   return shapes;
 }
 
-TEST(GlRenderer, TexturesShowTheTexelsARayThroughThePixelHits)
+// Close enough that every texel spans several pixels: the GL samples the image itself, bilinear.
+TEST(GlRenderer, MagnifiedTexturesShowTheTexelsARayThroughThePixelHitsBilinearly)
 {
   char dir[] = "/tmp/gl_textures_XXXXXX";
   ASSERT_TRUE(mkdtemp(dir));
   expectTheRayCastFrame(texturedScene(dir), "a textured wall");
+}
+
+// Far away, a pixel covers dozens of texels of a black and white checker of one-texel squares: the
+// mipmaps give their mean grey (nearest sampling would alias to black or white at random).
+TEST(GlRenderer, MinifiedTexturesShowTheirMipmapsMean)
+{
+  char dir[] = "/tmp/gl_mipmaps_XXXXXX";
+  ASSERT_TRUE(mkdtemp(dir));
+  std::vector<uint8_t> rgb;
+  for (int r = 0; r < 64; ++r)
+    for (int c = 0; c < 64; ++c)
+      rgb.insert(rgb.end(), 3, uint8_t((r + c) % 2 ? 255 : 0));
+  ASSERT_TRUE(stbi_write_png((std::string(dir) + "/checker.png").c_str(), 64, 64, 3, rgb.data(), 3 * 64));
+  std::ofstream(std::string(dir) + "/floor.mtl") << "newmtl checker\nKd 1 1 1\nmap_Kd checker.png\n";
+  std::ofstream(std::string(dir) + "/floor.obj") << "mtllib floor.mtl\n"
+                                                   "v -50 -50 0\nv 50 -50 0\nv 50 50 0\nv -50 50 0\n"
+                                                   "vt 0 0\nvt 400 0\nvt 400 400\nvt 0 400\n"
+                                                   "usemtl checker\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+  std::string reason;
+  std::shared_ptr<const MeshData> floor = loadMesh(std::string(dir) + "/floor.obj", urdf::Vector3(1, 1, 1), reason);
+  ASSERT_TRUE(floor && floor->submeshes[0].image) << reason;
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  const std::vector<GlRenderer::Draw> draws = {
+      {renderer.addMesh(glTrianglesOf(RayPrimitive::fromMesh(floor, urdf::Pose(), nullptr))), Frame()}};
+  const Lighting lighting;
+  PinholeImage image;
+  // 20 m up looking straight down: a pixel spans 0.17 m, 43 texels of 3.9 mm
+  renderer.render(draws, Frame::fromPose(poseFromXyzRpy(0, 0, 20, 0, M_PI / 2, 0)), pinhole(), lighting, image);
+  const double lit = lighting.ambient + (1 - lighting.ambient) * lighting.towards_light[2];
+  const double grey = 0.5 * lit * 255;
+  double worst = 0;
+  for (uint8_t value : image.rgb8)
+    worst = std::max(worst, std::fabs(value - grey));
+  EXPECT_LT(worst, 4.0) << "every pixel the checker's mean, lit: " << grey;
 }
 
 // GlScene keeps RayScene's bodies: the world, a robot's body moved between frames, hidden from
@@ -374,7 +460,7 @@ TEST(GlRenderer, ACameraPoseThatIsNotFiniteShowsNothing)
   GlRenderer renderer(*gl);
   std::vector<GlRenderer::Draw> draws;
   for (const RayPrimitive& p : scene())
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
   const Lighting lighting;
   PinholeImage nothing;  // the background alone, as the GL rounds it
   renderer.render({}, kCamera, pinhole(), lighting, nothing);
@@ -398,7 +484,7 @@ TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)
   GlRenderer renderer(*gl);
   std::vector<GlRenderer::Draw> draws;
   for (const RayPrimitive& p : scene())
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame()});
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
   PinholeImage first, second;
   renderer.render(draws, kCamera, pinhole(), Lighting(), first);
   renderer.render(draws, kCamera, pinhole(), Lighting(), second);

@@ -425,6 +425,7 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
       std::vector<double> c = colourNumbers(ambient, "<scene><ambient>");
       world.ambient = std::max(0.0, std::min(1.0, (c[0] + c[1] + c[2]) / 3.0));
     }
+    world.shadows = isTrue(xml::childText(scene, "shadows", "true"));
   }
   for (auto* e = w->FirstChildElement(); e; e = e->NextSiblingElement())
   {

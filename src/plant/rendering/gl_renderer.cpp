@@ -13,57 +13,120 @@ namespace bullet_plant
 {
 namespace
 {
-const char* const kVertexShader = R"(#version 300 es
+// The light is worked out per vertex: on a flat face every vertex has the face's normal and sees
+// the same side of it (n . (p - camera) is the same for every point p of the plane), so the face's
+// lit value is exact; on a curved surface's fine facets it is interpolated between the surface's
+// normals. The face the camera sees is lit by the directional light over the ambient term. The
+// depth along the optical axis and the shadow maps' coordinates are affine in the position, so
+// their perspective-correct interpolation is exact.
+// The camera program's shaders, after "#version 300 es" and the defines STATIC_SHADOWS and
+// MOVING_SHADOWS (0 or 1): a frame without shadows pays nothing for them.
+const char* const kVertexShader = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec4 colour;
 layout(location = 3) in vec2 uv;
 uniform mat4 clip_from_body;
 uniform mat4 world_from_body;
-out vec3 world_position;
-out vec3 world_normal;
+uniform vec3 camera_origin;
+uniform vec3 camera_forward;
+uniform vec3 towards_light;
+uniform float ambient;
+out float diffuse;
+out float depth_along_axis;
 out vec2 texture_uv;
 flat out vec4 face_colour;
+#if STATIC_SHADOWS
+uniform mat4 static_shadow_from_world;
+out vec3 static_shadow_coordinates;
+#endif
+#if MOVING_SHADOWS
+uniform mat4 moving_shadow_from_world;
+out vec3 moving_shadow_coordinates;
+#endif
 void main()
 {
+  vec4 world = world_from_body * vec4(position, 1.0);
+  vec3 ray = world.xyz - camera_origin;
+  vec3 world_normal = mat3(world_from_body) * normal;
+  float length_n = length(world_normal);
+  float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
+  diffuse = (1.0 - ambient) * (length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_light) / length_n) : 0.0);
+  depth_along_axis = dot(ray, camera_forward);
+#if STATIC_SHADOWS
+  static_shadow_coordinates = (static_shadow_from_world * world).xyz;
+#endif
+#if MOVING_SHADOWS
+  moving_shadow_coordinates = (moving_shadow_from_world * world).xyz;
+#endif
   texture_uv = uv;
-  world_position = (world_from_body * vec4(position, 1.0)).xyz;
-  world_normal = mat3(world_from_body) * normal;
   face_colour = colour;
   gl_Position = clip_from_body * vec4(position, 1.0);
 }
 )";
 
-// The face the camera sees lit by the directional light over the
-// ambient term, rounded to bytes by the GL (the noise is added on the CPU), and the depth along
-// the optical axis into a float attachment, read back only when wanted.
-const char* const kFragmentShader = R"(#version 300 es
+// The colour rounded to bytes by the GL (the noise is added on the CPU), and the depth into a float
+// attachment, read back only when wanted. In a shadow the light's diffuse share is gone and the
+// ambient stays (Gazebo's shading); a shadow map's lookup is the 2 x 2 texels' comparisons,
+// filtered (hardware PCF, as Gazebo's), and what lies outside a map is not shadowed by it.
+const char* const kFragmentShader = R"(
 precision highp float;
-in vec3 world_position;
-in vec3 world_normal;
+precision highp sampler2DShadow;
+in float diffuse;
+in float depth_along_axis;
 in vec2 texture_uv;
 flat in vec4 face_colour;
 uniform sampler2D image;
 uniform bool textured;
-uniform vec3 camera_origin;
-uniform vec3 camera_forward;
-uniform vec3 towards_light;
 uniform float ambient;
+#if STATIC_SHADOWS
+in vec3 static_shadow_coordinates;
+uniform sampler2DShadow static_shadow;
+#endif
+#if MOVING_SHADOWS
+in vec3 moving_shadow_coordinates;
+uniform sampler2DShadow moving_shadow;
+#endif
 layout(location = 0) out vec4 colour;
 layout(location = 1) out float depth;
+float lightThrough(sampler2DShadow map, vec3 at)
+{
+  if (at.x < 0.0 || at.x > 1.0 || at.y < 0.0 || at.y > 1.0 || at.z < 0.0)
+    return 1.0;
+  return texture(map, vec3(at.xy, min(at.z, 1.0)));  // beyond the map's depth: behind what it holds
+}
 void main()
 {
-  vec3 ray = world_position - camera_origin;
-  float length_n = length(world_normal);
-  float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
-  float diffuse = length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_light) / length_n) : 0.0;
-  float lit = ambient + (1.0 - ambient) * diffuse;
+  float light = 1.0;
+#if STATIC_SHADOWS || MOVING_SHADOWS
+  if (diffuse > 0.0)
+  {
+#if STATIC_SHADOWS
+    light *= lightThrough(static_shadow, static_shadow_coordinates);
+#endif
+#if MOVING_SHADOWS
+    light *= lightThrough(moving_shadow, moving_shadow_coordinates);
+#endif
+  }
+#endif
   // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
   vec3 base = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)).rgb : face_colour.rgb;
-  colour = vec4(base * lit, 1.0);
-  depth = dot(ray, camera_forward);
+  colour = vec4(base * (ambient + diffuse * light), 1.0);
+  depth = depth_along_axis;
 }
 )";
+
+// What the light sees, for the shadow maps: depth only.
+const char* const kShadowVertexShader = R"(#version 300 es
+layout(location = 0) in vec3 position;
+uniform mat4 light_clip_from_body;
+void main() { gl_Position = light_clip_from_body * vec4(position, 1.0); }
+)";
+const char* const kShadowFragmentShader = R"(#version 300 es
+void main() {}
+)";
+
+constexpr int kMipmapLevels = 5;  // below the image itself, as Gazebo asks OGRE for
 
 // Throws with the GL's log when a shader did not compile or a program did not link.
 template <class GetStatus, class GetLog>
@@ -85,6 +148,20 @@ unsigned compile(unsigned kind, const char* source)
   glCompileShader(shader);
   requireBuilt(shader, GL_COMPILE_STATUS, glGetShaderiv, glGetShaderInfoLog, "shader does not compile");
   return shader;
+}
+
+unsigned link(const std::string& vertex_source, const std::string& fragment_source)
+{
+  const unsigned vertex = compile(GL_VERTEX_SHADER, vertex_source.c_str());
+  const unsigned fragment = compile(GL_FRAGMENT_SHADER, fragment_source.c_str());
+  const unsigned program = glCreateProgram();
+  glAttachShader(program, vertex);
+  glAttachShader(program, fragment);
+  glLinkProgram(program);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  requireBuilt(program, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, "program does not link");
+  return program;
 }
 
 // Column-major 4 x 4, as GL takes it.
@@ -315,30 +392,36 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
     throw std::runtime_error("the GL (" + context.renderer() +
                              ") cannot render into float colour buffers (GL_EXT_color_buffer_float): no depth images");
   }
-  const unsigned vertex = compile(GL_VERTEX_SHADER, kVertexShader), fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vertex);
-  glAttachShader(program_, fragment);
-  glLinkProgram(program_);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
   try
   {
-    requireBuilt(program_, GL_LINK_STATUS, glGetProgramiv, glGetProgramInfoLog, "program does not link");
+    for (int variant = 0; variant < 4; ++variant)
+    {
+      CameraProgram& p = camera_programs_[variant];
+      const std::string defines = std::string("#version 300 es\n#define STATIC_SHADOWS ") + char('0' + (variant & 1)) +
+                                  "\n#define MOVING_SHADOWS " + char('0' + (variant >> 1)) + "\n";
+      p.program = link(defines + kVertexShader, defines + kFragmentShader);
+      for (const auto& u : {std::make_pair(&p.clip_from_body, "clip_from_body"),
+                            std::make_pair(&p.world_from_body, "world_from_body"),
+                            std::make_pair(&p.textured, "textured"), std::make_pair(&p.image, "image"),
+                            std::make_pair(&p.camera_origin, "camera_origin"),
+                            std::make_pair(&p.camera_forward, "camera_forward"),
+                            std::make_pair(&p.towards_light, "towards_light"), std::make_pair(&p.ambient, "ambient"),
+                            std::make_pair(&p.static_shadow_from_world, "static_shadow_from_world"),
+                            std::make_pair(&p.moving_shadow_from_world, "moving_shadow_from_world"),
+                            std::make_pair(&p.static_shadow, "static_shadow"),
+                            std::make_pair(&p.moving_shadow, "moving_shadow")})
+        *u.first = glGetUniformLocation(p.program, u.second);
+    }
+    shadow_program_ = link(kShadowVertexShader, kShadowFragmentShader);
   }
   catch (const std::runtime_error&)
   {
     context_.release();
     throw;
   }
-  for (const auto& u : {std::make_pair(&uniforms_.clip_from_body, "clip_from_body"),
-                        std::make_pair(&uniforms_.world_from_body, "world_from_body"),
-                        std::make_pair(&uniforms_.textured, "textured"), std::make_pair(&uniforms_.image, "image"),
-                        std::make_pair(&uniforms_.camera_origin, "camera_origin"),
-                        std::make_pair(&uniforms_.camera_forward, "camera_forward"),
-                        std::make_pair(&uniforms_.towards_light, "towards_light"),
-                        std::make_pair(&uniforms_.ambient, "ambient")})
-    *u.first = glGetUniformLocation(program_, u.second);
+  light_clip_from_body_ = glGetUniformLocation(shadow_program_, "light_clip_from_body");
+  static_shadow_.size = kStaticShadowMapSize;
+  moving_shadow_.size = kMovingShadowMapSize;
   context_.release();
 }
 
@@ -358,7 +441,14 @@ GlRenderer::~GlRenderer()
     glDeleteRenderbuffers(3, buffers);
     glDeleteFramebuffers(1, &t.framebuffer);
   }
-  glDeleteProgram(program_);
+  for (ShadowMap* map : {&static_shadow_, &moving_shadow_})
+  {
+    glDeleteTextures(1, &map->texture);
+    glDeleteFramebuffers(1, &map->framebuffer);
+  }
+  for (const CameraProgram& p : camera_programs_)
+    glDeleteProgram(p.program);
+  glDeleteProgram(shadow_program_);
   context_.release();
 }
 
@@ -386,6 +476,12 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
     }
   }
   Mesh mesh;
+  mesh.vertex_count = int(3 * count);
+  for (size_t k = 0; k < triangles.xyz.size(); ++k)
+  {
+    mesh.lo[k % 3] = std::min(mesh.lo[k % 3], double(triangles.xyz[k]));
+    mesh.hi[k % 3] = std::max(mesh.hi[k % 3], double(triangles.xyz[k]));
+  }
   for (size_t t = 0; t < count; ++t)
   {
     const unsigned texture = triangles.texture.empty() ? 0 : textureOf(triangles.texture[t]);
@@ -413,7 +509,8 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   return int(meshes_.size()) - 1;
 }
 
-// The ray caster's sampling: the nearest texel, repeating, no mipmaps.
+// Gazebo's sampling (rendering/RenderEngine.cc: five mipmap levels, OGRE's TFO_ANISOTROPIC at its
+// default anisotropy of 1): trilinear, repeating.
 unsigned GlRenderer::textureOf(const std::shared_ptr<const Texture>& image)
 {
   if (!image)
@@ -426,12 +523,188 @@ unsigned GlRenderer::textureOf(const std::shared_ptr<const Texture>& image)
   glBindTexture(GL_TEXTURE_2D, id);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, image->width, image->height, 0, GL_RGB, GL_UNSIGNED_BYTE, image->rgb.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, kMipmapLevels);
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
   textures_.emplace_back(image, id);
   return id;
+}
+
+namespace
+{
+// A 4 x 4 in double, row major, for the matrices worked out before they go to the GL as floats.
+using Matrix4d = std::array<std::array<double, 4>, 4>;
+
+Matrix4d fromFrameDouble(const Frame& f)
+{
+  Matrix4d m{};
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+      m[r][c] = f.R[3 * r + c];
+    m[r][3] = f.t[r];
+  }
+  m[3][3] = 1;
+  return m;
+}
+
+Matrix4d operator*(const Matrix4d& a, const Matrix4d& b)
+{
+  Matrix4d m{};
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 4; ++k)
+        m[r][c] += a[r][k] * b[k][c];
+  return m;
+}
+
+Matrix4 toGl(const Matrix4d& m)
+{
+  Matrix4 out;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      out.at(r, c) = float(m[r][c]);
+  return out;
+}
+
+// The directional light's view of `corners` (world points): an orthographic projection along the
+// light's travel that holds them all. clip_from_world draws into a shadow map; texture_from_world
+// looks a world point up in it (x, y and depth in [0, 1]), its depth moved kShadowBias towards the
+// light, so a lit surface does not shadow itself.
+struct LightView
+{
+  Matrix4d clip_from_world, texture_from_world;
+};
+constexpr double kShadowBias = 0.004;  // m
+constexpr double kShadowMargin = 0.01;  // m, about the casters on every side
+
+LightView lightView(const double towards_light[3], const std::vector<std::array<double, 3>>& corners)
+{
+  const double w[3] = {-towards_light[0], -towards_light[1], -towards_light[2]};
+  const double a[3] = {std::fabs(w[2]) < 0.9 ? 0.0 : 1.0, 0.0, std::fabs(w[2]) < 0.9 ? 1.0 : 0.0};
+  double u[3] = {w[1] * a[2] - w[2] * a[1], w[2] * a[0] - w[0] * a[2], w[0] * a[1] - w[1] * a[0]};
+  const double n = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for (double& x : u)
+    x /= n;
+  const double v[3] = {w[1] * u[2] - w[2] * u[1], w[2] * u[0] - w[0] * u[2], w[0] * u[1] - w[1] * u[0]};
+  const double* axes[3] = {u, v, w};
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const auto& p : corners)
+    for (int i = 0; i < 3; ++i)
+    {
+      const double d = axes[i][0] * p[0] + axes[i][1] * p[1] + axes[i][2] * p[2];
+      lo[i] = std::min(lo[i], d - kShadowMargin);
+      hi[i] = std::max(hi[i], d + kShadowMargin);
+    }
+  LightView view{};
+  for (int i = 0; i < 3; ++i)
+  {
+    const double scale = 1.0 / (hi[i] - lo[i]);
+    for (int c = 0; c < 3; ++c)
+    {
+      view.clip_from_world[i][c] = 2 * scale * axes[i][c];
+      view.texture_from_world[i][c] = scale * axes[i][c];
+    }
+    view.clip_from_world[i][3] = -2 * scale * lo[i] - 1;
+    view.texture_from_world[i][3] = -scale * lo[i] - (i == 2 ? kShadowBias * scale : 0.0);
+  }
+  view.clip_from_world[3][3] = view.texture_from_world[3][3] = 1;
+  return view;
+}
+}  // namespace
+
+bool GlRenderer::drawShadowMap(ShadowMap& map, const std::vector<Draw>& draws, bool moving, const Lighting& lighting)
+{
+  std::vector<std::array<double, 3>> corners;
+  for (const Draw& d : draws)
+  {
+    if (!d.casts_shadow || d.moves != moving)
+      continue;
+    const Mesh& mesh = meshes_.at(size_t(d.mesh));
+    for (int k = 0; k < 8; ++k)
+    {
+      const double in[3] = {k & 1 ? mesh.hi[0] : mesh.lo[0], k & 2 ? mesh.hi[1] : mesh.lo[1], k & 4 ? mesh.hi[2] : mesh.lo[2]};
+      std::array<double, 3> at;
+      d.world_from_body.apply(in, at.data());
+      if (std::isfinite(at[0]) && std::isfinite(at[1]) && std::isfinite(at[2]) && std::fabs(at[0]) < 1e6 &&
+          std::fabs(at[1]) < 1e6 && std::fabs(at[2]) < 1e6)
+        corners.push_back(at);
+    }
+  }
+  if (corners.empty())
+    return false;
+  const LightView view = lightView(lighting.towards_light, corners);
+  if (!map.texture)
+  {
+    glGenTextures(1, &map.texture);
+    glBindTexture(GL_TEXTURE_2D, map.texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT32F, map.size, map.size, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glGenFramebuffers(1, &map.framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, map.texture, 0);
+    const GLenum none = GL_NONE;
+    glDrawBuffers(1, &none);
+    glReadBuffer(GL_NONE);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer);
+  glViewport(0, 0, map.size, map.size);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  const float farthest = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &farthest);
+  // a face's depth pushed back by its slope across a texel: its own map texels do not shadow it
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(2.0f, 2.0f);
+  glUseProgram(shadow_program_);
+  for (const Draw& d : draws)
+  {
+    if (!d.casts_shadow || d.moves != moving)
+      continue;
+    const Mesh& mesh = meshes_.at(size_t(d.mesh));
+    glUniformMatrix4fv(light_clip_from_body_, 1, GL_FALSE,
+                       toGl(view.clip_from_world * fromFrameDouble(d.world_from_body)).m);
+    glBindVertexArray(mesh.vertex_array);
+    glDrawArrays(GL_TRIANGLES, 0, mesh.vertex_count);
+  }
+  glBindVertexArray(0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  const Matrix4 texture_from_world = toGl(view.texture_from_world);
+  std::copy(texture_from_world.m, texture_from_world.m + 16, map.texture_from_world);
+  return true;
+}
+
+// Each map is drawn again only when its casters or the light changed: the static casters' once,
+// the moving ones' when a body moved (not for a second camera in the same step, nor while the
+// robots stand), fitted to them.
+void GlRenderer::drawShadowMaps(const std::vector<Draw>& draws, const Lighting& lighting)
+{
+  for (const bool moving : {false, true})
+  {
+    ShadowMap& map = moving ? moving_shadow_ : static_shadow_;
+    std::vector<double> key(lighting.towards_light, lighting.towards_light + 3);
+    for (const Draw& d : draws)
+      if (d.moves == moving && d.casts_shadow)
+      {
+        key.push_back(d.mesh);
+        key.insert(key.end(), d.world_from_body.R, d.world_from_body.R + 9);
+        key.insert(key.end(), d.world_from_body.t, d.world_from_body.t + 3);
+      }
+    if (key != map.key)
+    {
+      map.used = drawShadowMap(map, draws, moving, lighting);
+      map.key = key;
+    }
+  }
 }
 
 const GlRenderer::Target& GlRenderer::target(int width, int height)
@@ -470,6 +743,8 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
                         const Lighting& lighting, PinholeImage& out)
 {
   context_.makeCurrent();
+  if (lighting.shadows)
+    drawShadowMaps(draws, lighting);
   const Target& frame = target(camera.width, camera.height);
   glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
   glViewport(0, 0, camera.width, camera.height);
@@ -487,24 +762,41 @@ void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const
     glClearBufferfv(GL_COLOR, 1, no_depth);
   const float farthest = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farthest);
-  glUseProgram(program_);
+  const bool static_shadows = lighting.shadows && static_shadow_.used;
+  const bool moving_shadows = lighting.shadows && moving_shadow_.used;
+  const CameraProgram& program = camera_programs_[int(static_shadows) + 2 * int(moving_shadows)];
+  glUseProgram(program.program);
   const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
-  glUniform3f(uniforms_.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
-  glUniform3fv(uniforms_.camera_forward, 1, forward);
-  glUniform3f(uniforms_.towards_light, float(lighting.towards_light[0]), float(lighting.towards_light[1]),
+  glUniform3f(program.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
+  glUniform3fv(program.camera_forward, 1, forward);
+  glUniform3f(program.towards_light, float(lighting.towards_light[0]), float(lighting.towards_light[1]),
               float(lighting.towards_light[2]));
-  glUniform1f(uniforms_.ambient, float(lighting.ambient));
-  glUniform1i(uniforms_.image, 0);
+  glUniform1f(program.ambient, float(lighting.ambient));
+  glUniform1i(program.image, 0);
+  if (static_shadows)
+  {
+    glUniform1i(program.static_shadow, 1);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, static_shadow_.texture);
+    glUniformMatrix4fv(program.static_shadow_from_world, 1, GL_FALSE, static_shadow_.texture_from_world);
+  }
+  if (moving_shadows)
+  {
+    glUniform1i(program.moving_shadow, 2);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, moving_shadow_.texture);
+    glUniformMatrix4fv(program.moving_shadow_from_world, 1, GL_FALSE, moving_shadow_.texture_from_world);
+  }
   glActiveTexture(GL_TEXTURE0);
   for (const Draw& d : draws)
   {
     const Mesh& mesh = meshes_.at(size_t(d.mesh));
-    glUniformMatrix4fv(uniforms_.clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, camera).m);
-    glUniformMatrix4fv(uniforms_.world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
+    glUniformMatrix4fv(program.clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, camera).m);
+    glUniformMatrix4fv(program.world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
     glBindVertexArray(mesh.vertex_array);
     for (const Run& run : mesh.runs)
     {
-      glUniform1i(uniforms_.textured, run.texture != 0);
+      glUniform1i(program.textured, run.texture != 0);
       glBindTexture(GL_TEXTURE_2D, run.texture);
       glDrawArrays(GL_TRIANGLES, run.first, run.count);
     }

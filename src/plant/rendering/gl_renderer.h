@@ -6,6 +6,7 @@
 // attachment (exact where a depth buffer is not), +inf where nothing is drawn within the clip range.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -57,10 +58,14 @@ public:
   {
     int mesh;
     Frame world_from_body;
+    bool moves = true;         // false: where it was last frame (the static shadow map is kept)
+    bool casts_shadow = true;  // false: only receives shadows (a ground plane)
   };
   // The frame of `camera` at `pose` (x forward, y left, z up; the optical frame is z forward, x
   // right, y down): rgb8 rounded by the GL, then the camera's noise (noisyRgbFromRgba); depth in
-  // metres when camera.depth, else none.
+  // metres when camera.depth, else none. With lighting.shadows, the draws that cast shadows do so
+  // from the directional light: two shadow maps, the static draws' (drawn again only when they or
+  // the light change) and the moving ones' (every frame, fitted to them).
   void render(const std::vector<Draw>& draws, const Frame& pose, const PinholeCamera& camera, const Lighting& lighting,
               PinholeImage& out);
 
@@ -73,8 +78,25 @@ private:
   struct Mesh
   {
     unsigned vertex_array = 0, buffer = 0;
+    int vertex_count = 0;
     std::vector<Run> runs;
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};  // bounds, body frame
   };
+  struct ShadowMap  // depth from the light, compared on lookup (sampler2DShadow)
+  {
+    int size = 0;
+    unsigned texture = 0, framebuffer = 0;
+    bool used = false;                 // it holds casters
+    float texture_from_world[16] = {};  // column major: x, y, depth in [0, 1]
+    std::vector<double> key;            // the light and the casters' meshes and poses it holds
+  };
+  // Gazebo's shadow texture size for the world; a robot's map is fitted to the robots (a 0.5 m car
+  // at 1 mm a texel), and drawing it costs a frame of its size whenever a robot moves.
+  static constexpr int kStaticShadowMapSize = 2048;
+  static constexpr int kMovingShadowMapSize = 512;
+  // Draws the casters of `draws` that move (or not) into `map`; false when there are none.
+  bool drawShadowMap(ShadowMap& map, const std::vector<Draw>& draws, bool moving, const Lighting& lighting);
+  void drawShadowMaps(const std::vector<Draw>& draws, const Lighting& lighting);
   // An off-screen framebuffer of one size: a world's cameras of different sizes each draw into
   // their own, made once (renderbuffer storage is allocated and cleared by the driver).
   struct Target
@@ -86,11 +108,16 @@ private:
   const Target& target(int width, int height);
 
   const GlContext& context_;
-  unsigned program_ = 0;
-  struct
+  struct CameraProgram  // a variant of the camera's program and its uniforms' locations
   {
+    unsigned program = 0;
     int clip_from_body, world_from_body, textured, image, camera_origin, camera_forward, towards_light, ambient;
-  } uniforms_;  // the program's uniform locations
+    int static_shadow_from_world, moving_shadow_from_world, static_shadow, moving_shadow;  // -1: not in it
+  };
+  CameraProgram camera_programs_[4];  // [static shadows + 2 * moving shadows]
+  unsigned shadow_program_ = 0;
+  int light_clip_from_body_ = -1;  // the shadow program's
+  ShadowMap static_shadow_, moving_shadow_;
   std::vector<Target> targets_;
   std::vector<Mesh> meshes_;
   std::vector<std::pair<std::shared_ptr<const Texture>, unsigned>> textures_;  // uploaded once each

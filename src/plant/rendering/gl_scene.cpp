@@ -2,12 +2,12 @@
 
 namespace bullet_plant
 {
-GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes)
+GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes, Planes planes)
 {
   std::vector<GlTriangles> each;
   bool any_textured = false;
   for (const RayPrimitive& p : shapes)
-    if (p.seen_by & kSeenByCameras)
+    if ((p.seen_by & kSeenByCameras) && (planes == Planes::Included || (p.kind == Shape::Kind::Plane) == (planes == Planes::Only)))
     {
       each.push_back(glTrianglesOf(p));
       any_textured = any_textured || !each.back().texture.empty();
@@ -39,14 +39,16 @@ GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes)
 GlScene::GlScene(const GlContext& context, const std::vector<RayPrimitive>& world_shapes)
   : context_(context), renderer_(context)
 {
-  const GlTriangles world = camerasView(world_shapes);
-  bodies_.push_back(Body{nullptr, world.xyz.empty() ? -1 : renderer_.addMesh(world), Frame()});
+  // The world's planes receive shadows and cast none (nothing is below them); its other shapes cast.
+  const GlTriangles world = camerasView(world_shapes, Planes::Excluded), planes = camerasView(world_shapes, Planes::Only);
+  bodies_.push_back(Body{nullptr, world.xyz.empty() ? -1 : renderer_.addMesh(world), Frame(), false, true});
+  bodies_.push_back(Body{nullptr, planes.xyz.empty() ? -1 : renderer_.addMesh(planes), Frame(), false, false});
 }
 
 int GlScene::addBody(const void* owner, const std::vector<RayPrimitive>& shapes)
 {
-  const GlTriangles body = camerasView(shapes);
-  bodies_.push_back(Body{owner, body.xyz.empty() ? -1 : renderer_.addMesh(body), Frame()});
+  const GlTriangles body = camerasView(shapes, Planes::Included);
+  bodies_.push_back(Body{owner, body.xyz.empty() ? -1 : renderer_.addMesh(body), Frame(), true, true});
   return int(bodies_.size()) - 1;
 }
 
@@ -65,7 +67,7 @@ void GlScene::renderPinhole(const Frame& pose, const PinholeCamera& camera, cons
   draws_.clear();
   for (const Body& b : bodies_)
     if (b.mesh >= 0 && !(hidden && b.owner == hidden))
-      draws_.push_back(GlRenderer::Draw{b.mesh, b.pose});
+      draws_.push_back(GlRenderer::Draw{b.mesh, b.pose, b.moves, b.casts_shadow});
   renderer_.render(draws_, pose, camera, lighting, out);
 }
 

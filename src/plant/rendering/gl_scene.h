@@ -33,12 +33,16 @@ private:
     const void* owner;
     int mesh;  // -1: nothing cameras see, or removed
     Frame pose;
+    bool moves;         // a robot's body; the world's never move
+    bool casts_shadow;  // the world's planes do not
   };
-  static GlTriangles camerasView(const std::vector<RayPrimitive>& shapes);
+  enum class Planes { Included, Excluded, Only };
+  // The triangles cameras see of `shapes` (visuals), with their planes or without, or only those.
+  static GlTriangles camerasView(const std::vector<RayPrimitive>& shapes, Planes planes);
 
   const GlContext& context_;
   GlRenderer renderer_;
-  std::vector<Body> bodies_;  // [0]: the world's static shapes
+  std::vector<Body> bodies_;  // [0]: the world's static shapes but planes, [1]: its planes; robots' bodies
   std::vector<GlRenderer::Draw> draws_;
 };
 

@@ -21,7 +21,8 @@ struct Lighting
   double towards_light[3] = {0.5, -0.1, 0.9};  // unit
   double ambient = 0.35;
   float background[3] = {0.70f, 0.80f, 0.95f};
-  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background);
+  bool shadows = true;  // the light's shadows (<scene><shadows>, true by default as in Gazebo)
+  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows);
 };
 
 // A pinhole camera's frame: its pixels (centres at integer coordinates u right, v down from the
@@ -31,12 +32,13 @@ struct PinholeCamera
   int width = 0, height = 0;
   double fx = 0, fy = 0, cx = 0, cy = 0;
   double near = 0, far = 100;  // clip distances along the optical axis
-  // Gaussian noise added to each colour value, in whole levels of 1/255 (null: none): the frame's
-  // k-th value (three per pixel, in image order) takes noise[noise_offset + k]. The camera draws the
-  // samples once (noiseSamples) and the offset per frame from its own generator, so frames are the
-  // same on every run, and each pixel's noise differs from frame to frame.
+  // Gaussian noise added to each pixel, in whole levels of 1/255 (null: none): the frame's k-th
+  // pixel (in image order) takes noise[noise_offset + k] on its red, green and blue alike, as
+  // Gazebo's camera noise shader adds one sample to the three. The camera draws the samples once
+  // (noiseSamples) and the offset per frame from its own generator, so frames are the same on every
+  // run, and each pixel's noise differs from frame to frame.
   static constexpr size_t kNoiseOffsets = 4096;
-  const int16_t* noise = nullptr;  // noise_offset + 3 * width * height samples at least
+  const int16_t* noise = nullptr;  // noise_offset + width * height samples at least
   size_t noise_offset = 0;
   // Whether the frame's depths are wanted (a colour camera's are not): a renderer may skip them.
   bool depth = true;
@@ -54,13 +56,14 @@ template <class Draw>
 std::vector<int16_t> noiseSamples(size_t pixels, Draw draw);
 
 // The camera's frame of colours (three bytes a pixel, rows from the top) from its RGBA pixels (as a
-// GL reads them back), the noise added: each value v becomes clamp(v + its sample, 0, 255).
+// GL reads them back), the noise added: each value v becomes clamp(v + its pixel's sample, 0, 255)
+// (after the GL's rounding to bytes, as Gazebo adds its noise to the 8-bit frame).
 void noisyRgbFromRgba(const PinholeCamera& camera, const uint8_t* rgba, uint8_t* rgb8);
 
 template <class Draw>
 std::vector<int16_t> noiseSamples(size_t pixels, Draw draw)
 {
-  std::vector<int16_t> samples(3 * pixels + PinholeCamera::kNoiseOffsets);
+  std::vector<int16_t> samples(pixels + PinholeCamera::kNoiseOffsets);
   for (int16_t& s : samples)
   {
     const double level = 255.0 * draw();

@@ -453,7 +453,7 @@ GlScene* World::Internals::glScene()
 
 Lighting World::Internals::lighting() const
 {
-  return Lighting::of(description.light_direction, description.ambient, description.background);
+  return Lighting::of(description.light_direction, description.ambient, description.background, description.shadows);
 }
 
 double World::castRay(const urdf::Vector3& origin, const urdf::Vector3& dir, double max_range, const Robot* exclude) const
