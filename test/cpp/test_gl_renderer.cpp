@@ -274,6 +274,16 @@ void expectAgreement(const PinholeImage& rasterized, const RayFrame& cast, const
               close, compared, worst_depth);
 }
 
+// `shapes` uploaded as the world's draws, as GlScene draws them: never moving, planes casting no
+// shadow.
+std::vector<GlRenderer::Draw> worldDraws(GlRenderer& renderer, const std::vector<RayPrimitive>& shapes)
+{
+  std::vector<GlRenderer::Draw> draws;
+  for (const RayPrimitive& p : shapes)
+    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
+  return draws;
+}
+
 // Renders `shapes` (the world's) both ways from kCamera.
 void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name,
                            const PinholeCamera& camera = pinhole())
@@ -281,9 +291,7 @@ void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* 
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
-  std::vector<GlRenderer::Draw> draws;
-  for (const RayPrimitive& p : shapes)
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
+  const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, shapes);
   const Lighting lighting;
   PinholeImage rasterized;
   renderer.render(draws, kCamera, camera, lighting, rasterized);
@@ -311,9 +319,7 @@ TEST(GlRenderer, CameraNoiseIsTheSamplesFromTheFramesOffset)
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
-  std::vector<GlRenderer::Draw> draws;
-  for (const RayPrimitive& p : scene())
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
+  const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, scene());
   PinholeCamera camera = pinhole();
   PinholeImage clean, noisy, again, other;
   renderer.render(draws, kCamera, camera, Lighting(), clean);
@@ -396,7 +402,7 @@ TEST(GlRenderer, MinifiedTexturesShowTheirMipmapsMean)
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
   const std::vector<GlRenderer::Draw> draws = {
-      {renderer.addMesh(glTrianglesOf(RayPrimitive::fromMesh(floor, urdf::Pose(), nullptr))), Frame()}};
+      {renderer.addMesh(glTrianglesOf(RayPrimitive::fromMesh(floor, urdf::Pose(), nullptr))), Frame(), false, false}};
   const Lighting lighting;
   PinholeImage image;
   // 20 m up looking straight down: a pixel spans 0.17 m, 43 texels of 3.9 mm
@@ -458,9 +464,7 @@ TEST(GlRenderer, ACameraPoseThatIsNotFiniteShowsNothing)
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
-  std::vector<GlRenderer::Draw> draws;
-  for (const RayPrimitive& p : scene())
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
+  const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, scene());
   const Lighting lighting;
   PinholeImage nothing;  // the background alone, as the GL rounds it
   renderer.render({}, kCamera, pinhole(), lighting, nothing);
@@ -482,9 +486,7 @@ TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
-  std::vector<GlRenderer::Draw> draws;
-  for (const RayPrimitive& p : scene())
-    draws.push_back({renderer.addMesh(glTrianglesOf(p)), Frame(), false, p.kind != Shape::Kind::Plane});
+  const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, scene());
   PinholeImage first, second;
   renderer.render(draws, kCamera, pinhole(), Lighting(), first);
   renderer.render(draws, kCamera, pinhole(), Lighting(), second);
