@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace bullet_plant
 {
 Lighting Lighting::of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows)
@@ -19,6 +23,42 @@ Lighting Lighting::of(const urdf::Vector3& light_direction, double ambient, cons
   return l;
 }
 
+void detail::noisyRgbFromRgbaEach(const int16_t* samples, const uint8_t* rgba, uint8_t* rgb8, size_t pixels)
+{
+  for (size_t k = 0; k < pixels; ++k, rgb8 += 3, rgba += 4)
+    for (int c = 0; c < 3; ++c)
+    {
+      const int value = rgba[c] + samples[k];
+      rgb8[c] = uint8_t(value < 0 ? 0 : value > 255 ? 255 : value);
+    }
+}
+
+#if defined(__SSE2__)
+void detail::noisyRgbFromRgbaSse2(const int16_t* samples, const uint8_t* rgba, uint8_t* rgb8, size_t pixels)
+{
+  // v + s clamped to 0..255 is (v + max(s, 0)) - max(-s, 0), each saturating on bytes: four pixels'
+  // bytes at once, each pixel's sample spread over its four bytes.
+  const __m128i zero = _mm_setzero_si128();
+  size_t k = 0;
+  for (; k + 4 <= pixels; k += 4)
+  {
+    const __m128i s = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(samples + k));
+    __m128i up = _mm_max_epi16(s, zero), down = _mm_max_epi16(_mm_sub_epi16(zero, s), zero);
+    up = _mm_packus_epi16(up, up);
+    down = _mm_packus_epi16(down, down);
+    up = _mm_unpacklo_epi16(_mm_unpacklo_epi8(up, up), _mm_unpacklo_epi8(up, up));
+    down = _mm_unpacklo_epi16(_mm_unpacklo_epi8(down, down), _mm_unpacklo_epi8(down, down));
+    const __m128i pixels4 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(rgba + 4 * k));
+    alignas(16) uint8_t out[16];
+    _mm_store_si128(reinterpret_cast<__m128i*>(out), _mm_subs_epu8(_mm_adds_epu8(pixels4, up), down));
+    uint8_t* o = rgb8 + 3 * k;
+    for (int p = 0; p < 4; ++p)
+      o[3 * p] = out[4 * p], o[3 * p + 1] = out[4 * p + 1], o[3 * p + 2] = out[4 * p + 2];
+  }
+  noisyRgbFromRgbaEach(samples + k, rgba + 4 * k, rgb8 + 3 * k, pixels - k);
+}
+#endif
+
 void noisyRgbFromRgba(const PinholeCamera& camera, const uint8_t* rgba, uint8_t* rgb8)
 {
   const size_t pixels = size_t(camera.width) * size_t(camera.height);
@@ -30,13 +70,11 @@ void noisyRgbFromRgba(const PinholeCamera& camera, const uint8_t* rgba, uint8_t*
   }
   // One pass over the frame, the samples read in order: a frame's noise costs a stream of
   // memory, not a hash and a lookup per value.
-  const int16_t* samples = camera.noise + camera.noise_offset;
-  for (size_t k = 0; k < pixels; ++k, rgb8 += 3, rgba += 4)
-    for (int c = 0; c < 3; ++c)
-    {
-      const int value = rgba[c] + samples[k];
-      rgb8[c] = uint8_t(value < 0 ? 0 : value > 255 ? 255 : value);
-    }
+#if defined(__SSE2__)
+  detail::noisyRgbFromRgbaSse2(camera.noise + camera.noise_offset, rgba, rgb8, pixels);
+#else
+  detail::noisyRgbFromRgbaEach(camera.noise + camera.noise_offset, rgba, rgb8, pixels);
+#endif
 }
 
 }  // namespace bullet_plant

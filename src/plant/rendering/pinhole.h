@@ -60,6 +60,17 @@ std::vector<int16_t> noiseSamples(size_t pixels, Draw draw);
 // (after the GL's rounding to bytes, as Gazebo adds its noise to the 8-bit frame).
 void noisyRgbFromRgba(const PinholeCamera& camera, const uint8_t* rgba, uint8_t* rgb8);
 
+namespace detail
+{
+// noisyRgbFromRgba's two ways, for its test: a pixel at a time (the rule, any CPU), and four at a
+// time with SSE2 (x86-64's baseline; not built elsewhere), byte for byte the same. `samples` in
+// [-256, 256], one per pixel.
+void noisyRgbFromRgbaEach(const int16_t* samples, const uint8_t* rgba, uint8_t* rgb8, size_t pixels);
+#if defined(__SSE2__)
+void noisyRgbFromRgbaSse2(const int16_t* samples, const uint8_t* rgba, uint8_t* rgb8, size_t pixels);
+#endif
+}  // namespace detail
+
 template <class Draw>
 std::vector<int16_t> noiseSamples(size_t pixels, Draw draw)
 {
