@@ -138,7 +138,10 @@ int main(int argc, char** argv)
       const SensorDescription& d = c.camera->description();
       const Frame pose = sensorPose(r, d);
       report(c.name, 0, double(d.image_width) * d.image_height,
-             bestCost(frames, [&] { detail::SensorRendering::render(*c.camera, *gl, pose, lighting, 0); }));
+             bestCost(frames, [&] {
+               detail::SensorRendering::render(*c.camera, *gl, nullptr, pose, lighting, 0);  // now, on this thread
+               c.camera->collect(true);
+             }));
     }
   }
 

@@ -12,7 +12,7 @@ import sys
 import numpy as np
 import pytest
 
-from plant_helpers import make_world, sdf_world
+from plant_helpers import box_model, make_world, sdf_world
 from tianracer_description.urdf_geometry import _rpy_matrix
 
 BOX_CENTRE = (2.0, 0.1, 0.15)
@@ -241,3 +241,42 @@ def test_the_sun_casts_shadows_unless_the_scene_turns_them_off(control_config, u
     towards = -np.array([-0.5, 0.1, -0.9]) / np.linalg.norm([-0.5, 0.1, -0.9])
     share = 0.35 / (0.35 + 0.65 * towards[2])
     assert shaded[darker].mean() / lit[darker].mean() == pytest.approx(share, rel=0.03)
+
+
+def stepped_frames(control_config, urdf_xml, ahead):
+    """The car's camera and depth camera frames, and the frames counted, after each of 120 single
+    steps and at the end, with frames ahead (rendering while the following steps run) or not."""
+    world = make_world(control_config, sdf_world(box_model('box', BOX_SIZE, BOX_CENTRE)))
+    robot = world.spawn(urdf_xml, 'tianracer')
+    world.frames_ahead = ahead
+    robot.enable_sensor('camera')
+    robot.enable_sensor('depth_camera')
+    robot.controller_manager.spawn(['joint_state_controller', 'rear_left_velocity_controller',
+                                    'rear_right_velocity_controller'])
+    robot.controller_manager.command('rear_left_velocity_controller', 10.0)
+    robot.controller_manager.command('rear_right_velocity_controller', 10.0)
+    counts, frames = [], []
+    for _ in range(120):
+        world.step(1)
+        counts.append(robot.sensor_updates('camera'))
+        image = robot.image('camera')
+        frames.append(None if image is None else (image['stamp'], image['rgb'].tobytes()))
+    world.frames_ahead = False  # waits for the frames still rendering
+    last = robot.image('camera'), robot.image('depth_camera')
+    return counts + [robot.sensor_updates('camera')], frames, last
+
+
+def test_frames_rendered_while_the_simulation_goes_on_are_those_of_their_own_time(control_config, urdf_xml):
+    waited_counts, waited, (waited_rgb, waited_depth) = stepped_frames(control_config, urdf_xml, False)
+    ahead_counts, ahead, (ahead_rgb, ahead_depth) = stepped_frames(control_config, urdf_xml, True)
+    # the car drives on while the frames render: every frame, whenever it was collected, is the
+    # frame of its own time, byte for byte the one made waiting
+    assert waited_counts[-1] == ahead_counts[-1] == 4, 'frames at 30 Hz in 120 ms, all made in the end'
+    waited_by_stamp = {frame[0]: frame[1] for frame in waited if frame}
+    assert len(waited_by_stamp) == 4
+    for frame in ahead:
+        if frame:
+            assert waited_by_stamp[frame[0]] == frame[1]
+    assert all(a <= w for a, w in zip(ahead_counts, waited_counts)), 'a frame ahead is counted when it is done'
+    assert ahead_rgb['stamp'] == waited_rgb['stamp'] and np.array_equal(ahead_rgb['rgb'], waited_rgb['rgb'])
+    assert np.array_equal(ahead_depth['depth'], waited_depth['depth'], equal_nan=True)

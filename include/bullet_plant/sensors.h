@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -51,6 +52,9 @@ public:
   // Reads the simulation through `context` when a reading is due at `time_ns` (the robot calls it
   // for each active sensor every step).
   void updateIfDue(SensorContext& context, int64_t time_ns);
+  // A reading made elsewhere (a camera frame rendering while the simulation goes on) becomes the
+  // latest once it is done; with `wait`, this waits for it. The robot asks every step.
+  virtual void collect(bool wait) {}
 
 protected:
   // The reading at `time_ns`; false when the sensor could make none (a camera without OpenGL).
@@ -97,7 +101,9 @@ class Camera : public Sensor
 {
 public:
   Camera(const SensorDescription& d, uint32_t noise_seed);
+  ~Camera() override;
   bool update(SensorContext& context, int64_t time_ns) override;
+  void collect(bool wait) override;
   bool depthSensor() const { return description_.type == "depth"; }
   // gazebo_ros_openni_kinect publishes depths and points only within (pointCloudCutoff,
   // pointCloudCutoffMax), NaN elsewhere (defaults 0.4 and 5.0 m).
@@ -111,7 +117,8 @@ public:
 private:
   friend struct detail::SensorRendering;
   CameraFrame frame_;
-  std::vector<float> rendered_depth_;  // what the rays gave, kept from frame to frame
+  struct Rendering;  // the frame being rendered (sensor_rendering.h)
+  std::unique_ptr<Rendering> rendering_;
   std::vector<int16_t> noise_table_;   // the image noise's samples in levels of 1/255 (noiseSamples), drawn at the first frame
 };
 

@@ -57,7 +57,15 @@ public:
   Robot* robot(const std::string& name);
   std::vector<Robot*> robots();
 
+  // n physics steps. Camera frames due on the way render on a thread of their own while the
+  // following steps run (each from the bodies' poses at its own time); step returns once they are
+  // all done, unless frames ahead are allowed.
   void step(int n = 1);
+  // With `ahead`, step returns without waiting for frames still rendering: each becomes its camera's
+  // latest (Sensor::updates counts it) at a later step, once done. The node runs so; the Python
+  // module and the tests see every frame due by the time step returns.
+  void setFramesAhead(bool ahead);
+  bool framesAhead() const;
   // Paused: the node stops stepping; controller switches then apply at once.
   void setPaused(bool paused);
   bool paused() const;

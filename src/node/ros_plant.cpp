@@ -108,6 +108,9 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   private_nh_.param<std::string>("world_name", world_file, "");
   WorldDescription description = world_file.empty() ? emptyWorldDescription() : parseWorldFile(world_file);
   world_.reset(new World(description));
+  // Camera frames render while the following steps run and are published when done, stamped
+  // with their own time: the simulation does not stall on a frame.
+  world_->setFramesAhead(true);
   world_->log().setSink([](LogLevel level, const std::string& m) {
     switch (level)
     {

@@ -86,6 +86,13 @@ void init_world(py::module_& m)
          "mesh_uri and mesh_file (as written, as resolved), scale, mu")
       .def_property("echo", [](PyWorld& w) { return w.echo; }, [](PyWorld& w, bool on) { w.echo = on; },
                     "print warnings and errors to stderr as they happen (default True)")
+      .def_property("frames_ahead", [](PyWorld& w) { return w.world->framesAhead(); },
+                    [](PyWorld& w, bool ahead) {
+                      py::gil_scoped_release release;  // setting it False waits for the frames rendering
+                      w.world->setFramesAhead(ahead);
+                    },
+                    "camera frames still rendering when step() returns become the latest at a later step "
+                    "(default False: step() returns with every frame due made)")
       .def("messages", [](PyWorld& w, bool clear) {
         std::lock_guard<std::mutex> lock(w.mutex);
         std::vector<std::pair<std::string, std::string>> out(w.messages.begin(), w.messages.end());

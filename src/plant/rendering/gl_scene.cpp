@@ -48,6 +48,7 @@ GlScene::GlScene(const GlContext& context, const std::vector<RayPrimitive>& worl
 int GlScene::addBody(const void* owner, const std::vector<RayPrimitive>& shapes)
 {
   const GlTriangles body = camerasView(shapes, Planes::Included);
+  std::lock_guard<std::mutex> lock(gl_);
   bodies_.push_back(Body{owner, body.xyz.empty() ? -1 : renderer_.addMesh(body), Frame(), true, true});
   return int(bodies_.size()) - 1;
 }
@@ -61,14 +62,26 @@ void GlScene::removeOwner(const void* owner)
 
 void GlScene::setPose(int body, const Frame& world_from_body) { bodies_.at(size_t(body)).pose = world_from_body; }
 
+std::vector<GlRenderer::Draw> GlScene::snapshot(const void* hidden) const
+{
+  std::vector<GlRenderer::Draw> draws;
+  for (const Body& b : bodies_)
+    if (b.mesh >= 0 && !(hidden && b.owner == hidden))
+      draws.push_back(GlRenderer::Draw{b.mesh, b.pose, b.moves, b.casts_shadow});
+  return draws;
+}
+
+void GlScene::render(const std::vector<GlRenderer::Draw>& draws, const Frame& pose, const PinholeCamera& camera,
+                     const Lighting& lighting, PinholeImage& out)
+{
+  std::lock_guard<std::mutex> lock(gl_);
+  renderer_.render(draws, pose, camera, lighting, out);
+}
+
 void GlScene::renderPinhole(const Frame& pose, const PinholeCamera& camera, const Lighting& lighting, PinholeImage& out,
                             const void* hidden)
 {
-  draws_.clear();
-  for (const Body& b : bodies_)
-    if (b.mesh >= 0 && !(hidden && b.owner == hidden))
-      draws_.push_back(GlRenderer::Draw{b.mesh, b.pose, b.moves, b.casts_shadow});
-  renderer_.render(draws_, pose, camera, lighting, out);
+  render(snapshot(hidden), pose, camera, lighting, out);
 }
 
 }  // namespace bullet_plant

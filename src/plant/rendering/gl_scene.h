@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "rendering/gl_renderer.h"
@@ -22,7 +23,13 @@ public:
   void removeOwner(const void* owner);
   void setPose(int body, const Frame& world_from_body);
 
-  // GlRenderer::render of the world's and the robots' bodies, `hidden`'s left out (null: none).
+  // The bodies where they are now, `hidden`'s left out (null: none): what a frame draws, rendered
+  // then or later (on a FrameWorker) by render.
+  std::vector<GlRenderer::Draw> snapshot(const void* hidden = nullptr) const;
+  // GlRenderer::render of `draws`, from any thread: the GL is used by one at a time.
+  void render(const std::vector<GlRenderer::Draw>& draws, const Frame& pose, const PinholeCamera& camera,
+              const Lighting& lighting, PinholeImage& out);
+  // render of the snapshot, now.
   void renderPinhole(const Frame& pose, const PinholeCamera& camera, const Lighting& lighting, PinholeImage& out,
                      const void* hidden = nullptr);
   const GlContext& context() const { return context_; }
@@ -41,9 +48,9 @@ private:
   static GlTriangles camerasView(const std::vector<RayPrimitive>& shapes, Planes planes);
 
   const GlContext& context_;
+  std::mutex gl_;  // held while the renderer runs: uploads on the simulation's thread, frames on a worker's
   GlRenderer renderer_;
   std::vector<Body> bodies_;  // [0]: the world's static shapes but planes, [1]: its planes; robots' bodies
-  std::vector<GlRenderer::Draw> draws_;
 };
 
 }  // namespace bullet_plant

@@ -10,6 +10,7 @@
 
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/sensors.h"
+#include "rendering/frame_worker.h"
 #include "rendering/gl_scene.h"
 #include "rendering/ray_caster.h"
 
@@ -28,6 +29,8 @@ public:
   // What cameras render with: the world's GL scene where everything is now (the robot's own bodies
   // included: cameras see them, as Gazebo's do), or null where there is no OpenGL (cameras off).
   virtual GlScene* glScene() = 0;
+  // Where camera frames render while the simulation goes on, or null: render them now.
+  virtual FrameWorker* frameWorker() = 0;
   virtual Lighting lighting() const = 0;
   // The touching points of `link`'s collisions named in `collisions` (SDF names), grouped by the
   // pair of collisions, as ContactSensor reports them.

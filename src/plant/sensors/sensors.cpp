@@ -56,11 +56,33 @@ bool Camera::update(SensorContext& context, int64_t time_ns)
   GlScene* gl = context.glScene();
   if (!gl)
     return false;  // cameras are off: the world has said why, once
-  detail::SensorRendering::render(*this, *gl, sensorPose(context, description_), context.lighting(), time_ns);
-  return true;
+  collect(true);   // the previous frame first: frames come in their order
+  detail::SensorRendering::render(*this, *gl, context.frameWorker(), sensorPose(context, description_),
+                                  context.lighting(), time_ns);
+  return false;  // the reading counts when collected
 }
 
-Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
+void Camera::collect(bool wait)
+{
+  Rendering& r = *rendering_;
+  if (!r.pending || (r.worker && !wait && !r.worker->done(r.ticket)))
+    return;
+  if (r.worker)
+    r.worker->wait(r.ticket);
+  r.pending = false;
+  if (!r.error.empty())
+    throw std::runtime_error("camera '" + description_.name + "': " + r.error);
+  detail::SensorRendering::finish(*this);
+  ++updates_;
+}
+
+Camera::~Camera()
+{
+  if (rendering_->pending && rendering_->worker)
+    rendering_->worker->wait(rendering_->ticket);  // its job writes into this camera
+}
+
+Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed), rendering_(new Rendering)
 {
   // The plugin's <updateRate> throttles what the sensor renders (0: the sensor's rate).
   gate_.setPeriodNs(std::max(gate_.periodNs(), periodNsOfRate(d.pluginNumber("updateRate", 0.0))));
@@ -127,26 +149,18 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
 
 // A pinhole camera's frame by GL rasterization (lit colours with noise, and depths); the noise
 // comes from a table of gaussian samples drawn once from the camera's own generator and a
-// per-frame seed from it, so frames are the same on every run.
-void detail::SensorRendering::render(Camera& camera, GlScene& scene, const Frame& pose, const Lighting& lighting,
-                                     int64_t time_ns)
+// per-frame offset from it, drawn here in the simulation's order, so frames are the same on every
+// run whichever thread renders them.
+void detail::SensorRendering::render(Camera& camera, GlScene& scene, FrameWorker* worker, const Frame& pose,
+                                     const Lighting& lighting, int64_t time_ns)
 {
   const SensorDescription& d = camera.description();
-  CameraFrame& out = camera.frame_;
   const int w = d.image_width, h = d.image_height;
-  const bool depth = camera.depthSensor();
-  camera.intrinsics(out.fx, out.fy, out.cx, out.cy);
-  out.stamp_ns = time_ns;
-  out.width = w;
-  out.height = h;
   PinholeCamera pinhole;
   pinhole.width = w;
   pinhole.height = h;
-  pinhole.fx = out.fx;
-  pinhole.fy = out.fy;
-  pinhole.cx = out.cx;
-  pinhole.cy = out.cy;
-  pinhole.depth = depth;
+  camera.intrinsics(pinhole.fx, pinhole.fy, pinhole.cx, pinhole.cy);
+  pinhole.depth = camera.depthSensor();
   pinhole.near = d.clip_near > 0 ? d.clip_near : 0.0;
   pinhole.far = d.clip_far > 0 ? d.clip_far : 100.0;
   if (d.noise.gaussian && d.noise.stddev > 0)
@@ -156,14 +170,42 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, const Frame
       std::normal_distribution<double> noise(d.noise.mean, d.noise.stddev);
       camera.noise_table_ = noiseSamples(size_t(w) * size_t(h), [&] { return noise(camera.noise_); });
     }
-    pinhole.noise = camera.noise_table_.data();
+    pinhole.noise = camera.noise_table_.data();  // drawn once: it stays where it is while a job reads it
     pinhole.noise_offset = size_t(camera.noise_() % PinholeCamera::kNoiseOffsets);
   }
-  PinholeImage image;  // the camera's buffers, kept from frame to frame
-  image.rgb8.swap(out.rgb);
-  image.depth.swap(camera.rendered_depth_);
-  scene.renderPinhole(pose, pinhole, lighting, image);
-  out.rgb.swap(image.rgb8);
+  Camera::Rendering& r = *camera.rendering_;
+  r.stamp_ns = time_ns;
+  r.pending = true;
+  r.worker = worker;
+  r.error.clear();
+  auto job = [&scene, &r, draws = scene.snapshot(), pose, pinhole, lighting] {
+    try
+    {
+      scene.render(draws, pose, pinhole, lighting, r.image);
+    }
+    catch (const std::exception& e)
+    {
+      r.error = e.what();
+    }
+  };
+  if (worker)
+    r.ticket = worker->submit(job);
+  else
+    job();
+}
+
+void detail::SensorRendering::finish(Camera& camera)
+{
+  Camera::Rendering& r = *camera.rendering_;
+  const SensorDescription& d = camera.description();
+  CameraFrame& out = camera.frame_;
+  const int w = d.image_width, h = d.image_height;
+  const bool depth = camera.depthSensor();
+  camera.intrinsics(out.fx, out.fy, out.cx, out.cy);
+  out.stamp_ns = r.stamp_ns;
+  out.width = w;
+  out.height = h;
+  out.rgb.swap(r.image.rgb8);  // the previous frame's buffer goes back to the renderer
 
   const size_t pixels = size_t(w) * h;
   // Every pixel written once: its depth and point, or NaN where nothing is within the clip range.
@@ -179,7 +221,7 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, const Frame
     for (int u = 0; u < w; ++u)
     {
       const size_t pixel = size_t(v) * w + u;
-      const float z = image.depth[pixel];
+      const float z = r.image.depth[pixel];
       const bool hit = !std::isinf(z);
       out.depth[pixel] = hit ? z : kNaN;
       out.points[3 * pixel] = hit ? x_per_depth[size_t(u)] * z : kNaN;
@@ -187,7 +229,6 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, const Frame
       out.points[3 * pixel + 2] = hit ? z : kNaN;
     }
   }
-  camera.rendered_depth_.swap(image.depth);
 }
 
 }  // namespace bullet_plant

@@ -17,6 +17,7 @@
 #include "bullet_plant/model_plugin.h"
 #include "hardware/joint_layer_sim.h"
 #include "hardware/model_joint_sim.h"
+#include "rendering/frame_worker.h"
 #include "rendering/ray_caster.h"
 #include "sensors/sensor_context.h"
 #include "simulation/robot_multibody.h"
@@ -106,6 +107,7 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   urdf::Vector3 gravity() const override;
   const RayScene& lidarScene() override;
   GlScene* glScene() override;
+  FrameWorker* frameWorker() override;
   Lighting lighting() const override;
   std::vector<ContactState> contacts(const std::string& link, const std::vector<std::string>& collisions) const override;
   // What its model plugins reach (ModelPluginContext).
@@ -172,6 +174,11 @@ struct World::Internals
   std::unique_ptr<GlScene> gl_scene;
 
   std::vector<std::unique_ptr<Robot>> robots;
+  // Renders camera frames while the simulation goes on (made with the GL scene). Declared after
+  // the robots, so it stops, its jobs done, before their cameras go.
+  std::unique_ptr<FrameWorker> frame_worker;
+  // step() returns without waiting for the frames still rendering (World::setFramesAhead).
+  bool frames_ahead = false;
 
   // "robot::link" or the static collision's name, for messages.
   std::string nameOf(const btCollisionObject* object) const;
@@ -183,6 +190,8 @@ struct World::Internals
   const RayScene& rayScene(const void* hidden);
   // The same for cameras, or null without OpenGL.
   GlScene* glScene();
+  // Every camera's frame in the making collected (rendered, made the latest).
+  void collectFrames();
   Lighting lighting() const;
 };
 

@@ -150,8 +150,11 @@ void Robot::Internals::recoverIfDiverged()
 void Robot::Internals::updateSensors(int64_t time_ns)
 {
   for (auto& sensor : sensors)
+  {
     if (sensor->active())
       sensor->updateIfDue(*this, time_ns);
+    sensor->collect(false);  // a frame rendered while the simulation went on, when it is done
+  }
 }
 
 bool Robot::Internals::hasLink(const std::string& link) const { return multibody.link_in_body.count(link) > 0; }
@@ -166,6 +169,7 @@ urdf::Vector3 Robot::Internals::gravity() const { return world->description.grav
 const RayScene& Robot::Internals::lidarScene() { return world->rayScene(this); }
 
 GlScene* Robot::Internals::glScene() { return world->glScene(); }
+FrameWorker* Robot::Internals::frameWorker() { return world->frame_worker.get(); }
 
 Lighting Robot::Internals::lighting() const { return world->lighting(); }
 

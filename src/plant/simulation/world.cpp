@@ -287,6 +287,8 @@ bool World::remove(const std::string& name)
         in_->ray_scene->removeOwner((*it)->in_.get());
       if (in_->gl_scene)
         in_->gl_scene->removeOwner((*it)->in_.get());
+      if (in_->frame_worker)
+        in_->frame_worker->waitAll();  // its cameras' frames in the making write into them
       removeRobot(*(*it)->in_);
       in_->robots.erase(it);
       return true;
@@ -354,6 +356,17 @@ void World::step(int n)
       if (!r->in_->disabled)
         r->in_->updateSensors(w.time_ns);
   }
+  if (!w.frames_ahead)
+    w.collectFrames();
+}
+
+bool World::framesAhead() const { return in_->frames_ahead; }
+
+void World::setFramesAhead(bool ahead)
+{
+  in_->frames_ahead = ahead;
+  if (!ahead)
+    in_->collectFrames();
 }
 
 void World::setPaused(bool paused)
@@ -368,6 +381,7 @@ bool World::paused() const { return in_->paused; }
 
 void World::resetSimulation()
 {
+  in_->collectFrames();  // the frames of before, before time goes back
   in_->time_ns = 0;
   resetWorld();
 }
@@ -435,6 +449,7 @@ GlScene* World::Internals::glScene()
       try
       {
         gl_scene.reset(new GlScene(*gl_context, static_ray_shapes));
+        frame_worker.reset(new FrameWorker);
         log.info("cameras: OpenGL ES on " + gl_context->renderer());
       }
       catch (const std::exception& e)
@@ -449,6 +464,13 @@ GlScene* World::Internals::glScene()
     return nullptr;
   placeBodies(*gl_scene, robots, &Robot::Internals::gl_bodies);
   return gl_scene.get();
+}
+
+void World::Internals::collectFrames()
+{
+  for (auto& r : robots)
+    for (auto& sensor : r->in_->sensors)
+      sensor->collect(true);
 }
 
 Lighting World::Internals::lighting() const
