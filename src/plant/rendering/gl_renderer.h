@@ -34,10 +34,11 @@ struct GlTriangles
 };
 
 // A primitive's triangles in the frame it is placed in (its frame applied), each in what cameras
-// see on it (RayPrimitive::surfaceColour): a mesh's sub-mesh texture (the nearest texel, repeating,
-// as the ray caster samples it) or diffuse colour where the file gives one, else the primitive's. Boxes and meshes exactly, each triangle with its own normal; a
-// plane as the ray caster's square; spheres and cylinders tessellated finely enough that no facet
-// lies more than kCurvedTolerance from the surface, with the surface's normals at the vertices.
+// see on it (as RayPrimitive::surfaceColour says): a mesh's sub-mesh texture or diffuse colour where
+// the file gives one, else the primitive's. Boxes and meshes exactly, each triangle with its own
+// normal; a plane as the lidars' square (planeTriangles); spheres and cylinders tessellated finely
+// enough that no facet lies more than kCurvedTolerance from the surface, with the surface's
+// normals at the vertices.
 constexpr double kCurvedTolerance = 2e-5;  // m: 1 mm in depth even where a ray grazes the surface
 GlTriangles glTrianglesOf(const RayPrimitive& primitive);
 
