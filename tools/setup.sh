@@ -24,7 +24,7 @@ APT_PACKAGES=(
   ros-actionlib-msgs libactionlib-msgs-dev python3-actionlib-msgs libactionlib-dev python3-actionlib
   # the plant: physics, URDF parsing, XML, Python bindings
   libbullet-dev liburdfdom-dev liburdfdom-headers-dev liburdfdom-tools libtinyxml2-dev libtinyxml-dev
-  libconsole-bridge-dev libassimp-dev
+  libconsole-bridge-dev libassimp-dev nlohmann-json3-dev
   # the sensors: ray casting (Embree) and mesh textures (stb_image)
   libembree-dev libstb-dev
   # the cameras' OpenGL: EGL without a display, OpenGL ES 3, Mesa's llvmpipe where there is no GPU
@@ -39,6 +39,11 @@ APT_PACKAGES=(
   # rostests (rostest, hztest) and recording simulations
   python3-rostest librostest-dev python3-rosbag
 )
+# The browser viewer: its server (aiohttp), and headless chromium driven by selenium for its tests.
+APT_PACKAGES+=(python3-aiohttp chromium chromium-driver python3-selenium)
+# npm bundles the viewer's page at build time (three.js, esbuild); Debian's nodejs and npm where
+# there is no node at all (a machine with another node keeps it).
+command -v npm >/dev/null || APT_PACKAGES+=(nodejs npm)
 # xacro from PyPI (Debian has no xacro); compat/xacro runs it with rospack's $(find).
 PIP_PACKAGES=(xacro==2.1.1)
 PY=/usr/bin/python3

@@ -4,10 +4,12 @@
 #include <stdexcept>
 
 #include <gazebo_msgs/LinkStates.h>
+#include <std_msgs/String.h>
 #include <gazebo_msgs/ModelStates.h>
 #include <tinyxml2.h>
 
 #include "bullet_plant/geometry.h"
+#include "bullet_plant/scene.h"
 #include "bullet_plant/world.h"
 #include "msg_conversions.h"
 #include "ros_plant.h"
@@ -110,9 +112,11 @@ GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private
   advertiseServices();
   model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
   link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
+  scene_pub_ = nh_.advertise<std_msgs::String>("scene", 1, true);
   plant_.connectWorldUpdateEnd([this] {
     publishModelStates();
     publishLinkStates();
+    publishSceneIfChanged();
   });
 }
 
@@ -230,6 +234,10 @@ bool GazeboRosApiPlugin::spawnModel(gazebo_msgs::SpawnModel::Request& req, gazeb
   std::string message;
   res.success = plant_.spawn(req.model_name, req.model_xml, req.robot_namespace, pose, {}, message);
   res.status_message = res.success ? "SpawnModel: Successfully spawned entity" : "SpawnModel: Failure - " + message;
+  plant_.onSimThread<bool>([this] {  // while paused no step ends to publish it
+    publishSceneIfChanged();
+    return true;
+  });
   return true;
 }
 
@@ -238,6 +246,10 @@ bool GazeboRosApiPlugin::deleteModel(gazebo_msgs::DeleteModel::Request& req, gaz
   std::string message;
   res.success = plant_.remove(req.model_name, message);
   res.status_message = res.success ? "DeleteModel: successfully deleted model" : "DeleteModel: model does not exist";
+  plant_.onSimThread<bool>([this] {
+    publishSceneIfChanged();
+    return true;
+  });
   if (!res.success)
     ROS_ERROR("DeleteModel: model [%s] does not exist", req.model_name.c_str());
   return true;
@@ -651,6 +663,23 @@ void GazeboRosApiPlugin::publishLinkStates()
       states.twist.push_back(toMsg(robot->linkTwist(link)));
     }
   link_states_pub_.publish(states);
+}
+
+void GazeboRosApiPlugin::publishSceneIfChanged()
+{
+  const std::vector<Robot*> robots = world_.robots();
+  if (scene_published_ && std::equal(robots.begin(), robots.end(), scene_robots_.begin(), scene_robots_.end(),
+                                     [](const Robot* r, const std::pair<const Robot*, std::string>& held) {
+                                       return r == held.first && r->name() == held.second;
+                                     }))
+    return;
+  scene_robots_.clear();
+  for (const Robot* r : robots)
+    scene_robots_.emplace_back(r, r->name());
+  scene_published_ = true;
+  std_msgs::String scene;
+  scene.data = sceneJson(sceneOf(world_));
+  scene_pub_.publish(scene);
 }
 
 }  // namespace bullet_plant

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gazebo_msgs/ApplyBodyWrench.h>
@@ -35,6 +36,7 @@
 namespace bullet_plant
 {
 class RosPlant;
+class Robot;
 class World;
 
 class GazeboRosApiPlugin
@@ -46,6 +48,8 @@ public:
   // (every step, as gazebo_ros publishes them on each world update).
   void publishModelStates();
   void publishLinkStates();
+  // ~scene (latched): what a viewer draws (bullet_plant/scene.h), again whenever robots come or go.
+  void publishSceneIfChanged();
 
 private:
   void advertiseServices();
@@ -94,7 +98,9 @@ private:
   ros::NodeHandle nh_;
   std::vector<ros::ServiceServer> services_;
   std::vector<ros::Subscriber> subscribers_;
-  ros::Publisher model_states_pub_, link_states_pub_;
+  ros::Publisher model_states_pub_, link_states_pub_, scene_pub_;
+  std::vector<std::pair<const Robot*, std::string>> scene_robots_;  // the robots the last scene held
+  bool scene_published_ = false;
   std::map<std::string, uint32_t> get_model_state_calls_;  // get_model_state's header.seq, per model
 };
 

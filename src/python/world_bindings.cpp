@@ -1,6 +1,8 @@
 // bullet_plant.World: worlds from SDF, parameters, spawning, stepping, the log.
 #include "bindings.h"
 
+#include "bullet_plant/scene.h"
+
 namespace bullet_plant
 {
 namespace python
@@ -84,6 +86,9 @@ void init_world(py::module_& m)
         return out;
       }, "the world's static collisions as described: name (model::link::collision), kind, pose (x y z qx qy qz qw), "
          "mesh_uri and mesh_file (as written, as resolved), scale, mu")
+      .def("scene_json", [](PyWorld& w) { return sceneJson(sceneOf(*w.world)); },
+           "what a viewer draws: the world's static visuals and each robot's link visuals, the sun, ambient "
+           "and background, as JSON (bullet_plant/scene.h; the node publishes it on /gazebo/scene)")
       .def_property("echo", [](PyWorld& w) { return w.echo; }, [](PyWorld& w, bool on) { w.echo = on; },
                     "print warnings and errors to stderr as they happen (default True)")
       .def_property("frames_ahead", [](PyWorld& w) { return w.world->framesAhead(); },

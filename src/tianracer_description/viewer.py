@@ -1,0 +1,169 @@
+"""The browser view of the plant's world, where Gazebo has gzclient (and gzweb for a browser).
+
+An aiohttp server (one asyncio loop) on a port, loopback unless asked, serves the page (web/index.html
+and the bundle `make build` makes of web/src/viewer.js with three.js) and one WebSocket per page:
+- the scene: what the node publishes, latched, on /gazebo/scene (every visual of the world and of each
+  robot's links, the sun, the ambient light, the background; again whenever robots come or go);
+- the links' poses from /gazebo/link_states at `rate` Hz at the most, with the sim time of /clock,
+  subscribed only while a page is open: with none, the plant publishes no link states for it;
+- the meshes' files, and the files beside them that their materials name (textures), and nothing
+  else: only below the folders of the meshes the scene names.
+rospy's callbacks run on its threads; they hand what they got to the loop.
+"""
+import asyncio
+import json
+import os
+import threading
+import time
+
+import rospy
+from aiohttp import WSMsgType, web
+from gazebo_msgs.msg import LinkStates
+from rosgraph_msgs.msg import Clock
+from std_msgs.msg import String
+
+DEFAULT_PORT = 8080
+DEFAULT_RATE = 30.0  # Hz: the poses a page gets at the most
+
+
+def default_web_root():
+    """The package's web/ folder: index.html, and dist/viewer.js once `make build` has run."""
+    return os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'web')
+
+
+def mesh_roots(scene):
+    """The folders a page may read files below: each mesh's folder and the one above it (a Gazebo
+    model keeps meshes/ and materials/textures/ side by side)."""
+    roots = set()
+    for visual in scene.get('visuals', []):
+        if visual.get('kind') == 'mesh' and visual.get('mesh'):
+            folder = os.path.dirname(os.path.realpath(visual['mesh']))
+            roots.update({folder, os.path.dirname(folder)})
+    return roots
+
+
+def poses_message(link_states, sim_time):
+    """The page's poses: {"type": "poses", "time": s, "links": {model::link: [x y z qx qy qz qw]}}."""
+    links = {}
+    for name, pose in zip(link_states.name, link_states.pose):
+        p, q = pose.position, pose.orientation
+        links[name] = [p.x, p.y, p.z, q.x, q.y, q.z, q.w]
+    return json.dumps({'type': 'poses', 'time': sim_time, 'links': links})
+
+
+class Viewer:
+    def __init__(self, web_root=None, host='127.0.0.1', port=DEFAULT_PORT, rate=DEFAULT_RATE,
+                 gazebo_namespace='/gazebo'):
+        self.web_root = web_root or default_web_root()
+        self.host, self.port, self.rate = host, port, rate
+        self.namespace = gazebo_namespace.rstrip('/')
+        self._scene = None
+        self._scene_text = None
+        self._roots = set()
+        self._sim_time = 0.0
+        self._pages = set()
+        self._link_states = None  # the subscriber, while a page is open
+        self._last_poses = 0.0
+        self._lock = threading.Lock()
+        self._loop = None
+
+    # ------------------------------------------------------------------ ROS side (rospy's threads)
+
+    def _on_scene(self, message):
+        scene = json.loads(message.data)
+        text = json.dumps({'type': 'scene', 'scene': scene})
+        with self._lock:
+            self._scene, self._scene_text, self._roots = scene, text, mesh_roots(scene)
+        self._to_pages(text)
+
+    def _on_clock(self, message):
+        self._sim_time = message.clock.to_sec()
+
+    def _on_link_states(self, message):
+        now = time.monotonic()
+        if now - self._last_poses < 1.0 / self.rate:
+            return
+        self._last_poses = now
+        self._to_pages(poses_message(message, self._sim_time))
+
+    def _to_pages(self, text):
+        if self._loop is not None:
+            self._loop.call_soon_threadsafe(self._send_all, text)
+
+    # ------------------------------------------------------------------ the loop
+
+    def _send_all(self, text):
+        for page in list(self._pages):
+            if not page.closed:
+                asyncio.ensure_future(page.send_str(text))
+
+    def _follow_links(self, on):
+        with self._lock:
+            if on and self._link_states is None:
+                self._link_states = rospy.Subscriber(self.namespace + '/link_states', LinkStates,
+                                                     self._on_link_states, queue_size=1)
+            elif not on and self._link_states is not None:
+                self._link_states.unregister()
+                self._link_states = None
+
+    async def _index(self, request):
+        return web.FileResponse(os.path.join(self.web_root, 'index.html'))
+
+    async def _bundle(self, request):
+        path = os.path.join(self.web_root, 'dist', 'viewer.js')
+        if not os.path.isfile(path):
+            raise web.HTTPNotFound(text='viewer: %s is not there; run `make build`' % path)
+        return web.FileResponse(path)
+
+    async def _file(self, request):
+        path = os.path.realpath('/' + request.match_info['path'])
+        with self._lock:
+            allowed = any(path.startswith(root + os.sep) for root in self._roots)
+        if not allowed or not os.path.isfile(path):
+            raise web.HTTPNotFound(text='viewer: %s is not a file of the scene' % path)
+        return web.FileResponse(path)
+
+    async def _page(self, request):
+        page = web.WebSocketResponse(heartbeat=10.0)
+        await page.prepare(request)
+        self._pages.add(page)
+        self._follow_links(True)
+        with self._lock:
+            scene_text = self._scene_text
+        if scene_text:
+            await page.send_str(scene_text)
+        try:
+            async for message in page:
+                if message.type == WSMsgType.ERROR:
+                    break
+        finally:
+            self._pages.discard(page)
+            if not self._pages:
+                self._follow_links(False)
+        return page
+
+    def app(self):
+        app = web.Application()
+        app.router.add_get('/', self._index)
+        app.router.add_get('/viewer.js', self._bundle)
+        app.router.add_get('/files/{path:.+}', self._file)
+        app.router.add_get('/ws', self._page)
+        return app
+
+    async def serve(self, started=None):
+        """Subscribes, serves until cancelled or rospy shuts down. `started(url)` once listening."""
+        self._loop = asyncio.get_running_loop()
+        rospy.Subscriber(self.namespace + '/scene', String, self._on_scene, queue_size=1)
+        rospy.Subscriber('/clock', Clock, self._on_clock, queue_size=1)
+        runner = web.AppRunner(self.app())
+        await runner.setup()
+        site = web.TCPSite(runner, self.host, self.port)
+        await site.start()
+        if started:
+            started('http://%s:%d/' % (self.host, self.port))
+        try:
+            while not rospy.is_shutdown():
+                await asyncio.sleep(0.2)
+        finally:
+            self._follow_links(False)
+            await runner.cleanup()

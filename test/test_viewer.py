@@ -1,0 +1,204 @@
+"""The browser viewer (scripts/viewer, tianracer_description.viewer, web/): Debian's chromium, headless,
+driven by selenium through chromedriver, opens the page the node serves against the plant with the
+race track and the car, as a user opens it over SSH. What it draws is checked in the screenshot,
+against the world file's layout; the car's drawn pose against /gazebo/model_states as it drives.
+"""
+import io
+import json
+import math
+import time
+import xml.etree.ElementTree as ET
+
+import matplotlib.image
+import numpy as np
+import pytest
+
+pytestmark = pytest.mark.ros
+
+CHROMIUM = '/usr/bin/chromium'
+CHROMEDRIVER = '/usr/bin/chromedriver'
+WINDOW = (960, 720)
+
+
+def track_walls(world_file):
+    """(centre x y z, size x y z, yaw, colour r g b) of each box wall of the world file."""
+    walls = []
+    for model in ET.parse(world_file).getroot().iter('model'):
+        size = model.findtext('link/visual/geometry/box/size')
+        if size:
+            x, y, z, _, _, yaw = map(float, model.findtext('pose').split())
+            colour = tuple(map(float, model.findtext('link/visual/material/diffuse').split()[:3]))
+            walls.append(((x, y, z), tuple(map(float, size.split())), yaw, colour))
+    return walls
+
+
+def distance_to_box(point, wall):
+    """The horizontal distance from (x, y) to a wall's footprint (0 inside)."""
+    (cx, cy, _), (sx, sy, _), yaw, _ = wall
+    dx, dy = point[0] - cx, point[1] - cy
+    u = math.cos(yaw) * dx + math.sin(yaw) * dy
+    v = -math.sin(yaw) * dx + math.cos(yaw) * dy
+    return math.hypot(max(abs(u) - sx / 2, 0.0), max(abs(v) - sy / 2, 0.0))
+
+
+def browser():
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for argument in ('--headless=new', '--no-sandbox', '--disable-dev-shm-usage',
+                     '--window-size=%d,%d' % WINDOW,
+                     # WebGL on the CPU where there is no GPU (SwiftShader, chromium's own)
+                     '--use-angle=swiftshader', '--enable-unsafe-swiftshader'):
+        options.add_argument(argument)
+    return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+
+
+def wait_for(driver, script, timeout, what):
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if driver.execute_script('return ' + script):
+            return
+        time.sleep(0.1)
+    raise AssertionError('timed out after %g s waiting for %s; the browser said: %s'
+                         % (timeout, what, driver.get_log('browser')))
+
+
+@pytest.fixture
+def page(ros, urdf_file):
+    """The plant (race track, the car, the tutorial's YAML), the viewer on a free port, and a
+    chromium page on it with the scene drawn: (ros, viewer process, driver, url)."""
+    from tianracer_description.ros_harness import free_port, tianracer_plant
+    from tianracer_description.tianracer import RACE_TRACK_WORLD
+    tianracer_plant(ros, urdf_file, world=RACE_TRACK_WORLD)
+    port = free_port()
+    viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=%d' % port], 'viewer')
+    url = 'http://127.0.0.1:%d/' % port
+    ros.wait_until(lambda: ('viewer: open ' + url) in viewer.log(), 30, 'the viewer to serve')
+    driver = browser()
+    try:
+        driver.get(url)
+        wait_for(driver, '!!(window.viewer && viewer.ready())', 30, 'the scene to be drawn')
+        yield ros, viewer, driver, url
+    finally:
+        driver.quit()
+
+
+def screenshot(driver):
+    """The window as the user sees it, r g b in 0-255."""
+    return np.round(255 * matplotlib.image.imread(io.BytesIO(driver.get_screenshot_as_png()))[:, :, :3])
+
+
+def test_the_screenshot_shows_the_race_tracks_walls_where_the_world_has_them(page):
+    from tianracer_description.tianracer import RACE_TRACK_WORLD
+    _, _, driver, _ = page
+    walls = track_walls(RACE_TRACK_WORLD)
+    xs = [w[0][0] for w in walls]
+    ys = [w[0][1] for w in walls]
+    centre = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
+    # from above, the whole track in view (a hair off vertical: z is up for the orbit controls)
+    driver.execute_script('viewer.lookAt(arguments[0], arguments[1])',
+                          [centre[0], centre[1] - 0.01, 1.2 * (max(xs) - min(xs))], [centre[0], centre[1], 0])
+    image = screenshot(driver)
+    panel = driver.execute_script("const r = document.getElementById('panel').getBoundingClientRect();"
+                                  "return [r.left, r.top, r.right, r.bottom];")
+
+    def drawn_at(x, y, z):
+        """The 3 x 3 pixels about where (x, y, z) is drawn (None: off the window or under the panel)."""
+        px, py = driver.execute_script('return viewer.project(arguments[0], arguments[1], arguments[2])', x, y, z)
+        px, py = int(round(px)), int(round(py))
+        if not (1 <= px < image.shape[1] - 1 and 1 <= py < image.shape[0] - 1):
+            return None
+        if panel[0] - 2 <= px <= panel[2] + 2 and panel[1] - 2 <= py <= panel[3] + 2:
+            return None
+        return image[py - 1:py + 2, px - 1:px + 2].reshape(9, 3)
+
+    # Each wall's top (5 cm wide: a few pixels, their edges blended with the floor) is drawn in its
+    # red, lit from above.
+    seen = 0
+    for (cx, cy, cz), size, _, colour in walls:
+        pixels = drawn_at(cx, cy, cz + size[2] / 2)
+        if pixels is None:
+            continue
+        seen += 1
+        reddest = pixels[np.argmax(pixels[:, 0] - pixels[:, 1:].max(axis=1))]
+        assert reddest[0] > reddest[1] + 80 and reddest[0] > reddest[2] + 80, (
+            'the wall at (%.2f, %.2f), colour %s, is drawn %s' % (cx, cy, colour, pixels))
+    assert seen >= 0.9 * len(walls), 'only %d of %d walls in view' % (seen, len(walls))
+
+    # The floor between them (20 cm or more from any wall, away from the car and its cones) is grey.
+    floor = 0
+    for x in np.linspace(min(xs), max(xs), 25):
+        for y in np.linspace(min(ys), max(ys), 15):
+            if min(distance_to_box((x, y), w) for w in walls) < 0.2 or math.hypot(x, y) < 0.5:
+                continue
+            pixels = drawn_at(x, y, 0.0)
+            if pixels is None:
+                continue
+            floor += 1
+            assert np.ptp(pixels[4]) < 30 and pixels[4][0] > 100, 'the floor at (%.2f, %.2f) is drawn %s' % (
+                x, y, pixels[4])
+    assert floor > 100
+
+
+def test_the_cars_drawn_pose_follows_model_states_as_it_drives(page, ros):
+    from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
+    _, _, driver, _ = page
+    ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/tianracer', *TUTORIAL_CONTROLLERS], 'spawner')
+    ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
+    start = driver.execute_script("return viewer.linkPose('tianracer::base_link')")
+    # 1.5 s at 12 rad/s on the rear wheels (about 0.4 m/s), then stopped; the pose of the model then
+    moved = ros.python("""
+        import json, rospy
+        from std_msgs.msg import Float64
+        from gazebo_msgs.msg import ModelStates
+        rospy.init_node('driver', anonymous=True)
+        wheels = [rospy.Publisher('/tianracer/%s/command' % c, Float64, queue_size=1)
+                  for c in ('rear_left_velocity_controller', 'rear_right_velocity_controller')]
+        rospy.sleep(1.0)
+        end = rospy.Time.now() + rospy.Duration(1.5)
+        while rospy.Time.now() < end:
+            for w in wheels:
+                w.publish(12.0)
+            rospy.sleep(0.05)
+        for _ in range(20):
+            for w in wheels:
+                w.publish(0.0)
+            rospy.sleep(0.05)
+        rospy.sleep(1.0)
+        states = rospy.wait_for_message('/gazebo/model_states', ModelStates, timeout=10)
+        p = states.pose[states.name.index('tianracer')].position
+        print(json.dumps([p.x, p.y]))
+    """, timeout=60)
+    time.sleep(0.5)  # a few of the page's 30 pose updates a second
+    drawn = driver.execute_script("return viewer.linkPose('tianracer::base_link')")
+    assert math.hypot(moved[0] - start[0], moved[1] - start[1]) > 0.2, 'the car did not drive: %s' % moved
+    # base_link is above base_footprint, the model's pose: the same x and y
+    assert math.hypot(drawn[0] - moved[0], drawn[1] - moved[1]) < 0.01, (drawn, moved)
+
+
+def test_a_page_that_goes_away_leaves_link_states_unsubscribed(page, ros):
+    _, _, driver, url = page
+
+    def subscribed():
+        info = ros.run(['rostopic', 'info', '/gazebo/link_states']).stdout
+        return '/viewer' in info.split('Subscribers:')[-1]
+
+    assert subscribed()
+    driver.get('about:blank')
+    ros.wait_until(lambda: not subscribed(), 15, 'the viewer to drop /gazebo/link_states')
+    driver.get(url)
+    ros.wait_until(subscribed, 15, 'the viewer to subscribe again for a new page')
+
+
+def test_the_viewer_serves_only_the_scenes_files(page):
+    import urllib.error
+    import urllib.request
+    _, _, _, url = page
+    with pytest.raises(urllib.error.HTTPError) as refused:
+        urllib.request.urlopen(url + 'files/etc/passwd', timeout=10)
+    assert refused.value.code == 404
+    with urllib.request.urlopen(url, timeout=10) as index:
+        assert b'viewer.js' in index.read()
+    with urllib.request.urlopen(url + 'viewer.js', timeout=10) as bundle:
+        assert len(bundle.read()) > 100000  # three.js bundled: nothing fetched from the internet

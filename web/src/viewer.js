@@ -1,0 +1,240 @@
+// The browser view of the plant's world, as gzclient shows it: the scene the node publishes on
+// /gazebo/scene (every visual of the world and of each robot's links, the sun, the ambient light and
+// the background), its links posed live from /gazebo/link_states, orbit / pan / zoom. The viewer node
+// (scripts/viewer) sends both over one WebSocket and serves the meshes' files.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
+import { ColladaLoader } from 'three/examples/jsm/loaders/ColladaLoader.js';
+import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
+import { MTLLoader } from 'three/examples/jsm/loaders/MTLLoader.js';
+
+// ROS and Gazebo are z up.
+THREE.Object3D.DEFAULT_UP.set(0, 0, 1);
+// Colours as the plant's cameras shade them: no colour-space conversion.
+THREE.ColorManagement.enabled = false;
+
+const GROUND_SIZE = 200;  // m: a plane is infinite; this much of it is drawn
+
+const canvas = document.getElementById('view');
+const renderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+renderer.outputColorSpace = THREE.LinearSRGBColorSpace;
+renderer.setPixelRatio(window.devicePixelRatio);
+const scene = new THREE.Scene();
+const camera = new THREE.PerspectiveCamera(60, 1, 0.01, 1000);
+camera.position.set(-3, -3, 4);
+const controls = new OrbitControls(camera, canvas);
+controls.target.set(0, 0, 0);
+controls.update();
+
+const ambientLight = new THREE.AmbientLight(0xffffff, 0.35);
+const sun = new THREE.DirectionalLight(0xffffff, 0.65);
+scene.add(ambientLight, sun, sun.target);
+
+// World visuals (posed once) and robot links (posed by link_states), by link name.
+const world = new THREE.Group();
+scene.add(world);
+const links = new Map();
+const linkPoses = new Map();  // every link of link_states, drawn or not
+let pendingMeshes = 0;
+let posesReceived = 0;
+let simTime = 0;
+
+function resize() {
+  const width = canvas.clientWidth, height = canvas.clientHeight;
+  if (canvas.width !== Math.floor(width * renderer.getPixelRatio()) ||
+      canvas.height !== Math.floor(height * renderer.getPixelRatio())) {
+    renderer.setSize(width, height, false);
+    camera.aspect = width / height;
+    camera.updateProjectionMatrix();
+  }
+}
+
+function setPose(object, pose) {
+  object.position.set(pose[0], pose[1], pose[2]);
+  object.quaternion.set(pose[3], pose[4], pose[5], pose[6]);
+}
+
+function material(colour) {
+  return new THREE.MeshLambertMaterial({
+    color: new THREE.Color(colour[0], colour[1], colour[2]),
+    transparent: colour[3] < 1, opacity: colour[3],
+  });
+}
+
+function fileUrl(path) {
+  return '/files' + path.split('/').map(encodeURIComponent).join('/');
+}
+
+// A mesh file through three.js's loader for its kind; what it holds goes into `into`, scaled.
+function loadMesh(visual, into) {
+  const url = fileUrl(visual.mesh);
+  const extension = visual.mesh.split('.').pop().toLowerCase();
+  const scale = visual.scale || [1, 1, 1];
+  const done = (object) => {
+    object.scale.set(scale[0], scale[1], scale[2]);
+    into.add(object);
+    pendingMeshes -= 1;
+  };
+  const failed = (error) => {
+    console.error('viewer: mesh ' + visual.mesh + ': ' + error);
+    pendingMeshes -= 1;
+  };
+  pendingMeshes += 1;
+  if (extension === 'stl') {
+    new STLLoader().load(url, (geometry) => {
+      geometry.computeVertexNormals();
+      done(new THREE.Mesh(geometry, material(visual.colour)));
+    }, undefined, failed);
+  } else if (extension === 'dae') {
+    new ColladaLoader().load(url, (collada) => {
+      // the file's own up axis and unit are applied by the loader to its scene
+      done(collada.scene);
+    }, undefined, failed);
+  } else if (extension === 'obj') {
+    const directory = url.substring(0, url.lastIndexOf('/') + 1);
+    fetch(url).then((response) => response.text()).then((text) => {
+      const library = /^mtllib\s+(.+)$/m.exec(text);
+      const withMaterials = (materials) => {
+        const loader = new OBJLoader();
+        if (materials) {
+          materials.preload();
+          loader.setMaterials(materials);
+        }
+        const object = loader.parse(text);
+        object.traverse((child) => {
+          if (child.isMesh && !materials) child.material = material(visual.colour);
+        });
+        done(object);
+      };
+      if (library) {
+        new MTLLoader().setPath(directory).load(library[1].trim(), withMaterials, undefined, () => withMaterials(null));
+      } else {
+        withMaterials(null);
+      }
+    }).catch(failed);
+  } else {
+    failed('not a mesh kind the viewer loads (STL, Collada, OBJ)');
+  }
+}
+
+function shapeOf(visual) {
+  if (visual.kind === 'box') {
+    const s = visual.size;
+    return new THREE.Mesh(new THREE.BoxGeometry(s[0], s[1], s[2]), material(visual.colour));
+  }
+  if (visual.kind === 'sphere') {
+    return new THREE.Mesh(new THREE.SphereGeometry(visual.radius, 32, 16), material(visual.colour));
+  }
+  if (visual.kind === 'cylinder') {
+    const mesh = new THREE.Mesh(new THREE.CylinderGeometry(visual.radius, visual.radius, visual.length, 32),
+                                material(visual.colour));
+    mesh.rotation.x = Math.PI / 2;  // three.js's cylinders lie along y, URDF's and SDF's along z
+    const holder = new THREE.Group();
+    holder.add(mesh);
+    return holder;
+  }
+  if (visual.kind === 'plane') {
+    const mesh = new THREE.Mesh(new THREE.PlaneGeometry(GROUND_SIZE, GROUND_SIZE), material(visual.colour));
+    const n = visual.normal;
+    mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), new THREE.Vector3(n[0], n[1], n[2]).normalize());
+    return mesh;
+  }
+  return null;
+}
+
+function buildScene(description) {
+  world.clear();
+  for (const link of links.values()) scene.remove(link);
+  links.clear();
+  const background = description.background;
+  scene.background = new THREE.Color(background[0], background[1], background[2]);
+  // three.js's lambert divides by pi: these intensities give colour x (ambient + (1 - ambient) n . l),
+  // the plant's cameras' shading
+  ambientLight.intensity = Math.PI * description.ambient;
+  sun.intensity = Math.PI * (1 - description.ambient);
+  const d = description.light_direction;
+  sun.position.set(-d[0] * 100, -d[1] * 100, -d[2] * 100);
+  sun.target.position.set(0, 0, 0);
+  for (const visual of description.visuals) {
+    const holder = new THREE.Group();
+    setPose(holder, visual.pose);
+    if (visual.kind === 'mesh') {
+      loadMesh(visual, holder);
+    } else {
+      holder.add(shapeOf(visual));
+    }
+    if (visual.model === '') {
+      world.add(holder);
+    } else {
+      if (!links.has(visual.link)) {
+        const link = new THREE.Group();
+        link.name = visual.link;
+        link.visible = false;  // until link_states places it
+        links.set(visual.link, link);
+        scene.add(link);
+      }
+      links.get(visual.link).add(holder);
+    }
+  }
+  document.getElementById('models').textContent = description.robots.join(', ') || 'no robots';
+  document.getElementById('world').textContent = description.world;
+}
+
+function applyPoses(message) {
+  for (const [name, pose] of Object.entries(message.links)) {
+    linkPoses.set(name, pose);
+    const link = links.get(name);
+    if (link) {
+      setPose(link, pose);
+      link.visible = true;
+    }
+  }
+  simTime = message.time;
+  posesReceived += 1;
+  document.getElementById('time').textContent = simTime.toFixed(3) + ' s';
+}
+
+function connect() {
+  const socket = new WebSocket((location.protocol === 'https:' ? 'wss://' : 'ws://') + location.host + '/ws');
+  socket.onmessage = (event) => {
+    const message = JSON.parse(event.data);
+    if (message.type === 'scene') buildScene(message.scene);
+    else if (message.type === 'poses') applyPoses(message);
+  };
+  socket.onclose = () => {
+    document.getElementById('status').textContent = 'disconnected; retrying';
+    setTimeout(connect, 1000);
+  };
+  socket.onopen = () => { document.getElementById('status').textContent = 'connected'; };
+}
+
+function frame() {
+  resize();
+  controls.update();
+  renderer.render(scene, camera);
+  requestAnimationFrame(frame);
+}
+
+// For tests and scripts: where things are drawn.
+window.viewer = {
+  // the scene built, its meshes loaded and the robots posed
+  ready: () => world.children.length > 0 && pendingMeshes === 0 && (links.size === 0 || posesReceived > 0),
+  // the window pixel (x right, y down, CSS pixels) a world point is drawn at
+  project: (x, y, z) => {
+    const p = new THREE.Vector3(x, y, z).project(camera);
+    return [(p.x + 1) / 2 * canvas.clientWidth, (1 - p.y) / 2 * canvas.clientHeight];
+  },
+  // the pose (x y z qx qy qz qw) the page last placed a link at, from link_states
+  linkPose: (name) => linkPoses.get(name) || null,
+  lookAt: (eye, target) => {
+    camera.position.set(eye[0], eye[1], eye[2]);
+    controls.target.set(target[0], target[1], target[2]);
+    controls.update();
+    renderer.render(scene, camera);
+  },
+  time: () => simTime,
+};
+
+connect();
+frame();
