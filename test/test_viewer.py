@@ -3,9 +3,10 @@ driven by selenium through chromedriver, opens the page the node serves against 
 race track and the car, as a user opens it over SSH. What it draws is checked in the screenshot,
 against the world file's layout; the car's drawn pose against /gazebo/model_states as it drives.
 """
+import contextlib
 import io
-import json
 import math
+import os
 import time
 import xml.etree.ElementTree as ET
 
@@ -64,13 +65,15 @@ def wait_for(driver, script, timeout, what):
                          % (timeout, what, driver.get_log('browser')))
 
 
-@pytest.fixture
-def page(ros, urdf_file):
-    """The plant (race track, the car, the tutorial's YAML), the viewer on a free port, and a
-    chromium page on it with the scene drawn: (ros, viewer process, driver, url)."""
-    from tianracer_description.ros_harness import free_port, tianracer_plant
-    from tianracer_description.tianracer import RACE_TRACK_WORLD
-    tianracer_plant(ros, urdf_file, world=RACE_TRACK_WORLD)
+@contextlib.contextmanager
+def opened(ros, world, urdf_file=None):
+    """The plant on `world` (with the car and the tutorial's YAML when `urdf_file`), the viewer on a
+    free port, and a chromium page on it with the scene drawn: (viewer process, driver, url)."""
+    from tianracer_description.ros_harness import free_port, start_plant, tianracer_plant
+    if urdf_file:
+        tianracer_plant(ros, urdf_file, world=world)
+    else:
+        start_plant(ros, world)
     port = free_port()
     viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=%d' % port], 'viewer')
     url = 'http://127.0.0.1:%d/' % port
@@ -79,9 +82,42 @@ def page(ros, urdf_file):
     try:
         driver.get(url)
         wait_for(driver, '!!(window.viewer && viewer.ready())', 30, 'the scene to be drawn')
-        yield ros, viewer, driver, url
+        yield viewer, driver, url
     finally:
         driver.quit()
+
+
+@pytest.fixture
+def page(ros, urdf_file):
+    """The race track and the car, in a page: (ros, viewer process, driver, url)."""
+    from tianracer_description.tianracer import RACE_TRACK_WORLD
+    with opened(ros, RACE_TRACK_WORLD, urdf_file) as (viewer, driver, url):
+        yield ros, viewer, driver, url
+
+
+def look_from_above(driver, lo, hi):
+    """The view straight down (a hair off: z is up for the orbit controls) on the box lo-hi (x, y);
+    the eye's position."""
+    centre = ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2)
+    eye = [centre[0], centre[1] - 0.01, 1.2 * max(hi[0] - lo[0], hi[1] - lo[1])]
+    driver.execute_script('viewer.lookAt(arguments[0], arguments[1])', eye, [centre[0], centre[1], 0])
+    return np.array(eye)
+
+
+def pixels_at(driver, image, points):
+    """The 3 x 3 pixels of `image` about where each (x, y, z) of `points` is drawn; None off the
+    window or under the panel."""
+    panel = driver.execute_script("const r = document.getElementById('panel').getBoundingClientRect();"
+                                  "return [r.left, r.top, r.right, r.bottom];")
+    drawn = driver.execute_script('return arguments[0].map((p) => viewer.project(p[0], p[1], p[2]))',
+                                  [list(map(float, p)) for p in points])
+    out = []
+    for px, py in drawn:
+        px, py = int(round(px)), int(round(py))
+        inside = 1 <= px < image.shape[1] - 1 and 1 <= py < image.shape[0] - 1
+        under_panel = panel[0] - 2 <= px <= panel[2] + 2 and panel[1] - 2 <= py <= panel[3] + 2
+        out.append(image[py - 1:py + 2, px - 1:px + 2].reshape(9, 3) if inside and not under_panel else None)
+    return out
 
 
 def screenshot(driver):
@@ -95,49 +131,32 @@ def test_the_screenshot_shows_the_race_tracks_walls_where_the_world_has_them(pag
     walls = track_walls(RACE_TRACK_WORLD)
     xs = [w[0][0] for w in walls]
     ys = [w[0][1] for w in walls]
-    centre = ((min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2)
-    # from above, the whole track in view (a hair off vertical: z is up for the orbit controls)
-    driver.execute_script('viewer.lookAt(arguments[0], arguments[1])',
-                          [centre[0], centre[1] - 0.01, 1.2 * (max(xs) - min(xs))], [centre[0], centre[1], 0])
+    look_from_above(driver, (min(xs), min(ys)), (max(xs), max(ys)))
     image = screenshot(driver)
-    panel = driver.execute_script("const r = document.getElementById('panel').getBoundingClientRect();"
-                                  "return [r.left, r.top, r.right, r.bottom];")
-
-    def drawn_at(x, y, z):
-        """The 3 x 3 pixels about where (x, y, z) is drawn (None: off the window or under the panel)."""
-        px, py = driver.execute_script('return viewer.project(arguments[0], arguments[1], arguments[2])', x, y, z)
-        px, py = int(round(px)), int(round(py))
-        if not (1 <= px < image.shape[1] - 1 and 1 <= py < image.shape[0] - 1):
-            return None
-        if panel[0] - 2 <= px <= panel[2] + 2 and panel[1] - 2 <= py <= panel[3] + 2:
-            return None
-        return image[py - 1:py + 2, px - 1:px + 2].reshape(9, 3)
 
     # Each wall's top (5 cm wide: a few pixels, their edges blended with the floor) is drawn in its
     # red, lit from above.
+    tops = [(cx, cy, cz + size[2] / 2) for (cx, cy, cz), size, _, _ in walls]
     seen = 0
-    for (cx, cy, cz), size, _, colour in walls:
-        pixels = drawn_at(cx, cy, cz + size[2] / 2)
+    for wall, pixels in zip(walls, pixels_at(driver, image, tops)):
         if pixels is None:
             continue
         seen += 1
         reddest = pixels[np.argmax(pixels[:, 0] - pixels[:, 1:].max(axis=1))]
         assert reddest[0] > reddest[1] + 80 and reddest[0] > reddest[2] + 80, (
-            'the wall at (%.2f, %.2f), colour %s, is drawn %s' % (cx, cy, colour, pixels))
+            'the wall at (%.2f, %.2f), colour %s, is drawn %s' % (wall[0][0], wall[0][1], wall[3], pixels))
     assert seen >= 0.9 * len(walls), 'only %d of %d walls in view' % (seen, len(walls))
 
     # The floor between them (20 cm or more from any wall, away from the car and its cones) is grey.
+    points = [(x, y, 0.0) for x in np.linspace(min(xs), max(xs), 25) for y in np.linspace(min(ys), max(ys), 15)
+              if min(distance_to_box((x, y), w) for w in walls) >= 0.2 and math.hypot(x, y) >= 0.5]
     floor = 0
-    for x in np.linspace(min(xs), max(xs), 25):
-        for y in np.linspace(min(ys), max(ys), 15):
-            if min(distance_to_box((x, y), w) for w in walls) < 0.2 or math.hypot(x, y) < 0.5:
-                continue
-            pixels = drawn_at(x, y, 0.0)
-            if pixels is None:
-                continue
-            floor += 1
-            assert np.ptp(pixels[4]) < 30 and pixels[4][0] > 100, 'the floor at (%.2f, %.2f) is drawn %s' % (
-                x, y, pixels[4])
+    for (x, y, _), pixels in zip(points, pixels_at(driver, image, points)):
+        if pixels is None:
+            continue
+        floor += 1
+        assert np.ptp(pixels[4]) < 30 and pixels[4][0] > 100, 'the floor at (%.2f, %.2f) is drawn %s' % (
+            x, y, pixels[4])
     assert floor > 100
 
 
@@ -202,3 +221,53 @@ def test_the_viewer_serves_only_the_scenes_files(page):
         assert b'viewer.js' in index.read()
     with urllib.request.urlopen(url + 'viewer.js', timeout=10) as bundle:
         assert len(bundle.read()) > 100000  # three.js bundled: nothing fetched from the internet
+
+
+def test_the_mesh_tracks_collada_floor_and_stl_walls_are_drawn_where_the_plant_has_them(ros, monkeypatch):
+    """A Gazebo user's package (test/fixtures/gazebo_pkg): a Collada floor written in centimetres with
+    z up and STL walls, included by model:// and lifted 0.5 m. Looked at from above, each point is
+    drawn in the colour of what the plant's own ray from above hits there: the walls' red, the
+    floor's dark grey (its Collada colour), the ground's light grey."""
+    from plant_helpers import TRACK_WORLD, find_fixture_packages
+    from tianracer_description import bullet_plant
+    find_fixture_packages(monkeypatch)
+    ros.env['ROS_PACKAGE_PATH'] = os.environ['ROS_PACKAGE_PATH']
+    plant = bullet_plant.World.from_file(TRACK_WORLD)
+    plant.echo = False
+    with opened(ros, TRACK_WORLD) as (_, driver, _):
+        eye = look_from_above(driver, (-1.0, -2.5), (13.0, 2.5))
+        image = screenshot(driver)
+
+        def seen_from_eye(x, y):
+            """What the plant's ray from the viewer's eye towards (x, y, 0) hits: 'wall' (above the
+            floor), 'floor' (its top, 0.5 m) or 'ground', and where."""
+            direction = np.array([x, y, 0.0]) - eye
+            direction /= np.linalg.norm(direction)
+            hit = eye + plant.cast_ray(list(eye), list(direction), 100.0) * direction
+            return ('wall' if hit[2] > 0.51 else 'floor' if hit[2] > 0.49 else 'ground'), hit
+
+        grid = [(x, y) for x in np.linspace(-1.0, 13.0, 57) for y in np.linspace(-2.5, 2.5, 101)]
+        hits = [seen_from_eye(x, y) for x, y in grid]
+        # (A ray exactly along the edge the ground plane's two triangles share can miss them both.)
+        grid, hits = zip(*[(g, h) for g, h in zip(grid, hits) if np.all(np.isfinite(h[1]))])
+        seen = {'wall': 0, 'floor': 0, 'ground': 0}
+        for ((x, y), (what, _)), pixels in zip(zip(grid, hits), pixels_at(driver, image, [h for _, h in hits])):
+            if pixels is None:
+                continue
+            if what == 'wall':  # a wall (a few pixels wide, its edges blended)
+                seen['wall'] += 1
+                reddest = pixels[np.argmax(pixels[:, 0] - pixels[:, 1:].max(axis=1))]
+                assert reddest[0] > reddest[1] + 60, 'the wall at (%.2f, %.2f) is drawn %s' % (x, y, pixels)
+                continue
+            if any(seen_from_eye(x + dx, y + dy)[0] != what for dx, dy in ((0.1, 0), (-0.1, 0), (0, 0.1), (0, -0.1))):
+                continue  # by a wall or an edge of the floor: blended
+            centre = pixels[4]
+            if what == 'floor':  # its Collada colour 0.3 0.3 0.32, lit from above
+                seen['floor'] += 1
+                assert np.ptp(centre) < 20 and 50 < centre[0] < 100, (
+                    'the floor at (%.2f, %.2f) is drawn %s' % (x, y, centre))
+            else:  # the ground plane: 0.7 grey
+                seen['ground'] += 1
+                assert np.ptp(centre) < 20 and centre[0] > 130, 'the ground at (%.2f, %.2f) is drawn %s' % (
+                    x, y, centre)
+        assert min(seen.values()) > 20, seen

@@ -57,7 +57,7 @@ function setPose(object, pose) {
 
 function material(colour) {
   return new THREE.MeshLambertMaterial({
-    color: new THREE.Color(colour[0], colour[1], colour[2]),
+    color: new THREE.Color(colour[0], colour[1], colour[2]), side: THREE.DoubleSide,
     transparent: colour[3] < 1, opacity: colour[3],
   });
 }
@@ -72,8 +72,16 @@ function loadMesh(visual, into) {
   const extension = visual.mesh.split('.').pop().toLowerCase();
   const scale = visual.scale || [1, 1, 1];
   const done = (object) => {
-    object.scale.set(scale[0], scale[1], scale[2]);
-    into.add(object);
+    // As the plant's cameras draw them: both sides lit, normals from the faces where a file has none.
+    object.traverse((child) => {
+      if (!child.isMesh) return;
+      if (!child.geometry.getAttribute('normal')) child.geometry.computeVertexNormals();
+      for (const m of Array.isArray(child.material) ? child.material : [child.material]) m.side = THREE.DoubleSide;
+    });
+    const scaled = new THREE.Group();
+    scaled.scale.set(scale[0], scale[1], scale[2]);
+    scaled.add(object);
+    into.add(scaled);
     pendingMeshes -= 1;
   };
   const failed = (error) => {
@@ -88,8 +96,12 @@ function loadMesh(visual, into) {
     }, undefined, failed);
   } else if (extension === 'dae') {
     new ColladaLoader().load(url, (collada) => {
-      // the file's own up axis and unit are applied by the loader to its scene
-      done(collada.scene);
+      // The loader turns the file y up (its <up_axis> and <unit> applied to its scene); Gazebo and
+      // the plant then take y up to z up (mesh_loader.cpp): a file written z up stands as written.
+      const zUp = new THREE.Group();
+      zUp.rotation.x = Math.PI / 2;
+      zUp.add(collada.scene);
+      done(zUp);
     }, undefined, failed);
   } else if (extension === 'obj') {
     const directory = url.substring(0, url.lastIndexOf('/') + 1);
