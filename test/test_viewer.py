@@ -271,3 +271,41 @@ def test_the_mesh_tracks_collada_floor_and_stl_walls_are_drawn_where_the_plant_h
                 assert np.ptp(centre) < 20 and centre[0] > 130, 'the ground at (%.2f, %.2f) is drawn %s' % (
                     x, y, centre)
         assert min(seen.values()) > 20, seen
+
+
+CLOCK_NOW = """
+    import json, time, rospy
+    from rosgraph_msgs.msg import Clock
+    rospy.init_node('clock_probe', anonymous=True)
+    times = []
+    for _ in range(2):
+        try:
+            times.append(rospy.wait_for_message('/clock', Clock, timeout=2.0).clock.to_sec())
+        except rospy.ROSException:  # nothing published: stopped
+            times.append(None)
+        time.sleep(1.0)  # wall time: sim time stands while paused
+    print(json.dumps(times))
+"""
+
+
+def test_pause_stops_the_clock_play_starts_it_and_reset_world_puts_the_car_back(page):
+    from selenium.webdriver.common.by import By
+    ros, _, driver, _ = page
+    wait_for(driver, 'viewer.status().paused === false && viewer.status().real_time_factor > 0.5', 15,
+             'the status: running, near real time')
+    driver.find_element(By.ID, 'pause').click()
+    wait_for(driver, 'viewer.status().paused === true', 15, 'the page to show paused')
+    before, after = ros.python(CLOCK_NOW)
+    assert before == after, '/clock went on while paused: %s -> %s' % (before, after)
+    wait_for(driver, 'viewer.status().real_time_factor === 0', 15, 'the real time factor to fall to 0')
+    driver.find_element(By.ID, 'play').click()
+    wait_for(driver, 'viewer.status().paused === false', 15, 'the page to show running')
+    before, after = ros.python(CLOCK_NOW)
+    assert after - before > 0.5, '/clock stood after play: %s -> %s' % (before, after)
+
+    ros.service('/gazebo/set_model_state', "{model_state: {model_name: tianracer, pose: {position: {x: 1.0, y: 0.5, "
+                                           "z: 0.05}, orientation: {w: 1.0}}}}")
+    wait_for(driver, "viewer.linkPose('tianracer::base_link')[0] > 0.9", 15, 'the page to draw the car moved')
+    driver.find_element(By.ID, 'reset_world').click()
+    wait_for(driver, "Math.hypot(...viewer.linkPose('tianracer::base_link').slice(0, 2)) < 0.05", 15,
+             'the page to draw the car back where it was spawned')

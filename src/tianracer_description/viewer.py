@@ -6,11 +6,15 @@ and the bundle `make build` makes of web/src/viewer.js with three.js) and one We
   robot's links, the sun, the ambient light, the background; again whenever robots come or go);
 - the links' poses from /gazebo/link_states at `rate` Hz at the most, with the sim time of /clock,
   subscribed only while a page is open: with none, the plant publishes no link states for it;
+- the status twice a second: sim time, real time factor (over the last second of /clock), paused;
+- the page's buttons: play, pause, reset world, reset simulation (gazebo_ros's services);
 - the meshes' files, and the files beside them that their materials name (textures), and nothing
   else: only below the folders of the meshes the scene names.
-rospy's callbacks run on its threads; they hand what they got to the loop.
+rospy's callbacks run on its threads; they hand what they got to the loop. Service calls run on the
+loop's executor threads.
 """
 import asyncio
+import collections
 import json
 import os
 import threading
@@ -19,11 +23,18 @@ import time
 import rospy
 from aiohttp import WSMsgType, web
 from gazebo_msgs.msg import LinkStates
+from gazebo_msgs.srv import GetPhysicsProperties
 from rosgraph_msgs.msg import Clock
 from std_msgs.msg import String
+from std_srvs.srv import Empty
 
 DEFAULT_PORT = 8080
 DEFAULT_RATE = 30.0  # Hz: the poses a page gets at the most
+STATUS_PERIOD = 0.5  # s
+RTF_WINDOW = 1.0  # s of wall time the real time factor is measured over
+# The page's buttons and the gazebo_ros services they call (std_srvs/Empty).
+CONTROLS = {'play': 'unpause_physics', 'pause': 'pause_physics', 'reset_world': 'reset_world',
+            'reset_simulation': 'reset_simulation'}
 
 
 def default_web_root():
@@ -61,6 +72,7 @@ class Viewer:
         self._scene_text = None
         self._roots = set()
         self._sim_time = 0.0
+        self._clock_samples = collections.deque()  # (wall, sim) of /clock over the last RTF_WINDOW
         self._pages = set()
         self._link_states = None  # the subscriber, while a page is open
         self._last_poses = 0.0
@@ -77,7 +89,38 @@ class Viewer:
         self._to_pages(text)
 
     def _on_clock(self, message):
+        now = time.monotonic()
         self._sim_time = message.clock.to_sec()
+        with self._lock:
+            self._clock_samples.append((now, self._sim_time))
+            while self._clock_samples and now - self._clock_samples[0][0] > RTF_WINDOW:
+                self._clock_samples.popleft()
+
+    def real_time_factor(self):
+        """Simulated over wall seconds across the last RTF_WINDOW of /clock; 0 when it stands."""
+        now = time.monotonic()
+        with self._lock:
+            samples = [s for s in self._clock_samples if now - s[0] <= RTF_WINDOW]
+        if len(samples) < 2 or samples[-1][0] == samples[0][0]:
+            return 0.0
+        return (samples[-1][1] - samples[0][1]) / (now - samples[0][0])
+
+    def _paused(self):
+        """gazebo_ros's get_physics_properties' pause; None when the simulator does not answer."""
+        try:
+            name = self.namespace + '/get_physics_properties'
+            rospy.wait_for_service(name, 1.0)
+            return bool(rospy.ServiceProxy(name, GetPhysicsProperties)().pause)
+        except (rospy.ROSException, rospy.ServiceException):
+            return None
+
+    def _control(self, action):
+        name = self.namespace + '/' + CONTROLS[action]
+        try:
+            rospy.wait_for_service(name, 5.0)
+            rospy.ServiceProxy(name, Empty)()
+        except (rospy.ROSException, rospy.ServiceException) as error:
+            rospy.logerr('viewer: %s: %s', name, error)
 
     def _on_link_states(self, message):
         now = time.monotonic()
@@ -136,11 +179,30 @@ class Viewer:
             async for message in page:
                 if message.type == WSMsgType.ERROR:
                     break
+                if message.type == WSMsgType.TEXT:
+                    await self._from_page(message.data)
         finally:
             self._pages.discard(page)
             if not self._pages:
                 self._follow_links(False)
         return page
+
+    async def _from_page(self, text):
+        """A page's request: {"type": "control", "action": one of CONTROLS}; anything else is ignored."""
+        try:
+            request = json.loads(text)
+        except ValueError:
+            return
+        if isinstance(request, dict) and request.get('type') == 'control' and request.get('action') in CONTROLS:
+            await asyncio.get_running_loop().run_in_executor(None, self._control, request['action'])
+
+    async def _status(self):
+        while True:
+            if self._pages:
+                paused = await asyncio.get_running_loop().run_in_executor(None, self._paused)
+                self._send_all(json.dumps({'type': 'status', 'time': self._sim_time,
+                                           'real_time_factor': self.real_time_factor(), 'paused': paused}))
+            await asyncio.sleep(STATUS_PERIOD)
 
     def app(self):
         app = web.Application()
@@ -161,9 +223,11 @@ class Viewer:
         await site.start()
         if started:
             started('http://%s:%d/' % (self.host, self.port))
+        status = asyncio.ensure_future(self._status())
         try:
             while not rospy.is_shutdown():
                 await asyncio.sleep(0.2)
         finally:
+            status.cancel()
             self._follow_links(False)
             await runner.cleanup()

@@ -207,12 +207,25 @@ function applyPoses(message) {
   document.getElementById('time').textContent = simTime.toFixed(3) + ' s';
 }
 
+let status = { paused: null, real_time_factor: 0 };
+
+function applyStatus(message) {
+  status = message;
+  simTime = message.time;
+  document.getElementById('time').textContent = simTime.toFixed(3) + ' s';
+  document.getElementById('rtf').textContent = message.real_time_factor.toFixed(2);
+  document.getElementById('paused').textContent = message.paused ? '(paused)' : '';
+}
+
+let socket = null;
+
 function connect() {
-  const socket = new WebSocket((location.protocol === 'https:' ? 'wss://' : 'ws://') + location.host + '/ws');
+  socket = new WebSocket((location.protocol === 'https:' ? 'wss://' : 'ws://') + location.host + '/ws');
   socket.onmessage = (event) => {
     const message = JSON.parse(event.data);
     if (message.type === 'scene') buildScene(message.scene);
     else if (message.type === 'poses') applyPoses(message);
+    else if (message.type === 'status') applyStatus(message);
   };
   socket.onclose = () => {
     document.getElementById('status').textContent = 'disconnected; retrying';
@@ -246,7 +259,16 @@ window.viewer = {
     renderer.render(scene, camera);
   },
   time: () => simTime,
+  // the last status from the viewer: {time, real_time_factor, paused}
+  status: () => status,
 };
+
+// The buttons: gazebo_ros's services, called by the viewer node.
+for (const action of ['play', 'pause', 'reset_world', 'reset_simulation']) {
+  document.getElementById(action).onclick = () => {
+    if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify({ type: 'control', action }));
+  };
+}
 
 connect();
 frame();
