@@ -309,3 +309,18 @@ def test_pause_stops_the_clock_play_starts_it_and_reset_world_puts_the_car_back(
     driver.find_element(By.ID, 'reset_world').click()
     wait_for(driver, "Math.hypot(...viewer.linkPose('tianracer::base_link').slice(0, 2)) < 0.05", 15,
              'the page to draw the car back where it was spawned')
+
+
+def test_empty_world_launch_gui_true_starts_the_viewer_and_prints_where(ros):
+    """gazebo_ros's gui:=true starts gzclient; here it starts the viewer (no desktop: no browser)."""
+    import urllib.request
+    from tianracer_description.ros_harness import free_port
+    from tianracer_description.tianracer import RACE_TRACK_WORLD
+    port = free_port()
+    launch = ros.start(['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=true', 'viewer_port:=%d' % port,
+                        'world_name:=' + RACE_TRACK_WORLD], 'plant')
+    url = 'http://127.0.0.1:%d/' % port
+    ros.wait_until(lambda: ('viewer: open ' + url) in launch.log(), 60, 'the launch to print the viewer address')
+    with urllib.request.urlopen(url, timeout=10) as index:
+        assert b'viewer.js' in index.read()
+    assert 'rviz' not in ros.run(['rosnode', 'list']).stdout
