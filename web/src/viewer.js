@@ -234,7 +234,10 @@ function connect() {
   socket.onopen = () => { document.getElementById('status').textContent = 'connected'; };
 }
 
+let framesDrawn = 0;
+
 function frame() {
+  framesDrawn += 1;
   resize();
   controls.update();
   renderer.render(scene, camera);
@@ -259,6 +262,7 @@ window.viewer = {
     renderer.render(scene, camera);
   },
   time: () => simTime,
+  framesDrawn: () => framesDrawn,
   // the last status from the viewer: {time, real_time_factor, paused}
   status: () => status,
 };
