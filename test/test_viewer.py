@@ -324,3 +324,36 @@ def test_empty_world_launch_gui_true_starts_the_viewer_and_prints_where(ros):
     with urllib.request.urlopen(url, timeout=10) as index:
         assert b'viewer.js' in index.read()
     assert 'rviz' not in ros.run(['rosnode', 'list']).stdout
+
+
+MODEL_XY = """
+    import json, rospy
+    from gazebo_msgs.msg import ModelStates
+    rospy.init_node('model_probe', anonymous=True)
+    states = rospy.wait_for_message('/gazebo/model_states', ModelStates, timeout=10)
+    p = states.pose[states.name.index('tianracer')].position
+    print(json.dumps([p.x, p.y]))
+"""
+
+
+def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting_go_stops_it(page):
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import Select
+    from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
+    ros, _, driver, _ = page
+    ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/tianracer', *TUTORIAL_CONTROLLERS], 'spawner')
+    ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
+    ros.start(['rosrun', 'tianracer_description', 'cmdvel2gazebo.py'], 'cmdvel2gazebo')
+    wait_for(driver, "Array.from(document.getElementById('drive_topic').options)"
+                     ".some((o) => o.value === '/tianracer/cmd_vel')", 30, "the converter's topic to be offered")
+    Select(driver.find_element(By.ID, 'drive_topic')).select_by_value('/tianracer/cmd_vel')
+    driver.execute_script('document.activeElement.blur()')
+    start = ros.python(MODEL_XY)
+    ActionChains(driver).key_down('i').pause(2.0).key_up('i').perform()  # i: straight ahead
+    time.sleep(1.0)  # the converter's 0.2 s and the car rolling out
+    driven = ros.python(MODEL_XY)
+    time.sleep(1.0)
+    later = ros.python(MODEL_XY)
+    assert driven[0] - start[0] > 0.3, 'the car did not drive ahead: %s -> %s' % (start, driven)
+    assert math.hypot(later[0] - driven[0], later[1] - driven[1]) < 0.02, 'the car went on: %s -> %s' % (driven, later)

@@ -8,6 +8,11 @@ and the bundle `make build` makes of web/src/viewer.js with three.js) and one We
   subscribed only while a page is open: with none, the plant publishes no link states for it;
 - the status twice a second: sim time, real time factor (over the last second of /clock), paused;
 - the page's buttons: play, pause, reset world, reset simulation (gazebo_ros's services);
+- keyboard driving: teleop.py's keys (its tables, sent to the page) held in the page become a
+  command at 10 Hz on a topic the page picks among those a node subscribes to with
+  geometry_msgs/Twist or ackermann_msgs/AckermannDriveStamped; when the page stops sending for the
+  converter's 0.2 s, or goes away, one zero command and nothing more (cmdvel2gazebo.py's dead man's
+  rule, for drives that have none);
 - the meshes' files, and the files beside them that their materials name (textures), and nothing
   else: only below the folders of the meshes the scene names.
 rospy's callbacks run on its threads; they hand what they got to the loop. Service calls run on the
@@ -15,14 +20,18 @@ loop's executor threads.
 """
 import asyncio
 import collections
+import importlib.util
 import json
 import os
 import threading
 import time
 
+import rosgraph
 import rospy
+from ackermann_msgs.msg import AckermannDriveStamped
 from aiohttp import WSMsgType, web
 from gazebo_msgs.msg import LinkStates
+from geometry_msgs.msg import Twist
 from gazebo_msgs.srv import GetPhysicsProperties
 from rosgraph_msgs.msg import Clock
 from std_msgs.msg import String
@@ -35,6 +44,37 @@ RTF_WINDOW = 1.0  # s of wall time the real time factor is measured over
 # The page's buttons and the gazebo_ros services they call (std_srvs/Empty).
 CONTROLS = {'play': 'unpause_physics', 'pause': 'pause_physics', 'reset_world': 'reset_world',
             'reset_simulation': 'reset_simulation'}
+DRIVE_TYPES = {'geometry_msgs/Twist': Twist, 'ackermann_msgs/AckermannDriveStamped': AckermannDriveStamped}
+DRIVE_PERIOD = 0.1  # s: 10 Hz, as cmdvel2gazebo.py publishes
+DRIVE_TIMEOUT = 0.2  # s: cmdvel2gazebo.py's dead man's switch
+
+
+def teleop_keys():
+    """teleop.py's key tables, read from the script itself: {'move': {key: [speed, turn]}, 'scale': ...}."""
+    path = os.path.join(os.path.dirname(default_web_root()), 'scripts', 'teleop.py')
+    spec = importlib.util.spec_from_file_location('teleop_keys', path)
+    teleop = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(teleop)  # its main() runs only as a script
+    return {'move': teleop.moveBindings, 'scale': teleop.speedBindings}
+
+
+def drive_topics(master):
+    """{topic: type} of the topics some node subscribes to with a Twist or an AckermannDriveStamped."""
+    _, subscribers, _ = master.getSystemState()
+    types = dict(master.getTopicTypes())
+    return {topic: types[topic] for topic, _ in subscribers if types.get(topic) in DRIVE_TYPES}
+
+
+def drive_command(kind, speed, turn):
+    """A Twist (linear.x, angular.z) or an AckermannDriveStamped (speed, steering_angle)."""
+    if kind == 'geometry_msgs/Twist':
+        command = Twist()
+        command.linear.x, command.angular.z = speed, turn
+    else:
+        command = AckermannDriveStamped()
+        command.header.stamp = rospy.Time.now()
+        command.drive.speed, command.drive.steering_angle = speed, turn
+    return command
 
 
 def default_web_root():
@@ -78,6 +118,10 @@ class Viewer:
         self._last_poses = 0.0
         self._lock = threading.Lock()
         self._loop = None
+        self._drive_topics = {}
+        self._keys = teleop_keys()
+        self._publishers = {}  # topic: publisher, made on a page's first command for it
+        self._driving = {}  # topic: (speed, turn, the page's last request, monotonic s)
 
     # ------------------------------------------------------------------ ROS side (rospy's threads)
 
@@ -173,6 +217,7 @@ class Viewer:
         self._follow_links(True)
         with self._lock:
             scene_text = self._scene_text
+        await page.send_str(json.dumps({'type': 'keys', 'keys': self._keys}))
         if scene_text:
             await page.send_str(scene_text)
         try:
@@ -188,20 +233,54 @@ class Viewer:
         return page
 
     async def _from_page(self, text):
-        """A page's request: {"type": "control", "action": one of CONTROLS}; anything else is ignored."""
+        """A page's request: {"type": "control", "action": one of CONTROLS} or {"type": "drive",
+        "topic", "speed", "turn"}; anything else is ignored."""
         try:
             request = json.loads(text)
         except ValueError:
             return
-        if isinstance(request, dict) and request.get('type') == 'control' and request.get('action') in CONTROLS:
+        if not isinstance(request, dict):
+            return
+        if request.get('type') == 'control' and request.get('action') in CONTROLS:
             await asyncio.get_running_loop().run_in_executor(None, self._control, request['action'])
+        elif request.get('type') == 'drive' and request.get('topic') in self._drive_topics:
+            try:
+                speed, turn = float(request['speed']), float(request['turn'])
+            except (KeyError, TypeError, ValueError):
+                return
+            if all(map(lambda v: abs(v) < 1e3, (speed, turn))):  # finite and sane; NaN fails too
+                self._driving[request['topic']] = (speed, turn, time.monotonic())
+
+    def _publisher(self, topic):
+        if topic not in self._publishers:
+            self._publishers[topic] = rospy.Publisher(topic, DRIVE_TYPES[self._drive_topics[topic]], queue_size=1)
+        return self._publishers[topic]
+
+    async def _drive(self):
+        """The held commands at 10 Hz; a zero one, once, when a page stopped sending."""
+        while True:
+            now = time.monotonic()
+            for topic, (speed, turn, since) in list(self._driving.items()):
+                stale = now - since > DRIVE_TIMEOUT or not self._pages
+                self._publisher(topic).publish(drive_command(self._drive_topics[topic], 0.0 if stale else speed,
+                                                             0.0 if stale else turn))
+                if stale:
+                    del self._driving[topic]
+            await asyncio.sleep(DRIVE_PERIOD)
 
     async def _status(self):
+        master = rosgraph.Master(rospy.get_name())
         while True:
             if self._pages:
-                paused = await asyncio.get_running_loop().run_in_executor(None, self._paused)
+                loop = asyncio.get_running_loop()
+                paused = await loop.run_in_executor(None, self._paused)
+                try:
+                    self._drive_topics = await loop.run_in_executor(None, drive_topics, master)
+                except (rosgraph.MasterException, OSError):
+                    pass
                 self._send_all(json.dumps({'type': 'status', 'time': self._sim_time,
-                                           'real_time_factor': self.real_time_factor(), 'paused': paused}))
+                                           'real_time_factor': self.real_time_factor(), 'paused': paused,
+                                           'drive_topics': sorted(self._drive_topics)}))
             await asyncio.sleep(STATUS_PERIOD)
 
     def app(self):
@@ -223,11 +302,12 @@ class Viewer:
         await site.start()
         if started:
             started('http://%s:%d/' % (self.host, self.port))
-        status = asyncio.ensure_future(self._status())
+        status, drive = asyncio.ensure_future(self._status()), asyncio.ensure_future(self._drive())
         try:
             while not rospy.is_shutdown():
                 await asyncio.sleep(0.2)
         finally:
             status.cancel()
+            drive.cancel()
             self._follow_links(False)
             await runner.cleanup()

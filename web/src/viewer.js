@@ -211,6 +211,19 @@ let status = { paused: null, real_time_factor: 0 };
 
 function applyStatus(message) {
   status = message;
+  const select = document.getElementById('drive_topic');
+  const offered = Array.from(select.options).map((o) => o.value).filter((v) => v);
+  if (JSON.stringify(offered) !== JSON.stringify(message.drive_topics)) {
+    const chosen = select.value;
+    select.innerHTML = '';
+    for (const topic of message.drive_topics.length ? message.drive_topics : ['']) {
+      const option = document.createElement('option');
+      option.value = topic;
+      option.textContent = topic || '(no command topic)';
+      select.appendChild(option);
+    }
+    if (message.drive_topics.includes(chosen)) select.value = chosen;
+  }
   simTime = message.time;
   document.getElementById('time').textContent = simTime.toFixed(3) + ' s';
   document.getElementById('rtf').textContent = message.real_time_factor.toFixed(2);
@@ -226,6 +239,7 @@ function connect() {
     if (message.type === 'scene') buildScene(message.scene);
     else if (message.type === 'poses') applyPoses(message);
     else if (message.type === 'status') applyStatus(message);
+    else if (message.type === 'keys') keys = message.keys;
   };
   socket.onclose = () => {
     document.getElementById('status').textContent = 'disconnected; retrying';
@@ -273,6 +287,31 @@ for (const action of ['play', 'pause', 'reset_world', 'reset_simulation']) {
     if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify({ type: 'control', action }));
   };
 }
+
+// Keyboard driving with teleop.py's keys (its tables come from the viewer): a move key held sends
+// its command every 100 ms; let go, the viewer stops the robot (the converter's dead man's rule).
+let keys = { move: {}, scale: {} };
+const drive = { speed: 1.0, turn: 0.5, held: null };
+window.addEventListener('keydown', (event) => {
+  if (event.target.tagName === 'SELECT') return;
+  const key = event.key.toLowerCase();
+  if (keys.move[key]) drive.held = key;
+  else if (keys.scale[key]) {
+    drive.speed *= keys.scale[key][0];
+    drive.turn *= keys.scale[key][1];
+  } else if (key === ' ') drive.held = null;
+  document.getElementById('drive_state').textContent =
+    'speed ' + drive.speed.toFixed(2) + ', turn ' + drive.turn.toFixed(2) + (drive.held ? ' (' + drive.held + ')' : '');
+});
+window.addEventListener('keyup', (event) => {
+  if (event.key.toLowerCase() === drive.held) drive.held = null;
+});
+setInterval(() => {
+  const topic = document.getElementById('drive_topic').value;
+  if (!drive.held || !topic || !socket || socket.readyState !== WebSocket.OPEN) return;
+  const [ahead, turning] = keys.move[drive.held];
+  socket.send(JSON.stringify({ type: 'drive', topic, speed: ahead * drive.speed, turn: turning * drive.turn }));
+}, 100);
 
 connect();
 frame();
