@@ -357,3 +357,37 @@ def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting
     later = ros.python(MODEL_XY)
     assert driven[0] - start[0] > 0.3, 'the car did not drive ahead: %s -> %s' % (start, driven)
     assert math.hypot(later[0] - driven[0], later[1] - driven[1]) < 0.02, 'the car went on: %s -> %s' % (driven, later)
+
+
+def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turned_off(page):
+    import base64
+    from PIL import Image
+    from selenium.webdriver.common.by import By
+    ros, _, driver, _ = page
+    topic = '/camera/image_raw'
+    box = '#image_topics input[data-topic="%s"]' % topic
+    wait_for(driver, "!!document.querySelector('%s')" % box, 30, 'the camera to be offered')
+    driver.find_element(By.CSS_SELECTOR, box).click()
+    wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, 'frames of the camera in the page')
+    source = driver.execute_script("return document.querySelector('#images figure[data-topic=\"%s\"] img').src" % topic)
+    shown = np.asarray(Image.open(io.BytesIO(base64.b64decode(source.split(',', 1)[1]))).convert('RGB'), dtype=float)
+    # the same camera's frame straight from the topic (the car stands: the same view, other noise)
+    frame = ros.python("""
+        import json, rospy, numpy
+        from sensor_msgs.msg import Image
+        rospy.init_node('camera_probe', anonymous=True)
+        m = rospy.wait_for_message('%s', Image, timeout=10)
+        pixels = numpy.frombuffer(m.data, numpy.uint8).reshape(m.height, m.step)[:, :3 * m.width]
+        print(json.dumps({'encoding': m.encoding, 'size': [m.width, m.height],
+                          'mean': pixels.reshape(m.height, m.width, 3).reshape(-1, 3).mean(axis=0).tolist()}))
+    """ % topic)
+    assert frame['encoding'] == 'rgb8'
+    assert [shown.shape[1], shown.shape[0]] == frame['size']
+    assert np.abs(shown.reshape(-1, 3).mean(axis=0) - frame['mean']).max() < 6, (
+        shown.reshape(-1, 3).mean(axis=0), frame['mean'])
+
+    def viewer_subscribes():
+        return '/viewer' in ros.run(['rostopic', 'info', topic]).stdout.split('Subscribers:')[-1]
+    assert viewer_subscribes()
+    driver.find_element(By.CSS_SELECTOR, box).click()
+    ros.wait_until(lambda: not viewer_subscribes(), 15, 'the viewer to drop the camera')

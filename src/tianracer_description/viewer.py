@@ -13,27 +13,35 @@ and the bundle `make build` makes of web/src/viewer.js with three.js) and one We
   geometry_msgs/Twist or ackermann_msgs/AckermannDriveStamped; when the page stops sending for the
   converter's 0.2 s, or goes away, one zero command and nothing more (cmdvel2gazebo.py's dead man's
   rule, for drives that have none);
+- camera overlays: a sensor_msgs/Image topic a page turns on is subscribed while some page wants it,
+  and its frames go to those pages as JPEG, OVERLAY_RATE a second at the most (depth images as grey,
+  near dark, far light, nothing black);
 - the meshes' files, and the files beside them that their materials name (textures), and nothing
   else: only below the folders of the meshes the scene names.
 rospy's callbacks run on its threads; they hand what they got to the loop. Service calls run on the
 loop's executor threads.
 """
 import asyncio
+import base64
 import collections
+import io
 import importlib.util
 import json
 import os
 import threading
 import time
 
+import numpy as np
 import rosgraph
 import rospy
+from PIL import Image as PilImage
 from ackermann_msgs.msg import AckermannDriveStamped
 from aiohttp import WSMsgType, web
 from gazebo_msgs.msg import LinkStates
 from geometry_msgs.msg import Twist
 from gazebo_msgs.srv import GetPhysicsProperties
 from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import Image
 from std_msgs.msg import String
 from std_srvs.srv import Empty
 
@@ -47,6 +55,8 @@ CONTROLS = {'play': 'unpause_physics', 'pause': 'pause_physics', 'reset_world': 
 DRIVE_TYPES = {'geometry_msgs/Twist': Twist, 'ackermann_msgs/AckermannDriveStamped': AckermannDriveStamped}
 DRIVE_PERIOD = 0.1  # s: 10 Hz, as cmdvel2gazebo.py publishes
 DRIVE_TIMEOUT = 0.2  # s: cmdvel2gazebo.py's dead man's switch
+OVERLAY_RATE = 5.0  # Hz: a camera's frames to a page at the most
+JPEG_QUALITY = 80
 
 
 def teleop_keys():
@@ -63,6 +73,41 @@ def drive_topics(master):
     _, subscribers, _ = master.getSystemState()
     types = dict(master.getTopicTypes())
     return {topic: types[topic] for topic, _ in subscribers if types.get(topic) in DRIVE_TYPES}
+
+
+def topics_of_type(master, kind):
+    """The topics some node publishes with `kind` (e.g. sensor_msgs/Image)."""
+    publishers, _, _ = master.getSystemState()
+    types = dict(master.getTopicTypes())
+    return sorted(topic for topic, _ in publishers if types.get(topic) == kind)
+
+
+def jpeg_of(image):
+    """A sensor_msgs/Image as JPEG bytes: rgb8, bgr8, rgba8, bgra8 and mono8 as they are; 32FC1 and
+    16UC1 depths as grey from the nearest to the farthest value in the frame (none: black)."""
+    rows = np.frombuffer(image.data, dtype=np.uint8).reshape(image.height, image.step)
+    encoding = image.encoding.lower()
+    channels = {'rgb8': 3, 'bgr8': 3, 'rgba8': 4, 'bgra8': 4, 'mono8': 1}
+    if encoding in channels:
+        n = channels[encoding]
+        pixels = rows[:, :image.width * n].reshape(image.height, image.width, n)
+        if encoding.startswith('bgr'):
+            pixels = pixels[:, :, [2, 1, 0]]
+        pixels = pixels[:, :, :3] if n > 1 else pixels[:, :, 0]
+    elif encoding in ('32fc1', '16uc1'):
+        dtype = np.dtype('<f4' if encoding == '32fc1' else '<u2').newbyteorder('>' if image.is_bigendian else '<')
+        depth = rows[:, :image.width * dtype.itemsize].copy().view(dtype).reshape(image.height, image.width)
+        depth = depth.astype(np.float64)
+        seen = np.isfinite(depth) & (depth > 0)
+        pixels = np.zeros(depth.shape, np.uint8)
+        if seen.any():
+            near, far = depth[seen].min(), depth[seen].max()
+            pixels[seen] = np.round(55 + 200 * (depth[seen] - near) / max(far - near, 1e-9))
+    else:
+        raise ValueError('an image in %s, which the viewer does not show' % image.encoding)
+    out = io.BytesIO()
+    PilImage.fromarray(np.ascontiguousarray(pixels)).save(out, format='JPEG', quality=JPEG_QUALITY)
+    return out.getvalue()
 
 
 def drive_command(kind, speed, turn):
@@ -122,6 +167,8 @@ class Viewer:
         self._keys = teleop_keys()
         self._publishers = {}  # topic: publisher, made on a page's first command for it
         self._driving = {}  # topic: (speed, turn, the page's last request, monotonic s)
+        self._image_topics = []
+        self._overlays = {}  # image topic: {'pages': set of pages, 'subscriber', 'last': monotonic s}
 
     # ------------------------------------------------------------------ ROS side (rospy's threads)
 
@@ -172,6 +219,43 @@ class Viewer:
             return
         self._last_poses = now
         self._to_pages(poses_message(message, self._sim_time))
+
+    def _on_image(self, topic, image):
+        now = time.monotonic()
+        with self._lock:
+            overlay = self._overlays.get(topic)
+            if overlay is None or now - overlay['last'] < 1.0 / OVERLAY_RATE:
+                return
+            overlay['last'] = now
+        try:
+            jpeg = jpeg_of(image)
+        except ValueError as error:
+            rospy.logwarn_throttle(10.0, 'viewer: %s: %s' % (topic, error))
+            return
+        text = json.dumps({'type': 'image', 'topic': topic, 'width': image.width, 'height': image.height,
+                           'stamp': image.header.stamp.to_sec(), 'jpeg': base64.b64encode(jpeg).decode('ascii')})
+        if self._loop is not None:
+            self._loop.call_soon_threadsafe(self._send_overlay, topic, text)
+
+    def _send_overlay(self, topic, text):
+        overlay = self._overlays.get(topic)
+        for page in list(overlay['pages'] if overlay else []):
+            if not page.closed:
+                asyncio.ensure_future(page.send_str(text))
+
+    def _show(self, page, topic, on):
+        """Turns a page's overlay of an image topic on or off: subscribed while a page wants it."""
+        with self._lock:
+            overlay = self._overlays.get(topic)
+            if on and overlay is None:
+                overlay = self._overlays[topic] = {'pages': set(), 'last': 0.0, 'subscriber': rospy.Subscriber(
+                    topic, Image, lambda image: self._on_image(topic, image), queue_size=1, buff_size=2 ** 24)}
+            if overlay is None:
+                return
+            (overlay['pages'].add if on else overlay['pages'].discard)(page)
+            if not overlay['pages']:
+                overlay['subscriber'].unregister()
+                del self._overlays[topic]
 
     def _to_pages(self, text):
         if self._loop is not None:
@@ -225,16 +309,18 @@ class Viewer:
                 if message.type == WSMsgType.ERROR:
                     break
                 if message.type == WSMsgType.TEXT:
-                    await self._from_page(message.data)
+                    await self._from_page(page, message.data)
         finally:
             self._pages.discard(page)
+            for topic in list(self._overlays):
+                self._show(page, topic, False)
             if not self._pages:
                 self._follow_links(False)
         return page
 
-    async def _from_page(self, text):
-        """A page's request: {"type": "control", "action": one of CONTROLS} or {"type": "drive",
-        "topic", "speed", "turn"}; anything else is ignored."""
+    async def _from_page(self, page, text):
+        """A page's request: {"type": "control", "action": one of CONTROLS}, {"type": "drive",
+        "topic", "speed", "turn"} or {"type": "overlay", "topic", "on"}; anything else is ignored."""
         try:
             request = json.loads(text)
         except ValueError:
@@ -250,6 +336,8 @@ class Viewer:
                 return
             if all(map(lambda v: abs(v) < 1e3, (speed, turn))):  # finite and sane; NaN fails too
                 self._driving[request['topic']] = (speed, turn, time.monotonic())
+        elif request.get('type') == 'overlay' and request.get('topic') in self._image_topics:
+            self._show(page, request['topic'], bool(request.get('on')))
 
     def _publisher(self, topic):
         if topic not in self._publishers:
@@ -276,11 +364,14 @@ class Viewer:
                 paused = await loop.run_in_executor(None, self._paused)
                 try:
                     self._drive_topics = await loop.run_in_executor(None, drive_topics, master)
+                    self._image_topics = await loop.run_in_executor(None, topics_of_type, master,
+                                                                    'sensor_msgs/Image')
                 except (rosgraph.MasterException, OSError):
                     pass
                 self._send_all(json.dumps({'type': 'status', 'time': self._sim_time,
                                            'real_time_factor': self.real_time_factor(), 'paused': paused,
-                                           'drive_topics': sorted(self._drive_topics)}))
+                                           'drive_topics': sorted(self._drive_topics),
+                                           'image_topics': self._image_topics}))
             await asyncio.sleep(STATUS_PERIOD)
 
     def app(self):

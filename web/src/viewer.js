@@ -209,8 +209,50 @@ function applyPoses(message) {
 
 let status = { paused: null, real_time_factor: 0 };
 
+// Camera overlays: a checkbox per image topic; a frame shown per topic turned on.
+const overlayFrames = new Map();
+
+function showImages(topics) {
+  const list = document.getElementById('image_topics');
+  if (list.dataset.topics === JSON.stringify(topics)) return;
+  list.dataset.topics = JSON.stringify(topics);
+  list.innerHTML = topics.length ? '' : 'none';
+  for (const topic of topics) {
+    const label = document.createElement('label');
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.dataset.topic = topic;
+    box.onchange = () => {
+      if (socket && socket.readyState === WebSocket.OPEN) {
+        socket.send(JSON.stringify({ type: 'overlay', topic, on: box.checked }));
+      }
+      const shown = document.querySelector('#images figure[data-topic="' + topic + '"]');
+      if (!box.checked && shown) shown.remove();
+    };
+    label.append(box, ' ' + topic + ' ');
+    list.appendChild(label);
+  }
+}
+
+function applyImage(message) {
+  const box = document.querySelector('#image_topics input[data-topic="' + message.topic + '"]');
+  if (!box || !box.checked) return;
+  let figure = document.querySelector('#images figure[data-topic="' + message.topic + '"]');
+  if (!figure) {
+    figure = document.createElement('figure');
+    figure.dataset.topic = message.topic;
+    figure.append(document.createElement('img'), document.createElement('figcaption'));
+    document.getElementById('images').appendChild(figure);
+  }
+  figure.querySelector('img').src = 'data:image/jpeg;base64,' + message.jpeg;
+  figure.querySelector('figcaption').textContent = message.topic + ' ' + message.width + ' x ' + message.height +
+    ' at ' + message.stamp.toFixed(3) + ' s';
+  overlayFrames.set(message.topic, (overlayFrames.get(message.topic) || 0) + 1);
+}
+
 function applyStatus(message) {
   status = message;
+  showImages(message.image_topics);
   const select = document.getElementById('drive_topic');
   const offered = Array.from(select.options).map((o) => o.value).filter((v) => v);
   if (JSON.stringify(offered) !== JSON.stringify(message.drive_topics)) {
@@ -240,6 +282,7 @@ function connect() {
     else if (message.type === 'poses') applyPoses(message);
     else if (message.type === 'status') applyStatus(message);
     else if (message.type === 'keys') keys = message.keys;
+    else if (message.type === 'image') applyImage(message);
   };
   socket.onclose = () => {
     document.getElementById('status').textContent = 'disconnected; retrying';
@@ -277,6 +320,8 @@ window.viewer = {
   },
   time: () => simTime,
   framesDrawn: () => framesDrawn,
+  // the frames of an image topic's overlay the page has shown
+  overlayFrames: (topic) => overlayFrames.get(topic) || 0,
   // the last status from the viewer: {time, real_time_factor, paused}
   status: () => status,
 };
