@@ -365,7 +365,7 @@ def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turn
     from selenium.webdriver.common.by import By
     ros, _, driver, _ = page
     topic = '/camera/image_raw'
-    box = '#image_topics input[data-topic="%s"]' % topic
+    box = '#overlay_topics input[data-topic="%s"]' % topic
     wait_for(driver, "!!document.querySelector('%s')" % box, 30, 'the camera to be offered')
     driver.find_element(By.CSS_SELECTOR, box).click()
     wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, 'frames of the camera in the page')
@@ -391,3 +391,28 @@ def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turn
     assert viewer_subscribes()
     driver.find_element(By.CSS_SELECTOR, box).click()
     ros.wait_until(lambda: not viewer_subscribes(), 15, 'the viewer to drop the camera')
+
+
+def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
+    """The car's lidar ticked: its hit points, drawn in its link as the page poses it, lie on the race
+    track's walls and cones (within 3 cm: the lidar's noise)."""
+    from selenium.webdriver.common.by import By
+    from tianracer_description.tianracer import RACE_TRACK_WORLD
+    _, _, driver, _ = page
+    topic = '/scan'
+    box = '#overlay_topics input[data-topic="%s"]' % topic
+    wait_for(driver, "!!document.querySelector('%s')" % box, 30, 'the lidar to be offered')
+    driver.find_element(By.CSS_SELECTOR, box).click()
+    wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, 'scans drawn in the page')
+    points = driver.execute_script("return viewer.scanPointsInWorld('%s')" % topic)
+    walls = track_walls(RACE_TRACK_WORLD)
+    cones = [(tuple(map(float, m.findtext('pose').split()[:2])), float(m.findtext('link/collision/geometry/cylinder/radius')))
+             for m in ET.parse(RACE_TRACK_WORLD).getroot().iter('model')
+             if m.find('link/collision/geometry/cylinder') is not None]
+    assert len(points) > 500
+
+    def off_everything(p):
+        return (min(distance_to_box(p, w) for w in walls) > 0.03 and
+                all(abs(math.hypot(p[0] - c[0], p[1] - c[1]) - r) > 0.03 for c, r in cones))
+    off = [p for p in points if off_everything(p)]
+    assert not off, '%d of %d points off the walls and cones, e.g. %s' % (len(off), len(points), off[:3])

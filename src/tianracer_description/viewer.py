@@ -13,9 +13,10 @@ and the bundle `make build` makes of web/src/viewer.js with three.js) and one We
   geometry_msgs/Twist or ackermann_msgs/AckermannDriveStamped; when the page stops sending for the
   converter's 0.2 s, or goes away, one zero command and nothing more (cmdvel2gazebo.py's dead man's
   rule, for drives that have none);
-- camera overlays: a sensor_msgs/Image topic a page turns on is subscribed while some page wants it,
-  and its frames go to those pages as JPEG, OVERLAY_RATE a second at the most (depth images as grey,
-  near dark, far light, nothing black);
+- overlays: a sensor_msgs/Image or sensor_msgs/LaserScan topic a page turns on is subscribed while
+  some page wants it, and its messages go to those pages OVERLAY_RATE a second at the most: images
+  as JPEG (depth as grey, near dark, far light, nothing black), scans as their ranges (the page draws
+  the hit points in the link named by the scan's frame);
 - the meshes' files, and the files beside them that their materials name (textures), and nothing
   else: only below the folders of the meshes the scene names.
 rospy's callbacks run on its threads; they hand what they got to the loop. Service calls run on the
@@ -41,7 +42,7 @@ from gazebo_msgs.msg import LinkStates
 from geometry_msgs.msg import Twist
 from gazebo_msgs.srv import GetPhysicsProperties
 from rosgraph_msgs.msg import Clock
-from sensor_msgs.msg import Image
+from sensor_msgs.msg import Image, LaserScan
 from std_msgs.msg import String
 from std_srvs.srv import Empty
 
@@ -75,11 +76,14 @@ def drive_topics(master):
     return {topic: types[topic] for topic, _ in subscribers if types.get(topic) in DRIVE_TYPES}
 
 
-def topics_of_type(master, kind):
-    """The topics some node publishes with `kind` (e.g. sensor_msgs/Image)."""
+OVERLAY_TYPES = {'sensor_msgs/Image': 'image', 'sensor_msgs/LaserScan': 'scan'}
+
+
+def overlay_topics(master):
+    """{topic: 'image' or 'scan'} of the Image and LaserScan topics some node publishes."""
     publishers, _, _ = master.getSystemState()
     types = dict(master.getTopicTypes())
-    return sorted(topic for topic, _ in publishers if types.get(topic) == kind)
+    return {topic: OVERLAY_TYPES[types[topic]] for topic, _ in publishers if types.get(topic) in OVERLAY_TYPES}
 
 
 def jpeg_of(image):
@@ -167,8 +171,8 @@ class Viewer:
         self._keys = teleop_keys()
         self._publishers = {}  # topic: publisher, made on a page's first command for it
         self._driving = {}  # topic: (speed, turn, the page's last request, monotonic s)
-        self._image_topics = []
-        self._overlays = {}  # image topic: {'pages': set of pages, 'subscriber', 'last': monotonic s}
+        self._overlay_topics = {}  # topic: 'image' or 'scan', of those published
+        self._overlays = {}  # topic: {'pages': set of pages, 'subscriber', 'last': monotonic s}
 
     # ------------------------------------------------------------------ ROS side (rospy's threads)
 
@@ -220,22 +224,39 @@ class Viewer:
         self._last_poses = now
         self._to_pages(poses_message(message, self._sim_time))
 
-    def _on_image(self, topic, image):
+    def _due(self, topic):
+        """Whether a message of an overlay's topic goes to its pages now (OVERLAY_RATE at the most)."""
         now = time.monotonic()
         with self._lock:
             overlay = self._overlays.get(topic)
             if overlay is None or now - overlay['last'] < 1.0 / OVERLAY_RATE:
-                return
+                return False
             overlay['last'] = now
+            return True
+
+    def _on_image(self, topic, image):
+        if not self._due(topic):
+            return
         try:
             jpeg = jpeg_of(image)
         except ValueError as error:
             rospy.logwarn_throttle(10.0, 'viewer: %s: %s' % (topic, error))
             return
-        text = json.dumps({'type': 'image', 'topic': topic, 'width': image.width, 'height': image.height,
-                           'stamp': image.header.stamp.to_sec(), 'jpeg': base64.b64encode(jpeg).decode('ascii')})
+        self._to_overlay(topic, {'type': 'image', 'topic': topic, 'width': image.width, 'height': image.height,
+                                 'stamp': image.header.stamp.to_sec(),
+                                 'jpeg': base64.b64encode(jpeg).decode('ascii')})
+
+    def _on_scan(self, topic, scan):
+        if not self._due(topic):
+            return
+        ranges = [round(r, 4) if scan.range_min <= r <= scan.range_max else None for r in scan.ranges]
+        self._to_overlay(topic, {'type': 'scan', 'topic': topic, 'frame': scan.header.frame_id,
+                                 'angle_min': scan.angle_min, 'angle_increment': scan.angle_increment,
+                                 'ranges': ranges})
+
+    def _to_overlay(self, topic, message):
         if self._loop is not None:
-            self._loop.call_soon_threadsafe(self._send_overlay, topic, text)
+            self._loop.call_soon_threadsafe(self._send_overlay, topic, json.dumps(message))
 
     def _send_overlay(self, topic, text):
         overlay = self._overlays.get(topic)
@@ -244,12 +265,14 @@ class Viewer:
                 asyncio.ensure_future(page.send_str(text))
 
     def _show(self, page, topic, on):
-        """Turns a page's overlay of an image topic on or off: subscribed while a page wants it."""
+        """Turns a page's overlay of a topic on or off: subscribed while a page wants it."""
         with self._lock:
             overlay = self._overlays.get(topic)
             if on and overlay is None:
+                kind, handler = ((Image, self._on_image) if self._overlay_topics.get(topic) == 'image'
+                                 else (LaserScan, self._on_scan))
                 overlay = self._overlays[topic] = {'pages': set(), 'last': 0.0, 'subscriber': rospy.Subscriber(
-                    topic, Image, lambda image: self._on_image(topic, image), queue_size=1, buff_size=2 ** 24)}
+                    topic, kind, lambda message: handler(topic, message), queue_size=1, buff_size=2 ** 24)}
             if overlay is None:
                 return
             (overlay['pages'].add if on else overlay['pages'].discard)(page)
@@ -336,7 +359,7 @@ class Viewer:
                 return
             if all(map(lambda v: abs(v) < 1e3, (speed, turn))):  # finite and sane; NaN fails too
                 self._driving[request['topic']] = (speed, turn, time.monotonic())
-        elif request.get('type') == 'overlay' and request.get('topic') in self._image_topics:
+        elif request.get('type') == 'overlay' and request.get('topic') in self._overlay_topics:
             self._show(page, request['topic'], bool(request.get('on')))
 
     def _publisher(self, topic):
@@ -362,16 +385,15 @@ class Viewer:
             if self._pages:
                 loop = asyncio.get_running_loop()
                 paused = await loop.run_in_executor(None, self._paused)
-                try:
+                try:  # one master call at a time: its proxy is not for two threads
                     self._drive_topics = await loop.run_in_executor(None, drive_topics, master)
-                    self._image_topics = await loop.run_in_executor(None, topics_of_type, master,
-                                                                    'sensor_msgs/Image')
-                except (rosgraph.MasterException, OSError):
-                    pass
+                    self._overlay_topics = await loop.run_in_executor(None, overlay_topics, master)
+                except (rosgraph.MasterException, OSError) as error:
+                    rospy.logwarn_throttle(10.0, 'viewer: the master does not answer: %s' % error)
                 self._send_all(json.dumps({'type': 'status', 'time': self._sim_time,
                                            'real_time_factor': self.real_time_factor(), 'paused': paused,
                                            'drive_topics': sorted(self._drive_topics),
-                                           'image_topics': self._image_topics}))
+                                           'overlay_topics': self._overlay_topics}))
             await asyncio.sleep(STATUS_PERIOD)
 
     def app(self):

@@ -209,15 +209,18 @@ function applyPoses(message) {
 
 let status = { paused: null, real_time_factor: 0 };
 
-// Camera overlays: a checkbox per image topic; a frame shown per topic turned on.
+// Sensor overlays: a checkbox per image or scan topic; a camera's frame in a corner, a scan's hit
+// points in its link.
 const overlayFrames = new Map();
+const scanPoints = new Map();  // topic: THREE.Points
 
-function showImages(topics) {
-  const list = document.getElementById('image_topics');
-  if (list.dataset.topics === JSON.stringify(topics)) return;
-  list.dataset.topics = JSON.stringify(topics);
-  list.innerHTML = topics.length ? '' : 'none';
-  for (const topic of topics) {
+function showOverlayTopics(topics) {
+  const list = document.getElementById('overlay_topics');
+  const names = Object.keys(topics).sort();
+  if (list.dataset.topics === JSON.stringify(names)) return;
+  list.dataset.topics = JSON.stringify(names);
+  list.innerHTML = names.length ? '' : 'none';
+  for (const topic of names) {
     const label = document.createElement('label');
     const box = document.createElement('input');
     box.type = 'checkbox';
@@ -228,14 +231,46 @@ function showImages(topics) {
       }
       const shown = document.querySelector('#images figure[data-topic="' + topic + '"]');
       if (!box.checked && shown) shown.remove();
+      if (!box.checked && scanPoints.has(topic)) {
+        scanPoints.get(topic).removeFromParent();
+        scanPoints.delete(topic);
+      }
     };
     label.append(box, ' ' + topic + ' ');
     list.appendChild(label);
   }
 }
 
+function overlayOn(topic) {
+  const box = document.querySelector('#overlay_topics input[data-topic="' + topic + '"]');
+  return box && box.checked;
+}
+
+// A scan's hits as points in the link its frame names (model::frame in link_states).
+function applyScan(message) {
+  if (!overlayOn(message.topic)) return;
+  const frame = message.frame.split('/').pop();
+  const link = Array.from(links.values()).find((l) => l.name.endsWith('::' + frame));
+  if (!link) return;  // a frame no drawn link has
+  const xyz = [];
+  message.ranges.forEach((r, k) => {
+    if (r === null) return;
+    const a = message.angle_min + k * message.angle_increment;
+    xyz.push(r * Math.cos(a), r * Math.sin(a), 0);
+  });
+  let points = scanPoints.get(message.topic);
+  if (!points) {
+    points = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: 0x00c000, size: 4,
+                                                                                     sizeAttenuation: false }));
+    scanPoints.set(message.topic, points);
+  }
+  if (points.parent !== link) link.add(points);
+  points.geometry.setAttribute('position', new THREE.Float32BufferAttribute(xyz, 3));
+  overlayFrames.set(message.topic, (overlayFrames.get(message.topic) || 0) + 1);
+}
+
 function applyImage(message) {
-  const box = document.querySelector('#image_topics input[data-topic="' + message.topic + '"]');
+  const box = document.querySelector('#overlay_topics input[data-topic="' + message.topic + '"]');
   if (!box || !box.checked) return;
   let figure = document.querySelector('#images figure[data-topic="' + message.topic + '"]');
   if (!figure) {
@@ -252,7 +287,7 @@ function applyImage(message) {
 
 function applyStatus(message) {
   status = message;
-  showImages(message.image_topics);
+  showOverlayTopics(message.overlay_topics);
   const select = document.getElementById('drive_topic');
   const offered = Array.from(select.options).map((o) => o.value).filter((v) => v);
   if (JSON.stringify(offered) !== JSON.stringify(message.drive_topics)) {
@@ -283,6 +318,7 @@ function connect() {
     else if (message.type === 'status') applyStatus(message);
     else if (message.type === 'keys') keys = message.keys;
     else if (message.type === 'image') applyImage(message);
+    else if (message.type === 'scan') applyScan(message);
   };
   socket.onclose = () => {
     document.getElementById('status').textContent = 'disconnected; retrying';
@@ -322,6 +358,17 @@ window.viewer = {
   framesDrawn: () => framesDrawn,
   // the frames of an image topic's overlay the page has shown
   overlayFrames: (topic) => overlayFrames.get(topic) || 0,
+  // a scan overlay's points in the world, [[x, y, z], ...]
+  scanPointsInWorld: (topic) => {
+    const points = scanPoints.get(topic);
+    if (!points) return [];
+    points.updateWorldMatrix(true, false);
+    const p = points.geometry.getAttribute('position'), out = [];
+    for (let k = 0; k < p.count; k++) {
+      out.push(new THREE.Vector3(p.getX(k), p.getY(k), p.getZ(k)).applyMatrix4(points.matrixWorld).toArray());
+    }
+    return out;
+  },
   // the last status from the viewer: {time, real_time_factor, paused}
   status: () => status,
 };
