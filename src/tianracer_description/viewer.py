@@ -382,19 +382,27 @@ class Viewer:
     async def _status(self):
         master = rosgraph.Master(rospy.get_name())
         while True:
-            if self._pages:
-                loop = asyncio.get_running_loop()
-                paused = await loop.run_in_executor(None, self._paused)
-                try:  # one master call at a time: its proxy is not for two threads
-                    self._drive_topics = await loop.run_in_executor(None, drive_topics, master)
-                    self._overlay_topics = await loop.run_in_executor(None, overlay_topics, master)
-                except (rosgraph.MasterException, OSError) as error:
-                    rospy.logwarn_throttle(10.0, 'viewer: the master does not answer: %s' % error)
-                self._send_all(json.dumps({'type': 'status', 'time': self._sim_time,
-                                           'real_time_factor': self.real_time_factor(), 'paused': paused,
-                                           'drive_topics': sorted(self._drive_topics),
-                                           'overlay_topics': self._overlay_topics}))
+            try:
+                await self._send_status(master)
+            except Exception as error:  # noqa: BLE001  the status goes on, whatever one round met
+                rospy.logerr_throttle(10.0, 'viewer: status: %r' % error)
             await asyncio.sleep(STATUS_PERIOD)
+
+    async def _send_status(self, master):
+        """One status to the pages, with the command and sensor topics the master knows now."""
+        if not self._pages:
+            return
+        loop = asyncio.get_running_loop()
+        paused = await loop.run_in_executor(None, self._paused)
+        try:  # one master call at a time: its proxy is not for two threads
+            self._drive_topics = await loop.run_in_executor(None, drive_topics, master)
+            self._overlay_topics = await loop.run_in_executor(None, overlay_topics, master)
+        except (rosgraph.MasterException, OSError) as error:
+            rospy.logwarn_throttle(10.0, 'viewer: the master does not answer: %s' % error)
+        self._send_all(json.dumps({'type': 'status', 'time': self._sim_time,
+                                   'real_time_factor': self.real_time_factor(), 'paused': paused,
+                                   'drive_topics': sorted(self._drive_topics),
+                                   'overlay_topics': self._overlay_topics}))
 
     def app(self):
         app = web.Application()
