@@ -196,16 +196,16 @@ def test_the_cars_drawn_pose_follows_model_states_as_it_drives(page, ros):
     assert math.hypot(drawn[0] - moved[0], drawn[1] - moved[1]) < 0.01, (drawn, moved)
 
 
-def test_a_page_that_goes_away_leaves_link_states_unsubscribed(page, ros):
+def test_a_page_that_goes_away_leaves_the_scenes_link_states_unsubscribed(page, ros):
     _, _, driver, url = page
 
     def subscribed():
-        info = ros.run(['rostopic', 'info', '/gazebo/link_states']).stdout
+        info = ros.run(['rostopic', 'info', '/gazebo/scene_link_states']).stdout
         return '/viewer' in info.split('Subscribers:')[-1]
 
     assert subscribed()
     driver.get('about:blank')
-    ros.wait_until(lambda: not subscribed(), 15, 'the viewer to drop /gazebo/link_states')
+    ros.wait_until(lambda: not subscribed(), 15, 'the viewer to drop /gazebo/scene_link_states')
     driver.get(url)
     ros.wait_until(subscribed, 15, 'the viewer to subscribe again for a new page')
 

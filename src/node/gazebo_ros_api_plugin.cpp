@@ -9,6 +9,7 @@
 #include <tinyxml2.h>
 
 #include "bullet_plant/geometry.h"
+#include "bullet_plant/rate_gate.h"
 #include "bullet_plant/scene.h"
 #include "bullet_plant/world.h"
 #include "msg_conversions.h"
@@ -113,6 +114,9 @@ GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private
   model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
   link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
   scene_pub_ = nh_.advertise<std_msgs::String>("scene", 1, true);
+  // What viewers pose the scene by (gzclient gets poses throttled too): link_states at ~scene_rate.
+  scene_link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("scene_link_states", 1);
+  scene_link_states_gate_.setPeriodNs(periodNsOfRate(nh_.param("scene_rate", kDefaultSceneRate)));
   plant_.connectWorldUpdateEnd([this] {
     publishModelStates();
     publishLinkStates();
@@ -650,10 +654,8 @@ void GazeboRosApiPlugin::publishModelStates()
   model_states_pub_.publish(states);
 }
 
-void GazeboRosApiPlugin::publishLinkStates()
+gazebo_msgs::LinkStates GazeboRosApiPlugin::linkStates()
 {
-  if (link_states_pub_.getNumSubscribers() == 0)
-    return;
   gazebo_msgs::LinkStates states;
   for (Robot* robot : world_.robots())
     for (const std::string& link : robot->linkNames())
@@ -662,7 +664,15 @@ void GazeboRosApiPlugin::publishLinkStates()
       states.pose.push_back(toMsg(robot->linkPose(link)));
       states.twist.push_back(toMsg(robot->linkTwist(link)));
     }
-  link_states_pub_.publish(states);
+  return states;
+}
+
+void GazeboRosApiPlugin::publishLinkStates()
+{
+  if (link_states_pub_.getNumSubscribers() > 0)
+    link_states_pub_.publish(linkStates());
+  if (scene_link_states_pub_.getNumSubscribers() > 0 && scene_link_states_gate_.due(world_.timeNs()))
+    scene_link_states_pub_.publish(linkStates());
 }
 
 void GazeboRosApiPlugin::publishSceneIfChanged()

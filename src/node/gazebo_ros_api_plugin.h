@@ -22,6 +22,7 @@
 #include <gazebo_msgs/GetModelState.h>
 #include <gazebo_msgs/GetPhysicsProperties.h>
 #include <gazebo_msgs/GetWorldProperties.h>
+#include <gazebo_msgs/LinkStates.h>
 #include <gazebo_msgs/JointRequest.h>
 #include <gazebo_msgs/LinkState.h>
 #include <gazebo_msgs/ModelState.h>
@@ -32,6 +33,8 @@
 #include <gazebo_msgs/SpawnModel.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
+
+#include "bullet_plant/rate_gate.h"
 
 namespace bullet_plant
 {
@@ -47,6 +50,8 @@ public:
   // After each step, on the simulation thread: model and link states while someone subscribes
   // (every step, as gazebo_ros publishes them on each world update).
   void publishModelStates();
+  // link_states every step while subscribed (gazebo_ros's), and ~scene_link_states, the same at
+  // ~scene_rate Hz of simulated time (default 30) for viewers.
   void publishLinkStates();
   // ~scene (latched): what a viewer draws (bullet_plant/scene.h), again whenever robots come or go.
   void publishSceneIfChanged();
@@ -98,7 +103,10 @@ private:
   ros::NodeHandle nh_;
   std::vector<ros::ServiceServer> services_;
   std::vector<ros::Subscriber> subscribers_;
-  ros::Publisher model_states_pub_, link_states_pub_, scene_pub_;
+  gazebo_msgs::LinkStates linkStates();
+  static constexpr double kDefaultSceneRate = 30.0;  // Hz
+  ros::Publisher model_states_pub_, link_states_pub_, scene_pub_, scene_link_states_pub_;
+  RateGate scene_link_states_gate_;
   std::vector<std::pair<const Robot*, std::string>> scene_robots_;  // the robots the last scene held
   bool scene_published_ = false;
   std::map<std::string, uint32_t> get_model_state_calls_;  // get_model_state's header.seq, per model

@@ -4,8 +4,9 @@ An aiohttp server (one asyncio loop) on a port, loopback unless asked, serves th
 and the bundle `make build` makes of web/src/viewer.js with three.js) and one WebSocket per page:
 - the scene: what the node publishes, latched, on /gazebo/scene (every visual of the world and of each
   robot's links, the sun, the ambient light, the background; again whenever robots come or go);
-- the links' poses from /gazebo/link_states at `rate` Hz at the most, with the sim time of /clock,
-  subscribed only while a page is open: with none, the plant publishes no link states for it;
+- the links' poses from /gazebo/scene_link_states (the node's link_states at 30 Hz of simulated
+  time; link_states itself comes every step) at `rate` Hz at the most, with the sim time of /clock,
+  subscribed only while a page is open: with none, the plant publishes nothing for it;
 - the status twice a second: sim time, real time factor (over the last second of /clock), paused;
 - the page's buttons: play, pause, reset world, reset simulation (gazebo_ros's services);
 - keyboard driving: teleop.py's keys (its tables, sent to the page) held in the page become a
@@ -294,7 +295,7 @@ class Viewer:
     def _follow_links(self, on):
         with self._lock:
             if on and self._link_states is None:
-                self._link_states = rospy.Subscriber(self.namespace + '/link_states', LinkStates,
+                self._link_states = rospy.Subscriber(self.namespace + '/scene_link_states', LinkStates,
                                                      self._on_link_states, queue_size=1)
             elif not on and self._link_states is not None:
                 self._link_states.unregister()
@@ -318,9 +319,11 @@ class Viewer:
         return web.FileResponse(path)
 
     async def _page(self, request):
-        page = web.WebSocketResponse(heartbeat=10.0)
+        # A page gone without a word (a closed laptop, a dropped tunnel) is found by the pings.
+        page = web.WebSocketResponse(heartbeat=2.0)
         await page.prepare(request)
         self._pages.add(page)
+        print('viewer: a page opened from %s (%d open)' % (request.remote, len(self._pages)), flush=True)
         self._follow_links(True)
         with self._lock:
             scene_text = self._scene_text
@@ -335,6 +338,7 @@ class Viewer:
                     await self._from_page(page, message.data)
         finally:
             self._pages.discard(page)
+            print('viewer: a page closed (%d open)' % len(self._pages), flush=True)
             for topic in list(self._overlays):
                 self._show(page, topic, False)
             if not self._pages:
