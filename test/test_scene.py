@@ -47,6 +47,7 @@ def test_a_robots_links_are_in_the_scene_as_link_states_names_them_until_it_goes
     race_track.spawn(urdf_xml, 'tianracer', pose=(0, 0, 0.05, 0, 0, 0))
     scene = scene_of(race_track)
     assert scene['robots'] == ['tianracer']
+    assert scene['root_links'] == ['tianracer::base_footprint']  # the URDF's root: its pose is the model's
     car = [v for v in scene['visuals'] if v['model'] == 'tianracer']
     links = {link.get('name') for link in ET.fromstring(urdf_xml).iter('link') if link.find('visual') is not None}
     assert {v['link'] for v in car} == {'tianracer::' + name for name in links}

@@ -416,3 +416,46 @@ def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
                 all(abs(math.hypot(p[0] - c[0], p[1] - c[1]) - r) > 0.03 for c, r in cones))
     off = [p for p in points if off_everything(p)]
     assert not off, '%d of %d points off the walls and cones, e.g. %s' % (len(off), len(points), off[:3])
+
+
+def test_a_model_dragged_in_move_mode_is_where_get_model_state_says(page):
+    """The model list's move, then a drag in the view: the car goes where it is dropped (set_model_state),
+    and the list shows its new pose."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    ros, _, driver, _ = page
+    look_from_above(driver, (-1.5, -1.5), (1.5, 1.5))
+    driver.find_element(By.CSS_SELECTOR, '#models .model[data-model="tianracer"] button.move').click()
+    start = driver.execute_script("return viewer.linkPose('tianracer::base_footprint')")
+    project = 'return viewer.project(arguments[0], arguments[1], arguments[2])'
+    a = driver.execute_script(project, start[0], start[1], start[2])
+    b = driver.execute_script(project, start[0] + 0.8, start[1] + 0.4, start[2])
+    canvas = driver.find_element(By.ID, 'view')
+    ActionChains(driver).move_to_element_with_offset(canvas, int(a[0] - canvas.size['width'] / 2),
+                                                     int(a[1] - canvas.size['height'] / 2)).click_and_hold() \
+        .move_by_offset(int(round(b[0] - a[0])), int(round(b[1] - a[1]))).release().perform()
+    moved = None
+    deadline = time.monotonic() + 15
+    while time.monotonic() < deadline:
+        p = ros.service('/gazebo/get_model_state', '{model_name: tianracer}')['pose']['position']
+        moved = (p['x'], p['y'])
+        if math.hypot(moved[0] - start[0] - 0.8, moved[1] - start[1] - 0.4) < 0.03:
+            break
+        time.sleep(0.3)
+    assert math.hypot(moved[0] - start[0] - 0.8, moved[1] - start[1] - 0.4) < 0.03, (start, moved)
+    wait_for(driver, "document.querySelector('#models .model[data-model=\"tianracer\"] .pose').textContent"
+                     ".startsWith('x %.2f')" % moved[0], 15, 'the model list to show the new pose')
+
+
+def test_a_followed_model_stays_where_it_is_drawn_as_it_moves(page):
+    from selenium.webdriver.common.by import By
+    ros, _, driver, _ = page
+    driver.find_element(By.CSS_SELECTOR, '#models .model[data-model="tianracer"] input.follow').click()
+    drawn = "const p = viewer.linkPose('tianracer::base_footprint'); return viewer.project(p[0], p[1], p[2])"
+    before = driver.execute_script(drawn)
+    ros.service('/gazebo/set_model_state', "{model_state: {model_name: tianracer, pose: {position: {x: 1.5, y: -0.3, "
+                                           "z: 0.05}, orientation: {w: 1.0}}}}")
+    wait_for(driver, "viewer.linkPose('tianracer::base_footprint')[0] > 1.4", 15, 'the page to draw the car moved')
+    time.sleep(0.3)
+    after = driver.execute_script(drawn)
+    assert math.hypot(after[0] - before[0], after[1] - before[1]) < 3, (before, after)  # pixels

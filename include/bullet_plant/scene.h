@@ -30,6 +30,7 @@ struct Scene
   urdf::Vector3 light_direction;        // the sun's, as it travels
   bool shadows = true;
   std::vector<std::string> robots;      // in spawn order
+  std::vector<std::string> root_links;  // each robot's root link, model::link: its pose is the model's
   std::vector<SceneVisual> visuals;     // the world's first, then each robot's
 };
 
@@ -38,7 +39,8 @@ struct Scene
 Scene sceneOf(World& world);
 
 // The scene as JSON, what the node publishes on /gazebo/scene for viewers: {"world", "background"
-// [r g b a], "ambient", "light_direction" [x y z], "shadows", "robots" [names], "visuals" [{"model",
+// [r g b a], "ambient", "light_direction" [x y z], "shadows", "robots" [names], "root_links" [each
+// robot's root link, model::link], "visuals" [{"model",
 // "link", "kind" (box cylinder sphere plane mesh), "size" [x y z] (box), "radius", "length"
 // (cylinder, sphere), "normal" [x y z] (plane), "mesh" (the file), "scale" [x y z] (mesh), "pose"
 // [x y z qx qy qz qw], "colour" [r g b a]}]}.

@@ -8,7 +8,8 @@ and the bundle `make build` makes of web/src/viewer.js with three.js) and one We
   time; link_states itself comes every step) at `rate` Hz at the most, with the sim time of /clock,
   subscribed only while a page is open: with none, the plant publishes nothing for it;
 - the status twice a second: sim time, real time factor (over the last second of /clock), paused;
-- the page's buttons: play, pause, reset world, reset simulation (gazebo_ros's services);
+- the page's buttons: play, pause, reset world, reset simulation (gazebo_ros's services), and a
+  model the page moved or turned with the mouse put there by /gazebo/set_model_state;
 - keyboard driving: teleop.py's keys (its tables, sent to the page) held in the page become a
   command at 10 Hz on a topic the page picks among those a node subscribes to with
   geometry_msgs/Twist or ackermann_msgs/AckermannDriveStamped; when the page stops sending for the
@@ -41,7 +42,8 @@ from ackermann_msgs.msg import AckermannDriveStamped
 from aiohttp import WSMsgType, web
 from gazebo_msgs.msg import LinkStates
 from geometry_msgs.msg import Twist
-from gazebo_msgs.srv import GetPhysicsProperties
+from gazebo_msgs.msg import ModelState
+from gazebo_msgs.srv import GetPhysicsProperties, SetModelState
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import Image, LaserScan
 from std_msgs.msg import String
@@ -210,6 +212,20 @@ class Viewer:
         except (rospy.ROSException, rospy.ServiceException):
             return None
 
+    def _set_model_pose(self, model, pose):
+        """/gazebo/set_model_state: `model` at `pose` (x y z qx qy qz qw) in the world, at rest."""
+        name = self.namespace + '/set_model_state'
+        state = ModelState(model_name=model, reference_frame='world')
+        p, q = state.pose.position, state.pose.orientation
+        p.x, p.y, p.z, q.x, q.y, q.z, q.w = pose
+        try:
+            rospy.wait_for_service(name, 5.0)
+            result = rospy.ServiceProxy(name, SetModelState)(state)
+            if not result.success:
+                rospy.logerr('viewer: %s %s: %s', name, model, result.status_message)
+        except (rospy.ROSException, rospy.ServiceException) as error:
+            rospy.logerr('viewer: %s: %s', name, error)
+
     def _control(self, action):
         name = self.namespace + '/' + CONTROLS[action]
         try:
@@ -347,7 +363,8 @@ class Viewer:
 
     async def _from_page(self, page, text):
         """A page's request: {"type": "control", "action": one of CONTROLS}, {"type": "drive",
-        "topic", "speed", "turn"} or {"type": "overlay", "topic", "on"}; anything else is ignored."""
+        "topic", "speed", "turn"}, {"type": "set_pose", "model", "pose": [x y z qx qy qz qw]} or
+        {"type": "overlay", "topic", "on"}; anything else is ignored."""
         try:
             request = json.loads(text)
         except ValueError:
@@ -363,6 +380,13 @@ class Viewer:
                 return
             if all(map(lambda v: abs(v) < 1e3, (speed, turn))):  # finite and sane; NaN fails too
                 self._driving[request['topic']] = (speed, turn, time.monotonic())
+        elif request.get('type') == 'set_pose' and request.get('model') in (self._scene or {}).get('robots', []):
+            try:
+                pose = [float(v) for v in request['pose']]
+            except (KeyError, TypeError, ValueError):
+                return
+            if len(pose) == 7 and all(abs(v) < 1e6 for v in pose):  # finite; NaN fails too
+                await asyncio.get_running_loop().run_in_executor(None, self._set_model_pose, request['model'], pose)
         elif request.get('type') == 'overlay' and request.get('topic') in self._overlay_topics:
             self._show(page, request['topic'], bool(request.get('on')))
 

@@ -190,9 +190,117 @@ function buildScene(description) {
       links.get(visual.link).add(holder);
     }
   }
-  document.getElementById('models').textContent = description.robots.join(', ') || 'no robots';
+  rootLinks.clear();
+  description.robots.forEach((robot, k) => rootLinks.set(robot, description.root_links[k]));
+  listModels(description.robots);
   document.getElementById('world').textContent = description.world;
 }
+
+// The model list: each robot's pose (its root link's: x, y, yaw), follow, move.
+const rootLinks = new Map();  // robot: its root link, model::link
+let following = null, followedAt = null;
+let moving = null;  // the robot the next drag moves (shift: turns)
+
+function listModels(robots) {
+  const list = document.getElementById('models');
+  list.innerHTML = robots.length ? '' : 'no robots';
+  if (!robots.includes(following)) following = null;
+  if (!robots.includes(moving)) moving = null;
+  for (const robot of robots) {
+    const row = document.createElement('div');
+    row.className = 'model';
+    row.dataset.model = robot;
+    const follow = document.createElement('input');
+    follow.type = 'checkbox';
+    follow.className = 'follow';
+    follow.checked = following === robot;
+    follow.onchange = () => {
+      for (const other of list.querySelectorAll('input.follow')) if (other !== follow) other.checked = false;
+      following = follow.checked ? robot : null;
+      followedAt = null;
+    };
+    const move = document.createElement('button');
+    move.className = 'move';
+    move.textContent = 'move';
+    move.title = 'then drag in the view to move it, shift-drag to turn it (set_model_state)';
+    move.onclick = () => {
+      moving = moving === robot ? null : robot;
+      for (const b of list.querySelectorAll('button.move')) {
+        b.classList.toggle('moving', b === move && moving === robot);
+      }
+    };
+    const label = document.createElement('label');
+    label.append(follow, ' follow ');
+    row.append(Object.assign(document.createElement('b'), { textContent: robot }), ' ',
+               Object.assign(document.createElement('span'), { className: 'pose' }), ' ', label, move);
+    list.appendChild(row);
+  }
+}
+
+function yawOf(pose) {
+  const [x, y, z, w] = pose.slice(3);
+  return Math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z));
+}
+
+function showModelPoses() {
+  for (const row of document.querySelectorAll('#models .model')) {
+    const pose = linkPoses.get(rootLinks.get(row.dataset.model));
+    if (pose) {
+      row.querySelector('.pose').textContent = 'x ' + pose[0].toFixed(2) + ' y ' + pose[1].toFixed(2) +
+        ' yaw ' + (yawOf(pose) * 180 / Math.PI).toFixed(0) + '\u00b0';
+    }
+  }
+  const pose = following && linkPoses.get(rootLinks.get(following));
+  if (pose) {
+    const at = new THREE.Vector3(pose[0], pose[1], pose[2]);
+    if (followedAt) {
+      const step = at.clone().sub(followedAt);
+      camera.position.add(step);
+      controls.target.add(step);
+    }
+    followedAt = at;
+  }
+}
+
+// Dragging a model in move mode: where the pointer meets the horizontal plane at the model's height.
+const raycaster = new THREE.Raycaster();
+let drag = null;
+
+function groundPoint(event, height) {
+  const rect = canvas.getBoundingClientRect();
+  const ndc = new THREE.Vector2((event.clientX - rect.left) / rect.width * 2 - 1,
+                                -(event.clientY - rect.top) / rect.height * 2 + 1);
+  raycaster.setFromCamera(ndc, camera);
+  const at = new THREE.Vector3();
+  return raycaster.ray.intersectPlane(new THREE.Plane(new THREE.Vector3(0, 0, 1), -height), at) ? at : null;
+}
+
+canvas.addEventListener('pointerdown', (event) => {
+  const pose = moving && linkPoses.get(rootLinks.get(moving));
+  if (!pose || event.button !== 0) return;
+  const start = groundPoint(event, pose[2]);
+  if (!start) return;
+  drag = { model: moving, pose, start, x: event.clientX, turn: event.shiftKey };
+  controls.enabled = false;
+}, true);
+
+window.addEventListener('pointerup', (event) => {
+  if (!drag) return;
+  controls.enabled = true;
+  const { model, pose, start, x, turn } = drag;
+  drag = null;
+  let target = pose.slice();
+  if (turn) {  // a degree a pixel across, about z
+    const yaw = yawOf(pose) + (event.clientX - x) * Math.PI / 180;
+    target = pose.slice(0, 3).concat([0, 0, Math.sin(yaw / 2), Math.cos(yaw / 2)]);
+  } else {
+    const end = groundPoint(event, pose[2]);
+    if (!end) return;
+    target[0] += end.x - start.x;
+    target[1] += end.y - start.y;
+  }
+  if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify({ type: 'set_pose', model, pose: target }));
+});
 
 function applyPoses(message) {
   for (const [name, pose] of Object.entries(message.links)) {
@@ -205,6 +313,7 @@ function applyPoses(message) {
   }
   simTime = message.time;
   posesReceived += 1;
+  showModelPoses();
   document.getElementById('time').textContent = simTime.toFixed(3) + ' s';
 }
 

@@ -24,6 +24,7 @@ Scene sceneOf(World& world)
   {
     scene.robots.push_back(robot->name());
     const urdf::ModelInterface& model = *robot->description().model;
+    scene.root_links.push_back(robot->name() + "::" + model.getRoot()->name);
     for (const auto& kv : model.links_)
       for (const urdf::VisualSharedPtr& v : kv.second->visual_array)
       {
@@ -79,6 +80,7 @@ std::string sceneJson(const Scene& scene)
                                {"light_direction", xyz(scene.light_direction)},
                                {"shadows", scene.shadows},
                                {"robots", scene.robots},
+                               {"root_links", scene.root_links},
                                {"visuals", std::move(visuals)}};
   return json.dump();
 }
