@@ -68,12 +68,9 @@ def wait_for(driver, script, timeout, what):
 @contextlib.contextmanager
 def opened(ros, world, urdf_file=None):
     """The plant on `world` (with the car and the tutorial's YAML when `urdf_file`), the viewer on a
-    free port, and a chromium page on it with the scene drawn: (viewer process, driver, url)."""
+    free port, and a chromium page on it with the scene drawn: (plant, viewer process, driver, url)."""
     from tianracer_description.ros_harness import free_port, start_plant, tianracer_plant
-    if urdf_file:
-        tianracer_plant(ros, urdf_file, world=world)
-    else:
-        start_plant(ros, world)
+    plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
     port = free_port()
     viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=%d' % port], 'viewer')
     url = 'http://127.0.0.1:%d/' % port
@@ -82,7 +79,7 @@ def opened(ros, world, urdf_file=None):
     try:
         driver.get(url)
         wait_for(driver, '!!(window.viewer && viewer.ready())', 30, 'the scene to be drawn')
-        yield viewer, driver, url
+        yield plant, viewer, driver, url
     finally:
         driver.quit()
 
@@ -91,7 +88,7 @@ def opened(ros, world, urdf_file=None):
 def page(ros, urdf_file):
     """The race track and the car, in a page: (ros, viewer process, driver, url)."""
     from tianracer_description.tianracer import RACE_TRACK_WORLD
-    with opened(ros, RACE_TRACK_WORLD, urdf_file) as (viewer, driver, url):
+    with opened(ros, RACE_TRACK_WORLD, urdf_file) as (_, viewer, driver, url):
         yield ros, viewer, driver, url
 
 
@@ -234,7 +231,7 @@ def test_the_mesh_tracks_collada_floor_and_stl_walls_are_drawn_where_the_plant_h
     ros.env['ROS_PACKAGE_PATH'] = os.environ['ROS_PACKAGE_PATH']
     plant = bullet_plant.World.from_file(TRACK_WORLD)
     plant.echo = False
-    with opened(ros, TRACK_WORLD) as (_, driver, _):
+    with opened(ros, TRACK_WORLD) as (_, _, driver, _):
         eye = look_from_above(driver, (-1.0, -2.5), (13.0, 2.5))
         image = screenshot(driver)
 
@@ -459,3 +456,37 @@ def test_a_followed_model_stays_where_it_is_drawn_as_it_moves(page):
     time.sleep(0.3)
     after = driver.execute_script(drawn)
     assert math.hypot(after[0] - before[0], after[1] - before[1]) < 3, (before, after)  # pixels
+
+
+def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_cmd_vel(ros):
+    """The other world we ship (worlds/arena.world) and a turtlebot3-like robot (gazebo_plugins' diff
+    drive on /cmd_vel, test/fixtures/urdf/diff_bot.urdf): its links drawn where link_states puts
+    them, and holding i on its cmd_vel drives it ahead; letting go stops it (the diff drive plugin has
+    no timeout of its own: the viewer's zero command does it)."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import Select
+    from plant_helpers import DIFF_BOT
+    from tianracer_description.ros_harness import spawn_urdf
+    from tianracer_description.tianracer import PACKAGE
+    arena = os.path.join(PACKAGE, 'worlds', 'arena.world')
+    with opened(ros, arena) as (plant, _, driver, _):
+        ros.run(['rosparam', 'set', '/robot_description', '--textfile', DIFF_BOT])
+        spawn_urdf(ros, plant, '/robot_description', 'diff_bot')
+        wait_for(driver, "!!viewer.linkPose('diff_bot::base_link') && "
+                         "!!document.querySelector('#models .model[data-model=\"diff_bot\"]')", 30,
+                 'the spawned robot in the page')
+        wait_for(driver, "Array.from(document.getElementById('drive_topic').options)"
+                         ".some((o) => o.value === '/cmd_vel')", 30, 'its cmd_vel to be offered')
+        Select(driver.find_element(By.ID, 'drive_topic')).select_by_value('/cmd_vel')
+        driver.execute_script('document.activeElement.blur()')
+        start = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
+        ActionChains(driver).key_down('i').pause(2.0).key_up('i').perform()
+        time.sleep(1.0)
+        driven = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
+        time.sleep(1.0)
+        later = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
+        state = ros.service('/gazebo/get_model_state', '{model_name: diff_bot}')['pose']['position']
+    assert math.hypot(driven[0] - start[0], driven[1] - start[1]) > 0.2, (start, driven)
+    assert math.hypot(later[0] - driven[0], later[1] - driven[1]) < 0.02, (driven, later)
+    assert math.hypot(later[0] - state['x'], later[1] - state['y']) < 0.01, (later, state)
