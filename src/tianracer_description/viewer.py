@@ -37,17 +37,18 @@ import time
 import numpy as np
 import rosgraph
 import rospy
-from PIL import Image as PilImage
 from ackermann_msgs.msg import AckermannDriveStamped
 from aiohttp import WSMsgType, web
-from gazebo_msgs.msg import LinkStates
-from geometry_msgs.msg import Twist
-from gazebo_msgs.msg import ModelState
+from gazebo_msgs.msg import LinkStates, ModelState
 from gazebo_msgs.srv import GetPhysicsProperties, SetModelState
+from geometry_msgs.msg import Twist
+from PIL import Image as PilImage
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import Image, LaserScan
 from std_msgs.msg import String
 from std_srvs.srv import Empty
+
+from tianracer_description.tianracer import PACKAGE
 
 DEFAULT_PORT = 8080
 DEFAULT_RATE = 30.0  # Hz: the poses a page gets at the most
@@ -59,13 +60,14 @@ CONTROLS = {'play': 'unpause_physics', 'pause': 'pause_physics', 'reset_world': 
 DRIVE_TYPES = {'geometry_msgs/Twist': Twist, 'ackermann_msgs/AckermannDriveStamped': AckermannDriveStamped}
 DRIVE_PERIOD = 0.1  # s: 10 Hz, as cmdvel2gazebo.py publishes
 DRIVE_TIMEOUT = 0.2  # s: cmdvel2gazebo.py's dead man's switch
-OVERLAY_RATE = 5.0  # Hz: a camera's frames to a page at the most
+OVERLAY_TYPES = {'sensor_msgs/Image': 'image', 'sensor_msgs/LaserScan': 'scan'}
+OVERLAY_RATE = 5.0  # Hz: an overlay's messages to a page at the most
 JPEG_QUALITY = 80
 
 
 def teleop_keys():
     """teleop.py's key tables, read from the script itself: {'move': {key: [speed, turn]}, 'scale': ...}."""
-    path = os.path.join(os.path.dirname(default_web_root()), 'scripts', 'teleop.py')
+    path = os.path.join(PACKAGE, 'scripts', 'teleop.py')
     spec = importlib.util.spec_from_file_location('teleop_keys', path)
     teleop = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(teleop)  # its main() runs only as a script
@@ -78,8 +80,6 @@ def drive_topics(master):
     types = dict(master.getTopicTypes())
     return {topic: types[topic] for topic, _ in subscribers if types.get(topic) in DRIVE_TYPES}
 
-
-OVERLAY_TYPES = {'sensor_msgs/Image': 'image', 'sensor_msgs/LaserScan': 'scan'}
 
 
 def overlay_topics(master):
@@ -131,7 +131,7 @@ def drive_command(kind, speed, turn):
 
 def default_web_root():
     """The package's web/ folder: index.html, and dist/viewer.js once `make build` has run."""
-    return os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), 'web')
+    return os.path.join(PACKAGE, 'web')
 
 
 def mesh_roots(scene):
