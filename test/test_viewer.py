@@ -480,9 +480,14 @@ def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_
                          ".some((o) => o.value === '/cmd_vel')", 30, 'its cmd_vel to be offered')
         Select(driver.find_element(By.ID, 'drive_topic')).select_by_value('/cmd_vel')
         driver.execute_script('document.activeElement.blur()')
+        # z seven times: teleop's 1 m/s down to 0.48 m/s, a turtlebot's pace (at 1 m/s it rocks on
+        # its caster for seconds after it stops)
+        ActionChains(driver).send_keys('zzzzzzz').perform()
+        wait_for(driver, "document.getElementById('drive_state').textContent.startsWith('speed 0.48')", 5,
+                 'the speed scaled down')
         start = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
         ActionChains(driver).key_down('i').pause(2.0).key_up('i').perform()
-        time.sleep(1.0)
+        time.sleep(2.0)
         driven = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
         time.sleep(1.0)
         later = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
