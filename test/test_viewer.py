@@ -117,6 +117,17 @@ def pixels_at(driver, image, points):
     return out
 
 
+def tick_overlay(driver, topic, what):
+    """Ticks `topic` in the page's sensor list once the viewer offers it, and waits for two of its
+    messages drawn; the checkbox's selector."""
+    from selenium.webdriver.common.by import By
+    box = '#overlay_topics input[data-topic="%s"]' % topic
+    wait_for(driver, "!!document.querySelector('%s')" % box, 30, what + ' to be offered')
+    driver.find_element(By.CSS_SELECTOR, box).click()
+    wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, what + ' drawn in the page')
+    return box
+
+
 def screenshot(driver):
     """The window as the user sees it, r g b in 0-255."""
     return np.round(255 * matplotlib.image.imread(io.BytesIO(driver.get_screenshot_as_png()))[:, :, :3])
@@ -362,10 +373,7 @@ def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turn
     from selenium.webdriver.common.by import By
     ros, _, driver, _ = page
     topic = '/camera/image_raw'
-    box = '#overlay_topics input[data-topic="%s"]' % topic
-    wait_for(driver, "!!document.querySelector('%s')" % box, 30, 'the camera to be offered')
-    driver.find_element(By.CSS_SELECTOR, box).click()
-    wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, 'frames of the camera in the page')
+    box = tick_overlay(driver, topic, 'the camera')
     source = driver.execute_script("return document.querySelector('#images figure[data-topic=\"%s\"] img').src" % topic)
     shown = np.asarray(Image.open(io.BytesIO(base64.b64decode(source.split(',', 1)[1]))).convert('RGB'), dtype=float)
     # the same camera's frame straight from the topic (the car stands: the same view, other noise)
@@ -393,14 +401,10 @@ def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turn
 def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
     """The car's lidar ticked: its hit points, drawn in its link as the page poses it, lie on the race
     track's walls and cones (within 3 cm: the lidar's noise)."""
-    from selenium.webdriver.common.by import By
     from tianracer_description.tianracer import RACE_TRACK_WORLD
     _, _, driver, _ = page
     topic = '/scan'
-    box = '#overlay_topics input[data-topic="%s"]' % topic
-    wait_for(driver, "!!document.querySelector('%s')" % box, 30, 'the lidar to be offered')
-    driver.find_element(By.CSS_SELECTOR, box).click()
-    wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, 'scans drawn in the page')
+    tick_overlay(driver, topic, 'the lidar')
     points = driver.execute_script("return viewer.scanPointsInWorld('%s')" % topic)
     walls = track_walls(RACE_TRACK_WORLD)
     cones = [(tuple(map(float, m.findtext('pose').split()[:2])), float(m.findtext('link/collision/geometry/cylinder/radius')))

@@ -12,7 +12,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'test'))
 from plant_helpers import FIXTURES, TRACK_WORLD  # noqa: E402
-from test_viewer import opened, wait_for  # noqa: E402
+from test_viewer import opened, tick_overlay  # noqa: E402
 from tianracer_description.ros_harness import RosSystem  # noqa: E402
 from tianracer_description.tianracer import RACE_TRACK_WORLD, tianracer_urdf  # noqa: E402
 
@@ -27,10 +27,7 @@ def shoot(world, name, urdf_file=None, eye=None, target=None, overlays=()):
                 if eye:
                     driver.execute_script('viewer.lookAt(arguments[0], arguments[1])', eye, target)
                 for topic in overlays:
-                    box = '#overlay_topics input[data-topic="%s"]' % topic
-                    wait_for(driver, "!!document.querySelector('%s')" % box, 30, topic)
-                    driver.execute_script("document.querySelector('%s').click()" % box)
-                    wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, topic)
+                    tick_overlay(driver, topic, topic)
                 time.sleep(0.5)
                 driver.save_screenshot(os.path.join(OUT, name))
         finally:

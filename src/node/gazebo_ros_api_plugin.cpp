@@ -117,10 +117,10 @@ GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private
   // What viewers pose the scene by (gzclient gets poses throttled too): link_states at ~scene_rate.
   scene_link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("scene_link_states", 1);
   scene_link_states_gate_.setPeriodNs(periodNsOfRate(nh_.param("scene_rate", kDefaultSceneRate)));
+  publishScene();  // the world's; again after each spawn and delete, the only ways robots come and go
   plant_.connectWorldUpdateEnd([this] {
     publishModelStates();
     publishLinkStates();
-    publishSceneIfChanged();
   });
 }
 
@@ -238,8 +238,8 @@ bool GazeboRosApiPlugin::spawnModel(gazebo_msgs::SpawnModel::Request& req, gazeb
   std::string message;
   res.success = plant_.spawn(req.model_name, req.model_xml, req.robot_namespace, pose, {}, message);
   res.status_message = res.success ? "SpawnModel: Successfully spawned entity" : "SpawnModel: Failure - " + message;
-  plant_.onSimThread<bool>([this] {  // while paused no step ends to publish it
-    publishSceneIfChanged();
+  plant_.onSimThread<bool>([this] {
+    publishScene();
     return true;
   });
   return true;
@@ -251,7 +251,7 @@ bool GazeboRosApiPlugin::deleteModel(gazebo_msgs::DeleteModel::Request& req, gaz
   res.success = plant_.remove(req.model_name, message);
   res.status_message = res.success ? "DeleteModel: successfully deleted model" : "DeleteModel: model does not exist";
   plant_.onSimThread<bool>([this] {
-    publishSceneIfChanged();
+    publishScene();
     return true;
   });
   if (!res.success)
@@ -669,24 +669,20 @@ gazebo_msgs::LinkStates GazeboRosApiPlugin::linkStates()
 
 void GazeboRosApiPlugin::publishLinkStates()
 {
-  if (link_states_pub_.getNumSubscribers() > 0)
-    link_states_pub_.publish(linkStates());
-  if (scene_link_states_pub_.getNumSubscribers() > 0 && scene_link_states_gate_.due(world_.timeNs()))
-    scene_link_states_pub_.publish(linkStates());
+  const bool every_step = link_states_pub_.getNumSubscribers() > 0;
+  const bool for_scene =
+      scene_link_states_pub_.getNumSubscribers() > 0 && scene_link_states_gate_.due(world_.timeNs());
+  if (!every_step && !for_scene)
+    return;
+  const gazebo_msgs::LinkStates states = linkStates();
+  if (every_step)
+    link_states_pub_.publish(states);
+  if (for_scene)
+    scene_link_states_pub_.publish(states);
 }
 
-void GazeboRosApiPlugin::publishSceneIfChanged()
+void GazeboRosApiPlugin::publishScene()
 {
-  const std::vector<Robot*> robots = world_.robots();
-  if (scene_published_ && std::equal(robots.begin(), robots.end(), scene_robots_.begin(), scene_robots_.end(),
-                                     [](const Robot* r, const std::pair<const Robot*, std::string>& held) {
-                                       return r == held.first && r->name() == held.second;
-                                     }))
-    return;
-  scene_robots_.clear();
-  for (const Robot* r : robots)
-    scene_robots_.emplace_back(r, r->name());
-  scene_published_ = true;
   std_msgs::String scene;
   scene.data = sceneJson(sceneOf(world_));
   scene_pub_.publish(scene);

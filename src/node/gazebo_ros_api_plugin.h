@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <map>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <gazebo_msgs/ApplyBodyWrench.h>
@@ -39,7 +38,6 @@
 namespace bullet_plant
 {
 class RosPlant;
-class Robot;
 class World;
 
 class GazeboRosApiPlugin
@@ -53,8 +51,9 @@ public:
   // link_states every step while subscribed (gazebo_ros's), and ~scene_link_states, the same at
   // ~scene_rate Hz of simulated time (default 30) for viewers.
   void publishLinkStates();
-  // ~scene (latched): what a viewer draws (bullet_plant/scene.h), again whenever robots come or go.
-  void publishSceneIfChanged();
+  // ~scene (latched): what a viewer draws (bullet_plant/scene.h), on the simulation thread (or
+  // before it runs).
+  void publishScene();
 
 private:
   void advertiseServices();
@@ -107,8 +106,6 @@ private:
   static constexpr double kDefaultSceneRate = 30.0;  // Hz
   ros::Publisher model_states_pub_, link_states_pub_, scene_pub_, scene_link_states_pub_;
   RateGate scene_link_states_gate_;
-  std::vector<std::pair<const Robot*, std::string>> scene_robots_;  // the robots the last scene held
-  bool scene_published_ = false;
   std::map<std::string, uint32_t> get_model_state_calls_;  // get_model_state's header.seq, per model
 };
 
