@@ -198,6 +198,55 @@ print(json.dumps(out))
 
 
 @pytest.mark.ros
+def test_step_physics_runs_that_many_iterations_while_paused_and_scene_contacts_has_the_tyres(ros, paused_plant):
+    """/gazebo/step_physics (gzclient's step button): while paused, exactly that many 1 ms steps, /clock
+    sent at the end whatever its 100 Hz rate; none while running is added. /gazebo/scene_contacts: the
+    four tyres on the ground at the viewers' rate while subscribed."""
+    out = ros.python(PRELUDE + """
+from gazebo_msgs.msg import ContactsState
+from rosgraph_msgs.msg import Clock
+from std_msgs.msg import UInt32
+step = rospy.Publisher('/gazebo/step_physics', UInt32, queue_size=10)
+clocks = []
+rospy.Subscriber('/clock', Clock, lambda m: clocks.append(m.clock.to_nsec()))
+contacts = []
+rospy.Subscriber('/gazebo/scene_contacts', ContactsState, lambda m: contacts.append(m))
+while step.get_num_connections() == 0:
+    time.sleep(0.05)
+time.sleep(0.5)
+def stepped(n):
+    count = len(clocks)
+    step.publish(UInt32(n))
+    deadline = time.time() + 20
+    while time.time() < deadline and (len(clocks) == count or clocks[-1] < (clocks[count - 1] if count else 0) + n * 1000000):
+        time.sleep(0.01)
+    time.sleep(0.3)
+    return clocks[-1] if clocks else None
+out['start'] = stepped(1)
+out['after_7'] = stepped(7)
+out['after_2000'] = stepped(2000)
+time.sleep(0.5)
+out['still'] = clocks[-1]
+out['paused'] = srv('get_physics_properties', GetPhysicsProperties)().pause
+out['contacts'] = [(s.collision1_name, s.collision2_name, s.contact_positions[0].z, s.contact_normals[0].z,
+                    s.total_wrench.force.z, m.header.frame_id) for m in contacts[-1:] for s in m.states]
+out['contact_messages'] = len(contacts)
+print(json.dumps(out))
+""", timeout=90)
+    assert out['after_7'] - out['start'] == 7000000, 'seven 1 ms steps, and /clock at once'
+    assert out['after_2000'] - out['after_7'] == 2000000000
+    assert out['still'] == out['after_2000'] and out['paused'] is True, 'paused again after the steps'
+    # 2 s at 30 Hz: about 60 messages while stepping, none while paused
+    assert 50 <= out['contact_messages'] <= 70, out['contact_messages']
+    tyres = sorted(c[0].split('::')[1] for c in out['contacts'])
+    assert tyres == ['left_front_wheel', 'left_rear_wheel', 'right_front_wheel', 'right_rear_wheel'], out['contacts']
+    for _, other, z, normal_z, force_z, frame in out['contacts']:
+        assert other == 'ground_plane::link::collision' and frame == 'world'
+        assert abs(z) < 1e-3 and normal_z == pytest.approx(1.0)
+    assert sum(c[4] for c in out['contacts']) == pytest.approx(2.69 * 9.8, rel=0.02), 'the tyres bear the car'
+
+
+@pytest.mark.ros
 def test_spawn_and_delete_with_gazebo_ros_messages(ros, paused_plant, urdf_xml):
     out = ros.python(PRELUDE + """
 template = %r

@@ -113,6 +113,26 @@ def test_wheel_velocity_loop_with_yaml_pid_gains_lifted_off_the_ground(urdf_xml,
     assert robot.base_pose()[:2] == pytest.approx([0, 0], abs=0.01), 'lifted wheels do not move the car'
 
 
+def test_the_worlds_contacts_are_the_four_tyres_on_the_ground_bearing_the_cars_weight(car, urdf_xml):
+    """World.contacts (what a viewer's contact overlay draws): at rest, one contact per tyre, each under
+    its wheel on the ground with the normal up into the tyre, and their forces bear the car's weight."""
+    import xml.etree.ElementTree as ET
+    world, robot = car
+    world.step(2000)
+    contacts = world.contacts()
+    wheels = sorted(c['collision1'].split('::')[1] for c in contacts)
+    assert wheels == ['left_front_wheel', 'left_rear_wheel', 'right_front_wheel', 'right_rear_wheel'], contacts
+    for c in contacts:
+        assert c['collision2'] == 'ground_plane::link::collision'
+        wheel = robot.link_pose(c['collision1'].split('::')[1])
+        assert c['position'][:2] == pytest.approx(wheel[:2], abs=0.005), 'under the wheel\'s axle'
+        assert c['position'][2] == pytest.approx(0.0, abs=1e-3)
+        assert c['normal'] == pytest.approx([0, 0, 1], abs=1e-6)
+    mass = sum(float(m.get('value')) for m in ET.fromstring(urdf_xml).iter('mass'))
+    assert sum(c['force'][2] for c in contacts) == pytest.approx(mass * 9.8, rel=1e-3)
+    assert np.abs(np.sum([c['force'][:2] for c in contacts], axis=0)).max() < 0.01 * mass * 9.8, 'no net sideways push'
+
+
 def test_a_car_driving_into_another_pushes_it(urdf_xml, control_config):
     # Contacts between two robots take Bullet's own rows (and its articulated-body response),
     # the rest of the step the joint-space path: both in one step.

@@ -319,6 +319,53 @@ def test_pause_stops_the_clock_play_starts_it_and_reset_world_puts_the_car_back(
              'the page to draw the car back where it was spawned')
 
 
+def test_the_step_button_runs_the_iterations_asked_for_while_paused(page):
+    """gzclient's step: paused, 250 iterations typed in and step clicked advance the clock by 0.25 s and
+    leave it paused; the car's pose, lifted and let fall, changes only while stepping."""
+    from selenium.webdriver.common.by import By
+    ros, _, driver, _ = page
+    driver.find_element(By.ID, 'pause').click()
+    wait_for(driver, 'viewer.status().paused === true', 15, 'the page to show paused')
+    ros.service('/gazebo/set_model_state', "{model_state: {model_name: tianracer, pose: {position: {z: 0.5}, "
+                                           "orientation: {w: 1.0}}}}")
+    wait_for(driver, "viewer.linkPose('tianracer::base_link')[2] > 0.45", 15, 'the page to draw the car lifted')
+    before = driver.execute_script('return viewer.status().time')
+    box = driver.find_element(By.ID, 'step_iterations')
+    box.clear()
+    box.send_keys('250')
+    driver.find_element(By.ID, 'step').click()
+    wait_for(driver, 'viewer.status().time >= %r' % (before + 0.2495), 15, 'the clock to advance by the steps')
+    time.sleep(1.0)
+    status = driver.execute_script('return viewer.status()')
+    assert status['time'] == pytest.approx(before + 0.25, abs=1e-9) and status['paused'] is True, status
+    # 0.25 s of free fall from 0.5 m: 0.31 m down (the scene's poses come at 30 Hz of sim time)
+    height = driver.execute_script("return viewer.linkPose('tianracer::base_link')[2]")
+    assert 0.15 < height < 0.25, height
+
+
+def test_the_contacts_overlay_draws_the_tyres_contacts_under_the_wheels(page):
+    """/gazebo/scene_contacts ticked: a point and its normal under each of the four wheels, on the
+    ground, where the page draws the wheels; unticked, the viewer drops the topic."""
+    from selenium.webdriver.common.by import By
+    ros, _, driver, _ = page
+    topic = '/gazebo/scene_contacts'
+    box = tick_overlay(driver, topic, 'the contacts')
+    points = driver.execute_script("return viewer.overlayPointsInWorld('%s')" % topic)
+    wheels = [driver.execute_script("return viewer.linkPose('tianracer::%s')" % w)
+              for w in ('left_front_wheel', 'right_front_wheel', 'left_rear_wheel', 'right_rear_wheel')]
+    assert len(points) == 4, points
+    for p in points:
+        assert abs(p[2]) < 0.002, 'on the ground: %s' % p
+        assert min(math.hypot(p[0] - w[0], p[1] - w[1]) for w in wheels) < 0.01, 'under a wheel: %s' % p
+    assert min(min(math.hypot(p[0] - w[0], p[1] - w[1]) for p in points) for w in wheels) < 0.01, 'each wheel'
+
+    def viewer_subscribes():
+        return '/viewer' in ros.run(['rostopic', 'info', topic]).stdout.split('Subscribers:')[-1]
+    assert viewer_subscribes()
+    driver.find_element(By.CSS_SELECTOR, box).click()
+    ros.wait_until(lambda: not viewer_subscribes(), 15, 'the viewer to drop the contacts')
+
+
 def test_empty_world_launch_gui_true_starts_the_viewer_and_prints_where(ros):
     """gazebo_ros's gui:=true starts gzclient; here it starts the viewer (no desktop: no browser)."""
     import urllib.request
@@ -405,7 +452,7 @@ def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
     _, _, driver, _ = page
     topic = '/scan'
     tick_overlay(driver, topic, 'the lidar')
-    points = driver.execute_script("return viewer.scanPointsInWorld('%s')" % topic)
+    points = driver.execute_script("return viewer.overlayPointsInWorld('%s')" % topic)
     walls = track_walls(RACE_TRACK_WORLD)
     cones = [(tuple(map(float, m.findtext('pose').split()[:2])), float(m.findtext('link/collision/geometry/cylinder/radius')))
              for m in ET.parse(RACE_TRACK_WORLD).getroot().iter('model')

@@ -15,6 +15,17 @@
 
 namespace bullet_plant
 {
+// A point where two collisions touch ("model::link::collision" each, as Gazebo names them), in the
+// world: the normal points out of collision2 into collision1, depth > 0 is penetration, and force
+// is what the last step's solver pushed collision1 with (normal and friction; collision2 got the
+// opposite).
+struct Contact
+{
+  std::string collision1, collision2;
+  urdf::Vector3 position, normal, force;
+  double depth = 0;
+};
+
 class World
 {
 public:
@@ -71,6 +82,10 @@ public:
   bool paused() const;
   void resetSimulation();  // time to 0, robots to their spawn poses and joint positions
   void resetWorld();       // robots to their spawn poses; time goes on
+
+  // Every contact at the end of the last step (what gzclient's contact view draws, Gazebo's
+  // ~/physics/contacts), those of a pair of collisions one after the other.
+  std::vector<Contact> contacts() const;
 
   // Ray casting against everything but `exclude` (may be null): distance along dir (unit) to the
   // first hit within max_range, or +inf.

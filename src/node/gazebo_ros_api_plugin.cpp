@@ -3,9 +3,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <gazebo_msgs/ContactsState.h>
 #include <gazebo_msgs/LinkStates.h>
-#include <std_msgs/String.h>
 #include <gazebo_msgs/ModelStates.h>
+#include <std_msgs/String.h>
+#include <std_msgs/UInt32.h>
 #include <tinyxml2.h>
 
 #include "bullet_plant/geometry.h"
@@ -116,11 +118,16 @@ GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private
   scene_pub_ = nh_.advertise<std_msgs::String>("scene", 1, true);
   // What viewers pose the scene by (gzclient gets poses throttled too): link_states at ~scene_rate.
   scene_link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("scene_link_states", 1);
-  scene_link_states_gate_.setPeriodNs(periodNsOfRate(nh_.param("scene_rate", kDefaultSceneRate)));
+  // And every contact (gzclient's contact view) on ~scene_contacts at the same rate.
+  scene_contacts_pub_ = nh_.advertise<gazebo_msgs::ContactsState>("scene_contacts", 1);
+  const int64_t scene_period_ns = periodNsOfRate(nh_.param("scene_rate", kDefaultSceneRate));
+  scene_link_states_gate_.setPeriodNs(scene_period_ns);
+  scene_contacts_gate_.setPeriodNs(scene_period_ns);
   publishScene();  // the world's; again after each spawn and delete, the only ways robots come and go
   plant_.connectWorldUpdateEnd([this] {
     publishModelStates();
     publishLinkStates();
+    publishSceneContacts();
   });
 }
 
@@ -177,6 +184,12 @@ void GazeboRosApiPlugin::advertiseServices()
           updateLinkState(*msg, message);
         });
       }));
+  // Not gazebo_ros's: gzclient's step button, which Gazebo serves over its own transport
+  // (WorldControl's multi_step). That many physics iterations, while paused.
+  subscribers_.push_back(nh_.subscribe<std_msgs::UInt32>("step_physics", 10, [this](const std_msgs::UInt32::ConstPtr& msg) {
+    const uint32_t iterations = msg->data;
+    plant_.post([this, iterations] { plant_.requestSteps(iterations); });
+  }));
 }
 
 // ------------------------------------------------------------------------------ spawn and delete
@@ -240,6 +253,7 @@ bool GazeboRosApiPlugin::spawnModel(gazebo_msgs::SpawnModel::Request& req, gazeb
   res.status_message = res.success ? "SpawnModel: Successfully spawned entity" : "SpawnModel: Failure - " + message;
   plant_.onSimThread<bool>([this] {
     publishScene();
+    publishScenePoses();
     return true;
   });
   return true;
@@ -252,6 +266,7 @@ bool GazeboRosApiPlugin::deleteModel(gazebo_msgs::DeleteModel::Request& req, gaz
   res.status_message = res.success ? "DeleteModel: successfully deleted model" : "DeleteModel: model does not exist";
   plant_.onSimThread<bool>([this] {
     publishScene();
+    publishScenePoses();
     return true;
   });
   if (!res.success)
@@ -276,12 +291,14 @@ bool GazeboRosApiPlugin::unpausePhysics(std_srvs::Empty::Request&, std_srvs::Emp
 bool GazeboRosApiPlugin::resetSimulation(std_srvs::Empty::Request&, std_srvs::Empty::Response&)
 {
   plant_.resetSimulation();
+  publishScenePoses();
   return true;
 }
 
 bool GazeboRosApiPlugin::resetWorld(std_srvs::Empty::Request&, std_srvs::Empty::Response&)
 {
   world_.resetWorld();
+  publishScenePoses();
   return true;
 }
 
@@ -393,6 +410,7 @@ bool GazeboRosApiPlugin::updateModelState(const gazebo_msgs::ModelState& request
     return false;
   }
   robot->setLinkState(robot->description().model->getRoot()->name, target.pose, target.twist);
+  publishScenePoses();
   message = "SetModelState: set model state done";
   return true;
 }
@@ -424,6 +442,7 @@ bool GazeboRosApiPlugin::updateLinkState(const gazebo_msgs::LinkState& request, 
     return false;
   }
   link.robot->setLinkState(link.link, target.pose, target.twist);
+  publishScenePoses();
   message = "SetLinkState: success";
   return true;
 }
@@ -456,6 +475,7 @@ bool GazeboRosApiPlugin::setModelConfiguration(gazebo_msgs::SetModelConfiguratio
     res.status_message = std::string("SetModelConfiguration: ") + e.what();
     return true;
   }
+  publishScenePoses();
   res.success = true;
   res.status_message = "SetModelConfiguration: success";
   return true;
@@ -679,6 +699,42 @@ void GazeboRosApiPlugin::publishLinkStates()
     link_states_pub_.publish(states);
   if (for_scene)
     scene_link_states_pub_.publish(states);
+}
+
+void GazeboRosApiPlugin::publishScenePoses()
+{
+  if (scene_link_states_pub_.getNumSubscribers() > 0)
+    scene_link_states_pub_.publish(linkStates());
+}
+
+void GazeboRosApiPlugin::publishSceneContacts()
+{
+  if (scene_contacts_pub_.getNumSubscribers() == 0 || !scene_contacts_gate_.due(world_.timeNs()))
+    return;
+  gazebo_msgs::ContactsState contacts;
+  contacts.header.stamp = rosTime(world_.timeNs());
+  contacts.header.frame_id = "world";
+  for (const Contact& c : world_.contacts())
+  {
+    if (contacts.states.empty() || contacts.states.back().collision1_name != c.collision1 ||
+        contacts.states.back().collision2_name != c.collision2)
+    {
+      contacts.states.emplace_back();
+      contacts.states.back().collision1_name = c.collision1;
+      contacts.states.back().collision2_name = c.collision2;
+    }
+    gazebo_msgs::ContactState& state = contacts.states.back();
+    geometry_msgs::Wrench wrench;
+    wrench.force = toMsg(c.force);
+    state.wrenches.push_back(wrench);
+    state.total_wrench.force.x += wrench.force.x;
+    state.total_wrench.force.y += wrench.force.y;
+    state.total_wrench.force.z += wrench.force.z;
+    state.contact_positions.push_back(toMsg(c.position));
+    state.contact_normals.push_back(toMsg(c.normal));
+    state.depths.push_back(c.depth);
+  }
+  scene_contacts_pub_.publish(contacts);
 }
 
 void GazeboRosApiPlugin::publishScene()

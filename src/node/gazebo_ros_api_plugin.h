@@ -51,6 +51,12 @@ public:
   // link_states every step while subscribed (gazebo_ros's), and ~scene_link_states, the same at
   // ~scene_rate Hz of simulated time (default 30) for viewers.
   void publishLinkStates();
+  // ~scene_link_states at once, after a pose set by hand (set_model_state, set_link_state,
+  // set_model_configuration, the resets, spawn, delete): viewers see it paused too, as gzclient does.
+  void publishScenePoses();
+  // ~scene_contacts: every contact of the world (gazebo_msgs/ContactsState in the world frame, a
+  // state per pair of collisions, collision1's forces) at ~scene_rate while subscribed, for viewers.
+  void publishSceneContacts();
   // ~scene (latched): what a viewer draws (bullet_plant/scene.h), on the simulation thread (or
   // before it runs).
   void publishScene();
@@ -104,8 +110,8 @@ private:
   std::vector<ros::Subscriber> subscribers_;
   gazebo_msgs::LinkStates linkStates();
   static constexpr double kDefaultSceneRate = 30.0;  // Hz
-  ros::Publisher model_states_pub_, link_states_pub_, scene_pub_, scene_link_states_pub_;
-  RateGate scene_link_states_gate_;
+  ros::Publisher model_states_pub_, link_states_pub_, scene_pub_, scene_link_states_pub_, scene_contacts_pub_;
+  RateGate scene_link_states_gate_, scene_contacts_gate_;
   std::map<std::string, uint32_t> get_model_state_calls_;  // get_model_state's header.seq, per model
 };
 

@@ -125,11 +125,10 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   double clock_rate = 100.0;
   private_nh_.param("pub_clock_frequency", clock_rate, clock_rate);
   clock_gate_.setPeriodNs(periodNsOfRate(clock_rate));
+  clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   bool paused = false;
   private_nh_.param("paused", paused, false);
   applyPaused(paused);
-
-  clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   ROS_INFO("Bullet plant ready: world '%s', %.4f s steps, real time factor %g%s", description.name.c_str(),
            world_->timeStep(), real_time_factor_, paused ? " (paused)" : "");
 }
@@ -231,9 +230,27 @@ bool RosPlant::remove(const std::string& name, std::string& message)
 void RosPlant::applyPaused(bool paused)
 {
   paused_ = paused;
+  steps_requested_ = 0;
   world_->setPaused(paused);
+  if (paused)
+    publishClock(true);  // where it stopped, whatever the clock's rate
   pace_start_wall_ = ros::WallTime::now();
   pace_start_sim_ns_ = world_->timeNs();
+}
+
+void RosPlant::requestSteps(uint32_t iterations)
+{
+  if (!paused_)
+  {
+    ROS_WARN("step: the simulation is running; pause it (/gazebo/pause_physics) to step it");
+    return;
+  }
+  if (steps_requested_ == 0)
+  {
+    pace_start_wall_ = ros::WallTime::now();
+    pace_start_sim_ns_ = world_->timeNs();
+  }
+  steps_requested_ += iterations;
 }
 
 void RosPlant::resetSimulation()
@@ -252,9 +269,9 @@ void RosPlant::setRealTimeFactor(double factor)
   pace_start_sim_ns_ = world_->timeNs();
 }
 
-void RosPlant::publishClock()
+void RosPlant::publishClock(bool force)
 {
-  if (!clock_gate_.due(world_->timeNs()))
+  if (!clock_gate_.due(world_->timeNs()) && !force)
     return;
   rosgraph_msgs::Clock clock;
   clock.clock = rosTime(world_->timeNs());
@@ -265,7 +282,9 @@ void RosPlant::stepAndPublish()
 {
   world_->step();
   const int64_t now = world_->timeNs();
-  publishClock();
+  if (paused_ && steps_requested_ > 0)
+    --steps_requested_;
+  publishClock(paused_ && steps_requested_ == 0);
   const bool check_subscribers = world_->steps() % 100 == 0;
   for (auto& kv : robots_)
   {
@@ -290,7 +309,7 @@ void RosPlant::pace()
   const ros::WallDuration slice(0.01);
   ros::WallTime target = pace_start_wall_ + ros::WallDuration((world_->timeNs() - pace_start_sim_ns_) * 1e-9 / real_time_factor_);
   ros::WallTime now = ros::WallTime::now();
-  while (target > now && ros::ok() && !paused_)
+  while (target > now && ros::ok() && stepping())
   {
     std::min(target - now, slice).sleep();
     runQueuedWork();
@@ -338,7 +357,7 @@ void RosPlant::run()
   while (ros::ok())
   {
     runQueuedWork();
-    if (paused_)
+    if (!stepping())
     {
       std::unique_lock<std::mutex> lock(queue_mutex_);
       queue_cv_.wait_for(lock, std::chrono::milliseconds(10), [this] { return !queue_.empty(); });

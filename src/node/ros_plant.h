@@ -61,7 +61,12 @@ public:
 
   // On the simulation thread (the services' work, posted there).
   World& world() { return *world_; }
+  // Paused, /clock says at once where the simulation stopped.
   void applyPaused(bool paused);
+  // gzclient's step button (Gazebo's WorldControl multi_step): while paused, `iterations` more
+  // steps at the world's pace, each publishing as any step does, then /clock at once whatever its
+  // rate so that the stepper sees the time it reached. Ignored, with a warning, while running.
+  void requestSteps(uint32_t iterations);
   void resetSimulation();
   double realTimeFactor() const { return real_time_factor_; }
   void setRealTimeFactor(double factor);
@@ -73,7 +78,8 @@ public:
 private:
   void runQueuedWork();
   void stepAndPublish();
-  void publishClock();
+  void publishClock(bool force = false);
+  bool stepping() const { return !paused_ || steps_requested_ > 0; }
   void publishStatus();
   void pace();
 
@@ -89,6 +95,7 @@ private:
   std::deque<std::function<void()>> queue_;
 
   std::atomic<bool> paused_{false};
+  uint64_t steps_requested_ = 0;  // left of requestSteps' while paused
   double real_time_factor_ = 1.0;
   RateGate clock_gate_;  // pub_clock_frequency
   ros::WallTime pace_start_wall_;

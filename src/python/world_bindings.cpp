@@ -183,6 +183,22 @@ void init_world(py::module_& m)
       }, py::arg("n") = 1, "advance n fixed physics steps; Ctrl-C interrupts between chunks of 1000")
       .def("reset_simulation", [](PyWorld& w) { w.world->resetSimulation(); })
       .def("reset_world", [](PyWorld& w) { w.world->resetWorld(); })
+      .def("contacts", [](PyWorld& w) {
+        py::list out;
+        for (const Contact& c : w.world->contacts())
+        {
+          py::dict d;
+          d["collision1"] = c.collision1;
+          d["collision2"] = c.collision2;
+          d["position"] = xyzList(c.position);
+          d["normal"] = xyzList(c.normal);
+          d["force"] = xyzList(c.force);
+          d["depth"] = c.depth;
+          out.append(d);
+        }
+        return out;
+      }, "every contact at the end of the last step: collision1, collision2 (model::link::collision), "
+         "position, normal (out of collision2 into collision1), force on collision1 (N, world), depth (m)")
       .def("cast_ray", [](PyWorld& w, std::vector<double> origin, std::vector<double> direction, double max_range) {
         if (origin.size() != 3 || direction.size() != 3)
           throw py::value_error("origin and direction are 3-vectors");

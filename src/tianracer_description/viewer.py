@@ -8,17 +8,20 @@ and the bundle `make build` makes of web/src/viewer.js with three.js) and one We
   time; link_states itself comes every step) at `rate` Hz at the most, with the sim time of /clock,
   subscribed only while a page is open: with none, the plant publishes nothing for it;
 - the status twice a second: sim time, real time factor (over the last second of /clock), paused;
-- the page's buttons: play, pause, reset world, reset simulation (gazebo_ros's services), and a
-  model the page moved or turned with the mouse put there by /gazebo/set_model_state;
+- the page's buttons: play, pause, reset world, reset simulation (gazebo_ros's services), step (that
+  many physics iterations while paused, on the plant's /gazebo/step_physics: gzclient's step), and
+  a model the page moved or turned with the mouse put there by /gazebo/set_model_state;
 - keyboard driving: teleop.py's keys (its tables, sent to the page) held in the page become a
   command at 10 Hz on a topic the page picks among those a node subscribes to with
   geometry_msgs/Twist or ackermann_msgs/AckermannDriveStamped; when the page stops sending for the
   converter's 0.2 s, or goes away, one zero command and nothing more (cmdvel2gazebo.py's dead man's
   rule, for drives that have none);
-- overlays: a sensor_msgs/Image or sensor_msgs/LaserScan topic a page turns on is subscribed while
-  some page wants it, and its messages go to those pages OVERLAY_RATE a second at the most: images
-  as JPEG (depth as grey, near dark, far light, nothing black), scans as their ranges (the page draws
-  the hit points in the link named by the scan's frame);
+- overlays: a sensor_msgs/Image, sensor_msgs/LaserScan or gazebo_msgs/ContactsState topic a page
+  turns on is subscribed while some page wants it, and its messages go to those pages OVERLAY_RATE a
+  second at the most: images as JPEG (depth as grey, near dark, far light, nothing black), scans as
+  their ranges (the page draws the hit points in the link named by the scan's frame), contacts as
+  their points and normals in the world (the plant's /gazebo/scene_contacts has every contact of
+  the world, as gzclient's contact view; gazebo_ros_bumper's topics a sensor's);
 - the meshes' files, and the files beside them that their materials name (textures), and nothing
   else: only below the folders of the meshes the scene names.
 rospy's callbacks run on its threads; they hand what they got to the loop. Service calls run on the
@@ -39,13 +42,13 @@ import rosgraph
 import rospy
 from ackermann_msgs.msg import AckermannDriveStamped
 from aiohttp import WSMsgType, web
-from gazebo_msgs.msg import LinkStates, ModelState
+from gazebo_msgs.msg import ContactsState, LinkStates, ModelState
 from gazebo_msgs.srv import GetPhysicsProperties, SetModelState
 from geometry_msgs.msg import Twist
 from PIL import Image as PilImage
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import Image, LaserScan
-from std_msgs.msg import String
+from std_msgs.msg import String, UInt32
 from std_srvs.srv import Empty
 
 from tianracer_description.tianracer import PACKAGE
@@ -57,10 +60,13 @@ RTF_WINDOW = 1.0  # s of wall time the real time factor is measured over
 # The page's buttons and the gazebo_ros services they call (std_srvs/Empty).
 CONTROLS = {'play': 'unpause_physics', 'pause': 'pause_physics', 'reset_world': 'reset_world',
             'reset_simulation': 'reset_simulation'}
+STEP_TOPIC = 'step_physics'  # the plant's, in the gazebo namespace: std_msgs/UInt32 iterations
+MAX_STEP = 100000  # iterations a page may ask for at once
 DRIVE_TYPES = {'geometry_msgs/Twist': Twist, 'ackermann_msgs/AckermannDriveStamped': AckermannDriveStamped}
 DRIVE_PERIOD = 0.1  # s: 10 Hz, as cmdvel2gazebo.py publishes
 DRIVE_TIMEOUT = 0.2  # s: cmdvel2gazebo.py's dead man's switch
-OVERLAY_TYPES = {'sensor_msgs/Image': 'image', 'sensor_msgs/LaserScan': 'scan'}
+OVERLAY_TYPES = {'sensor_msgs/Image': 'image', 'sensor_msgs/LaserScan': 'scan',
+                 'gazebo_msgs/ContactsState': 'contacts'}
 OVERLAY_RATE = 5.0  # Hz: an overlay's messages to a page at the most
 JPEG_QUALITY = 80
 
@@ -83,7 +89,7 @@ def drive_topics(master):
 
 
 def overlay_topics(master):
-    """{topic: 'image' or 'scan'} of the Image and LaserScan topics some node publishes."""
+    """{topic: 'image', 'scan' or 'contacts'} of the topics of OVERLAY_TYPES some node publishes."""
     publishers, _, _ = master.getSystemState()
     types = dict(master.getTopicTypes())
     return {topic: OVERLAY_TYPES[types[topic]] for topic, _ in publishers if types.get(topic) in OVERLAY_TYPES}
@@ -145,6 +151,15 @@ def mesh_roots(scene):
     return roots
 
 
+def contacts_message(topic, contacts):
+    """A page's contacts overlay: each contact point and its normal, [x y z nx ny nz], in the world."""
+    points = []
+    for state in contacts.states:
+        for p, n in zip(state.contact_positions, state.contact_normals):
+            points.append([round(v, 4) for v in (p.x, p.y, p.z, n.x, n.y, n.z)])
+    return {'type': 'contacts', 'topic': topic, 'stamp': contacts.header.stamp.to_sec(), 'points': points}
+
+
 def poses_message(link_states, sim_time):
     """The page's poses: {"type": "poses", "time": s, "links": {model::link: [x y z qx qy qz qw]}}."""
     links = {}
@@ -173,6 +188,7 @@ class Viewer:
         self._drive_topics = {}
         self._keys = teleop_keys()
         self._publishers = {}  # topic: publisher, made on a page's first command for it
+        self._step_publisher = None  # made when serving starts (rospy's node is up by then)
         self._driving = {}  # topic: (speed, turn, the page's last request, monotonic s)
         self._overlay_topics = {}  # topic: 'image' or 'scan', of those published
         self._overlays = {}  # topic: {'pages': set of pages, 'subscriber', 'last': monotonic s}
@@ -271,6 +287,10 @@ class Viewer:
                                  'angle_min': scan.angle_min, 'angle_increment': scan.angle_increment,
                                  'ranges': ranges})
 
+    def _on_contacts(self, topic, contacts):
+        if self._due(topic):
+            self._to_overlay(topic, contacts_message(topic, contacts))
+
     def _to_overlay(self, topic, message):
         if self._loop is not None:
             self._loop.call_soon_threadsafe(self._send_overlay, topic, json.dumps(message))
@@ -286,8 +306,8 @@ class Viewer:
         with self._lock:
             overlay = self._overlays.get(topic)
             if on and overlay is None:
-                kind, handler = ((Image, self._on_image) if self._overlay_topics.get(topic) == 'image'
-                                 else (LaserScan, self._on_scan))
+                kind, handler = {'image': (Image, self._on_image), 'scan': (LaserScan, self._on_scan),
+                                 'contacts': (ContactsState, self._on_contacts)}[self._overlay_topics[topic]]
                 overlay = self._overlays[topic] = {'pages': set(), 'last': 0.0, 'subscriber': rospy.Subscriber(
                     topic, kind, lambda message: handler(topic, message), queue_size=1, buff_size=2 ** 24)}
             if overlay is None:
@@ -362,7 +382,8 @@ class Viewer:
         return page
 
     async def _from_page(self, page, text):
-        """A page's request: {"type": "control", "action": one of CONTROLS}, {"type": "drive",
+        """A page's request: {"type": "control", "action": one of CONTROLS}, {"type": "step",
+        "iterations"}, {"type": "drive",
         "topic", "speed", "turn"}, {"type": "set_pose", "model", "pose": [x y z qx qy qz qw]} or
         {"type": "overlay", "topic", "on"}; anything else is ignored."""
         try:
@@ -373,6 +394,10 @@ class Viewer:
             return
         if request.get('type') == 'control' and request.get('action') in CONTROLS:
             await asyncio.get_running_loop().run_in_executor(None, self._control, request['action'])
+        elif request.get('type') == 'step':
+            iterations = request.get('iterations')
+            if type(iterations) is int and 0 < iterations <= MAX_STEP:  # noqa: E721  not a bool
+                self._step_publisher.publish(UInt32(iterations))
         elif request.get('type') == 'drive' and request.get('topic') in self._drive_topics:
             try:
                 speed, turn = float(request['speed']), float(request['turn'])
@@ -445,6 +470,7 @@ class Viewer:
         self._loop = asyncio.get_running_loop()
         rospy.Subscriber(self.namespace + '/scene', String, self._on_scene, queue_size=1)
         rospy.Subscriber('/clock', Clock, self._on_clock, queue_size=1)
+        self._step_publisher = rospy.Publisher(self.namespace + '/' + STEP_TOPIC, UInt32, queue_size=10)
         runner = web.AppRunner(self.app())
         await runner.setup()
         site = web.TCPSite(runner, self.host, self.port)

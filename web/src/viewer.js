@@ -319,10 +319,11 @@ function applyPoses(message) {
 
 let status = { paused: null, real_time_factor: 0 };
 
-// Sensor overlays: a checkbox per image or scan topic; a camera's frame in a corner, a scan's hit
-// points in its link.
+// Sensor overlays: a checkbox per image, scan or contacts topic; a camera's frame in a corner, a
+// scan's hit points in its link, contacts as points with their normals in the world.
 const overlayFrames = new Map();
-const scanPoints = new Map();  // topic: THREE.Points
+const overlayObjects = new Map();  // topic: the THREE.Object3D a scan or contacts overlay draws
+const CONTACT_NORMAL_LENGTH = 0.1;  // m
 
 function showOverlayTopics(topics) {
   const list = document.getElementById('overlay_topics');
@@ -341,9 +342,9 @@ function showOverlayTopics(topics) {
       }
       const shown = document.querySelector('#images figure[data-topic="' + topic + '"]');
       if (!box.checked && shown) shown.remove();
-      if (!box.checked && scanPoints.has(topic)) {
-        scanPoints.get(topic).removeFromParent();
-        scanPoints.delete(topic);
+      if (!box.checked && overlayObjects.has(topic)) {
+        overlayObjects.get(topic).removeFromParent();
+        overlayObjects.delete(topic);
       }
     };
     label.append(box, ' ' + topic + ' ');
@@ -368,14 +369,36 @@ function applyScan(message) {
     const a = message.angle_min + k * message.angle_increment;
     xyz.push(r * Math.cos(a), r * Math.sin(a), 0);
   });
-  let points = scanPoints.get(message.topic);
+  let points = overlayObjects.get(message.topic);
   if (!points) {
     points = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: 0x00c000, size: 4,
                                                                                      sizeAttenuation: false }));
-    scanPoints.set(message.topic, points);
+    overlayObjects.set(message.topic, points);
   }
   if (points.parent !== link) link.add(points);
   points.geometry.setAttribute('position', new THREE.Float32BufferAttribute(xyz, 3));
+  overlayFrames.set(message.topic, (overlayFrames.get(message.topic) || 0) + 1);
+}
+
+// Contacts in the world: each point, and its normal as a line CONTACT_NORMAL_LENGTH long.
+function applyContacts(message) {
+  if (!overlayOn(message.topic)) return;
+  let drawn = overlayObjects.get(message.topic);
+  if (!drawn) {
+    drawn = new THREE.Group();
+    drawn.add(new THREE.Points(new THREE.BufferGeometry(),
+                               new THREE.PointsMaterial({ color: 0x0060ff, size: 6, sizeAttenuation: false })));
+    drawn.add(new THREE.LineSegments(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0x0060ff })));
+    overlayObjects.set(message.topic, drawn);
+    scene.add(drawn);
+  }
+  const at = [], normals = [];
+  for (const [x, y, z, nx, ny, nz] of message.points) {
+    at.push(x, y, z);
+    normals.push(x, y, z, x + nx * CONTACT_NORMAL_LENGTH, y + ny * CONTACT_NORMAL_LENGTH, z + nz * CONTACT_NORMAL_LENGTH);
+  }
+  drawn.children[0].geometry.setAttribute('position', new THREE.Float32BufferAttribute(at, 3));
+  drawn.children[1].geometry.setAttribute('position', new THREE.Float32BufferAttribute(normals, 3));
   overlayFrames.set(message.topic, (overlayFrames.get(message.topic) || 0) + 1);
 }
 
@@ -429,6 +452,7 @@ function connect() {
     else if (message.type === 'keys') keys = message.keys;
     else if (message.type === 'image') applyImage(message);
     else if (message.type === 'scan') applyScan(message);
+    else if (message.type === 'contacts') applyContacts(message);
   };
   socket.onclose = () => {
     document.getElementById('status').textContent = 'disconnected; retrying';
@@ -468,10 +492,11 @@ window.viewer = {
   framesDrawn: () => framesDrawn,
   // the frames of an image topic's overlay the page has shown
   overlayFrames: (topic) => overlayFrames.get(topic) || 0,
-  // a scan overlay's points in the world, [[x, y, z], ...]
-  scanPointsInWorld: (topic) => {
-    const points = scanPoints.get(topic);
-    if (!points) return [];
+  // a scan or contacts overlay's points in the world, [[x, y, z], ...]
+  overlayPointsInWorld: (topic) => {
+    const drawn = overlayObjects.get(topic);
+    if (!drawn) return [];
+    const points = drawn.isPoints ? drawn : drawn.children[0];
     points.updateWorldMatrix(true, false);
     const p = points.geometry.getAttribute('position'), out = [];
     for (let k = 0; k < p.count; k++) {
@@ -483,19 +508,25 @@ window.viewer = {
   status: () => status,
 };
 
-// The buttons: gazebo_ros's services, called by the viewer node.
+// The buttons: gazebo_ros's services, called by the viewer node; step, the plant's step_physics.
 for (const action of ['play', 'pause', 'reset_world', 'reset_simulation']) {
   document.getElementById(action).onclick = () => {
     if (socket && socket.readyState === WebSocket.OPEN) socket.send(JSON.stringify({ type: 'control', action }));
   };
 }
+document.getElementById('step').onclick = () => {
+  const iterations = parseInt(document.getElementById('step_iterations').value, 10);
+  if (socket && socket.readyState === WebSocket.OPEN && iterations > 0) {
+    socket.send(JSON.stringify({ type: 'step', iterations }));
+  }
+};
 
 // Keyboard driving with teleop.py's keys (its tables come from the viewer): a move key held sends
 // its command every 100 ms; let go, the viewer stops the robot (the converter's dead man's rule).
 let keys = { move: {}, scale: {} };
 const drive = { speed: 1.0, turn: 0.5, held: null };
 window.addEventListener('keydown', (event) => {
-  if (event.target.tagName === 'SELECT') return;
+  if (event.target.tagName === 'SELECT' || event.target.type === 'number') return;  // typing in the step box
   const key = event.key.toLowerCase();
   if (keys.move[key]) drive.held = key;
   else if (keys.scale[key]) {

@@ -195,6 +195,14 @@ struct World::Internals
   Lighting lighting() const;
 };
 
+// The impulse the last step's solver gave a manifold's point on its body A, normal and friction
+// rows (Bullet's normal points from B into A; B took the opposite).
+inline btVector3 impulseOnA(const btManifoldPoint& point)
+{
+  return point.m_appliedImpulse * point.m_normalWorldOnB + point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
+         point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2;
+}
+
 // A robot's side of the plant (for the library and its tests).
 inline Robot::Internals& internalsOf(Robot& robot) { return *robot.in_; }
 

@@ -173,17 +173,6 @@ FrameWorker* Robot::Internals::frameWorker() { return world->frame_worker.get();
 
 Lighting Robot::Internals::lighting() const { return world->lighting(); }
 
-namespace
-{
-// The impulse the step's solver gave a contact point, on its body A (normal and friction rows):
-// Bullet's normal points from B into A.
-btVector3 impulseOnA(const btManifoldPoint& point)
-{
-  return point.m_appliedImpulse * point.m_normalWorldOnB + point.m_appliedImpulseLateral1 * point.m_lateralFrictionDir1 +
-         point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2;
-}
-}  // namespace
-
 std::vector<ContactState> Robot::Internals::contacts(const std::string& link, const std::vector<std::string>& collisions) const
 {
   std::vector<ContactState> states;

@@ -478,6 +478,32 @@ Lighting World::Internals::lighting() const
   return Lighting::of(description.light_direction, description.ambient, description.background, description.shadows);
 }
 
+std::vector<Contact> World::contacts() const
+{
+  std::vector<Contact> contacts;
+  const btScalar per_step = btScalar(1.0 / in_->step_s);
+  btDispatcher& dispatcher = *in_->dispatcher;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
+  {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p)
+    {
+      const btManifoldPoint& point = manifold.getContactPoint(p);
+      if (point.getDistance() > 0 && point.getAppliedImpulse() == 0)
+        continue;  // kept by the manifold, not touching
+      Contact contact;
+      contact.collision1 = in_->collisionNameOf(manifold.getBody0(), point.m_index0);
+      contact.collision2 = in_->collisionNameOf(manifold.getBody1(), point.m_index1);
+      contact.position = fromBullet(point.getPositionWorldOnA());
+      contact.normal = fromBullet(point.m_normalWorldOnB);
+      contact.force = fromBullet(per_step * impulseOnA(point));
+      contact.depth = -point.getDistance();
+      contacts.push_back(std::move(contact));
+    }
+  }
+  return contacts;
+}
+
 double World::castRay(const urdf::Vector3& origin, const urdf::Vector3& dir, double max_range, const Robot* exclude) const
 {
   const RayScene& scene = in_->rayScene(exclude ? exclude->in_.get() : nullptr);
