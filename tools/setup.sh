@@ -30,8 +30,9 @@ APT_PACKAGES=(
   # the cameras' OpenGL: EGL without a display, OpenGL ES 3, Mesa's llvmpipe where there is no GPU
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   pybind11-dev python3-dev
-  # rviz: what gui:=true opens in place of gzclient
-  rviz
+  # rviz beside the browser viewer (rviz:=true), the world's markers for it, and a virtual screen
+  # (Xvfb) with xwd for the test that screenshots it
+  rviz ros-visualization-msgs python3-visualization-msgs xvfb x11-apps
   # Python for nodes and tests
   python3-numpy python3-yaml python3-pytest python3-pip python3-matplotlib
   # C++ unit tests (catkin_add_gtest builds googletest from its sources)
