@@ -63,6 +63,40 @@ function material(colour) {
   });
 }
 
+// The world's visuals never move and its sun is fixed, so their Lambert shading (colour x (ambient +
+// (1 - ambient) n . l), as the robots' materials and the plant's cameras shade) is the same every
+// frame: it is worked out once per vertex into vertex colours of an unlit material. SwiftShader (a
+// browser without a GPU) then draws the mesh race track about a third faster. Exact for flat faces
+// (boxes, planes, the tracks' meshes), Gouraud for curved ones; a face seen from behind keeps its
+// front's shade.
+const worldLight = { ambient: 0.35, toSun: new THREE.Vector3(0, 0, 1) };
+
+function bakeLighting(object) {
+  object.updateWorldMatrix(true, true);
+  object.traverse((child) => {
+    if (!child.isMesh || child.userData.baked) return;
+    const geometry = child.geometry.clone();  // a loader may share one geometry between meshes
+    if (!geometry.getAttribute('normal')) geometry.computeVertexNormals();
+    const normals = geometry.getAttribute('normal');
+    const given = geometry.getAttribute('color');
+    const toWorld = new THREE.Matrix3().getNormalMatrix(child.matrixWorld);
+    const n = new THREE.Vector3(), shades = new Float32Array(normals.count * 3);
+    for (let k = 0; k < normals.count; k++) {
+      n.fromBufferAttribute(normals, k).applyMatrix3(toWorld).normalize();
+      const shade = worldLight.ambient + (1 - worldLight.ambient) * Math.max(0, n.dot(worldLight.toSun));
+      for (let c = 0; c < 3; c++) shades[3 * k + c] = shade * (given ? given.getComponent(k, c) : 1);
+    }
+    geometry.setAttribute('color', new THREE.BufferAttribute(shades, 3));
+    child.geometry = geometry;
+    const unlit = (m) => new THREE.MeshBasicMaterial({
+      color: m.color, map: m.map || null, vertexColors: true, side: m.side, transparent: m.transparent,
+      opacity: m.opacity, alphaTest: m.alphaTest,
+    });
+    child.material = Array.isArray(child.material) ? child.material.map(unlit) : unlit(child.material);
+    child.userData.baked = true;
+  });
+}
+
 function fileUrl(path) {
   return '/files' + path.split('/').map(encodeURIComponent).join('/');
 }
@@ -83,6 +117,7 @@ function loadMesh(visual, into) {
     scaled.scale.set(scale[0], scale[1], scale[2]);
     scaled.add(object);
     into.add(scaled);
+    if (into.parent === world) bakeLighting(into);
     pendingMeshes -= 1;
   };
   const failed = (error) => {
@@ -168,6 +203,8 @@ function buildScene(description) {
   sun.intensity = Math.PI * (1 - description.ambient);
   const d = description.light_direction;
   sun.position.set(-d[0] * 100, -d[1] * 100, -d[2] * 100);
+  worldLight.ambient = description.ambient;
+  worldLight.toSun.set(-d[0], -d[1], -d[2]).normalize();
   sun.target.position.set(0, 0, 0);
   for (const visual of description.visuals) {
     const holder = new THREE.Group();
@@ -179,6 +216,7 @@ function buildScene(description) {
     }
     if (visual.model === '') {
       world.add(holder);
+      bakeLighting(holder);
     } else {
       if (!links.has(visual.link)) {
         const link = new THREE.Group();
