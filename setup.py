@@ -2,6 +2,6 @@ from catkin_pkg.python_setup import generate_distutils_setup
 from setuptools import setup
 
 setup(**generate_distutils_setup(
-    packages=['tianracer_description'],
+    packages=['tianracer_description', 'tianracer_description.racing'],
     package_dir={'': 'src'},
 ))

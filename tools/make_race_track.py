@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""Writes worlds/race_track.world: a closed stadium-shaped track with walls, sized for the Tianracer.
+"""Writes worlds/race_track.world: a closed stadium-shaped track with walls, sized for the Tianracer, and
+worlds/race_track.centerline.csv: its centre line (x, y every 5 cm, counter-clockwise from the start at
+the origin), by which the Gymnasium environment measures progress.
 
 The centre line has 6 m straights and 1.5 m radius bends (the car turns down to about 0.45 m), the
 lane is 1.2 m wide, walls are 0.3 m high boxes (the lidar scans at about 9 cm). The bottom straight
@@ -67,6 +69,41 @@ def cone(name, x, y):
 """
 
 
+CENTERLINE_SPACING = 0.05  # m between the centre line's points
+
+
+def centerline():
+    """The centre line's points, counter-clockwise from the origin (the start, facing +x)."""
+    half = STRAIGHT / 2
+    lap = 2 * STRAIGHT + 2 * math.pi * RADIUS
+    points = []
+    for k in range(int(round(lap / CENTERLINE_SPACING))):
+        s = k * lap / round(lap / CENTERLINE_SPACING)
+        # from the origin: half the south straight, the east bend, the north straight, the west
+        # bend, the other half of the south straight
+        legs = [half, math.pi * RADIUS, STRAIGHT, math.pi * RADIUS]
+        if s < legs[0]:
+            points.append((s, 0.0))
+            continue
+        s -= legs[0]
+        if s < legs[1]:
+            a = -math.pi / 2 + s / RADIUS
+            points.append((half + RADIUS * math.cos(a), CENTRE_Y + RADIUS * math.sin(a)))
+            continue
+        s -= legs[1]
+        if s < legs[2]:
+            points.append((half - s, 2 * RADIUS))
+            continue
+        s -= legs[2]
+        if s < legs[3]:
+            a = math.pi / 2 + s / RADIUS
+            points.append((-half + RADIUS * math.cos(a), CENTRE_Y + RADIUS * math.sin(a)))
+            continue
+        s -= legs[3]
+        points.append((-half + s, 0.0))
+    return points
+
+
 def main():
     parts = boundary("outer", RADIUS + LANE / 2) + boundary("inner", RADIUS - LANE / 2)
     parts += [cone("cone_1", 1.5, 0.35), cone("cone_2", -1.0, 2 * RADIUS - 0.35)]
@@ -94,6 +131,12 @@ def main():
     with open(path, "w") as f:
         f.write(text)
     print(f"wrote {path}: {len(parts)} models")
+    path = path.replace(".world", ".centerline.csv")
+    with open(path, "w") as f:
+        f.write("# x y (m): the centre line of race_track.world, counter-clockwise from the start; "
+                "made by tools/make_race_track.py\n")
+        f.writelines(f"{x:.4f} {y:.4f}\n" for x, y in centerline())
+    print(f"wrote {path}")
 
 
 if __name__ == "__main__":

@@ -27,6 +27,8 @@ APT_PACKAGES=(
   libconsole-bridge-dev libassimp-dev nlohmann-json3-dev
   # the sensors: ray casting (Embree) and mesh textures (stb_image)
   libembree-dev libstb-dev
+  # the Python module's CarBatch steps worlds side by side on TBB's threads
+  libtbb-dev
   # the cameras' OpenGL: EGL without a display, OpenGL ES 3, Mesa's llvmpipe where there is no GPU
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   pybind11-dev python3-dev
@@ -47,7 +49,19 @@ APT_PACKAGES+=(python3-aiohttp chromium chromium-driver python3-selenium)
 command -v npm >/dev/null || APT_PACKAGES+=(nodejs npm)
 # xacro from PyPI (Debian has no xacro); compat/xacro runs it with rospack's $(find).
 PIP_PACKAGES=(xacro==2.1.1)
+# Racing for learning (tianracer_description.racing, .sweep): Gymnasium, PettingZoo, Ray for sweeps,
+# stable-baselines3 for the PPO example with PyTorch's CPU build; pandas below 3 (3 needs numpy 2).
+PIP_PACKAGES+=(gymnasium==1.4.0 pettingzoo==1.27.0 ray==2.60.0 stable-baselines3==2.9.2 pandas==2.3.3 tqdm==4.70.1)
 PY=/usr/bin/python3
+# PyTorch's CPU build where pip finds it (a wheel of a local find-links, as on the project's
+# machines); else PyPI's, whose default build carries CUDA (several GB) and runs on the CPU as well.
+if $PY -c 'import importlib.metadata as m; assert m.version("torch").startswith("2.13.0")' 2>/dev/null; then
+  PIP_PACKAGES+=("torch==$($PY -c 'import importlib.metadata as m; print(m.version("torch"))')")
+elif $PY -m pip install -q --dry-run --no-deps --break-system-packages torch==2.13.0+cpu >/dev/null 2>&1; then
+  PIP_PACKAGES+=(torch==2.13.0+cpu)
+else
+  PIP_PACKAGES+=(torch==2.13.0)
+fi
 
 SUDO=
 [ "$(id -u)" -eq 0 ] || SUDO=sudo
@@ -73,5 +87,10 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing from PyPI for $PY: ${missing[*]}"
   # Debian marks its Python as externally managed; these go to /usr/local, beside nothing of Debian's.
-  $SUDO $PY -m pip install -q --root-user-action=ignore --break-system-packages "${missing[@]}"
+  # Debian's numpy stays: its scipy and matplotlib are built for it, and a numpy in /usr/local would
+  # shadow it.
+  constraints=$(mktemp)
+  $PY -c 'import numpy; print("numpy==" + numpy.__version__)' > "$constraints"
+  $SUDO $PY -m pip install -q --root-user-action=ignore --break-system-packages -c "$constraints" "${missing[@]}"
+  rm -f "$constraints"
 fi

@@ -17,6 +17,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "bullet_plant/controllers.h"
+#include "bullet_plant/message_ports.h"
 #include "bullet_plant/world.h"
 
 namespace bullet_plant
@@ -153,6 +155,30 @@ struct PyWorld
 
 // The robot's controller manager; ValueError when its URDF has no gazebo_ros_control block.
 ControllerManager& managerOf(Robot& r);
+
+inline Sensor& sensorOf(Robot& r, const std::string& name)
+{
+  Sensor* s = r.sensor(name);
+  if (!s)
+    throw py::key_error("robot '" + r.name() + "' has no simulated sensor '" + name + "'");
+  return *s;
+}
+
+// The sensor as the type a reading needs; KeyError saying what it is not.
+template <class SensorType>
+SensorType& sensorAs(Robot& r, const std::string& name, const char* what)
+{
+  auto* typed = dynamic_cast<SensorType*>(&sensorOf(r, name));
+  if (!typed)
+    throw py::key_error("sensor '" + name + "' is not " + what);
+  return *typed;
+}
+
+// controller_manager_bindings.cpp: the loaded controller of that name; KeyError when there is none.
+Controller& controllerOf(ControllerManager& cm, const std::string& name);
+// The controller's command port (its first input); KeyError when it takes no command.
+Port& commandPortOf(Controller& c, const std::string& name);
+void init_car_batch(py::module_& m);
 
 void init_world(py::module_& m);
 py::class_<RobotRef> init_robot(py::module_& m);

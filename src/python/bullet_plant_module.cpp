@@ -26,4 +26,5 @@ PYBIND11_MODULE(bullet_plant, m)
   init_model_plugins(robot);
   init_controller_manager(m);
   init_world(m);
+  init_car_batch(m);
 }

@@ -21,8 +21,6 @@ ControllerManager& ManagerRef::get() const
   return managerOf(robot.get());
 }
 
-namespace
-{
 Controller& controllerOf(ControllerManager& cm, const std::string& name)
 {
   Controller* c = cm.controller(name);
@@ -30,6 +28,17 @@ Controller& controllerOf(ControllerManager& cm, const std::string& name)
     throw py::key_error("no controller named '" + name + "' is loaded");
   return *c;
 }
+
+Port& commandPortOf(Controller& c, const std::string& name)
+{
+  for (const std::unique_ptr<Port>& port : c.ports())
+    if (port->direction() == Port::Direction::In)
+      return *port;
+  throw py::key_error("controller '" + name + "' takes no command");
+}
+
+namespace
+{
 
 // The latest message the controller published of this type as a dict, None before the first or
 // for a controller without such a port.
@@ -130,11 +139,7 @@ void init_controller_manager(py::module_& m)
         return py::make_tuple(loaded, started);
       }), py::arg("names"), "what the spawner does: load each, then one STRICT switch starting all loaded; (loaded, ok)")
       .def("command", onManager([](ControllerManager& cm, const std::string& name, py::object value) {
-        Controller& c = controllerOf(cm, name);
-        for (const std::unique_ptr<Port>& port : c.ports())
-          if (port->direction() == Port::Direction::In)
-            return deliverToPort(*port, value);
-        throw py::key_error("controller '" + name + "' takes no command");
+        return deliverToPort(commandPortOf(controllerOf(cm, name), name), value);
       }), py::arg("name"), py::arg("value"),
            "what a Float64 (a number) or a Float64MultiArray (a list: the JointGroup controllers) on "
            "<controller>/command does, or a Twist (linear.x, angular.z) on <controller>/cmd_vel; False for a "

@@ -9,24 +9,6 @@ namespace python
 {
 namespace
 {
-Sensor& sensorOf(Robot& r, const std::string& name)
-{
-  Sensor* s = r.sensor(name);
-  if (!s)
-    throw py::key_error("robot '" + r.name() + "' has no simulated sensor '" + name + "'");
-  return *s;
-}
-
-// The sensor as the type a reading needs; KeyError saying what it is not.
-template <class SensorType>
-SensorType& sensorAs(Robot& r, const std::string& name, const char* what)
-{
-  auto* typed = dynamic_cast<SensorType*>(&sensorOf(r, name));
-  if (!typed)
-    throw py::key_error("sensor '" + name + "' is not " + what);
-  return *typed;
-}
-
 // What its gazebo_ros plugin calls things (plugin_names.h); the tf_prefix is the plugin's default,
 // as there is no parameter server to override it.
 std::string namespaceOf(const Robot& r, const Sensor& s)

@@ -1,0 +1,215 @@
+// bullet_plant.CarBatch: N cars stepped together in one call: their controllers commanded, their
+// worlds (one each, or several cars sharing one) stepped side by side on a TBB arena with the GIL
+// released, and what a driving policy observes read back into arrays, with no Python between the
+// cars. What the Gymnasium and PettingZoo environments (tianracer_description.racing) step on.
+#include "bindings.h"
+
+#include <cmath>
+#include <limits>
+
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+
+#include "bullet_plant/controller_manager.h"
+
+namespace bullet_plant
+{
+namespace python
+{
+namespace
+{
+// The columns of CarBatch.step's state rows, in order (CarBatch.STATE).
+const std::vector<std::string> kStateColumns = {
+    "x", "y", "yaw",                      // the root link in the world (m, rad)
+    "speed", "lateral_speed", "yaw_rate",  // its velocity in its own heading (m/s, rad/s)
+    "steer_left", "steer_right",          // the two steering joints' positions (rad)
+    "angular_velocity_x", "angular_velocity_y", "angular_velocity_z",           // the IMU's latest
+    "linear_acceleration_x", "linear_acceleration_y", "linear_acceleration_z",  // (0 without one)
+    "crashed",  // 1 when the car touches something other than the ground (a contact normal under 45 deg)
+};
+const double kGroundNormalZ = std::sqrt(0.5);
+
+struct CarSlot
+{
+  py::object world_handle;  // keeps the world alive while the batch holds its car
+  World* world = nullptr;
+  RobotRef robot;
+  std::vector<InputPort<double>*> commands;  // the controllers' command ports, in the caller's order
+  Lidar* lidar = nullptr;
+  Imu* imu = nullptr;
+  std::vector<std::string> steering_joints;
+  std::string contact_prefix;  // "name::": the robot's collisions in World::contacts
+};
+
+class CarBatch
+{
+public:
+  CarBatch(size_t count, int threads) : slots_(count), arena_(threads > 0 ? threads : tbb::task_arena::automatic) {}
+
+  size_t size() const { return slots_.size(); }
+
+  void set(size_t i, py::object world_handle, const RobotRef& robot_ref, const std::vector<std::string>& controllers,
+           const std::string& lidar, const std::string& imu, const std::vector<std::string>& steering_joints)
+  {
+    if (i >= slots_.size())
+      throw py::index_error("car " + std::to_string(i) + " of a batch of " + std::to_string(slots_.size()));
+    if (steering_joints.size() != 2)
+      throw py::value_error("steering_joints are the left and right steering joints; got " +
+                            std::to_string(steering_joints.size()));
+    CarSlot slot;
+    slot.world = world_handle.cast<PyWorld&>().world.get();
+    slot.world_handle = std::move(world_handle);
+    slot.robot = robot_ref;
+    Robot& robot = robot_ref.get();
+    ControllerManager& manager = managerOf(robot);
+    for (const std::string& name : controllers)
+    {
+      auto* port = dynamic_cast<InputPort<double>*>(&commandPortOf(controllerOf(manager, name), name));
+      if (!port)
+        throw py::type_error("controller '" + name + "' does not take a number (std_msgs/Float64) as its command");
+      slot.commands.push_back(port);
+    }
+    slot.lidar = &sensorAs<Lidar>(robot, lidar, "a lidar");
+    slot.lidar->setActive(true);
+    if (!imu.empty())
+    {
+      slot.imu = &sensorAs<Imu>(robot, imu, "an IMU");
+      slot.imu->setActive(true);
+    }
+    double p, v, e;
+    for (const std::string& joint : steering_joints)
+      if (!robot.jointState(joint, p, v, e))
+        throw py::key_error("robot '" + robot.name() + "' has no movable joint '" + joint + "'");
+    slot.steering_joints = steering_joints;
+    slot.contact_prefix = robot.name() + "::";
+    slots_[i] = std::move(slot);
+  }
+
+  // commands: N x (controllers per car); returns (scans N x rays float32, state N x STATE float64).
+  py::tuple step(py::array_t<double, py::array::c_style | py::array::forcecast> commands, int steps)
+  {
+    const size_t n = slots_.size();
+    for (size_t i = 0; i < n; ++i)
+    {
+      if (!slots_[i].world)
+        throw py::value_error("car " + std::to_string(i) + " of the batch was never set (CarBatch.set)");
+      slots_[i].robot.get();  // RobotRemovedError here, not on a worker thread
+    }
+    const size_t per_car = slots_[0].commands.size();
+    if (commands.ndim() != 2 || size_t(commands.shape(0)) != n || size_t(commands.shape(1)) != per_car)
+      throw py::value_error("commands are " + std::to_string(n) + " x " + std::to_string(per_car) + " numbers");
+    if (steps < 1)
+      throw py::value_error("steps must be at least 1; got " + std::to_string(steps));
+    const SensorDescription& lidar = slots_[0].lidar->description();
+    const size_t rays = size_t(lidar.horizontal_samples) * size_t(lidar.vertical_samples);
+    py::array_t<float> scans({n, rays});
+    py::array_t<double> state({n, kStateColumns.size()});
+    const double* in = commands.data();
+    float* scan_out = scans.mutable_data();
+    double* state_out = state.mutable_data();
+    for (size_t i = 0; i < n; ++i)
+      for (size_t c = 0; c < per_car; ++c)
+        slots_[i].commands[c]->deliver(in[i * per_car + c]);  // refused when not finite: the last one stays
+    std::vector<World*> worlds;  // each once, however many of the cars it holds
+    for (const CarSlot& car : slots_)
+      if (std::find(worlds.begin(), worlds.end(), car.world) == worlds.end())
+        worlds.push_back(car.world);
+    std::vector<std::string> errors(std::max(n, worlds.size()));
+    {
+      py::gil_scoped_release release;
+      arena_.execute([&] {
+        tbb::parallel_for(size_t(0), worlds.size(), [&](size_t w) {
+          try
+          {
+            worlds[w]->step(steps);
+          }
+          catch (const std::exception& e)
+          {
+            errors[w] = std::string("its world's step: ") + e.what();
+          }
+        });
+      });
+      if (std::all_of(errors.begin(), errors.end(), [](const std::string& e) { return e.empty(); }))
+        arena_.execute([&] {
+          tbb::parallel_for(size_t(0), n, [&](size_t i) {
+            readCar(slots_[i], rays, scan_out + i * rays, state_out + i * kStateColumns.size());
+          });
+        });
+    }
+    for (size_t i = 0; i < errors.size(); ++i)
+      if (!errors[i].empty())
+        throw std::runtime_error("world " + std::to_string(i) + " of the batch: " + errors[i]);
+    return py::make_tuple(scans, state);
+  }
+
+private:
+  static void readCar(CarSlot& car, size_t rays, float* scan, double* state)
+  {
+    Robot& robot = car.robot.get();
+
+    const std::vector<float>& ranges = car.lidar->latest().ranges;
+    for (size_t r = 0; r < rays; ++r)
+      scan[r] = r < ranges.size() ? ranges[r] : std::numeric_limits<float>::infinity();  // none yet
+
+    const urdf::Pose pose = robot.basePose();
+    const Twist twist = robot.baseTwist();
+    double roll, pitch, yaw;
+    pose.rotation.getRPY(roll, pitch, yaw);
+    const double c = std::cos(yaw), s = std::sin(yaw);
+    double p, v, e;
+    size_t k = 0;
+    state[k++] = pose.position.x;
+    state[k++] = pose.position.y;
+    state[k++] = yaw;
+    state[k++] = c * twist.linear[0] + s * twist.linear[1];
+    state[k++] = -s * twist.linear[0] + c * twist.linear[1];
+    state[k++] = twist.angular[2];
+    for (const std::string& joint : car.steering_joints)
+    {
+      robot.jointState(joint, p, v, e);
+      state[k++] = p;
+    }
+    const bool imu_read = car.imu && car.imu->hasReading();
+    for (const urdf::Vector3* vector : {imu_read ? &car.imu->latest().angular_velocity : nullptr,
+                                        imu_read ? &car.imu->latest().linear_acceleration : nullptr})
+    {
+      state[k++] = vector ? vector->x : 0.0;
+      state[k++] = vector ? vector->y : 0.0;
+      state[k++] = vector ? vector->z : 0.0;
+    }
+    bool crashed = false;
+    for (const Contact& contact : car.world->contacts())
+    {
+      const bool ours = contact.collision1.compare(0, car.contact_prefix.size(), car.contact_prefix) == 0;
+      const bool theirs = contact.collision2.compare(0, car.contact_prefix.size(), car.contact_prefix) == 0;
+      if (ours != theirs && std::abs(contact.normal.z) < kGroundNormalZ)
+        crashed = true;
+    }
+    state[k++] = crashed ? 1.0 : 0.0;
+  }
+
+  std::vector<CarSlot> slots_;
+  tbb::task_arena arena_;
+};
+}  // namespace
+
+void init_car_batch(py::module_& m)
+{
+  py::class_<CarBatch>(m, "CarBatch",
+                       "N cars, each in its own world, stepped in one call on `threads` threads (0: every core) "
+                       "with the GIL released: commands in, the lidar's ranges and the car's state out")
+      .def(py::init<size_t, int>(), py::arg("count"), py::arg("threads") = 0)
+      .def("__len__", &CarBatch::size)
+      .def("set", &CarBatch::set, py::arg("index"), py::arg("world"), py::arg("robot"), py::arg("controllers"),
+           py::arg("lidar"), py::arg("imu") = "", py::arg("steering_joints"),
+           "car `index` is `robot` in `world`: commanded through these controllers' Float64 commands (their "
+           "order is the commands' columns), its lidar and IMU (\"\": none) enabled and read, and the "
+           "steering joints' positions read")
+      .def("step", &CarBatch::step, py::arg("commands"), py::arg("steps"),
+           "each car's commands delivered, its world stepped `steps` times, all worlds side by side; "
+           "(scans: N x rays float32, the latest scan's ranges; state: N x len(STATE) float64)")
+      .def_property_readonly_static("STATE", [](py::object) { return kStateColumns; });
+}
+
+}  // namespace python
+}  // namespace bullet_plant
