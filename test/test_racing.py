@@ -172,3 +172,39 @@ def test_the_centre_line_measures_progress_across_the_start_line_and_places_pose
     assert line.progress(0.2, line.length - 0.1) == pytest.approx(-0.3)
     with pytest.raises(FileNotFoundError, match='no centre line at'):
         Centerline.from_file('/nowhere/track.centerline.csv')
+
+
+def test_the_multi_car_race_passes_pettingzoos_api_and_seed_tests():
+    from pettingzoo.test import parallel_api_test, parallel_seed_test
+    from tianracer_description.racing.parallel_env import RaceParallelEnv
+    parallel_api_test(RaceParallelEnv(RACE_TRACK_WORLD, cars=3), num_cycles=200)
+    parallel_seed_test(lambda: RaceParallelEnv(RACE_TRACK_WORLD, cars=3), num_cycles=100)
+
+
+def test_cars_in_one_race_see_each_other_and_a_collision_ends_both():
+    from tianracer_description.racing.parallel_env import RaceParallelEnv
+    env = RaceParallelEnv(RACE_TRACK_WORLD, cars=2, observe_pose=True)
+    observations, _ = env.reset(options={'poses': {'car_0': (1.2, 0.0, 0.0), 'car_1': (0.0, 0.0, 0.0)}})
+    ahead = len(observations['car_1']['scan']) // 2
+    # car_1's lidar sees car_0, 1.2 m ahead (what of it stands at the lidar's height, its own lidar);
+    # with no car there it would see the east bend's wall, beyond 4 m
+    assert 0.8 < observations['car_1']['scan'][ahead] < 1.4
+    for _ in range(300):
+        observations, rewards, terminations, _, infos = env.step({'car_0': np.zeros(2, np.float32),
+                                                                  'car_1': np.array([0.0, 0.5], np.float32)})
+        if any(terminations.values()):
+            break
+    assert terminations == {'car_0': True, 'car_1': True}, 'the one hit and the one hitting'
+    assert observations['car_0']['pose'][0] > 1.2, 'pushed ahead'
+    assert env.agents == []
+
+
+def test_three_cars_racing_with_follow_the_gap_stay_off_the_walls_and_each_other():
+    from tianracer_description.racing.parallel_env import RaceParallelEnv
+    env = RaceParallelEnv(RACE_TRACK_WORLD, cars=3, max_cycles=600)
+    policy = FollowTheGap.for_env(env)
+    observations, _ = env.reset(seed=2)
+    while env.agents:
+        observations, _, terminations, _, infos = env.step({a: policy(observations[a]) for a in env.agents})
+        assert not any(terminations.values()), infos
+    assert all(env._runs[a].laps * 21.42 > 8.0 for a in env.possible_agents), 'each 8 m along in 6 s'

@@ -105,9 +105,14 @@ class CarRun:
         self.laps = 0.0  # centre line lengths gained since the reset
 
     def reset(self, batch, index, pose):
-        self.world = new_world(self.track.world_file, self.model.controllers)
-        self.robot = self.model.spawn(self.world, self.name, pose, self.chase_camera)
-        self.model.bind(batch, index, self.world, self.robot)
+        """A new world of the track with the car at `pose`, car `index` of `batch`."""
+        self.join(new_world(self.track.world_file, self.model.controllers), batch, index, pose)
+
+    def join(self, world, batch, index, pose):
+        """The car spawned at `pose` into `world` (which other cars may share), car `index` of `batch`."""
+        self.world = world
+        self.robot = self.model.spawn(world, self.name, pose, self.chase_camera)
+        self.model.bind(batch, index, world, self.robot)
         self.s, _, self.segment = self.track.centerline.project(pose[0], pose[1])
         self.laps = 0.0
 
