@@ -16,7 +16,7 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
 
-.PHONY: help setup build test sim demo bench bench-ros bench-drive bench-viewer bench-meshes figures step-cost soak clean
+.PHONY: help setup build test sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes figures step-cost soak clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation"
@@ -28,6 +28,7 @@ help:
 	@echo "make bench-ros  build, time the ROS node: launch to running, real time factor, CPU, fastest"
 	@echo "make bench-drive  build, the CPU a turtlebot3-like robot (diff drive, 360-ray lidar, IMU) costs the node"
 	@echo "make bench-viewer  build, the plant's CPU with a browser page open and the page's frame rate"
+	@echo "make bench-racing  build, env steps a second of the Gymnasium environments (single, vector on 1 and 2 threads)"
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
 	@echo "make step-cost  build, count instructions per physics step (callgrind) and print a trajectory digest"
 	@echo "make bench-meshes  build, the cost of a race track made of meshes (instructions per step, lidar rays/s)"
@@ -85,6 +86,10 @@ bench-drive: build
 # The browser viewer: the plant's CPU with a page open, the page's frames a second in headless chromium.
 bench-viewer: build
 	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) bench/viewer_bench.py
+
+# The Gymnasium environments: env steps a second, single and vector, with the 1081-ray lidar.
+bench-racing: build
+	@$(ROS_ENV) $(PYTHON) bench/racing_bench.py
 
 figures: build
 	@$(ROS_ENV) $(PYTHON) bench/plant_figures.py

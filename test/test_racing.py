@@ -208,3 +208,20 @@ def test_three_cars_racing_with_follow_the_gap_stay_off_the_walls_and_each_other
         observations, _, terminations, _, infos = env.step({a: policy(observations[a]) for a in env.agents})
         assert not any(terminations.values()), infos
     assert all(env._runs[a].laps * 21.42 > 8.0 for a in env.possible_agents), 'each 8 m along in 6 s'
+
+
+def test_ppo_from_stable_baselines3_trains_on_the_vector_env():
+    """The README's example, short: a few thousand PPO steps on two cars of the vector env (PyTorch on
+    the CPU), through Sb3VecEnv; the ended episodes' last observations reach SB3 as it expects."""
+    from tianracer_description.racing.train_ppo import Sb3VecEnv, evaluate, model_policy, train
+    model = train(RACE_TRACK_WORLD, envs=2, timesteps=2048, n_steps=512)
+    assert model.num_timesteps >= 2048
+    assert math.isfinite(evaluate(model_policy(model), RACE_TRACK_WORLD, episodes=1, seed=0, steps=200))
+    envs = Sb3VecEnv(RaceVectorEnv(2, RACE_TRACK_WORLD, max_episode_steps=5))
+    envs.reset()
+    for _ in range(4):
+        _, _, done, infos = envs.step(np.zeros((2, 2), np.float32))
+        assert not done.any()
+    observations, _, done, infos = envs.step(np.zeros((2, 2), np.float32))
+    assert done.all() and all(info['TimeLimit.truncated'] for info in infos)
+    assert all(info['terminal_observation']['scan'].shape == (1081,) for info in infos)

@@ -1,0 +1,130 @@
+"""What racing for learning costs (`make bench-racing`): environment steps a second of the Gymnasium
+environments, side by side in one run.
+
+The tutorial's car with its IMU and the 1081-ray lidar (40 Hz, ray-cast in 3-D by Embree) on
+worlds/race_track.world (boxes) and on the mesh race track of bench/sensor_bench.py (the same walls
+as one OBJ, a textured OBJ floor; the same centre line), driven by follow the gap at the default
+10 ms control period (ten 1 ms physics steps an env step). Per round, in turn:
+- physics: the car on its controllers with no sensor enabled, physics steps per CPU second;
+- single: RaceEnv, env steps per CPU second (one core's worth) and per wall second;
+- vector: RaceVectorEnv with VECTOR_ENVS cars on one thread and on two, env steps per wall second
+  (all cars), and the two threads' gain over one.
+Only the environment's own calls are timed (the policy's are not); episodes that end are reset, and
+the resets are timed. Medians of ROUNDS rounds, and the real time factor env steps make (x 0.01 s).
+Targets (issue 27): 4,000 env steps per second per core for the single env; the vector env on 2 cores
+1.8 times one.
+f1tenth_gym says "up to 30x realtime" (a kinematic single-track model and a 2-D ray-marched lidar;
+no hardware or method given): printed beside ours, for what a comparison without its numbers is worth.
+"""
+import os
+import statistics
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sensor_bench import cpu_name, write_mesh_track  # noqa: E402
+from tianracer_description.racing.car import CarModel, new_world  # noqa: E402
+from tianracer_description.racing.env import RaceEnv  # noqa: E402
+from tianracer_description.racing.follow_the_gap import FollowTheGap  # noqa: E402
+from tianracer_description.racing.track import centerline_file  # noqa: E402
+from tianracer_description.racing.vector_env import RaceVectorEnv  # noqa: E402
+from tianracer_description.tianracer import RACE_TRACK_WORLD  # noqa: E402
+
+ROUNDS = 5
+ENV_STEPS = 3000  # a measurement: this many env steps (single) or vector steps x cars
+VECTOR_ENVS = 4
+CONTROL_PERIOD = 0.01  # s
+F1TENTH_PUBLISHED = 30.0  # "up to 30x realtime"
+
+
+def physics(world_file):
+    """Physics steps per CPU second of the car on its controllers, no sensor enabled."""
+    model = CarModel()
+    world = new_world(world_file, model.controllers)
+    robot = model.spawn(world, 'car', (0.0, 0.0, 0.0))
+    for controller, command in zip(('rear_left_velocity_controller', 'rear_right_velocity_controller'), (15.0, 15.0)):
+        robot.controller_manager.command(controller, command)
+    world.step(100)
+    start = time.process_time()
+    world.step(10 * ENV_STEPS)
+    return 10 * ENV_STEPS / (time.process_time() - start)
+
+
+def single(world_file, centerline):
+    """RaceEnv's env steps per CPU second and per wall second (its calls only)."""
+    env = RaceEnv(world_file, centerline=centerline)
+    policy = FollowTheGap.for_env(env)
+    cpu = wall = 0.0
+    c0, w0 = time.process_time(), time.perf_counter()
+    observation, _ = env.reset(seed=0)
+    cpu, wall = time.process_time() - c0, time.perf_counter() - w0
+    for _ in range(ENV_STEPS):
+        action = policy(observation)
+        c0, w0 = time.process_time(), time.perf_counter()
+        observation, _, terminated, truncated, _ = env.step(action)
+        if terminated or truncated:
+            observation, _ = env.reset()
+        cpu += time.process_time() - c0
+        wall += time.perf_counter() - w0
+    return ENV_STEPS / cpu, ENV_STEPS / wall
+
+
+def vector(world_file, centerline, threads):
+    """RaceVectorEnv's env steps (all cars) per wall second on `threads` threads (its calls only)."""
+    envs = RaceVectorEnv(VECTOR_ENVS, world_file, centerline=centerline, threads=threads, max_episode_steps=2000)
+    policy = FollowTheGap.for_env(envs)
+    w0 = time.perf_counter()
+    observations, _ = envs.reset(seed=0)
+    wall = time.perf_counter() - w0
+    steps = ENV_STEPS // VECTOR_ENVS
+    for _ in range(steps):
+        actions = np.array([policy({'scan': observations['scan'][i]}) for i in range(VECTOR_ENVS)])
+        w0 = time.perf_counter()
+        observations, *_ = envs.step(actions)
+        wall += time.perf_counter() - w0
+    return steps * VECTOR_ENVS / wall
+
+
+def main():
+    workdir = tempfile.mkdtemp(prefix='racing_bench_')
+    mesh_world, _ = write_mesh_track(workdir)
+    centerline = centerline_file(RACE_TRACK_WORLD)
+    tracks = {'race track (boxes)': RACE_TRACK_WORLD, 'mesh race track': mesh_world}
+    print('CPU: %s, %d cores; %d rounds, medians; the 1081-ray lidar at 40 Hz, 10 ms control'
+          % (cpu_name(), os.cpu_count(), ROUNDS), flush=True)
+    results = {name: {'physics': [], 'single_cpu': [], 'single_wall': [], 'vector_1': [], 'vector_2': []}
+               for name in tracks}
+    for round_ in range(ROUNDS):
+        for name, world_file in tracks.items():
+            r = results[name]
+            r['physics'].append(physics(world_file))
+            cpu, wall = single(world_file, centerline)
+            r['single_cpu'].append(cpu)
+            r['single_wall'].append(wall)
+            r['vector_1'].append(vector(world_file, centerline, 1))
+            r['vector_2'].append(vector(world_file, centerline, 2))
+        print('round %d of %d done' % (round_ + 1, ROUNDS), flush=True)
+    print()
+    print('%-20s %14s %16s %16s %16s %16s %8s' % ('', 'physics/CPU-s', 'single/CPU-s', 'single/wall-s',
+                                                 'vector x1 thread', 'vector x2', 'x2 / x1'))
+    for name, r in results.items():
+        m = {k: statistics.median(v) for k, v in r.items()}
+        gains = [b / a for a, b in zip(r['vector_1'], r['vector_2'])]
+        print('%-20s %14.0f %16.0f %16.0f %16.0f %16.0f %8.2f' % (
+            name, m['physics'], m['single_cpu'], m['single_wall'], m['vector_1'], m['vector_2'],
+            statistics.median(gains)))
+    print()
+    for name, r in results.items():
+        single_rtf = statistics.median(r['single_cpu']) * CONTROL_PERIOD
+        vector_rtf = statistics.median(r['vector_2']) * CONTROL_PERIOD
+        print('%s: one core %.0fx real time (single env), two cores %.0fx (vector env, %d cars); f1tenth_gym '
+              'publishes "up to %.0fx" (2-D, no hardware given)' % (name, single_rtf, vector_rtf, VECTOR_ENVS,
+                                                                   F1TENTH_PUBLISHED))
+    print('targets: single env >= 4000 env steps per CPU second; vector env on 2 threads >= 1.8x one')
+
+
+if __name__ == '__main__':
+    main()
