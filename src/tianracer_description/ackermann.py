@@ -7,6 +7,8 @@ wheel angle delta; each wheel turns on its own circle around that point.
 import math
 from collections import namedtuple
 
+import numpy as np
+
 # rad/s for the rear wheels, rad for the steering hinges
 WheelCommands = namedtuple('WheelCommands', 'rear_left rear_right steer_left steer_right')
 
@@ -34,16 +36,16 @@ def ideal_steering(linear_x, angular_z, mode, wheelbase):
 
 def wheel_commands(speed, steering, wheelbase, rear_track, front_track, wheel_radius, max_steering):
     """Rear wheel speeds (rad/s) and steering angles (rad) for a ground speed (m/s) and an ideal
-    steering angle (rad), clamped so that the inside wheel stays within its limit."""
-    wheel_rate = speed / wheel_radius
-    steering = max(-max_steering, min(max_steering, steering))
-    if steering == 0.0:
-        return WheelCommands(wheel_rate, wheel_rate, 0.0, 0.0)
-    side = math.copysign(1.0, steering)       # +1 turning left: the left wheels are inside
-    radius = wheelbase / abs(math.tan(steering))
-    left_rear, right_rear = radius - side * rear_track / 2.0, radius + side * rear_track / 2.0
-    left_front, right_front = radius - side * front_track / 2.0, radius + side * front_track / 2.0
-    return WheelCommands(rear_left=wheel_rate * left_rear / radius,
-                         rear_right=wheel_rate * right_rear / radius,
-                         steer_left=side * math.atan2(wheelbase, left_front),
-                         steer_right=side * math.atan2(wheelbase, right_front))
+    steering angle (rad), clamped so that the inside wheel stays within its limit. speed and steering
+    may be numbers or numpy arrays (one command per element: the racing environments' cars).
+
+    With t = tan(steering) the turn's curvature is t / wheelbase, and a wheel d to the left of the
+    middle runs on a circle (1 - d t / wheelbase) times the middle's: each rear wheel turns that much
+    faster or slower, and each front wheel points at the turn's centre, atan2(wheelbase t,
+    wheelbase - d t). Straight ahead (t = 0) is the same formula, with no special case."""
+    wheel_rate = np.divide(speed, wheel_radius)
+    t = np.tan(np.clip(steering, -max_steering, max_steering))
+    return WheelCommands(rear_left=wheel_rate * (1.0 - rear_track / 2.0 * t / wheelbase),
+                         rear_right=wheel_rate * (1.0 + rear_track / 2.0 * t / wheelbase),
+                         steer_left=np.arctan2(wheelbase * t, wheelbase - front_track / 2.0 * t),
+                         steer_right=np.arctan2(wheelbase * t, wheelbase + front_track / 2.0 * t))

@@ -9,6 +9,7 @@ fixed behind and above its root link, looking at it.
 import functools
 import math
 
+import numpy as np
 import yaml
 
 from tianracer_description import bullet_plant
@@ -91,15 +92,15 @@ class CarModel:
         self.max_speed = float(max_speed)
         self.lidar, self.imu = lidar, imu
 
-    def commands(self, action):
-        """An action (steering, speed), each in [-1, 1] of the car's largest, as the four controllers'
-        commands (COMMAND_CONTROLLERS' order): the converter's wheel_commands."""
-        steering = float(min(1.0, max(-1.0, action[0]))) * self.max_steering
-        speed = float(min(1.0, max(-1.0, action[1]))) * self.max_speed
+    def commands(self, actions):
+        """Actions (a row of steering, speed per car, each in [-1, 1] of the car's largest) as the four
+        controllers' commands, a row per car in COMMAND_CONTROLLERS' order: the converter's
+        wheel_commands."""
+        actions = np.clip(np.asarray(actions, np.float64).reshape(-1, 2), -1.0, 1.0)
         g = self.geometry
-        c = wheel_commands(speed, steering, g.wheelbase, g.rear_track, g.front_track, g.wheel_radius,
-                           self.max_steering)
-        return (c.rear_left, c.rear_right, c.steer_left, c.steer_right)
+        c = wheel_commands(actions[:, 1] * self.max_speed, actions[:, 0] * self.max_steering, g.wheelbase,
+                           g.rear_track, g.front_track, g.wheel_radius, self.max_steering)
+        return np.stack([c.rear_left, c.rear_right, c.steer_left, c.steer_right], axis=1)
 
     def spawn(self, world, name, pose, chase_camera=False):
         """The car in `world` at pose (x, y, yaw) with its controllers running (the spawner's)."""

@@ -10,24 +10,23 @@ env.py). They start on a grid behind the start line, in two staggered columns, a
 so they see each other in their lidars and collide: a car that touches anything but the ground (a
 wall, a cone, another car) is terminated, stops, and stays where it is, an obstacle for the others.
 All are truncated after max_cycles steps. reset(options={"poses": {agent: (x, y, yaw)}}) puts cars
-elsewhere than on the grid. One CarBatch steps the world once per step and reads every
-car. The same seed and actions give the same observations, bit for bit.
+elsewhere than on the grid. One CarBatch steps the world once per step and reads every car. The same
+seed and actions give the same observations, bit for bit.
 """
 import functools
 
 import numpy as np
-from gymnasium import spaces
 from gymnasium.utils import seeding
 from pettingzoo import ParallelEnv
 
-from tianracer_description import bullet_plant
 from tianracer_description.racing import MAX_EPISODE_STEPS
 from tianracer_description.racing.car import CarModel, new_world
-from tianracer_description.racing.env import (STATE, START_SPREAD, CarRun, LidarDescription, RaceTrack,
-                                              observation_space, observe, steps_per_action)
+from tianracer_description.racing.cars import (LidarDescription, RaceCars, RaceTrack, action_space,
+                                               observation_space, row, steps_per_action)
 
 GRID_SPACING = 0.6  # m between a car and the one behind it, along the centre line
 GRID_OFFSET = 0.25  # m either side of the centre line: the two columns
+GRID_SPREAD = 0.25  # of RaceEnv's start spread, each car's own
 
 
 class RaceParallelEnv(ParallelEnv):
@@ -39,17 +38,16 @@ class RaceParallelEnv(ParallelEnv):
             raise ValueError('a race has 1 car or more; got %r' % (cars,))
         self.track = RaceTrack(world_file, centerline)
         self.model = CarModel(urdf, controllers, max_speed)
+        self.lidar = LidarDescription(self.model)
         self.control_period, self.observe_pose, self.max_cycles = control_period, observe_pose, max_cycles
         self.possible_agents = ['car_%d' % i for i in range(cars)]
         self.agents = []
-        self.lidar = LidarDescription(self.model)
-        self.range_max = self.lidar.range_max
-        self._observation_space = observation_space(self.lidar.rays, self.range_max, observe_pose)
-        self._action_space = spaces.Box(-1.0, 1.0, (2,), np.float32)
-        self._runs = {}
-        self._batch = None
+        self._observation_space = observation_space(self.lidar, observe_pose)
+        self._action_spaces = {agent: action_space() for agent in self.possible_agents}
+        self._cars = RaceCars(self.track, self.model, self.lidar, self.possible_agents, observe_pose)
         self._rng = seeding.np_random()[0]
         self._cycles = 0
+        self._stopped = np.zeros(cars, bool)
 
     @functools.lru_cache(maxsize=None)
     def observation_space(self, agent):
@@ -57,66 +55,51 @@ class RaceParallelEnv(ParallelEnv):
 
     @functools.lru_cache(maxsize=None)
     def action_space(self, agent):
-        return self._action_space
+        return self._action_spaces[agent]
 
     def grid_pose(self, index):
-        """Where car `index` starts: behind the start line, left and right column by turns, each car
-        nudged by the env's generator as RaceEnv's start is."""
-        along = -GRID_SPACING * index + self._rng.uniform(-START_SPREAD['along'], START_SPREAD['along']) / 4
-        offset = (GRID_OFFSET if index % 2 == 0 else -GRID_OFFSET) + \
-            self._rng.uniform(-START_SPREAD['offset'], START_SPREAD['offset']) / 4
-        x, y, yaw = self.track.centerline.pose_at(along, offset)
-        return x, y, yaw + self._rng.uniform(-START_SPREAD['yaw'], START_SPREAD['yaw']) / 4
+        """Where car `index` starts: behind the start line, the left and right columns by turns."""
+        offset = GRID_OFFSET if index % 2 == 0 else -GRID_OFFSET
+        return self.track.start_pose(self._rng, along=-GRID_SPACING * index, offset=offset, spread=GRID_SPREAD)
 
     def reset(self, seed=None, options=None):
         if seed is not None:
             self._rng = seeding.np_random(seed)[0]
         world = new_world(self.track.world_file, self.model.controllers)
-        self._batch = bullet_plant.CarBatch(len(self.possible_agents), 1)  # one world: one thread steps it
-        self._runs = {}
         poses = (options or {}).get('poses') or {}
         for index, agent in enumerate(self.possible_agents):
-            run = CarRun(self.track, self.model, name=agent)
-            run.join(world, self._batch, index, poses.get(agent) or self.grid_pose(index))
-            self._runs[agent] = run
+            self._cars.place(index, poses.get(agent) or self.grid_pose(index), world)
         self.agents = list(self.possible_agents)
         self._steps = steps_per_action(self.control_period, world.time_step)
         self._cycles = 0
-        self._stopped = {agent: False for agent in self.possible_agents}
-        scans, state = self._batch.step(self._commands({}), 1)
-        observations = {agent: self._observe(scans, state, i) for i, agent in enumerate(self.possible_agents)}
-        infos = {agent: self._runs[agent].info(state[i]) for i, agent in enumerate(self.possible_agents)}
-        return observations, infos
-
-    def _observe(self, scans, state, index):
-        return observe(scans[index], state[index], self.range_max, self.observe_pose)
-
-    def _commands(self, actions):
-        """Every car's commands: its action while it races, held still once it stopped."""
-        still = self.model.commands((0.0, 0.0))
-        return np.array([self.model.commands(actions[agent]) if agent in actions and not self._stopped[agent]
-                         else still for agent in self.possible_agents])
+        self._stopped[:] = False
+        scans, state = self._cars.settle()
+        observations, infos = self._cars.observations(scans, state), self._cars.infos(state)
+        return ({agent: row(observations, i) for i, agent in enumerate(self.possible_agents)},
+                {agent: row(infos, i) for i, agent in enumerate(self.possible_agents)})
 
     def step(self, actions):
         if not self.agents:
             raise RuntimeError('the race is over: call reset()')
-        scans, state = self._batch.step(self._commands(actions), self._steps)
+        racing = np.array([agent in actions and not self._stopped[i] for i, agent in enumerate(self.possible_agents)])
+        moves = np.array([actions[agent] if racing[i] else (0.0, 0.0) for i, agent in enumerate(self.possible_agents)])
+        scans, state, rewards = self._cars.step(moves, self._steps, still=~racing)
         self._cycles += 1
-        observations, rewards, terminations, truncations, infos = {}, {}, {}, {}, {}
-        for index, agent in enumerate(self.possible_agents):
+        observations, infos = self._cars.observations(scans, state), self._cars.infos(state)
+        crashed = self._cars.crashed(state)
+        results = ({}, {}, {}, {}, {})
+        for i, agent in enumerate(self.possible_agents):
             if agent not in self.agents:
                 continue
-            run = self._runs[agent]
-            observations[agent] = self._observe(scans, state, index)
-            rewards[agent] = run.advance(state[index])
-            terminations[agent] = bool(state[index][STATE['crashed']])
-            truncations[agent] = self._cycles >= self.max_cycles and not terminations[agent]
-            infos[agent] = run.info(state[index])
-            if terminations[agent]:
-                self._stopped[agent] = True
+            terminated = bool(crashed[i])
+            for out, value in zip(results, (row(observations, i), float(rewards[i]), terminated,
+                                            self._cycles >= self.max_cycles and not terminated, row(infos, i))):
+                out[agent] = value
+            self._stopped[i] |= terminated
+        _, _, terminations, truncations, _ = results
         self.agents = [a for a in self.agents if not (terminations[a] or truncations[a])]
-        return observations, rewards, terminations, truncations, infos
+        return results
 
     def close(self):
-        self._runs = {}
-        self._batch = None
+        self._cars.worlds = [None] * len(self.possible_agents)
+        self._cars.robots = [None] * len(self.possible_agents)

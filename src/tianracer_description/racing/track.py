@@ -16,7 +16,7 @@ def centerline_file(world_file):
 class Centerline:
     """A closed polyline: arc length along it, the nearest point to a position, poses on it."""
 
-    NEAR_SEGMENTS = 8  # searched either side of the last nearest segment (project's `near`)
+    NEAR_SEGMENTS = 4  # searched either side of the last nearest segment (project's `near`)
 
     def __init__(self, points):
         points = np.asarray(points, dtype=np.float64)
