@@ -69,3 +69,11 @@ def test_circle_radius_of_points_on_a_known_circle():
     angles = [0.1 * i for i in range(40)]
     points = [(2.0 + 0.7 * math.cos(a), -1.0 + 0.7 * math.sin(a)) for a in angles]
     assert circle_radius(points) == pytest.approx(0.7, abs=1e-9)
+
+
+def test_arrays_of_commands_are_each_element_as_a_number_gives_it():
+    import numpy as np
+    speeds, steerings = np.array([1.0, -0.5, 0.7, 0.0]), np.array([0.3, 0.0, -0.45, 2.0])
+    many = commands(speeds, steerings)
+    for k in range(4):
+        assert [field[k] for field in many] == list(commands(float(speeds[k]), float(steerings[k])))

@@ -723,16 +723,8 @@ void GazeboRosApiPlugin::publishSceneContacts()
       contacts.states.back().collision1_name = c.collision1;
       contacts.states.back().collision2_name = c.collision2;
     }
-    gazebo_msgs::ContactState& state = contacts.states.back();
-    geometry_msgs::Wrench wrench;
-    wrench.force = toMsg(c.force);
-    state.wrenches.push_back(wrench);
-    state.total_wrench.force.x += wrench.force.x;
-    state.total_wrench.force.y += wrench.force.y;
-    state.total_wrench.force.z += wrench.force.z;
-    state.contact_positions.push_back(toMsg(c.position));
-    state.contact_normals.push_back(toMsg(c.normal));
-    state.depths.push_back(c.depth);
+    // the force on collision1 at the point: about the point itself it has no torque
+    addContactPoint(contacts.states.back(), c.position, c.normal, c.depth, c.force, urdf::Vector3());
   }
   scene_contacts_pub_.publish(contacts);
 }

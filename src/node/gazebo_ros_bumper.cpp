@@ -51,21 +51,7 @@ public:
            << "   other geom:" << contact.collision2 << "         time:" << stamp << std::endl;
       state.info = info.str();
       for (const ContactPoint& point : contact.points)
-      {
-        geometry_msgs::Wrench wrench;
-        wrench.force = toMsg(point.force);
-        wrench.torque = toMsg(point.torque);
-        state.wrenches.push_back(wrench);
-        state.total_wrench.force.x += wrench.force.x;
-        state.total_wrench.force.y += wrench.force.y;
-        state.total_wrench.force.z += wrench.force.z;
-        state.total_wrench.torque.x += wrench.torque.x;
-        state.total_wrench.torque.y += wrench.torque.y;
-        state.total_wrench.torque.z += wrench.torque.z;
-        state.contact_positions.push_back(toMsg(point.position));
-        state.contact_normals.push_back(toMsg(point.normal));
-        state.depths.push_back(point.depth);
-      }
+        addContactPoint(state, point.position, point.normal, point.depth, point.force, point.torque);
       contacts_.states.push_back(std::move(state));
     }
     contact_pub_.publish(contacts_);

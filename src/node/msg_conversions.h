@@ -10,6 +10,7 @@
 #include <control_msgs/JointControllerState.h>
 #include <control_msgs/JointTrajectoryControllerState.h>
 #include <control_msgs/QueryTrajectoryState.h>
+#include <gazebo_msgs/ContactState.h>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
@@ -388,6 +389,27 @@ void toMsg(const GripperCommandResult& r, RosMsg& m)
   m.effort = r.effort;
   m.stalled = r.stalled;
   m.reached_goal = r.reached_goal;
+}
+
+// One touching point added to a gazebo_msgs/ContactState: its position, normal, depth and wrench,
+// and the wrench to the state's total, as gazebo_ros_bumper fills them.
+inline void addContactPoint(gazebo_msgs::ContactState& state, const urdf::Vector3& position,
+                            const urdf::Vector3& normal, double depth, const urdf::Vector3& force,
+                            const urdf::Vector3& torque)
+{
+  geometry_msgs::Wrench wrench;
+  wrench.force = toMsg(force);
+  wrench.torque = toMsg(torque);
+  state.wrenches.push_back(wrench);
+  state.total_wrench.force.x += wrench.force.x;
+  state.total_wrench.force.y += wrench.force.y;
+  state.total_wrench.force.z += wrench.force.z;
+  state.total_wrench.torque.x += wrench.torque.x;
+  state.total_wrench.torque.y += wrench.torque.y;
+  state.total_wrench.torque.z += wrench.torque.z;
+  state.contact_positions.push_back(toMsg(position));
+  state.contact_normals.push_back(toMsg(normal));
+  state.depths.push_back(depth);
 }
 
 }  // namespace bullet_plant
