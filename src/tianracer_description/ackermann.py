@@ -44,7 +44,7 @@ def wheel_commands(speed, steering, wheelbase, rear_track, front_track, wheel_ra
     faster or slower, and each front wheel points at the turn's centre, atan2(wheelbase t,
     wheelbase - d t). Straight ahead (t = 0) is the same formula, with no special case."""
     wheel_rate = np.divide(speed, wheel_radius)
-    t = np.tan(np.clip(steering, -max_steering, max_steering))
+    t = np.tan(np.minimum(np.maximum(steering, -max_steering), max_steering))  # np.clip's overhead is 5 us
     return WheelCommands(rear_left=wheel_rate * (1.0 - rear_track / 2.0 * t / wheelbase),
                          rear_right=wheel_rate * (1.0 + rear_track / 2.0 * t / wheelbase),
                          steer_left=np.arctan2(wheelbase * t, wheelbase - front_track / 2.0 * t),

@@ -96,11 +96,13 @@ class CarModel:
         """Actions (a row of steering, speed per car, each in [-1, 1] of the car's largest) as the four
         controllers' commands, a row per car in COMMAND_CONTROLLERS' order: the converter's
         wheel_commands."""
-        actions = np.clip(np.asarray(actions, np.float64).reshape(-1, 2), -1.0, 1.0)
+        actions = np.minimum(np.maximum(np.asarray(actions, np.float64).reshape(-1, 2), -1.0), 1.0)
         g = self.geometry
         c = wheel_commands(actions[:, 1] * self.max_speed, actions[:, 0] * self.max_steering, g.wheelbase,
                            g.rear_track, g.front_track, g.wheel_radius, self.max_steering)
-        return np.stack([c.rear_left, c.rear_right, c.steer_left, c.steer_right], axis=1)
+        commands = np.empty((len(actions), 4))
+        commands[:, 0], commands[:, 1], commands[:, 2], commands[:, 3] = c
+        return commands
 
     def spawn(self, world, name, pose, chase_camera=False):
         """The car in `world` at pose (x, y, yaw) with its controllers running (the spawner's)."""
