@@ -98,8 +98,12 @@ class CarModel:
         wheel_commands."""
         actions = np.minimum(np.maximum(np.asarray(actions, np.float64).reshape(-1, 2), -1.0), 1.0)
         g = self.geometry
-        c = wheel_commands(actions[:, 1] * self.max_speed, actions[:, 0] * self.max_steering, g.wheelbase,
-                           g.rear_track, g.front_track, g.wheel_radius, self.max_steering)
+        if len(actions) == 1:  # one car: as numbers, a third of the time numpy takes on one-element arrays
+            steering, speed = actions[0].tolist()
+        else:
+            steering, speed = actions[:, 0], actions[:, 1]
+        c = wheel_commands(speed * self.max_speed, steering * self.max_steering, g.wheelbase, g.rear_track,
+                           g.front_track, g.wheel_radius, self.max_steering)
         commands = np.empty((len(actions), 4))
         commands[:, 0], commands[:, 1], commands[:, 2], commands[:, 3] = c
         return commands
