@@ -1,5 +1,5 @@
-// The sensors' thread pool (src/plant/rendering/ray_threads.cpp): every task of a job runs once, for any
-// number of threads and tasks, and concurrent callers take turns.
+// The sensors' ray threads (src/plant/rendering/ray_threads.cpp, a TBB arena): every task of a job runs
+// once, for any number of threads and tasks, and concurrent callers each get all their tasks.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -27,8 +27,9 @@ TEST(RayThreads, EveryTaskRunsOnceForAnyNumberOfThreadsAndTasks)
         EXPECT_EQ(runs[size_t(i)].load(), 1) << "task " << i << " of " << tasks << " on " << threads << " threads";
     }
   }
-  setRayThreads(0);
-  EXPECT_EQ(rayThreads(), int(std::max(1u, std::thread::hardware_concurrency()))) << "0: the hardware's threads";
+  setRayThreads(0);  // the hardware threads this process may run on (an affinity mask may allow fewer)
+  EXPECT_GE(rayThreads(), 1);
+  EXPECT_LE(rayThreads(), int(std::max(1u, std::thread::hardware_concurrency())));
 }
 
 TEST(RayThreads, ManyThreadsShareAJob)
@@ -50,7 +51,7 @@ TEST(RayThreads, ManyThreadsShareAJob)
   setRayThreads(0);
 }
 
-TEST(RayThreads, ConcurrentCallersTakeTurnsAndEachGetsAllItsTasks)
+TEST(RayThreads, ConcurrentCallersEachGetAllTheirTasks)
 {
   setRayThreads(3);
   constexpr int kCallers = 4, kTasks = 300;

@@ -1,18 +1,20 @@
-// The threads that cast the sensors' rays: the calling thread and a pool of workers, one per
-// hardware thread by default. A job's tasks are handed out one at a time, so results that each task
-// computes alone do not depend on the number of threads.
+// The threads that cast the sensors' rays: a TBB arena (oneTBB, whose work stealing composes: worlds
+// stepped side by side on TBB's threads, as bullet_plant.CarBatch steps them, share the arena's
+// threads instead of queueing for a pool of their own). A job's tasks are handed out one at a time,
+// so results that each task computes alone do not depend on the number of threads.
 #pragma once
 
 #include <functional>
 
 namespace bullet_plant
 {
-// Runs task(0) .. task(tasks - 1), each once, on the calling thread and the pool's workers; returns
-// when all are done. One job at a time: concurrent callers take turns.
+// Runs task(0) .. task(tasks - 1), each once, on the calling thread and the arena's; returns when
+// all are done. Concurrent callers each get all their tasks run, on the threads they share.
 void parallelTasks(int tasks, const std::function<void(int)>& task);
 
-// The number of threads that cast camera and lidar rays (the calling thread and n - 1 workers);
-// by default (n <= 0) the machine's hardware threads. Results do not depend on it.
+// The number of threads that cast lidar rays (the calling thread and n - 1 of TBB's); by default
+// (n <= 0) the hardware threads this process may run on. Results do not depend on it. Set it
+// between jobs, not during one.
 void setRayThreads(int n);
 int rayThreads();
 
