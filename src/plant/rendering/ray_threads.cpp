@@ -41,9 +41,11 @@ void parallelTasks(int tasks, const std::function<void(int)>& task)
     return;
   }
   // One task at a time to each thread (a task is a packet of rays), from TBB's work stealing.
-  threads->execute([&] {
-    tbb::parallel_for(0, tasks, 1, [&](int i) { task(i); }, tbb::simple_partitioner());
-  });
+  const auto run = [&] { tbb::parallel_for(0, tasks, 1, [&](int i) { task(i); }, tbb::simple_partitioner()); };
+  if (tbb::this_task_arena::current_thread_index() != tbb::task_arena::not_initialized)
+    run();  // called on a TBB thread (worlds stepped side by side): nested, on the threads of its arena
+  else
+    threads->execute(run);
 }
 
 void setRayThreads(int n)

@@ -1,6 +1,7 @@
-// The threads that cast the sensors' rays: a TBB arena (oneTBB, whose work stealing composes: worlds
-// stepped side by side on TBB's threads, as bullet_plant.CarBatch steps them, share the arena's
-// threads instead of queueing for a pool of their own). A job's tasks are handed out one at a time,
+// The threads that cast the sensors' rays: a TBB arena (oneTBB), or, for a world stepped on a TBB
+// thread (bullet_plant.CarBatch steps worlds side by side), the arena that thread works in: the
+// rays are one more nested loop of the worlds', sharing their threads by work stealing instead of
+// queueing for threads of their own. A job's tasks are handed out one at a time,
 // so results that each task computes alone do not depend on the number of threads.
 #pragma once
 
