@@ -202,6 +202,35 @@ TEST(ShapeRays, BoxesPlanesSpheresAndCylindersAreHitWhereTheyAre)
   EXPECT_EQ(scene.castHit(o, down, 1.5, 10, kSeenByAll).distance, kInf) << "nothing nearer than the near distance";
 }
 
+TEST(ShapeRays, APlaneHasNoEdgesForARayToSlipThrough)
+{
+  // Rays from above at points of the line y = x on the ground, and of the line through the origin
+  // a lidar there sweeps: where a plane of triangles has the edges two of its triangles share.
+  const RayPrimitive ground = primitive(Shape::Kind::Plane, 0, 0, 1, poseFromXyzRpy(0, 0, 0, 0, 0, 0));
+  RayScene scene({ground});
+  scene.commit(nullptr);
+  const double eye[3] = {6, -0.01, 16.8};
+  int missed = 0;
+  for (int k = 0; k <= 20000; ++k)
+  {
+    const double t = -50.0 + k * 0.005;
+    double d[3] = {t - eye[0], t - eye[1], -eye[2]};
+    const double length = norm(d);
+    for (double& x : d)
+      x /= length;
+    const double hit = scene.cast(eye, d, 100, kSeenByAll);
+    missed += !(std::abs(hit - length) < 1e-6 * length);  // single precision, up to 66 m away
+  }
+  EXPECT_EQ(missed, 0) << "of 20,001 rays at the line y = x";
+  const double lidar[3] = {0, 0, 0.1};
+  for (int k = 0; k < 3600; ++k)
+  {
+    const double a = k * M_PI / 1800, down = 0.05;
+    const double d[3] = {std::cos(a) * std::cos(down), std::sin(a) * std::cos(down), -std::sin(down)};
+    EXPECT_NEAR(scene.cast(lidar, d, 10, kSeenByAll), 0.1 / std::sin(down), kFloatTolerance) << "azimuth " << a;
+  }
+}
+
 TEST(ShapeRays, CamerasSeeVisualsAndLidarsCollisions)
 {
   RayPrimitive visual = primitive(Shape::Kind::Box, 1, 1, 1, poseFromXyzRpy(2, 0, 0, 0, 0, 0));

@@ -385,9 +385,12 @@ struct RayScene::ShapeSet
   std::vector<RayPrimitive> shapes;      // never resized after construction: user geometry points into it
   std::vector<int> shape_of_geometry;    // Embree geometry id -> index in shapes
 
-  ShapeSet(RTCDevice device, std::vector<RayPrimitive> primitives) : shapes(std::move(primitives))
+  // robust: Embree's robust traversal (planes: see ray_caster.h)
+  ShapeSet(RTCDevice device, std::vector<RayPrimitive> primitives, bool robust = false) : shapes(std::move(primitives))
   {
     scene = rtcNewScene(device);
+    if (robust)
+      rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
     for (size_t k = 0; k < shapes.size(); ++k)
     {
@@ -438,9 +441,15 @@ RayScene::RayScene(const std::vector<RayPrimitive>& world_shapes)
   top_ = rtcNewScene(device_);
   rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC);
   rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
+  std::vector<RayPrimitive> planes, others;
+  for (const RayPrimitive& p : world_shapes)
+    (p.kind == Shape::Kind::Plane ? planes : others).push_back(p);
   instances_.emplace_back();
-  instances_[0].set = std::make_shared<ShapeSet>(device_, world_shapes);
+  instances_[0].set = std::make_shared<ShapeSet>(device_, others);
   attach(instances_[0]);
+  instances_.emplace_back();
+  instances_[1].set = std::make_shared<ShapeSet>(device_, planes, true);
+  attach(instances_[1]);
   rtcCommitScene(top_);
 }
 

@@ -5,7 +5,11 @@
 // link's geometry. Boxes, planes and meshes are triangles (a box's and a plane's faces are exactly
 // planar, so triangles are exact and take Embree's fast path); spheres and cylinders are user
 // geometry intersected analytically in double precision (tessellating them would move a curved
-// surface by up to its chord error). Rays go in packets of 16, in parallel on a small thread pool;
+// surface by up to its chord error). The world's planes are a shape set of their own, built with
+// Embree's robust traversal: in the fast one, rays that run exactly along the edge two of a plane's
+// triangles share slipped through (14 of 20,001 in a test), and out of the other static shapes' BVH
+// a 2 km plane no longer spoils its boxes (the car's lidar on the race track: 16 against 13.9 M rays
+// a second). Rays go in packets of 16, in parallel on TBB's threads (ray_threads.h);
 // every ray is computed alone, so scans do not depend on the number of threads. Lidars cast rays;
 // cameras rasterize the same primitives with OpenGL (gl_scene.h).
 #pragma once
@@ -126,7 +130,9 @@ private:
   const EmbreeIsa isa_;
   const RTCDevice device_;
   RTCScene top_ = nullptr;
-  std::vector<Instance> instances_;  // [0]: the world's static shapes; the rest robots' bodies (null set: removed)
+  // [0]: the world's static shapes but planes, [1] its planes (robust traversal); the rest robots'
+  // bodies (null set: removed)
+  std::vector<Instance> instances_;
   std::vector<int> instance_of_geometry_;  // top-level geometry id -> index in instances_
   const void* hidden_ = nullptr;  // as the last commit hid it
   bool changed_ = true;                       // since the last commit: the top level needs one
