@@ -7,7 +7,9 @@
 #include <cmath>
 #include <limits>
 
+#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
 #include "bullet_plant/controller_manager.h"
@@ -110,35 +112,38 @@ public:
     for (size_t i = 0; i < n; ++i)
       for (size_t c = 0; c < per_car; ++c)
         slots_[i].commands[c]->deliver(in[i * per_car + c]);  // refused when not finite: the last one stays
-    std::vector<World*> worlds;  // each once, however many of the cars it holds
-    for (const CarSlot& car : slots_)
-      if (std::find(worlds.begin(), worlds.end(), car.world) == worlds.end())
-        worlds.push_back(car.world);
-    std::vector<std::string> errors(std::max(n, worlds.size()));
+    // Each world once, with the cars it holds: one task steps it, then reads them.
+    std::vector<std::pair<World*, std::vector<size_t>>> worlds;
+    for (size_t i = 0; i < n; ++i)
+    {
+      auto held = std::find_if(worlds.begin(), worlds.end(), [&](const auto& w) { return w.first == slots_[i].world; });
+      if (held == worlds.end())
+        held = worlds.insert(worlds.end(), {slots_[i].world, {}});
+      held->second.push_back(i);
+    }
+    std::vector<std::string> errors(worlds.size());
     {
       py::gil_scoped_release release;
       arena_.execute([&] {
-        tbb::parallel_for(size_t(0), worlds.size(), [&](size_t w) {
-          try
-          {
-            worlds[w]->step(steps);
-          }
-          catch (const std::exception& e)
-          {
-            errors[w] = std::string("its world's step: ") + e.what();
-          }
-        });
+        // One world to a thread at a time, handed out as threads come free: worlds differ in cost.
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, worlds.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
+          for (size_t w = range.begin(); w < range.end(); ++w)
+            try
+            {
+              worlds[w].first->step(steps);
+              for (size_t i : worlds[w].second)
+                readCar(slots_[i], rays, scan_out + i * rays, state_out + i * kStateColumns.size());
+            }
+            catch (const std::exception& e)
+            {
+              errors[w] = e.what();
+            }
+        }, tbb::simple_partitioner());
       });
-      if (std::all_of(errors.begin(), errors.end(), [](const std::string& e) { return e.empty(); }))
-        arena_.execute([&] {
-          tbb::parallel_for(size_t(0), n, [&](size_t i) {
-            readCar(slots_[i], rays, scan_out + i * rays, state_out + i * kStateColumns.size());
-          });
-        });
     }
-    for (size_t i = 0; i < errors.size(); ++i)
-      if (!errors[i].empty())
-        throw std::runtime_error("world " + std::to_string(i) + " of the batch: " + errors[i]);
+    for (size_t w = 0; w < worlds.size(); ++w)
+      if (!errors[w].empty())
+        throw std::runtime_error("the world of car " + std::to_string(worlds[w].second[0]) + ": " + errors[w]);
     return py::make_tuple(scans, state);
   }
 
