@@ -94,7 +94,7 @@ class RaceCars:
         self.batch = bullet_plant.CarBatch(len(self.names), threads)
         count = len(self.names)
         self.worlds, self.robots = [None] * count, [None] * count
-        self.s = np.zeros(count)  # arc length along the centre line
+        self.s = [0.0] * count  # arc length along the centre line
         self.segments = [None] * count  # of the centre line, each car's nearest
         self.laps = np.zeros(count)  # centre line lengths gained since its reset
         self._still = self.model.commands(np.zeros((count, 2)))
@@ -126,12 +126,14 @@ class RaceCars:
         if still is not None:
             commands[still] = self._still[still]
         scans, state = self.batch.step(commands, steps)
-        rewards = np.empty(len(self.names))
         line = self.track.centerline
-        for i in range(len(self.names)):
-            s, _, self.segments[i] = line.project(state[i, STATE['x']], state[i, STATE['y']], self.segments[i])
-            rewards[i] = line.progress(self.s[i], s)
+        gained = []
+        # Python floats: numpy's scalars would make the projection's arithmetic several times slower.
+        for i, (x, y) in enumerate(state[:, [STATE['x'], STATE['y']]].tolist()):
+            s, _, self.segments[i] = line.project(x, y, self.segments[i])
+            gained.append(line.progress(self.s[i], s))
             self.s[i] = s
+        rewards = np.array(gained)
         self.laps += rewards / line.length
         return scans, state, rewards
 
@@ -152,7 +154,7 @@ class RaceCars:
         arrays: progress (m along the centre line), laps (since the reset), time (s, simulated),
         crashed."""
         cars = np.arange(len(self.names)) if cars is None else np.asarray(cars)
-        return {'progress': self.s[cars], 'laps': self.laps[cars],
+        return {'progress': np.array(self.s)[cars], 'laps': self.laps[cars],
                 'time': np.array([self.worlds[i].time for i in cars]),
                 'crashed': state[:, STATE['crashed']] > 0}
 
