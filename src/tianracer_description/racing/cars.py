@@ -13,7 +13,7 @@ import numpy as np
 from gymnasium import spaces
 
 from tianracer_description import bullet_plant
-from tianracer_description.racing.car import new_world
+from tianracer_description.racing.car import CarModel, new_world
 from tianracer_description.racing.track import Centerline, centerline_file
 
 STATE = {name: k for k, name in enumerate(bullet_plant.CarBatch.STATE)}
@@ -83,6 +83,12 @@ class RaceTrack:
         offset += spread * rng.uniform(-START_SPREAD['offset'], START_SPREAD['offset'])
         x, y, yaw = self.centerline.pose_at(s, offset)
         return x, y, yaw + spread * rng.uniform(-START_SPREAD['yaw'], START_SPREAD['yaw'])
+
+
+def race_parts(world_file, centerline, urdf, controllers, max_speed):
+    """(track, car model, lidar): what every environment starts from, from its arguments."""
+    track, model = RaceTrack(world_file, centerline), CarModel(urdf, controllers, max_speed)
+    return track, model, LidarDescription(model)
 
 
 class RaceCars:

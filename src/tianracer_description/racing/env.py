@@ -15,9 +15,9 @@ a chase camera behind the car (the plant's OpenGL cameras).
 import gymnasium
 import numpy as np
 
-from tianracer_description.racing.car import CHASE_CAMERA, CHASE_CAMERA_SIZE, CarModel
-from tianracer_description.racing.cars import (LidarDescription, RaceCars, RaceTrack, action_space,
-                                               observation_space, row, steps_per_action)
+from tianracer_description.racing.car import CHASE_CAMERA, CHASE_CAMERA_SIZE
+from tianracer_description.racing.cars import (RaceCars, action_space, observation_space, race_parts, row,
+                                               steps_per_action)
 
 
 class RaceEnv(gymnasium.Env):
@@ -29,9 +29,7 @@ class RaceEnv(gymnasium.Env):
                  control_period=0.01, observe_pose=False, render_mode=None):
         if render_mode not in (None, 'rgb_array'):
             raise ValueError("render_mode is None or 'rgb_array'; got %r" % (render_mode,))
-        self.track = RaceTrack(world_file, centerline)
-        self.model = CarModel(urdf, controllers, max_speed)
-        self.lidar = LidarDescription(self.model)
+        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed)
         self.render_mode = render_mode
         self.control_period = control_period
         self.observation_space = observation_space(self.lidar, observe_pose)

@@ -20,9 +20,9 @@ from gymnasium.utils import seeding
 from pettingzoo import ParallelEnv
 
 from tianracer_description.racing import MAX_EPISODE_STEPS
-from tianracer_description.racing.car import CarModel, new_world
-from tianracer_description.racing.cars import (LidarDescription, RaceCars, RaceTrack, action_space,
-                                               observation_space, row, steps_per_action)
+from tianracer_description.racing.car import new_world
+from tianracer_description.racing.cars import (RaceCars, action_space, observation_space, race_parts, row,
+                                               steps_per_action)
 
 GRID_SPACING = 0.6  # m between a car and the one behind it, along the centre line
 GRID_OFFSET = 0.25  # m either side of the centre line: the two columns
@@ -36,9 +36,7 @@ class RaceParallelEnv(ParallelEnv):
                  control_period=0.01, observe_pose=False, max_cycles=MAX_EPISODE_STEPS):
         if cars < 1:
             raise ValueError('a race has 1 car or more; got %r' % (cars,))
-        self.track = RaceTrack(world_file, centerline)
-        self.model = CarModel(urdf, controllers, max_speed)
-        self.lidar = LidarDescription(self.model)
+        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed)
         self.control_period, self.observe_pose, self.max_cycles = control_period, observe_pose, max_cycles
         self.possible_agents = ['car_%d' % i for i in range(cars)]
         self.agents = []

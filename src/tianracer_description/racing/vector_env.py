@@ -14,9 +14,8 @@ from gymnasium.utils import seeding
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from tianracer_description.racing.car import CarModel
-from tianracer_description.racing.cars import (LidarDescription, RaceCars, RaceTrack, action_space,
-                                               observation_space, row, steps_per_action)
+from tianracer_description.racing.cars import (RaceCars, action_space, observation_space, race_parts, row,
+                                               steps_per_action)
 
 
 class RaceVectorEnv(VectorEnv):
@@ -27,9 +26,7 @@ class RaceVectorEnv(VectorEnv):
         if num_envs < 1:
             raise ValueError('num_envs is 1 or more; got %r' % (num_envs,))
         self.num_envs = num_envs
-        self.track = RaceTrack(world_file, centerline)
-        self.model = CarModel(urdf, controllers, max_speed)
-        self.lidar = LidarDescription(self.model)
+        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed)
         self.control_period = control_period
         self.max_episode_steps = max_episode_steps
         self.single_observation_space = observation_space(self.lidar, observe_pose)
