@@ -337,9 +337,11 @@ def test_the_step_button_runs_the_iterations_asked_for_while_paused(page):
     time.sleep(1.0)
     status = driver.execute_script('return viewer.status()')
     assert status['time'] == pytest.approx(before + 0.25, abs=1e-9) and status['paused'] is True, status
-    # 0.25 s of free fall from 0.5 m: 0.31 m down (the scene's poses come at 30 Hz of sim time)
+    # 0.25 s of free fall from 0.5 m: 0.31 m down; the page shows the last step's pose, as the plant has it
     height = driver.execute_script("return viewer.linkPose('tianracer::base_link')[2]")
-    assert 0.15 < height < 0.25, height
+    state = ros.service('/gazebo/get_link_state', '{link_name: "tianracer::base_link"}')
+    assert height == pytest.approx(state['link_state']['pose']['position']['z'], abs=1e-6) and 0.15 < height < 0.25, (
+        height, state)
 
 
 def test_the_contacts_overlay_draws_the_tyres_contacts_under_the_wheels(page):

@@ -690,8 +690,8 @@ gazebo_msgs::LinkStates GazeboRosApiPlugin::linkStates()
 void GazeboRosApiPlugin::publishLinkStates()
 {
   const bool every_step = link_states_pub_.getNumSubscribers() > 0;
-  const bool for_scene =
-      scene_link_states_pub_.getNumSubscribers() > 0 && scene_link_states_gate_.due(world_.timeNs());
+  const bool for_scene = scene_link_states_pub_.getNumSubscribers() > 0 &&
+                         (scene_link_states_gate_.due(world_.timeNs()) || plant_.lastRequestedStep());
   if (!every_step && !for_scene)
     return;
   const gazebo_msgs::LinkStates states = linkStates();

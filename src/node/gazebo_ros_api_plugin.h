@@ -49,7 +49,8 @@ public:
   // (every step, as gazebo_ros publishes them on each world update).
   void publishModelStates();
   // link_states every step while subscribed (gazebo_ros's), and ~scene_link_states, the same at
-  // ~scene_rate Hz of simulated time (default 30) for viewers.
+  // ~scene_rate Hz of simulated time (default 30) for viewers, and after the last step of a
+  // step_physics request.
   void publishLinkStates();
   // ~scene_link_states at once, after a pose set by hand (set_model_state, set_link_state,
   // set_model_configuration, the resets, spawn, delete): viewers see it paused too, as gzclient does.

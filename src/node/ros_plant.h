@@ -67,6 +67,9 @@ public:
   // steps at the world's pace, each publishing as any step does, then /clock at once whatever its
   // rate so that the stepper sees the time it reached. Ignored, with a warning, while running.
   void requestSteps(uint32_t iterations);
+  // In the world update end callbacks: whether this step is the last a requestSteps asked for (what
+  // a stepper waits to see).
+  bool lastRequestedStep() const { return paused_ && steps_requested_ == 0; }
   void resetSimulation();
   double realTimeFactor() const { return real_time_factor_; }
   void setRealTimeFactor(double factor);

@@ -182,7 +182,8 @@ class Viewer:
         self._clock_samples = collections.deque()  # (wall, sim) of /clock over the last RTF_WINDOW
         self._pages = set()
         self._link_states = None  # the subscriber, while a page is open
-        self._last_poses = 0.0
+        self._last_poses = 0.0  # monotonic s of the last poses sent
+        self._poses_waiting = None  # link states that arrived and wait for their turn
         self._lock = threading.Lock()
         self._loop = None
         self._drive_topics = {}
@@ -251,11 +252,21 @@ class Viewer:
             rospy.logerr('viewer: %s: %s', name, error)
 
     def _on_link_states(self, message):
-        now = time.monotonic()
-        if now - self._last_poses < 1.0 / self.rate:
-            return
-        self._last_poses = now
-        self._to_pages(poses_message(message, self._sim_time))
+        """The latest link states go to the pages `rate` times a second at the most, the last of a burst
+        too (a step of the paused world ends with one): what arrives too soon waits for its turn,
+        replaced by anything newer."""
+        with self._lock:
+            waiting = self._poses_waiting is not None
+            self._poses_waiting = message
+        if not waiting and self._loop is not None:
+            delay = max(0.0, self._last_poses + 1.0 / self.rate - time.monotonic())
+            self._loop.call_soon_threadsafe(self._loop.call_later, delay, self._send_poses)
+
+    def _send_poses(self):
+        with self._lock:
+            message, self._poses_waiting = self._poses_waiting, None
+        self._last_poses = time.monotonic()
+        self._send_all(poses_message(message, self._sim_time))
 
     def _due(self, topic):
         """Whether a message of an overlay's topic goes to its pages now (OVERLAY_RATE at the most)."""
