@@ -64,6 +64,17 @@ def test_the_same_seed_and_actions_give_bit_identical_observations(actions):
     assert not identical(first[0], other[0]), 'another seed, another start'
 
 
+def test_the_seed_seeds_the_lidars_noise_too():
+    """From the same pose, the same seed gives the same noisy scan, another seed another one (the
+    lidar's 1 cm noise), while what it measures stays the same within the noise."""
+    env = RaceEnv(RACE_TRACK_WORLD)
+    pose = {'pose': (0.0, 0.0, 0.0)}
+    first, again, other = (env.reset(seed=seed, options=pose)[0]['scan'] for seed in (4, 4, 5))
+    assert np.array_equal(first, again)
+    assert np.mean(first != other) > 0.9, 'most rays drew other noise'
+    assert np.max(np.abs(first - other)) < 0.12, 'the same walls, within the noise'
+
+
 def test_a_seed_starts_near_the_start_line_and_options_pose_puts_the_car_there():
     env = RaceEnv(RACE_TRACK_WORLD, observe_pose=True)
     starts = [env.reset(seed=seed)[0]['pose'] for seed in range(20)]

@@ -40,6 +40,12 @@ public:
   // copy of the parameter server.
   Param& params();
 
+  // The seed of the noise of the sensors of robots spawned from now on, with the robot's and the
+  // sensor's names: 0 (the default) seeds by the names alone, the same in every world. A learning
+  // environment sets one per episode, from its own seed.
+  void setNoiseSeed(uint32_t seed);
+  uint32_t noiseSeed() const;
+
   double timeStep() const;        // s, the SDF's max_step_size
   // gazebo_ros's set_physics_properties: a new step (throws std::invalid_argument outside
   // [1e-9, 0.1] s, naming the value) and gravity (m/s^2, world frame), from the next step on.

@@ -89,6 +89,10 @@ void init_world(py::module_& m)
       .def("scene_json", [](PyWorld& w) { return sceneJson(sceneOf(*w.world)); },
            "what a viewer draws: the world's static visuals and each robot's link visuals, the sun, ambient "
            "and background, as JSON (bullet_plant/scene.h; the node publishes it on /gazebo/scene)")
+      .def_property("noise_seed", [](PyWorld& w) { return w.world->noiseSeed(); },
+                    [](PyWorld& w, uint32_t seed) { w.world->setNoiseSeed(seed); },
+                    "the seed of the noise of the sensors of robots spawned from now on (with their names); 0, the "
+                    "default, seeds by the names alone")
       .def_property("echo", [](PyWorld& w) { return w.echo; }, [](PyWorld& w, bool on) { w.echo = on; },
                     "print warnings and errors to stderr as they happen (default True)")
       .def_property("frames_ahead", [](PyWorld& w) { return w.world->framesAhead(); },

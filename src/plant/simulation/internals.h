@@ -150,6 +150,7 @@ struct World::Internals
   WorldDescription description;
   Log log;
   Param params;
+  uint32_t noise_seed = 0;  // World::setNoiseSeed
   int64_t step_ns = 1000000;
   double step_s = 0.001;
   int64_t time_ns = 0;

@@ -606,12 +606,13 @@ std::string cameraProblem(const SensorDescription& s)
   return "";
 }
 
-// 9. Sensors, each with its own noise generator seeded from the robot's and the sensor's names, in
-// the namespace its plugin publishes in.
+// 9. Sensors, each with its own noise generator seeded from the robot's and the sensor's names (and
+// the world's noise seed, when one is set), in the namespace its plugin publishes in.
 std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescription& s)
 {
   Log& log = r.world->log;
-  const uint32_t seed = seedFor(r.name + "/" + s.name);
+  const uint32_t world_seed = r.world->noise_seed;
+  const uint32_t seed = seedFor((world_seed ? std::to_string(world_seed) + "/" : std::string()) + r.name + "/" + s.name);
   const bool lidar = s.type == "ray" || s.type == "gpu_ray", camera = s.type == "camera" || s.type == "depth";
   if (lidar || camera)
   {

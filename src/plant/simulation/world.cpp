@@ -369,6 +369,9 @@ void World::setFramesAhead(bool ahead)
     in_->collectFrames();
 }
 
+void World::setNoiseSeed(uint32_t seed) { in_->noise_seed = seed; }
+uint32_t World::noiseSeed() const { return in_->noise_seed; }
+
 void World::setPaused(bool paused)
 {
   in_->paused = paused;

@@ -125,10 +125,11 @@ class CarModel:
         batch.set(index, world, robot, list(COMMAND_CONTROLLERS), self.lidar, self.imu or '', list(STEERING_JOINTS))
 
 
-def new_world(world_file, controllers):
+def new_world(world_file, controllers, noise_seed=0):
     """A world of the plant from a world file (None: an empty one), with the controllers' YAML loaded,
-    quiet."""
+    quiet, its sensors' noise seeded by `noise_seed` (0: by their names alone)."""
     world = bullet_plant.World.from_file(world_file) if world_file else bullet_plant.World()
+    world.noise_seed = noise_seed
     world.echo = False
     world.load_params(controllers)
     return world

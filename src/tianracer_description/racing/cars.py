@@ -18,6 +18,12 @@ from tianracer_description.racing.track import Centerline, centerline_file
 
 STATE = {name: k for k, name in enumerate(bullet_plant.CarBatch.STATE)}
 IMU_COLUMNS = slice(STATE['angular_velocity_x'], STATE['linear_acceleration_z'] + 1)
+def draw_noise_seed(rng):
+    """A seed for a new world's sensor noise, drawn from an environment's generator (never 0, the
+    plant's unseeded default)."""
+    return int(rng.integers(1, 2 ** 32))
+
+
 # Where a seeded start lands around the track's start (s = 0 on the centre line): uniform within these.
 START_SPREAD = {'along': 0.2, 'offset': 0.1, 'yaw': 0.1}  # m, m, rad
 
@@ -105,11 +111,11 @@ class RaceCars:
         self.laps = np.zeros(count)  # centre line lengths gained since its reset
         self._still = self.model.commands(np.zeros((count, 2)))
 
-    def place(self, i, pose, world=None):
+    def place(self, i, pose, world=None, noise_seed=0):
         """Car i spawned at pose (x, y, yaw) into `world` (shared with other cars), or into a new world
-        of the track; its progress starts there."""
+        of the track whose sensors' noise is seeded by `noise_seed`; its progress starts there."""
         pose = tuple(float(v) for v in pose)
-        world = world or new_world(self.track.world_file, self.model.controllers)
+        world = world or new_world(self.track.world_file, self.model.controllers, noise_seed)
         self.worlds[i], self.robots[i] = world, self.model.spawn(world, self.names[i], pose, self.chase_camera)
         self.model.bind(self.batch, i, world, self.robots[i])
         self.s[i], _, self.segments[i] = self.track.centerline.project(pose[0], pose[1])

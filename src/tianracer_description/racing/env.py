@@ -7,7 +7,8 @@ converter's Ackermann conversion into the tutorial's four controllers. Each step
 control_period seconds of simulated time. Reward: metres gained along the centre line. Terminated when
 the car touches anything but the ground (a wall, a cone, another car); truncated by the time limit
 (max_episode_steps, registered). reset(seed=...) seeds the env's own generator (self.np_random), which
-places the start near the track's start line; options={"pose": (x, y, yaw)} puts it there instead.
+places the start near the track's start line and seeds the sensors' noise; options={"pose": (x, y,
+yaw)} puts the car there instead.
 Every reset makes the world anew (a few milliseconds), so an episode depends on nothing before it: the
 same seed and actions give the same observations, bit for bit. render_mode "rgb_array": the frames of
 a chase camera behind the car (the plant's OpenGL cameras).
@@ -16,8 +17,8 @@ import gymnasium
 import numpy as np
 
 from tianracer_description.racing.car import CHASE_CAMERA, CHASE_CAMERA_SIZE
-from tianracer_description.racing.cars import (RaceCars, action_space, observation_space, race_parts, row,
-                                               steps_per_action)
+from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
+                                               row, steps_per_action)
 
 
 class RaceEnv(gymnasium.Env):
@@ -41,7 +42,7 @@ class RaceEnv(gymnasium.Env):
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
         pose = (options or {}).get('pose') or self.track.start_pose(self.np_random)
-        self._cars.place(0, pose)
+        self._cars.place(0, pose, noise_seed=draw_noise_seed(self.np_random))
         self._steps = steps_per_action(self.control_period, self._cars.worlds[0].time_step)
         scans, state = self._cars.settle()
         return row(self._cars.observations(scans, state), 0), row(self._cars.infos(state), 0)

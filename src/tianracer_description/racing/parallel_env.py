@@ -21,8 +21,8 @@ from pettingzoo import ParallelEnv
 
 from tianracer_description.racing import MAX_EPISODE_STEPS
 from tianracer_description.racing.car import new_world
-from tianracer_description.racing.cars import (RaceCars, action_space, observation_space, race_parts, row,
-                                               steps_per_action)
+from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
+                                               row, steps_per_action)
 
 GRID_SPACING = 0.6  # m between a car and the one behind it, along the centre line
 GRID_OFFSET = 0.25  # m either side of the centre line: the two columns
@@ -63,7 +63,7 @@ class RaceParallelEnv(ParallelEnv):
     def reset(self, seed=None, options=None):
         if seed is not None:
             self._rng = seeding.np_random(seed)[0]
-        world = new_world(self.track.world_file, self.model.controllers)
+        world = new_world(self.track.world_file, self.model.controllers, draw_noise_seed(self._rng))
         poses = (options or {}).get('poses') or {}
         for index, agent in enumerate(self.possible_agents):
             self._cars.place(index, poses.get(agent) or self.grid_pose(index), world)

@@ -14,8 +14,8 @@ from gymnasium.utils import seeding
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from tianracer_description.racing.cars import (RaceCars, action_space, observation_space, race_parts, row,
-                                               steps_per_action)
+from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
+                                               row, steps_per_action)
 
 
 class RaceVectorEnv(VectorEnv):
@@ -45,7 +45,8 @@ class RaceVectorEnv(VectorEnv):
             self._rngs = [seeding.np_random(s)[0] for s in seeds]
         poses = (options or {}).get('poses') or [None] * self.num_envs
         for i in range(self.num_envs):
-            self._cars.place(i, poses[i] or self.track.start_pose(self._rngs[i]))
+            pose = poses[i] or self.track.start_pose(self._rngs[i])
+            self._cars.place(i, pose, noise_seed=draw_noise_seed(self._rngs[i]))
         self._elapsed[:] = 0
         self._steps = steps_per_action(self.control_period, self._cars.worlds[0].time_step)
         scans, state = self._cars.settle()
@@ -71,7 +72,7 @@ class RaceVectorEnv(VectorEnv):
         for i in np.flatnonzero(terminated | truncated):
             infos = self._add_info(infos, {'final_obs': row(observations, i), 'final_info': row(car_infos, i)}, i)
             observations = {key: value.copy() for key, value in observations.items()}  # final_obs keeps its own
-            self._cars.place(i, self.track.start_pose(self._rngs[i]))
+            self._cars.place(i, self.track.start_pose(self._rngs[i]), noise_seed=draw_noise_seed(self._rngs[i]))
             self._elapsed[i] = 0
             first_scans, first_state = self._cars.settle(i)  # its world alone; the others wait for the next step
             for key, value in self._cars.observations(first_scans, first_state).items():
