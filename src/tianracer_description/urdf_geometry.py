@@ -69,6 +69,13 @@ class UrdfModel:
         self.links = {l.get('name'): l for l in self.root.findall('link')}
         self._joint_of_child = {j.find('child').get('link'): j for j in self.joints.values()}
 
+    def root_link(self):
+        """The root link: the one no joint has as its child; ValueError unless there is one."""
+        roots = [name for name in self.links if name not in self._joint_of_child]
+        if len(roots) != 1:
+            raise ValueError('a robot has one root link; this URDF has %s' % (roots or 'none'))
+        return roots[0]
+
     def joint(self, name):
         try:
             return self.joints[name]

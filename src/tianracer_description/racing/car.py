@@ -16,7 +16,7 @@ from tianracer_description import bullet_plant
 from tianracer_description.ackermann import max_ideal_steering, wheel_commands
 from tianracer_description.tianracer import (CONFIG_YAML, MODEL_XACRO, REAR_WHEEL_CONTROLLERS, STEERING_CONTROLLERS,
                                              STEERING_JOINTS, TUTORIAL_CONTROLLERS, run_xacro)
-from tianracer_description.urdf_geometry import ackermann_geometry
+from tianracer_description.urdf_geometry import UrdfModel, ackermann_geometry
 
 # The commands' columns: the rear wheels' speeds (rad/s), then the steering hinges' angles (rad).
 COMMAND_CONTROLLERS = REAR_WHEEL_CONTROLLERS + STEERING_CONTROLLERS
@@ -41,24 +41,13 @@ def tutorial_controllers():
         return yaml.safe_load(f)
 
 
-def root_link(urdf):
-    """The URDF's root link: the one no joint has as its child."""
-    import xml.etree.ElementTree as ET
-    robot = ET.fromstring(urdf)
-    children = {j.find('child').get('link') for j in robot.findall('joint')}  # not transmissions' joints
-    roots = [link.get('name') for link in robot.findall('link') if link.get('name') not in children]
-    if len(roots) != 1:
-        raise ValueError('a car URDF has one root link; this one has %s' % (roots or 'none'))
-    return roots[0]
-
-
 def with_chase_camera(urdf):
     """The URDF with a camera fixed 0.9 m behind and 0.45 m above its root link, pitched down at it."""
     width, height = CHASE_CAMERA_SIZE
     camera = f"""
   <link name="chase_camera_link"/>
   <joint name="chase_camera_joint" type="fixed">
-    <parent link="{root_link(urdf)}"/>
+    <parent link="{UrdfModel(urdf).root_link()}"/>
     <child link="chase_camera_link"/>
     <origin xyz="-0.9 0 0.45" rpy="0 0.42 0"/>
   </joint>

@@ -168,7 +168,7 @@ class RaceCars:
         cars = np.arange(len(self.names)) if cars is None else np.asarray(cars)
         return {'progress': np.array(self.s)[cars], 'laps': self.laps[cars],
                 'time': np.array([self.worlds[i].time for i in cars]),
-                'crashed': state[:, STATE['crashed']] > 0}
+                'crashed': self.crashed(state)}
 
     def crashed(self, state):
         return state[:, STATE['crashed']] > 0
