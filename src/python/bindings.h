@@ -178,6 +178,7 @@ SensorType& sensorAs(Robot& r, const std::string& name, const char* what)
 Controller& controllerOf(ControllerManager& cm, const std::string& name);
 // The controller's command port (its first input); KeyError when it takes no command.
 Port& commandPortOf(Controller& c, const std::string& name);
+void init_centerline(py::module_& m);
 void init_car_batch(py::module_& m);
 
 void init_world(py::module_& m);

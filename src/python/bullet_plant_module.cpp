@@ -26,5 +26,6 @@ PYBIND11_MODULE(bullet_plant, m)
   init_model_plugins(robot);
   init_controller_manager(m);
   init_world(m);
+  init_centerline(m);
   init_car_batch(m);
 }

@@ -1,11 +1,14 @@
 // bullet_plant.CarBatch: N cars stepped together in one call: their controllers commanded, their
 // worlds (one each, or several cars sharing one) stepped side by side on a TBB arena with the GIL
 // released, and what a driving policy observes read back into arrays, with no Python between the
-// cars. What the Gymnasium and PettingZoo environments (tianracer_description.racing) step on.
+// cars: the lidar's ranges, the car's motion and, on a track, where it is along the centre line.
+// What the Gymnasium and PettingZoo environments (tianracer_description.racing) step on.
 #include "bindings.h"
+#include "centerline.h"
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
@@ -28,6 +31,10 @@ const std::vector<std::string> kStateColumns = {
     "angular_velocity_x", "angular_velocity_y", "angular_velocity_z",           // the IMU's latest
     "linear_acceleration_x", "linear_acceleration_y", "linear_acceleration_z",  // (0 without one)
     "crashed",  // 1 when the car touches something other than the ground (a contact normal under 45 deg)
+    "time",     // its world's simulated time (s)
+    // On a centre line (NaN without one): Centerline.project of (x, y), and the metres gained along the
+    // line since the car was last read (set or step), Centerline.progress.
+    "centerline_s", "centerline_offset", "centerline_gained",
 };
 const double kGroundNormalZ = std::sqrt(0.5);
 
@@ -41,6 +48,9 @@ struct CarSlot
   Imu* imu = nullptr;
   std::vector<std::string> steering_joints;
   std::string contact_prefix;  // "name::": the robot's collisions in World::contacts
+  std::shared_ptr<const Centerline> centerline;  // may be null
+  std::ptrdiff_t segment = -1;  // of the centre line, the car's nearest when last read
+  double s = 0;                 // and its arc length there
 };
 
 class CarBatch
@@ -51,7 +61,8 @@ public:
   size_t size() const { return slots_.size(); }
 
   void set(size_t i, py::object world_handle, const RobotRef& robot_ref, const std::vector<std::string>& controllers,
-           const std::string& lidar, const std::string& imu, const std::vector<std::string>& steering_joints)
+           const std::string& lidar, const std::string& imu, const std::vector<std::string>& steering_joints,
+           std::shared_ptr<const Centerline> centerline)
   {
     if (i >= slots_.size())
       throw py::index_error("car " + std::to_string(i) + " of a batch of " + std::to_string(slots_.size()));
@@ -84,42 +95,58 @@ public:
         throw py::key_error("robot '" + robot.name() + "' has no movable joint '" + joint + "'");
     slot.steering_joints = steering_joints;
     slot.contact_prefix = robot.name() + "::";
+    slot.centerline = std::move(centerline);
+    if (slot.centerline)  // the whole line searched once; then near the last nearest segment
+    {
+      const urdf::Pose pose = robot.basePose();
+      const Centerline::Projection along = slot.centerline->project(pose.position.x, pose.position.y);
+      slot.segment = along.segment;
+      slot.s = along.s;
+    }
     slots_[i] = std::move(slot);
   }
 
-  // commands: N x (controllers per car); returns (scans N x rays float32, state N x STATE float64).
-  py::tuple step(py::array_t<double, py::array::c_style | py::array::forcecast> commands, int steps)
+  // commands: a row per car stepped (all, or those listed in `cars`), its controllers' commands;
+  // returns (scans: a row of rays float32, state: a row of STATE float64) for each of them.
+  py::tuple step(py::array_t<double, py::array::c_style | py::array::forcecast> commands, int steps,
+                 std::optional<std::vector<size_t>> cars)
   {
-    const size_t n = slots_.size();
-    for (size_t i = 0; i < n; ++i)
+    std::vector<size_t> stepped = cars ? *cars : everyCar();
+    const size_t n = stepped.size();
+    for (size_t i : stepped)
     {
+      if (i >= slots_.size())
+        throw py::index_error("car " + std::to_string(i) + " of a batch of " + std::to_string(slots_.size()));
       if (!slots_[i].world)
         throw py::value_error("car " + std::to_string(i) + " of the batch was never set (CarBatch.set)");
       slots_[i].robot.get();  // RobotRemovedError here, not on a worker thread
     }
-    const size_t per_car = slots_[0].commands.size();
+    if (n == 0)
+      throw py::value_error("no car to step: `cars` is empty");
+    const size_t per_car = slots_[stepped[0]].commands.size();
     if (commands.ndim() != 2 || size_t(commands.shape(0)) != n || size_t(commands.shape(1)) != per_car)
       throw py::value_error("commands are " + std::to_string(n) + " x " + std::to_string(per_car) + " numbers");
     if (steps < 1)
       throw py::value_error("steps must be at least 1; got " + std::to_string(steps));
-    const SensorDescription& lidar = slots_[0].lidar->description();
+    const SensorDescription& lidar = slots_[stepped[0]].lidar->description();
     const size_t rays = size_t(lidar.horizontal_samples) * size_t(lidar.vertical_samples);
     py::array_t<float> scans({n, rays});
     py::array_t<double> state({n, kStateColumns.size()});
     const double* in = commands.data();
     float* scan_out = scans.mutable_data();
     double* state_out = state.mutable_data();
-    for (size_t i = 0; i < n; ++i)
+    for (size_t row = 0; row < n; ++row)
       for (size_t c = 0; c < per_car; ++c)
-        slots_[i].commands[c]->deliver(in[i * per_car + c]);  // refused when not finite: the last one stays
-    // Each world once, with the cars it holds: one task steps it, then reads them.
+        slots_[stepped[row]].commands[c]->deliver(in[row * per_car + c]);  // refused when not finite: the last one stays
+    // Each world once, with the rows of the cars it holds: one task steps it, then reads them.
     std::vector<std::pair<World*, std::vector<size_t>>> worlds;
-    for (size_t i = 0; i < n; ++i)
+    for (size_t row = 0; row < n; ++row)
     {
-      auto held = std::find_if(worlds.begin(), worlds.end(), [&](const auto& w) { return w.first == slots_[i].world; });
+      World* world = slots_[stepped[row]].world;
+      auto held = std::find_if(worlds.begin(), worlds.end(), [&](const auto& w) { return w.first == world; });
       if (held == worlds.end())
-        held = worlds.insert(worlds.end(), {slots_[i].world, {}});
-      held->second.push_back(i);
+        held = worlds.insert(worlds.end(), {world, {}});
+      held->second.push_back(row);
     }
     std::vector<std::string> errors(worlds.size());
     {
@@ -131,8 +158,8 @@ public:
             try
             {
               worlds[w].first->step(steps);
-              for (size_t i : worlds[w].second)
-                readCar(slots_[i], rays, scan_out + i * rays, state_out + i * kStateColumns.size());
+              for (size_t row : worlds[w].second)
+                readCar(slots_[stepped[row]], rays, scan_out + row * rays, state_out + row * kStateColumns.size());
             }
             catch (const std::exception& e)
             {
@@ -143,7 +170,7 @@ public:
     }
     for (size_t w = 0; w < worlds.size(); ++w)
       if (!errors[w].empty())
-        throw std::runtime_error("the world of car " + std::to_string(worlds[w].second[0]) + ": " + errors[w]);
+        throw std::runtime_error("the world of car " + std::to_string(stepped[worlds[w].second[0]]) + ": " + errors[w]);
     return py::make_tuple(scans, state);
   }
 
@@ -153,8 +180,9 @@ private:
     Robot& robot = car.robot.get();
 
     const std::vector<float>& ranges = car.lidar->latest().ranges;
-    for (size_t r = 0; r < rays; ++r)
-      scan[r] = r < ranges.size() ? ranges[r] : std::numeric_limits<float>::infinity();  // none yet
+    const auto range_max = float(car.lidar->description().range_max);
+    for (size_t r = 0; r < rays; ++r)  // no return (inf), or no scan yet, reads as range_max
+      scan[r] = r < ranges.size() ? std::min(ranges[r], range_max) : range_max;
 
     const urdf::Pose pose = robot.basePose();
     const Twist twist = robot.baseTwist();
@@ -191,6 +219,27 @@ private:
         crashed = true;
     }
     state[k++] = crashed ? 1.0 : 0.0;
+    state[k++] = car.world->time();
+    if (car.centerline)
+    {
+      const Centerline::Projection along = car.centerline->project(pose.position.x, pose.position.y, car.segment);
+      state[k++] = along.s;
+      state[k++] = along.offset;
+      state[k++] = car.centerline->progress(car.s, along.s);
+      car.segment = along.segment;
+      car.s = along.s;
+    }
+    else
+      for (int column = 0; column < 3; ++column)
+        state[k++] = std::numeric_limits<double>::quiet_NaN();
+  }
+
+  std::vector<size_t> everyCar() const
+  {
+    std::vector<size_t> all(slots_.size());
+    for (size_t i = 0; i < all.size(); ++i)
+      all[i] = i;
+    return all;
   }
 
   std::vector<CarSlot> slots_;
@@ -206,13 +255,15 @@ void init_car_batch(py::module_& m)
       .def(py::init<size_t, int>(), py::arg("count"), py::arg("threads") = 0)
       .def("__len__", &CarBatch::size)
       .def("set", &CarBatch::set, py::arg("index"), py::arg("world"), py::arg("robot"), py::arg("controllers"),
-           py::arg("lidar"), py::arg("imu") = "", py::arg("steering_joints"),
+           py::arg("lidar"), py::arg("imu") = "", py::arg("steering_joints"), py::arg("centerline") = nullptr,
            "car `index` is `robot` in `world`: commanded through these controllers' Float64 commands (their "
-           "order is the commands' columns), its lidar and IMU (\"\": none) enabled and read, and the "
-           "steering joints' positions read")
-      .def("step", &CarBatch::step, py::arg("commands"), py::arg("steps"),
-           "each car's commands delivered, its world stepped `steps` times, all worlds side by side; "
-           "(scans: N x rays float32, the latest scan's ranges; state: N x len(STATE) float64)")
+           "order is the commands' columns), its lidar and IMU (\"\": none) enabled and read, the "
+           "steering joints' positions read and, with a Centerline, where it is along it")
+      .def("step", &CarBatch::step, py::arg("commands"), py::arg("steps"), py::arg("cars") = py::none(),
+           "each car's commands delivered, its world stepped `steps` times, all worlds side by side: every "
+           "car's, or only those of the cars listed in `cars` (commands and results then a row each, in that "
+           "order); (scans: rows of the latest scan's ranges, float32, no return as range_max; state: rows of "
+           "len(STATE) float64)")
       .def_property_readonly_static("STATE", [](py::object) { return kStateColumns; });
 }
 

@@ -109,9 +109,11 @@ class CarModel:
             robot.enable_sensor(CHASE_CAMERA)
         return robot
 
-    def bind(self, batch, index, world, robot):
-        """Car `index` of a bullet_plant.CarBatch is this car, `robot` in `world`."""
-        batch.set(index, world, robot, list(COMMAND_CONTROLLERS), self.lidar, self.imu or '', list(STEERING_JOINTS))
+    def bind(self, batch, index, world, robot, centerline=None):
+        """Car `index` of a bullet_plant.CarBatch is this car, `robot` in `world`, measured along
+        `centerline` (a Centerline, or None)."""
+        batch.set(index, world, robot, list(COMMAND_CONTROLLERS), self.lidar, self.imu or '', list(STEERING_JOINTS),
+                  centerline)
 
 
 def new_world(world_file, controllers, noise_seed=0):

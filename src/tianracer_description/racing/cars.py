@@ -106,9 +106,7 @@ class RaceCars:
         self.batch = bullet_plant.CarBatch(len(self.names), threads)
         count = len(self.names)
         self.worlds, self.robots = [None] * count, [None] * count
-        self.s = [0.0] * count  # arc length along the centre line
-        self.segments = [None] * count  # of the centre line, each car's nearest
-        self.laps = np.zeros(count)  # centre line lengths gained since its reset
+        self.gained = np.zeros(count)  # metres along the centre line since each car's reset
         self._still = self.model.commands(np.zeros((count, 2)))
 
     def place(self, i, pose, world=None, noise_seed=0):
@@ -117,19 +115,15 @@ class RaceCars:
         pose = tuple(float(v) for v in pose)
         world = world or new_world(self.track.world_file, self.model.controllers, noise_seed)
         self.worlds[i], self.robots[i] = world, self.model.spawn(world, self.names[i], pose, self.chase_camera)
-        self.model.bind(self.batch, i, world, self.robots[i])
-        self.s[i], _, self.segments[i] = self.track.centerline.project(pose[0], pose[1])
-        self.laps[i] = 0.0
+        self.model.bind(self.batch, i, world, self.robots[i], self.track.centerline)
+        self.gained[i] = 0.0
 
     def settle(self, i=None):
         """(scans, state) after one physics step with the cars held still (their first scan, their
-        controllers' first update): all cars, or car i alone (its world stepped through a batch of its
-        own; the others' are not)."""
+        controllers' first update): all cars, or car i alone (its world stepped; the others' are not)."""
         if i is None:
             return self.batch.step(self._still, 1)
-        alone = bullet_plant.CarBatch(1, 1)
-        self.model.bind(alone, 0, self.worlds[i], self.robots[i])
-        return alone.step(self._still[i:i + 1], 1)
+        return self.batch.step(self._still[i:i + 1], 1, [i])
 
     def step(self, actions, steps, still=None):
         """(scans, state, rewards) after every car's action held for `steps` physics steps; cars where
@@ -138,21 +132,14 @@ class RaceCars:
         if still is not None:
             commands[still] = self._still[still]
         scans, state = self.batch.step(commands, steps)
-        line = self.track.centerline
-        gained = []
-        # Python floats: numpy's scalars would make the projection's arithmetic several times slower.
-        for i, (x, y) in enumerate(state[:, [STATE['x'], STATE['y']]].tolist()):
-            s, _, self.segments[i] = line.project(x, y, self.segments[i])
-            gained.append(line.progress(self.s[i], s))
-            self.s[i] = s
-        rewards = np.array(gained)
-        self.laps += rewards / line.length
+        rewards = state[:, STATE['centerline_gained']]
+        self.gained += rewards
         return scans, state, rewards
 
     def observations(self, scans, state):
         """The cars' observations, a dict of arrays with a row per car."""
         observations = {
-            'scan': np.minimum(scans, np.float32(self.lidar.range_max)),  # no return (inf) reads as range_max
+            'scan': scans,
             'speed': state[:, STATE['speed']:STATE['speed'] + 1].astype(np.float32),
             'steering': ((state[:, STATE['steer_left']] + state[:, STATE['steer_right']]) / 2)[:, None].astype(np.float32),
             'imu': state[:, IMU_COLUMNS].astype(np.float32),
@@ -165,10 +152,9 @@ class RaceCars:
         """The infos of the cars whose rows `state` holds (all, or those listed in `cars`), a dict of
         arrays: progress (m along the centre line), laps (since the reset), time (s, simulated),
         crashed."""
-        cars = np.arange(len(self.names)) if cars is None else np.asarray(cars)
-        return {'progress': np.array(self.s)[cars], 'laps': self.laps[cars],
-                'time': np.array([self.worlds[i].time for i in cars]),
-                'crashed': self.crashed(state)}
+        laps = self.gained / self.track.centerline.length
+        return {'progress': state[:, STATE['centerline_s']], 'laps': laps if cars is None else laps[cars],
+                'time': state[:, STATE['time']], 'crashed': self.crashed(state)}
 
     def crashed(self, state):
         return state[:, STATE['crashed']] > 0
