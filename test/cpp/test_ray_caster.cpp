@@ -1,7 +1,8 @@
 // ray_caster.cpp (Embree): rays hit meshes where their triangles are, with the triangle's normal and
 // its sub-mesh's colour or texture; boxes, planes, spheres and cylinders where they analytically
 // are; robots' bodies where their last pose puts them; cameras see visuals and lidars collisions; a
-// lidar fan in a room of mesh walls; camera images that do not depend on the number of threads.
+// lidar fan in a room of mesh walls; camera images that do not depend on the number of threads;
+// scenes of the same world shapes share one set of them.
 // Embree casts in single precision: distances agree within 1e-5 m.
 #include <gtest/gtest.h>
 
@@ -200,6 +201,36 @@ TEST(ShapeRays, BoxesPlanesSpheresAndCylindersAreHitWhereTheyAre)
   const double above[3] = {-3.1, 0.05, 3};
   EXPECT_NEAR(scene.cast(above, down, 10, kSeenByAll), 2 - std::sqrt(0.09 - 0.01), kFloatTolerance);
   EXPECT_EQ(scene.castHit(o, down, 1.5, 10, kSeenByAll).distance, kInf) << "nothing nearer than the near distance";
+}
+
+TEST(ShapeRays, ScenesOfTheSameWorldShareItsShapesAndKeepTheLastFewAfterTheyGo)
+{
+  // a ground of this test's own: other tests' scenes' sets may still be kept
+  const RayPrimitive ground = primitive(Shape::Kind::Plane, 0, 0, 1, poseFromXyzRpy(0, 0, -0.0123, 0, 0, 0));
+  const auto wallAt = [&](double x) { return primitive(Shape::Kind::Box, 0.2, 2, 1, poseFromXyzRpy(x, 0, 1, 0, 0, 0)); };
+  const size_t before = RayScene::staticSetsBuilt();
+  const double o[3] = {0, 0, 1}, x[3] = {1, 0, 0};
+  {
+    RayScene first({ground, wallAt(3)});
+    EXPECT_EQ(RayScene::staticSetsBuilt(), before + 2) << "the walls, and the planes on their own";
+    RayScene second({ground, wallAt(3)});
+    EXPECT_EQ(RayScene::staticSetsBuilt(), before + 2) << "the same shapes: nothing built";
+    RayScene moved({ground, wallAt(3.001)});
+    EXPECT_EQ(RayScene::staticSetsBuilt(), before + 3) << "a wall 1 mm off is another world; the ground is the same";
+    second.commit(nullptr);
+    moved.commit(nullptr);
+    EXPECT_NEAR(second.cast(o, x, 10, kSeenByAll), 2.9, kFloatTolerance);
+    EXPECT_NEAR(moved.cast(o, x, 10, kSeenByAll), 2.901, kFloatTolerance);
+  }
+  RayScene after_reset({ground, wallAt(3)});  // every scene of it gone, as at an environment's reset
+  EXPECT_EQ(RayScene::staticSetsBuilt(), before + 3) << "kept while no scene holds it";
+  for (size_t k = 0; k < RayScene::kUnheldStaticSets + 1; ++k)
+    RayScene other({wallAt(10.0 + double(k))});  // each made and gone: unheld sets
+  const size_t built = RayScene::staticSetsBuilt();
+  RayScene again({wallAt(10.0)});
+  EXPECT_EQ(RayScene::staticSetsBuilt(), built + 1) << "the oldest unheld set was let go";
+  RayScene held({ground, wallAt(3)});
+  EXPECT_EQ(RayScene::staticSetsBuilt(), built + 1) << "a set a scene holds is never let go";
 }
 
 TEST(ShapeRays, APlaneHasNoEdgesForARayToSlipThrough)

@@ -433,6 +433,66 @@ struct RayScene::ShapeSet
   ~ShapeSet() { rtcReleaseScene(scene); }
 };
 
+namespace
+{
+bool sameDoubles(const double* a, const double* b, size_t n) { return std::equal(a, a + n, b); }
+
+std::mutex static_sets_mutex;  // guards RayScene::staticSet's sets and count
+size_t static_sets_built = 0;
+
+bool sameShape(const RayPrimitive& a, const RayPrimitive& b)
+{
+  return a.kind == b.kind && sameDoubles(a.half, b.half, 3) && a.radius == b.radius &&
+         a.half_length == b.half_length && sameDoubles(a.normal, b.normal, 3) && sameDoubles(a.frame.R, b.frame.R, 9) &&
+         sameDoubles(a.frame.t, b.frame.t, 3) && a.owner == b.owner && a.seen_by == b.seen_by && a.mesh == b.mesh &&
+         a.colour.r == b.colour.r && a.colour.g == b.colour.g && a.colour.b == b.colour.b && a.colour.a == b.colour.a;
+}
+
+}  // namespace
+
+size_t RayScene::staticSetsBuilt()
+{
+  const std::lock_guard<std::mutex> lock(static_sets_mutex);
+  return static_sets_built;
+}
+
+std::shared_ptr<RayScene::ShapeSet> RayScene::staticSet(RTCDevice device, const std::vector<RayPrimitive>& shapes,
+                                                        bool robust)
+{
+  struct Built
+  {
+    RTCDevice device = nullptr;
+    bool robust = false;
+    std::shared_ptr<ShapeSet> set;
+  };
+  // Least recently asked for first. Sets no scene holds stay, the newest kUnheldStaticSets of them:
+  // an environment's reset makes its new world's scene after the old world is gone.
+  static std::vector<Built> built;
+  const std::lock_guard<std::mutex> lock(static_sets_mutex);
+  auto same = std::find_if(built.begin(), built.end(), [&](const Built& b) {
+    return b.device == device && b.robust == robust && b.set->shapes.size() == shapes.size() &&
+           std::equal(shapes.begin(), shapes.end(), b.set->shapes.begin(), sameShape);
+  });
+  Built wanted;
+  if (same != built.end())
+  {
+    wanted = *same;
+    built.erase(same);
+  }
+  else
+  {
+    wanted = Built{device, robust, std::make_shared<ShapeSet>(device, shapes, robust)};
+    ++static_sets_built;
+  }
+  built.push_back(wanted);
+  size_t unheld = 0;
+  for (auto b = built.rbegin(); b != built.rend(); ++b)
+    if (b->set.use_count() == 1 && ++unheld > kUnheldStaticSets)
+      b->set.reset();
+  built.erase(std::remove_if(built.begin(), built.end(), [](const Built& b) { return !b.set; }), built.end());
+  return wanted.set;
+}
+
 // ------------------------------------------------------------------------------------- RayScene
 
 RayScene::RayScene(const std::vector<RayPrimitive>& world_shapes)
@@ -445,10 +505,10 @@ RayScene::RayScene(const std::vector<RayPrimitive>& world_shapes)
   for (const RayPrimitive& p : world_shapes)
     (p.kind == Shape::Kind::Plane ? planes : others).push_back(p);
   instances_.emplace_back();
-  instances_[0].set = std::make_shared<ShapeSet>(device_, others);
+  instances_[0].set = staticSet(device_, others, false);
   attach(instances_[0]);
   instances_.emplace_back();
-  instances_[1].set = std::make_shared<ShapeSet>(device_, planes, true);
+  instances_[1].set = staticSet(device_, planes, true);
   attach(instances_[1]);
   rtcCommitScene(top_);
 }

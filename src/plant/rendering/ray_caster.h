@@ -114,6 +114,11 @@ public:
   // The instruction set this scene's kernels use, and why not the one asked for if it is not.
   const EmbreeIsa& isa() const { return isa_; }
 
+  // How many sets of a world's static shapes this process has built; scenes of the same shapes
+  // share one (staticSet), and the newest kUnheldStaticSets that no scene holds are kept.
+  static size_t staticSetsBuilt();
+  static constexpr size_t kUnheldStaticSets = 4;
+
 private:
   struct ShapeSet;
   struct Instance
@@ -123,6 +128,12 @@ private:
     unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
     Frame pose;
   };
+  // A world's static shapes as one set, shared by every scene of the same shapes while any holds
+  // it: the worlds of one world file (a racing environment makes one at every reset, a vector
+  // environment N side by side) build its BVH once (RTC_BUILD_QUALITY_HIGH: milliseconds on a race
+  // track) and cast their rays through the same memory. A built scene is only read, which Embree
+  // allows from any number of threads.
+  static std::shared_ptr<ShapeSet> staticSet(RTCDevice device, const std::vector<RayPrimitive>& shapes, bool robust);
   void attach(Instance& instance);
   // The primitive, triangle and world normal (facing the ray) of an Embree hit.
   void resolve(const RTCRayHit& hit, RayHit& out) const;
