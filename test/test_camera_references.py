@@ -1,12 +1,16 @@
 """The OpenGL cameras against the ray-cast frames recorded before them (test/data/camera_references/,
 recorded with the Embree camera ray caster the OpenGL cameras replaced, by its
 tools/make_camera_references.py at commit 4180808; that camera path is gone): the car's colour and depth cameras
-on the worlds this package ships and the mesh race track (textured), from the same poses, after the same 0.3 s. Away from silhouette
+on the worlds this package ships and the mesh race track (textured), from the same poses, after the same 0.3 s,
+the car put 1 ms before the frame where the plant's physics had it when the references passed
+(car_poses.json, at 0.268 s, recorded at commit 5930764 before the mesh floor's edge contacts were corrected, which
+settles the car 0.3 mm higher and 1 mrad more level on the mesh floor): the frames test the
+cameras, not where the physics puts the car. Away from silhouette
 edges (a pixel whose neighbours' reference depths lie within 5 % of its own) at least 99 % of the
 colour pixels within 3/255 (3 x 3 means: the two frames' noise is drawn by different rules) with
 the same spread of noise (on the mesh race track its walls: its floor's texture is filtered now, as
 Gazebo filters, where the references took the nearest texel), and depths within 1 mm where both see
-a surface. Each scene renders at both of llvmpipe's vector widths
+a surface (2.5 mm on the mesh race track, see below). Each scene renders at both of llvmpipe's vector widths
 (LP_NATIVE_VECTOR_WIDTH 128: SSE, 256: AVX2), in a process of its own (llvmpipe reads it once)."""
 import json
 import os
@@ -79,13 +83,16 @@ RENDER = """
 import json
 from tianracer_description import bullet_plant
 from tianracer_description.tianracer import CONFIG_YAML, tianracer_urdf
+from tianracer_description.urdf_geometry import UrdfModel
 world = bullet_plant.World.from_file(%r)
 world.echo = False
 world.load_params(CONFIG_YAML)
 car = world.spawn(tianracer_urdf(), 'tianracer', pose=%r)
 car.enable_sensor('camera')
 car.enable_sensor('depth_camera')
-world.step(300)
+world.step(268)
+car.set_link_state(UrdfModel(tianracer_urdf()).root_link(), %r)
+world.step(32)  # the frames compared are the last by 0.3 s, due at 0.269 s (30 Hz from the first step)
 said = [text for _, text in world.messages() if text.startswith('cameras:')]
 rgb, depth = car.image('camera')['rgb'], car.image('depth_camera')['depth']
 print(json.dumps({'rgb': rgb.tolist(), 'depth': [[None if d != d else float(d) for d in row] for row in depth],
@@ -93,11 +100,11 @@ print(json.dumps({'rgb': rgb.tolist(), 'depth': [[None if d != d else float(d) f
 """
 
 
-def frames_at_width(world_file, pose, width):
+def frames_at_width(world_file, pose, settled, width):
     """frames() in a process of its own with llvmpipe at `width` bits."""
     env = dict(os.environ, LP_NATIVE_VECTOR_WIDTH=width)
     env.pop('TIANRACER_GL_DEVICE', None)
-    run = subprocess.run([sys.executable, '-c', RENDER % (world_file, pose)],
+    run = subprocess.run([sys.executable, '-c', RENDER % (world_file, pose, settled)],
                          capture_output=True, text=True, env=env, timeout=120)
     assert run.returncode == 0, run.stderr
     out = json.loads(run.stdout.strip().splitlines()[-1])
@@ -111,7 +118,9 @@ def test_opengl_cameras_give_the_recorded_ray_cast_frames(world, pose, name, wid
     stem = os.path.join(OUT, '%s_%s' % (os.path.splitext(world)[0], name))
     reference_rgb = np.round(matplotlib.image.imread(stem + '_camera.png')[..., :3] * 255).astype(int)
     reference_depth = np.load(stem + '_depth_camera_depth.npy')
-    rgb, depth, said = frames_at_width(world_file(world, str(tmp_path)), pose, width)
+    with open(os.path.join(OUT, 'car_poses.json')) as f:
+        settled = json.load(f)[os.path.basename(stem)]
+    rgb, depth, said = frames_at_width(world_file(world, str(tmp_path)), pose, settled, width)
     assert said and said[0].startswith('cameras: OpenGL ES on llvmpipe') and '%s bits' % width in said[0], said
     # colour: away from the edges the colour frame's own content shows (its neighbours alike). The
     # camera's noise (1.8 levels) is drawn by another rule than the ray caster's: the frames are
@@ -142,5 +151,8 @@ def test_opengl_cameras_give_the_recorded_ray_cast_frames(world, pose, name, wid
     interior = away_from_edges(np.where(np.isnan(reference_depth), np.inf, reference_depth))
     both = interior & np.isfinite(reference_depth) & np.isfinite(depth)
     assert both.mean() > 0.25, 'the ground and walls: the rest is sky beyond the clip range'
-    assert np.nanmax(np.abs(depth[both] - reference_depth[both])) < 1e-3
+    # On the mesh race track the car put where the older physics had it is 0.3 mm into the floor: the
+    # floor's contacts tilt it by up to 1 mrad in the 1 ms before the frame (2 mm at the far walls).
+    tolerance = 2.5e-3 if world == MESH_RACE_TRACK else 1e-3
+    assert np.nanmax(np.abs(depth[both] - reference_depth[both])) < tolerance
     assert np.array_equal(np.isnan(depth[interior]), np.isnan(reference_depth[interior])), 'the same pixels see nothing'

@@ -79,3 +79,43 @@ def test_a_static_urdf_body_holds_still_when_a_car_lands_on_it(urdf_xml, control
         assert slab.base_pose()[:3] == pytest.approx([0, 0, 0.3], abs=1e-6)  # float: Bullet works in float
     else:
         assert slab.base_pose()[2] < 0.1, 'a body without <static> falls'
+
+
+def grid_floor_world(directory, squares=20, size=4.0):
+    """A world of one static OBJ floor: `squares` x `squares` squares of two triangles over
+    [-size/2, size/2]^2 at z = 0, their faces up."""
+    lines, n = [], squares
+    for i in range(n + 1):
+        for j in range(n + 1):
+            lines.append('v %f %f 0' % (-size / 2 + size * i / n, -size / 2 + size * j / n))
+    for i in range(n):
+        for j in range(n):
+            a = i * (n + 1) + j + 1
+            lines += ['f %d %d %d' % (a, a + n + 1, a + n + 2), 'f %d %d %d' % (a, a + n + 2, a + 1)]
+    (directory / 'grid_floor.obj').write_text('\n'.join(lines) + '\n')
+    world = directory / 'grid_floor.world'
+    world.write_text("""<sdf version="1.6"><world name="grid_floor"><model name="floor"><static>true</static>
+      <link name="link"><collision name="collision"><geometry><mesh><uri>grid_floor.obj</uri></mesh></geometry>
+      </collision></link></model></world></sdf>""")
+    return str(world)
+
+
+def test_wheels_roll_over_a_mesh_floors_inner_edges_as_over_a_plane(tmp_path, urdf_xml):
+    # 20 cm squares: the car crosses about fifty edges and vertices between triangles, diagonally.
+    # Bullet's contacts there point sideways or down (the margin's rounded edge); the plant turns them
+    # to the faces' normal.
+    world = bullet_plant.World.from_file(grid_floor_world(tmp_path))
+    world.echo = False
+    car = world.spawn(urdf_xml, 'tianracer', pose=(-1.2, -1.1, 0.05, 0, 0, 0.6))
+    hold_steering(car)
+    world.step(500)
+    for joint in ('left_rear_wheel_joint', 'right_rear_wheel_joint'):
+        car.set_command(joint, COMMAND)
+    heights, normals_z = [], []
+    for _ in range(250):  # 2.5 s at 1 m/s
+        world.step(10)
+        heights.append(car.base_pose()[2])
+        normals_z += [c['normal'][2] for c in world.contacts()]
+    assert np.hypot(*(np.array(car.base_pose()[:2]) - (-1.2, -1.1))) > 2.0, 'drove over the grid'
+    assert min(abs(z) for z in normals_z) > 0.999, 'every contact along the faces\' normal'
+    assert np.ptp(heights) < 1e-3, 'no bump at an edge'

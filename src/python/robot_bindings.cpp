@@ -90,6 +90,30 @@ py::class_<RobotRef> init_robot(py::module_& m)
           throw py::key_error(e.what());
         }
       }))
+      .def("set_link_state", onRobot([](Robot& r, const std::string& link, const std::vector<double>& pose,
+                                        const std::vector<double>& linear, const std::vector<double>& angular) {
+        if (pose.size() != 7 || linear.size() != 3 || angular.size() != 3)
+          throw py::value_error("set_link_state takes a pose of x y z qx qy qz qw (as link_pose gives) and linear and "
+                                "angular velocities of three numbers each");
+        urdf::Pose p;
+        p.position = urdf::Vector3(pose[0], pose[1], pose[2]);
+        p.rotation = urdf::Rotation(pose[3], pose[4], pose[5], pose[6]);
+        p.rotation.normalize();
+        Twist t;
+        std::copy(linear.begin(), linear.end(), t.linear.begin());
+        std::copy(angular.begin(), angular.end(), t.angular.begin());
+        try
+        {
+          r.setLinkState(link, p, t);
+        }
+        catch (const std::out_of_range& e)
+        {
+          throw py::key_error(e.what());
+        }
+      }), py::arg("link"), py::arg("pose"), py::arg("linear") = std::vector<double>{0, 0, 0},
+           py::arg("angular") = std::vector<double>{0, 0, 0},
+           "gazebo_ros's set_link_state: the whole robot moved rigidly so that `link` is at `pose` (x y z qx qy qz "
+           "qw, world), every body moving with (linear, angular) (of the link's origin, world frame)")
       .def_property("e_stop", onRobot([](Robot& r) { return r.eStop(); }), onRobot([](Robot& r, bool on) { r.setEStop(on); }))
       .def_property_readonly("recoveries", onRobot([](Robot& r) { return r.recoveries(); }))
       .def_property_readonly("disabled", onRobot([](Robot& r) { return r.disabled(); }), "taken out of the physics after diverging step after step")

@@ -4,6 +4,10 @@
 #include <cmath>
 #include <vector>
 
+#include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
+#include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
+#include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+#include <BulletCollision/CollisionShapes/btTriangleShape.h>
 #include <LinearMath/btConvexHullComputer.h>
 
 #include "description/resource_uri.h"
@@ -36,6 +40,8 @@ struct MeshArrays
   }
 };
 
+// With the angles between neighbouring faces (btGenerateInternalEdgeInfo) that correctInternalEdges
+// reads.
 class StaticMeshShape : private MeshArrays, public btBvhTriangleMeshShape  // margin: collision_shapes.h
 {
 public:
@@ -43,8 +49,82 @@ public:
     : MeshArrays(m), btBvhTriangleMeshShape(&triangles, true, true)
   {
     setMargin(kCollisionMargin);
+    btGenerateInternalEdgeInfo(this, &edges_);
   }
+
+private:
+  btTriangleInfoMap edges_;
 };
+
+bool holdsStaticMesh(const btCollisionShape& shape)
+{
+  if (shape.getShapeType() == TRIANGLE_MESH_SHAPE_PROXYTYPE)
+    return true;
+  if (shape.getShapeType() != COMPOUND_SHAPE_PROXYTYPE)
+    return false;
+  const auto& compound = static_cast<const btCompoundShape&>(shape);
+  for (int k = 0; k < compound.getNumChildShapes(); ++k)
+    if (holdsStaticMesh(*compound.getChildShape(k)))
+      return true;
+  return false;
+}
+
+// The static mesh a contact's triangle belongs to: the shape of the wrapper it was cut from (the
+// collision object's own shape, or a compound's child).
+const btBvhTriangleMeshShape* meshOf(const btCollisionObjectWrapper* side)
+{
+  if (side->getCollisionShape()->getShapeType() != TRIANGLE_SHAPE_PROXYTYPE || !side->m_parent ||
+      side->m_parent->getCollisionShape()->getShapeType() != TRIANGLE_MESH_SHAPE_PROXYTYPE)
+    return nullptr;
+  return static_cast<const btBvhTriangleMeshShape*>(side->m_parent->getCollisionShape());
+}
+
+// btAdjustInternalEdgeContacts on a new contact point with a static mesh's triangle, on either side
+// of the point. Bullet's function takes the mesh as the point's side B and finds it as the shape of
+// the triangle's collision object; a robot's fixed link holds its meshes in a compound, so the mesh
+// is handed over on a collision object of its own, and a mesh on side A is turned to side B and back.
+void adjustAtInternalEdge(btManifoldPoint& point, const btCollisionObjectWrapper* triangle,
+                          const btCollisionObjectWrapper* other, int part, int index, bool mesh_is_b)
+{
+  const btBvhTriangleMeshShape* mesh = meshOf(triangle);
+  if (!mesh || !mesh->getTriangleInfoMap())
+    return;
+  btCollisionObject holder;
+  holder.setCollisionShape(const_cast<btBvhTriangleMeshShape*>(mesh));
+  holder.setWorldTransform(triangle->getWorldTransform());
+  const btCollisionObjectWrapper on_mesh(triangle->m_parent, triangle->getCollisionShape(), &holder,
+                                         triangle->getWorldTransform(), part, index);
+  const auto swapSides = [](btManifoldPoint& p) {
+    std::swap(p.m_positionWorldOnA, p.m_positionWorldOnB);
+    std::swap(p.m_localPointA, p.m_localPointB);
+    p.m_normalWorldOnB = -p.m_normalWorldOnB;
+  };
+  if (!mesh_is_b)
+    swapSides(point);
+  btAdjustInternalEdgeContacts(point, &on_mesh, other, part, index);
+  // Bullet leaves a normal that points behind the face (the margin's rounded edge, reached from
+  // above where two faces meet). The faces are one-sided, as ODE's trimesh collides: such a contact
+  // pushes out of the face's front.
+  btVector3 face;
+  static_cast<const btTriangleShape*>(triangle->getCollisionShape())->calcNormal(face);
+  face = triangle->getWorldTransform().getBasis() * face;
+  if (point.m_normalWorldOnB.dot(face) < 0)
+  {
+    point.m_normalWorldOnB = face;
+    point.m_positionWorldOnB = point.m_positionWorldOnA - face * point.m_distance1;
+    point.m_localPointB = triangle->getWorldTransform().invXform(point.m_positionWorldOnB);
+  }
+  if (!mesh_is_b)
+    swapSides(point);
+}
+
+bool correctInternalEdgeContact(btManifoldPoint& point, const btCollisionObjectWrapper* a, int part_a, int index_a,
+                                const btCollisionObjectWrapper* b, int part_b, int index_b)
+{
+  adjustAtInternalEdge(point, b, a, part_b, index_b, true);
+  adjustAtInternalEdge(point, a, b, part_a, index_a, false);
+  return false;  // Bullet ignores it
+}
 
 // The convex hull of the vertices, each face moved in by the margin (Bullet adds it back outside).
 // Where it has more than kMaxHullVertices vertices it keeps its support points in that many
@@ -83,6 +163,15 @@ btConvexHullShape* makeHull(const MeshData& mesh)
   return shape;
 }
 }  // namespace
+
+void correctInternalEdges(btCollisionObject& object)
+{
+  if (!object.getCollisionShape() || !holdsStaticMesh(*object.getCollisionShape()))
+    return;
+  // Bullet calls one process-wide function for the objects flagged; it only touches mesh contacts.
+  gContactAddedCallback = correctInternalEdgeContact;
+  object.setCollisionFlags(object.getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+}
 
 btCollisionShape* makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh, Mobility mobility)
 {

@@ -40,6 +40,12 @@ btCollisionShape* makeCollisionShape(const Shape& shape);
 // alive) or as a moving body's convex hull. The caller owns it.
 btCollisionShape* makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh, Mobility mobility);
 
+// Contacts with the static meshes of `object` (its shape, or a compound's children) at an edge
+// between two faces take the faces' normals (Bullet's btInternalEdgeUtility). Without it a wheel
+// rolling over a mesh floor meets the edges between its triangles with normals pointing sideways
+// and down: bumps that are not in the floor. Nothing for an object with no static mesh.
+void correctInternalEdges(btCollisionObject& object);
+
 // A shape for Bullet and for the sensors' ray caster, at `pose` in its body (or the world).
 struct Collider
 {

@@ -506,6 +506,7 @@ void addColliders(Robot::Internals& r)
     col->setFriction(btScalar(body.mu));
     col->setRestitution(0);
     col->setWorldTransform(r.multibody.bodyWorldTransform(int(bi)));
+    correctInternalEdges(*col);
     r.world->dynamics->addCollisionObject(col, btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
     if (bi == 0)
       mb->setBaseCollider(col);

@@ -156,6 +156,7 @@ World::World(const WorldDescription& description) : in_(new Internals)
     object->setWorldTransform(toBullet(c.pose));
     object->setFriction(btScalar(c.mu));
     object->setRestitution(0);
+    correctInternalEdges(*object);
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     w.static_ray_shapes.push_back(std::move(collider.ray));
