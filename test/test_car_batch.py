@@ -99,7 +99,9 @@ def test_state_rows_say_what_the_world_and_robot_say_and_progress_sums_along_the
     pose = robot.base_pose()
     assert row[STATE['time']] == world.time == pytest.approx(0.6)
     assert (row[STATE['x']], row[STATE['y']]) == (pose[0], pose[1])
-    assert row[STATE['steer_left']] == robot.joint_state(STEERING_JOINTS[0])[0]
+    left, right = (robot.joint_state(joint)[0] for joint in STEERING_JOINTS)
+    assert (row[STATE['steer_left']], row[STATE['steer_right']], row[STATE['steering']]) == (left, right, (left + right) / 2)
+    assert row[STATE['steering']] > 0.05, 'steering left'
     assert scans.shape == (1, 1081) and scans.dtype == np.float32
     s, offset, _ = track_line.project(pose[0], pose[1])
     assert (row[STATE['centerline_s']], row[STATE['centerline_offset']]) == (s, offset)
@@ -140,3 +142,24 @@ def test_bad_calls_name_the_car_and_what_to_give(model):
         batch.step(np.zeros((0, 4)), 1, [])
     with pytest.raises(ValueError, match='steps must be at least 1'):
         batch.step(commands(model, 1), 0, [0])
+
+
+def test_helper_threads_spin_only_between_close_steps_and_never_change_results(model):
+    import time
+    traces, cpu_after = [], {}
+    for threads, gap in ((1, 0.0), (2, 0.0003), (2, 0.02)):
+        worlds = [new_world(RACE_TRACK_WORLD, model.controllers) for _ in range(3)]
+        batch = batch_of(model, worlds, threads=threads)
+        trace = []
+        for k in range(15):
+            time.sleep(gap)
+            trace.append(batch.step(commands(model, 3, steering=0.1 * math.sin(k)), 10))
+        start = time.process_time()
+        time.sleep(0.2)
+        cpu_after[(threads, gap)] = time.process_time() - start
+        del batch  # returns while helpers may be spinning
+        traces.append(trace)
+    for trace in traces[1:]:  # (the centre line's columns are NaN: no line given)
+        assert all(np.array_equal(a, b, equal_nan=True) for x, y in zip(traces[0], trace) for a, b in zip(x, y))
+    # after the last step: at most kMaxLinger (1 ms) of spinning after close steps, none after far ones
+    assert cpu_after[(2, 0.0003)] < 0.02 and cpu_after[(2, 0.02)] < 0.02, cpu_after

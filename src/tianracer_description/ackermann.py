@@ -45,7 +45,8 @@ def wheel_commands(speed, steering, wheelbase, rear_track, front_track, wheel_ra
     wheelbase - d t). Straight ahead (t = 0) is the same formula, with no special case."""
     wheel_rate = np.divide(speed, wheel_radius)
     t = np.tan(np.minimum(np.maximum(steering, -max_steering), max_steering))  # np.clip's overhead is 5 us
-    return WheelCommands(rear_left=wheel_rate * (1.0 - rear_track / 2.0 * t / wheelbase),
-                         rear_right=wheel_rate * (1.0 + rear_track / 2.0 * t / wheelbase),
-                         steer_left=np.arctan2(wheelbase * t, wheelbase - front_track / 2.0 * t),
-                         steer_right=np.arctan2(wheelbase * t, wheelbase + front_track / 2.0 * t))
+    rear_share = rear_track / (2.0 * wheelbase) * t  # d t / wheelbase of the rear wheels (d = track / 2)
+    front_reach, ahead = front_track / 2.0 * t, wheelbase * t
+    return WheelCommands(rear_left=wheel_rate * (1.0 - rear_share), rear_right=wheel_rate * (1.0 + rear_share),
+                         steer_left=np.arctan2(ahead, wheelbase - front_reach),
+                         steer_right=np.arctan2(ahead, wheelbase + front_reach))

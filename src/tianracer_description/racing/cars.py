@@ -17,7 +17,8 @@ from tianracer_description.racing.car import CarModel, new_world
 from tianracer_description.racing.track import Centerline, centerline_file
 
 STATE = {name: k for k, name in enumerate(bullet_plant.CarBatch.STATE)}
-IMU_COLUMNS = slice(STATE['angular_velocity_x'], STATE['linear_acceleration_z'] + 1)
+# The state's columns an observation holds, in this order: speed, steering, the IMU's six.
+OBSERVED = [STATE['speed']] + list(range(STATE['steering'], STATE['linear_acceleration_z'] + 1))
 def draw_noise_seed(rng):
     """A seed for a new world's sensor noise, drawn from an environment's generator (never 0, the
     plant's unseeded default)."""
@@ -138,12 +139,8 @@ class RaceCars:
 
     def observations(self, scans, state):
         """The cars' observations, a dict of arrays with a row per car."""
-        observations = {
-            'scan': scans,
-            'speed': state[:, STATE['speed']:STATE['speed'] + 1].astype(np.float32),
-            'steering': ((state[:, STATE['steer_left']] + state[:, STATE['steer_right']]) / 2)[:, None].astype(np.float32),
-            'imu': state[:, IMU_COLUMNS].astype(np.float32),
-        }
+        observed = state[:, OBSERVED].astype(np.float32)
+        observations = {'scan': scans, 'speed': observed[:, 0:1], 'steering': observed[:, 1:2], 'imu': observed[:, 2:]}
         if self.observe_pose:
             observations['pose'] = state[:, [STATE['x'], STATE['y'], STATE['yaw']]].astype(np.float32)
         return observations
