@@ -192,6 +192,22 @@ TEST(MakeCollider, AStaticMeshIsItsExactTrianglesWithTheHalfMillimetreMargin)
   EXPECT_EQ(c.ray.kind, Shape::Kind::Mesh);
 }
 
+TEST(MakeCollider, BodiesOfTheSameStaticMeshShareItsShapeWithItsEdgeAngles)
+{
+  const std::string dir = mesh_fixtures::tempDir();
+  const float lo[3] = {-1, -1, -0.1f}, hi[3] = {1, 1, 0};
+  const Shape slab = meshShape(mesh_fixtures::binaryBoxStl(dir, "slab.stl", lo, hi));
+  const Collider first = makeCollider(slab, Mobility::Static, urdf::Pose(), nullptr);
+  const Collider second = makeCollider(slab, Mobility::Static, poseFromXyzRpy(3, 0, 0, 0, 0, 0), nullptr);
+  ASSERT_TRUE(first.shape && second.shape);
+  EXPECT_EQ(first.shape, second.shape) << "one BVH for both (each body has its own pose)";
+  EXPECT_NE(static_cast<btBvhTriangleMeshShape*>(first.shape.get())->getTriangleInfoMap(), nullptr)
+      << "the angles between its faces, for correctInternalEdges";
+  const Collider moving = makeCollider(slab, Mobility::Moving, urdf::Pose(), nullptr);
+  const Collider moving_too = makeCollider(slab, Mobility::Moving, urdf::Pose(), nullptr);
+  EXPECT_NE(moving.shape, moving_too.shape) << "hulls are each body's own";
+}
+
 TEST(MakeCollider, AMovingMeshIsItsConvexHullOfAtMostTheVertexBound)
 {
   const std::string dir = mesh_fixtures::tempDir();

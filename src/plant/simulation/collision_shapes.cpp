@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <vector>
 
 #include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
@@ -173,11 +175,23 @@ void correctInternalEdges(btCollisionObject& object)
   object.setCollisionFlags(object.getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
 }
 
-btCollisionShape* makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh, Mobility mobility)
+std::shared_ptr<btCollisionShape> makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh,
+                                                         Mobility mobility)
 {
-  if (mobility == Mobility::Static)
-    return new StaticMeshShape(mesh);
-  return makeHull(*mesh);
+  if (mobility == Mobility::Moving)
+    return std::shared_ptr<btCollisionShape>(makeHull(*mesh));
+  static std::mutex mutex;
+  static std::map<const MeshData*, std::weak_ptr<btCollisionShape>> shared;
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (auto held = shared.begin(); held != shared.end();)
+    held = held->second.expired() ? shared.erase(held) : std::next(held);
+  std::shared_ptr<btCollisionShape> shape = shared[mesh.get()].lock();
+  if (!shape)
+  {
+    shape = std::make_shared<StaticMeshShape>(mesh);  // keeps `mesh`, so its address names it while shared
+    shared[mesh.get()] = shape;
+  }
+  return shape;
 }
 
 Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& pose, const void* owner)
@@ -192,7 +206,7 @@ Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& p
   std::shared_ptr<const MeshData> mesh = loadMesh(shape.mesh_file, shape.scale, c.reason);
   if (!mesh)
     return c;
-  c.shape.reset(makeMeshCollisionShape(mesh, mobility));
+  c.shape = makeMeshCollisionShape(mesh, mobility);
   c.ray = RayPrimitive::fromMesh(mesh, pose, owner);
   c.mesh = mesh;
   if (mobility == Mobility::Moving)

@@ -37,8 +37,13 @@ enum class Mobility { Static, Moving };
 btCollisionShape* makeCollisionShape(const Shape& shape);
 
 // A mesh as a static triangle mesh (Bullet's BVH over the loaded triangles, which the shape keeps
-// alive) or as a moving body's convex hull. The caller owns it.
-btCollisionShape* makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh, Mobility mobility);
+// alive, with the angles between its faces for correctInternalEdges) or as a moving body's convex
+// hull. A static mesh's shape is shared by every body of that mesh while any holds it: the worlds of
+// one world file (a racing environment makes one at every reset, a vector environment N side by
+// side) build its BVH and edge angles once (2 ms for the mesh race track's walls and floor) and
+// collide through the same memory; Bullet only reads a triangle mesh's shape while it collides.
+std::shared_ptr<btCollisionShape> makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh,
+                                                         Mobility mobility);
 
 // Contacts with the static meshes of `object` (its shape, or a compound's children) at an edge
 // between two faces take the faces' normals (Bullet's btInternalEdgeUtility). Without it a wheel
@@ -49,7 +54,7 @@ void correctInternalEdges(btCollisionObject& object);
 // A shape for Bullet and for the sensors' ray caster, at `pose` in its body (or the world).
 struct Collider
 {
-  std::unique_ptr<btCollisionShape> shape;  // null where a mesh cannot be loaded: see reason
+  std::shared_ptr<btCollisionShape> shape;  // null where a mesh cannot be loaded: see reason
   RayPrimitive ray;
   std::shared_ptr<const MeshData> mesh;      // a mesh's triangles
   std::string reason;  // why the mesh could not be loaded ("cannot be read (...)", "has no triangles")

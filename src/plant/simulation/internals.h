@@ -163,7 +163,7 @@ struct World::Internals
   std::unique_ptr<btBroadphaseInterface> broadphase;
   std::unique_ptr<btMultiBodyConstraintSolver> solver;
   std::unique_ptr<btMultiBodyDynamicsWorld> dynamics;
-  std::vector<std::unique_ptr<btCollisionShape>> static_shapes;
+  std::vector<std::shared_ptr<btCollisionShape>> static_shapes;  // a static mesh's may be shared (collision_shapes.h)
   std::vector<std::unique_ptr<btCollisionObject>> static_objects;
   std::vector<std::string> static_names;  // of static_objects, model::link::collision
   std::vector<RayPrimitive> static_ray_shapes;

@@ -41,7 +41,7 @@ struct Body
   // member links' shapes, or (compound null) the only shape where it sits in the COM frame as it is.
   btCollisionShape* shape = nullptr;
   std::unique_ptr<btCompoundShape> compound;
-  std::vector<std::unique_ptr<btCollisionShape>> child_shapes;
+  std::vector<std::shared_ptr<btCollisionShape>> child_shapes;  // a static mesh's may be shared (collision_shapes.h)
   // The SDF names of the collisions, in the compound's child order (sdfCollisionNames): what
   // contact sensors and contact messages call them.
   std::vector<std::string> collision_names;
