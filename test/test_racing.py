@@ -104,8 +104,10 @@ def test_the_reward_is_the_distance_gained_along_the_centre_line_and_a_wall_ends
     assert x > 3.0 and y < 0.5, 'in the east bend, against its outer wall: %s' % observation['pose']
 
 
-def test_follow_the_gap_drives_laps_of_the_race_track_without_touching_a_wall():
-    env = gymnasium.make(ENV_ID)
+@pytest.mark.parametrize('env_id', [ENV_ID, 'Tianracer-RaceCircuit-v0'])
+def test_follow_the_gap_drives_laps_of_our_tracks_without_touching_a_wall(env_id):
+    env = gymnasium.make(env_id)
+    lap = env.unwrapped.track.centerline.length
     policy = FollowTheGap.for_env(env)
     observation, _ = env.reset(seed=0)
     returns = 0.0
@@ -115,7 +117,23 @@ def test_follow_the_gap_drives_laps_of_the_race_track_without_touching_a_wall():
         if terminated or truncated:
             break
     assert truncated and not terminated, 'the time limit, not a wall: %s' % info
-    assert info['laps'] > 1.0 and returns == pytest.approx(info['laps'] * 21.4243, rel=1e-3)
+    assert info['laps'] > 1.0 and returns == pytest.approx(info['laps'] * lap, rel=1e-3)
+
+
+def test_the_circuits_centre_line_runs_down_the_middle_of_its_lane():
+    # tools/make_race_circuit.py builds the walls from the centre line: 0.6 m to either side, in boxes
+    # 5 cm thick, so their faces are 0.575 m away (a little more or less in a bend, where the boxes
+    # are chords of the curve)
+    from tianracer_description import bullet_plant
+    from tianracer_description.tianracer import RACE_CIRCUIT_WORLD
+    world = bullet_plant.World.from_file(RACE_CIRCUIT_WORLD)
+    line = Centerline.from_file(centerline_file(RACE_CIRCUIT_WORLD))
+    assert line.length == pytest.approx(32.1, abs=0.05)
+    for s in np.arange(0.0, line.length, 0.5):
+        x, y, yaw = line.pose_at(s)
+        left = (-math.sin(yaw), math.cos(yaw), 0.0)
+        distances = [world.cast_ray((x, y, 0.1), (sign * left[0], sign * left[1], 0.0), 5.0) for sign in (1, -1)]
+        assert distances == pytest.approx([0.575, 0.575], abs=0.03), 'at s = %.1f m' % s
 
 
 def test_the_chase_camera_shows_the_blue_car_ahead_of_it():
