@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <thread>
 #include <optional>
 
 #include <oneapi/tbb/blocked_range.h>
@@ -79,12 +78,8 @@ public:
   static constexpr double kMaxLinger = 1e-3;  // s
 
   explicit HelperLinger(tbb::task_arena& arena) : arena_(arena) { arena_.initialize(); }
-  ~HelperLinger()
-  {
-    state_->stepping = true;
-    while (state_->spinning.load() > 0)
-      std::this_thread::yield();
-  }
+  // The spinning tasks hold only the state they share with it, and stop.
+  ~HelperLinger() { state_->stepping = true; }
   HelperLinger(const HelperLinger&) = delete;
   HelperLinger& operator=(const HelperLinger&) = delete;
 
@@ -112,21 +107,16 @@ public:
     const auto until = last_end_ + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                        std::chrono::duration<double>(std::min(2 * gap_, kMaxLinger)));
     for (int k = 0; k < helpers; ++k)
-    {
-      ++state_->spinning;
       arena_.enqueue([state = state_, until] {
         while (!state->stepping.load(std::memory_order_relaxed) && std::chrono::steady_clock::now() < until)
           spinPause();
-        --state->spinning;
       });
-    }
   }
 
 private:
   struct State  // shared with the spinning tasks
   {
     std::atomic<bool> stepping{true};
-    std::atomic<int> spinning{0};
   };
   tbb::task_arena& arena_;
   std::shared_ptr<State> state_ = std::make_shared<State>();
