@@ -11,6 +11,10 @@ as one OBJ, a textured OBJ floor; the same centre line), driven by follow the ga
   wall second (all cars), and the two threads' gain over one. What a vector step costs besides its
   worlds (the Python around CarBatch, about 65 us; a helper thread's start) is the same for any
   number of cars, so more cars gain more from the second thread.
+- the machine's own: two processes each running the single env at once, their env steps per wall
+  second together over one process's alone (the same code side by side, nothing shared): what the
+  two cores give at that moment, the ceiling of the vector env's x2/x1. On this shared VM it moves
+  between rounds, and the vector env's gain with it.
 Only the environment's own calls are timed (the policy's are not); episodes that end are reset, and
 the resets are timed. Medians of ROUNDS rounds, and the real time factor env steps make (x 0.01 s).
 Targets (issue 27): 4,000 env steps per second per core for the single env; the vector env on 2 cores
@@ -20,6 +24,7 @@ no hardware or method given): printed beside ours, for what a comparison without
 """
 import os
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -74,6 +79,31 @@ def single(world_file, centerline):
     return ENV_STEPS / cpu, ENV_STEPS / wall
 
 
+def two_processes(world_file, centerline):
+    """Env steps per wall second of two processes each running single() at once (their sum)."""
+    children = [subprocess.Popen([sys.executable, os.path.abspath(__file__), '--single', world_file, centerline],
+                                 stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True) for _ in range(2)]
+    for child in children:  # each has built its env: start both timed loops together
+        if child.stdout.readline().strip() != 'ready':
+            raise RuntimeError('a --single child of %s did not start' % __file__)
+    for child in children:
+        child.stdin.write('go\n')
+        child.stdin.flush()
+    rates = [float(child.communicate()[0].split()[-1]) for child in children]
+    if any(child.returncode for child in children):
+        raise RuntimeError('a --single child of %s failed' % __file__)
+    return sum(rates)
+
+
+def single_child(world_file, centerline):
+    """two_processes' side: single() once the parent says go (its env's calls timed, as single() times
+    them); prints their env steps per wall second."""
+    RaceEnv(world_file, centerline=centerline)  # the files read and the xacro run: the first env's cost
+    print('ready', flush=True)
+    sys.stdin.readline()
+    print(single(world_file, centerline)[1], flush=True)
+
+
 def vector(world_file, centerline, cars, threads):
     """RaceVectorEnv's env steps (all cars) per wall second on `threads` threads (its calls only)."""
     envs = RaceVectorEnv(cars, world_file, centerline=centerline, threads=threads, max_episode_steps=2000)
@@ -97,7 +127,7 @@ def main():
     tracks = {'race track (boxes)': RACE_TRACK_WORLD, 'mesh race track': mesh_world}
     print('CPU: %s, %d cores; %d rounds, medians; the 1081-ray lidar at 40 Hz, 10 ms control'
           % (cpu_name(), os.cpu_count(), ROUNDS), flush=True)
-    results = {name: {'physics': [], 'single_cpu': [], 'single_wall': [],
+    results = {name: {'physics': [], 'single_cpu': [], 'single_wall': [], 'two_processes': [],
                       **{(cars, threads): [] for cars in VECTOR_ENVS for threads in (1, 2)}}
                for name in tracks}
     for round_ in range(ROUNDS):
@@ -107,6 +137,7 @@ def main():
             cpu, wall = single(world_file, centerline)
             r['single_cpu'].append(cpu)
             r['single_wall'].append(wall)
+            r['two_processes'].append(two_processes(world_file, centerline))
             for cars in VECTOR_ENVS:
                 for threads in (1, 2):
                     r[(cars, threads)].append(vector(world_file, centerline, cars, threads))
@@ -114,21 +145,27 @@ def main():
     print()
     vector_titles = ['%d cars x%d' % (cars, threads) for cars in VECTOR_ENVS for threads in (1, 2)]
     print('%-20s %14s %13s %14s' % ('', 'physics/CPU-s', 'single/CPU-s', 'single/wall-s')
-          + ''.join(' %12s' % t for t in vector_titles) + ''.join(' %9s' % ('%d: x2/x1' % c) for c in VECTOR_ENVS))
+          + ''.join(' %12s' % t for t in vector_titles) + ''.join(' %9s' % ('%d: x2/x1' % c) for c in VECTOR_ENVS)
+          + ' %9s' % 'machine')
     for name, r in results.items():
         m = {k: statistics.median(v) for k, v in r.items()}
         gains = [statistics.median(b / a for a, b in zip(r[(cars, 1)], r[(cars, 2)])) for cars in VECTOR_ENVS]
+        machine = statistics.median(two / one for one, two in zip(r['single_wall'], r['two_processes']))
         print('%-20s %14.0f %13.0f %14.0f' % (name, m['physics'], m['single_cpu'], m['single_wall'])
               + ''.join(' %12.0f' % m[(cars, threads)] for cars in VECTOR_ENVS for threads in (1, 2))
-              + ''.join(' %9.2f' % g for g in gains))
+              + ''.join(' %9.2f' % g for g in gains) + ' %9.2f' % machine)
     print()
     for name, r in results.items():
         single_rtf = statistics.median(r['single_cpu']) * CONTROL_PERIOD
         vector_rtf = max(statistics.median(r[(cars, 2)]) for cars in VECTOR_ENVS) * CONTROL_PERIOD
         print('%s: one core %.0fx real time (single env), two cores %.0fx (vector env); f1tenth_gym '
               'publishes "up to %.0fx" (2-D, no hardware given)' % (name, single_rtf, vector_rtf, F1TENTH_PUBLISHED))
+    print('machine: two processes of the single env at once over one (the two cores\' own gain, this run)')
     print('targets: single env >= 4000 env steps per CPU second; vector env on 2 threads >= 1.8x one')
 
 
 if __name__ == '__main__':
-    main()
+    if sys.argv[1:2] == ['--single']:
+        single_child(*sys.argv[2:4])
+    else:
+        main()

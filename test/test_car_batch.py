@@ -108,6 +108,7 @@ def test_state_rows_say_what_the_world_and_robot_say_and_progress_sums_along_the
     # the start is a hair behind the start line (s near the lap's length): progress wraps
     assert gained == pytest.approx(track_line.progress(track_line.project(start[0], start[1])[0], s), abs=1e-12)
     assert gained > 0.3, 'the car drove forwards along the line (0.6 s at up to 1 m/s)'
+    assert row[STATE['centerline_travelled']] == pytest.approx(gained, abs=1e-12), 'the gains since set, summed'
 
 
 def test_listed_cars_step_alone_and_no_return_reads_as_range_max(model):

@@ -34,19 +34,29 @@ def ideal_steering(linear_x, angular_z, mode, wheelbase):
     raise ValueError("angular mode '%s' is neither '%s' nor '%s'" % (mode, STEERING_ANGLE, YAW_RATE))
 
 
+# Each wheel's side: +1 the left wheel (d = +track / 2 from the middle), -1 the right.
+SIDES = np.array([1.0, -1.0])
+
+
 def wheel_commands(speed, steering, wheelbase, rear_track, front_track, wheel_radius, max_steering):
     """Rear wheel speeds (rad/s) and steering angles (rad) for a ground speed (m/s) and an ideal
-    steering angle (rad), clamped so that the inside wheel stays within its limit. speed and steering
-    may be numbers or numpy arrays (one command per element: the racing environments' cars).
+    steering angle (rad), clamped so that the inside wheel stays within its limit: wheel_command_rows'
+    columns as the four fields (numbers for numbers, arrays for arrays)."""
+    return WheelCommands(*np.moveaxis(wheel_command_rows(speed, steering, wheelbase, rear_track, front_track,
+                                                         wheel_radius, max_steering), -1, 0))
+
+
+def wheel_command_rows(speed, steering, wheelbase, rear_track, front_track, wheel_radius, max_steering):
+    """The four commands as the last axis of one array, in WheelCommands' order, for each element of
+    speed and steering (numbers: one row of four; the racing environments' cars: a row each).
 
     With t = tan(steering) the turn's curvature is t / wheelbase, and a wheel d to the left of the
     middle runs on a circle (1 - d t / wheelbase) times the middle's: each rear wheel turns that much
     faster or slower, and each front wheel points at the turn's centre, atan2(wheelbase t,
     wheelbase - d t). Straight ahead (t = 0) is the same formula, with no special case."""
-    wheel_rate = np.divide(speed, wheel_radius)
-    t = np.tan(np.minimum(np.maximum(steering, -max_steering), max_steering))  # np.clip's overhead is 5 us
-    rear_share = rear_track / (2.0 * wheelbase) * t  # d t / wheelbase of the rear wheels (d = track / 2)
-    front_reach, ahead = front_track / 2.0 * t, wheelbase * t
-    return WheelCommands(rear_left=wheel_rate * (1.0 - rear_share), rear_right=wheel_rate * (1.0 + rear_share),
-                         steer_left=np.arctan2(ahead, wheelbase - front_reach),
-                         steer_right=np.arctan2(ahead, wheelbase + front_reach))
+    wheel_rate = np.divide(speed, wheel_radius)[..., None]
+    t = np.tan(np.minimum(np.maximum(steering, -max_steering), max_steering))[..., None]  # np.clip: +5 us
+    side_t = SIDES * t  # d t / (track / 2), left and right
+    rear = wheel_rate * (1.0 - rear_track / (2.0 * wheelbase) * side_t)
+    steer = np.arctan2(wheelbase * t, wheelbase - front_track / 2.0 * side_t)
+    return np.concatenate([rear, steer], axis=-1)

@@ -13,7 +13,7 @@ import numpy as np
 import yaml
 
 from tianracer_description import bullet_plant
-from tianracer_description.ackermann import max_ideal_steering, wheel_commands
+from tianracer_description.ackermann import max_ideal_steering, wheel_command_rows
 from tianracer_description.tianracer import (CONFIG_YAML, MODEL_XACRO, REAR_WHEEL_CONTROLLERS, STEERING_CONTROLLERS,
                                              STEERING_JOINTS, TUTORIAL_CONTROLLERS, run_xacro)
 from tianracer_description.urdf_geometry import UrdfModel, ackermann_geometry
@@ -79,23 +79,19 @@ class CarModel:
         if not (math.isfinite(max_speed) and max_speed > 0):
             raise ValueError('max_speed is a speed in m/s above 0; got %r' % (max_speed,))
         self.max_speed = float(max_speed)
+        self._largest = np.array([self.max_steering, self.max_speed])  # what an action of 1 asks for
         self.lidar, self.imu = lidar, imu
 
     def commands(self, actions):
         """Actions (a row of steering, speed per car, each in [-1, 1] of the car's largest) as the four
         controllers' commands, a row per car in COMMAND_CONTROLLERS' order: the converter's
-        wheel_commands."""
-        actions = np.minimum(np.maximum(np.asarray(actions, np.float64).reshape(-1, 2), -1.0), 1.0)
+        wheel_commands (as rows)."""
+        # wheel_command_rows holds the steering within [-max_steering, max_steering]; the speed is held here
+        scaled = np.asarray(actions, np.float64).reshape(-1, 2) * self._largest
+        speed = np.minimum(np.maximum(scaled[:, 1], -self.max_speed), self.max_speed)
         g = self.geometry
-        if len(actions) == 1:  # one car: as numbers, a third of the time numpy takes on one-element arrays
-            steering, speed = actions[0].tolist()
-        else:
-            steering, speed = actions[:, 0], actions[:, 1]
-        c = wheel_commands(speed * self.max_speed, steering * self.max_steering, g.wheelbase, g.rear_track,
-                           g.front_track, g.wheel_radius, self.max_steering)
-        commands = np.empty((len(actions), 4))
-        commands[:, 0], commands[:, 1], commands[:, 2], commands[:, 3] = c
-        return commands
+        return wheel_command_rows(speed, scaled[:, 0], g.wheelbase, g.rear_track, g.front_track, g.wheel_radius,
+                                  self.max_steering)
 
     def spawn(self, world, name, pose, chase_camera=False):
         """The car in `world` at pose (x, y, yaw) with its controllers running (the spawner's)."""

@@ -107,7 +107,6 @@ class RaceCars:
         self.batch = bullet_plant.CarBatch(len(self.names), threads)
         count = len(self.names)
         self.worlds, self.robots = [None] * count, [None] * count
-        self.gained = np.zeros(count)  # metres along the centre line since each car's reset
         self._still = self.model.commands(np.zeros((count, 2)))
 
     def place(self, i, pose, world=None, noise_seed=0):
@@ -117,7 +116,6 @@ class RaceCars:
         world = world or new_world(self.track.world_file, self.model.controllers, noise_seed)
         self.worlds[i], self.robots[i] = world, self.model.spawn(world, self.names[i], pose, self.chase_camera)
         self.model.bind(self.batch, i, world, self.robots[i], self.track.centerline)
-        self.gained[i] = 0.0
 
     def settle(self, i=None):
         """(scans, state) after one physics step with the cars held still (their first scan, their
@@ -133,9 +131,7 @@ class RaceCars:
         if still is not None:
             commands[still] = self._still[still]
         scans, state = self.batch.step(commands, steps)
-        rewards = state[:, STATE['centerline_gained']]
-        self.gained += rewards
-        return scans, state, rewards
+        return scans, state, state[:, STATE['centerline_gained']]
 
     def observations(self, scans, state):
         """The cars' observations, a dict of arrays with a row per car."""
@@ -145,12 +141,11 @@ class RaceCars:
             observations['pose'] = state[:, [STATE['x'], STATE['y'], STATE['yaw']]].astype(np.float32)
         return observations
 
-    def infos(self, state, cars=None):
-        """The infos of the cars whose rows `state` holds (all, or those listed in `cars`), a dict of
-        arrays: progress (m along the centre line), laps (since the reset), time (s, simulated),
-        crashed."""
-        laps = self.gained / self.track.centerline.length
-        return {'progress': state[:, STATE['centerline_s']], 'laps': laps if cars is None else laps[cars],
+    def infos(self, state):
+        """The infos of the cars whose rows `state` holds, a dict of arrays: progress (m along the centre
+        line), laps (since the car was placed), time (s, simulated), crashed."""
+        return {'progress': state[:, STATE['centerline_s']],
+                'laps': state[:, STATE['centerline_travelled']] / self.track.centerline.length,
                 'time': state[:, STATE['time']], 'crashed': self.crashed(state)}
 
     def crashed(self, state):

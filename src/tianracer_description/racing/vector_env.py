@@ -36,6 +36,8 @@ class RaceVectorEnv(VectorEnv):
         self._cars = RaceCars(self.track, self.model, self.lidar, ['car'] * num_envs, observe_pose, threads)
         self._rngs = [seeding.np_random()[0] for _ in range(num_envs)]
         self._elapsed = np.zeros(num_envs, np.int64)
+        self._everyone = np.ones(num_envs, bool)  # the infos' masks: every car has every key
+        self._everyone.flags.writeable = False
         self._steps = None
 
     def reset(self, *, seed=None, options=None):
@@ -54,8 +56,7 @@ class RaceVectorEnv(VectorEnv):
 
     def _with_masks(self, infos):
         """Gymnasium's vector infos: each key's array, and "_key", which cars it is for (all of them)."""
-        everyone = np.ones(self.num_envs, bool)
-        return {**infos, **{'_' + key: everyone for key in infos}}
+        return {**infos, **{'_' + key: self._everyone for key in infos}}
 
     def step(self, actions):
         if self._steps is None:
@@ -69,7 +70,8 @@ class RaceVectorEnv(VectorEnv):
         observations = self._cars.observations(scans, state)
         car_infos = self._cars.infos(state)
         infos = self._with_masks(car_infos)
-        for i in np.flatnonzero(terminated | truncated):
+        ended = terminated | truncated
+        for i in (np.flatnonzero(ended) if ended.any() else ()):
             infos = self._add_info(infos, {'final_obs': row(observations, i), 'final_info': row(car_infos, i)}, i)
             observations = {key: value.copy() for key, value in observations.items()}  # final_obs keeps its own
             self._cars.place(i, self.track.start_pose(self._rngs[i]), noise_seed=draw_noise_seed(self._rngs[i]))
@@ -77,7 +79,7 @@ class RaceVectorEnv(VectorEnv):
             first_scans, first_state = self._cars.settle(i)  # its world alone; the others wait for the next step
             for key, value in self._cars.observations(first_scans, first_state).items():
                 observations[key][i] = value[0]
-            for key, value in self._cars.infos(first_state, [i]).items():
+            for key, value in self._cars.infos(first_state).items():
                 infos[key][i] = value[0]
         return observations, rewards, terminated, truncated, infos
 
