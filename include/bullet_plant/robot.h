@@ -73,6 +73,10 @@ public:
   // their positions, at rest relative to each other. A plant multibody cannot pull one link away
   // from its joints, as Gazebo's set_link_state does.
   void setLinkState(const std::string& link, const urdf::Pose& pose, const Twist& twist);
+  // The normals (world frame, pointing into this robot) of its touching contacts with anything
+  // else, the world's shapes or another robot, at the end of the last step: what a check for a
+  // collision needs (bullet_plant.CarBatch's "crashed"), without World::contacts' names.
+  std::vector<urdf::Vector3> contactNormals() const;
   // set_model_configuration (spawn_model -J): joint positions, held to the URDF limits with a
   // warning, the joints at rest. reset_simulation goes back to the spawn positions.
   void setJointPositions(const std::map<std::string, double>& positions);

@@ -50,7 +50,6 @@ struct CarSlot
   Lidar* lidar = nullptr;
   Imu* imu = nullptr;
   std::vector<std::string> steering_joints;
-  std::string contact_prefix;  // "name::": the robot's collisions in World::contacts
   std::shared_ptr<const Centerline> centerline;  // may be null
   std::ptrdiff_t segment = -1;  // of the centre line, the car's nearest when last read
   double s = 0;                 // and its arc length there
@@ -173,7 +172,6 @@ public:
       if (!robot.jointState(joint, p, v, e))
         throw py::key_error("robot '" + robot.name() + "' has no movable joint '" + joint + "'");
     slot.steering_joints = steering_joints;
-    slot.contact_prefix = robot.name() + "::";
     slot.centerline = std::move(centerline);
     if (slot.centerline)  // the whole line searched once; then near the last nearest segment
     {
@@ -295,13 +293,8 @@ private:
       state[k++] = vector ? vector->z : 0.0;
     }
     bool crashed = false;
-    for (const Contact& contact : car.world->contacts())
-    {
-      const bool ours = contact.collision1.compare(0, car.contact_prefix.size(), car.contact_prefix) == 0;
-      const bool theirs = contact.collision2.compare(0, car.contact_prefix.size(), car.contact_prefix) == 0;
-      if (ours != theirs && std::abs(contact.normal.z) < kGroundNormalZ)
-        crashed = true;
-    }
+    for (const urdf::Vector3& normal : robot.contactNormals())
+      crashed = crashed || std::abs(normal.z) < kGroundNormalZ;
     state[k++] = crashed ? 1.0 : 0.0;
     state[k++] = car.world->time();
     if (car.centerline)

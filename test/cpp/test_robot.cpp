@@ -2,9 +2,10 @@
 // error is said once per simulated second with a count, and after kRecoveriesBeforeDisabling
 // recoveries within a second the robot leaves the physics with one error while the world runs on.
 // No URDF the plant accepts diverges any more, so the divergence is injected: a NaN base velocity
-// before each step.
+// before each step. And Robot::contactNormals, the robot's contacts with anything else.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -78,4 +79,26 @@ TEST(RobotRecovery, RecoveriesFarApartAreEachSaidAndNeverDisable)
   EXPECT_EQ(robot.recoveries(), 3);
   EXPECT_FALSE(robot.disabled());
   EXPECT_TRUE(finite(robot.basePose()));
+}
+
+// Robot::contactNormals: its contacts with the ground and with another robot, each normal pointing
+// into the robot asked, none for a robot touching nothing.
+TEST(RobotContacts, NormalsPointIntoTheRobotFromTheGroundAndFromAnotherRobot)
+{
+  World world;
+  Robot& left = world.spawn(kBox, "left", poseFromXyzRpy(0, 0, 0.1, 0, 0, 0));
+  Robot& right = world.spawn(kBox, "right", poseFromXyzRpy(0.199, 0, 0.1, 0, 0, 0));  // 1 mm into left
+  Robot& aloft = world.spawn(kBox, "aloft", poseFromXyzRpy(5, 0, 3, 0, 0, 0));
+  world.step(1);
+  const auto count = [](const std::vector<urdf::Vector3>& normals, double x, double z) {
+    return std::count_if(normals.begin(), normals.end(), [&](const urdf::Vector3& n) {
+      return std::abs(n.x - x) < 1e-3 && std::abs(n.y) < 1e-3 && std::abs(n.z - z) < 1e-3;
+    });
+  };
+  const std::vector<urdf::Vector3> on_left = left.contactNormals(), on_right = right.contactNormals();
+  EXPECT_GT(count(on_left, 0, 1), 0) << "the ground pushes up";
+  EXPECT_GT(count(on_left, -1, 0), 0) << "right pushes left towards -x";
+  EXPECT_GT(count(on_right, 1, 0), 0) << "and left pushes right towards +x";
+  EXPECT_EQ(count(on_left, 0, 1) + count(on_left, -1, 0), long(on_left.size())) << "nothing else";
+  EXPECT_TRUE(aloft.contactNormals().empty());
 }

@@ -696,6 +696,34 @@ LinkMotion Robot::linkMotion(const std::string& link, const urdf::Pose& offset) 
   return in_->linkMotion(link, offset);
 }
 
+std::vector<urdf::Vector3> Robot::contactNormals() const
+{
+  std::vector<urdf::Vector3> normals;
+  const btMultiBody* ours = in_->multibody.bullet.get();
+  const auto isOurs = [ours](const btCollisionObject* object) {
+    const auto* collider = btMultiBodyLinkCollider::upcast(object);
+    return collider && collider->m_multiBody == ours;
+  };
+  btDispatcher& dispatcher = *in_->world->dispatcher;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
+  {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    const bool ours_is_a = isOurs(manifold.getBody0()), ours_is_b = isOurs(manifold.getBody1());
+    if (ours_is_a == ours_is_b)
+      continue;  // not ours, or between two of our links
+    // Bullet's normal points from B into A.
+    const btScalar sign = ours_is_a ? 1 : -1;
+    for (int p = 0; p < manifold.getNumContacts(); ++p)
+    {
+      const btManifoldPoint& point = manifold.getContactPoint(p);
+      if (point.getDistance() > 0 && point.getAppliedImpulse() == 0)
+        continue;  // kept by the manifold, not touching
+      normals.push_back(fromBullet(sign * point.m_normalWorldOnB));
+    }
+  }
+  return normals;
+}
+
 void Robot::setLinkState(const std::string& link, const urdf::Pose& pose, const Twist& twist)
 {
   RobotMultibody& multibody = in_->multibody;
