@@ -204,6 +204,10 @@ inline btVector3 impulseOnA(const btManifoldPoint& point)
          point.m_appliedImpulseLateral2 * point.m_lateralFrictionDir2;
 }
 
+// Whether a manifold's point touched in the last step: the manifold also keeps points a little
+// apart (up to Bullet's breaking threshold), which only count when the solver pushed on them.
+inline bool touching(const btManifoldPoint& point) { return point.getDistance() <= 0 || point.getAppliedImpulse() != 0; }
+
 // A robot's side of the plant (for the library and its tests).
 inline Robot::Internals& internalsOf(Robot& robot) { return *robot.in_; }
 

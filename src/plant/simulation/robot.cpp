@@ -201,8 +201,8 @@ std::vector<ContactState> Robot::Internals::contacts(const std::string& link, co
     for (int p = 0; p < manifold.getNumContacts(); ++p)
     {
       const btManifoldPoint& point = manifold.getContactPoint(p);
-      if (point.getDistance() > 0 && point.getAppliedImpulse() == 0)
-        continue;  // kept by the manifold, not touching
+      if (!touching(point))
+        continue;
       const std::string& mine = body.collisionName(ours_is_a ? point.m_index0 : point.m_index1);
       if (std::find(collisions.begin(), collisions.end(), mine) == collisions.end())
         continue;
@@ -716,8 +716,8 @@ std::vector<urdf::Vector3> Robot::contactNormals() const
     for (int p = 0; p < manifold.getNumContacts(); ++p)
     {
       const btManifoldPoint& point = manifold.getContactPoint(p);
-      if (point.getDistance() > 0 && point.getAppliedImpulse() == 0)
-        continue;  // kept by the manifold, not touching
+      if (!touching(point))
+        continue;
       normals.push_back(fromBullet(sign * point.m_normalWorldOnB));
     }
   }

@@ -493,8 +493,8 @@ std::vector<Contact> World::contacts() const
     for (int p = 0; p < manifold.getNumContacts(); ++p)
     {
       const btManifoldPoint& point = manifold.getContactPoint(p);
-      if (point.getDistance() > 0 && point.getAppliedImpulse() == 0)
-        continue;  // kept by the manifold, not touching
+      if (!touching(point))
+        continue;
       Contact contact;
       contact.collision1 = in_->collisionNameOf(manifold.getBody0(), point.m_index0);
       contact.collision2 = in_->collisionNameOf(manifold.getBody1(), point.m_index1);

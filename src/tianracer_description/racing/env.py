@@ -51,8 +51,8 @@ class RaceEnv(gymnasium.Env):
         if self._steps is None:
             raise RuntimeError('call reset() before step()')
         scans, state, rewards = self._cars.step(action, self._steps)
-        return (row(self._cars.observations(scans, state), 0), float(rewards[0]), bool(self._cars.crashed(state)[0]),
-                False, row(self._cars.infos(state), 0))
+        info = row(self._cars.infos(state), 0)
+        return row(self._cars.observations(scans, state), 0), float(rewards[0]), bool(info['crashed']), False, info
 
     def render(self):
         robot = self._cars.robots[0]

@@ -84,7 +84,7 @@ class RaceParallelEnv(ParallelEnv):
         scans, state, rewards = self._cars.step(moves, self._steps, still=~racing)
         self._cycles += 1
         observations, infos = self._cars.observations(scans, state), self._cars.infos(state)
-        crashed = self._cars.crashed(state)
+        crashed = infos['crashed']
         results = ({}, {}, {}, {}, {})
         for i, agent in enumerate(self.possible_agents):
             if agent not in self.agents:
