@@ -7,10 +7,13 @@ as one OBJ, a textured OBJ floor; the same centre line), driven by follow the ga
 10 ms control period (ten 1 ms physics steps an env step). Per round, in turn:
 - physics: the car on its controllers with no sensor enabled, physics steps per CPU second;
 - single: RaceEnv, env steps per CPU second (one core's worth) and per wall second;
-- vector: RaceVectorEnv with 4 and with 8 cars (VECTOR_ENVS) on one thread and on two, env steps per
-  wall second (all cars), and the two threads' gain over one. What a vector step costs besides its
-  worlds (the Python around CarBatch, about 65 us; a helper thread's start) is the same for any
-  number of cars, so more cars gain more from the second thread.
+- vector: RaceVectorEnv with 4, 8 and 16 cars (VECTOR_ENVS) on one thread and on two, env steps per
+  wall second (all cars), and the two threads' gain over one. The two envs are stepped in turn, in
+  blocks of VECTOR_BLOCK env steps, so that the machine's moments fall on both alike. What a vector step
+  costs besides its worlds (the Python around CarBatch, about 70 us with the caches cold from the
+  worlds) is the same for any number of cars, and a world goes to a thread whole (one that scans
+  costs twice one that does not): more cars gain more from the second thread (docs/design.md, "What
+  an environment step costs", sums it up).
 - the machine's own: two processes each running the single env at once, their env steps per wall
   second together over one process's alone (the same code side by side, nothing shared): what the
   two cores give at that moment, the ceiling of the vector env's x2/x1. On this shared VM it moves
@@ -34,6 +37,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sensor_bench import cpu_name, write_mesh_track  # noqa: E402
 from tianracer_description.racing.car import CarModel, new_world  # noqa: E402
+from tianracer_description.racing.cars import RaceCars, race_parts, steps_per_action  # noqa: E402
 from tianracer_description.racing.env import RaceEnv  # noqa: E402
 from tianracer_description.racing.follow_the_gap import FollowTheGap  # noqa: E402
 from tianracer_description.racing.track import centerline_file  # noqa: E402
@@ -42,7 +46,8 @@ from tianracer_description.tianracer import RACE_TRACK_WORLD  # noqa: E402
 
 ROUNDS = 5
 ENV_STEPS = 3000  # a measurement: this many env steps (single) or vector steps x cars
-VECTOR_ENVS = (4, 8)
+VECTOR_ENVS = (4, 8, 16)
+VECTOR_BLOCK = 500  # env steps (vector steps x cars) on one env before the other's turn
 CONTROL_PERIOD = 0.01  # s
 F1TENTH_PUBLISHED = 30.0  # "up to 30x realtime"
 
@@ -104,20 +109,65 @@ def single_child(world_file, centerline):
     print(single(world_file, centerline)[1], flush=True)
 
 
-def vector(world_file, centerline, cars, threads):
-    """RaceVectorEnv's env steps (all cars) per wall second on `threads` threads (its calls only)."""
-    envs = RaceVectorEnv(cars, world_file, centerline=centerline, threads=threads, max_episode_steps=2000)
-    policy = FollowTheGap.for_env(envs)
-    w0 = time.perf_counter()
-    observations, _ = envs.reset(seed=0)
-    wall = time.perf_counter() - w0
-    steps = ENV_STEPS // cars
-    for _ in range(steps):
-        actions = np.array([policy({'scan': observations['scan'][i]}) for i in range(cars)])
+def vector(world_file, centerline, cars):
+    """RaceVectorEnv's env steps (all cars) per wall second on one thread and on two ({threads: rate};
+    their calls only): two envs side by side, stepped in turn in blocks of VECTOR_BLOCK env steps, so
+    that the machine's good and bad moments fall on both alike and their ratio holds still."""
+    envs = {threads: RaceVectorEnv(cars, world_file, centerline=centerline, threads=threads, max_episode_steps=2000)
+            for threads in (1, 2)}
+    policy = FollowTheGap.for_env(envs[1])
+    observations, wall = {}, {1: 0.0, 2: 0.0}
+    for threads, env in envs.items():
         w0 = time.perf_counter()
-        observations, *_ = envs.step(actions)
-        wall += time.perf_counter() - w0
-    return steps * cars / wall
+        observations[threads], _ = env.reset(seed=0)
+        wall[threads] += time.perf_counter() - w0
+    steps, block_steps = ENV_STEPS // cars, max(1, VECTOR_BLOCK // cars)
+    for block, first in enumerate(range(0, steps, block_steps)):
+        for threads in ((1, 2) if block % 2 == 0 else (2, 1)):
+            for _ in range(min(block_steps, steps - first)):
+                actions = np.array([policy({'scan': observations[threads]['scan'][i]}) for i in range(cars)])
+                w0 = time.perf_counter()
+                observations[threads], *_ = envs[threads].step(actions)
+                wall[threads] += time.perf_counter() - w0
+    return {threads: steps * cars / wall[threads] for threads in (1, 2)}
+
+
+def schedule_ceiling(world_file, centerline, cars, phases_apart):
+    """What a second thread could gain on the worlds alone, a world going to a thread whole: at every
+    vector step of follow the gap each car's world is stepped and timed alone on one thread, then the
+    step's worlds are handed to two threads as CarBatch hands them (those that scanned first, each to
+    the thread that comes free first). Returns the sum of the worlds' times over the sum of the two
+    threads' longest. With phases_apart each car first steps 0-24 ms alone, as resets leave the cars
+    of a training run; without, they scan in the same steps."""
+    track, model, lidar = race_parts(world_file, centerline, None, None, 2.0)
+    race = RaceCars(track, model, lidar, ['car'] * cars)
+    rng = np.random.default_rng(0)
+    for i in range(cars):
+        race.place(i, track.start_pose(rng))
+    scans, state = race.settle()
+    if phases_apart:
+        still = model.commands(np.zeros((1, 2)))
+        for i in range(cars):
+            ahead = int(rng.integers(0, 25))
+            if ahead:
+                race.batch.step(still, ahead, [i])
+    policy = FollowTheGap(lidar.angle_min, lidar.angle_increment, model.max_steering)
+    steps = steps_per_action(CONTROL_PERIOD, race.worlds[0].time_step)
+    total = makespan = 0.0
+    for k in range(ENV_STEPS // cars):
+        commands = model.commands(np.array([policy({'scan': scans[i]}) for i in range(cars)]))
+        costs, scanned = np.empty(cars), np.empty(cars, bool)
+        for i in range(cars):
+            w0 = time.perf_counter()
+            scan, _ = race.batch.step(commands[i:i + 1], steps, [i])
+            costs[i] = time.perf_counter() - w0
+            scanned[i] = not np.array_equal(scan[0], scans[i])  # (the noise makes every new scan differ)
+            scans[i] = scan[0]
+        threads = [0.0, 0.0]
+        for i in sorted(range(cars), key=lambda i: not scanned[i]):
+            threads[threads.index(min(threads))] += costs[i]
+        total, makespan = total + costs.sum(), makespan + max(threads)
+    return total / makespan
 
 
 def main():
@@ -139,8 +189,8 @@ def main():
             r['single_wall'].append(wall)
             r['two_processes'].append(two_processes(world_file, centerline))
             for cars in VECTOR_ENVS:
-                for threads in (1, 2):
-                    r[(cars, threads)].append(vector(world_file, centerline, cars, threads))
+                for threads, rate in vector(world_file, centerline, cars).items():
+                    r[(cars, threads)].append(rate)
         print('round %d of %d done' % (round_ + 1, ROUNDS), flush=True)
     print()
     vector_titles = ['%d cars x%d' % (cars, threads) for cars in VECTOR_ENVS for threads in (1, 2)]
@@ -161,6 +211,11 @@ def main():
         print('%s: one core %.0fx real time (single env), two cores %.0fx (vector env); f1tenth_gym '
               'publishes "up to %.0fx" (2-D, no hardware given)' % (name, single_rtf, vector_rtf, F1TENTH_PUBLISHED))
     print('machine: two processes of the single env at once over one (the two cores\' own gain, this run)')
+    for name, world_file in tracks.items():
+        print('%s, the worlds alone handed whole to two threads (no Python, no join), the ceiling of x2/x1: %s' % (
+            name, ', '.join('%d cars %.2f in phase, %.2f apart' % (cars, schedule_ceiling(world_file, centerline, cars, False),
+                                                                  schedule_ceiling(world_file, centerline, cars, True))
+                            for cars in VECTOR_ENVS)), flush=True)
     print('targets: single env >= 4000 env steps per CPU second; vector env on 2 threads >= 1.8x one')
 
 

@@ -26,10 +26,16 @@ public:
   // True when an update is due at `time_ns`, which then counts as the last one.
   bool due(int64_t time_ns)
   {
-    if (last_ns_ >= 0 && time_ns - last_ns_ < period_ns_ && time_ns >= last_ns_)
+    if (!wouldOpen(time_ns))
       return false;
     last_ns_ = time_ns;
     return true;
+  }
+  // Whether a call at `time_ns` would open; as time goes on it only opens later, so this also says
+  // whether calls from now until `time_ns` will.
+  bool wouldOpen(int64_t time_ns) const
+  {
+    return last_ns_ < 0 || time_ns - last_ns_ >= period_ns_ || time_ns < last_ns_;
   }
 
 private:

@@ -6,13 +6,13 @@
 #include "bindings.h"
 #include "centerline.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
 
-#include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
@@ -40,6 +40,13 @@ const std::vector<std::string> kStateColumns = {
     "centerline_s", "centerline_offset", "centerline_gained", "centerline_travelled",
 };
 const double kGroundNormalZ = std::sqrt(0.5);
+
+struct WorldRows  // a world a step steps, and the rows of its cars in the step's results
+{
+  World* world;
+  std::vector<size_t> rows;
+  bool scans;  // a car's lidar scans within the step
+};
 
 struct CarSlot
 {
@@ -216,27 +223,37 @@ public:
       for (size_t c = 0; c < per_car; ++c)
         slots_[stepped[row]].commands[c]->deliver(in[row * per_car + c]);  // refused when not finite: the last one stays
     // Each world once, with the rows of the cars it holds: one task steps it, then reads them.
-    std::vector<std::pair<World*, std::vector<size_t>>> worlds;
+    std::vector<WorldRows> worlds;
     for (size_t row = 0; row < n; ++row)
     {
       World* world = slots_[stepped[row]].world;
-      auto held = std::find_if(worlds.begin(), worlds.end(), [&](const auto& w) { return w.first == world; });
+      auto held = std::find_if(worlds.begin(), worlds.end(), [&](const WorldRows& w) { return w.world == world; });
       if (held == worlds.end())
-        held = worlds.insert(worlds.end(), {world, {}});
-      held->second.push_back(row);
+        held = worlds.insert(worlds.end(), {world, {}, false});
+      held->rows.push_back(row);
+      const int64_t until_ns = world->timeNs() + steps * std::llround(world->timeStep() * 1e9);
+      held->scans = held->scans || slots_[stepped[row]].lidar->dueBy(until_ns);
     }
+    // A world whose lidar scans within the step costs about twice one that does not (the Tianracer's
+    // 40 Hz lidar scans in every second or third 10 ms step), and which worlds scan changes from step
+    // to step once resets have moved their phases apart. The threads take the next world as they come
+    // free, the scanning ones first, so that the dearest start first and the cheap ones fill in around
+    // them (list scheduling, longest first). TBB's splitting of the index range paired the worlds by
+    // index, two scanning worlds on one thread: 4 cars with their phases apart gained 1.44-1.53x from
+    // a second thread that way, 1.61-1.75x this way (bench/racing_bench.py's vector env, interleaved).
+    std::stable_partition(worlds.begin(), worlds.end(), [](const WorldRows& w) { return w.scans; });
     std::vector<std::string> errors(worlds.size());
     {
       py::gil_scoped_release release;
       linger_.stepStarts();
+      std::atomic<size_t> next{0};
       arena_.execute([&] {
-        // One world to a thread at a time, handed out as threads come free: worlds differ in cost.
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, worlds.size(), 1), [&](const tbb::blocked_range<size_t>& range) {
-          for (size_t w = range.begin(); w < range.end(); ++w)
+        tbb::parallel_for(0, arena_.max_concurrency(), 1, [&](int) {
+          for (size_t w; (w = next.fetch_add(1, std::memory_order_relaxed)) < worlds.size();)
             try
             {
-              worlds[w].first->step(steps);
-              for (size_t row : worlds[w].second)
+              worlds[w].world->step(steps);
+              for (size_t row : worlds[w].rows)
                 readCar(slots_[stepped[row]], rays, scan_out + row * rays, state_out + row * kStateColumns.size());
             }
             catch (const std::exception& e)
@@ -249,7 +266,7 @@ public:
     }
     for (size_t w = 0; w < worlds.size(); ++w)
       if (!errors[w].empty())
-        throw std::runtime_error("the world of car " + std::to_string(stepped[worlds[w].second[0]]) + ": " + errors[w]);
+        throw std::runtime_error("the world of car " + std::to_string(stepped[worlds[w].rows[0]]) + ": " + errors[w]);
     return py::make_tuple(scans, state);
   }
 

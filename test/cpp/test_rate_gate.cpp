@@ -53,3 +53,23 @@ TEST(RateGate, OpensAtOnceWhenTimeGoesBackOrAfterReset)
   gate.reset();
   EXPECT_TRUE(gate.due(3000000));
 }
+
+TEST(RateGate, WouldOpenForetellsWhetherTheCallsUpToATimeOpenItWithoutOpeningIt)
+{
+  // The Tianracer's 40 Hz lidar stepped at 1 ms in windows of 10 (CarBatch's question: will this
+  // world scan within the step?).
+  RateGate gate(periodNsOfRate(40.0));
+  int scanning_windows = 0;
+  for (int64_t start = 0; start < 200000000; start += 10000000)
+  {
+    const bool foretold = gate.wouldOpen(start + 10000000);
+    EXPECT_EQ(gate.wouldOpen(start + 10000000), foretold) << "asking opened it";
+    bool opened = false;
+    for (int64_t t = start + 1000000; t <= start + 10000000; t += 1000000)
+      opened = gate.due(t) || opened;
+    EXPECT_EQ(opened, foretold) << "the window ending at " << (start + 10000000) / 1000000 << " ms";
+    scanning_windows += opened;
+  }
+  EXPECT_EQ(scanning_windows, 8);  // at 1, 26, 51, ..., 176 ms: every second or third window
+  EXPECT_TRUE(gate.wouldOpen(1000000)) << "time went back: it opens at once";
+}
