@@ -7,6 +7,7 @@
 // Float tolerance as in test_multibody_dynamics.cpp; the iterations add the solver's rounding.
 #include <gtest/gtest.h>
 
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointMotor.h>
@@ -139,6 +140,38 @@ TEST(DynamicsWorld, StepOnTheGroundWithDrivesMatchesBulletsWorldAndSolver)
            worst);
     EXPECT_LT(worst, 1e-4);
   }
+}
+
+// A world's static object gets its box once, as it is added, the box Bullet's own update gives it;
+// moving objects (a multibody's links, fixed base or not) get theirs at every step, as in Bullet.
+TEST(DynamicsWorld, AStaticObjectsBoxIsMadeOnceAsBulletMakesItAndMovingOnesAtEveryStep)
+{
+  btBoxShape box(btVector3(1, 2, 3));
+  std::vector<btVector3> boxes[2];  // the plant's world's, Bullet's: the static box, then the chain's base
+  for (bool plant : {true, false})
+  {
+    Scene scene(plant, /*fixed_base=*/true, /*on_ground=*/false, 3);
+    btCollisionObject wall;
+    wall.setCollisionShape(&box);
+    wall.setWorldTransform(btTransform(btQuaternion(btVector3(0, 0, 1), btScalar(0.3)), btVector3(4, 5, 6)));
+    scene.world->addCollisionObject(&wall, btBroadphaseProxy::StaticFilter,
+                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    scene.world->stepSimulation(btScalar(0.001), 0, btScalar(0.001));
+    boxes[plant ? 0 : 1] = {wall.getBroadphaseHandle()->m_aabbMin, wall.getBroadphaseHandle()->m_aabbMax};
+
+    // The fixed-base chain set elsewhere: its base's box follows in both worlds at the next step.
+    scene.body->setBasePos(scene.body->getBasePos() + btVector3(7, 0, 0));
+    updateKinematics(*scene.body);
+    scene.body->getBaseCollider()->setWorldTransform(scene.body->getBaseWorldTransform());
+    scene.world->stepSimulation(btScalar(0.001), 0, btScalar(0.001));
+    EXPECT_NEAR(scene.body->getBaseCollider()->getBroadphaseHandle()->m_aabbMin.x(),
+                scene.body->getBasePos().x() - scene.sphere.getRadius() - gContactBreakingThreshold, 1e-4)
+        << (plant ? "the plant's world" : "Bullet's world");
+    scene.world->removeCollisionObject(&wall);
+  }
+  for (int k = 0; k < 2; ++k)
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_EQ(boxes[0][k][axis], boxes[1][k][axis]) << (k ? "max" : "min") << " along axis " << axis;
 }
 
 }  // namespace

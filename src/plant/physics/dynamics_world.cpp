@@ -25,6 +25,13 @@ bool sleeping(const btMultiBody& body)
       return true;
   return false;
 }
+
+// A plain static object: a world's static shape. Rigid bodies and multibody links may be moved,
+// static or not (a fixed-base robot set elsewhere).
+bool neverMoves(const btCollisionObject& object)
+{
+  return object.getInternalType() == btCollisionObject::CO_COLLISION_OBJECT && object.isStaticObject();
+}
 }  // namespace
 
 DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, DenseRowSolver* solver,
@@ -52,6 +59,20 @@ DynamicsWorld::StepState& DynamicsWorld::stepState(btMultiBody& body)
 }
 
 const MultibodyState* DynamicsWorld::stateOf(btMultiBody& body) { return stepState(body).state.get(); }
+
+void DynamicsWorld::addCollisionObject(btCollisionObject* object, int group, int mask)
+{
+  btMultiBodyDynamicsWorld::addCollisionObject(object, group, mask);
+  if (neverMoves(*object))
+    updateSingleAabb(object);
+}
+
+void DynamicsWorld::updateAabbs()
+{
+  for (int i = 0; i < m_collisionObjects.size(); ++i)
+    if (!neverMoves(*m_collisionObjects[i]))
+      updateSingleAabb(m_collisionObjects[i]);
+}
 
 void DynamicsWorld::runArticulatedPass(StepState& step)
 {
