@@ -81,6 +81,22 @@ const btBvhTriangleMeshShape* meshOf(const btCollisionObjectWrapper* side)
   return static_cast<const btBvhTriangleMeshShape*>(side->m_parent->getCollisionShape());
 }
 
+// Whether `p` (in the triangle's frame) lies over the triangle at least `distance` inside each of its
+// edges.
+bool insideBy(const btTriangleShape& triangle, const btVector3& p, btScalar distance)
+{
+  const btVector3* v = triangle.m_vertices1;
+  const btVector3 normal = (v[1] - v[0]).cross(v[2] - v[0]);
+  for (int i = 0; i < 3; ++i)
+  {
+    const btVector3 edge = v[(i + 1) % 3] - v[i];
+    const btVector3 inward = normal.cross(edge);  // in the face's plane, towards the third vertex
+    if ((p - v[i]).dot(inward) < distance * inward.length())
+      return false;
+  }
+  return true;
+}
+
 // btAdjustInternalEdgeContacts on a new contact point with a static mesh's triangle, on either side
 // of the point. Bullet's function takes the mesh as the point's side B and finds it as the shape of
 // the triangle's collision object; a robot's fixed link holds its meshes in a compound, so the mesh
@@ -104,13 +120,20 @@ void adjustAtInternalEdge(btManifoldPoint& point, const btCollisionObjectWrapper
   if (!mesh_is_b)
     swapSides(point);
   btAdjustInternalEdgeContacts(point, &on_mesh, other, part, index);
-  // Bullet leaves a normal that points behind the face (the margin's rounded edge, reached from
-  // above where two faces meet). The faces are one-sided, as ODE's trimesh collides: such a contact
-  // pushes out of the face's front.
+  // Bullet corrects the normals of points near an edge (within the map's edge distance). It leaves
+  // two kinds of wrong normal, which push out of the face's front instead: one that points behind
+  // the face (the margin's rounded edge, reached from above where two faces meet; the faces are
+  // one-sided, as ODE's trimesh collides), and one off the face's normal at a point farther inside
+  // the face than that distance (its cylinder-triangle test gave a wheel on the mesh race track's
+  // floor normals up to 90 degrees off, 0.1-0.2 m from any edge), where a convex shape can touch
+  // the face along its normal only.
+  const auto& face_shape = *static_cast<const btTriangleShape*>(triangle->getCollisionShape());
   btVector3 face;
-  static_cast<const btTriangleShape*>(triangle->getCollisionShape())->calcNormal(face);
+  face_shape.calcNormal(face);
   face = triangle->getWorldTransform().getBasis() * face;
-  if (point.m_normalWorldOnB.dot(face) < 0)
+  if (point.m_normalWorldOnB.dot(face) < 0 ||
+      insideBy(face_shape, triangle->getWorldTransform().invXform(point.m_positionWorldOnB),
+               mesh->getTriangleInfoMap()->m_edgeDistanceThreshold))
   {
     point.m_normalWorldOnB = face;
     point.m_positionWorldOnB = point.m_positionWorldOnA - face * point.m_distance1;
