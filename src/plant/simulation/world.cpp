@@ -117,7 +117,14 @@ World::World(const WorldDescription& description) : in_(new Internals)
   // default keeps up to four stale points under a rolling 3 cm wheel: slower and less accurate.
   gContactBreakingThreshold = btScalar(0.001);
 
-  w.collision_config.reset(new btDefaultCollisionConfiguration());
+  // Bullet's default pools hold 4,096 contact manifolds and as many pair algorithms, 5 MB zeroed
+  // for every world: a quarter of making the race track's world (a racing env's reset makes one;
+  // 41 page faults and 1.17 ms of CPU a world against 4 and 0.90 ms with 1,024). A world that
+  // needs more than 1,024 takes the rest from the heap, as Bullet does when a pool runs out.
+  btDefaultCollisionConstructionInfo pools;
+  pools.m_defaultMaxPersistentManifoldPoolSize = 1024;
+  pools.m_defaultMaxCollisionAlgorithmPoolSize = 1024;
+  w.collision_config.reset(new btDefaultCollisionConfiguration(pools));
   w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
   registerWheelContact(*w.dispatcher);
   w.broadphase.reset(new btDbvtBroadphase());
