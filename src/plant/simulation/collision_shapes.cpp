@@ -82,11 +82,13 @@ const btBvhTriangleMeshShape* meshOf(const btCollisionObjectWrapper* side)
 }
 
 // Whether `p` (in the triangle's frame) lies over the triangle at least `distance` inside each of its
-// edges.
+// edges (never for a triangle without area: it has no inside, nor a normal).
 bool insideBy(const btTriangleShape& triangle, const btVector3& p, btScalar distance)
 {
   const btVector3* v = triangle.m_vertices1;
   const btVector3 normal = (v[1] - v[0]).cross(v[2] - v[0]);
+  if (normal.fuzzyZero())
+    return false;
   for (int i = 0; i < 3; ++i)
   {
     const btVector3 edge = v[(i + 1) % 3] - v[i];
