@@ -208,6 +208,25 @@ inline btVector3 impulseOnA(const btManifoldPoint& point)
 // apart (up to Bullet's breaking threshold), which only count when the solver pushed on them.
 inline bool touching(const btManifoldPoint& point) { return point.getDistance() <= 0 || point.getAppliedImpulse() != 0; }
 
+// visit(point, ours_is_a, other) for each touching point between one of ours (`ours(object)`) and
+// anything that is not: the one walk over the manifolds of Robot::contactNormals and of a contact
+// sensor's link (Robot::Internals::contacts). Bullet's normal points from B into A.
+template <class Ours, class Visit>
+void forTouchingPoints(btDispatcher& dispatcher, Ours ours, Visit visit)
+{
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
+  {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    const bool ours_is_a = ours(manifold.getBody0());
+    if (ours_is_a == ours(manifold.getBody1()))
+      continue;  // none of ours, or two of ours
+    const btCollisionObject* other = ours_is_a ? manifold.getBody1() : manifold.getBody0();
+    for (int p = 0; p < manifold.getNumContacts(); ++p)
+      if (touching(manifold.getContactPoint(p)))
+        visit(manifold.getContactPoint(p), ours_is_a, other);
+  }
+}
+
 // A robot's side of the plant (for the library and its tests).
 inline Robot::Internals& internalsOf(Robot& robot) { return *robot.in_; }
 

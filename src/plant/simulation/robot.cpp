@@ -188,42 +188,30 @@ std::vector<ContactState> Robot::Internals::contacts(const std::string& link, co
   // The body's link frame: the link Gazebo keeps after lumping the fixed joints.
   const btMatrix3x3 to_link = multibody.linkWorldTransform(body.link, name).getBasis().transpose();
   const btScalar per_step = btScalar(1.0 / world->step_s);
-  btDispatcher& dispatcher = *world->dispatcher;
-  for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
-  {
-    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
-    const bool ours_is_a = manifold.getBody0() == ours;
-    if (!ours_is_a && manifold.getBody1() != ours)
-      continue;
-    const btCollisionObject* other = ours_is_a ? manifold.getBody1() : manifold.getBody0();
-    // Bullet's normal points from B into A, and an impulse pushes A along it (B the other way).
+  forTouchingPoints(*world->dispatcher, [ours](const btCollisionObject* object) { return object == ours; },
+                    [&](const btManifoldPoint& point, bool ours_is_a, const btCollisionObject* other) {
+    const std::string& mine = body.collisionName(ours_is_a ? point.m_index0 : point.m_index1);
+    if (std::find(collisions.begin(), collisions.end(), mine) == collisions.end())
+      return;
+    const std::string collision1 = name + "::" + body.link + "::" + mine;
+    const std::string collision2 = world->collisionNameOf(other, ours_is_a ? point.m_index1 : point.m_index0);
+    auto state = std::find_if(states.begin(), states.end(), [&](const ContactState& s) {
+      return s.collision1 == collision1 && s.collision2 == collision2;
+    });
+    if (state == states.end())
+      state = states.insert(states.end(), ContactState{collision1, collision2, {}});
+    // An impulse pushes A along the normal, B the other way.
     const btScalar sign = ours_is_a ? 1 : -1;
-    for (int p = 0; p < manifold.getNumContacts(); ++p)
-    {
-      const btManifoldPoint& point = manifold.getContactPoint(p);
-      if (!touching(point))
-        continue;
-      const std::string& mine = body.collisionName(ours_is_a ? point.m_index0 : point.m_index1);
-      if (std::find(collisions.begin(), collisions.end(), mine) == collisions.end())
-        continue;
-      const std::string collision1 = name + "::" + body.link + "::" + mine;
-      const std::string collision2 = world->collisionNameOf(other, ours_is_a ? point.m_index1 : point.m_index0);
-      auto state = std::find_if(states.begin(), states.end(), [&](const ContactState& s) {
-        return s.collision1 == collision1 && s.collision2 == collision2;
-      });
-      if (state == states.end())
-        state = states.insert(states.end(), ContactState{collision1, collision2, {}});
-      const btVector3 position = ours_is_a ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
-      const btVector3 force = sign * per_step * impulseOnA(point);
-      ContactPoint out;
-      out.position = fromBullet(position);
-      out.normal = fromBullet(sign * point.m_normalWorldOnB);
-      out.depth = -point.getDistance();
-      out.force = fromBullet(to_link * force);
-      out.torque = fromBullet(to_link * (position - com).cross(force));
-      state->points.push_back(out);
-    }
-  }
+    const btVector3 position = ours_is_a ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+    const btVector3 force = sign * per_step * impulseOnA(point);
+    ContactPoint out;
+    out.position = fromBullet(position);
+    out.normal = fromBullet(sign * point.m_normalWorldOnB);
+    out.depth = -point.getDistance();
+    out.force = fromBullet(to_link * force);
+    out.torque = fromBullet(to_link * (position - com).cross(force));
+    state->points.push_back(out);
+  });
   return states;
 }
 
@@ -704,23 +692,10 @@ std::vector<urdf::Vector3> Robot::contactNormals() const
     const auto* collider = btMultiBodyLinkCollider::upcast(object);
     return collider && collider->m_multiBody == ours;
   };
-  btDispatcher& dispatcher = *in_->world->dispatcher;
-  for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
-  {
-    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
-    const bool ours_is_a = isOurs(manifold.getBody0()), ours_is_b = isOurs(manifold.getBody1());
-    if (ours_is_a == ours_is_b)
-      continue;  // not ours, or between two of our links
-    // Bullet's normal points from B into A.
-    const btScalar sign = ours_is_a ? 1 : -1;
-    for (int p = 0; p < manifold.getNumContacts(); ++p)
-    {
-      const btManifoldPoint& point = manifold.getContactPoint(p);
-      if (!touching(point))
-        continue;
-      normals.push_back(fromBullet(sign * point.m_normalWorldOnB));
-    }
-  }
+  forTouchingPoints(*in_->world->dispatcher, isOurs,
+                    [&](const btManifoldPoint& point, bool ours_is_a, const btCollisionObject*) {
+                      normals.push_back(fromBullet((ours_is_a ? 1 : -1) * point.m_normalWorldOnB));
+                    });
   return normals;
 }
 
