@@ -181,7 +181,8 @@ def spawn_with_controllers(ros, plant, urdf_path, controllers_yaml, namespace, m
 
 def frames_in(ros, target, topics, timeout=30):
     """Through a tf2 buffer (tf2_ros, as rviz and navigation use it): one message of each topic, its
-    header's frame id and that frame's origin in `target` at the message's stamp.
+    header's frame id and that frame's origin in `target` at the message's stamp. A message stamped
+    before the buffer's first transform is dropped for the next, as a tf2 message filter drops it.
     {topic: {'frame': ..., 'xyz': [x, y, z]}}; a lookup that fails fails the snippet."""
     return ros.python(f"""
         import json, rospy, rostopic, tf2_ros
@@ -191,8 +192,16 @@ def frames_in(ros, target, topics, timeout=30):
         out = {{}}
         for topic in {list(topics)!r}:
             cls, name, _ = rostopic.get_topic_class(topic, blocking=True)
-            msg = rospy.wait_for_message(topic, cls, timeout={timeout})
-            t = buffer.lookup_transform({target!r}, msg.header.frame_id, msg.header.stamp, rospy.Duration(10.0))
+            for attempt in range(5):
+                msg = rospy.wait_for_message(topic, cls, timeout={timeout})
+                try:
+                    t = buffer.lookup_transform({target!r}, msg.header.frame_id, msg.header.stamp, rospy.Duration(10.0))
+                    break
+                except tf2_ros.ExtrapolationException:
+                    # Stamped before the listener's first /tf message: rviz's message filter drops such a
+                    # message too. The next one is newer; a stamp that never resolves fails at the fifth.
+                    if attempt == 4:
+                        raise
             v = t.transform.translation
             out[topic] = {{'frame': msg.header.frame_id, 'xyz': [v.x, v.y, v.z]}}
         print(json.dumps(out))
