@@ -47,6 +47,7 @@ public:
   uint32_t noiseSeed() const;
 
   double timeStep() const;        // s, the SDF's max_step_size
+  int64_t timeStepNs() const;     // the same in ns, as the clock counts it
   // gazebo_ros's set_physics_properties: a new step (throws std::invalid_argument outside
   // [1e-9, 0.1] s, naming the value) and gravity (m/s^2, world frame), from the next step on.
   void setTimeStep(double seconds);

@@ -231,7 +231,7 @@ public:
       if (held == worlds.end())
         held = worlds.insert(worlds.end(), {world, {}, false});
       held->rows.push_back(row);
-      const int64_t until_ns = world->timeNs() + steps * std::llround(world->timeStep() * 1e9);
+      const int64_t until_ns = world->timeNs() + steps * world->timeStepNs();
       held->scans = held->scans || slots_[stepped[row]].lidar->dueBy(until_ns);
     }
     // A world whose lidar scans within the step costs about twice one that does not (the Tianracer's

@@ -159,4 +159,5 @@ TEST(WorldPhysics, TimeStepAndGravityChangeFromTheNextStep)
   EXPECT_THROW(world.setTimeStep(0), std::invalid_argument);
   EXPECT_THROW(world.setTimeStep(1), std::invalid_argument);
   EXPECT_EQ(world.timeStep(), 0.002);
+  EXPECT_EQ(world.timeStepNs(), 2000000);
 }

@@ -202,6 +202,7 @@ const WorldDescription& World::description() const { return in_->description; }
 Log& World::log() { return in_->log; }
 Param& World::params() { return in_->params; }
 double World::timeStep() const { return in_->step_s; }
+int64_t World::timeStepNs() const { return in_->step_ns; }
 
 int World::solverIterations() const { return in_->dynamics->getSolverInfo().m_numIterations; }
 
