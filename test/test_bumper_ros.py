@@ -21,6 +21,7 @@ def test_bumper_states_of_a_robot_pushed_into_a_wall(ros, tmp_path):
         import json, rospy
         from gazebo_msgs.msg import ContactsState
         from geometry_msgs.msg import Wrench
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         def summary(m):
             return {'frame': m.header.frame_id, 'stamp': m.header.stamp.to_sec(),
@@ -33,7 +34,7 @@ def test_bumper_states_of_a_robot_pushed_into_a_wall(ros, tmp_path):
                                 'depths': list(s.depths)} for s in m.states]}
         ground = rospy.wait_for_message('/bumper_states', ContactsState, 30)
         before = rospy.wait_for_message('/bumper', ContactsState, 10)
-        push = rospy.Publisher('/force', Wrench, queue_size=1, latch=True)
+        push = connected_publisher('/force', Wrench, queue_size=1, latch=True)
         w = Wrench()
         w.force.x = 10.0
         push.publish(w)

@@ -15,6 +15,7 @@ def test_wrench_stamped_of_the_elbow_with_a_push(ros, tmp_path):
     seen = ros.python("""
         import json, rospy
         from geometry_msgs.msg import Wrench, WrenchStamped
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         rospy.sleep(1.0)
         def reading():
@@ -23,7 +24,7 @@ def test_wrench_stamped_of_the_elbow_with_a_push(ros, tmp_path):
                     'force': [m.wrench.force.x, m.wrench.force.y, m.wrench.force.z],
                     'torque': [m.wrench.torque.x, m.wrench.torque.y, m.wrench.torque.z]}
         held = reading()
-        push = rospy.Publisher('/push', Wrench, queue_size=1, latch=True)
+        push = connected_publisher('/push', Wrench, queue_size=1, latch=True)
         w = Wrench()
         w.force.y = 5.0
         push.publish(w)

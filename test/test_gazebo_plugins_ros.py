@@ -30,12 +30,13 @@ def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
         from sensor_msgs.msg import JointState
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         odometry = []
         rospy.Subscriber('/odom', Odometry, odometry.append)
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)
-        pub = rospy.Publisher('/cmd_vel', Twist, queue_size=1)
+        pub = connected_publisher('/cmd_vel', Twist, queue_size=1)
         twist = Twist()
         twist.linear.x, twist.angular.z = 0.2, 0.5
         start = rospy.wait_for_message('/gazebo/model_states', ModelStates, 30)
@@ -78,14 +79,18 @@ def test_diff_drive_controller_through_gazebo_ros_control_and_the_spawner(ros, t
         import json, rospy
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
-        pub = rospy.Publisher('/diff_bot/mobile_base_controller/cmd_vel', Twist, queue_size=1)
+        pub = connected_publisher('/diff_bot/mobile_base_controller/cmd_vel', Twist, queue_size=1)
+        # Read while the commands still come: 0.5 s after the last one (cmd_vel_timeout) the controller stops.
+        latest = []
+        rospy.Subscriber('/diff_bot/mobile_base_controller/odom', Odometry, latest.append)
         twist = Twist()
         twist.linear.x, twist.angular.z = 0.2, 0.5
         for _ in range(30):
             pub.publish(twist)
             rospy.sleep(0.1)
-        odom = rospy.wait_for_message('/diff_bot/mobile_base_controller/odom', Odometry, 10)
+        odom = latest[-1]
         print(json.dumps({'frames': [odom.header.frame_id, odom.child_frame_id],
                           'linear': odom.twist.twist.linear.x, 'angular': odom.twist.twist.angular.z,
                           'x': odom.pose.pose.position.x}))
@@ -109,11 +114,12 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
         from sensor_msgs.msg import Imu, JointState, NavSatFix
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)
-        skid = rospy.Publisher('/skid_bot/cmd_vel', Twist, queue_size=1)
-        planar = rospy.Publisher('/planar_bot/cmd_vel', Twist, queue_size=1)
+        skid = connected_publisher('/skid_bot/cmd_vel', Twist, queue_size=1)
+        planar = connected_publisher('/planar_bot/cmd_vel', Twist, queue_size=1)
         forward, sideways = Twist(), Twist()
         forward.linear.x = 0.3
         sideways.linear.y = 0.2
@@ -140,7 +146,8 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         rospy.ServiceProxy('/imu/data/calibrate', Empty)()
         rospy.sleep(0.1)
         accel_bias = rospy.wait_for_message('/imu/data/bias', Imu, 10).linear_acceleration.x
-        tf = buffer.lookup_transform('odom', 'planar_base', rospy.Time(0), rospy.Duration(5))
+        # at the odometry's stamp: planar_move has no command timeout, the bot still slides
+        tf = buffer.lookup_transform('odom', 'planar_base', planar_odom.header.stamp, rospy.Duration(5))
         print(json.dumps({
             'skid': [skid_odom.header.frame_id, skid_odom.child_frame_id, skid_odom.twist.twist.linear.x,
                      skid_odom.pose.pose.position.x, skid_odom.pose.covariance[35]],
@@ -182,8 +189,9 @@ def test_the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server(ro
         import json, rospy
         from gazebo_msgs.msg import LinkStates
         from std_msgs.msg import Float64
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
-        pub = rospy.Publisher('/gripper/finger_controller/command', Float64, queue_size=1, latch=True)
+        pub = connected_publisher('/gripper/finger_controller/command', Float64, queue_size=1, latch=True)
         pub.publish(Float64(0.03))
         rospy.sleep(2.0)
         links = rospy.wait_for_message('/gazebo/link_states', LinkStates, 10)
@@ -208,9 +216,10 @@ def test_range_sensor_reports_the_nearest_ray_to_a_wall(ros, tmp_path):
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
         from sensor_msgs.msg import Range
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         before = rospy.wait_for_message('/range/fr', Range, 30)
-        pub = rospy.Publisher('/cmd_vel', Twist, queue_size=1)
+        pub = connected_publisher('/cmd_vel', Twist, queue_size=1)
         twist = Twist()
         twist.linear.x = 0.2
         for _ in range(10):
@@ -243,6 +252,7 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
         from gazebo_msgs.msg import ModelStates
         from geometry_msgs.msg import Twist
         from sensor_msgs.msg import LaserScan
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)
@@ -251,7 +261,7 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
             return {name: [pose.position.x, pose.position.y] for name, pose in zip(states.name, states.pose)}
         scan = rospy.wait_for_message('/tb3/scan', LaserScan, 30)
         before = positions()
-        car, tb3 = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1), rospy.Publisher('/tb3/cmd_vel', Twist, queue_size=1)
+        car, tb3 = connected_publisher('/tianracer/cmd_vel', Twist, queue_size=1), connected_publisher('/tb3/cmd_vel', Twist, queue_size=1)
         fast, slow = Twist(), Twist()
         fast.linear.x, slow.linear.x = 0.5, 0.2
         for _ in range(25):
@@ -282,9 +292,10 @@ def test_force_plugin_takes_its_wrench_from_ros_and_f3d_reports_it(ros, tmp_path
         import json, rospy
         from gazebo_msgs.srv import GetModelState
         from geometry_msgs.msg import Wrench, WrenchStamped
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
-        pub = rospy.Publisher('/force', Wrench, queue_size=1, latch=True)
+        pub = connected_publisher('/force', Wrench, queue_size=1, latch=True)
         wrench = Wrench()
         wrench.force.z = 60.0
         before = state('pushed', '').pose.position.z

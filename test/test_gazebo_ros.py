@@ -40,6 +40,7 @@ from gazebo_msgs.msg import LinkState, ModelState, ModelStates, LinkStates
 from gazebo_msgs.srv import *
 from geometry_msgs.msg import Point, Pose, Twist, Vector3, Wrench
 from std_srvs.srv import Empty
+from tianracer_description.ros_harness import connected_publisher
 rospy.init_node('gazebo_probe', anonymous=True)
 def srv(name, kind):
     rospy.wait_for_service('/gazebo/' + name, 30)
@@ -115,7 +116,7 @@ m = get('tianracer', '')
 out['after_set'] = [m.pose.position.x, m.pose.position.y, 2 * math.atan2(m.pose.orientation.z, m.pose.orientation.w)]
 out['set_unknown'] = result(set_model(ModelState('nobody', pose(), Twist(), '')))
 out['set_bad_frame'] = result(set_model(ModelState('tianracer', pose(), Twist(), 'nowhere')))
-pub = rospy.Publisher('/gazebo/set_model_state', ModelState, queue_size=1, latch=True)
+pub = connected_publisher('/gazebo/set_model_state', ModelState, queue_size=1, latch=True)
 pub.publish(ModelState('tianracer', pose(-1.0, 0.5), Twist(), 'world'))
 deadline = time.time() + 20
 while time.time() < deadline and abs(get('tianracer', '').pose.position.x + 1.0) > 1e-3:
@@ -206,7 +207,7 @@ def test_step_physics_runs_that_many_iterations_while_paused_and_scene_contacts_
 from gazebo_msgs.msg import ContactsState
 from rosgraph_msgs.msg import Clock
 from std_msgs.msg import UInt32
-step = rospy.Publisher('/gazebo/step_physics', UInt32, queue_size=10)
+step = connected_publisher('/gazebo/step_physics', UInt32, queue_size=10)
 clocks = []
 rospy.Subscriber('/clock', Clock, lambda m: clocks.append(m.clock.to_nsec()))
 contacts = []

@@ -14,7 +14,8 @@ NS = '/tianracer'
 
 
 def collect(ros, topics, seconds):
-    """The messages of several topics over `seconds` of simulated time, as dicts per topic."""
+    """The messages of several topics over `seconds` of simulated time from when every one of them is
+    connected, as dicts per topic."""
     return ros.python(f"""
         import json, rospy, rostopic, time
         from tianracer_description.ros_harness import message_to_dict
@@ -24,13 +25,32 @@ def collect(ros, topics, seconds):
         for topic in got:
             cls, name, _ = rostopic.get_topic_class(topic, blocking=True)
             subs.append(rospy.Subscriber(name, cls, lambda m, t=topic: got[t].append(message_to_dict(m))))
-        while rospy.Time.now().is_zero():
+        while rospy.Time.now().is_zero() or any(s.get_num_connections() == 0 for s in subs):
             time.sleep(0.01)
+        for messages in got.values():
+            messages.clear()
         end = rospy.Time.now() + rospy.Duration({seconds})
         while rospy.Time.now() < end:
             time.sleep(0.01)
         print(json.dumps(got))
     """, timeout=120)
+
+
+def wait_until(ros, topic, condition, timeout=60):
+    """Waits (wall clock) for a message of `topic` for which `condition`, a Python expression of the
+    message as a dict `m`, holds: a command from `rostopic pub` has reached the plant once it shows."""
+    ros.python(f"""
+        import json, rospy, rostopic, time
+        from tianracer_description.ros_harness import message_to_dict
+        rospy.init_node('waiter', anonymous=True)
+        cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
+        deadline = time.monotonic() + {timeout}
+        m = message_to_dict(rospy.wait_for_message(name, cls, timeout={timeout}))
+        while not ({condition}):
+            assert time.monotonic() < deadline, 'no message of %s where %s; the last: %r' % ({topic!r}, {condition!r}, m)
+            m = message_to_dict(rospy.wait_for_message(name, cls, timeout={timeout}))
+        print(json.dumps(True))
+    """, timeout=timeout + 30)
 
 
 def test_ackermann_launch_drives_the_car_from_a_twist(ros):
@@ -39,6 +59,7 @@ def test_ackermann_launch_drives_the_car_from_a_twist(ros):
     speed, steering = 1.0, 0.3
     ros.start(['rostopic', 'pub', '-r', '10', NS + '/cmd_vel', 'geometry_msgs/Twist',
                '{linear: {x: %g}, angular: {z: %g}}' % (speed, steering)], 'twist')
+    wait_until(ros, NS + '/odom', "m['twist']['twist']['angular']['z'] > 0.5")
     collect(ros, [NS + '/odom'], 3.0)   # let it reach its circle
     got = collect(ros, [NS + '/odom', NS + '/ackermann_right_controller/odom', '/tf'], 1.0)
 
@@ -76,6 +97,7 @@ def test_joint_group_velocity_controller_takes_a_float64_multi_array(ros, urdf_f
     ros.wait_for_controllers(2, NS)
     ros.start(['rostopic', 'pub', '-r', '10', NS + '/rear_wheels/command', 'std_msgs/Float64MultiArray',
                '{data: [10.0, 20.0]}'], 'command')
+    wait_until(ros, NS + '/joint_states', "m['velocity'][m['name'].index('right_rear_wheel_joint')] > 10.0")
     collect(ros, [NS + '/joint_states'], 1.0)
     state = collect(ros, [NS + '/joint_states'], 0.2)[NS + '/joint_states'][-1]
     velocity = dict(zip(state['name'], state['velocity']))

@@ -19,9 +19,10 @@ def test_a_trajectory_on_the_topic_poses_the_arm(ros, tmp_path):
         import json, rospy
         from gazebo_msgs.srv import GetJointProperties
         from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         joint = rospy.ServiceProxy('/gazebo/get_joint_properties', GetJointProperties)
-        pub = rospy.Publisher('/set_joint_trajectory', JointTrajectory, queue_size=1, latch=True)
+        pub = connected_publisher('/set_joint_trajectory', JointTrajectory, queue_size=1, latch=True)
         t = JointTrajectory(joint_names=['shoulder', 'elbow'])
         t.header.frame_id = 'world'
         t.points.append(JointTrajectoryPoint(positions=[0.5, -0.3], time_from_start=rospy.Duration(0.3)))

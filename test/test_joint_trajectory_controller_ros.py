@@ -90,10 +90,11 @@ def test_a_trajectory_on_the_command_topic_the_state_topic_and_query_state(ros, 
 import json, rospy
 from control_msgs.msg import JointTrajectoryControllerState
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+from tianracer_description.ros_harness import connected_publisher
 rospy.init_node('probe')
 states = []
 rospy.Subscriber('/arm/arm_controller/state', JointTrajectoryControllerState, states.append)
-pub = rospy.Publisher('/arm/arm_controller/command', JointTrajectory, queue_size=1, latch=True)
+pub = connected_publisher('/arm/arm_controller/command', JointTrajectory, queue_size=1, latch=True)
 rospy.sleep(1.0)
 t = JointTrajectory(joint_names=['elbow', 'shoulder', 'wrist'])
 t.points.append(JointTrajectoryPoint(positions=[0.4, -0.6, 0.0], time_from_start=rospy.Duration(1.0)))

@@ -22,6 +22,7 @@ def test_without_egl_the_node_runs_with_its_cameras_off(ros, urdf_file):
         from rosgraph_msgs.msg import Clock, Log
         from sensor_msgs.msg import Image, JointState, LaserScan
         from std_msgs.msg import Float64
+        from tianracer_description.ros_harness import connected_publisher
         rospy.init_node('probe')
         said = []
         rospy.Subscriber('/rosout_agg', Log, lambda m: said.append(m.msg) if 'cameras:' in m.msg else None)
@@ -30,7 +31,7 @@ def test_without_egl_the_node_runs_with_its_cameras_off(ros, urdf_file):
             rospy.Subscriber(topic, Image, lambda m, t=topic: images.append(t))
         scan = rospy.wait_for_message('/scan', LaserScan, 20)
         first = rospy.wait_for_message('/clock', Clock, 10).clock.to_sec()
-        command = rospy.Publisher('%s/rear_left_velocity_controller/command', Float64, queue_size=1, latch=True)
+        command = connected_publisher('%s/rear_left_velocity_controller/command', Float64, queue_size=1, latch=True)
         command.publish(Float64(8.0))
         deadline = time.monotonic() + 20
         wheel = 0.0

@@ -1,7 +1,5 @@
 """Recording a simulation as users do (README, "Recording a drive"): rosbag records odom, scan and
 TF while the car drives, and the bag plays back, with --clock, the messages it holds."""
-import time
-
 import pytest
 import yaml
 
@@ -50,8 +48,9 @@ def test_a_recorded_drive_plays_back_with_its_message_counts(ros, tmp_path):
     try:
         probe = player_system.start(['/usr/bin/python3', '-c', __import__('textwrap').dedent(COUNT_PLAYBACK % 12.0)],
                                     'probe')
-        time.sleep(2.0)
-        play = player_system.run(['rosbag', 'play', '--clock', '--delay=1', bag], timeout=60)
+        # the two counted topics, once the probe subscribes to them: none of their messages goes unheard
+        play = player_system.run(['rosbag', 'play', '--clock', '--wait-for-subscribers', bag,
+                                  '--topics', '/tianracer/odom', '/scan'], timeout=60)
         assert play.returncode == 0, play.stderr
         assert probe.wait(20) == 0
         counts = yaml.safe_load(probe.log().strip().splitlines()[-1])

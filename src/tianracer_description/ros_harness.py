@@ -32,6 +32,21 @@ def message_to_dict(message):
     return message
 
 
+def connected_publisher(topic, message_class, timeout=30.0, **options):
+    """For the rospy snippets of the tests: a rospy Publisher once a subscriber has connected to it, so
+    that what it publishes next is heard at once (before the connection a message is lost, or, latched,
+    it arrives later by the connection's time and shortens a measurement that follows it)."""
+    import rospy
+    publisher = rospy.Publisher(topic, message_class, **options)
+    end = time.monotonic() + timeout
+    while publisher.get_num_connections() == 0:
+        if time.monotonic() > end:
+            raise RuntimeError('nothing subscribed to %s within %g s: is the plant running the plugin or '
+                               'controller that reads it?' % (topic, timeout))
+        time.sleep(0.01)
+    return publisher
+
+
 def free_port():
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
         s.bind(('127.0.0.1', 0))

@@ -35,7 +35,8 @@ class TwoRobots(unittest.TestCase):
             running_controllers(car, len(TUTORIAL_CONTROLLERS))
         publishers = [rospy.Publisher(CARS[0] + '/' + c + '/command', Float64, queue_size=1, latch=True)
                       for c in REAR_WHEEL_CONTROLLERS]
-        while not all(car in self.position for car in CARS):
+        # the controllers connected, so that the 2 s measured start with the command
+        while not all(car in self.position for car in CARS) or any(p.get_num_connections() == 0 for p in publishers):
             time.sleep(0.05)
         start = dict(self.position)
         for publisher in publishers:
