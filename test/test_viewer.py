@@ -65,6 +65,19 @@ def wait_for(driver, script, timeout, what):
                          % (timeout, what, driver.get_log('browser')))
 
 
+def at_rest(read_xy, timeout=20.0, still=0.02):
+    """(x, y) once two readings of read_xy() 1 s of wall time apart lie within `still` m: a car that
+    stops stops then whatever the real time factor (AssertionError with its readings at the timeout)."""
+    deadline = time.monotonic() + timeout
+    readings = [read_xy()]
+    while time.monotonic() < deadline:
+        time.sleep(1.0)
+        readings.append(read_xy())
+        if math.hypot(readings[-1][0] - readings[-2][0], readings[-1][1] - readings[-2][1]) < still:
+            return readings[-1]
+    raise AssertionError('still moving after %g s: %s' % (timeout, readings))
+
+
 @contextlib.contextmanager
 def opened(ros, world, urdf_file=None):
     """The plant on `world` (with the car and the tutorial's YAML when `urdf_file`), the viewer on a
@@ -407,12 +420,8 @@ def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting
     driver.execute_script('document.activeElement.blur()')
     start = ros.python(MODEL_XY)
     ActionChains(driver).key_down('i').pause(2.0).key_up('i').perform()  # i: straight ahead
-    time.sleep(1.0)  # the converter's 0.2 s and the car rolling out
-    driven = ros.python(MODEL_XY)
-    time.sleep(1.0)
-    later = ros.python(MODEL_XY)
+    driven = at_rest(lambda: ros.python(MODEL_XY))  # the converter's 0.2 s and the car rolling out
     assert driven[0] - start[0] > 0.3, 'the car did not drive ahead: %s -> %s' % (start, driven)
-    assert math.hypot(later[0] - driven[0], later[1] - driven[1]) < 0.02, 'the car went on: %s -> %s' % (driven, later)
 
 
 def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turned_off(page):
@@ -539,11 +548,7 @@ def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_
                  'the speed scaled down')
         start = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
         ActionChains(driver).key_down('i').pause(2.0).key_up('i').perform()
-        time.sleep(2.0)
-        driven = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
-        time.sleep(1.0)
-        later = driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')")
+        driven = at_rest(lambda: driver.execute_script("return viewer.linkPose('diff_bot::base_footprint')"))
         state = ros.service('/gazebo/get_model_state', '{model_name: diff_bot}')['pose']['position']
     assert math.hypot(driven[0] - start[0], driven[1] - start[1]) > 0.2, (start, driven)
-    assert math.hypot(later[0] - driven[0], later[1] - driven[1]) < 0.02, (driven, later)
-    assert math.hypot(later[0] - state['x'], later[1] - state['y']) < 0.01, (later, state)
+    assert math.hypot(driven[0] - state['x'], driven[1] - state['y']) < 0.01, (driven, state)
