@@ -209,12 +209,11 @@ from rosgraph_msgs.msg import Clock
 from std_msgs.msg import UInt32
 step = connected_publisher('/gazebo/step_physics', UInt32, queue_size=10)
 clocks = []
-rospy.Subscriber('/clock', Clock, lambda m: clocks.append(m.clock.to_nsec()))
 contacts = []
-rospy.Subscriber('/gazebo/scene_contacts', ContactsState, lambda m: contacts.append(m))
-while step.get_num_connections() == 0:
+subscribers = [rospy.Subscriber('/clock', Clock, lambda m: clocks.append(m.clock.to_nsec())),
+               rospy.Subscriber('/gazebo/scene_contacts', ContactsState, lambda m: contacts.append(m))]
+while any(s.get_num_connections() == 0 for s in subscribers):  # paused: nothing on either until a step
     time.sleep(0.05)
-time.sleep(0.5)
 def stepped(n):
     count = len(clocks)
     step.publish(UInt32(n))
