@@ -11,7 +11,7 @@ import rostest
 from nav_msgs.msg import Odometry
 from std_msgs.msg import Float64
 
-from tianracer_description.ros_harness import running_controllers
+from tianracer_description.ros_harness import connected_publisher, running_controllers
 from tianracer_description.tianracer import REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS
 
 CARS = ('/car1/tianracer', '/car2/tianracer')
@@ -33,10 +33,10 @@ class TwoRobots(unittest.TestCase):
     def test_2_commanding_one_car_moves_that_car_only(self):
         for car in CARS:
             running_controllers(car, len(TUTORIAL_CONTROLLERS))
-        publishers = [rospy.Publisher(CARS[0] + '/' + c + '/command', Float64, queue_size=1, latch=True)
-                      for c in REAR_WHEEL_CONTROLLERS]
         # the controllers connected, so that the 2 s measured start with the command
-        while not all(car in self.position for car in CARS) or any(p.get_num_connections() == 0 for p in publishers):
+        publishers = [connected_publisher(CARS[0] + '/' + c + '/command', Float64, queue_size=1, latch=True)
+                      for c in REAR_WHEEL_CONTROLLERS]
+        while not all(car in self.position for car in CARS):
             time.sleep(0.05)
         start = dict(self.position)
         for publisher in publishers:
