@@ -36,7 +36,7 @@ def collect(ros, topics, seconds):
     """, timeout=120)
 
 
-def wait_until(ros, topic, condition, timeout=60):
+def wait_for_message_where(ros, topic, condition, timeout=60):
     """Waits (wall clock) for a message of `topic` for which `condition`, a Python expression of the
     message as a dict `m`, holds: a command from `rostopic pub` has reached the plant once it shows."""
     ros.python(f"""
@@ -59,7 +59,7 @@ def test_ackermann_launch_drives_the_car_from_a_twist(ros):
     speed, steering = 1.0, 0.3
     ros.start(['rostopic', 'pub', '-r', '10', NS + '/cmd_vel', 'geometry_msgs/Twist',
                '{linear: {x: %g}, angular: {z: %g}}' % (speed, steering)], 'twist')
-    wait_until(ros, NS + '/odom', "m['twist']['twist']['angular']['z'] > 0.5")
+    wait_for_message_where(ros, NS + '/odom', "m['twist']['twist']['angular']['z'] > 0.5")
     collect(ros, [NS + '/odom'], 3.0)   # let it reach its circle
     got = collect(ros, [NS + '/odom', NS + '/ackermann_right_controller/odom', '/tf'], 1.0)
 
@@ -97,7 +97,7 @@ def test_joint_group_velocity_controller_takes_a_float64_multi_array(ros, urdf_f
     ros.wait_for_controllers(2, NS)
     ros.start(['rostopic', 'pub', '-r', '10', NS + '/rear_wheels/command', 'std_msgs/Float64MultiArray',
                '{data: [10.0, 20.0]}'], 'command')
-    wait_until(ros, NS + '/joint_states', "m['velocity'][m['name'].index('right_rear_wheel_joint')] > 10.0")
+    wait_for_message_where(ros, NS + '/joint_states', "m['velocity'][m['name'].index('right_rear_wheel_joint')] > 10.0")
     collect(ros, [NS + '/joint_states'], 1.0)
     state = collect(ros, [NS + '/joint_states'], 0.2)[NS + '/joint_states'][-1]
     velocity = dict(zip(state['name'], state['velocity']))
