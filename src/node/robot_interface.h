@@ -1,5 +1,5 @@
 // One robot's ROS side, composed of one part per concern: odometry, its sensors' gazebo_ros plugins
-// (one file each, sensor_plugin.h), its model plugins' topics (port_topics.h), the e-stop and, when
+// (one file each, sensor_plugins/sensor_plugin.h), its model plugins' topics (port_topics.h), the e-stop and, when
 // the URDF has a gazebo_ros_control block, the controller topics and the controller manager services.
 #pragma once
 
@@ -13,7 +13,7 @@
 #include "controller_topics.h"
 #include "odometry_publisher.h"
 #include "ros_plant.h"
-#include "sensor_plugin.h"
+#include "sensor_plugins/sensor_plugin.h"
 
 namespace bullet_plant
 {
