@@ -16,6 +16,7 @@
 #include "bullet_plant/hardware_interface.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/pid.h"
+#include "bullet_plant/registry.h"
 
 namespace bullet_plant
 {
@@ -107,8 +108,26 @@ protected:
   std::vector<ClaimedResources> claimed_;
 };
 
-// The controller types this plant offers (list_controller_types), and a factory for them.
-const std::vector<std::string>& controllerTypes();
-std::unique_ptr<Controller> createController(const std::string& type);  // null for an unknown type
+using ControllerFactory = std::function<std::unique_ptr<Controller>()>;
+
+// The controller types this plant offers (list_controller_types), sorted, and a factory for them:
+// whatever registered itself (ROS_CONTROLLER_TYPE).
+inline const std::vector<std::string>& controllerTypes()
+{
+  static const std::vector<std::string> names = Registry<ControllerFactory>::instance().names();
+  return names;
+}
+// Null for an unknown type.
+inline std::unique_ptr<Controller> createController(const std::string& type)
+{
+  const ControllerFactory* make = Registry<ControllerFactory>::instance().find(type);
+  return make ? (*make)() : nullptr;
+}
 
 }  // namespace bullet_plant
+
+// In a controller's .cpp, as pluginlib's PLUGINLIB_EXPORT_CLASS: `factory` (a function returning a
+// std::unique_ptr<Controller>) makes the controller type `type_name`
+// ("diff_drive_controller/DiffDriveController"); `id` names the registration, unique in its file.
+#define ROS_CONTROLLER_TYPE(id, type_name, factory) \
+  BULLET_PLANT_REGISTER(::bullet_plant::ControllerFactory, id, factory, type_name)

@@ -2,10 +2,12 @@
 // controllers are: Load reads the <plugin> block once with upstream's names and defaults, OnUpdate
 // runs at the start of every step (Gazebo's world update begin), and what they subscribe to and
 // publish goes through their ports (message_ports.h), which the ROS node and Python carry. A new
-// plugin is its own file under src/plant/gazebo_plugins/ and a line in the registry there.
+// plugin is its own file under src/plant/gazebo_plugins/, registered there (GAZEBO_ROS_MODEL_PLUGIN),
+// and a line in CMakeLists.txt.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -15,6 +17,7 @@
 #include "bullet_plant/controllers.h"
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/message_ports.h"
+#include "bullet_plant/registry.h"
 #include "bullet_plant/robot_description.h"
 
 namespace bullet_plant
@@ -105,10 +108,10 @@ public:
   // The world's parameter tree (params.h): where the node has copied the ROS parameters a plugin
   // reads (the mimic joint plugin's pid gains).
   virtual const Param& params() const = 0;
-  // The namespace of the plugin's node handle, by its kind's rule (plugin_names.h): where the node
+  // The namespace of the plugin's node handle, by its file's naming rule (plugin_names.h): where the node
   // puts its ports' topics and where it reads parameters.
   virtual std::string pluginNamespace(const ModelPluginDescription& plugin) const = 0;
-  // What the plugin's frame ids resolve against, by its kind's rule (plugin_names.h).
+  // What the plugin's frame ids resolve against, by its file's naming rule (plugin_names.h).
   virtual std::string tfPrefix(const ModelPluginDescription& plugin) const = 0;
   virtual Log& log() = 0;
 
@@ -148,7 +151,33 @@ bool requireElements(const ModelPluginDescription& d, ModelPluginContext& contex
 bool requireLink(const ModelPluginDescription& d, ModelPluginContext& context, const std::string& element,
                  const std::string& link, const std::string& role = "");
 
-// The plugin a kind names; null for kinds that are no model plugin.
-std::unique_ptr<ModelPlugin> createModelPlugin(PluginKind kind);
+using ModelPluginFactory = std::function<std::unique_ptr<ModelPlugin>()>;
+
+// The plugin registered for `filename`; null for a file no model plugin registered.
+inline std::unique_ptr<ModelPlugin> createModelPlugin(const std::string& filename)
+{
+  const ModelPluginFactory* make = Registry<ModelPluginFactory>::instance().find(filename);
+  return make ? (*make)() : nullptr;
+}
+
+// The description's facts of a model plugin's file: whose naming rules (plugin_names.h) and, for the
+// mimic joint plugin, the element naming where it reads pid gains.
+inline PluginFile modelPluginFile(PluginNaming naming = PluginNaming::Default, const std::string& pid_gains_element = "")
+{
+  PluginFile file;
+  file.role = PluginRole::Model;
+  file.naming = naming;
+  file.pid_gains_element = pid_gains_element;
+  return file;
+}
 
 }  // namespace bullet_plant
+
+// In a model plugin's .cpp, as GZ_REGISTER_MODEL_PLUGIN in Gazebo: `Class` made for each of the
+// plugin files that follow (libgazebo_ros_*.so), with `plugin_file` (modelPluginFile(...)) as what
+// the description makes of them. The only place a model plugin is named.
+#define GAZEBO_ROS_MODEL_PLUGIN(Class, plugin_file, ...)                                                           \
+  BULLET_PLANT_REGISTER(                                                                                           \
+      ::bullet_plant::ModelPluginFactory, Class,                                                                   \
+      [] { return std::unique_ptr<::bullet_plant::ModelPlugin>(new Class()); }, __VA_ARGS__);                      \
+  BULLET_PLANT_REGISTER(::bullet_plant::PluginFile, Class##_file, plugin_file, __VA_ARGS__)

@@ -28,52 +28,58 @@ struct Noise
   double stddev = 0.0;
 };
 
-// The gazebo_ros plugins the plant simulates (docs/interfaces.md section 11), by plugin file.
-enum class PluginKind
+struct SensorDescription;
+
+// What the description makes of a gazebo_ros plugin file. Every file the plant simulates registers
+// one under its file names (registry.h), beside the code that simulates it: a model plugin in its own
+// file (GAZEBO_ROS_MODEL_PLUGIN, model_plugin.h); the sensor plugins' ROS-free halves in
+// src/plant/description/sensor_plugin_files.cpp, their ROS halves in src/node/sensor_plugins/. A
+// file nobody registered is warned about at parse and ignored.
+enum class PluginRole
 {
-  None,          // a <sensor> without a plugin: rendered for the Python API, nothing on ROS
-  Laser,         // libgazebo_ros_laser.so, libgazebo_ros_gpu_laser.so
-  Camera,        // libgazebo_ros_camera.so
-  OpenniKinect,  // libgazebo_ros_openni_kinect.so, libgazebo_ros_depth_camera.so
-  MultiCamera,   // libgazebo_ros_multicamera.so (each <camera> of a <sensor type="multicamera">)
-  ImuSensor,     // libgazebo_ros_imu_sensor.so inside <sensor type="imu">
-  ImuModel,      // libgazebo_ros_imu.so, a model plugin (<gazebo><plugin>)
-  P3d,           // libgazebo_ros_p3d.so, a model plugin
-  Range,         // libgazebo_ros_range.so inside <sensor type="ray">
-  Velodyne,      // velodyne_simulator's libgazebo_ros_velodyne_(gpu_)laser.so inside <sensor type="(gpu_)ray">
-  BlockLaser,    // libgazebo_ros_block_laser.so inside <sensor type="ray">
-  HectorSonar,   // libhector_gazebo_ros_sonar.so inside <sensor type="ray">
-  Bumper,        // libgazebo_ros_bumper.so inside <sensor type="contact">
-  // Model plugins that act on the physics (model_plugin.h), from <gazebo><plugin>:
-  DiffDrive,            // libgazebo_ros_diff_drive.so
-  SkidSteerDrive,       // libgazebo_ros_skid_steer_drive.so
-  TricycleDrive,        // libgazebo_ros_tricycle_drive.so
-  PlanarMove,           // libgazebo_ros_planar_move.so
-  JointStatePublisher,  // libgazebo_ros_joint_state_publisher.so
-  MimicJoint,           // lib roboticsgroup(_upatras)_gazebo_mimic_joint_plugin.so
-  HectorGps,            // libhector_gazebo_ros_gps.so
-  HectorImu,            // libhector_gazebo_ros_imu.so
-  HectorMagnetic,       // libhector_gazebo_ros_magnetic.so
-  ForceBasedMove,       // libgazebo_ros_force_based_move.so (hector's omnidirectional base)
-  Force,                // libgazebo_ros_force.so
-  F3d,                  // libgazebo_ros_f3d.so
-  FtSensor,             // libgazebo_ros_ft_sensor.so
-  JointPoseTrajectory,  // libgazebo_ros_joint_pose_trajectory.so
-  HandOfGod,            // libgazebo_ros_hand_of_god.so
-  Unknown,       // any other file: warned about once, at spawn
+  Sensor,      // inside a <sensor>: the plant builds the sensor from its type, the node's plugin publishes it
+  LinkSensor,  // a model plugin following one link (<bodyName>) described as a sensor: gazebo_ros_imu, gazebo_ros_p3d
+  Model,       // a model plugin that acts on the physics (model_plugin.h), from <gazebo><plugin>
 };
-PluginKind pluginKind(const std::string& filename);
-// Whether the kind is one of the model plugins above (a ModelPluginDescription).
-bool isModelPluginKind(PluginKind kind);
-// The files pluginKind knows, for messages ("gazebo_ros_control, gazebo_ros_laser, ...").
+
+// Whose naming rules (plugin_names.h) a plugin follows where its sensor's type alone does not say.
+enum class PluginNaming
+{
+  Default,         // its sensor type's (laser, camera, imu, p3d, bumper); a model plugin: "" is the global namespace
+  Range,           // ray sensors whose plugins name their topics and frames their own way
+  Velodyne,
+  BlockLaser,
+  HectorSonar,
+  DepthCamera,     // the depth plugins: the camera's image defaults to the infrared one
+  MultiCamera,     // topics under <cameraName>/left and /right
+  GazeboRos,       // model plugins on gazebo_ros's GazeboRos helper: an empty namespace is the model's name, the namespace the tf prefix
+  ModelNamespace,  // an empty namespace is the model's name, no tf prefix (joint_state_publisher)
+};
+
+struct PluginFile
+{
+  PluginRole role = PluginRole::Model;
+  PluginNaming naming = PluginNaming::Default;
+  // LinkSensor: the sensor type it is described as ("imu", "p3d").
+  std::string sensor_type;
+  // Sensor: why it cannot load on this <sensor> in upstream's words ("needs a <sensor type=...>"),
+  // "" when it can; a refused plugin publishes nothing. Null: it loads on any.
+  std::string (*refusal)(const SensorDescription& sensor) = nullptr;
+  // Model: the element naming where it reads pid gains from the parameter server (the mimic joint
+  // plugin's <hasPID>), for the node to copy them there; "" for none.
+  std::string pid_gains_element;
+};
+
+// The registered facts of `filename` (libgazebo_ros_*.so); null for a file the plant does not simulate.
+const PluginFile* findPluginFile(const std::string& filename);
+// The files registered, for messages ("gazebo_ros_control, gazebo_ros_laser, ...").
 std::string simulatedPluginNames();
 
 // A <gazebo><plugin> block of a model plugin that acts on the physics (model_plugin.h): its
 // parameters, read by the plugin's Load with upstream's names and defaults.
 struct ModelPluginDescription
 {
-  std::string name, filename;
-  PluginKind kind = PluginKind::Unknown;
+  std::string name, filename;  // filename: a registered model plugin's (findPluginFile)
   std::map<std::string, std::string> params;  // child element -> its text
 
   bool has(const std::string& key) const { return params.count(key) > 0; }
@@ -115,9 +121,13 @@ struct SensorDescription
   std::vector<std::string> contact_collisions;
   Noise noise;
   // the plugin block: filename and its child elements as text (topicName, frameName, cameraName, ...)
+  bool plugin_given = false;  // it has a <plugin> block
   std::string plugin_name, plugin_filename;
   std::map<std::string, std::string> plugin;
-  PluginKind plugin_kind = PluginKind::None;
+  // The registered file simulating its plugin; null for a sensor without a <plugin>, with a file the
+  // plant does not simulate as a sensor plugin (warned about), or with one refused (an error): then
+  // it publishes nothing on ROS.
+  const PluginFile* plugin_file = nullptr;
   bool model_plugin = false;  // from <gazebo><plugin>, not from a <sensor>
   std::string pluginParam(const std::string& key, const std::string& fallback = "") const;
   bool hasPluginParam(const std::string& key) const { return plugin.count(key) > 0; }
@@ -125,7 +135,7 @@ struct SensorDescription
   // sensor and the element when the text is not a number.
   double pluginNumber(const std::string& key, double fallback) const;
   // The plugin block with a model plugin's typed readers (hector's sensor plugins share them).
-  ModelPluginDescription pluginBlock() const { return {plugin_name, plugin_filename, plugin_kind, plugin}; }
+  ModelPluginDescription pluginBlock() const { return {plugin_name, plugin_filename, plugin}; }
 };
 
 struct SurfaceDescription

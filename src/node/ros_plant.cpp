@@ -171,12 +171,16 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
   copyParams(control_ns + "/gazebo_ros_control");
   copyParams("/gazebo_ros_control");  // where legacyModeNS (the default) has Gazebo look for pid_gains
   for (const ModelPluginDescription& plugin : description.model_plugins)
-    if (plugin.kind == PluginKind::MimicJoint && plugin.has("hasPID"))  // its pid gains, wherever <hasPID> puts them
+  {
+    // The mimic joint plugin's pid gains, wherever its <hasPID> puts them.
+    const std::string& gains_element = findPluginFile(plugin.filename)->pid_gains_element;
+    if (!gains_element.empty() && plugin.has(gains_element))
     {
-      const std::string gains = plugin.text("hasPID", "");
+      const std::string gains = plugin.text(gains_element, "");
       const std::string plugin_ns = gains.empty() || gains[0] != '/' ? modelPluginNamespace(plugin, ns, name) : "";
       copyParams("/" + joinPath(plugin_ns, gains.empty() ? "gazebo_ros_control" : gains));
     }
+  }
   return onSimThread<bool>([&] {
     try
     {

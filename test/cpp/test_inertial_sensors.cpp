@@ -22,7 +22,7 @@ SensorDescription imuSensor(std::map<std::string, std::string> plugin, bool mode
   d.type = "imu";
   d.link = "imu_link";
   d.model_plugin = model_plugin;
-  d.plugin_kind = model_plugin ? PluginKind::ImuModel : PluginKind::ImuSensor;
+  d.plugin_file = findPluginFile(model_plugin ? "libgazebo_ros_imu.so" : "libgazebo_ros_imu_sensor.so");
   d.plugin = std::move(plugin);
   return d;
 }
@@ -103,7 +103,7 @@ TEST(GroundTruthOdometry, PoseAndWorldTwistOfItsBodyInTheResolvedFrame)
   d.type = "p3d";
   d.link = "base_footprint";
   d.model_plugin = true;
-  d.plugin_kind = PluginKind::P3d;
+  d.plugin_file = findPluginFile("libgazebo_ros_p3d.so");
   d.plugin = {{"bodyName", "base_footprint"}, {"topicName", "ground_truth"}, {"updateRate", "50"}};
   GroundTruthOdometry p3d(d, 1);
   EXPECT_EQ(p3d.periodNs(), 20000000);
@@ -132,7 +132,7 @@ TEST(RobotDescriptionPlugins, ModelPluginsUnknownPluginsAndRobotSimType)
   EXPECT_NE(d.warnings[0].find("'grip' (libgazebo_ros_vacuum_gripper.so)"), std::string::npos) << d.warnings[0];
   EXPECT_NE(d.warnings[0].find(", gazebo_ros_diff_drive,"), std::string::npos) << "the simulated ones listed";
   ASSERT_EQ(d.model_plugins.size(), 1u) << "a model plugin the plant simulates is kept for the robot to load";
-  EXPECT_EQ(d.model_plugins[0].kind, PluginKind::DiffDrive);
+  EXPECT_EQ(d.model_plugins[0].filename, "libgazebo_ros_diff_drive.so");
   EXPECT_EQ(d.model_plugins[0].text("leftJoint", ""), "l");
   ASSERT_EQ(d.errors.size(), 1u);
   EXPECT_NE(d.errors[0].find("robotSimType 'my/Hw'"), std::string::npos);

@@ -82,26 +82,27 @@ TEST(PluginNames, LaserAndCameraResolveAgainstTheirNamespace)
 
 TEST(PluginNames, ModelPluginNamespacesByTheirKindsRules)
 {
-  auto plugin = [](PluginKind kind, std::map<std::string, std::string> params) {
+  auto plugin = [](const char* filename, std::map<std::string, std::string> params) {
     ModelPluginDescription d;
-    d.kind = kind;
+    d.filename = filename;
     d.params = std::move(params);
     return d;
   };
-  for (PluginKind kind : {PluginKind::DiffDrive, PluginKind::JointStatePublisher})
+  for (const char* kind : {"libgazebo_ros_diff_drive.so", "libgazebo_ros_joint_state_publisher.so"})
   {
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "", "bot"), "bot") << "empty: the model's name";
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {{"robotNamespace", ""}}), "/", "bot"), "bot");
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "/", "bot"), "/") << "spawn_model's namespace";
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {{"robotNamespace", "/r1"}}), "/", "bot"), "/r1");
   }
-  for (PluginKind kind : {PluginKind::SkidSteerDrive, PluginKind::PlanarMove, PluginKind::MimicJoint})
+  for (const char* kind : {"libgazebo_ros_skid_steer_drive.so", "libgazebo_ros_planar_move.so",
+                           "libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so"})
   {
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "", "bot"), "") << "empty: the global namespace";
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "/r2", "bot"), "/r2");
   }
-  const ModelPluginDescription diff = plugin(PluginKind::DiffDrive, {});
+  const ModelPluginDescription diff = plugin("libgazebo_ros_diff_drive.so", {});
   EXPECT_EQ(modelPluginTfPrefix(diff, "/r1/"), "/r1") << "the GazeboRos helper: its namespace";
-  EXPECT_EQ(modelPluginTfPrefix(plugin(PluginKind::SkidSteerDrive, {}), "/r1"), "") << "only a tf_prefix parameter";
+  EXPECT_EQ(modelPluginTfPrefix(plugin("libgazebo_ros_skid_steer_drive.so", {}), "/r1"), "") << "only a tf_prefix parameter";
   EXPECT_EQ(resolveTfFrame(modelPluginTfPrefix(diff, "/r1"), "odom"), "r1/odom");
 }

@@ -97,6 +97,6 @@ private:
   ros::Publisher cloud_pub_;
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosBlockLaser, "libgazebo_ros_block_laser.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosBlockLaser, "libgazebo_ros_block_laser.so");
 
 }  // namespace bullet_plant

@@ -63,6 +63,6 @@ private:
   ros::Publisher contact_pub_;
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosBumper, "libgazebo_ros_bumper.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosBumper, "libgazebo_ros_bumper.so");
 
 }  // namespace bullet_plant

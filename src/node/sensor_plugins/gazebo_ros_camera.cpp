@@ -48,6 +48,6 @@ sensor_msgs::CameraInfo GazeboRosCamera::cameraInfo(const CameraFrame& f, const 
   return info;
 }
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosCamera, "libgazebo_ros_camera.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosCamera, "libgazebo_ros_camera.so");
 
 }  // namespace bullet_plant

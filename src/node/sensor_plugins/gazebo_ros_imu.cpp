@@ -35,6 +35,6 @@ private:
   ros::Publisher imu_pub_;
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosImu, "libgazebo_ros_imu_sensor.so", "libgazebo_ros_imu.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosImu, "libgazebo_ros_imu_sensor.so", "libgazebo_ros_imu.so");
 
 }  // namespace bullet_plant

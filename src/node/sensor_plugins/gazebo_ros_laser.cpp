@@ -34,6 +34,6 @@ private:
   ros::Publisher scan_pub_;
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosLaser, "libgazebo_ros_laser.so", "libgazebo_ros_gpu_laser.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosLaser, "libgazebo_ros_laser.so", "libgazebo_ros_gpu_laser.so");
 
 }  // namespace bullet_plant

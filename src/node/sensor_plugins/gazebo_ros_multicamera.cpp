@@ -34,6 +34,6 @@ public:
   }
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosMultiCamera, "libgazebo_ros_multicamera.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosMultiCamera, "libgazebo_ros_multicamera.so");
 
 }  // namespace bullet_plant

@@ -65,7 +65,7 @@ public:
   }
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosOpenniKinect, "libgazebo_ros_openni_kinect.so")
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosDepthCamera, "libgazebo_ros_depth_camera.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosOpenniKinect, "libgazebo_ros_openni_kinect.so");
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosDepthCamera, "libgazebo_ros_depth_camera.so");
 
 }  // namespace bullet_plant

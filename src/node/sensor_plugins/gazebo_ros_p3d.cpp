@@ -38,6 +38,6 @@ private:
   ros::Publisher odometry_pub_;
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosP3d, "libgazebo_ros_p3d.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosP3d, "libgazebo_ros_p3d.so");
 
 }  // namespace bullet_plant

@@ -68,6 +68,6 @@ private:
   ros::Publisher range_pub_;
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosRange, "libgazebo_ros_range.so")
+GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosRange, "libgazebo_ros_range.so");
 
 }  // namespace bullet_plant

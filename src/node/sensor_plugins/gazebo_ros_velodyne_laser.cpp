@@ -127,6 +127,6 @@ private:
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosVelodyneLaser, "libgazebo_ros_velodyne_laser.so",
-                         "libgazebo_ros_velodyne_gpu_laser.so")
+                         "libgazebo_ros_velodyne_gpu_laser.so");
 
 }  // namespace bullet_plant

@@ -75,6 +75,6 @@ private:
   ros::Publisher range_pub_;
 };
 
-GAZEBO_ROS_SENSOR_PLUGIN(HectorGazeboRosSonar, "libhector_gazebo_ros_sonar.so")
+GAZEBO_ROS_SENSOR_PLUGIN(HectorGazeboRosSonar, "libhector_gazebo_ros_sonar.so");
 
 }  // namespace bullet_plant

@@ -1,36 +1,18 @@
 #include "sensor_plugin.h"
 
-#include <map>
-
 #include "bullet_plant/sensors.h"
 #include "ros_names.h"
 
 namespace bullet_plant
 {
-namespace
-{
-// Function-local, so registrations from other files' static initialisers find it constructed.
-std::map<std::string, SensorPluginFactory>& registry()
-{
-  static std::map<std::string, SensorPluginFactory> factories;
-  return factories;
-}
-}  // namespace
-
-SensorPluginRegistration::SensorPluginRegistration(const std::vector<std::string>& filenames, SensorPluginFactory factory)
-{
-  for (const std::string& filename : filenames)
-    registry()[filename] = factory;
-}
-
 std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& robot, double step_size)
 {
   if (!sensor.publishesOnRos())
     return nullptr;
-  const auto factory = registry().find(sensor.description().plugin_filename);
-  if (factory == registry().end())
+  const SensorPluginFactory* make = Registry<SensorPluginFactory>::instance().find(sensor.description().plugin_filename);
+  if (!make)
     return nullptr;
-  std::unique_ptr<SensorPlugin> plugin = factory->second();
+  std::unique_ptr<SensorPlugin> plugin = (*make)();
   plugin->namespace_ = pluginNamespace(sensor.description(), robot.spawnNamespace(), robot.name());
   plugin->step_size_ = step_size;
   plugin->Load(sensor);

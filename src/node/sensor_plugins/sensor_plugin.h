@@ -2,9 +2,10 @@
 // sensor (its <plugin> block parsed at spawn) and advertises the plugin's topics in its namespace,
 // named by the rules of plugin_names.h;
 // OnUpdate() runs after each step (simTimeNs() is the step's time) and publishes what the sensor
-// computed since the last call (the sensor itself keeps <update_rate>: Sensor::due). A plugin registers itself under its library's
-// file names with GAZEBO_ROS_SENSOR_PLUGIN in its own file, so adding one touches only that file
-// (and CMakeLists.txt). Everything runs on the simulation thread.
+// computed since the last call (the sensor itself keeps <update_rate>: Sensor::due). A plugin
+// registers itself under its library's file names with GAZEBO_ROS_SENSOR_PLUGIN in its own file; its
+// ROS-free half (the <sensor> it loads in, its naming rules), which the plant and Python read too, is
+// its line in src/plant/description/sensor_plugin_files.cpp. Everything runs on the simulation thread.
 #pragma once
 
 #include <cmath>
@@ -19,6 +20,7 @@
 
 #include "bullet_plant/gaussian_kernel.h"
 #include "bullet_plant/plugin_names.h"
+#include "bullet_plant/registry.h"
 #include "ros_names.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
@@ -79,18 +81,18 @@ ros::Publisher advertiseUnlessEmpty(ros::NodeHandle& nh, const Sensor& sensor, c
 
 using SensorPluginFactory = std::function<std::unique_ptr<SensorPlugin>()>;
 
-// Registers `factory` for each of `filenames` (libgazebo_ros_*.so); at static initialisation.
-struct SensorPluginRegistration
+}  // namespace bullet_plant
+
+// In a plugin's .cpp, as GZ_REGISTER_SENSOR_PLUGIN in Gazebo: `Class` made for each of the plugin
+// files that follow (libgazebo_ros_*.so). What the description makes of those files is their
+// ROS-free half (src/plant/description/sensor_plugin_files.cpp).
+#define GAZEBO_ROS_SENSOR_PLUGIN(Class, ...)                                                                         \
+  BULLET_PLANT_REGISTER(                                                                                             \
+      ::bullet_plant::SensorPluginFactory, Class,                                                                    \
+      [] { return std::unique_ptr<::bullet_plant::SensorPlugin>(new Class()); }, __VA_ARGS__)
+
+namespace bullet_plant
 {
-  SensorPluginRegistration(const std::vector<std::string>& filenames, SensorPluginFactory factory);
-};
-
-// In a plugin's .cpp, as GZ_REGISTER_SENSOR_PLUGIN in Gazebo.
-#define GAZEBO_ROS_SENSOR_PLUGIN(Class, ...)                                                            \
-  static const ::bullet_plant::SensorPluginRegistration registration_##Class({__VA_ARGS__}, [] { \
-    return std::unique_ptr<::bullet_plant::SensorPlugin>(new Class());                             \
-  });
-
 // A Sensor as the plugin's type: the plant builds the sensor class from the same file name, so a
 // mismatch is a bug, reported by naming both.
 template <class SensorType>

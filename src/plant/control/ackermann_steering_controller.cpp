@@ -124,9 +124,7 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeAckermannSteeringController()
-{
-  return std::unique_ptr<Controller>(new AckermannSteeringController());
-}
+ROS_CONTROLLER_TYPE(ackermann_steering, "ackermann_steering_controller/AckermannSteeringController",
+                    [] { return std::unique_ptr<Controller>(new AckermannSteeringController()); });
 
 }  // namespace bullet_plant

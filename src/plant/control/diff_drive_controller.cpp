@@ -187,6 +187,7 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeDiffDriveController() { return std::unique_ptr<Controller>(new DiffDriveController()); }
+ROS_CONTROLLER_TYPE(diff_drive, "diff_drive_controller/DiffDriveController",
+                    [] { return std::unique_ptr<Controller>(new DiffDriveController()); });
 
 }  // namespace bullet_plant

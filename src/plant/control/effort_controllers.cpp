@@ -175,14 +175,11 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeEffortPidController(bool position)
-{
-  return std::unique_ptr<Controller>(new EffortPidController(position));
-}
-
-std::unique_ptr<Controller> makeEffortGroupPositionController()
-{
-  return std::unique_ptr<Controller>(new EffortGroupPositionController());
-}
+ROS_CONTROLLER_TYPE(effort_position, "effort_controllers/JointPositionController",
+                    [] { return std::unique_ptr<Controller>(new EffortPidController(true)); });
+ROS_CONTROLLER_TYPE(effort_velocity, "effort_controllers/JointVelocityController",
+                    [] { return std::unique_ptr<Controller>(new EffortPidController(false)); });
+ROS_CONTROLLER_TYPE(effort_group_position, "effort_controllers/JointGroupPositionController",
+                    [] { return std::unique_ptr<Controller>(new EffortGroupPositionController()); });
 
 }  // namespace bullet_plant

@@ -57,14 +57,17 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeForwardCommandController(JointInterface iface)
-{
-  return std::unique_ptr<Controller>(new ForwardCommandController(iface));
-}
-
-std::unique_ptr<Controller> makeForwardGroupController(JointInterface iface)
-{
-  return std::unique_ptr<Controller>(new ForwardGroupController(iface));
-}
+ROS_CONTROLLER_TYPE(effort_effort, "effort_controllers/JointEffortController",
+                    [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Effort)); });
+ROS_CONTROLLER_TYPE(effort_group_effort, "effort_controllers/JointGroupEffortController",
+                    [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Effort)); });
+ROS_CONTROLLER_TYPE(position_position, "position_controllers/JointPositionController",
+                    [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Position)); });
+ROS_CONTROLLER_TYPE(position_group_position, "position_controllers/JointGroupPositionController",
+                    [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Position)); });
+ROS_CONTROLLER_TYPE(velocity_velocity, "velocity_controllers/JointVelocityController",
+                    [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Velocity)); });
+ROS_CONTROLLER_TYPE(velocity_group_velocity, "velocity_controllers/JointGroupVelocityController",
+                    [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Velocity)); });
 
 }  // namespace bullet_plant

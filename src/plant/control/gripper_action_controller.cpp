@@ -171,9 +171,9 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeGripperActionController(JointInterface iface)
-{
-  return std::unique_ptr<Controller>(new GripperActionController(iface));
-}
+ROS_CONTROLLER_TYPE(effort_gripper, "effort_controllers/GripperActionController",
+                    [] { return std::unique_ptr<Controller>(new GripperActionController(JointInterface::Effort)); });
+ROS_CONTROLLER_TYPE(position_gripper, "position_controllers/GripperActionController",
+                    [] { return std::unique_ptr<Controller>(new GripperActionController(JointInterface::Position)); });
 
 }  // namespace bullet_plant

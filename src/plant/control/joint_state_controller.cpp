@@ -96,9 +96,7 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeJointStateController()
-{
-  return std::unique_ptr<Controller>(new JointStateController());
-}
+ROS_CONTROLLER_TYPE(joint_state, "joint_state_controller/JointStateController",
+                    [] { return std::unique_ptr<Controller>(new JointStateController()); });
 
 }  // namespace bullet_plant

@@ -597,9 +597,11 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeJointTrajectoryController(JointInterface iface)
-{
-  return std::unique_ptr<Controller>(new JointTrajectoryController(iface));
-}
+ROS_CONTROLLER_TYPE(effort_trajectory, "effort_controllers/JointTrajectoryController",
+                    [] { return std::unique_ptr<Controller>(new JointTrajectoryController(JointInterface::Effort)); });
+ROS_CONTROLLER_TYPE(position_trajectory, "position_controllers/JointTrajectoryController",
+                    [] { return std::unique_ptr<Controller>(new JointTrajectoryController(JointInterface::Position)); });
+ROS_CONTROLLER_TYPE(velocity_trajectory, "velocity_controllers/JointTrajectoryController",
+                    [] { return std::unique_ptr<Controller>(new JointTrajectoryController(JointInterface::Velocity)); });
 
 }  // namespace bullet_plant

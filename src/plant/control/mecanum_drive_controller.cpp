@@ -259,9 +259,7 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<Controller> makeMecanumDriveController()
-{
-  return std::unique_ptr<Controller>(new MecanumDriveController());
-}
+ROS_CONTROLLER_TYPE(mecanum_drive, "mecanum_drive_controller/MecanumDriveController",
+                    [] { return std::unique_ptr<Controller>(new MecanumDriveController()); });
 
 }  // namespace bullet_plant

@@ -5,6 +5,15 @@ namespace bullet_plant
 {
 namespace
 {
+// Its registered file's naming rules; the default ones for a sensor without a simulated plugin.
+PluginNaming namingOf(const SensorDescription& d) { return d.plugin_file ? d.plugin_file->naming : PluginNaming::Default; }
+
+PluginNaming namingOf(const ModelPluginDescription& d)
+{
+  const PluginFile* file = findPluginFile(d.filename);
+  return file ? file->naming : PluginNaming::Default;
+}
+
 std::string withoutLeadingSlash(const std::string& name) { return !name.empty() && name[0] == '/' ? name.substr(1) : name; }
 
 std::string withoutTrailingSlashes(std::string name)
@@ -19,7 +28,7 @@ std::string withoutTrailingSlashes(std::string name)
 std::string underCameraName(const SensorDescription& d, const std::string& topic)
 {
   std::string camera = d.pluginParam("cameraName");
-  if (d.plugin_kind == PluginKind::MultiCamera)
+  if (namingOf(d) == PluginNaming::MultiCamera)
     camera = camera.empty() ? multicameraSide(d) : camera + "/" + multicameraSide(d);
   if (!topic.empty() && topic[0] == '/')
     return topic;
@@ -33,15 +42,15 @@ enum class Family { Laser, Range, Velodyne, BlockLaser, HectorSonar, Camera, Imu
 Family familyOf(const SensorDescription& d)
 {
   if (d.type == "ray" || d.type == "gpu_ray")
-    switch (d.plugin_kind)
+    switch (namingOf(d))
     {
-      case PluginKind::Range:
+      case PluginNaming::Range:
         return Family::Range;
-      case PluginKind::Velodyne:
+      case PluginNaming::Velodyne:
         return Family::Velodyne;
-      case PluginKind::BlockLaser:
+      case PluginNaming::BlockLaser:
         return Family::BlockLaser;
-      case PluginKind::HectorSonar:
+      case PluginNaming::HectorSonar:
         return Family::HectorSonar;
       default:
         return Family::Laser;
@@ -145,11 +154,10 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
                                  const std::string& model_name)
 {
   const std::string ns = d.has("robotNamespace") ? d.text("robotNamespace", "") : spawn_namespace;
-  switch (d.kind)
+  switch (namingOf(d))
   {
-    case PluginKind::DiffDrive:  // the GazeboRos helper
-    case PluginKind::TricycleDrive:
-    case PluginKind::JointStatePublisher:
+    case PluginNaming::GazeboRos:  // diff_drive, tricycle_drive
+    case PluginNaming::ModelNamespace:  // joint_state_publisher
       return ns.empty() ? model_name : ns;
     default:  // skid_steer_drive, planar_move, the mimic joint plugin: "" is the global namespace
       return ns;
@@ -159,8 +167,7 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
 std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace)
 {
   // The GazeboRos helper falls back to its namespace; the others read only a tf_prefix parameter.
-  return d.kind == PluginKind::DiffDrive || d.kind == PluginKind::TricycleDrive ? withoutTrailingSlashes(plugin_namespace)
-                                                                                : "";
+  return namingOf(d) == PluginNaming::GazeboRos ? withoutTrailingSlashes(plugin_namespace) : "";
 }
 
 std::string multicameraSide(const SensorDescription& d)
@@ -196,7 +203,7 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
       break;
   }
   // The depth plugins default their camera's image to the infrared one: "ir/image_raw".
-  const bool depth_plugin = d.plugin_kind == PluginKind::OpenniKinect;
+  const bool depth_plugin = namingOf(d) == PluginNaming::DepthCamera;
   switch (which)
   {
     case PluginTopic::CameraInfo:

@@ -13,6 +13,7 @@
 #include <urdf_parser/urdf_parser.h>
 
 #include "bullet_plant/geometry.h"
+#include "bullet_plant/registry.h"
 #include "description/xml_util.h"
 
 namespace bullet_plant
@@ -31,77 +32,13 @@ double SensorDescription::pluginNumber(const std::string& key, double fallback) 
   return xml::numbers(it->second, 1, "<" + key + "> of plugin '" + plugin_name + "' of sensor '" + name + "'")[0];
 }
 
-namespace
-{
-// The gazebo_ros plugin files the plant simulates (docs/interfaces.md section 11, docs/model_plugins.md).
-const std::map<std::string, PluginKind>& pluginKinds()
-{
-  static const std::map<std::string, PluginKind> kinds = {
-      {"libgazebo_ros_laser.so", PluginKind::Laser},          {"libgazebo_ros_gpu_laser.so", PluginKind::Laser},
-      {"libgazebo_ros_camera.so", PluginKind::Camera},        {"libgazebo_ros_openni_kinect.so", PluginKind::OpenniKinect},
-      {"libgazebo_ros_depth_camera.so", PluginKind::OpenniKinect},
-      {"libgazebo_ros_multicamera.so", PluginKind::MultiCamera},
-      {"libgazebo_ros_imu_sensor.so", PluginKind::ImuSensor}, {"libgazebo_ros_imu.so", PluginKind::ImuModel},
-      {"libgazebo_ros_p3d.so", PluginKind::P3d},              {"libgazebo_ros_diff_drive.so", PluginKind::DiffDrive},
-      {"libgazebo_ros_range.so", PluginKind::Range},
-      {"libgazebo_ros_velodyne_laser.so", PluginKind::Velodyne},
-      {"libgazebo_ros_velodyne_gpu_laser.so", PluginKind::Velodyne},
-      {"libgazebo_ros_block_laser.so", PluginKind::BlockLaser},
-      {"libhector_gazebo_ros_sonar.so", PluginKind::HectorSonar},
-      {"libgazebo_ros_bumper.so", PluginKind::Bumper},
-      {"libhector_gazebo_ros_gps.so", PluginKind::HectorGps},
-      {"libhector_gazebo_ros_imu.so", PluginKind::HectorImu},
-      {"libhector_gazebo_ros_magnetic.so", PluginKind::HectorMagnetic},
-      {"libgazebo_ros_force_based_move.so", PluginKind::ForceBasedMove},
-      {"libgazebo_ros_force.so", PluginKind::Force},
-      {"libgazebo_ros_f3d.so", PluginKind::F3d},
-      {"libgazebo_ros_ft_sensor.so", PluginKind::FtSensor},
-      {"libgazebo_ros_joint_pose_trajectory.so", PluginKind::JointPoseTrajectory},
-      {"libgazebo_ros_hand_of_god.so", PluginKind::HandOfGod},
-      {"libgazebo_ros_skid_steer_drive.so", PluginKind::SkidSteerDrive},
-      {"libgazebo_ros_tricycle_drive.so", PluginKind::TricycleDrive},
-      {"libgazebo_ros_planar_move.so", PluginKind::PlanarMove},
-      {"libgazebo_ros_joint_state_publisher.so", PluginKind::JointStatePublisher},
-      {"libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so", PluginKind::MimicJoint},
-      {"libroboticsgroup_gazebo_mimic_joint_plugin.so", PluginKind::MimicJoint}};
-  return kinds;
-}
-}  // namespace
-
-bool isModelPluginKind(PluginKind kind)
-{
-  switch (kind)
-  {
-    case PluginKind::DiffDrive:
-    case PluginKind::SkidSteerDrive:
-    case PluginKind::TricycleDrive:
-    case PluginKind::PlanarMove:
-    case PluginKind::JointStatePublisher:
-    case PluginKind::MimicJoint:
-    case PluginKind::HectorGps:
-    case PluginKind::HectorImu:
-    case PluginKind::HectorMagnetic:
-    case PluginKind::ForceBasedMove:
-    case PluginKind::Force:
-    case PluginKind::F3d:
-    case PluginKind::FtSensor:
-    case PluginKind::JointPoseTrajectory:
-    case PluginKind::HandOfGod: return true;
-    default: return false;
-  }
-}
-
-PluginKind pluginKind(const std::string& filename)
-{
-  auto it = pluginKinds().find(filename);
-  return it == pluginKinds().end() ? PluginKind::Unknown : it->second;
-}
+const PluginFile* findPluginFile(const std::string& filename) { return Registry<PluginFile>::instance().find(filename); }
 
 std::string simulatedPluginNames()
 {
   std::string names = "gazebo_ros_control";
-  for (const auto& kind : pluginKinds())  // "libgazebo_ros_x.so" -> "gazebo_ros_x"
-    names += ", " + kind.first.substr(3, kind.first.size() - 6);
+  for (const std::string& file : Registry<PluginFile>::instance().names())  // "libgazebo_ros_x.so" -> "gazebo_ros_x"
+    names += ", " + file.substr(3, file.size() - 6);
   return names;
 }
 
@@ -337,7 +274,8 @@ void readPluginBlock(const tinyxml2::XMLElement* plugin, SensorDescription& d)
 {
   d.plugin_name = plugin->Attribute("name") ? plugin->Attribute("name") : "";
   d.plugin_filename = plugin->Attribute("filename") ? plugin->Attribute("filename") : "";
-  d.plugin_kind = pluginKind(d.plugin_filename);
+  d.plugin_given = true;
+  d.plugin_file = findPluginFile(d.plugin_filename);
   for (auto* p = plugin->FirstChildElement(); p; p = p->NextSiblingElement())
     d.plugin[p->Name()] = p->GetText() ? xml::trimmed(p->GetText()) : "";
 }
@@ -349,13 +287,13 @@ std::string unknownPluginWarning(const std::string& name, const std::string& fil
 }
 
 // gazebo_ros_imu and gazebo_ros_p3d: model plugins that follow one link (bodyName).
-void readModelPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
+void readLinkSensorPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
 {
   SensorDescription d;
   readPluginBlock(plugin, d);
   d.model_plugin = true;
   d.name = d.plugin_name.empty() ? d.plugin_filename : d.plugin_name;
-  d.type = d.plugin_kind == PluginKind::P3d ? "p3d" : "imu";
+  d.type = d.plugin_file->sensor_type;
   d.link = d.pluginParam("bodyName");
   if (d.link.empty() || !out.model->getLink(d.link))
   {
@@ -365,13 +303,13 @@ void readModelPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
     return;
   }
   const std::string frame = d.pluginParam("frameName", "world");
-  if (d.plugin_kind == PluginKind::P3d && frame != "world" && frame != "/world" && frame != "map" && frame != "/map" &&
+  if (d.type == "p3d" && frame != "world" && frame != "/world" && frame != "map" && frame != "/map" &&
       !out.model->getLink(frame))
   {
     out.errors.push_back("gazebo_ros_p3d plugin: frameName: " + frame + " does not exist, will not publish pose");
     return;
   }
-  if (d.plugin_kind == PluginKind::P3d && d.pluginParam("topicName").empty())
+  if (d.type == "p3d" && d.pluginParam("topicName").empty())
   {
     out.errors.push_back("plugin '" + d.name + "' (libgazebo_ros_p3d.so) has no <topicName>; it publishes nothing");
     return;
@@ -494,17 +432,16 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
       for (auto* p = g->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin"))
       {
         const std::string filename = p->Attribute("filename") ? p->Attribute("filename") : "";
-        const PluginKind kind = pluginKind(filename);
+        const PluginFile* file = findPluginFile(filename);
         if (filename == "libgazebo_ros_control.so")
           readControlPlugin(p, out);
-        else if (kind == PluginKind::ImuModel || kind == PluginKind::P3d)
-          readModelPlugin(p, out);
-        else if (isModelPluginKind(kind))
+        else if (file && file->role == PluginRole::LinkSensor)
+          readLinkSensorPlugin(p, out);
+        else if (file && file->role == PluginRole::Model)
         {
           ModelPluginDescription d;
           d.name = p->Attribute("name") ? p->Attribute("name") : "";
           d.filename = filename;
-          d.kind = kind;
           for (auto* e = p->FirstChildElement(); e; e = e->NextSiblingElement())
             d.params[e->Name()] = e->GetText() ? xml::trimmed(e->GetText()) : "";
           out.model_plugins.push_back(std::move(d));
@@ -542,34 +479,16 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     {
       out.sensors.push_back(std::move(sensor));
       SensorDescription& d = out.sensors.back();
-      if (d.plugin_kind == PluginKind::Unknown || d.plugin_kind == PluginKind::ImuModel ||
-          d.plugin_kind == PluginKind::P3d || isModelPluginKind(d.plugin_kind))
+      if (d.plugin_given && (!d.plugin_file || d.plugin_file->role != PluginRole::Sensor))
       {
         out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));
-        d.plugin_kind = PluginKind::Unknown;  // a model plugin's file in a <sensor> is no sensor plugin
+        d.plugin_file = nullptr;  // a model plugin's file in a <sensor> is no sensor plugin
       }
-      const PluginKind k = d.plugin_kind;
-      const bool needs_ray = k == PluginKind::Range || k == PluginKind::Velodyne || k == PluginKind::BlockLaser ||
-                             k == PluginKind::HectorSonar;
-      if (needs_ray && d.type != "ray" &&
-          d.type != "gpu_ray")
+      const std::string refusal = d.plugin_file && d.plugin_file->refusal ? d.plugin_file->refusal(d) : "";
+      if (!refusal.empty())
       {
-        out.errors.push_back("sensor '" + d.name + "': " + d.plugin_filename + " needs a <sensor type=\"ray\"> or "
-                             "\"gpu_ray\" (\"requires a Ray Sensor as its parent\"), not '" + d.type +
-                             "'; it publishes nothing");
-        d.plugin_kind = PluginKind::None;
-      }
-      if (k == PluginKind::Bumper && d.type != "contact")
-      {
-        out.errors.push_back("sensor '" + d.name + "': libgazebo_ros_bumper.so needs a <sensor type=\"contact\"> (\"Contact "
-                             "sensor parent is not of type ContactSensor\"), not '" + d.type + "'; it publishes nothing");
-        d.plugin_kind = PluginKind::None;
-      }
-      if (d.type == "imu" && d.plugin_kind == PluginKind::ImuSensor && !d.hasPluginParam("frameName"))
-      {
-        out.errors.push_back("sensor '" + d.name + "': gazebo_ros_imu_sensor needs <frameName> (\"missing <frameName>, "
-                             "cannot proceed\"); it publishes nothing");
-        d.plugin_kind = PluginKind::None;
+        out.errors.push_back("sensor '" + d.name + "': " + refusal + "; it publishes nothing");
+        d.plugin_file = nullptr;
       }
     }
   }

@@ -203,6 +203,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosDiffDrive() { return std::unique_ptr<ModelPlugin>(new GazeboRosDiffDrive()); }
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosDiffDrive, modelPluginFile(PluginNaming::GazeboRos), "libgazebo_ros_diff_drive.so");
 
 }  // namespace bullet_plant

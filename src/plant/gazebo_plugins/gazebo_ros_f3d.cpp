@@ -42,6 +42,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosF3d() { return std::unique_ptr<ModelPlugin>(new GazeboRosF3d()); }
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosF3d, modelPluginFile(), "libgazebo_ros_f3d.so");
 
 }  // namespace bullet_plant

@@ -41,6 +41,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosForce() { return std::unique_ptr<ModelPlugin>(new GazeboRosForce()); }
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosForce, modelPluginFile(), "libgazebo_ros_force.so");
 
 }  // namespace bullet_plant

@@ -99,9 +99,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosForceBasedMove()
-{
-  return std::unique_ptr<ModelPlugin>(new GazeboRosForceBasedMove());
-}
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosForceBasedMove, modelPluginFile(), "libgazebo_ros_force_based_move.so");
 
 }  // namespace bullet_plant

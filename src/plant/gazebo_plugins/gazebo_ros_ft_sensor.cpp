@@ -63,6 +63,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosFtSensor() { return std::unique_ptr<ModelPlugin>(new GazeboRosFtSensor()); }
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosFtSensor, modelPluginFile(), "libgazebo_ros_ft_sensor.so");
 
 }  // namespace bullet_plant

@@ -164,6 +164,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosHandOfGod() { return std::unique_ptr<ModelPlugin>(new GazeboRosHandOfGod()); }
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosHandOfGod, modelPluginFile(), "libgazebo_ros_hand_of_god.so");
 
 }  // namespace bullet_plant

@@ -111,9 +111,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosJointPoseTrajectory()
-{
-  return std::unique_ptr<ModelPlugin>(new GazeboRosJointPoseTrajectory());
-}
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosJointPoseTrajectory, modelPluginFile(), "libgazebo_ros_joint_pose_trajectory.so");
 
 }  // namespace bullet_plant

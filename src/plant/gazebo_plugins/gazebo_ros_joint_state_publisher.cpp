@@ -72,9 +72,7 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosJointStatePublisher()
-{
-  return std::unique_ptr<ModelPlugin>(new GazeboRosJointStatePublisher());
-}
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosJointStatePublisher, modelPluginFile(PluginNaming::ModelNamespace),
+                        "libgazebo_ros_joint_state_publisher.so");
 
 }  // namespace bullet_plant

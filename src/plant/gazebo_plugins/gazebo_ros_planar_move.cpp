@@ -105,6 +105,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosPlanarMove() { return std::unique_ptr<ModelPlugin>(new GazeboRosPlanarMove()); }
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosPlanarMove, modelPluginFile(), "libgazebo_ros_planar_move.so");
 
 }  // namespace bullet_plant

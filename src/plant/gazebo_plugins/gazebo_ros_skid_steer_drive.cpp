@@ -102,6 +102,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosSkidSteerDrive() { return std::unique_ptr<ModelPlugin>(new GazeboRosSkidSteerDrive()); }
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosSkidSteerDrive, modelPluginFile(), "libgazebo_ros_skid_steer_drive.so");
 
 }  // namespace bullet_plant

@@ -190,9 +190,7 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeGazeboRosTricycleDrive()
-{
-  return std::unique_ptr<ModelPlugin>(new GazeboRosTricycleDrive());
-}
+GAZEBO_ROS_MODEL_PLUGIN(GazeboRosTricycleDrive, modelPluginFile(PluginNaming::GazeboRos),
+                        "libgazebo_ros_tricycle_drive.so");
 
 }  // namespace bullet_plant

@@ -96,6 +96,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeHectorGazeboRosGps() { return std::unique_ptr<ModelPlugin>(new HectorGazeboRosGps()); }
+GAZEBO_ROS_MODEL_PLUGIN(HectorGazeboRosGps, modelPluginFile(), "libhector_gazebo_ros_gps.so");
 
 }  // namespace bullet_plant

@@ -148,6 +148,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeHectorGazeboRosImu() { return std::unique_ptr<ModelPlugin>(new HectorGazeboRosImu()); }
+GAZEBO_ROS_MODEL_PLUGIN(HectorGazeboRosImu, modelPluginFile(), "libhector_gazebo_ros_imu.so");
 
 }  // namespace bullet_plant

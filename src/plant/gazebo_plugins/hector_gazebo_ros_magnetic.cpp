@@ -65,9 +65,6 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeHectorGazeboRosMagnetic()
-{
-  return std::unique_ptr<ModelPlugin>(new HectorGazeboRosMagnetic());
-}
+GAZEBO_ROS_MODEL_PLUGIN(HectorGazeboRosMagnetic, modelPluginFile(), "libhector_gazebo_ros_magnetic.so");
 
 }  // namespace bullet_plant

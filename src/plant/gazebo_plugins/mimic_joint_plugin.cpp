@@ -103,6 +103,7 @@ private:
 };
 }  // namespace
 
-std::unique_ptr<ModelPlugin> makeMimicJointPlugin() { return std::unique_ptr<ModelPlugin>(new MimicJointPlugin()); }
+GAZEBO_ROS_MODEL_PLUGIN(MimicJointPlugin, modelPluginFile(PluginNaming::Default, "hasPID"),
+                        "libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so", "libroboticsgroup_gazebo_mimic_joint_plugin.so");
 
 }  // namespace bullet_plant

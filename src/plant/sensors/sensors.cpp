@@ -17,8 +17,7 @@ Sensor::Sensor(const SensorDescription& d, uint32_t noise_seed)
 
 bool Sensor::publishesOnRos() const
 {
-  const PluginKind kind = description_.plugin_kind;
-  return kind != PluginKind::None && kind != PluginKind::Unknown;
+  return description_.plugin_file != nullptr;
 }
 
 void Sensor::updateIfDue(SensorContext& context, int64_t time_ns)

@@ -653,7 +653,7 @@ void createModelPlugins(Robot::Internals& r)
 {
   for (const ModelPluginDescription& d : r.description.model_plugins)
   {
-    std::unique_ptr<ModelPlugin> plugin = createModelPlugin(d.kind);
+    std::unique_ptr<ModelPlugin> plugin = createModelPlugin(d.filename);
     if (!plugin)
       continue;
     plugin->setDescription(d);
