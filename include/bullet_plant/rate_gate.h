@@ -1,5 +1,6 @@
-// Rates in simulated time, in one place: a period from a rate, and the gate Gazebo's sensors and
-// gazebo_ros's plugins update through (the sensors, the ground-truth odometry, /clock).
+// Rates in simulated time, in one place: a period from a rate, and the two gates updates go through:
+// RateGate, Gazebo's sensors' (the sensors, the ground-truth odometry, /clock, gazebo_ros_range), and
+// CatchUpRateGate, the `last += period` form of gazebo_plugins' drives and ros_controllers.
 #pragma once
 
 #include <cmath>
@@ -41,6 +42,37 @@ public:
 private:
   int64_t period_ns_ = 0;
   int64_t last_ns_ = -1;
+};
+
+// The other form upstream writes, in gazebo_plugins' drives and joint_state_publisher and in
+// ros_controllers' odometry and joint state publishers: open once more than `period_ns` has passed
+// since its clock (strictly), which then moves on by one period, not to the time of the call, so the
+// updates keep to the period's grid and one that came late is caught up at the next call:
+//   if (now - last > period) { ...; last += period; }
+// Its clock starts where the plugin or controller starts it (restart); time going back does not
+// reopen it, as upstream's does not.
+class CatchUpRateGate
+{
+public:
+  explicit CatchUpRateGate(int64_t period_ns = 0) : period_ns_(period_ns) {}
+  int64_t periodNs() const { return period_ns_; }
+  void setPeriodNs(int64_t period_ns) { period_ns_ = period_ns; }
+  // The clock, set to `time_ns`: the next opening is more than a period after it.
+  void restart(int64_t time_ns) { last_ns_ = time_ns; }
+  // The clock: the last opening's place on the grid (what upstream's plugins measure dt from).
+  int64_t lastNs() const { return last_ns_; }
+  // True when more than a period has passed at `time_ns` since the clock, which then moves on by one period.
+  bool due(int64_t time_ns)
+  {
+    if (time_ns - last_ns_ <= period_ns_)
+      return false;
+    last_ns_ += period_ns_;
+    return true;
+  }
+
+private:
+  int64_t period_ns_ = 0;
+  int64_t last_ns_ = 0;
 };
 
 }  // namespace bullet_plant

@@ -1,4 +1,5 @@
-// RateGate and periodNsOfRate: the one update gate of the sensors, the ground-truth odometry and /clock.
+// RateGate and periodNsOfRate: the one update gate of the sensors, the ground-truth odometry and /clock;
+// CatchUpRateGate: the `last += period` form of gazebo_plugins' drives and ros_controllers.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -72,4 +73,45 @@ TEST(RateGate, WouldOpenForetellsWhetherTheCallsUpToATimeOpenItWithoutOpeningIt)
   }
   EXPECT_EQ(scanning_windows, 8);  // at 1, 26, 51, ..., 176 ms: every second or third window
   EXPECT_TRUE(gate.wouldOpen(1000000)) << "time went back: it opens at once";
+}
+
+// CatchUpRateGate: upstream's `if (now - last > period) { ...; last += period; }`.
+using bullet_plant::CatchUpRateGate;
+
+TEST(CatchUpRateGate, OpensStrictlyAfterAPeriodFromWhereItWasRestarted)
+{
+  CatchUpRateGate gate(periodNsOfRate(100.0));  // 10 ms
+  gate.restart(0);
+  std::vector<int64_t> opened;
+  for (int64_t t = 0; t <= 50000000; t += 1000000)  // 1 ms steps for 50 ms
+    if (gate.due(t))
+      opened.push_back(t);
+  EXPECT_EQ(opened, (std::vector<int64_t>{11000000, 21000000, 31000000, 41000000}))
+      << "a period having passed is not enough: more than one must";
+  EXPECT_EQ(gate.lastNs(), 40000000) << "its clock stays on the period's grid, not at the call";
+}
+
+TEST(CatchUpRateGate, ALateCallIsCaughtUpOnTheFollowingCalls)
+{
+  CatchUpRateGate gate(10);
+  gate.restart(0);
+  EXPECT_TRUE(gate.due(35));  // three periods late
+  EXPECT_EQ(gate.lastNs(), 10);
+  EXPECT_TRUE(gate.due(36));
+  EXPECT_TRUE(gate.due(37));
+  EXPECT_FALSE(gate.due(38)) << "caught up: 38 is within a period of its clock (30)";
+  EXPECT_EQ(gate.lastNs(), 30);
+}
+
+TEST(CatchUpRateGate, WithoutAPeriodOpensWhenTimeMovesAndTimeGoingBackKeepsItShut)
+{
+  CatchUpRateGate gate;
+  gate.restart(5);
+  EXPECT_FALSE(gate.due(5)) << "no time has passed";
+  EXPECT_TRUE(gate.due(6));
+  CatchUpRateGate slow(100);
+  slow.restart(1000);
+  EXPECT_FALSE(slow.due(10)) << "unlike RateGate, time going back does not reopen it (upstream's neither)";
+  slow.restart(10);
+  EXPECT_TRUE(slow.due(111));
 }

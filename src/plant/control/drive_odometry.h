@@ -11,6 +11,7 @@
 
 #include <urdf_parser/urdf_parser.h>
 
+#include "bullet_plant/geometry.h"
 #include "control/controller_support.h"
 
 namespace bullet_plant
@@ -187,7 +188,7 @@ public:
   {
     brake();
     running_ = true;
-    last_publish_ns_ = time_ns;
+    publish_gate_.restart(time_ns);
     odometry_.init(time_ns, window_size_);
     restartMeasurement();
     last0_ = last1_ = Command();
@@ -207,11 +208,8 @@ public:
       odometry_.updateOpenLoop(last0_.linear, last0_.angular, time_ns);
     else
       measureOdometry(time_ns);
-    if (publish_period_ns_ > 0 && last_publish_ns_ + publish_period_ns_ < time_ns)
-    {
-      last_publish_ns_ += publish_period_ns_;
+    if (publish_gate_.periodNs() > 0 && publish_gate_.due(time_ns))  // a publish_rate of 0: never
       publishOdometry(time_ns);
-    }
     Command command = command_;
     if ((time_ns - command.stamp_ns) * 1e-9 > cmd_vel_timeout_)
       command.linear = command.angular = 0.0;  // brake: the commands are too old
@@ -229,7 +227,7 @@ protected:
   {
     log_ = &c.log;
     ns_ = c.ns;
-    publish_period_ns_ = periodNsOfRate(paramNumber(c, "publish_rate", 50.0));
+    publish_gate_.setPeriodNs(periodNsOfRate(paramNumber(c, "publish_rate", 50.0)));
     open_loop_ = paramFlag(c, "open_loop", false);
     window_size_ = size_t(std::max(1.0, paramNumber(c, "velocity_rolling_window_size", 10.0)));
     cmd_vel_timeout_ = paramNumber(c, "cmd_vel_timeout", 0.5);
@@ -297,7 +295,8 @@ private:
   double cmd_vel_timeout_ = 0.5;
   bool open_loop_ = false, running_ = false;
   size_t window_size_ = 10;
-  int64_t publish_period_ns_ = 0, last_publish_ns_ = 0, last_update_ns_ = 0;
+  CatchUpRateGate publish_gate_;  // publish_rate
+  int64_t last_update_ns_ = 0;
   Command command_, last0_, last1_;
 };
 

@@ -19,7 +19,7 @@ public:
       c.log.error("Parameter 'publish_rate' not set");
       return false;
     }
-    publish_period_ns_ = periodNsOfRate(rate->asDouble());  // 0: never publishes
+    publish_gate_.setPeriodNs(periodNsOfRate(rate->asDouble()));  // 0: never publishes
     // Default: every joint with a state handle, sorted by name as the hardware interface lists them.
     std::map<std::string, JointHandle*> by_name;
     for (JointHandle& h : c.joints.handles())
@@ -61,13 +61,12 @@ public:
     return true;
   }
 
-  void starting(int64_t time_ns) override { last_publish_ns_ = time_ns; }
+  void starting(int64_t time_ns) override { publish_gate_.restart(time_ns); }
 
   void update(int64_t time_ns, double) override
   {
-    if (publish_period_ns_ <= 0 || last_publish_ns_ + publish_period_ns_ >= time_ns)
+    if (publish_gate_.periodNs() <= 0 || !publish_gate_.due(time_ns))
       return;
-    last_publish_ns_ += publish_period_ns_;
     JointStateSample s;
     s.stamp_ns = time_ns;
     for (JointHandle* h : joints_)
@@ -92,7 +91,7 @@ private:
   std::vector<JointHandle*> joints_;
   std::vector<Extra> extra_;
   OutputPort<JointStateSample>* joint_states_ = nullptr;
-  int64_t publish_period_ns_ = 0, last_publish_ns_ = 0;
+  CatchUpRateGate publish_gate_;  // publish_rate
 };
 }  // namespace
 

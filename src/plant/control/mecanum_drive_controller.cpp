@@ -44,7 +44,7 @@ public:
       claimed.resources.push_back(names_[w]);
     }
     claimed_.assign(1, claimed);
-    publish_period_ns_ = periodNsOfRate(paramNumber(c, "publish_rate", 50.0));
+    publish_gate_.setPeriodNs(periodNsOfRate(paramNumber(c, "publish_rate", 50.0)));
     open_loop_ = paramFlag(c, "open_loop", false);
     cmd_vel_timeout_ = paramNumber(c, "cmd_vel_timeout", 0.5);
     limiters_[0].read(c, "linear/x");
@@ -65,7 +65,8 @@ public:
   {
     brake();
     running_ = true;
-    last_publish_ns_ = last_update_ns_ = odometry_ns_ = time_ns;
+    publish_gate_.restart(time_ns);
+    last_update_ns_ = odometry_ns_ = time_ns;
     command_ = last_ = Command{};
     command_.stamp_ns = time_ns;
   }
@@ -80,11 +81,8 @@ public:
   {
     last_update_ns_ = time_ns;
     updateOdometry(time_ns);
-    if (publish_period_ns_ > 0 && last_publish_ns_ + publish_period_ns_ < time_ns)
-    {
-      last_publish_ns_ += publish_period_ns_;
+    if (publish_gate_.periodNs() > 0 && publish_gate_.due(time_ns))  // a publish_rate of 0: never
       publishOdometry(time_ns);
-    }
     Command command = command_;
     if ((time_ns - command.stamp_ns) * 1e-9 > cmd_vel_timeout_)
       command.v = {0.0, 0.0, 0.0};  // brake: the command is too old (and still within the limits)
@@ -249,7 +247,8 @@ private:
   SpeedLimiter limiters_[3];   // linear/x, linear/y, angular/z (their velocity and acceleration limits)
   double cmd_vel_timeout_ = 0.5;
   bool open_loop_ = false, running_ = false, enable_odom_tf_ = true;
-  int64_t publish_period_ns_ = 0, last_publish_ns_ = 0, last_update_ns_ = 0, odometry_ns_ = 0;
+  CatchUpRateGate publish_gate_;  // publish_rate
+  int64_t last_update_ns_ = 0, odometry_ns_ = 0;
   Command command_, last_;
   std::array<double, 3> twist_{};
   double x_ = 0, y_ = 0, heading_ = 0;  // kept over restarts, as upstream's Odometry::init

@@ -34,7 +34,7 @@ public:
     wheel_accel_ = d.number("wheelAcceleration", 0.0);
     wheel_torque_ = d.number("wheelTorque", 5.0);
     const double update_rate = d.number("updateRate", 100.0);
-    update_period_ns_ = periodNsOfRate(update_rate);
+    update_gate_.setPeriodNs(periodNsOfRate(update_rate));
     const std::string source = d.text("odometrySource", "world");
     if (source != "world" && source != "encoder")
     {
@@ -75,7 +75,7 @@ public:
 
   void Reset(int64_t time_ns) override
   {
-    last_update_ns_ = time_ns;
+    update_gate_.restart(time_ns);
     last_odometry_ns_ = 0;  // as upstream's, never set before the first encoder update
     encoder_x_ = encoder_y_ = encoder_theta_ = 0.0;
     command_ = TwistCommand();
@@ -92,8 +92,8 @@ public:
   {
     if (encoder_odometry_)
       updateOdometryEncoder(time_ns);
-    const double since_last_update = (time_ns - last_update_ns_) * 1e-9;
-    if (time_ns - last_update_ns_ <= update_period_ns_)
+    const double since_last_update = (time_ns - update_gate_.lastNs()) * 1e-9;
+    if (!update_gate_.due(time_ns))
       return;
     if (publish_tf_)
       publishOdometry(time_ns);
@@ -127,7 +127,6 @@ public:
       motors_[kLeft]->setVelocity(wheel_speed_instr_[kLeft] / radius);
       motors_[kRight]->setVelocity(wheel_speed_instr_[kRight] / radius);
     }
-    last_update_ns_ += update_period_ns_;
   }
 
 private:
@@ -191,7 +190,8 @@ private:
   ModelJoint* motors_[2] = {nullptr, nullptr};
   std::string joint_names_[2], wheel_links_[2], wheel_frames_[2], wheel_parent_frames_[2];
   double wheel_separation_ = 0.34, wheel_diameter_ = 0.15, wheel_accel_ = 0.0, wheel_torque_ = 5.0;
-  int64_t update_period_ns_ = 0, last_update_ns_ = 0, last_odometry_ns_ = 0;
+  CatchUpRateGate update_gate_;  // updateRate
+  int64_t last_odometry_ns_ = 0;
   bool encoder_odometry_ = false, publish_tf_ = true, publish_odom_tf_ = true;
   bool publish_wheel_tf_ = false, publish_wheel_joint_state_ = false;
   double wheel_speed_[2] = {0, 0}, wheel_speed_instr_[2] = {0, 0};

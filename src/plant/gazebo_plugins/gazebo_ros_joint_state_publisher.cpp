@@ -41,17 +41,17 @@ public:
       return false;
     }
     const double update_rate = d.number("updateRate", 100.0);
-    update_period_ns_ = periodNsOfRate(update_rate);
+    update_gate_.setPeriodNs(periodNsOfRate(update_rate));
     port_ = &advertise<JointStateSample>("joint_states");
     Reset(time_ns);
     return true;
   }
 
-  void Reset(int64_t time_ns) override { last_update_ns_ = time_ns; }
+  void Reset(int64_t time_ns) override { update_gate_.restart(time_ns); }
 
   void OnUpdate(int64_t time_ns) override
   {
-    if (time_ns - last_update_ns_ <= update_period_ns_)
+    if (!update_gate_.due(time_ns))
       return;
     JointStateSample s;
     s.stamp_ns = time_ns;
@@ -61,13 +61,12 @@ public:
     for (size_t i = 0; i < joint_names_.size(); ++i)
       context_->jointState(joint_names_[i], s.position[i], s.velocity[i]);
     port_->publish(s);
-    last_update_ns_ += update_period_ns_;
   }
 
 private:
   ModelPluginContext* context_ = nullptr;
   std::vector<std::string> joint_names_;
-  int64_t update_period_ns_ = 0, last_update_ns_ = 0;
+  CatchUpRateGate update_gate_;  // updateRate
   OutputPort<JointStateSample>* port_ = nullptr;
 };
 }  // namespace

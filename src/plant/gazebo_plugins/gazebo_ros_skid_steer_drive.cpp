@@ -27,7 +27,7 @@ public:
     const std::string odometry_topic = d.text("odometryTopic", "odom");
     readOdometryFrames(d, context, odometry_);
     const double update_rate = d.number("updateRate", 100.0);
-    update_period_ns_ = periodNsOfRate(update_rate);
+    update_gate_.setPeriodNs(periodNsOfRate(update_rate));
     odometry_.pose_covariance_diagonal = odometry_.twist_covariance_diagonal =
         planarCovariance(d.number("covariance_x", 0.0001), d.number("covariance_y", 0.0001),
                          d.number("covariance_yaw", 0.01));
@@ -55,7 +55,7 @@ public:
   // plant's reset puts the plugin back to how Load left it, as a reset world expects.
   void Reset(int64_t time_ns) override
   {
-    last_update_ns_ = time_ns;
+    update_gate_.restart(time_ns);
     command_ = TwistCommand();
     for (ModelJoint* j : joints_)
       j->setVelocity(0.0);
@@ -63,7 +63,7 @@ public:
 
   void OnUpdate(int64_t time_ns) override
   {
-    if (time_ns - last_update_ns_ <= update_period_ns_)
+    if (!update_gate_.due(time_ns))
       return;
     publishOdometry(time_ns);
     const double radius = wheel_diameter_ / 2.0;
@@ -73,7 +73,6 @@ public:
     joints_[kRightFront]->setVelocity(right / radius);
     joints_[kLeftRear]->setVelocity(left / radius);
     joints_[kRightRear]->setVelocity(right / radius);
-    last_update_ns_ += update_period_ns_;
   }
 
 private:
@@ -95,7 +94,7 @@ private:
   ModelJoint* joints_[4] = {nullptr, nullptr, nullptr, nullptr};
   double wheel_separation_ = 0.4, wheel_diameter_ = 0.15, torque_ = 5.0;
   bool broadcast_tf_ = false;
-  int64_t update_period_ns_ = 0, last_update_ns_ = 0;
+  CatchUpRateGate update_gate_;  // updateRate
   OdometrySample odometry_;
   OutputPort<OdometrySample>* odometry_port_ = nullptr;
   OutputPort<TransformSample>* tf_port_ = nullptr;

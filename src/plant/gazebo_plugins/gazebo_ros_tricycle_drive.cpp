@@ -36,7 +36,7 @@ public:
     wheel_speed_tolerance_ = d.number("wheelSpeedTolerance", 0.01);
     steering_speed_ = d.number("steeringSpeed", 0.0);
     steering_angle_tolerance_ = d.number("steeringAngleTolerance", 0.01);
-    update_period_ns_ = periodNsOfRate(d.number("updateRate", 100.0));
+    actuator_gate_.setPeriodNs(periodNsOfRate(d.number("updateRate", 100.0)));
     encoder_odometry_ = d.text("odometrySource", "world") == "encoder";
     publish_wheel_tf_ = d.flag("publishWheelTF", false);
     publish_wheel_joint_state_ = d.flag("publishWheelJointState", false);
@@ -65,7 +65,7 @@ public:
     tf_port_ = &advertise<TransformSample>("/tf");
     if (publish_wheel_joint_state_)
       joint_state_port_ = &advertise<JointStateSample>("joint_states");
-    last_actuator_update_ns_ = time_ns;
+    actuator_gate_.restart(time_ns);
     return true;
   }
 
@@ -77,16 +77,15 @@ public:
   {
     if (encoder_odometry_)
       updateOdometryEncoder(time_ns);
-    if (time_ns - last_actuator_update_ns_ <= update_period_ns_)
+    const double since_last_update = (time_ns - actuator_gate_.lastNs()) * 1e-9;
+    if (!actuator_gate_.due(time_ns))
       return;
-    const double since_last_update = (time_ns - last_actuator_update_ns_) * 1e-9;
     publishOdometry(time_ns);
     if (publish_wheel_tf_)
       publishWheelTf(time_ns);
     if (publish_wheel_joint_state_)
       publishWheelJointState(time_ns);
     motorController(command_.linear_x / (actuated_diameter_ / 2.0), command_.angular_z, since_last_update);
-    last_actuator_update_ns_ += update_period_ns_;
   }
 
 private:
@@ -180,7 +179,8 @@ private:
   double actuated_diameter_ = 0.15, encoder_diameter_ = 0.15, encoder_separation_ = 0.5, wheel_torque_ = 5.0;
   double wheel_acceleration_ = 0, wheel_deceleration_ = 0, wheel_speed_tolerance_ = 0.01;
   double steering_speed_ = 0, steering_angle_tolerance_ = 0.01;
-  int64_t update_period_ns_ = 0, last_actuator_update_ns_ = 0, last_odometry_ns_ = 0;
+  CatchUpRateGate actuator_gate_;  // updateRate
+  int64_t last_odometry_ns_ = 0;
   bool encoder_odometry_ = false, publish_wheel_tf_ = false, publish_wheel_joint_state_ = false;
   double encoder_x_ = 0, encoder_y_ = 0, encoder_theta_ = 0;
   OdometrySample odometry_;
