@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 
 #include <urdf_model/pose.h>
@@ -31,6 +32,16 @@ urdf::Pose poseFromXyzRpy(double x, double y, double z, double roll, double pitc
 urdf::Pose compose(const urdf::Pose& a, const urdf::Pose& b);  // a * b
 urdf::Pose inverse(const urdf::Pose& p);
 urdf::Vector3 rotate(const urdf::Rotation& q, const urdf::Vector3& v);
+// The yaw of q about z (roll-pitch-yaw's, as ignition::math::Quaternion::Yaw() and tf's getYaw give it).
+inline double yawOf(const urdf::Rotation& q) { return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z)); }
+// A pose in the plane, the yaw about z (as the drives' odometry has it).
+inline urdf::Pose planarPose(double x, double y, double heading)
+{
+  urdf::Pose pose;
+  pose.position = urdf::Vector3(x, y, 0.0);
+  pose.rotation.setFromRPY(0.0, 0.0, heading);
+  return pose;
+}
 // urdf::Vector3 has + but neither - nor a scalar product.
 inline urdf::Vector3 sub(const urdf::Vector3& a, const urdf::Vector3& b) { return urdf::Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
 inline urdf::Vector3 scaled(const urdf::Vector3& a, double s) { return urdf::Vector3(a.x * s, a.y * s, a.z * s); }

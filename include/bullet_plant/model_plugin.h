@@ -14,9 +14,10 @@
 
 #include <urdf_model/pose.h>
 
-#include "bullet_plant/controllers.h"
+#include "bullet_plant/geometry.h"
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/message_ports.h"
+#include "bullet_plant/messages.h"
 #include "bullet_plant/registry.h"
 #include "bullet_plant/robot_description.h"
 

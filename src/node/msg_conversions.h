@@ -30,7 +30,7 @@
 
 #include "bullet_plant/controllers.h"
 #include "bullet_plant/inertial_sensors.h"
-#include "bullet_plant/plugin_messages.h"
+#include "bullet_plant/messages.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/sensors.h"
 #include "bullet_plant/action_messages.h"

@@ -4,8 +4,9 @@
 
 #include <cmath>
 
+#include "bullet_plant/geometry.h"
 #include "bullet_plant/model_plugin.h"
-#include "bullet_plant/plugin_messages.h"
+#include "bullet_plant/messages.h"
 #include "bullet_plant/action_messages.h"
 
 namespace bullet_plant
@@ -40,8 +41,6 @@ py::dict controllerStateDict(const ControllerStateSample& s)
   d["antiwindup"] = s.antiwindup;
   return d;
 }
-
-double yawOf(const urdf::Rotation& q) { return std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z)); }
 
 // The planar reading drives are used by (x, y, heading, linear.x, angular.z) and the full pose and twist.
 py::dict odometryDict(const OdometrySample& s)

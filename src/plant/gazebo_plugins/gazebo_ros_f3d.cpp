@@ -4,7 +4,7 @@
 // geometry_msgs/WrenchStamped on <topicName>, frame <frameName> ("world"). <bodyName> and
 // <topicName> are required, as upstream (docs/model_plugins.md).
 #include "bullet_plant/model_plugin.h"
-#include "bullet_plant/plugin_messages.h"
+#include "bullet_plant/messages.h"
 #include "bullet_plant/plugin_names.h"
 
 namespace bullet_plant

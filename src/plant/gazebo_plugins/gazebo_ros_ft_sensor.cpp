@@ -6,7 +6,7 @@
 #include "bullet_plant/gaussian_kernel.h"
 #include "bullet_plant/log.h"
 #include "bullet_plant/model_plugin.h"
-#include "bullet_plant/plugin_messages.h"
+#include "bullet_plant/messages.h"
 
 namespace bullet_plant
 {

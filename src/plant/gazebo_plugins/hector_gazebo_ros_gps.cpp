@@ -5,7 +5,7 @@
 // defaults, the phase-locked update timer and the formulas are upstream's (docs/model_plugins.md).
 #include <cmath>
 
-#include "bullet_plant/plugin_messages.h"
+#include "bullet_plant/messages.h"
 #include "bullet_plant/hector_sensor_model.h"
 
 namespace bullet_plant

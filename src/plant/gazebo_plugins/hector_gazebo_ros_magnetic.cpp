@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "bullet_plant/geometry.h"
-#include "bullet_plant/plugin_messages.h"
+#include "bullet_plant/messages.h"
 #include "bullet_plant/hector_sensor_model.h"
 
 namespace bullet_plant

@@ -10,18 +10,14 @@
 
 #include <urdf_model/pose.h>
 
+#include "bullet_plant/geometry.h"
 #include "bullet_plant/model_plugin.h"
 #include "bullet_plant/plugin_names.h"
 
 namespace bullet_plant
 {
-// ignition::math::Quaternion::Yaw(), rounded to float as the plugins store it.
-inline float yawOf(const urdf::Rotation& q)
-{
-  return float(std::atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z)));
-}
-
-// The world-frame velocity in the frame turned by yaw about z (x forward, y left; z dropped).
+// The world-frame velocity in the frame turned by yaw about z (x forward, y left; z dropped). The yaw
+// is a float as the plugins keep it (yawOf rounded).
 inline urdf::Vector3 inHeading(float yaw, const urdf::Vector3& world)
 {
   const float c = std::cos(yaw), s = std::sin(yaw);
