@@ -32,8 +32,7 @@ public:
     range_.min_range = float(d.range_min);
     range_.max_range = float(d.range_max);
     gaussian_noise_ = d.pluginNumber("gaussianNoise", 0.0);
-    const double update_rate = d.pluginNumber("updateRate", 0.0);
-    update_period_ns_ = periodNsOfRate(update_rate);
+    publish_gate_.setPeriodNs(periodNsOfRate(d.pluginNumber("updateRate", 0.0)));
     range_pub_ = nh.advertise<sensor_msgs::Range>(
         requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' topicName"), 1);
   }
@@ -45,9 +44,8 @@ public:
     if (!takeUpdate(*lidar_))
       return;
     const LaserScan& scan = lidar_->latest();
-    if (scan.stamp_ns - last_publish_ns_ < update_period_ns_)
+    if (!publish_gate_.due(scan.stamp_ns))
       return;
-    last_publish_ns_ = scan.stamp_ns;
     range_.header.stamp = rosTime(scan.stamp_ns);
     // Gazebo's rays report their full length where they hit nothing: the maximum range.
     float shortest = std::numeric_limits<float>::max();
@@ -63,7 +61,7 @@ private:
   Lidar* lidar_ = nullptr;
   sensor_msgs::Range range_;
   double gaussian_noise_ = 0.0;
-  int64_t update_period_ns_ = 0, last_publish_ns_ = std::numeric_limits<int64_t>::min() / 2;
+  RateGate publish_gate_;  // updateRate
   GaussianKernel gaussian_kernel_;
   ros::Publisher range_pub_;
 };
