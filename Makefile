@@ -1,5 +1,5 @@
 # Entry points of the Tianracer simulation. See README.md.
-#   make sim    install what is missing, build, start the simulation
+#   make sim    install what is missing, build, start the simulation and its browser viewer (GUI=false: headless)
 #   make test   install what is missing, build, run the whole test suite
 #   make bench  build, time the plant against MuJoCo and PyBullet (prints figures)
 SHELL := /bin/bash
@@ -15,11 +15,13 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 # Everything ROS runs on loopback only.
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
+# make sim: the browser viewer in gzclient's place (the tutorial's default), or false for headless.
+GUI ?= true
 
 .PHONY: help setup build test sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes figures step-cost soak clean
 
 help:
-	@echo "make sim    install what is missing, build, start the simulation"
+	@echo "make sim    install what is missing, build, start the simulation; open the address it prints first (GUI=false: headless)"
 	@echo "make test   install what is missing, build, run the whole test suite (PYTEST_ARGS=...)"
 	@echo "make demo   build, drive a figure-eight headless, print the figures, write figure_eight.png"
 	@echo "make setup  install what is missing (apt and pip); quiet when nothing is"
@@ -64,7 +66,7 @@ test: build
 	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) -m pytest $(PYTEST_ARGS)
 
 sim: build
-	@$(ROS_ENV) bash tools/sim.sh
+	@$(ROS_ENV) GUI=$(GUI) bash tools/sim.sh
 
 # The peers come from PyPI for $(PYTHON), like xacro in tools/setup.sh; only the benchmark needs them.
 bench: build
