@@ -12,7 +12,8 @@ by a glob (`compat/gazebo_msgs/msg/*.msg`) that the list shows as one line and t
 A `.cpp` without a header of its own shares the line of the `.h` beside it, or names the header
 of include/bullet_plant/ it implements. The rooms (a folder,
 its floor and what it may include) are the doc's rooms table: every tracked file belongs to the
-room with the longest matching folder, and a file in no room is an error naming it.
+room with the longest matching folder; a file in no room, or in a new sub-folder of a room that is
+divided into rooms (src/plant/), is an error naming it.
 Standard library only: runs with /usr/bin/python3 before anything is built.
 """
 import argparse
@@ -171,6 +172,13 @@ def room_of(path, rooms):
     return best
 
 
+def _in_unlisted_subroom(path, room, rooms):
+    """Whether a file sits in a sub-folder of a room whose other sub-folders are rooms of their own
+    (src/plant/: a new folder there is a new room, with a floor, not part of its parent)."""
+    divided = any(folder.startswith(room + '/') for folder, _ in rooms) if room else False
+    return divided and os.path.dirname(path) != room
+
+
 def listing(files, rooms, descriptions, root=ROOT):
     """{room: [(paths, line text)]}, and the errors that keep a file from being described."""
     errors = []
@@ -195,6 +203,10 @@ def listing(files, rooms, descriptions, root=ROOT):
         room = room_of(p, rooms)
         if room is None:
             errors.append(f'{p} is in no room: add a row for its folder to the rooms table of {DOC}')
+            continue
+        if _in_unlisted_subroom(p, room, rooms):
+            errors.append(f'{p} is in a folder of {room}/, which is divided into rooms: add a row for '
+                          f'{os.path.dirname(p)}/ to the rooms table of {DOC} (its floor, what it may include)')
             continue
         if p in described:
             key, description = described[p]

@@ -48,3 +48,12 @@ def test_a_file_in_no_room_and_a_file_without_description_are_named():
     descriptions = architecture.read_descriptions(text)
     _, errors = architecture.listing(['examples/x.py'], rooms, descriptions)
     assert any(e.startswith('examples/x.py is in no room') for e in errors), errors
+
+
+def test_a_new_folder_in_a_room_divided_into_rooms_needs_a_row_of_its_own():
+    with open(os.path.join(ROOT, architecture.DOC), encoding='utf-8') as f:
+        text = f.read()
+    rooms = architecture.read_rooms(text)
+    _, errors = architecture.listing(['src/plant/new_room/x.cpp', 'test/new_folder/test_x.py'], rooms, [])
+    assert any(e.startswith('src/plant/new_room/x.cpp is in a folder of src/plant/') for e in errors), errors
+    assert not any(e.startswith('test/new_folder/test_x.py is in') for e in errors), errors
