@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from plant_helpers import TRACK_WORLD, find_fixture_packages, hold_steering
+from suite_paths import REPOSITORY
 from tianracer_description import bullet_plant
 
 FLOOR_TOP = 0.5   # the include's <pose> lifts the track by 0.5 m (the world adds a ground plane at 0)
@@ -128,7 +129,7 @@ def test_follow_the_gap_drives_the_mesh_race_track_with_every_floor_contact_alon
     # such contact "crashed" car 2 at step 230. The plant turns them to the face's normal.
     import os
     import sys
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'bench'))
+    sys.path.insert(0, os.path.join(REPOSITORY, 'bench'))
     from sensor_bench import write_mesh_track
     from tianracer_description.racing.follow_the_gap import FollowTheGap
     from tianracer_description.racing.track import centerline_file

@@ -8,10 +8,10 @@ import os
 
 import pytest
 
+from suite_paths import TEST_DIR
 from tianracer_description.ros_harness import PYTHON, tianracer_plant
 from tianracer_description.tianracer import PACKAGE, TUTORIAL_CONTROLLERS
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 
 # sha256 of the tutorial's two launch files as it prints them (tabs, comments, trailing spaces and all).
 TUTORIAL_LAUNCH_SHA256 = {
@@ -351,7 +351,7 @@ def test_a_script_reading_link_states_drives_the_car_with_ackermann_drive_stampe
     point from the base link's pose in /gazebo/link_states, commanding AckermannDriveStamped."""
     ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false'], 'tianracer_launch')
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
-    drive = ros.run([PYTHON, os.path.join(HERE, 'scripts', 'drive_to_point.py'), '_x:=2.0', '_y:=1.5',
+    drive = ros.run([PYTHON, os.path.join(TEST_DIR, 'scripts', 'drive_to_point.py'), '_x:=2.0', '_y:=1.5',
                      '_tolerance:=0.25', '_timeout:=40'], timeout=150)
     assert drive.returncode == 0, drive.stdout + drive.stderr
     final = ros.python(PRELUDE + """

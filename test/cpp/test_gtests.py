@@ -23,9 +23,10 @@ import xml.etree.ElementTree as ET
 import pytest
 from catkin.find_in_workspaces import find_in_workspaces
 from plant_helpers import ISA_VARIABLE, ISAS_RUN, embree_isas
+from suite_paths import TEST_DIR
 
 PACKAGE = 'tianracer_description'
-SOURCES = sorted(glob.glob(os.path.join(os.path.dirname(os.path.abspath(__file__)), 'cpp', 'test_*.cpp')))
+SOURCES = sorted(glob.glob(os.path.join(TEST_DIR, 'cpp', 'test_*.cpp')))
 CASE_TIMEOUT = 300  # s; a case that hangs fails instead of stalling the suite
 RAY_CASTING_SOURCES = {'test_ray_caster', 'test_world_meshes'}
 GL_SOURCES = {'test_gl_renderer'}

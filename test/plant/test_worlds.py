@@ -11,6 +11,7 @@ import re
 import pytest
 
 from plant_helpers import logged
+from suite_paths import REPOSITORY
 from tianracer_description import bullet_plant
 
 WALL_SDF = """<?xml version="1.0"?>
@@ -266,9 +267,8 @@ def test_malformed_model_file_names_the_model_file_and_line(tmp_path, model_path
 
 def test_shipped_worlds_read_by_file_as_by_text():
     import os
-    root = os.path.join(os.path.dirname(__file__), '..')
     for name in ('compat/gazebo_ros/worlds/empty.world', 'worlds/race_track.world'):
-        path = os.path.join(root, name)
+        path = os.path.join(REPOSITORY, name)
         by_file = load(path)
         by_text = bullet_plant.World.from_sdf(open(path).read())
         by_text.echo = False

@@ -5,6 +5,7 @@ import struct
 
 import numpy as np
 
+from suite_paths import FIXTURES
 from tianracer_description import bullet_plant
 from tianracer_description.tianracer import STEERING_JOINTS
 
@@ -21,7 +22,7 @@ def embree_isas():
 
 
 # The Gazebo-style package the tests ship (test/fixtures/gazebo_pkg) and its mesh track world.
-FIXTURES = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'fixtures')
+
 TRACK_WORLD = os.path.join(FIXTURES, 'gazebo_pkg', 'worlds', 'track.world')
 
 
@@ -154,6 +155,20 @@ def fixture_urdf(name, plugin, **params):
 
 # Small robots written for the tests, one per gazebo_plugins drive, as robot makers configure them.
 DIFF_BOT = os.path.join(FIXTURES, 'urdf', 'diff_bot.urdf')
+# The fixtures' wheels, as their URDFs write them: diff_bot's and skid_bot's radius and separation.
+DIFF_RADIUS, DIFF_SEPARATION = 0.035, 0.30
+SKID_RADIUS, SKID_SEPARATION = 0.04, 0.26
+
+
+def spawned(urdf=None, namespace='', name='diff_bot', params=None):
+    """A world with one robot (the diff_bot unless `urdf` is given) settled on the ground for 0.2 s."""
+    world = bullet_plant.World()
+    world.echo = False
+    if params:
+        world.load_params(params)
+    robot = world.spawn(urdf or diff_bot(), name, namespace=namespace)
+    world.step(200)  # settle on the ground
+    return world, robot
 
 
 def diff_bot(**params):
@@ -290,3 +305,16 @@ def arm_controllers(kind='position_controllers', **arm_controller):
     return {'arm': {'joint_state_controller': {'type': 'joint_state_controller/JointStateController',
                                                'publish_rate': 50},
                     'arm_controller': controller}}
+
+
+def start_arm(ros, tmp_path, kind='position_controllers', urdf=None):
+    """The node on `ros` with the arm spawned under /arm and its joint_state_controller and
+    arm_controller started by the spawner (the ROS tests of the arm's controllers and sensors)."""
+    import yaml
+    from tianracer_description.ros_harness import spawn_with_controllers, start_plant
+    (tmp_path / 'arm.urdf').write_text(urdf or arm({'position_controllers': 'Position', 'effort_controllers': 'Effort'}[kind]))
+    (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(arm_controllers(kind)))
+    plant = start_plant(ros)
+    spawn_with_controllers(ros, plant, str(tmp_path / 'arm.urdf'), str(tmp_path / 'controllers.yaml'), '/arm', 'arm',
+                           ['joint_state_controller', 'arm_controller'])
+    return plant

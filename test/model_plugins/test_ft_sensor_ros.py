@@ -4,8 +4,8 @@ geometry_msgs/WrenchStamped in the forearm's frame, stamped with sim time, and a
 shows in it."""
 import pytest
 
+from plant_helpers import start_arm
 from test_ft_sensor import G, FOREARM, HAND, arm_with_ft_sensors_urdf
-from test_joint_trajectory_controller_ros import start_arm
 
 pytestmark = pytest.mark.ros
 

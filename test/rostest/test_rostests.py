@@ -7,9 +7,10 @@ import subprocess
 
 import pytest
 
+from suite_paths import TEST_DIR
+
 pytestmark = pytest.mark.ros
 
-TEST_DIR = os.path.dirname(os.path.abspath(__file__))
 ROSTESTS = sorted(os.path.basename(path) for path in glob.glob(os.path.join(TEST_DIR, '*.test')))
 
 

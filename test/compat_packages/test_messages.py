@@ -5,6 +5,8 @@ import subprocess
 
 import pytest
 
+from suite_paths import REPOSITORY
+
 # From the real controller_manager_msgs 0.20, control_msgs 1.5, gazebo_msgs 2.9 (gazebo_ros_pkgs, ROS 1
 # Noetic) and ackermann_msgs 1.0 (docs/interfaces.md sections 1 and 10).
 REAL_MD5 = {
@@ -88,7 +90,7 @@ def rospack_find(package):
 
 
 def test_every_compat_package_is_found_by_rospack():
-    compat = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 'compat')
+    compat = os.path.join(REPOSITORY, 'compat')
     for package in sorted(os.listdir(compat)) + ['tianracer_description']:
         path = rospack_find(package)
         assert os.path.isfile(os.path.join(path, 'package.xml'))

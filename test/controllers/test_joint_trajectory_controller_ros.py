@@ -4,21 +4,10 @@ started by controller_manager's spawner, a goal sent with actionlib's own Simple
 /arm/arm_controller/follow_joint_trajectory (succeeded, preempted, cancelled, rejected, as actionlib
 reports them), feedback, the state topic, and a trajectory on the command topic."""
 import pytest
-import yaml
 
-from plant_helpers import arm, arm_controllers
-from tianracer_description.ros_harness import spawn_with_controllers, start_plant
+from plant_helpers import start_arm
 
 pytestmark = pytest.mark.ros
-
-
-def start_arm(ros, tmp_path, kind='position_controllers', urdf=None):
-    (tmp_path / 'arm.urdf').write_text(urdf or arm({'position_controllers': 'Position', 'effort_controllers': 'Effort'}[kind]))
-    (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(arm_controllers(kind)))
-    plant = start_plant(ros)
-    spawn_with_controllers(ros, plant, str(tmp_path / 'arm.urdf'), str(tmp_path / 'controllers.yaml'), '/arm', 'arm',
-                           ['joint_state_controller', 'arm_controller'])
-    return plant
 
 
 PROBE_SETUP = """

@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from plant_helpers import box_model, make_world, sdf_world
+from suite_paths import HELPERS
 from tianracer_description.urdf_geometry import _rpy_matrix
 
 BOX_CENTRE = (2.0, 0.1, 0.15)
@@ -176,12 +177,11 @@ def camera_frame_with(**environment):
     """What the car's camera and lidar give before the red box in a fresh process with `environment`
     added: the frame (flat), the frames and scans made in 34 ms, and what the plant said about the
     cameras."""
-    here = os.path.dirname(os.path.abspath(__file__))
     box = (f"<model name='box'><static>true</static><pose>{' '.join(map(str, BOX_CENTRE))} 0 0 0</pose><link name='link'>"
            f"<visual name='visual'><geometry><box><size>{' '.join(map(str, BOX_SIZE))}</size></box></geometry>"
            "<material><diffuse>1 0 0 1</diffuse></material></visual></link></model>")
     env = dict(os.environ, **environment)
-    run = subprocess.run([sys.executable, '-c', RENDER_SCRIPT % (here, box)], capture_output=True, text=True, env=env,
+    run = subprocess.run([sys.executable, '-c', RENDER_SCRIPT % (HELPERS, box)], capture_output=True, text=True, env=env,
                          timeout=120)
     assert run.returncode == 0, run.stderr
     return json.loads(run.stdout.strip().splitlines()[-1])

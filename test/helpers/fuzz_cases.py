@@ -1,7 +1,7 @@
 """The fuzz cases of test_fuzz.py: mutated URDFs, mutated SDF worlds and random sequences of Python API
 calls, each made from (kind, seed) alone, so a failing case is reproduced by its seed:
 
-    /usr/bin/python3 test/fuzz_cases.py urdf 1234 1     # kind, first seed, number of cases
+    /usr/bin/python3 test/helpers/fuzz_cases.py urdf 1234 1     # kind, first seed, number of cases
 
 Run as a script it runs the cases in this process and prints one JSON line per case:
 {"seed", "outcome" ('ran' or 'refused'), "detail", "seconds", "non_finite"}. A crash or a hang shows as

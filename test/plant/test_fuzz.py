@@ -1,5 +1,5 @@
 """Fuzzing: mutated URDFs, mutated SDF worlds and random sequences of Python API calls
-(test/fuzz_cases.py), CASES of each per run from seeds FUZZ_SEED (default 0) on, so a run is
+(test/helpers/fuzz_cases.py), CASES of each per run from seeds FUZZ_SEED (default 0) on, so a run is
 reproducible and `FUZZ_SEED=n make test PYTEST_ARGS='-k fuzz'` tries others. Cases run in
 subprocesses, BATCH to a process; a batch that crashes or hangs is rerun case by case, and the test
 fails naming the seeds. Every case must end in a run or a DescriptionError, within HANG seconds, with
@@ -12,7 +12,9 @@ import sys
 
 import pytest
 
-FUZZ_CASES = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'fuzz_cases.py')
+from suite_paths import HELPERS
+
+FUZZ_CASES = os.path.join(HELPERS, 'fuzz_cases.py')
 CASES = 200
 BATCH = 50
 HANG = 10.0              # s: a case slower than this counts as a hang
@@ -45,7 +47,7 @@ def test_fuzz_cases_never_crash_hang_or_go_non_finite(kind, least_run):
                 single, trouble = run_cases(kind, seed, 1)
                 rows += single
                 if trouble:
-                    failures.append('%s case %d (python3 test/fuzz_cases.py %s %d 1): %s' % (kind, seed, kind, seed,
+                    failures.append('%s case %d (python3 test/helpers/fuzz_cases.py %s %d 1): %s' % (kind, seed, kind, seed,
                                                                                             trouble))
         else:
             rows += batch

@@ -22,8 +22,9 @@ import matplotlib.image
 import numpy as np
 import pytest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-OUT = os.path.join(HERE, 'data', 'camera_references')
+from suite_paths import REPOSITORY, TEST_DIR
+
+OUT = os.path.join(TEST_DIR, 'data', 'camera_references')
 MESH_RACE_TRACK = 'mesh_race_track.world'  # written by bench/sensor_bench.py, not shipped
 
 # world file (in worlds/), the car's pose (x y z roll pitch yaw), a name for both
@@ -38,11 +39,11 @@ def world_file(world, directory):
     """`world` (one of worlds/, or the mesh race track) written into `directory` with its shadows off:
     the ray caster that recorded the references drew none."""
     if world == MESH_RACE_TRACK:
-        sys.path.insert(0, os.path.join(HERE, os.pardir, 'bench'))
+        sys.path.insert(0, os.path.join(REPOSITORY, 'bench'))
         from sensor_bench import write_mesh_track
         source = write_mesh_track(directory)[0]
     else:
-        source = os.path.join(HERE, os.pardir, 'worlds', world)
+        source = os.path.join(REPOSITORY, 'worlds', world)
     tree = ET.parse(source)
     scene = tree.getroot().find('world/scene')
     if scene is None:
