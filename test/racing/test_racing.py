@@ -4,12 +4,15 @@ bit from a seed and actions, renders a chase camera; follow the gap drives laps;
 environment (N worlds stepped in one C++ call) gives what N single environments give, on one thread
 or two; the centre line's arithmetic."""
 import math
+import os
+import sys
 
 import gymnasium
 import numpy as np
 import pytest
 from gymnasium.utils.env_checker import check_env
 
+from suite_paths import REPOSITORY
 import tianracer_description.racing  # noqa: F401  registers the environments
 from tianracer_description.racing.env import RaceEnv
 from tianracer_description.racing.follow_the_gap import FollowTheGap
@@ -242,7 +245,8 @@ def test_three_cars_racing_with_follow_the_gap_stay_off_the_walls_and_each_other
 def test_ppo_from_stable_baselines3_trains_on_the_vector_env():
     """The README's example, short: a few thousand PPO steps on two cars of the vector env (PyTorch on
     the CPU), through Sb3VecEnv; the ended episodes' last observations reach SB3 as it expects."""
-    from tianracer_description.racing.train_ppo import Sb3VecEnv, evaluate, model_policy, train
+    sys.path.insert(0, os.path.join(REPOSITORY, 'examples', 'racing'))  # the example is a program, no package
+    from train_ppo import Sb3VecEnv, evaluate, model_policy, train
     model = train(RACE_TRACK_WORLD, envs=2, timesteps=2048, n_steps=512)
     assert model.num_timesteps >= 2048
     assert math.isfinite(evaluate(model_policy(model), RACE_TRACK_WORLD, episodes=1, seed=0, steps=200))

@@ -1,6 +1,7 @@
-"""PPO on the vector environment with stable-baselines3 (PyTorch on the CPU): the worked example.
+"""PPO on the vector environment with stable-baselines3 (PyTorch on the CPU): the worked example, a
+program of its own (examples/, as f1tenth_gym keeps its examples), run with the workspace sourced:
 
-    /usr/bin/python3 -m tianracer_description.racing.train_ppo --envs 4 --timesteps 100000 --out ppo_race.zip
+    /usr/bin/python3 examples/racing/train_ppo.py --envs 4 --timesteps 100000 --out ppo_race.zip
 
 trains a MultiInputPolicy on RaceVectorEnv (all cars stepped in one C++ call) and prints the mean
 return of the untrained and the trained policy over the same seeded evaluation episodes.
