@@ -46,8 +46,8 @@ def test_a_file_in_no_room_and_a_file_without_description_are_named():
         text = f.read()
     rooms = architecture.read_rooms(text)
     descriptions = architecture.read_descriptions(text)
-    _, errors = architecture.listing(['examples/x.py'], rooms, descriptions)
-    assert any(e.startswith('examples/x.py is in no room') for e in errors), errors
+    _, errors = architecture.listing(['a_new_folder/x.py'], rooms, descriptions)
+    assert any(e.startswith('a_new_folder/x.py is in no room') for e in errors), errors
 
 
 def test_a_new_folder_in_a_room_divided_into_rooms_needs_a_row_of_its_own():
