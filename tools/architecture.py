@@ -218,6 +218,9 @@ def listing(files, rooms, descriptions, root=ROOT):
             entry = (p, _markdown(headers[p[:-4] + '.h']), [p, p[:-4] + '.h'])
         elif p.endswith('.cpp') and headers.get(_public_header(p)):
             entry = (p, f'implements `{_public_header(p)}`', [p])
+        elif not os.path.lexists(os.path.join(root, p)):
+            errors.append(f'{p} is tracked but not in the working tree: git rm it, or restore it')
+            continue
         else:
             errors.append(f'{p} has no description: give it a header comment or docstring, '
                           f'or a row in the table of descriptions of {DOC}')
