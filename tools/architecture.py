@@ -3,7 +3,8 @@
 
     tools/architecture.py --write    rewrite the list between the markers from `git ls-files`
     tools/architecture.py --check    exit 1 naming every listed file that does not exist, every
-                                     tracked file the list misses, and a list that is out of date
+                                     tracked file the list misses, a list that is out of date, and
+                                     every include or import that the rooms table does not allow
 
 A file's line is its own first header sentence (a module docstring, or the comment block a file
 starts with, after a shebang or an XML declaration; a Markdown file's title), so that the fact
@@ -13,7 +14,11 @@ A `.cpp` without a header of its own shares the line of the `.h` beside it, or n
 of include/bullet_plant/ it implements. The rooms (a folder,
 its floor and what it may include) are the doc's rooms table: every tracked file belongs to the
 room with the longest matching folder; a file in no room, or in a new sub-folder of a room that is
-divided into rooms (src/plant/), is an error naming it.
+divided into rooms (src/plant/), is an error naming it. The rooms table's "may include" says which
+rooms a room's C/C++ files may `#include "..."` (resolved as the compiler does, through the folders
+CMakeLists.txt puts on the include path) and its Python files may import of the package's own
+modules; an include it does not allow is an error naming the file, the line, the included file and
+the rule.
 Standard library only: runs with /usr/bin/python3 before anything is built.
 """
 import argparse
@@ -253,6 +258,197 @@ def render(lines, rooms):
     return '\n'.join(out)
 
 
+# The "may include" cell: before the first ';', the rooms (backticked, a sibling's name or a path
+# from the top) or these words, comma-separated; after it, prose on outside libraries, unchecked.
+EVERY_ROOM_BELOW = 'every room below'
+NOTHING = ('nothing', '-', '')
+CMAKE_KEYWORDS = {'PUBLIC', 'PRIVATE', 'INTERFACE', 'SYSTEM', 'BEFORE', 'AFTER'}
+C_FAMILY = ('.c', '.cc', '.cpp', '.cxx', '.h', '.hh', '.hpp', '.hxx', '.inl')
+QUOTED_INCLUDE = re.compile(r'^\s*#\s*include\s*"([^"]+)"', re.MULTILINE)
+PACKAGE = 'tianracer_description'
+
+
+def _room_name(folder):
+    return folder + '/' if folder else '(top level)'
+
+
+def read_include_rules(text):
+    """({room: set of rooms it may include, itself among them}, errors naming a cell the check cannot read
+    or a room that names one on its own floor or above)."""
+    start, stop = _section(text, ROOMS_BEGIN, ROOMS_END)
+    rows = _table_rows(text[start:stop])
+    rooms = read_rooms(text)
+    floors = {}
+    errors = []
+    for folder, floor in rooms:
+        try:
+            floors[folder] = int(floor)
+        except ValueError:
+            errors.append(f'{DOC}: the floor of {_room_name(folder)} is {floor!r}: write a number')
+            floors[folder] = 0
+    rules = {}
+    for (folder, _), cells in zip(rooms, rows):
+        allowed = {folder}
+        rooms_part = cells[3].split(';', 1)[0].strip() if len(cells) > 3 else ''
+        for item in (i.strip() for i in rooms_part.split(',')):
+            if item == EVERY_ROOM_BELOW:
+                allowed |= {f for f in floors if floors[f] < floors[folder]}
+                continue
+            if item in NOTHING:
+                continue
+            quoted = re.fullmatch(r'`([^`]+)`', item)
+            name = quoted.group(1).rstrip('/') if quoted else None
+            sibling = os.path.join(os.path.dirname(folder), name) if quoted and folder else name
+            room = sibling if sibling in floors else name if name in floors else None
+            if room is None:
+                errors.append(f'{DOC}: {_room_name(folder)} may include {item!r}, which is no room: name rooms '
+                              f'in backticks (`physics/`, `include/bullet_plant/`) or write "{EVERY_ROOM_BELOW}", '
+                              'and put outside libraries after a ";"')
+            elif floors[room] >= floors[folder]:
+                errors.append(f'{DOC}: {_room_name(folder)} (floor {floors[folder]}) may include {_room_name(room)}, '
+                              f'which is on floor {floors[room]}: a room includes only rooms on lower floors; '
+                              'renumber the floors or drop the room')
+            else:
+                allowed.add(room)
+        rules[folder] = allowed
+    return rules, floors, errors
+
+
+def _cmake_text(root):
+    """CMakeLists.txt without its comments ('' where there is none)."""
+    path = os.path.join(root, 'CMakeLists.txt')
+    if not os.path.exists(path):
+        return ''
+    with open(path, encoding='utf-8') as f:
+        return re.sub(r'#[^\n]*', '', f.read())
+
+
+def cmake_include_dirs(root=ROOT):
+    """The project's own folders CMakeLists.txt puts on the include path, in order (every target's:
+    a quoted include that resolves only through another target's folder fails to compile anyway)."""
+    cmake = _cmake_text(root)
+    dirs = []
+    for match in re.finditer(r'\b(target_include_directories|include_directories)\s*\(([^)]*)\)', cmake, re.I):
+        args = match.group(2).split()
+        for arg in args[1:] if match.group(1).lower().startswith('target') else args:
+            arg = re.sub(r'^\$\{(PROJECT_SOURCE_DIR|CMAKE_CURRENT_SOURCE_DIR|CMAKE_SOURCE_DIR)\}/?', '', arg)
+            if arg in CMAKE_KEYWORDS or '$' in arg or os.path.isabs(arg):
+                continue  # another package's folders: what is found there is no room of ours
+            arg = os.path.normpath(arg)
+            if arg not in dirs:
+                dirs.append(arg)
+    return dirs
+
+
+def python_module_rooms(root=ROOT):
+    """(the folder setup.py's package_dir puts the package in, {built module: folder of its sources})
+    for the pybind11 modules CMakeLists.txt builds into the package (OUTPUT_NAME)."""
+    setup = os.path.join(root, 'setup.py')
+    match = None
+    if os.path.exists(setup):
+        with open(setup, encoding='utf-8') as f:
+            match = re.search(r"package_dir\s*=\s*\{\s*['\"]['\"]\s*:\s*['\"]([^'\"]+)['\"]", f.read())
+    package_root = match.group(1) if match else ''
+    cmake = _cmake_text(root)
+    built = {}
+    for match in re.finditer(r'\bpybind11_add_module\s*\(\s*(\S+)([^)]*)\)', cmake):
+        target, sources = match.group(1), [s for s in match.group(2).split() if '.' in s]
+        name = re.search(r'set_target_properties\s*\(\s*' + re.escape(target) +
+                         r'\s[^)]*OUTPUT_NAME\s+([^\s)]+)', cmake)
+        if sources:
+            built[f'{PACKAGE}.{name.group(1) if name else target}'] = os.path.dirname(sources[0])
+    return package_root, built
+
+
+def _resolve_include(path, name, include_dirs, tracked):
+    """The tracked file `#include "name"` in path means: its own folder first, then the include path."""
+    for folder in [os.path.dirname(path)] + include_dirs:
+        candidate = os.path.normpath(os.path.join(folder, name))
+        if candidate in tracked:
+            return candidate
+    return None  # another package's header, found through its ${..._INCLUDE_DIRS}
+
+
+def _imported_modules(path, text):
+    """[(line, module)] for every import of the package's own modules, relative ones resolved."""
+    try:
+        tree = ast.parse(text)
+    except SyntaxError:
+        return []
+    parts = path[:-3].split('/') if path.endswith('.py') else []
+    package = parts[parts.index(PACKAGE):-1] if PACKAGE in parts else []
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found += [(node.lineno, alias.name) for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ''
+            if node.level:
+                if not package or node.level > len(package):
+                    continue
+                base = '.'.join(package[:len(package) - node.level + 1] + ([base] if base else []))
+            found += [(node.lineno, f'{base}.{alias.name}') for alias in node.names]  # a module or a name in one
+    return [(line, module) for line, module in found if module == PACKAGE or module.startswith(PACKAGE + '.')]
+
+
+def _resolve_module(module, package_root, built, tracked):
+    """The tracked file (or the folder of a built module's sources) an import of module reaches."""
+    parts = module.split('.')
+    while parts:
+        name = '.'.join(parts)
+        if name in built:
+            return built[name] + '/'
+        base = os.path.join(package_root, *parts)
+        for candidate in (base + '.py', os.path.join(base, '__init__.py')):
+            if candidate in tracked:
+                return candidate
+        parts.pop()  # `from package.module import name`: the name is no module
+    return None
+
+
+def include_violations(text, files, root=ROOT):
+    """Every C/C++ `#include "..."` and import of the package's own modules that the rooms table
+    does not allow, named by file and line, and the table's own errors."""
+    rules, floors, errors = read_include_rules(text)
+    if errors:
+        return errors
+    rooms = read_rooms(text)
+    include_dirs = cmake_include_dirs(root)
+    package_root, built = python_module_rooms(root)
+    tracked = set(files)
+    for path in files:
+        ext = os.path.splitext(path)[1]
+        room = room_of(path, rooms)
+        if room is None or ext not in C_FAMILY + ('.py', ''):
+            continue  # a file in no room is named by the listing's check
+        try:
+            with open(os.path.join(root, path), encoding='utf-8') as f:
+                text_of_file = f.read()
+        except (UnicodeDecodeError, FileNotFoundError, IsADirectoryError):
+            continue
+        python = ext == '.py' or re.match(r'#!.*python', text_of_file) is not None
+        if not python and ext not in C_FAMILY:
+            continue
+        if python:
+            reached = [(line, f'imports {module} from', _resolve_module(module, package_root, built, tracked))
+                       for line, module in _imported_modules(path, text_of_file)]
+        else:
+            reached = [(text_of_file.count('\n', 0, m.start()) + 1, 'includes',
+                        _resolve_include(path, m.group(1), include_dirs, tracked))
+                       for m in QUOTED_INCLUDE.finditer(text_of_file)]
+        for line, verb, target in reached:
+            if target is None:
+                continue
+            target_room = room_of(target + 'x' if target.endswith('/') else target, rooms)
+            if target_room in rules[room]:
+                continue
+            allowed = ', '.join(_room_name(r) for r in sorted(rules[room], key=lambda r: (floors[r], r)))
+            errors.append(f'{path}:{line} {verb} {target} (floor {floors.get(target_room)}): {_room_name(room)} '
+                          f'(floor {floors[room]}) may include only {allowed}: include through a room it may, '
+                          f'or change its "may include" in the rooms table of {DOC}')
+    return errors
+
+
 def listed_paths(section, files):
     """Every path the written list names, globs expanded against the tracked files."""
     paths = set()
@@ -284,6 +480,7 @@ def check(text, files, root=ROOT):
             errors.append(f'{DOC}: the room {folder}/ holds no tracked file: remove its row')
     lines, listing_errors = listing(files, rooms, descriptions, root)
     errors += listing_errors
+    errors += include_violations(text, files, root)
     if not errors and render(lines, rooms) != section:
         errors.append(f'{DOC}: the file list is out of date (a header or a description changed): '
                       'run tools/architecture.py --write')
