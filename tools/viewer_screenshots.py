@@ -13,7 +13,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [os.path.join(HERE, os.pardir, 'test', 'helpers'), os.path.join(HERE, os.pardir, 'test', 'viewer')]
 from plant_helpers import FIXTURES, TRACK_WORLD  # noqa: E402
 from test_viewer import opened, tick_overlay  # noqa: E402
-from tianracer_description.ros_harness import RosSystem  # noqa: E402
+from ros_harness import RosSystem  # noqa: E402
 from tianracer_description.tianracer import RACE_TRACK_WORLD, tianracer_urdf  # noqa: E402
 
 OUT = os.path.join(HERE, os.pardir, 'docs', 'images')

@@ -13,7 +13,7 @@ import subprocess
 import pytest
 import rospkg
 
-from tianracer_description.ros_harness import PYTHON, Process, tianracer_plant
+from ros_harness import PYTHON, Process, tianracer_plant
 from tianracer_description.tianracer import PACKAGE
 
 COMPAT = rospkg.RosPack().get_path('controller_manager')  # the compat package

@@ -4,7 +4,7 @@ import pytest
 import yaml
 
 from plant_helpers import DIFF_DRIVE_CONTROLLERS, diff_bot_with_gazebo_ros_control
-from tianracer_description.ros_harness import spawn_with_controllers, start_plant
+from ros_harness import spawn_with_controllers, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -19,7 +19,7 @@ def test_diff_drive_controller_through_gazebo_ros_control_and_the_spawner(ros, t
         import json, rospy
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         pub = connected_publisher('/diff_bot/mobile_base_controller/cmd_vel', Twist, queue_size=1)
         # Read while the commands still come: 0.5 s after the last one (cmd_vel_timeout) the controller stops.

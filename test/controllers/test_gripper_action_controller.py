@@ -9,7 +9,7 @@ import yaml
 
 from plant_helpers import FIXTURES, logged
 from tianracer_description import bullet_plant
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 
 def gripper_urdf(interface='Position'):

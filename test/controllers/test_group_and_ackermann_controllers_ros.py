@@ -6,7 +6,7 @@ import math
 
 import pytest
 
-from tianracer_description.ros_harness import tianracer_plant
+from ros_harness import tianracer_plant
 
 pytestmark = pytest.mark.ros
 
@@ -18,7 +18,7 @@ def collect(ros, topics, seconds):
     connected, as dicts per topic."""
     return ros.python(f"""
         import json, rospy, rostopic, time
-        from tianracer_description.ros_harness import message_to_dict
+        from ros_harness import message_to_dict
         rospy.init_node('probe', anonymous=True)
         got = {{t: [] for t in {list(topics)!r}}}
         subs = []
@@ -41,7 +41,7 @@ def wait_for_message_where(ros, topic, condition, timeout=60):
     message as a dict `m`, holds: a command from `rostopic pub` has reached the plant once it shows."""
     ros.python(f"""
         import json, rospy, rostopic, time
-        from tianracer_description.ros_harness import message_to_dict
+        from ros_harness import message_to_dict
         rospy.init_node('waiter', anonymous=True)
         cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
         deadline = time.monotonic() + {timeout}

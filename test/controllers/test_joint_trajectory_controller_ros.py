@@ -79,7 +79,7 @@ def test_a_trajectory_on_the_command_topic_the_state_topic_and_query_state(ros, 
 import json, rospy
 from control_msgs.msg import JointTrajectoryControllerState
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
-from tianracer_description.ros_harness import connected_publisher
+from ros_harness import connected_publisher
 rospy.init_node('probe')
 states = []
 rospy.Subscriber('/arm/arm_controller/state', JointTrajectoryControllerState, states.append)

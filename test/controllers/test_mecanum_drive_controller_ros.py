@@ -7,7 +7,7 @@ import pytest
 import yaml
 
 from plant_helpers import MECANUM_CONTROLLERS, mecanum_bot
-from tianracer_description.ros_harness import spawn_with_controllers, start_plant
+from ros_harness import spawn_with_controllers, start_plant
 from test_mecanum_drive_controller import WHEELS, inverse_kinematics
 
 pytestmark = pytest.mark.ros
@@ -25,7 +25,7 @@ def test_mecanum_controller_through_the_spawner_with_the_body_moved_by_force_bas
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
         from sensor_msgs.msg import JointState
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)

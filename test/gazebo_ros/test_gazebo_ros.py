@@ -9,7 +9,7 @@ import os
 import pytest
 
 from suite_paths import TEST_DIR
-from tianracer_description.ros_harness import PYTHON, tianracer_plant
+from ros_harness import PYTHON, tianracer_plant
 from tianracer_description.tianracer import PACKAGE, TUTORIAL_CONTROLLERS
 
 
@@ -40,7 +40,7 @@ from gazebo_msgs.msg import LinkState, ModelState, ModelStates, LinkStates
 from gazebo_msgs.srv import *
 from geometry_msgs.msg import Point, Pose, Twist, Vector3, Wrench
 from std_srvs.srv import Empty
-from tianracer_description.ros_harness import connected_publisher
+from ros_harness import connected_publisher
 rospy.init_node('gazebo_probe', anonymous=True)
 def srv(name, kind):
     rospy.wait_for_service('/gazebo/' + name, 30)

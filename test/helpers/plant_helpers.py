@@ -311,7 +311,7 @@ def start_arm(ros, tmp_path, kind='position_controllers', urdf=None):
     """The node on `ros` with the arm spawned under /arm and its joint_state_controller and
     arm_controller started by the spawner (the ROS tests of the arm's controllers and sensors)."""
     import yaml
-    from tianracer_description.ros_harness import spawn_with_controllers, start_plant
+    from ros_harness import spawn_with_controllers, start_plant
     (tmp_path / 'arm.urdf').write_text(urdf or arm({'position_controllers': 'Position', 'effort_controllers': 'Effort'}[kind]))
     (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(arm_controllers(kind)))
     plant = start_plant(ros)

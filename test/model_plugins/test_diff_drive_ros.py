@@ -8,7 +8,7 @@ import pytest
 
 from plant_helpers import DIFF_BOT
 from suite_paths import REPOSITORY
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 pytestmark = pytest.mark.ros
@@ -24,7 +24,7 @@ def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
         from sensor_msgs.msg import JointState
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         odometry = []
         rospy.Subscriber('/odom', Odometry, odometry.append)
@@ -75,7 +75,7 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
         from gazebo_msgs.msg import ModelStates
         from geometry_msgs.msg import Twist
         from sensor_msgs.msg import LaserScan
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)

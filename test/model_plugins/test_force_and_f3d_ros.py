@@ -3,7 +3,7 @@ gazebo_ros_f3d's WrenchStamped of it."""
 import pytest
 
 from plant_helpers import f3d_bot
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -17,7 +17,7 @@ def test_force_plugin_takes_its_wrench_from_ros_and_f3d_reports_it(ros, tmp_path
         import json, rospy
         from gazebo_msgs.srv import GetModelState
         from geometry_msgs.msg import Wrench, WrenchStamped
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
         pub = connected_publisher('/force', Wrench, queue_size=1, latch=True)

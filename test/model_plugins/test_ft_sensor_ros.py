@@ -15,7 +15,7 @@ def test_wrench_stamped_of_the_elbow_with_a_push(ros, tmp_path):
     seen = ros.python("""
         import json, rospy
         from geometry_msgs.msg import Wrench, WrenchStamped
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         rospy.sleep(1.0)
         def reading():

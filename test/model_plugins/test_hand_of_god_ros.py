@@ -4,7 +4,7 @@ there (/gazebo/get_model_state) and world -> hog_actual appears on /tf."""
 import pytest
 
 from test_hand_of_god import BOX
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 

@@ -5,7 +5,7 @@ import pytest
 
 from test_joint_pose_trajectory import PLUGIN
 from plant_helpers import arm
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -19,7 +19,7 @@ def test_a_trajectory_on_the_topic_poses_the_arm(ros, tmp_path):
         import json, rospy
         from gazebo_msgs.srv import GetJointProperties
         from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         joint = rospy.ServiceProxy('/gazebo/get_joint_properties', GetJointProperties)
         pub = connected_publisher('/set_joint_trajectory', JointTrajectory, queue_size=1, latch=True)

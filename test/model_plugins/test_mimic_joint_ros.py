@@ -3,7 +3,7 @@ plugin's PID, its gains from the parameter server."""
 import pytest
 
 from plant_helpers import gripper
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -22,7 +22,7 @@ def test_the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server(ro
         import json, rospy
         from gazebo_msgs.msg import LinkStates
         from std_msgs.msg import Float64
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         pub = connected_publisher('/gripper/finger_controller/command', Float64, queue_size=1, latch=True)
         pub.publish(Float64(0.03))

@@ -3,7 +3,7 @@ robot (with hector's GPS and IMU) and a holonomic base in one world, each in its
 import pytest
 
 from plant_helpers import planar_bot, skid_bot
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -21,7 +21,7 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
         from sensor_msgs.msg import Imu, JointState, NavSatFix
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         buffer = tf2_ros.Buffer()
         listener = tf2_ros.TransformListener(buffer)

@@ -4,7 +4,7 @@ the cameras are off and why, publishes no camera image, and everything else runs
 the tutorial's controllers start and turn a wheel, the lidar scans, /clock advances."""
 import pytest
 
-from tianracer_description.ros_harness import tianracer_plant
+from ros_harness import tianracer_plant
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 pytestmark = pytest.mark.ros
@@ -22,7 +22,7 @@ def test_without_egl_the_node_runs_with_its_cameras_off(ros, urdf_file):
         from rosgraph_msgs.msg import Clock, Log
         from sensor_msgs.msg import Image, JointState, LaserScan
         from std_msgs.msg import Float64
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         said = []
         rospy.Subscriber('/rosout_agg', Log, lambda m: said.append(m.msg) if 'cameras:' in m.msg else None)

@@ -6,7 +6,7 @@ import time
 
 import pytest
 
-from tianracer_description.ros_harness import free_port
+from ros_harness import free_port
 
 
 def test_help_prints_usage_without_a_master():
@@ -85,7 +85,7 @@ def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, 
 
 @pytest.mark.ros
 def test_mistakes_through_spawn_model_and_the_controller_manager_get_answers_not_exceptions(ros, urdf_file):
-    from tianracer_description.ros_harness import tianracer_plant
+    from ros_harness import tianracer_plant
     plant = tianracer_plant(ros, urdf_file, paused=True)
 
     def spawn_model(*args):

@@ -6,7 +6,7 @@ import time
 
 import pytest
 
-from tianracer_description.ros_harness import tianracer_plant
+from ros_harness import tianracer_plant
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 pytestmark = pytest.mark.ros
@@ -38,7 +38,7 @@ def echo(ros, topic, count=1, timeout=15):
     """`count` messages of a topic as dicts (rospy snippet: no YAML guessing of nan/inf)."""
     return ros.python(f"""
         import json, rospy, rostopic
-        from tianracer_description.ros_harness import message_to_dict
+        from ros_harness import message_to_dict
         rospy.init_node('probe', anonymous=True)
         cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
         got = []

@@ -62,7 +62,7 @@ def test_fuzz_cases_never_crash_hang_or_go_non_finite(kind, least_run):
 
 @pytest.mark.ros
 def test_the_node_survives_the_fuzzed_urdfs(ros, urdf_file):
-    from tianracer_description.ros_harness import tianracer_plant
+    from ros_harness import tianracer_plant
     plant = tianracer_plant(ros, urdf_file)
     # The car's robotNamespace is the fuzzed copies' too: it leaves, and comes back at the end.
     assert ros.service('/gazebo/delete_model', '{model_name: tianracer}')['success'] is True

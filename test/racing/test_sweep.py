@@ -15,7 +15,7 @@ import time
 import pytest
 
 from tianracer_description import sweep
-from tianracer_description.ros_harness import PYTHON, free_port
+from ros_harness import PYTHON, free_port
 
 # A car that crashes within a few hundred steps: soft steering, fast through the turns.
 CRASHING = {'seed': 3, 'max_speed': 5.0, 'steering_p': 0.3, 'turn_speed': 1.0, 'steps': 600}

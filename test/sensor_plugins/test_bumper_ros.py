@@ -7,7 +7,7 @@ import os
 import pytest
 
 from plant_helpers import FIXTURES, box_model, sdf_world
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -21,7 +21,7 @@ def test_bumper_states_of_a_robot_pushed_into_a_wall(ros, tmp_path):
         import json, rospy
         from gazebo_msgs.msg import ContactsState
         from geometry_msgs.msg import Wrench
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         def summary(m):
             return {'frame': m.header.frame_id, 'stamp': m.header.stamp.to_sec(),

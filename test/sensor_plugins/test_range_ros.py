@@ -3,7 +3,7 @@ distance."""
 import pytest
 
 from plant_helpers import box_model, sdf_world, skid_bot
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 
@@ -20,7 +20,7 @@ def test_range_sensor_reports_the_nearest_ray_to_a_wall(ros, tmp_path):
         from geometry_msgs.msg import Twist
         from nav_msgs.msg import Odometry
         from sensor_msgs.msg import Range
-        from tianracer_description.ros_harness import connected_publisher
+        from ros_harness import connected_publisher
         rospy.init_node('probe')
         before = rospy.wait_for_message('/range/fr', Range, 30)
         pub = connected_publisher('/cmd_vel', Twist, queue_size=1)

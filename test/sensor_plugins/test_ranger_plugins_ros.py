@@ -10,7 +10,7 @@ import os
 import pytest
 
 from plant_helpers import FIXTURES, sdf_world
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 from test_velodyne_ros import wall
 
 pytestmark = pytest.mark.ros

@@ -3,7 +3,7 @@ it, gazebo_ros_p3d and gazebo_ros_imu messages, an unknown plugin named once in 
 import pytest
 
 from plant_helpers import PLUGIN_URDF
-from tianracer_description.ros_harness import spawn_urdf, start_plant
+from ros_harness import spawn_urdf, start_plant
 
 pytestmark = pytest.mark.ros
 

@@ -42,7 +42,7 @@ def test_a_recorded_drive_plays_back_with_its_message_counts(ros, tmp_path):
 
     # Playback against a master with no simulation: every recorded message arrives again.
     ros.close()
-    from tianracer_description.ros_harness import RosSystem
+    from ros_harness import RosSystem
     (tmp_path / 'playback').mkdir()
     player_system = RosSystem(str(tmp_path / 'playback'))
     try:

@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from tianracer_description.ros_harness import frames_in
+from ros_harness import frames_in
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 
 pytestmark = pytest.mark.ros

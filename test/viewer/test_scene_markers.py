@@ -90,7 +90,7 @@ def test_a_planes_marker_turns_z_to_its_normal(normal):
 
 @pytest.mark.ros
 def test_the_node_publishes_the_plants_world_latched_in_its_frame(ros):
-    from tianracer_description.ros_harness import start_plant
+    from ros_harness import start_plant
     start_plant(ros, RACE_TRACK_WORLD)
     ros.start(['rosrun', 'tianracer_description', 'scene_markers', '_frame_id:=world'], 'scene_markers')
     out = ros.python("""

@@ -82,7 +82,7 @@ def at_rest(read_xy, timeout=20.0, still=0.02):
 def opened(ros, world, urdf_file=None):
     """The plant on `world` (with the car and the tutorial's YAML when `urdf_file`), the viewer on a
     free port, and a chromium page on it with the scene drawn: (plant, viewer process, driver, url)."""
-    from tianracer_description.ros_harness import free_port, start_plant, tianracer_plant
+    from ros_harness import free_port, start_plant, tianracer_plant
     plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
     port = free_port()
     viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=%d' % port], 'viewer')
@@ -383,7 +383,7 @@ def test_the_contacts_overlay_draws_the_tyres_contacts_under_the_wheels(page):
 def test_empty_world_launch_gui_true_starts_the_viewer_and_prints_where(ros):
     """gazebo_ros's gui:=true starts gzclient; here it starts the viewer (no desktop: no browser)."""
     import urllib.request
-    from tianracer_description.ros_harness import free_port
+    from ros_harness import free_port
     from tianracer_description.tianracer import RACE_TRACK_WORLD
     port = free_port()
     launch = ros.start(['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=true', 'viewer_port:=%d' % port,
@@ -528,7 +528,7 @@ def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_
     from selenium.webdriver.common.by import By
     from selenium.webdriver.support.ui import Select
     from plant_helpers import DIFF_BOT
-    from tianracer_description.ros_harness import spawn_urdf
+    from ros_harness import spawn_urdf
     from tianracer_description.tianracer import PACKAGE
     arena = os.path.join(PACKAGE, 'worlds', 'arena.world')
     with opened(ros, arena) as (plant, _, driver, _):

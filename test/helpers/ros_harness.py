@@ -1,7 +1,9 @@
-"""Real ROS processes for the integration tests, the ROS benchmark and `make demo`: a ROS master on a
+"""Real ROS processes for the integration tests, the ROS benchmarks and `make demo`: a ROS master on a
 free loopback port, roslaunch, rosrun and the command-line tools, each test with its own master.
 rospy binds a process to one master, so the tests talk to ROS through subprocesses (the tools, or
-short rospy snippets)."""
+short rospy programs). A test harness, not part of the runtime package: the suite's conftest.py puts
+this folder (test/helpers) on sys.path, bench/ and tools/ put it there themselves, and the processes
+a RosSystem starts find it on PYTHONPATH (their rospy programs import it by name, `ros_harness`)."""
 import json
 import math
 import os
@@ -16,6 +18,7 @@ import yaml
 from tianracer_description.tianracer import CONFIG_YAML
 
 PYTHON = '/usr/bin/python3'
+HELPERS = os.path.dirname(os.path.abspath(__file__))  # this folder, for the processes' PYTHONPATH
 
 
 def message_to_dict(message):
@@ -103,6 +106,7 @@ class RosSystem:
         self.env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % self.port, ROS_IP='127.0.0.1',
                         ROS_HOME=os.path.join(workdir, 'ros_home'), PYTHONUNBUFFERED='1')
         self.env.pop('ROS_HOSTNAME', None)
+        self.env['PYTHONPATH'] = os.pathsep.join(filter(None, [HELPERS, os.environ.get('PYTHONPATH')]))
         self.processes = []
         self.master = self.start(['roscore', '-p', str(self.port)], 'roscore')
         self.wait_until(lambda: self.run(['rosparam', 'list'], timeout=5).returncode == 0, 15, 'the ROS master')
