@@ -1,9 +1,8 @@
-// Divergence recovery (divergence_recovery.h): the finite check, the last good state and what a
-// robot does when its physics diverges.
+#include "simulation/divergence_recovery.h"
+
 #include <cmath>
 #include <string>
 
-#include "simulation/divergence_recovery.h"
 #include "simulation/internals.h"
 #include "simulation/robot_builder.h"
 

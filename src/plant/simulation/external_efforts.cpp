@@ -1,7 +1,6 @@
-// gazebo_ros's wrench and effort jobs (external_efforts.h).
-#include <algorithm>
-
 #include "simulation/external_efforts.h"
+
+#include <algorithm>
 
 namespace bullet_plant
 {

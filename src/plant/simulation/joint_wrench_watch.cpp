@@ -1,8 +1,8 @@
-// Joint wrench watching (joint_wrench_watch.h).
+#include "simulation/joint_wrench_watch.h"
+
 #include <algorithm>
 
 #include "simulation/internals.h"
-#include "simulation/joint_wrench_watch.h"
 
 namespace bullet_plant
 {

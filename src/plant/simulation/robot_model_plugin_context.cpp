@@ -1,11 +1,11 @@
-// What a robot's model plugins reach of their model (robot_model_plugin_context.h).
+#include "simulation/robot_model_plugin_context.h"
+
 #include <cmath>
 
 #include "bullet_plant/plugin_names.h"
 #include "physics/bullet_conversions.h"
 #include "simulation/internals.h"
 #include "simulation/robot_builder.h"
-#include "simulation/robot_model_plugin_context.h"
 
 namespace bullet_plant
 {

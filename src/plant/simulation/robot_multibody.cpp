@@ -1,10 +1,6 @@
-// RobotMultibody: where a robot's bodies and links are in the world, the one kinematics query
-// (linkMotion) and what the plant does to the Bullet multibody as a whole. Apart from the Robot
-// because the robot's step, its sensors' and model plugins' contexts and its public API all read
-// the multibody through these, and none of them owns it.
-#include <stdexcept>
-
 #include "simulation/robot_multibody.h"
+
+#include <stdexcept>
 
 namespace bullet_plant
 {

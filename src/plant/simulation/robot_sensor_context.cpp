@@ -1,9 +1,9 @@
-// What a robot's sensors read of the simulation (robot_sensor_context.h).
+#include "simulation/robot_sensor_context.h"
+
 #include <algorithm>
 
 #include "physics/bullet_conversions.h"
 #include "simulation/internals.h"
-#include "simulation/robot_sensor_context.h"
 
 namespace bullet_plant
 {

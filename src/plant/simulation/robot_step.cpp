@@ -1,9 +1,9 @@
-// A robot's part of World::step, in gazebo_ros_control's order: [wrench and effort jobs
-// (external_efforts.h)], the controllers whose control period has come and the model plugins'
-// OnUpdate (updateControllers, updateModelPlugins), then writeSim (the joint layer), the physics
-// step (joint wrenches watched around it, joint_wrench_watch.h), divergence recovery
-// (divergence_recovery.h), readSim, and the sensors (updateSensors). World::step runs each phase
-// for every robot before the next; these are the phases that are the robot's own.
+// A robot's own phases of World::step, one named function each: the controllers whose control
+// period has come, the model plugins' OnUpdate, the sensors. A step in gazebo_ros_control's order:
+// [wrench and effort jobs (external_efforts.h)], updateControllers, updateModelPlugins, writeSim
+// (the joint layer), the physics step (joint wrenches watched around it, joint_wrench_watch.h),
+// recoverIfDiverged (divergence_recovery.h), readSim, updateSensors; World::step runs each phase
+// for every robot before the next.
 #include "simulation/internals.h"
 
 namespace bullet_plant
