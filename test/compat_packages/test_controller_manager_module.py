@@ -134,6 +134,7 @@ def listed(env, command):
 
 
 @pytest.mark.ros
+@pytest.mark.slow
 def test_scripts_work_with_only_upstreams_names_first_on_pythonpath(ros, urdf_file, tmp_path):
     tianracer_plant(ros, urdf_file)
     env = with_pythonpath(ros.env, shadow_module(tmp_path))

@@ -9,6 +9,7 @@ from ros_harness import spawn_with_controllers, start_plant
 pytestmark = pytest.mark.ros
 
 
+@pytest.mark.slow
 def test_diff_drive_controller_through_gazebo_ros_control_and_the_spawner(ros, tmp_path):
     (tmp_path / 'diff_bot.urdf').write_text(diff_bot_with_gazebo_ros_control())
     (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(DIFF_DRIVE_CONTROLLERS))

@@ -53,6 +53,7 @@ def wait_for_message_where(ros, topic, condition, timeout=60):
     """, timeout=timeout + 30)
 
 
+@pytest.mark.slow
 def test_ackermann_launch_drives_the_car_from_a_twist(ros):
     ros.start(['roslaunch', 'tianracer_description', 'ackermann_steering.launch', 'gui:=false'], 'ackermann')
     ros.wait_for_controllers(3, NS, timeout=90)
@@ -87,6 +88,7 @@ def test_ackermann_launch_drives_the_car_from_a_twist(ros):
     assert sum(round(t['header']['stamp'], 6) in poses for t in transforms) >= 0.8 * len(transforms)
 
 
+@pytest.mark.slow
 def test_joint_group_velocity_controller_takes_a_float64_multi_array(ros, urdf_file):
     tianracer_plant(ros, urdf_file)
     ros.run(['rosparam', 'set', NS + '/rear_wheels',

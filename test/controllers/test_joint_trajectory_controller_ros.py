@@ -32,6 +32,7 @@ rospy.sleep(1.0)  # the elbow swung until the spawner started the controller: le
 
 
 @pytest.mark.parametrize('kind', ['position_controllers', 'effort_controllers'])
+@pytest.mark.slow
 def test_follow_joint_trajectory_with_actionlib(ros, tmp_path, kind):
     start_arm(ros, tmp_path, kind)
     seen = ros.python(PROBE_SETUP + """
@@ -73,6 +74,7 @@ print(json.dumps(done))
     assert seen['rejected'] == [REJECTED, -2, "Joints on incoming goal don't match the controller joints."]
 
 
+@pytest.mark.slow
 def test_a_trajectory_on_the_command_topic_the_state_topic_and_query_state(ros, tmp_path):
     start_arm(ros, tmp_path)
     seen = ros.python("""

@@ -13,6 +13,7 @@ from test_mecanum_drive_controller import WHEELS, inverse_kinematics
 pytestmark = pytest.mark.ros
 
 
+@pytest.mark.slow
 def test_mecanum_controller_through_the_spawner_with_the_body_moved_by_force_based_move(ros, tmp_path):
     (tmp_path / 'mecanum_bot.urdf').write_text(mecanum_bot())
     (tmp_path / 'controllers.yaml').write_text(yaml.safe_dump(MECANUM_CONTROLLERS))

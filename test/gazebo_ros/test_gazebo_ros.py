@@ -199,6 +199,7 @@ print(json.dumps(out))
 
 
 @pytest.mark.ros
+@pytest.mark.slow
 def test_step_physics_runs_that_many_iterations_while_paused_and_scene_contacts_has_the_tyres(ros, paused_plant):
     """/gazebo/step_physics (gzclient's step button): while paused, exactly that many 1 ms steps, /clock
     sent at the end whatever its 100 Hz rate; none while running is added. /gazebo/scene_contacts: the
@@ -285,6 +286,7 @@ print(json.dumps(out))
 
 
 @pytest.mark.ros
+@pytest.mark.slow
 def test_model_and_link_states_are_published_on_every_step_with_scoped_names(ros, paused_plant):
     out = ros.python(PRELUDE + """
 stamps = []
@@ -318,6 +320,7 @@ print(json.dumps(out))
 
 
 @pytest.mark.ros
+@pytest.mark.slow
 def test_spawn_model_sets_joints_unpauses_and_reports_like_gazebo_ros(ros, urdf_file):
     plant = ros.start(['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=false', 'paused:=true'], 'plant')
     ros.run(['rosparam', 'set', '/robot_description', '--textfile', urdf_file])
@@ -346,6 +349,7 @@ print(json.dumps(out))
 
 
 @pytest.mark.ros
+@pytest.mark.slow
 def test_a_script_reading_link_states_drives_the_car_with_ackermann_drive_stamped(ros):
     """The tutorial's system (tianracer.launch); test/scripts/drive_to_point.py steers the car to a
     point from the base link's pose in /gazebo/link_states, commanding AckermannDriveStamped."""

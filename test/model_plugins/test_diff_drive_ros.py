@@ -14,6 +14,7 @@ from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 pytestmark = pytest.mark.ros
 
 
+@pytest.mark.slow
 def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states(ros):
     plant = start_plant(ros)
     ros.run(['rosparam', 'set', '/robot_description', '--textfile', DIFF_BOT])
@@ -62,6 +63,7 @@ def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states
     assert abs(seen['tf_x'] - seen['odom_xy'][0]) < 0.1
     assert seen['joints'] == ['wheel_left_joint', 'wheel_right_joint'] and seen['positions'] == 2
 
+@pytest.mark.slow
 def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
     arena = os.path.join(REPOSITORY, 'worlds', 'arena.world')
     car = ros.start(['roslaunch', 'tianracer_description', 'tianracer_world.launch', 'gui:=false',

@@ -10,6 +10,7 @@ from test_ft_sensor import G, FOREARM, HAND, arm_with_ft_sensors_urdf
 pytestmark = pytest.mark.ros
 
 
+@pytest.mark.slow
 def test_wrench_stamped_of_the_elbow_with_a_push(ros, tmp_path):
     start_arm(ros, tmp_path, urdf=arm_with_ft_sensors_urdf())
     seen = ros.python("""

@@ -8,6 +8,7 @@ from ros_harness import spawn_urdf, start_plant
 pytestmark = pytest.mark.ros
 
 
+@pytest.mark.slow
 def test_the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server(ros, tmp_path):
     (tmp_path / 'gripper.urdf').write_text(gripper(hasPID='mimic_gains'))
     plant = start_plant(ros)

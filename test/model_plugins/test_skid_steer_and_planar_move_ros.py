@@ -8,6 +8,7 @@ from ros_harness import spawn_urdf, start_plant
 pytestmark = pytest.mark.ros
 
 
+@pytest.mark.slow
 def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_path):
     (tmp_path / 'skid_bot.urdf').write_text(skid_bot())
     (tmp_path / 'planar_bot.urdf').write_text(planar_bot(robotBaseFrame='planar_base'))

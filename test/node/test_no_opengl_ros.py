@@ -12,6 +12,7 @@ pytestmark = pytest.mark.ros
 NS = '/tianracer'
 
 
+@pytest.mark.slow
 def test_without_egl_the_node_runs_with_its_cameras_off(ros, urdf_file):
     ros.env['__EGL_VENDOR_LIBRARY_FILENAMES'] = '/nonexistent/egl_vendor.json'
     plant = tianracer_plant(ros, urdf_file)

@@ -84,6 +84,7 @@ def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, 
 
 
 @pytest.mark.ros
+@pytest.mark.slow
 def test_mistakes_through_spawn_model_and_the_controller_manager_get_answers_not_exceptions(ros, urdf_file):
     from ros_harness import tianracer_plant
     plant = tianracer_plant(ros, urdf_file, paused=True)

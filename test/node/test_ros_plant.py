@@ -51,6 +51,7 @@ def echo(ros, topic, count=1, timeout=15):
     """, timeout=timeout + 10)
 
 
+@pytest.mark.slow
 def test_tutorial_spawner_starts_the_five_controllers(ros, plant):
     start = time.monotonic()
     spawn = spawner(ros, *TUTORIAL_CONTROLLERS)
@@ -75,6 +76,7 @@ def test_tutorial_spawner_starts_the_five_controllers(ros, plant):
     assert spawn.popen.poll() is None, 'the spawner keeps running until it is stopped'
 
 
+@pytest.mark.slow
 def test_command_topic_turns_the_wheel_and_state_topics_publish(ros, plant):
     spawner(ros, *TUTORIAL_CONTROLLERS)
     wait_for_running(ros, TUTORIAL_CONTROLLERS)
@@ -89,6 +91,7 @@ def test_command_topic_turns_the_wheel_and_state_topics_publish(ros, plant):
     assert echo(ros, NS + '/front_right_steering_position_controller/state')
 
 
+@pytest.mark.slow
 def test_controller_manager_errors_through_rosservice(ros, plant):
     ros.run(['rosparam', 'set', NS + '/wrong_joint', "{type: velocity_controllers/JointVelocityController, joint: nope}"])
     assert ros.service(CM + 'load_controller', "name: 'not_configured'") == {'ok': False}
@@ -116,6 +119,7 @@ def test_controller_manager_errors_through_rosservice(ros, plant):
     assert controller_states(ros)['joint_state_controller']['state'] == 'running'
 
 
+@pytest.mark.slow
 def test_sigint_to_the_spawner_stops_and_unloads_its_controllers(ros, plant):
     # What roslaunch's Ctrl-C needs: the spawner exits (upstream's could hang) and leaves nothing
     # loaded. How quickly is not timed here (a test times nothing): on a slow machine one rosservice
@@ -127,6 +131,7 @@ def test_sigint_to_the_spawner_stops_and_unloads_its_controllers(ros, plant):
     ros.wait_until(lambda: controller_states(ros) == {}, 10, 'the controllers unloaded')
 
 
+@pytest.mark.slow
 def test_non_finite_commands_leave_the_state_finite(ros, plant):
     spawner(ros, *TUTORIAL_CONTROLLERS)
     wait_for_running(ros, TUTORIAL_CONTROLLERS)
@@ -196,6 +201,7 @@ def test_spawn_model_with_a_malformed_urdf_exits_1_with_the_parsers_message(ros,
     assert ros.service(CM + 'load_controller', "name: 'joint_state_controller'") == {'ok': True}
 
 
+@pytest.mark.slow
 def test_cameras_publish_at_their_rates_only_while_subscribed(ros, plant):
     rates = ros.python("""
         import json, time, rospy

@@ -61,6 +61,7 @@ def test_fuzz_cases_never_crash_hang_or_go_non_finite(kind, least_run):
 
 
 @pytest.mark.ros
+@pytest.mark.slow
 def test_the_node_survives_the_fuzzed_urdfs(ros, urdf_file):
     from ros_harness import tianracer_plant
     plant = tianracer_plant(ros, urdf_file)

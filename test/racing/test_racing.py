@@ -242,6 +242,7 @@ def test_three_cars_racing_with_follow_the_gap_stay_off_the_walls_and_each_other
     assert all(infos[a]['laps'] * 21.42 > 8.0 for a in env.possible_agents), 'each 8 m along in 6 s'
 
 
+@pytest.mark.slow
 def test_ppo_from_stable_baselines3_trains_on_the_vector_env():
     """The README's example, short: a few thousand PPO steps on two cars of the vector env (PyTorch on
     the CPU), through Sb3VecEnv; the ended episodes' last observations reach SB3 as it expects."""

@@ -212,6 +212,7 @@ def ray_head(tmp_path, tmp_path_factory):
         head.close_log()
 
 
+@pytest.mark.slow
 def test_the_command_line_sweeps_on_a_ray_cluster_by_address_and_its_rows_are_the_local_ones(ray_head, tmp_path):
     out, png = tmp_path / 'results.csv', tmp_path / 'summary.png'
     env = dict(ray_head.client_env)

@@ -19,6 +19,7 @@ def test_there_are_rostests():
 
 
 @pytest.mark.parametrize('launch_file', ROSTESTS)
+@pytest.mark.slow
 def test_rostest(launch_file, tmp_path):
     env = dict(os.environ, PATH='/usr/bin:' + os.environ['PATH'], ROS_IP='127.0.0.1',
                ROS_HOME=str(tmp_path / 'ros_home'), PYTHONUNBUFFERED='1')

@@ -21,6 +21,7 @@ def first_message(ros, topic):
     """, timeout=60)
 
 
+@pytest.mark.slow
 def test_plugins_publish_in_their_namespaces_with_their_frames(ros, tmp_path):
     plant = start_plant(ros)
     urdf = tmp_path / 'probe.urdf'

@@ -24,6 +24,7 @@ COUNT_PLAYBACK = """
 """
 
 
+@pytest.mark.slow
 def test_a_recorded_drive_plays_back_with_its_message_counts(ros, tmp_path):
     ros.start(['roslaunch', 'tianracer_description', 'tianracer.launch', 'gui:=false'], 'tianracer_launch')
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))

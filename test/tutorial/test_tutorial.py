@@ -75,6 +75,7 @@ DRIVE_AND_STOP = """
 """
 
 
+@pytest.mark.slow
 def test_rostopic_pub_drives_the_circle_of_the_geometry_and_the_car_stops(tutorial, urdf_xml):
     run = tutorial.python(DRIVE_AND_STOP, timeout=60)
     g = ackermann_geometry(urdf_xml)
@@ -111,6 +112,7 @@ YAW_RATE_DRIVE = """
 """
 
 
+@pytest.mark.slow
 def test_tianracer_world_launch_angular_mode_yaw_rate_turns_at_the_asked_rate(ros):
     """tianracer.launch stays the tutorial's text; tianracer_world.launch's angular_mode reaches the
     converter it starts, which then reads angular.z as a yaw rate (REP 103)."""
@@ -135,6 +137,7 @@ TELEOP_PROBE = """
 """
 
 
+@pytest.mark.slow
 def test_teleop_in_a_terminal(tutorial):
     master, slave = pty.openpty()
     sane = termios.tcgetattr(slave)
@@ -182,6 +185,7 @@ def test_teleop_refuses_a_stdin_that_is_not_a_terminal(tutorial):
     assert 'not one' in result.stderr and 'terminal' in result.stderr
 
 
+@pytest.mark.slow
 def test_make_demo_prints_its_figures_and_writes_the_plot(tmp_path):
     result = subprocess.run(['/usr/bin/python3', os.path.join(PACKAGE, 'tools', 'demo.py')], cwd=str(tmp_path),
                             capture_output=True, text=True, timeout=240)

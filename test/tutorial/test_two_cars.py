@@ -36,6 +36,7 @@ def test_scans_images_and_imu_of_both_cars_transform_into_odom(ros, two_cars):
         assert x == pytest.approx(LASER_X, abs=0.01) and ly == pytest.approx(y, abs=0.01), car
 
 
+@pytest.mark.slow
 def test_each_car_has_its_own_controllers(ros, two_cars):
     """cmd_vel of car1 moves car1 only, then AckermannDriveStamped of car2 moves car2 only (each through
     its own converter and controllers)."""

@@ -146,6 +146,7 @@ def screenshot(driver):
     return np.round(255 * matplotlib.image.imread(io.BytesIO(driver.get_screenshot_as_png()))[:, :, :3])
 
 
+@pytest.mark.slow
 def test_the_screenshot_shows_the_race_tracks_walls_where_the_world_has_them(page):
     from tianracer_description.tianracer import RACE_TRACK_WORLD
     _, _, driver, _ = page
@@ -181,6 +182,7 @@ def test_the_screenshot_shows_the_race_tracks_walls_where_the_world_has_them(pag
     assert floor > 100
 
 
+@pytest.mark.slow
 def test_the_cars_drawn_pose_follows_model_states_as_it_drives(page, ros):
     from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
     _, _, driver, _ = page
@@ -217,6 +219,7 @@ def test_the_cars_drawn_pose_follows_model_states_as_it_drives(page, ros):
     assert math.hypot(drawn[0] - moved[0], drawn[1] - moved[1]) < 0.01, (drawn, moved)
 
 
+@pytest.mark.slow
 def test_a_page_that_goes_away_leaves_the_scenes_link_states_unsubscribed(page, ros):
     _, _, driver, url = page
 
@@ -308,6 +311,7 @@ CLOCK_NOW = """
 """
 
 
+@pytest.mark.slow
 def test_pause_stops_the_clock_play_starts_it_and_reset_world_puts_the_car_back(page):
     from selenium.webdriver.common.by import By
     ros, _, driver, _ = page
@@ -331,6 +335,7 @@ def test_pause_stops_the_clock_play_starts_it_and_reset_world_puts_the_car_back(
              'the page to draw the car back where it was spawned')
 
 
+@pytest.mark.slow
 def test_the_step_button_runs_the_iterations_asked_for_while_paused(page):
     """gzclient's step: paused, 250 iterations typed in and step clicked advance the clock by 0.25 s and
     leave it paused; the car's pose, lifted and let fall, changes only while stepping."""
@@ -405,6 +410,7 @@ MODEL_XY = """
 """
 
 
+@pytest.mark.slow
 def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting_go_stops_it(page):
     from selenium.webdriver.common.action_chains import ActionChains
     from selenium.webdriver.common.by import By
@@ -424,6 +430,7 @@ def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting
     assert driven[0] - start[0] > 0.3, 'the car did not drive ahead: %s -> %s' % (start, driven)
 
 
+@pytest.mark.slow
 def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turned_off(page):
     import base64
     from PIL import Image
@@ -455,6 +462,7 @@ def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turn
     ros.wait_until(lambda: not viewer_subscribes(), 15, 'the viewer to drop the camera')
 
 
+@pytest.mark.slow
 def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
     """The car's lidar ticked: its hit points, drawn in its link as the page poses it, lie on the race
     track's walls and cones (within 3 cm: the lidar's noise)."""
@@ -476,6 +484,7 @@ def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
     assert not off, '%d of %d points off the walls and cones, e.g. %s' % (len(off), len(points), off[:3])
 
 
+@pytest.mark.slow
 def test_a_model_dragged_in_move_mode_is_where_get_model_state_says(page):
     """The model list's move, then a drag in the view: the car goes where it is dropped (set_model_state),
     and the list shows its new pose."""
@@ -505,6 +514,7 @@ def test_a_model_dragged_in_move_mode_is_where_get_model_state_says(page):
                      ".startsWith('x %.2f')" % moved[0], 15, 'the model list to show the new pose')
 
 
+@pytest.mark.slow
 def test_a_followed_model_stays_where_it_is_drawn_as_it_moves(page):
     from selenium.webdriver.common.by import By
     ros, _, driver, _ = page
@@ -519,6 +529,7 @@ def test_a_followed_model_stays_where_it_is_drawn_as_it_moves(page):
     assert math.hypot(after[0] - before[0], after[1] - before[1]) < 3, (before, after)  # pixels
 
 
+@pytest.mark.slow
 def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_cmd_vel(ros):
     """The other world we ship (worlds/arena.world) and a turtlebot3-like robot (gazebo_plugins' diff
     drive on /cmd_vel, test/fixtures/urdf/diff_bot.urdf): its links drawn where link_states puts
