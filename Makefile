@@ -1,6 +1,7 @@
 # Entry points of the Tianracer simulation. See README.md.
-#   make sim    install what is missing, build, start the simulation
+#   make sim    install what is missing, build, start the simulation and its browser viewer (GUI=false: headless)
 #   make test   install what is missing, build, run the whole test suite
+#   make test-quick  the same without the tests marked slow (docs/tests.md)
 #   make bench  build, time the plant against MuJoCo and PyBullet (prints figures)
 SHELL := /bin/bash
 .DEFAULT_GOAL := help
@@ -15,12 +16,15 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 # Everything ROS runs on loopback only.
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
+# make sim: the browser viewer in gzclient's place (the tutorial's default), or false for headless.
+GUI ?= true
 
-.PHONY: help setup build test sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes figures step-cost soak clean
+.PHONY: help setup build test test-quick sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes figures step-cost soak clean
 
 help:
-	@echo "make sim    install what is missing, build, start the simulation"
+	@echo "make sim    install what is missing, build, start the simulation; open the address it prints first (GUI=false: headless)"
 	@echo "make test   install what is missing, build, run the whole test suite (PYTEST_ARGS=...)"
+	@echo "make test-quick  build, the test suite without the tests marked slow (PYTEST_ARGS=...)"
 	@echo "make demo   build, drive a figure-eight headless, print the figures, write figure_eight.png"
 	@echo "make setup  install what is missing (apt and pip); quiet when nothing is"
 	@echo "make build  build the catkin workspace in $(WS)/"
@@ -63,8 +67,12 @@ test: build
 	@# /usr/bin first: rostest's own nodes (hztest) start with `/usr/bin/env python3`.
 	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) -m pytest $(PYTEST_ARGS)
 
+# The tests marked slow (pytest.ini) left out: the loop while working; `make test` before a commit.
+test-quick: build
+	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) -m pytest -m "not slow" $(PYTEST_ARGS)
+
 sim: build
-	@$(ROS_ENV) bash tools/sim.sh
+	@$(ROS_ENV) GUI=$(GUI) bash tools/sim.sh
 
 # The peers come from PyPI for $(PYTHON), like xacro in tools/setup.sh; only the benchmark needs them.
 bench: build

@@ -19,10 +19,10 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test'))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test', 'helpers'))
 from plant_helpers import DIFF_BOT  # noqa: E402  (the test fixture is the benchmark's robot)
 from ros_plant_bench import cpu_seconds, driving_probe, plant_pid  # noqa: E402
-from tianracer_description.ros_harness import RosSystem, spawn_urdf, start_plant  # noqa: E402
+from ros_harness import RosSystem, spawn_urdf, start_plant  # noqa: E402
 
 ROUNDS = 3
 WINDOW = 30.0

@@ -8,7 +8,7 @@
   fastest             real time factor with real_time_factor:=0 (as fast as possible), same load
 
 Each figure is the median of ROUNDS rounds, each with its own ROS master. Uses the test harness
-(tianracer_description.ros_harness): real roscore, roslaunch and tools on loopback.
+(test/helpers/ros_harness.py): real roscore, roslaunch and tools on loopback.
 """
 import os
 import statistics
@@ -16,8 +16,9 @@ import sys
 import tempfile
 import time
 
-from tianracer_description.ros_harness import RosSystem
-from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test', 'helpers'))
+from ros_harness import RosSystem  # noqa: E402  (the test harness)
+from tianracer_description.tianracer import TUTORIAL_CONTROLLERS  # noqa: E402
 
 ROUNDS = 3
 WINDOW = 60.0        # s of wall time for the real time factor at real time

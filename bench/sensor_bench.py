@@ -37,10 +37,11 @@ matplotlib.use('Agg')
 import matplotlib.image  # noqa: E402 (after choosing the backend)
 import numpy as np  # noqa: E402
 
-from mesh_cost import write_obj  # beside this file
-from ros_plant_bench import plant_pid
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test', 'helpers'))
+from mesh_cost import write_obj  # noqa: E402  (beside this file)
+from ros_harness import RosSystem, tianracer_plant  # noqa: E402  (the test harness)
+from ros_plant_bench import plant_pid  # noqa: E402
 from tianracer_description import bullet_plant  # noqa: E402
-from tianracer_description.ros_harness import RosSystem, tianracer_plant  # noqa: E402
 from tianracer_description.tianracer import (CONFIG_YAML, MODEL_XACRO, RACE_TRACK_WORLD,  # noqa: E402
                                              REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS, run_xacro)
 

@@ -16,11 +16,12 @@ import sys
 import tempfile
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test'))
+TEST_DIR = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test')
+sys.path[:0] = [os.path.join(TEST_DIR, 'helpers'), os.path.join(TEST_DIR, 'viewer')]  # the suite's helpers, its viewer room
 from ros_plant_bench import cpu_seconds, plant_pid  # noqa: E402
 from sensor_bench import cpu_name, write_mesh_track  # noqa: E402
 from test_viewer import browser, wait_for  # noqa: E402  (the test's chromium, as a user opens it)
-from tianracer_description.ros_harness import RosSystem, free_port, tianracer_plant  # noqa: E402
+from ros_harness import RosSystem, free_port, tianracer_plant  # noqa: E402
 from tianracer_description.tianracer import tianracer_urdf  # noqa: E402
 
 ROUNDS = 3

@@ -1,13 +1,17 @@
-"""Shared fixtures. The suite runs through `make test`, which builds the catkin workspace and
+"""Shared fixtures of every room of test/. The suite runs through `make test`, which builds the catkin workspace and
 sources it; run by hand, `source .ws/devel/setup.bash` first. The car's files, controller names
 and URDF come from tianracer_description.tianracer, the ROS processes from
-tianracer_description.ros_harness (imported inside the fixtures: without a sourced workspace
+test/helpers/ros_harness.py (imported inside the fixtures: without a sourced workspace
 pytest_sessionstart says so instead of an import error)."""
 import os
 import shutil
+import sys
 
 import pytest
 import yaml
+
+# The rooms (test/<subject>/) import the shared helpers (test/helpers/) by their names.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'helpers'))
 
 
 def pytest_sessionstart(session):
@@ -79,7 +83,7 @@ def ros(request, tmp_path):
     if request.node.get_closest_marker('ros') is None:
         pytest.fail("%s starts a ROS master: mark it ros (pytestmark = pytest.mark.ros) so that "
                     "-m 'not ros' leaves it out" % request.node.nodeid, pytrace=False)
-    from tianracer_description.ros_harness import RosSystem
+    from ros_harness import RosSystem
     system = RosSystem(str(tmp_path))
     yield system
     system.close()

@@ -1,5 +1,5 @@
 """The README's screenshots of the browser viewer (docs/images/viewer_*.png), made the way
-test/test_viewer.py opens the page (Debian's chromium, headless): the race track with the car, its
+test/viewer/test_viewer.py opens the page (Debian's chromium, headless): the race track with the car, its
 camera's overlay and its lidar's hits, and the mesh track of test/fixtures/gazebo_pkg.
 
     source .ws/devel/setup.bash; export ROS_IP=127.0.0.1; /usr/bin/python3 tools/viewer_screenshots.py
@@ -10,10 +10,10 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, os.pardir, 'test'))
+sys.path[:0] = [os.path.join(HERE, os.pardir, 'test', 'helpers'), os.path.join(HERE, os.pardir, 'test', 'viewer')]
 from plant_helpers import FIXTURES, TRACK_WORLD  # noqa: E402
 from test_viewer import opened, tick_overlay  # noqa: E402
-from tianracer_description.ros_harness import RosSystem  # noqa: E402
+from ros_harness import RosSystem  # noqa: E402
 from tianracer_description.tianracer import RACE_TRACK_WORLD, tianracer_urdf  # noqa: E402
 
 OUT = os.path.join(HERE, os.pardir, 'docs', 'images')

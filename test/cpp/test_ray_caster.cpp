@@ -351,7 +351,7 @@ TEST(TexturedMeshes, EachTexelShowsWhereTheUvMappingPutsIt)
     }
 }
 
-// Every case here runs once per ISA of Embree's kernels this CPU runs (test/test_gtests.py sets
+// Every case here runs once per ISA of Embree's kernels this CPU runs (test/cpp/test_gtests.py sets
 // TIANRACER_EMBREE_ISA). A lidar's rays go in packets of 16: a fan of any size leaves lanes of its
 // last packet unused, and a range Embree cannot take leaves lanes invalid. The 16-wide kernels
 // (AVX-512) skip those lanes by the valid mask; the narrower ones cast every lane whose interval is

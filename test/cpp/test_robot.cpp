@@ -1,6 +1,7 @@
-// robot.cpp's recovery from a diverged physics step: the state goes back to the last finite one, the
-// error is said once per simulated second with a count, and after kRecoveriesBeforeDisabling
-// recoveries within a second the robot leaves the physics with one error while the world runs on.
+// divergence_recovery.cpp's recovery from a diverged physics step: the state goes back to the last
+// finite one, the error is said once per simulated second with a count, and after
+// kRecoveriesBeforeDisabling recoveries within a second the robot leaves the physics with one error
+// while the world runs on.
 // No URDF the plant accepts diverges any more, so the divergence is injected: a NaN base velocity
 // before each step. And Robot::contactNormals, the robot's contacts with anything else.
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 """The tutorial's checks as a rostest node (test/tutorial.test): the five controllers run, the
 tutorial's Twist drives the circle of the car's geometry, and the dead man's switch stops the car."""
 import math
+import os
 import sys
 import unittest
 
@@ -13,9 +14,11 @@ from std_msgs.msg import Float64
 
 from tianracer_description.ackermann import max_ideal_steering
 from tianracer_description.path_metrics import circle_radius
-from tianracer_description.ros_harness import running_controllers
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 from tianracer_description.urdf_geometry import ackermann_geometry
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, 'helpers'))
+from ros_harness import running_controllers  # noqa: E402  (the test harness, test/helpers)
 
 
 def sim_now():

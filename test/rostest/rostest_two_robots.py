@@ -2,6 +2,7 @@
 """Two cars in one world (test/two_robots.test): each runs the tutorial's five controllers in its own
 namespace, and commanding one car's wheels moves that car only."""
 import math
+import os
 import sys
 import time
 import unittest
@@ -11,8 +12,10 @@ import rostest
 from nav_msgs.msg import Odometry
 from std_msgs.msg import Float64
 
-from tianracer_description.ros_harness import connected_publisher, running_controllers
 from tianracer_description.tianracer import REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, 'helpers'))
+from ros_harness import connected_publisher, running_controllers  # noqa: E402  (the test harness, test/helpers)
 
 CARS = ('/car1/tianracer', '/car2/tianracer')
 

@@ -19,25 +19,20 @@
 #include "hardware/model_joint_sim.h"
 #include "rendering/frame_worker.h"
 #include "rendering/ray_caster.h"
-#include "sensors/sensor_context.h"
+#include "simulation/divergence_recovery.h"
+#include "simulation/external_efforts.h"
+#include "simulation/joint_wrench_watch.h"
+#include "simulation/robot_model_plugin_context.h"
 #include "simulation/robot_multibody.h"
+#include "simulation/robot_sensor_context.h"
 
 namespace bullet_plant
 {
-// The last state of a robot in which every number was finite, to fall back to if the physics
-// diverges (the world keeps running).
-struct LastGoodState
-{
-  std::vector<btScalar> q, qd;
-  btTransform base = btTransform::getIdentity();
-  btVector3 base_velocity{0, 0, 0}, base_omega{0, 0, 0};
-
-  void save(const RobotMultibody& robot);
-  // Back to the saved positions at rest.
-  void restore(RobotMultibody& robot) const;
-};
-
-struct Robot::Internals : SensorContext, ModelPluginContext
+// A robot's state in the plant; each of its jobs is a unit of its own: the step's phases
+// (robot_step.cpp), divergence recovery (divergence_recovery.h), gazebo_ros's wrench and effort
+// jobs (external_efforts.h), joint wrench watching (joint_wrench_watch.h), what its sensors read
+// (robot_sensor_context.h) and what its model plugins reach (robot_model_plugin_context.h).
+struct Robot::Internals
 {
   World::Internals* world = nullptr;
   Robot* self = nullptr;
@@ -54,91 +49,22 @@ struct Robot::Internals : SensorContext, ModelPluginContext
   std::vector<std::unique_ptr<ModelPlugin>> model_plugins;  // gazebo_plugins' drives (model_plugin.h)
   std::map<size_t, std::unique_ptr<ModelJointSim>> model_joints;  // by joint index: the ones model plugins drive
   btTransform spawn_pose;                                  // of the URDF root link
-  LastGoodState last_good;
-  long recoveries = 0;
-  int64_t recovery_window_start_ns = -1;  // the first recovery of the current simulated second
-  int recoveries_in_window = 0;
+  DivergenceRecovery recovery;
   bool disabled = false;                  // out of the physics after diverging step after step
-  // gazebo_ros's wrench and effort jobs (Robot::applyLinkWrench, applyJointEffort); end_ns < 0: no end.
-  struct LinkWrench
-  {
-    std::string link;
-    int body;
-    btVector3 force, torque;
-    int64_t start_ns, end_ns;
-  };
-  struct JointEffort
-  {
-    std::string joint;
-    int link;
-    double effort;
-    int64_t start_ns, end_ns;
-  };
-  std::vector<LinkWrench> wrenches;
-  std::vector<JointEffort> joint_efforts;
+  ExternalEfforts external_efforts;       // Robot::applyLinkWrench, applyJointEffort
+  JointWrenchWatches wrench_watches;      // ModelPluginContext::watchJointWrench
   std::vector<int> ray_bodies;            // each body's handle in the world's RayScene (-1: no shapes)
   std::vector<int> gl_bodies;             // the same in its GlScene
-  // Joints whose transmitted wrench is measured each step (ModelPluginContext::watchJointWrench):
-  // the child's subtree, its momenta and added forces before the step, the wrench after it.
-  struct JointWrenchWatch
-  {
-    std::string joint, child_link;
-    std::vector<int> bodies;                  // the child's body and every body below it
-    std::vector<btVector3> momentum, angular_momentum, force_added, torque_added;  // per body, before
-    urdf::Vector3 force, torque;              // the last step's, in the child link frame
-  };
-  std::vector<JointWrenchWatch> wrench_watches;
+  RobotSensorContext sensor_context{*this};              // what its sensors are handed
+  RobotModelPluginContext model_plugin_context{*this};   // what its model plugins are handed
 
-  // One step, as World::step calls them: controllers (each control period), writeSim, [physics],
-  // then recovery, readSim, sensors.
+  // One step, as World::step calls them (robot_step.cpp): controllers (each control period), model
+  // plugins' OnUpdate and the rows and forces of the joints they drive for the coming step,
+  // [writeSim, physics, recovery, readSim], sensors.
   void updateControllers(int64_t time_ns);
-  // Model plugins' OnUpdate, then the rows and forces of the joints they drive for the coming step.
   void updateModelPlugins(int64_t time_ns);
-  void recoverIfDiverged();
   void updateSensors(int64_t time_ns);
-  // Around the physics step: the watched joints' subtrees before it, their wrenches after it.
-  void beginJointWrenches();
-  void endJointWrenches();
-  // What its sensors read (SensorContext). linkMotion: a link frame's (or a point's of it, frame
-  // `offset` in the link) pose and velocities in the world.
-  bool hasLink(const std::string& link) const override;
-  urdf::Pose linkPose(const std::string& link) const override;
-  LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset) const override;
-  urdf::Vector3 gravity() const override;
-  const RayScene& lidarScene() override;
-  GlScene* glScene() override;
-  FrameWorker* frameWorker() override;
-  Lighting lighting() const override;
-  std::vector<ContactState> contacts(const std::string& link, const std::vector<std::string>& collisions) const override;
-  // What its model plugins reach (ModelPluginContext).
-  const std::string& modelName() const override { return name; }
-  const RobotDescription& robotDescription() const override { return description; }
-  const std::string& rootLink() const override;
-  ModelJoint* modelJoint(const std::string& joint, const std::string& plugin) override;
-  bool jointState(const std::string& joint, double& position, double& velocity) const override;
-  LinkMotion linkMotion(const std::string& link) const override { return linkMotion(link, urdf::Pose()); }
-  void setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular) override;
-  void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) override;
-  void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const override;
-  double linkMass(const std::string& link) const override;
-  double linkIxx(const std::string& link) const override;
-  bool setJointPosition(const std::string& joint, double position) override;
-  void setLinkWorldPose(const std::string& link, const urdf::Pose& pose) override;
-  void setPhysicsEnabled(bool enabled) override;
-  bool physicsEnabled() const override;
-  bool watchJointWrench(const std::string& joint) override;
-  void jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const override;
-  uint32_t noiseSeed(const ModelPluginDescription& plugin) const override;
-  double stepSize() const override;
-  const Param& params() const override;
-  std::string pluginNamespace(const ModelPluginDescription& plugin) const override;
-  std::string tfPrefix(const ModelPluginDescription& plugin) const override;
-  Log& log() override;
   void resetToSpawn();
-  // The wrench and effort jobs due at time_ns, as forces and torques of the coming step; expired
-  // jobs are dropped.
-  void applyExternalEfforts(int64_t time_ns);
-  bool hasExternalEfforts() const { return !wrenches.empty() || !joint_efforts.empty(); }
   // After positions or velocities were set by hand: kinematics, stale contact pairs, the last good state.
   void settleAfterTeleport();
   // The joint rows' and contacts' impulses (the solver's warm start) and the contacts themselves.
@@ -210,7 +136,7 @@ inline bool touching(const btManifoldPoint& point) { return point.getDistance() 
 
 // visit(point, ours_is_a, other) for each touching point between one of ours (`ours(object)`) and
 // anything that is not: the one walk over the manifolds of Robot::contactNormals and of a contact
-// sensor's link (Robot::Internals::contacts). Bullet's normal points from B into A.
+// sensor's link (RobotSensorContext::contacts). Bullet's normal points from B into A.
 template <class Ours, class Visit>
 void forTouchingPoints(btDispatcher& dispatcher, Ours ours, Visit visit)
 {

@@ -659,7 +659,7 @@ void createModelPlugins(Robot::Internals& r)
     plugin->setDescription(d);
     try
     {
-      if (plugin->Load(d, r, r.world->time_ns))
+      if (plugin->Load(d, r.model_plugin_context, r.world->time_ns))
         r.model_plugins.push_back(std::move(plugin));
     }
     catch (const DescriptionError& e)
@@ -695,7 +695,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
     r.world->log.warn(r.name + ": " + w);
   for (const std::string& e : r.description.errors)
     r.world->log.error(r.name + ": " + e);
-  r.last_good.save(r.multibody);
+  r.recovery.last_good.save(r.multibody);
 }
 
 void detachFromPhysics(Robot::Internals& r)

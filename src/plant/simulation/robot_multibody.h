@@ -1,7 +1,7 @@
 // A robot's Bullet multibody and what the plant keeps beside it: which URDF links make up each
 // rigid body, the movable joints with their limits and the constraint rows that act on them, and
 // the colliders. Built by robot_builder.cpp; read and driven by the joint layer, the sensors and
-// the Robot.
+// the Robot; its methods are in robot_multibody.cpp.
 #pragma once
 
 #include <map>
@@ -14,6 +14,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
+#include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/log.h"
 #include "physics/bullet_conversions.h"
@@ -73,6 +74,12 @@ struct RobotMultibody
   btTransform linkWorldTransform(const std::string& link, const std::string& robot) const;
   // The URDF root link's pose in the world.
   btTransform rootWorldTransform() const { return bullet->getBaseWorldTransform() * bodies[0].urdf_from_com.inverse(); }
+  // The one kinematics query (Robot::linkMotion, robot.h), which the sensors' and the model
+  // plugins' contexts answer with too. std::out_of_range for an unknown link.
+  LinkMotion linkMotion(const std::string& link, const urdf::Pose& offset, const std::string& robot) const;
+  // Link::AddForce and AddTorque on a body: a force at its centre of mass and a torque, world axes,
+  // for the coming step.
+  void addBodyWrench(int body, const btVector3& force, const btVector3& torque);
   // After positions were set by hand: link transforms and colliders follow.
   void updateKinematics();
   // Every JointDrive leaves the world's constraints with its impulse forgotten, as when built

@@ -335,8 +335,8 @@ void World::step(int n)
       {
         // gazebo_ros's wrench and effort jobs first: its system plugin's world update begin
         // callback runs before any model's, so gazebo_ros_f3d sees apply_body_wrench's force.
-        if (r->in_->hasExternalEfforts())
-          r->in_->applyExternalEfforts(w.time_ns);
+        if (!r->in_->external_efforts.empty())
+          r->in_->external_efforts.apply(r->in_->multibody, w.time_ns);
         r->in_->updateControllers(w.time_ns);
         r->in_->updateModelPlugins(w.time_ns);
       }
@@ -347,18 +347,19 @@ void World::step(int n)
     {
       for (auto& r : w.robots)
         if (!r->in_->disabled && !r->in_->wrench_watches.empty())
-          r->in_->beginJointWrenches();
+          r->in_->wrench_watches.beforeStep(r->in_->multibody);
       w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
       for (auto& r : w.robots)
         if (!r->in_->disabled && !r->in_->wrench_watches.empty())
-          r->in_->endJointWrenches();
+          r->in_->wrench_watches.afterStep(r->in_->multibody, r->in_->name, btScalar(w.step_s),
+                                           w.dynamics->getGravity(), *w.dispatcher);
     }
     w.time_ns += w.step_ns;
     ++w.steps;
     for (auto& r : w.robots)
       if (!r->in_->disabled)
       {
-        r->in_->recoverIfDiverged();
+        recoverIfDiverged(*r->in_);
         r->in_->joint_layer.readSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
       }
     for (auto& r : w.robots)

@@ -8,7 +8,7 @@ calls it and prints what happened; a failed call raises rospy.ServiceException, 
 Service names are relative (controller_manager/...), so ROS_NAMESPACE or __ns:= picks the manager.
 
 Nothing else here is public: scripts that also run with upstream's module first on PYTHONPATH may
-use only these names (test/test_controller_manager_module.py checks that).
+use only these names (test/compat_packages/test_controller_manager_module.py checks that).
 """
 import sys
 

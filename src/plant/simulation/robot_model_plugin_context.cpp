@@ -1,0 +1,150 @@
+#include "simulation/robot_model_plugin_context.h"
+
+#include <cmath>
+
+#include "bullet_plant/plugin_names.h"
+#include "physics/bullet_conversions.h"
+#include "simulation/internals.h"
+#include "simulation/robot_builder.h"
+
+namespace bullet_plant
+{
+const std::string& RobotModelPluginContext::modelName() const { return robot_.name; }
+
+const RobotDescription& RobotModelPluginContext::robotDescription() const { return robot_.description; }
+
+const std::string& RobotModelPluginContext::rootLink() const { return robot_.description.model->getRoot()->name; }
+
+ModelJoint* RobotModelPluginContext::modelJoint(const std::string& joint, const std::string& plugin)
+{
+  RobotMultibody& multibody = robot_.multibody;
+  auto index = multibody.joint_index.find(joint);
+  std::string problem;
+  if (index == multibody.joint_index.end())
+    problem = robot_.description.model->getJoint(joint)
+                  ? "which is fixed; a motor needs a revolute, continuous or prismatic joint"
+                  : "which robot '" + robot_.name + "' does not have";
+  else if (robot_.joint_layer.drives(index->second))
+    problem = "which a gazebo_ros_control transmission drives already; give the joint to one of them";
+  if (!problem.empty())
+  {
+    robot_.world->log.error(plugin + " names joint '" + joint + "', " + problem + "; the plugin is not loaded");
+    return nullptr;
+  }
+  std::unique_ptr<ModelJointSim>& motor = robot_.model_joints[index->second];
+  if (!motor)
+    motor.reset(new ModelJointSim(multibody.joints[index->second], *multibody.bullet));
+  return motor.get();
+}
+
+bool RobotModelPluginContext::jointState(const std::string& joint, double& position, double& velocity) const
+{
+  const RobotMultibody& multibody = robot_.multibody;
+  auto it = multibody.joint_index.find(joint);
+  if (it == multibody.joint_index.end())
+    return false;
+  position = multibody.bullet->getJointPos(multibody.joints[it->second].link);
+  velocity = multibody.bullet->getJointVel(multibody.joints[it->second].link);
+  return true;
+}
+
+LinkMotion RobotModelPluginContext::linkMotion(const std::string& link) const
+{
+  return robot_.multibody.linkMotion(link, urdf::Pose(), robot_.name);
+}
+
+void RobotModelPluginContext::setModelVelocity(const urdf::Vector3& linear, const urdf::Vector3& angular)
+{
+  btMultiBody& mb = *robot_.multibody.bullet;
+  if (mb.hasFixedBase() || !std::isfinite(linear.x + linear.y + linear.z + angular.x + angular.y + angular.z))
+    return;
+  mb.setBaseVel(toBullet(linear));
+  mb.setBaseOmega(toBullet(angular));
+}
+
+uint32_t RobotModelPluginContext::noiseSeed(const ModelPluginDescription& plugin) const
+{
+  return seedFor(robot_.name + "/" + plugin.name);
+}
+
+void RobotModelPluginContext::addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque)
+{
+  auto it = robot_.multibody.link_in_body.find(link);
+  if (it == robot_.multibody.link_in_body.end() ||
+      !std::isfinite(force.x + force.y + force.z + torque.x + torque.y + torque.z))
+    return;
+  robot_.multibody.addBodyWrench(it->second.first, toBullet(force), toBullet(torque));
+}
+
+void RobotModelPluginContext::addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const
+{
+  force = torque = urdf::Vector3();
+  auto it = robot_.multibody.link_in_body.find(link);
+  if (it == robot_.multibody.link_in_body.end())
+    return;
+  const btMultiBody& mb = *robot_.multibody.bullet;
+  const int body = it->second.first;
+  force = fromBullet(body == 0 ? mb.getBaseForce() : mb.getLinkForce(body - 1));
+  torque = fromBullet(body == 0 ? mb.getBaseTorque() : mb.getLinkTorque(body - 1));
+}
+
+bool RobotModelPluginContext::setJointPosition(const std::string& joint, double position)
+{
+  if (!robot_.multibody.joint_index.count(joint) || !std::isfinite(position))
+    return false;
+  robot_.self->setJointPositions({{joint, position}});
+  return true;
+}
+
+void RobotModelPluginContext::setLinkWorldPose(const std::string& link, const urdf::Pose& pose)
+{
+  if (!robot_.multibody.link_in_body.count(link) || robot_.multibody.bullet->hasFixedBase())
+    return;
+  robot_.self->setLinkState(link, pose, Twist());
+}
+
+void RobotModelPluginContext::setPhysicsEnabled(bool enabled) { robot_.world->physics_enabled = enabled; }
+
+bool RobotModelPluginContext::physicsEnabled() const { return robot_.world->physics_enabled; }
+
+bool RobotModelPluginContext::watchJointWrench(const std::string& joint)
+{
+  return robot_.wrench_watches.watch(robot_.multibody, *robot_.description.model, joint);
+}
+
+void RobotModelPluginContext::jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const
+{
+  robot_.wrench_watches.wrench(joint, force, torque);
+}
+
+urdf::Vector3 RobotModelPluginContext::gravity() const { return robot_.world->description.gravity; }
+
+double RobotModelPluginContext::linkMass(const std::string& link) const
+{
+  auto it = robot_.multibody.link_in_body.find(link);
+  return it == robot_.multibody.link_in_body.end() ? 0.0 : robot_.multibody.bodies[size_t(it->second.first)].mass;
+}
+
+double RobotModelPluginContext::linkIxx(const std::string& link) const
+{
+  urdf::LinkConstSharedPtr l = robot_.description.model->getLink(link);
+  return l && l->inertial ? l->inertial->ixx : 0.0;
+}
+
+double RobotModelPluginContext::stepSize() const { return robot_.world->step_s; }
+
+const Param& RobotModelPluginContext::params() const { return robot_.world->params; }
+
+std::string RobotModelPluginContext::pluginNamespace(const ModelPluginDescription& plugin) const
+{
+  return modelPluginNamespace(plugin, robot_.spawn_namespace, robot_.name);
+}
+
+std::string RobotModelPluginContext::tfPrefix(const ModelPluginDescription& plugin) const
+{
+  return modelPluginTfPrefix(plugin, pluginNamespace(plugin));
+}
+
+Log& RobotModelPluginContext::log() { return robot_.world->log; }
+
+}  // namespace bullet_plant

@@ -1,0 +1,248 @@
+"""Real ROS processes for the integration tests, the ROS benchmarks and `make demo`: a ROS master on a
+free loopback port, roslaunch, rosrun and the command-line tools, each test with its own master.
+rospy binds a process to one master, so the tests talk to ROS through subprocesses (the tools, or
+short rospy programs). A test harness, not part of the runtime package: the suite's conftest.py puts
+this folder (test/helpers) on sys.path, bench/ and tools/ put it there themselves, and the processes
+a RosSystem starts find it on PYTHONPATH (their rospy programs import it by name, `ros_harness`)."""
+import json
+import math
+import os
+import signal
+import socket
+import subprocess
+import textwrap
+import time
+
+import yaml
+
+from tianracer_description.tianracer import CONFIG_YAML
+
+PYTHON = '/usr/bin/python3'
+HELPERS = os.path.dirname(os.path.abspath(__file__))  # this folder, for the processes' PYTHONPATH
+
+
+def message_to_dict(message):
+    """A ROS message as plain JSON values, for the rospy snippets of the tests: times as seconds,
+    non-finite floats as their repr (JSON has none)."""
+    if hasattr(message, 'to_sec'):
+        return message.to_sec()
+    if hasattr(message, '__slots__'):
+        return {slot: message_to_dict(getattr(message, slot)) for slot in message.__slots__}
+    if isinstance(message, (list, tuple)):
+        return [message_to_dict(item) for item in message]
+    if isinstance(message, float) and not math.isfinite(message):
+        return repr(message)
+    return message
+
+
+def connected_publisher(topic, message_class, timeout=30.0, **options):
+    """For the rospy snippets of the tests: a rospy Publisher once a subscriber has connected to it, so
+    that what it publishes next is heard at once (before the connection a message is lost, or, latched,
+    it arrives later by the connection's time and shortens a measurement that follows it)."""
+    import rospy
+    publisher = rospy.Publisher(topic, message_class, **options)
+    end = time.monotonic() + timeout
+    while publisher.get_num_connections() == 0:
+        if time.monotonic() > end:
+            raise RuntimeError('nothing subscribed to %s within %g s: is the plant running the plugin or '
+                               'controller that reads it?' % (topic, timeout))
+        time.sleep(0.01)
+    return publisher
+
+
+def free_port():
+    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
+        s.bind(('127.0.0.1', 0))
+        return s.getsockname()[1]
+
+
+class Process:
+    """A background process in its own process group, stopped through its own pid."""
+
+    def __init__(self, args, env, log_path):
+        self.log_path = log_path
+        self._log = open(log_path, 'w')
+        # SIGINT as a terminal's Ctrl-C delivers it, even when the suite itself runs as a background
+        # job of a shell without job control (which starts it with SIGINT ignored, inherited here).
+        self.popen = subprocess.Popen(args, env=env, stdout=self._log, stderr=subprocess.STDOUT,
+                                      stdin=subprocess.DEVNULL, start_new_session=True,
+                                      preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+
+    @property
+    def pid(self):
+        return self.popen.pid
+
+    def interrupt(self):
+        """SIGINT to the process group (as Ctrl-C in a terminal)."""
+        if self.popen.poll() is None:
+            os.killpg(self.popen.pid, signal.SIGINT)
+
+    def wait(self, timeout):
+        try:
+            return self.popen.wait(timeout)
+        except subprocess.TimeoutExpired:
+            return None
+
+    def stop(self, timeout=10.0):
+        if self.popen.poll() is None:
+            self.interrupt()
+            if self.wait(timeout) is None:
+                os.killpg(self.popen.pid, signal.SIGKILL)
+                self.popen.wait(5)
+        self._log.close()
+
+    def log(self):
+        self._log.flush()
+        with open(self.log_path, errors='replace') as f:
+            return f.read()
+
+
+class RosSystem:
+    """A ROS master of its own and the processes started against it."""
+
+    def __init__(self, workdir):
+        self.workdir = workdir
+        self.port = free_port()
+        self.env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % self.port, ROS_IP='127.0.0.1',
+                        ROS_HOME=os.path.join(workdir, 'ros_home'), PYTHONUNBUFFERED='1')
+        self.env.pop('ROS_HOSTNAME', None)
+        self.env['PYTHONPATH'] = os.pathsep.join(filter(None, [HELPERS, os.environ.get('PYTHONPATH')]))
+        self.processes = []
+        self.master = self.start(['roscore', '-p', str(self.port)], 'roscore')
+        self.wait_until(lambda: self.run(['rosparam', 'list'], timeout=5).returncode == 0, 15, 'the ROS master')
+
+    def start(self, args, name):
+        process = Process(args, self.env, os.path.join(self.workdir, name + '.log'))
+        self.processes.append(process)
+        return process
+
+    def run(self, args, timeout=30, input=None):
+        return subprocess.run(args, env=self.env, capture_output=True, text=True, timeout=timeout, input=input)
+
+    def python(self, code, timeout=30):
+        """Runs a rospy snippet against this master; it prints one JSON value, which is returned."""
+        result = self.run([PYTHON, '-c', textwrap.dedent(code)], timeout=timeout)
+        assert result.returncode == 0, result.stderr
+        return json.loads(result.stdout.strip().splitlines()[-1])
+
+    def service(self, name, request_yaml='{}', timeout=15):
+        result = self.run(['rosservice', 'call', name, request_yaml], timeout=timeout)
+        assert result.returncode == 0, result.stderr + result.stdout
+        return yaml.safe_load(result.stdout)
+
+    def wait_for_controllers(self, count, namespace='/tianracer', timeout=60):
+        """Until `count` controllers run in the namespace's controller manager (polled every 20 ms)."""
+        self.python("""
+            import json, time, rospy
+            from controller_manager_msgs.srv import ListControllers
+            name = '%s/controller_manager/list_controllers'
+            while True:
+                try:
+                    rospy.wait_for_service(name, 0.05)
+                    if [c.state for c in rospy.ServiceProxy(name, ListControllers)().controller].count('running') == %d:
+                        break
+                except (rospy.ROSException, rospy.ServiceException):
+                    pass
+                time.sleep(0.02)
+            print(json.dumps(True))
+        """ % (namespace, count), timeout=timeout)
+
+    @staticmethod
+    def wait_until(condition, timeout, what):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if condition():
+                return
+            time.sleep(0.1)
+        raise AssertionError('timed out after %g s waiting for %s' % (timeout, what))
+
+    def close(self):
+        for process in reversed(self.processes):
+            process.stop()
+
+
+def start_plant(ros, world=None, paused=False):
+    """The simulator, as empty_world.launch starts it (no robot yet)."""
+    args = ['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=false', 'paused:=%s' % str(paused).lower()]
+    if world:
+        args.append('world_name:=' + world)
+    return ros.start(args, 'plant')
+
+
+def spawn_urdf(ros, plant, param, model, *options):
+    """spawn_model -urdf -param PARAM -model MODEL [options...], as a launch file's spawn_model node
+    runs it; asserts it succeeded (the plant's log in the message otherwise)."""
+    spawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', param, '-model', model,
+                     *options], timeout=60)
+    assert spawn.returncode == 0, spawn.stdout + spawn.stderr + plant.log()
+
+
+def tianracer_plant(ros, urdf_path, world=None, paused=False):
+    """The plant with the car spawned and the tutorial's YAML loaded (no controllers yet)."""
+    plant = start_plant(ros, world, paused)
+    ros.run(['rosparam', 'set', '/robot_description', '--textfile', urdf_path])
+    ros.run(['rosparam', 'load', CONFIG_YAML])
+    spawn_urdf(ros, plant, 'robot_description', 'tianracer')
+    return plant
+
+
+def spawn_with_controllers(ros, plant, urdf_path, controllers_yaml, namespace, model, controllers):
+    """A robot driven through gazebo_ros_control, as a robot maker's launch file brings it up: its
+    URDF on <namespace>/robot_description, its controllers' YAML loaded, spawn_model, then
+    controller_manager's spawner in the namespace; returns the spawner once they all run."""
+    ros.run(['rosparam', 'set', namespace + '/robot_description', '--textfile', urdf_path])
+    ros.run(['rosparam', 'load', controllers_yaml])
+    spawn_urdf(ros, plant, namespace + '/robot_description', model)
+    spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=' + namespace, *controllers], 'spawner')
+    ros.wait_for_controllers(len(controllers), namespace=namespace)
+    return spawner
+
+
+def frames_in(ros, target, topics, timeout=30):
+    """Through a tf2 buffer (tf2_ros, as rviz and navigation use it): one message of each topic, its
+    header's frame id and that frame's origin in `target` at the message's stamp. A message stamped
+    before the buffer's first transform is dropped for the next, as a tf2 message filter drops it.
+    {topic: {'frame': ..., 'xyz': [x, y, z]}}; a lookup that fails fails the snippet."""
+    return ros.python(f"""
+        import json, rospy, rostopic, tf2_ros
+        rospy.init_node('tf2_probe', anonymous=True)
+        buffer = tf2_ros.Buffer()
+        listener = tf2_ros.TransformListener(buffer)
+        out = {{}}
+        for topic in {list(topics)!r}:
+            cls, name, _ = rostopic.get_topic_class(topic, blocking=True)
+            for attempt in range(5):
+                msg = rospy.wait_for_message(topic, cls, timeout={timeout})
+                try:
+                    t = buffer.lookup_transform({target!r}, msg.header.frame_id, msg.header.stamp, rospy.Duration(10.0))
+                    break
+                except tf2_ros.ExtrapolationException:
+                    # Stamped before the listener's first /tf message: rviz's message filter drops such a
+                    # message too. The next one is newer; a stamp that never resolves fails at the fifth.
+                    if attempt == 4:
+                        raise
+            v = t.transform.translation
+            out[topic] = {{'frame': msg.header.frame_id, 'xyz': [v.x, v.y, v.z]}}
+        print(json.dumps(out))
+    """, timeout=timeout * len(topics) + 30)
+
+
+def running_controllers(namespace, count, timeout=60.0):
+    """From inside a rospy node (the rostest nodes): the names of the controllers running in the
+    controller manager of `namespace` once `count` of them run, or at the timeout (wall clock)."""
+    import rospy
+    from controller_manager_msgs.srv import ListControllers
+    service = namespace + '/controller_manager/list_controllers'
+    end = time.monotonic() + timeout
+    running = []
+    while time.monotonic() < end and not rospy.is_shutdown():
+        try:
+            rospy.wait_for_service(service, 1.0)
+            running = [c.name for c in rospy.ServiceProxy(service, ListControllers)().controller
+                       if c.state == 'running']
+            if len(running) >= count:
+                break
+        except (rospy.ROSException, rospy.ServiceException):
+            pass
+        time.sleep(0.05)
+    return running

@@ -1,0 +1,109 @@
+"""The simulator node against bad settings: --help, a real_time_factor too small or not a number, and a
+slow pace that must keep serving services and stop on Ctrl-C."""
+import os
+import subprocess
+import time
+
+import pytest
+
+from ros_harness import free_port
+
+
+def test_help_prints_usage_without_a_master():
+    env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % free_port(), ROS_IP='127.0.0.1')
+    result = subprocess.run(['rosrun', 'tianracer_description', 'bullet_plant', '--help'], env=env,
+                            capture_output=True, text=True, timeout=10)
+    assert result.returncode == 0, result.stderr
+    assert 'usage: bullet_plant' in result.stdout
+    assert 'real_time_factor' in result.stdout
+
+
+@pytest.mark.ros
+@pytest.mark.parametrize('value', ['1e-6', "'1e-6'", 'fast'])
+def test_a_real_time_factor_too_small_or_not_a_number_is_refused(ros, value):
+    # `_real_time_factor:=1e-6` arrives as a string (YAML 1.1 reads no float without a dot), as from roslaunch.
+    plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=' + value], 'plant')
+    assert plant.wait(15) == 1, plant.log()
+    assert '/gazebo/real_time_factor' in plant.log()
+
+
+@pytest.mark.ros
+def test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c(ros):
+    # At 1e-3 one 1 ms step lasts a wall second; services and Ctrl-C must not wait for it.
+    plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0.001'], 'plant')
+    latency = ros.python("""
+        import json, time, rospy
+        from std_srvs.srv import Empty
+        rospy.wait_for_service('/gazebo/reset_world', 20)
+        call = rospy.ServiceProxy('/gazebo/reset_world', Empty)
+        call()
+        worst = 0.0
+        for _ in range(3):
+            start = time.monotonic()
+            call()
+            worst = max(worst, time.monotonic() - start)
+        print(json.dumps(worst))
+    """)
+    assert latency < 0.3, plant.log()
+    sent = time.monotonic()
+    plant.interrupt()
+    assert plant.wait(5) is not None, plant.log()
+    assert time.monotonic() - sent < 3
+
+
+@pytest.mark.ros
+@pytest.mark.parametrize('bad, what', [
+    ('<topicName>my scan</topicName>', "sensor 'lidar' topic: 'my scan'"),
+    ('<topicName>1scan</topicName>', "sensor 'lidar' topic: '1scan'"),
+    ('<robotNamespace>/tian racer</robotNamespace>', "robotNamespace: '/tian racer'"),
+    ('<robotNamespace>/tianracer</robotNamespace><eStopTopic>e stop</eStopTopic>', "eStopTopic: 'e stop'"),
+])
+def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, urdf_xml, bad, what):
+    import re
+    tag = re.match(r'<(\w+)>', bad).group(1)
+    original = '<topicName>scan</topicName>' if tag == 'topicName' else \
+        re.search(r'<robotNamespace>[^<]*</robotNamespace>', urdf_xml).group(0)
+    assert original in urdf_xml
+    bad_urdf = urdf_xml.replace(original, bad, 1)
+    plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0'], 'plant')
+    ros.run(['rosservice', 'call', '--wait', '/gazebo/pause_physics'], timeout=30)
+    spawn = ros.python("""
+        import json, rospy
+        from gazebo_msgs.srv import SpawnModel
+        call = rospy.ServiceProxy('/gazebo/spawn_urdf_model', SpawnModel)
+        bad = call(model_name='bad', model_xml=%r, robot_namespace='')
+        good = call(model_name='good', model_xml=%r, robot_namespace='')
+        print(json.dumps([bad.success, bad.status_message, good.success]))
+    """ % (bad_urdf, urdf_xml.replace(original, original, 1)), timeout=60)
+    assert spawn[0] is False and what in spawn[1], spawn
+    assert spawn[2] is True, plant.log()
+    ros.service('/gazebo/unpause_physics')
+    time.sleep(1.0)
+    assert plant.popen.poll() is None, plant.log()
+    assert ros.run(['rostopic', 'echo', '-n', '1', '/tianracer/odom'], timeout=20).returncode == 0, plant.log()
+
+
+@pytest.mark.ros
+@pytest.mark.slow
+def test_mistakes_through_spawn_model_and_the_controller_manager_get_answers_not_exceptions(ros, urdf_file):
+    from ros_harness import tianracer_plant
+    plant = tianracer_plant(ros, urdf_file, paused=True)
+
+    def spawn_model(*args):
+        return ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'robot_description']
+                       + list(args), timeout=60)
+    yaw = spawn_model('-model', 'spun', '-Y', 'inf')
+    assert yaw.returncode == 1 and 'Traceback' not in yaw.stderr, yaw.stderr
+    assert "option '-Y' needs a finite number, not inf" in yaw.stdout + yaw.stderr
+    # The URDF's robotNamespace is /tianracer, where the first car's controller manager already is.
+    twin = spawn_model('-model', 'twin', '-y', '2')
+    assert twin.returncode == 1
+    assert ("robot 'twin': robotNamespace '/tianracer' already holds the controller manager of robot 'tianracer'"
+            in twin.stdout + twin.stderr), twin.stdout + twin.stderr
+    for name in ('a b', '../../etc', '~x'):
+        answer = ros.service('/tianracer/controller_manager/load_controller', "{name: '%s'}" % name)
+        assert answer == {'ok': False}, answer
+        ros.wait_until(lambda: "Exception thrown while constructing nodehandle for controller with name '%s'" % name
+                       in plant.log(), 10, 'the load error in the log')
+    assert ros.service('/tianracer/controller_manager/load_controller', '{name: joint_state_controller}') == {'ok': True}
+    assert plant.popen.poll() is None, plant.log()

@@ -1,0 +1,241 @@
+"""The plant as a ROS node, each test with its own ROS master: the tutorial's spawner line, the
+controller manager services through rosservice, controller topics, the simulator services, the lidar,
+spawn_model. What a user of Gazebo + gazebo_ros_control would type, against the real tools."""
+import math
+import time
+
+import pytest
+
+from ros_harness import tianracer_plant
+from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
+
+pytestmark = pytest.mark.ros
+
+NS = '/tianracer'
+CM = NS + '/controller_manager/'
+
+
+@pytest.fixture
+def plant(ros, urdf_file):
+    return tianracer_plant(ros, urdf_file)
+
+
+def spawner(ros, *names):
+    """The tutorial's control.launch spawner line: ns /tianracer, the controllers as arguments."""
+    return ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=' + NS] + list(names), 'spawner')
+
+
+def controller_states(ros):
+    return {c['name']: c for c in ros.service(CM + 'list_controllers')['controller']}
+
+
+def wait_for_running(ros, names, timeout=20):
+    ros.wait_until(lambda: all(controller_states(ros).get(n, {}).get('state') == 'running' for n in names),
+                   timeout, 'controllers %s running' % ', '.join(names))
+
+
+def echo(ros, topic, count=1, timeout=15):
+    """`count` messages of a topic as dicts (rospy snippet: no YAML guessing of nan/inf)."""
+    return ros.python(f"""
+        import json, rospy, rostopic
+        from ros_harness import message_to_dict
+        rospy.init_node('probe', anonymous=True)
+        cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
+        got = []
+        sub = rospy.Subscriber(name, cls, lambda m: got.append(message_to_dict(m)))
+        import time
+        end = time.monotonic() + {timeout}
+        while len(got) < {count} and time.monotonic() < end:
+            time.sleep(0.01)
+        print(json.dumps(got[:{count}]))
+    """, timeout=timeout + 10)
+
+
+@pytest.mark.slow
+def test_tutorial_spawner_starts_the_five_controllers(ros, plant):
+    start = time.monotonic()
+    spawn = spawner(ros, *TUTORIAL_CONTROLLERS)
+    # Polled every 20 ms in one process: a `rosservice call` per poll would add its own start-up,
+    # a second or two each on a loaded 2-core machine, to what is timed.
+    ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS), namespace=NS)
+    started_in = time.monotonic() - start
+    wait_for_running(ros, TUTORIAL_CONTROLLERS)
+    states = controller_states(ros)
+    assert list(states) == list(TUTORIAL_CONTROLLERS)
+    assert states['rear_left_velocity_controller']['claimed_resources'] == [
+        {'hardware_interface': 'hardware_interface::VelocityJointInterface', 'resources': ['left_rear_wheel_joint']}]
+    assert states['front_left_steering_position_controller']['claimed_resources'][0]['resources'] == [
+        'left_steering_hinge_joint']
+    for service, srv_type in [('load_controller', 'LoadController'), ('unload_controller', 'UnloadController'),
+                              ('switch_controller', 'SwitchController'), ('list_controllers', 'ListControllers'),
+                              ('list_controller_types', 'ListControllerTypes'),
+                              ('reload_controller_libraries', 'ReloadControllerLibraries')]:
+        result = ros.run(['rosservice', 'type', CM + service])
+        assert result.stdout.strip() == 'controller_manager_msgs/' + srv_type
+    assert started_in < 15
+    assert spawn.popen.poll() is None, 'the spawner keeps running until it is stopped'
+
+
+@pytest.mark.slow
+def test_command_topic_turns_the_wheel_and_state_topics_publish(ros, plant):
+    spawner(ros, *TUTORIAL_CONTROLLERS)
+    wait_for_running(ros, TUTORIAL_CONTROLLERS)
+    ros.run(['rostopic', 'pub', '-1', NS + '/rear_left_velocity_controller/command', 'std_msgs/Float64', 'data: 8.0'])
+
+    def left_wheel_velocity():
+        state = echo(ros, NS + '/joint_states')[0]
+        return dict(zip(state['name'], state['velocity']))['left_rear_wheel_joint']
+    ros.wait_until(lambda: abs(left_wheel_velocity() - 8.0) < 0.2, 10, 'the left rear wheel at 8 rad/s')
+    state = echo(ros, NS + '/front_left_steering_position_controller/state')[0]
+    assert (state['p'], state['i'], state['d']) == (4.0, 2.0, 1.0)
+    assert echo(ros, NS + '/front_right_steering_position_controller/state')
+
+
+@pytest.mark.slow
+def test_controller_manager_errors_through_rosservice(ros, plant):
+    ros.run(['rosparam', 'set', NS + '/wrong_joint', "{type: velocity_controllers/JointVelocityController, joint: nope}"])
+    assert ros.service(CM + 'load_controller', "name: 'not_configured'") == {'ok': False}
+    assert ros.service(CM + 'load_controller', "name: 'wrong_joint'") == {'ok': False}
+    assert ros.service(CM + 'load_controller', "name: 'joint_state_controller'") == {'ok': True}
+    assert ros.service(CM + 'load_controller', "name: 'joint_state_controller'") == {'ok': False}
+    strict = "{start_controllers: [ghost], stop_controllers: [], strictness: 2, start_asap: false, timeout: 0.0}"
+    assert ros.service(CM + 'switch_controller', strict) == {'ok': False}
+    assert ros.service(CM + 'unload_controller', "name: 'ghost'") == {'ok': False}
+    ros.wait_until(lambda: "Could not find resource 'nope'" in plant.log(), 5, 'the error in the log')
+    log = plant.log()
+    for text in ["Could not load controller 'not_configured' because the type was not specified",
+                 "Initializing controller 'wrong_joint' failed",
+                 "A controller named 'joint_state_controller' was already loaded",
+                 "Could not start controller with name 'ghost' because no controller with this name exists",
+                 "Could not unload controller with name 'ghost' because no controller with this name exists"]:
+        assert text in log
+    assert plant.popen.poll() is None
+    # A switch while paused returns at once (the real manager would wait for a control loop that is stopped).
+    ros.service('/gazebo/pause_physics')
+    start = time.monotonic()
+    switch = "{start_controllers: [joint_state_controller], stop_controllers: [], strictness: 2, start_asap: false, timeout: 0.0}"
+    assert ros.service(CM + 'switch_controller', switch, timeout=10) == {'ok': True}
+    assert time.monotonic() - start < 5
+    assert controller_states(ros)['joint_state_controller']['state'] == 'running'
+
+
+@pytest.mark.slow
+def test_sigint_to_the_spawner_stops_and_unloads_its_controllers(ros, plant):
+    # What roslaunch's Ctrl-C needs: the spawner exits (upstream's could hang) and leaves nothing
+    # loaded. How quickly is not timed here (a test times nothing): on a slow machine one rosservice
+    # poll alone takes a second.
+    spawn = spawner(ros, *TUTORIAL_CONTROLLERS)
+    wait_for_running(ros, TUTORIAL_CONTROLLERS)
+    spawn.interrupt()
+    assert spawn.wait(5) is not None, 'the spawner exits'
+    ros.wait_until(lambda: controller_states(ros) == {}, 10, 'the controllers unloaded')
+
+
+@pytest.mark.slow
+def test_non_finite_commands_leave_the_state_finite(ros, plant):
+    spawner(ros, *TUTORIAL_CONTROLLERS)
+    wait_for_running(ros, TUTORIAL_CONTROLLERS)
+    for value in ('.nan', '.inf', '-.inf'):
+        ros.run(['rostopic', 'pub', '-1', NS + '/rear_left_velocity_controller/command', 'std_msgs/Float64',
+                 'data: ' + value])
+        ros.run(['rostopic', 'pub', '-1', NS + '/front_left_steering_position_controller/command', 'std_msgs/Float64',
+                 'data: ' + value])
+    state = echo(ros, NS + '/joint_states')[0]
+    odom = echo(ros, NS + '/odom')[0]
+    numbers = state['position'] + state['velocity'] + state['effort'] + list(odom['pose']['pose']['position'].values())
+    assert all(isinstance(v, float) and math.isfinite(v) for v in numbers)
+    assert 'Rejected a non-finite command' in plant.log()
+
+
+def test_pause_unpause_and_reset_like_gazebo(ros, plant):
+    assert ros.run(['rosparam', 'get', '/use_sim_time']).stdout.strip() == 'true'
+    clock = ros.python("""
+        import json, time, rospy
+        from rosgraph_msgs.msg import Clock
+        from std_srvs.srv import Empty
+        rospy.init_node('probe', anonymous=True)
+        stamps = []
+        rospy.Subscriber('/clock', Clock, lambda m: stamps.append(m.clock.to_sec()))
+        def call(name):
+            rospy.wait_for_service(name, 10)
+            rospy.ServiceProxy(name, Empty)()
+        def settle(seconds):
+            time.sleep(seconds)
+            return len(stamps)
+        settle(1.0)
+        call('/gazebo/pause_physics')
+        n = settle(0.1)
+        paused_at = stamps[-1]
+        during_pause = settle(0.5) - n
+        call('/gazebo/unpause_physics')
+        end = time.time() + 20  # generous: a loaded machine may take a while to publish again
+        while len(stamps) <= n and time.time() < end:
+            time.sleep(0.01)
+        resumed = stamps[n]
+        call('/gazebo/reset_simulation')
+        settle(0.3)
+        print(json.dumps(dict(paused_at=paused_at, during_pause=during_pause, resumed=resumed, after_reset=stamps[-1])))
+    """)
+    assert clock['during_pause'] == 0, 'no /clock while paused'
+    assert clock['paused_at'] < clock['resumed'] < clock['paused_at'] + 0.05, 'time goes on from where it stopped'
+    assert clock['after_reset'] < 0.5, 'reset_simulation restarts time from 0'
+
+
+def test_scan_publishes_at_40_hz_of_simulated_time_in_the_lasers_frame(ros, plant):
+    scans = echo(ros, '/scan', count=20, timeout=20)
+    assert len(scans) == 20
+    stamps = [s['header']['stamp'] for s in scans]
+    periods = [b - a for a, b in zip(stamps, stamps[1:])]
+    assert all(p == pytest.approx(0.025, abs=1e-6) for p in periods)
+    assert {s['header']['frame_id'] for s in scans} == {'laser_link'}
+    assert len(scans[0]['ranges']) == 1081
+
+
+def test_spawn_model_with_a_malformed_urdf_exits_1_with_the_parsers_message(ros, plant, tmp_path):
+    broken = tmp_path / 'broken.urdf'
+    broken.write_text('<robot name="broken"><link name="a"><joint></robot>')
+    result = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-file', str(broken), '-model', 'broken'])
+    assert result.returncode == 1
+    assert 'not well-formed' in result.stdout + result.stderr
+    assert plant.popen.poll() is None
+    assert ros.service(CM + 'load_controller', "name: 'joint_state_controller'") == {'ok': True}
+
+
+@pytest.mark.slow
+def test_cameras_publish_at_their_rates_only_while_subscribed(ros, plant):
+    rates = ros.python("""
+        import json, time, rospy
+        from sensor_msgs.msg import CameraInfo, Image, PointCloud2
+        rospy.init_node('camera_probe', anonymous=True)
+        got = {}
+        def keep(topic):
+            return lambda m: got.setdefault(topic, []).append(m)
+        topics = {'/camera/image_raw': Image, '/camera/camera_info': CameraInfo,
+                  '/depth_camera/depth/image_raw': Image,
+                  '/depth_camera/depth/camera_info': CameraInfo,
+                  '/depth_camera/depth/points': PointCloud2}
+        subs = [rospy.Subscriber(t, cls, keep(t)) for t, cls in topics.items()]
+        time.sleep(4.0)
+        out = {}
+        for topic, msgs in got.items():
+            stamps = [m.header.stamp.to_sec() for m in msgs[2:]]
+            out[topic] = dict(rate=(len(stamps) - 1) / (stamps[-1] - stamps[0]), frame=msgs[-1].header.frame_id,
+                              size=[msgs[-1].width, msgs[-1].height],
+                              encoding=getattr(msgs[-1], 'encoding', None))
+        for s in subs:
+            s.unregister()
+        time.sleep(2.0)
+        print(json.dumps(out))
+    """, timeout=60)
+    camera, info = rates['/camera/image_raw'], rates['/camera/camera_info']
+    assert camera['rate'] == pytest.approx(30, rel=0.05) and camera['encoding'] == 'rgb8'
+    assert info['size'] == camera['size'] == [160, 120]
+    assert camera['frame'] == 'camera_optical_frame'
+    depth = rates['/depth_camera/depth/image_raw']
+    assert depth['rate'] == pytest.approx(15, rel=0.05) and depth['encoding'] == '32FC1'
+    assert rates['/depth_camera/depth/camera_info']['size'] == depth['size'] == [128, 96]
+    assert rates['/depth_camera/depth/points']['size'] == [128, 96]
+    log = plant.log()
+    for sensor in ('camera', 'depth_camera'):
+        assert "tianracer sensor '%s': subscribed, computing" % sensor in log
+    ros.wait_until(lambda: "tianracer sensor 'camera': no subscribers, idle" in plant.log(), 5, 'the camera idle')

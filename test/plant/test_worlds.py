@@ -1,0 +1,305 @@
+"""Gazebo worlds and models as their users ship them, read without a ROS master: model:// through
+GAZEBO_MODEL_PATH and through a package's gazebo_model_path export on ROS_PACKAGE_PATH, <include>
+with name, pose and static overrides, model.config's newest SDF, nested includes, mesh URIs relative
+to the file naming them, and what is left out with one warning instead of stopping the world.
+
+Each test builds its own model and package directories in tmp_path. Mesh physics is not checked here
+(the meshes are never collided with): a mesh's description is checked through static_collisions()."""
+import math
+import re
+
+import pytest
+
+from plant_helpers import logged
+from suite_paths import REPOSITORY
+from tianracer_description import bullet_plant
+
+WALL_SDF = """<?xml version="1.0"?>
+<sdf version="{version}"><model name="{name}"><static>{static}</static><pose>{pose}</pose>
+  <link name="link">{collisions}</link>
+</model></sdf>"""
+
+BOX_COLLISION = """<collision name="{name}"><pose>{pose}</pose>
+  <geometry><box><size>{size}</size></box></geometry></collision>"""
+
+MESH_COLLISION = """<collision name="{name}">
+  <geometry><mesh><uri>{uri}</uri><scale>{scale}</scale></mesh></geometry></collision>"""
+
+STL = "solid part\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid part\n"
+
+
+def write(path, text):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+    return path
+
+
+def make_model(models_dir, name, collisions, pose='0 0 0 0 0 0', static='true', config=None):
+    """A Gazebo model directory: model.config naming model.sdf, and model.sdf with one link."""
+    model_dir = models_dir / name
+    write(model_dir / 'model.config', config or f"""<?xml version="1.0"?>
+<model><name>{name}</name><version>1.0</version><sdf version="1.6">model.sdf</sdf></model>""")
+    write(model_dir / 'model.sdf', WALL_SDF.format(version='1.6', name=name, static=static, pose=pose,
+                                                   collisions=collisions))
+    return model_dir
+
+
+def wall(name='collision', pose='0 0 0 0 0 0', size='0.1 2 1'):
+    return BOX_COLLISION.format(name=name, pose=pose, size=size)
+
+
+def world_sdf(body):
+    return f"""<?xml version="1.0"?>
+<sdf version="1.6"><world name="users_world">
+  <include><uri>model://ground_plane</uri></include>
+  <include><uri>model://sun</uri></include>
+{body}
+</world></sdf>"""
+
+
+def include(uri, pose=None, name=None, static=None):
+    parts = [f'<uri>{uri}</uri>']
+    if pose is not None:
+        parts.append(f'<pose>{pose}</pose>')
+    if name is not None:
+        parts.append(f'<name>{name}</name>')
+    if static is not None:
+        parts.append(f'<static>{static}</static>')
+    return '<include>' + ''.join(parts) + '</include>'
+
+
+def load(path):
+    world = bullet_plant.World.from_file(str(path))
+    world.echo = False
+    return world
+
+
+def collisions(world):
+    return {c['name']: c for c in world.static_collisions()}
+
+
+def range_along_x(world, y=0.0, z=0.25):
+    # z within the 1 m walls' height (they span z -0.5 .. 0.5), not along a face's edge
+    return world.cast_ray([0.0, y, z], [1.0, 0.0, 0.0], 20.0)
+
+
+@pytest.fixture
+def model_path(tmp_path, monkeypatch):
+    """An empty GAZEBO_MODEL_PATH directory and no packages: each test adds what it needs."""
+    models = tmp_path / 'models'
+    models.mkdir()
+    monkeypatch.setenv('GAZEBO_MODEL_PATH', str(tmp_path / 'not_there') + ':' + str(models))
+    monkeypatch.setenv('ROS_PACKAGE_PATH', str(tmp_path / 'no_packages'))
+    return models
+
+
+def test_include_from_gazebo_model_path_takes_the_includes_name_and_pose(tmp_path, model_path):
+    make_model(model_path, 'brick_wall', wall(), pose='9 9 9 0 0 0')
+    world = load(write(tmp_path / 'w.world', world_sdf(
+        include('model://brick_wall', pose='3 0 0 0 0 0', name='north_wall'))))
+    found = collisions(world)
+    assert 'north_wall::link::collision' in found
+    assert not any(name.startswith('brick_wall') for name in found)
+    assert found['north_wall::link::collision']['pose'][:3] == pytest.approx([3, 0, 0])
+    # The box is where the include puts it: a ray along x stops at its near face (3 - 0.05).
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
+    assert range_along_x(world, y=1.5) == math.inf  # past the 2 m wall's end
+    assert logged(world, 'WARN') == []
+
+
+def test_include_without_pose_or_name_keeps_the_models_own(tmp_path, model_path):
+    make_model(model_path, 'brick_wall', wall(), pose='4 0 0 0 0 0')
+    world = load(write(tmp_path / 'w.world', world_sdf(include('model://brick_wall'))))
+    assert 'brick_wall::link::collision' in collisions(world)
+    assert range_along_x(world) == pytest.approx(3.95, abs=1e-3)
+
+
+def test_include_pose_rotates_the_model(tmp_path, model_path):
+    # The wall sits 3 m along the model's -y, turned to lie along the model's x; the include turns the
+    # model by +90 deg about z, which brings the wall to 3 m along the world's x, lying along y.
+    make_model(model_path, 'offset_wall', wall(pose='0 -3 0 0 0 1.5707963267948966'))
+    world = load(write(tmp_path / 'w.world', world_sdf(
+        include('model://offset_wall', pose='0 0 0 0 0 1.5707963267948966'))))
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
+
+
+def test_model_config_names_the_newest_sdf(tmp_path, model_path):
+    model_dir = make_model(model_path, 'versions', wall(), pose='6 0 0 0 0 0', config="""<model>
+  <name>versions</name>
+  <sdf version="1.4">model-1_4.sdf</sdf><sdf version="1.10">model-1_10.sdf</sdf><sdf version="1.6">model.sdf</sdf>
+</model>""")
+    write(model_dir / 'model-1_10.sdf', WALL_SDF.format(version='1.10', name='versions', static='true',
+                                                         pose='2 0 0 0 0 0', collisions=wall()))
+    world = load(write(tmp_path / 'w.world', world_sdf(include('model://versions'))))
+    assert range_along_x(world) == pytest.approx(1.95, abs=1e-3)  # 1.10 is newer than 1.6 and 1.4
+
+
+def test_include_through_a_packages_gazebo_model_path_export(tmp_path, monkeypatch):
+    monkeypatch.delenv('GAZEBO_MODEL_PATH', raising=False)
+    package = tmp_path / 'ws' / 'src' / 'some_dir'
+    write(package / 'package.xml', """<?xml version="1.0"?>
+<package format="2"><name>my_gazebo_worlds</name><version>0.0.1</version>
+  <export><gazebo_ros gazebo_model_path="${prefix}/models"/></export></package>""")
+    make_model(package / 'models', 'exported_wall', wall())
+    monkeypatch.setenv('ROS_PACKAGE_PATH', str(tmp_path / 'ws' / 'src'))
+    world = load(write(tmp_path / 'w.world', world_sdf(include('model://exported_wall', pose='5 0 0 0 0 0'))))
+    assert range_along_x(world) == pytest.approx(4.95, abs=1e-3)
+    assert logged(world, 'WARN') == []
+
+
+def test_nested_include_is_placed_in_its_parents_frame(tmp_path, model_path):
+    make_model(model_path, 'post', wall(size='0.1 0.1 1'))
+    world = load(write(tmp_path / 'w.world', world_sdf(f"""
+<model name="fence"><static>true</static><pose>2 1 0 0 0 0</pose>
+  {include('model://post', pose='0 -1 0 0 0 0', name='corner')}
+  <model name="rail"><pose>0 -1 0 0 0 0</pose><link name="link">{wall(pose='3 0 0 0 0 0', size='0.1 0.1 1')}</link></model>
+</model>""")))
+    found = collisions(world)
+    assert found['fence::corner::link::collision']['pose'][:3] == pytest.approx([2, 0, 0])
+    assert found['fence::rail::link::collision']['pose'][:3] == pytest.approx([5, 0, 0])
+    assert range_along_x(world) == pytest.approx(1.95, abs=1e-3)
+
+
+def test_mesh_uris_resolve_against_the_file_that_names_them(tmp_path, model_path):
+    model_dir = make_model(model_path, 'statue', MESH_COLLISION.format(name='body', uri='meshes/statue.stl',
+                                                                       scale='2 2 2'))
+    write(model_dir / 'meshes' / 'statue.stl', STL)
+    write(model_dir / 'meshes' / 'base.stl', STL)
+    write(tmp_path / 'worlds' / 'meshes' / 'rock.stl', STL)
+    world = load(write(tmp_path / 'worlds' / 'w.world', world_sdf(f"""
+{include('model://statue', pose='0 5 0 0 0 0')}
+<model name="rocks"><static>true</static><link name="link">
+  {MESH_COLLISION.format(name='rock', uri='meshes/rock.stl', scale='1 1 1')}
+  {MESH_COLLISION.format(name='base', uri='model://statue/meshes/base.stl', scale='1 1 1')}
+</link></model>""")))
+    found = collisions(world)
+    statue = found['statue::link::body']
+    assert (statue['kind'], statue['mesh_uri'], statue['scale']) == ('mesh', 'meshes/statue.stl', [2, 2, 2])
+    assert statue['mesh_file'] == str(model_dir / 'meshes' / 'statue.stl')
+    assert found['rocks::link::rock']['mesh_file'] == str(tmp_path / 'worlds' / 'meshes' / 'rock.stl')
+    assert found['rocks::link::base']['mesh_file'] == str(model_dir / 'meshes' / 'base.stl')
+    assert not [w for w in logged(world, 'WARN') if 'not found' in w or 'not supported' in w]
+
+
+def test_a_missing_mesh_is_one_warning_and_the_rest_runs(tmp_path, model_path):
+    world = load(write(tmp_path / 'w.world', world_sdf(f"""
+<model name="ruin"><static>true</static><link name="link">
+  {MESH_COLLISION.format(name='lost', uri='meshes/gone.dae', scale='1 1 1')}
+  {wall(pose='3 0 0 0 0 0')}
+</link></model>""")))
+    about_it = [w for w in logged(world, 'WARN') if 'meshes/gone.dae' in w]
+    assert len(about_it) == 1, logged(world, 'WARN')
+    assert "ruin::link::lost" in about_it[0] and 'w.world' in about_it[0] and 'left out' in about_it[0]
+    assert str(tmp_path / 'meshes' / 'gone.dae') in about_it[0]  # where it looked
+    assert 'ruin::link::lost' not in collisions(world)
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
+    world.step(10)
+
+
+def test_unsupported_geometry_and_unknown_includes_are_one_warning_each(tmp_path, model_path):
+    world = load(write(tmp_path / 'w.world', world_sdf(f"""
+{include('model://no_such_model', pose='1 0 0 0 0 0')}
+<model name="terrain"><static>true</static><link name="link">
+  <collision name="hills"><geometry><heightmap><uri>file://hills.png</uri></heightmap></geometry></collision>
+  <collision name="curb"><geometry><polyline><point>0 0</point><height>1</height></polyline></geometry></collision>
+  {wall(pose='3 0 0 0 0 0')}
+</link></model>
+<actor name="walker"/>""")))
+    found = logged(world, 'WARN')
+    for what in ('no_such_model', 'terrain::link::hills', 'terrain::link::curb', '<actor>'):
+        about_it = [w for w in found if what in w]
+        assert len(about_it) == 1, (what, found)
+        assert 'w.world' in about_it[0]
+    assert [w for w in found if 'heightmap' in w] and [w for w in found if 'polyline' in w]
+    assert [w for w in found if 'no_such_model' in w][0].count(str(model_path)) == 1  # says where it looked
+    assert set(collisions(world)) == {'ground_plane::link::collision', 'terrain::link::collision'}
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
+
+
+def test_static_comes_from_the_include_over_the_model(tmp_path, model_path):
+    make_model(model_path, 'crate', wall(), static='false')
+    world = load(write(tmp_path / 'w.world', world_sdf(
+        include('model://crate', pose='3 0 0 0 0 0', name='loose_crate') +
+        include('model://crate', pose='3 3 0 0 0 0', name='fixed_crate', static='true'))))
+    not_static = [w for w in logged(world, 'WARN') if 'not static' in w]
+    assert len(not_static) == 1 and "'loose_crate'" in not_static[0], not_static
+    # kept still, as world models are: the crate stays where it is
+    world.step(200)
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
+
+
+def test_ground_plane_and_sun_are_built_in(tmp_path, monkeypatch):
+    monkeypatch.setenv('GAZEBO_MODEL_PATH', str(tmp_path / 'empty'))
+    monkeypatch.setenv('ROS_PACKAGE_PATH', str(tmp_path / 'empty'))
+    world = load(write(tmp_path / 'w.world', world_sdf(include('model://ground_plane', name='floor',
+                                                                pose='0 0 0.25 0 0 0'))))
+    assert logged(world, 'WARN') == []
+    found = collisions(world)
+    assert found['ground_plane::link::collision']['kind'] == 'plane'
+    assert found['floor::link::collision']['pose'][2] == pytest.approx(0.25)
+    assert world.cast_ray([0, 0, 1], [0, 0, -1], 5.0) == pytest.approx(0.75, abs=1e-6)
+
+
+def test_from_sdf_resolves_model_uris_too(model_path):
+    make_model(model_path, 'brick_wall', wall())
+    world = bullet_plant.World.from_sdf(world_sdf(include('model://brick_wall', pose='3 0 0 0 0 0')))
+    world.echo = False
+    assert world.file == ''
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
+
+
+def test_malformed_world_file_names_the_file_and_line(tmp_path):
+    bad = write(tmp_path / 'bad.world', '<?xml version="1.0"?>\n<sdf version="1.6">\n<world name="w">\n'
+                                        '<model name="m"><static>true</static>\n</world></sdf>\n')
+    with pytest.raises(bullet_plant.DescriptionError, match=r"bad\.world.* line 4"):
+        bullet_plant.World.from_file(str(bad))
+    with pytest.raises(bullet_plant.DescriptionError, match=r"world file '.*nowhere\.world' not found \(as given, then in GAZEBO_RESOURCE_PATH"):
+        bullet_plant.World.from_file(str(tmp_path / 'nowhere.world'))
+
+
+def test_malformed_model_file_names_the_model_file_and_line(tmp_path, model_path):
+    write(model_path / 'broken' / 'model.config', '<model><sdf version="1.6">model.sdf</sdf></model>')
+    write(model_path / 'broken' / 'model.sdf', '<sdf version="1.6">\n<model name="broken">\n<link>\n</sdf>\n')
+    world_file = write(tmp_path / 'w.world', world_sdf(include('model://broken')))
+    with pytest.raises(bullet_plant.DescriptionError, match=r"broken/model\.sdf.* line 3"):
+        bullet_plant.World.from_file(str(world_file))
+
+
+def test_shipped_worlds_read_by_file_as_by_text():
+    import os
+    for name in ('compat/gazebo_ros/worlds/empty.world', 'worlds/race_track.world'):
+        path = os.path.join(REPOSITORY, name)
+        by_file = load(path)
+        by_text = bullet_plant.World.from_sdf(open(path).read())
+        by_text.echo = False
+        assert by_file.file == path
+        assert by_file.static_collisions().__repr__() == by_text.static_collisions().__repr__()
+        assert len(logged(by_file, 'WARN')) == len(logged(by_text, 'WARN'))
+        assert math.isfinite(by_file.time_step)
+
+
+@pytest.mark.ros
+def test_node_stops_on_a_malformed_world_naming_file_and_line(ros, tmp_path):
+    bad = write(tmp_path / 'bad.world', '<sdf version="1.6">\n<world name="w">\n<model name="m">\n</world></sdf>\n')
+    node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + str(bad)], 'plant')
+    assert node.wait(30) == 1, node.log()
+    assert re.search(r"bad\.world' is not well-formed XML: line 3", node.log()), node.log()
+
+
+@pytest.mark.ros
+def test_node_resolves_a_launched_worlds_uris_against_its_file(ros, tmp_path):
+    models = tmp_path / 'models'
+    model_dir = make_model(models, 'statue', MESH_COLLISION.format(name='body', uri='meshes/statue.stl', scale='1 1 1'))
+    write(model_dir / 'meshes' / 'statue.stl', STL)
+    write(tmp_path / 'worlds' / 'meshes' / 'rock.stl', STL)
+    world = write(tmp_path / 'worlds' / 'w.world', world_sdf(f"""{include('model://statue')}
+<model name="rocks"><static>true</static><link name="link">
+  {MESH_COLLISION.format(name='rock', uri='meshes/rock.stl', scale='1 1 1')}
+  {MESH_COLLISION.format(name='lost', uri='meshes/lost.stl', scale='1 1 1')}
+</link></model>"""))
+    ros.env['GAZEBO_MODEL_PATH'] = str(models)
+    node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + str(world)], 'plant')
+    ros.wait_until(lambda: ros.run(['rosservice', 'list'], timeout=5).stdout.count('/gazebo/pause_physics'),
+                   30, 'the plant node')
+    not_found = [line for line in node.log().splitlines() if 'not found' in line]
+    assert len(not_found) == 1 and 'rocks::link::lost' in not_found[0], node.log()

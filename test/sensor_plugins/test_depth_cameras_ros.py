@@ -1,0 +1,67 @@
+"""gazebo_ros_openni_kinect and Noetic's gazebo_ros_depth_camera through the node, side by side on a
+mast (test/fixtures/urdf/depth_mast.urdf) 2.95 m before a wall, both given pointCloudCutoffMax 2.0:
+the Kinect drops the wall (beyond its far cutoff) and keeps an organized cloud; the depth camera,
+which reads no far cutoff, sees the wall, in one row of points as Noetic's publishes it. Neither
+names its image topics: both take upstream's infrared defaults (ir/image_raw, ir/camera_info)."""
+import math
+import os
+
+import pytest
+
+from plant_helpers import FIXTURES, sdf_world
+from ros_harness import spawn_urdf, start_plant
+from test_velodyne_ros import wall
+
+pytestmark = pytest.mark.ros
+
+WALL_X = 2.95
+
+
+def test_kinect_and_depth_camera_before_a_wall(ros, tmp_path):
+    (tmp_path / 'wall.world').write_text(sdf_world(wall()))
+    plant = start_plant(ros, str(tmp_path / 'wall.world'))
+    ros.run(['rosparam', 'set', '/robot_description', '--textfile', os.path.join(FIXTURES, 'urdf', 'depth_mast.urdf')])
+    spawn_urdf(ros, plant, '/robot_description', 'depth_mast')
+    seen = ros.python("""
+        import json, math, rospy
+        from sensor_msgs import point_cloud2
+        from sensor_msgs.msg import CameraInfo, Image, PointCloud2
+        import struct
+        rospy.init_node('probe')
+        out = {}
+        for name in ('kinect', 'depth_camera'):
+            cloud = rospy.wait_for_message('/%s/points' % name, PointCloud2, 30)
+            depth = rospy.wait_for_message('/%s/depth/image_raw' % name, Image, 10)
+            info = rospy.wait_for_message('/%s/depth/camera_info' % name, CameraInfo, 10)
+            # the camera's own image: upstream's default for the depth plugins is the infrared one
+            ir = rospy.wait_for_message('/%s/ir/image_raw' % name, Image, 10)
+            ir_info = rospy.wait_for_message('/%s/ir/camera_info' % name, CameraInfo, 10)
+            depths = struct.unpack('<%df' % (depth.width * depth.height), bytes(depth.data))
+            out[name] = {'shape': [cloud.height, cloud.width, cloud.is_dense], 'frame': cloud.header.frame_id,
+                         'points': [None if math.isnan(p[2]) else [p[0], p[1], p[2]]
+                                    for p in point_cloud2.read_points(cloud, field_names=('x', 'y', 'z'))],
+                         'depths': [None if math.isnan(d) else d for d in depths],
+                         'image': [depth.height, depth.width, depth.encoding], 'info': [info.height, info.width],
+                         'ir': [ir.height, ir.width, ir.encoding, ir_info.width]}
+        print(json.dumps(out))
+    """, timeout=90)
+    kinect, depth_camera = seen['kinect'], seen['depth_camera']
+    assert kinect['shape'][:2] == [24, 32], 'openni_kinect: organized, as the image'
+    assert depth_camera['shape'][:2] == [1, 32 * 24], 'the depth camera: one row of every pixel'
+    assert kinect['frame'] == 'kinect_optical' and depth_camera['frame'] == 'depth_optical'
+    for camera in (kinect, depth_camera):
+        assert camera['image'] == [24, 32, '32FC1'] and camera['info'] == [24, 32]
+        assert camera['shape'][2] is False, 'NaN points: not dense'
+        assert camera['ir'] == [24, 32, 'rgb8', 32]
+    # The middle rows look at the wall, square on: depth (z in the optical frame) 2.95 m.
+    centre = 12 * 32 + 16
+    assert depth_camera['depths'][centre] == pytest.approx(WALL_X, abs=1e-3)
+    assert depth_camera['points'][centre][2] == pytest.approx(WALL_X, abs=1e-3)
+    assert kinect['depths'][centre] is None and kinect['points'][centre] is None, 'beyond the Kinect\'s 2 m'
+    wall_pixels = [k for k, d in enumerate(depth_camera['depths']) if d is not None and abs(d - WALL_X) < 1e-3]
+    assert len(wall_pixels) > 32 * 8
+    assert all(kinect['depths'][k] is None for k in wall_pixels)
+    # the ground, nearer than 2 m, both see (the lowest rows)
+    near = [k for k, d in enumerate(kinect['depths']) if d is not None]
+    assert near and all(0.5 < kinect['depths'][k] < 2.0 for k in near)
+    assert all(depth_camera['depths'][k] == pytest.approx(kinect['depths'][k], abs=1e-5) for k in near)
