@@ -48,6 +48,13 @@ protected:
 
 using ControllerFactory = std::function<std::unique_ptr<Controller>()>;
 
+// The factory ROS_CONTROLLER_TYPE registers for a class: a new ControllerClass(args...) each call.
+template <class ControllerClass, class... Args>
+ControllerFactory controllerFactory(Args... args)
+{
+  return [=] { return std::unique_ptr<Controller>(new ControllerClass(args...)); };
+}
+
 // The controller types this plant offers (list_controller_types), sorted, and a factory for them:
 // whatever registered itself (ROS_CONTROLLER_TYPE).
 inline const std::vector<std::string>& controllerTypes()
@@ -64,8 +71,8 @@ inline std::unique_ptr<Controller> createController(const std::string& type)
 
 }  // namespace bullet_plant
 
-// In a controller's .cpp, as pluginlib's PLUGINLIB_EXPORT_CLASS: `factory` (a function returning a
-// std::unique_ptr<Controller>) makes the controller type `type_name`
+// In a controller's .cpp, as pluginlib's PLUGINLIB_EXPORT_CLASS: `factory` (a ControllerFactory,
+// usually controllerFactory<Class>(constructor arguments)) makes the controller type `type_name`
 // ("diff_drive_controller/DiffDriveController"); `id` names the registration, unique in its file.
 #define ROS_CONTROLLER_TYPE(id, type_name, factory) \
   BULLET_PLANT_REGISTER(::bullet_plant::ControllerFactory, id, factory, type_name)

@@ -125,6 +125,6 @@ private:
 }  // namespace
 
 ROS_CONTROLLER_TYPE(ackermann_steering, "ackermann_steering_controller/AckermannSteeringController",
-                    [] { return std::unique_ptr<Controller>(new AckermannSteeringController()); });
+                    controllerFactory<AckermannSteeringController>());
 
 }  // namespace bullet_plant

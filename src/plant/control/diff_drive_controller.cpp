@@ -187,7 +187,6 @@ private:
 };
 }  // namespace
 
-ROS_CONTROLLER_TYPE(diff_drive, "diff_drive_controller/DiffDriveController",
-                    [] { return std::unique_ptr<Controller>(new DiffDriveController()); });
+ROS_CONTROLLER_TYPE(diff_drive, "diff_drive_controller/DiffDriveController", controllerFactory<DiffDriveController>());
 
 }  // namespace bullet_plant

@@ -176,10 +176,10 @@ private:
 }  // namespace
 
 ROS_CONTROLLER_TYPE(effort_position, "effort_controllers/JointPositionController",
-                    [] { return std::unique_ptr<Controller>(new EffortPidController(true)); });
+                    controllerFactory<EffortPidController>(true));
 ROS_CONTROLLER_TYPE(effort_velocity, "effort_controllers/JointVelocityController",
-                    [] { return std::unique_ptr<Controller>(new EffortPidController(false)); });
+                    controllerFactory<EffortPidController>(false));
 ROS_CONTROLLER_TYPE(effort_group_position, "effort_controllers/JointGroupPositionController",
-                    [] { return std::unique_ptr<Controller>(new EffortGroupPositionController()); });
+                    controllerFactory<EffortGroupPositionController>());
 
 }  // namespace bullet_plant

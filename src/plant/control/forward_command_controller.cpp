@@ -58,16 +58,16 @@ private:
 }  // namespace
 
 ROS_CONTROLLER_TYPE(effort_effort, "effort_controllers/JointEffortController",
-                    [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Effort)); });
+                    controllerFactory<ForwardCommandController>(JointInterface::Effort));
 ROS_CONTROLLER_TYPE(effort_group_effort, "effort_controllers/JointGroupEffortController",
-                    [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Effort)); });
+                    controllerFactory<ForwardGroupController>(JointInterface::Effort));
 ROS_CONTROLLER_TYPE(position_position, "position_controllers/JointPositionController",
-                    [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Position)); });
+                    controllerFactory<ForwardCommandController>(JointInterface::Position));
 ROS_CONTROLLER_TYPE(position_group_position, "position_controllers/JointGroupPositionController",
-                    [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Position)); });
+                    controllerFactory<ForwardGroupController>(JointInterface::Position));
 ROS_CONTROLLER_TYPE(velocity_velocity, "velocity_controllers/JointVelocityController",
-                    [] { return std::unique_ptr<Controller>(new ForwardCommandController(JointInterface::Velocity)); });
+                    controllerFactory<ForwardCommandController>(JointInterface::Velocity));
 ROS_CONTROLLER_TYPE(velocity_group_velocity, "velocity_controllers/JointGroupVelocityController",
-                    [] { return std::unique_ptr<Controller>(new ForwardGroupController(JointInterface::Velocity)); });
+                    controllerFactory<ForwardGroupController>(JointInterface::Velocity));
 
 }  // namespace bullet_plant

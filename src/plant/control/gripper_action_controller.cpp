@@ -172,8 +172,8 @@ private:
 }  // namespace
 
 ROS_CONTROLLER_TYPE(effort_gripper, "effort_controllers/GripperActionController",
-                    [] { return std::unique_ptr<Controller>(new GripperActionController(JointInterface::Effort)); });
+                    controllerFactory<GripperActionController>(JointInterface::Effort));
 ROS_CONTROLLER_TYPE(position_gripper, "position_controllers/GripperActionController",
-                    [] { return std::unique_ptr<Controller>(new GripperActionController(JointInterface::Position)); });
+                    controllerFactory<GripperActionController>(JointInterface::Position));
 
 }  // namespace bullet_plant

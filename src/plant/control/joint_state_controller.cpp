@@ -96,6 +96,6 @@ private:
 }  // namespace
 
 ROS_CONTROLLER_TYPE(joint_state, "joint_state_controller/JointStateController",
-                    [] { return std::unique_ptr<Controller>(new JointStateController()); });
+                    controllerFactory<JointStateController>());
 
 }  // namespace bullet_plant

@@ -598,10 +598,10 @@ private:
 }  // namespace
 
 ROS_CONTROLLER_TYPE(effort_trajectory, "effort_controllers/JointTrajectoryController",
-                    [] { return std::unique_ptr<Controller>(new JointTrajectoryController(JointInterface::Effort)); });
+                    controllerFactory<JointTrajectoryController>(JointInterface::Effort));
 ROS_CONTROLLER_TYPE(position_trajectory, "position_controllers/JointTrajectoryController",
-                    [] { return std::unique_ptr<Controller>(new JointTrajectoryController(JointInterface::Position)); });
+                    controllerFactory<JointTrajectoryController>(JointInterface::Position));
 ROS_CONTROLLER_TYPE(velocity_trajectory, "velocity_controllers/JointTrajectoryController",
-                    [] { return std::unique_ptr<Controller>(new JointTrajectoryController(JointInterface::Velocity)); });
+                    controllerFactory<JointTrajectoryController>(JointInterface::Velocity));
 
 }  // namespace bullet_plant

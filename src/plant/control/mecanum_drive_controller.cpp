@@ -259,6 +259,6 @@ private:
 }  // namespace
 
 ROS_CONTROLLER_TYPE(mecanum_drive, "mecanum_drive_controller/MecanumDriveController",
-                    [] { return std::unique_ptr<Controller>(new MecanumDriveController()); });
+                    controllerFactory<MecanumDriveController>());
 
 }  // namespace bullet_plant
