@@ -16,26 +16,8 @@ def test_diff_drive_controller_through_gazebo_ros_control_and_the_spawner(ros, t
     spawner = spawn_with_controllers(ros, start_plant(ros), str(tmp_path / 'diff_bot.urdf'),
                                      str(tmp_path / 'controllers.yaml'), '/diff_bot', 'diff_bot',
                                      ['joint_state_controller', 'mobile_base_controller'])
-    seen = ros.python("""
-        import json, rospy
-        from geometry_msgs.msg import Twist
-        from nav_msgs.msg import Odometry
-        from ros_harness import connected_publisher
-        rospy.init_node('probe')
-        pub = connected_publisher('/diff_bot/mobile_base_controller/cmd_vel', Twist, queue_size=1)
-        # Read while the commands still come: 0.5 s after the last one (cmd_vel_timeout) the controller stops.
-        latest = []
-        rospy.Subscriber('/diff_bot/mobile_base_controller/odom', Odometry, latest.append)
-        twist = Twist()
-        twist.linear.x, twist.angular.z = 0.2, 0.5
-        for _ in range(30):
-            pub.publish(twist)
-            rospy.sleep(0.1)
-        odom = latest[-1]
-        print(json.dumps({'frames': [odom.header.frame_id, odom.child_frame_id],
-                          'linear': odom.twist.twist.linear.x, 'angular': odom.twist.twist.angular.z,
-                          'x': odom.pose.pose.position.x}))
-    """, timeout=90)
+    seen = ros.probe('controllers/probes/diff_drive_controller_through_gazebo_ros_control_and_the_spawner.py',
+                     timeout=90)
     spawner.stop()
     assert seen['frames'] == ['odom', 'base_footprint']
     assert seen['linear'] == pytest.approx(0.2, rel=0.1) and seen['angular'] == pytest.approx(0.5, rel=0.1)

@@ -129,24 +129,7 @@ def test_gripper_command_with_actionlib(ros, tmp_path):
     spawn_urdf(ros, plant, '/gripper/robot_description', 'gripper')
     ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/gripper', 'gripper_controller'], 'spawner')
     ros.wait_for_controllers(1, namespace='/gripper')
-    seen = ros.python("""
-        import json, rospy, actionlib
-        from control_msgs.msg import GripperCommandAction, GripperCommandGoal
-        rospy.init_node('probe')
-        client = actionlib.SimpleActionClient('/gripper/gripper_controller/gripper_cmd', GripperCommandAction)
-        assert client.wait_for_server(rospy.Duration(30))
-        goal = GripperCommandGoal()
-        goal.command.position, goal.command.max_effort = 0.025, 10.0
-        client.send_goal(goal)
-        assert client.wait_for_result(rospy.Duration(10))
-        r = client.get_result()
-        reached = [client.get_state(), r.position, r.reached_goal, r.stalled]
-        goal.command.position = 0.08
-        client.send_goal(goal)
-        assert client.wait_for_result(rospy.Duration(10))
-        r = client.get_result()
-        print(json.dumps({'reached': reached, 'stalled': [client.get_state(), r.position, r.reached_goal, r.stalled]}))
-    """, timeout=60)
+    seen = ros.probe('controllers/probes/gripper_command_with_actionlib.py', timeout=60)
     SUCCEEDED, ABORTED = 3, 4
     state, position, reached, stalled = seen['reached']
     assert (state, reached, stalled) == (SUCCEEDED, True, False) and position == pytest.approx(0.025, abs=0.002)

@@ -16,41 +16,13 @@ NS = '/tianracer'
 def collect(ros, topics, seconds):
     """The messages of several topics over `seconds` of simulated time from when every one of them is
     connected, as dicts per topic."""
-    return ros.python(f"""
-        import json, rospy, rostopic, time
-        from ros_harness import message_to_dict
-        rospy.init_node('probe', anonymous=True)
-        got = {{t: [] for t in {list(topics)!r}}}
-        subs = []
-        for topic in got:
-            cls, name, _ = rostopic.get_topic_class(topic, blocking=True)
-            subs.append(rospy.Subscriber(name, cls, lambda m, t=topic: got[t].append(message_to_dict(m))))
-        while rospy.Time.now().is_zero() or any(s.get_num_connections() == 0 for s in subs):
-            time.sleep(0.01)
-        for messages in got.values():
-            messages.clear()
-        end = rospy.Time.now() + rospy.Duration({seconds})
-        while rospy.Time.now() < end:
-            time.sleep(0.01)
-        print(json.dumps(got))
-    """, timeout=120)
+    return ros.probe('controllers/probes/collect_messages.py', seconds, *topics, timeout=120)
 
 
 def wait_for_message_where(ros, topic, condition, timeout=60):
     """Waits (wall clock) for a message of `topic` for which `condition`, a Python expression of the
     message as a dict `m`, holds: a command from `rostopic pub` has reached the plant once it shows."""
-    ros.python(f"""
-        import json, rospy, rostopic, time
-        from ros_harness import message_to_dict
-        rospy.init_node('waiter', anonymous=True)
-        cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
-        deadline = time.monotonic() + {timeout}
-        m = message_to_dict(rospy.wait_for_message(name, cls, timeout={timeout}))
-        while not ({condition}):
-            assert time.monotonic() < deadline, 'no message of %s where %s; the last: %r' % ({topic!r}, {condition!r}, m)
-            m = message_to_dict(rospy.wait_for_message(name, cls, timeout={timeout}))
-        print(json.dumps(True))
-    """, timeout=timeout + 30)
+    ros.probe('controllers/probes/wait_for_message_where.py', topic, condition, timeout, timeout=timeout + 30)
 
 
 @pytest.mark.slow

@@ -33,29 +33,6 @@ def test_tianracer_launch_uses_gazebo_ros_as_the_tutorial_does():
     assert 'pkg="gazebo_ros" type="spawn_model"' in text
 
 
-# One rospy process answers each group of checks; it prints one JSON value.
-PRELUDE = """
-import json, math, time, rospy
-from gazebo_msgs.msg import LinkState, ModelState, ModelStates, LinkStates
-from gazebo_msgs.srv import *
-from geometry_msgs.msg import Point, Pose, Twist, Vector3, Wrench
-from std_srvs.srv import Empty
-from ros_harness import connected_publisher
-rospy.init_node('gazebo_probe', anonymous=True)
-def srv(name, kind):
-    rospy.wait_for_service('/gazebo/' + name, 30)
-    return rospy.ServiceProxy('/gazebo/' + name, kind)
-def pose(x=0.0, y=0.0, z=0.0, yaw=0.0):
-    p = Pose()
-    p.position.x, p.position.y, p.position.z = x, y, z
-    p.orientation.z, p.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
-    return p
-def result(r):
-    return [bool(r.success), r.status_message]
-out = {}
-"""
-
-
 @pytest.fixture
 def paused_plant(ros, urdf_file):
     """The plant paused with the car spawned (tianracer_plant), so that states stay where they are set."""
@@ -64,30 +41,7 @@ def paused_plant(ros, urdf_file):
 
 @pytest.mark.ros
 def test_queries_answer_with_gazebo_ros_flags_and_messages(ros, paused_plant):
-    out = ros.python(PRELUDE + """
-world = srv('get_world_properties', GetWorldProperties)()
-out['world'] = [world.model_names, world.success, world.status_message]
-props = srv('get_model_properties', GetModelProperties)
-p = props('tianracer')
-out['props'] = [result(p), 'base_link' in p.body_names, 'left_rear_wheel_joint' in p.joint_names]
-out['props_unknown'] = result(props('nobody'))
-get = srv('get_model_state', GetModelState)
-m = get('tianracer', '')
-out['model'] = [result(m), m.pose.position.z, m.header.frame_id]
-out['model_unknown'] = result(get('nobody', ''))
-out['model_bad_frame'] = result(get('tianracer', 'nowhere'))
-rel = get('tianracer', 'tianracer::base_link')
-out['model_relative'] = [result(rel), rel.pose.position.x, rel.pose.position.z]
-link = srv('get_link_state', GetLinkState)
-l = link('tianracer::laser_link', '')
-out['link'] = [result(l), l.link_state.pose.position.z]
-out['link_unknown'] = result(link('tianracer::nowhere', ''))
-out['link_unscoped'] = result(link('laser_link', ''))
-out['link_bad_frame'] = result(link('tianracer::laser_link', 'nowhere'))
-phys = srv('get_physics_properties', GetPhysicsProperties)()
-out['physics'] = [result(phys), phys.time_step, phys.pause, phys.gravity.z, phys.max_update_rate]
-print(json.dumps(out))
-""", timeout=90)
+    out = ros.probe('gazebo_ros/probes/queries_answer_with_gazebo_ros_flags_and_messages.py', timeout=90)
     assert out['world'] == [['tianracer'], True, 'GetWorldProperties: got properties']
     assert out['props'] == [[True, 'GetModelProperties: got properties'], True, True]
     assert out['props_unknown'] == [False, 'GetModelProperties: model does not exist']
@@ -108,33 +62,7 @@ print(json.dumps(out))
 
 @pytest.mark.ros
 def test_setters_move_the_car_and_refuse_unknown_names(ros, paused_plant):
-    out = ros.python(PRELUDE + """
-get = srv('get_model_state', GetModelState)
-set_model = srv('set_model_state', SetModelState)
-out['set'] = result(set_model(ModelState('tianracer', pose(1.0, 2.0, 0.0, 1.0), Twist(), 'world')))
-m = get('tianracer', '')
-out['after_set'] = [m.pose.position.x, m.pose.position.y, 2 * math.atan2(m.pose.orientation.z, m.pose.orientation.w)]
-out['set_unknown'] = result(set_model(ModelState('nobody', pose(), Twist(), '')))
-out['set_bad_frame'] = result(set_model(ModelState('tianracer', pose(), Twist(), 'nowhere')))
-pub = connected_publisher('/gazebo/set_model_state', ModelState, queue_size=1, latch=True)
-pub.publish(ModelState('tianracer', pose(-1.0, 0.5), Twist(), 'world'))
-deadline = time.time() + 20
-while time.time() < deadline and abs(get('tianracer', '').pose.position.x + 1.0) > 1e-3:
-    time.sleep(0.1)
-out['by_topic'] = get('tianracer', '').pose.position.x
-set_link = srv('set_link_state', SetLinkState)
-out['set_link'] = result(set_link(LinkState('tianracer::base_footprint', pose(3.0, 0.0), Twist(), '')))
-out['after_set_link'] = get('tianracer', '').pose.position.x
-out['set_link_unknown'] = result(set_link(LinkState('tianracer::nowhere', pose(), Twist(), '')))
-out['set_link_bad_frame'] = result(set_link(LinkState('tianracer::base_footprint', pose(), Twist(), 'nowhere')))
-config = srv('set_model_configuration', SetModelConfiguration)
-out['config'] = result(config('tianracer', '', ['left_steering_hinge_joint'], [0.3]))
-hinge = srv('get_link_state', GetLinkState)('tianracer::left_steering_hinge', 'tianracer::base_link').link_state.pose
-out['hinge_yaw'] = 2 * math.atan2(hinge.orientation.z, hinge.orientation.w)
-out['config_unknown'] = result(config('nobody', '', [], []))
-out['config_lengths'] = result(config('tianracer', '', ['left_steering_hinge_joint'], []))
-print(json.dumps(out))
-""", timeout=90)
+    out = ros.probe('gazebo_ros/probes/setters_move_the_car_and_refuse_unknown_names.py', timeout=90)
     assert out['set'] == [True, 'SetModelState: set model state done']
     assert out['after_set'] == [pytest.approx(1.0, abs=1e-4), pytest.approx(2.0, abs=1e-4), pytest.approx(1.0, abs=1e-4)]
     assert out['set_unknown'] == [False, 'SetModelState: model does not exist']
@@ -152,38 +80,7 @@ print(json.dumps(out))
 
 @pytest.mark.ros
 def test_efforts_physics_and_simulation_control(ros, paused_plant):
-    out = ros.python(PRELUDE + """
-get = srv('get_model_state', GetModelState)
-clock = lambda: get('tianracer', '').header.stamp.to_sec()
-wrench = srv('apply_body_wrench', ApplyBodyWrench)
-lift = Wrench(force=Vector3(0, 0, 60.0))   # 2.69 kg: 60 N up beats 26 N of weight
-out['wrench'] = result(wrench('tianracer::base_link', '', Point(), lift, rospy.Time(0), rospy.Duration(-1)))
-out['wrench_unknown'] = result(wrench('tianracer::nowhere', '', Point(), lift, rospy.Time(0), rospy.Duration(-1)))
-out['wrench_bad_frame'] = result(wrench('tianracer::base_link', 'nowhere', Point(), lift, rospy.Time(0), rospy.Duration(-1)))
-srv('unpause_physics', Empty)()
-start = clock()
-while clock() < start + 0.3:
-    time.sleep(0.05)
-out['lifted'] = get('tianracer', '').pose.position.z
-srv('clear_body_wrenches', BodyRequest)('tianracer::base_link')
-srv('pause_physics', Empty)()
-out['paused_clock'] = [clock(), (time.sleep(0.5), clock())[1]]
-effort = srv('apply_joint_effort', ApplyJointEffort)
-out['effort'] = result(effort('left_steering_hinge_joint', 0.5, rospy.Time(0), rospy.Duration(0.2)))
-out['effort_unknown'] = result(effort('no_such_joint', 0.5, rospy.Time(0), rospy.Duration(0.2)))
-srv('clear_joint_forces', JointRequest)('left_steering_hinge_joint')
-set_physics = srv('set_physics_properties', SetPhysicsProperties)
-phys = srv('get_physics_properties', GetPhysicsProperties)()
-out['set_physics'] = result(set_physics(0.002, 250.0, Vector3(0, 0, -3.0), phys.ode_config))
-p = srv('get_physics_properties', GetPhysicsProperties)()
-out['new_physics'] = [p.time_step, p.max_update_rate, p.gravity.z]
-out['bad_step'] = result(set_physics(0.0, 250.0, Vector3(0, 0, -3.0), phys.ode_config))
-srv('reset_world', Empty)()
-out['reset_world'] = [get('tianracer', '').pose.position.z, clock() > 0.2]
-srv('reset_simulation', Empty)()
-out['reset_simulation'] = clock()
-print(json.dumps(out))
-""", timeout=90)
+    out = ros.probe('gazebo_ros/probes/efforts_physics_and_simulation_control.py', timeout=90)
     assert out['wrench'] == [True, '']
     assert out['wrench_unknown'] == [False, 'ApplyBodyWrench: body does not exist']
     assert out['wrench_bad_frame'] == [False, 'ApplyBodyWrench: reference_frame not found']
@@ -204,36 +101,8 @@ def test_step_physics_runs_that_many_iterations_while_paused_and_scene_contacts_
     """/gazebo/step_physics (gzclient's step button): while paused, exactly that many 1 ms steps, /clock
     sent at the end whatever its 100 Hz rate; none while running is added. /gazebo/scene_contacts: the
     four tyres on the ground at the viewers' rate while subscribed."""
-    out = ros.python(PRELUDE + """
-from gazebo_msgs.msg import ContactsState
-from rosgraph_msgs.msg import Clock
-from std_msgs.msg import UInt32
-step = connected_publisher('/gazebo/step_physics', UInt32, queue_size=10)
-clocks = []
-contacts = []
-subscribers = [rospy.Subscriber('/clock', Clock, lambda m: clocks.append(m.clock.to_nsec())),
-               rospy.Subscriber('/gazebo/scene_contacts', ContactsState, lambda m: contacts.append(m))]
-while any(s.get_num_connections() == 0 for s in subscribers):  # paused: nothing on either until a step
-    time.sleep(0.05)
-def stepped(n):
-    count = len(clocks)
-    step.publish(UInt32(n))
-    deadline = time.time() + 20
-    while time.time() < deadline and (len(clocks) == count or clocks[-1] < (clocks[count - 1] if count else 0) + n * 1000000):
-        time.sleep(0.01)
-    time.sleep(0.3)
-    return clocks[-1] if clocks else None
-out['start'] = stepped(1)
-out['after_7'] = stepped(7)
-out['after_2000'] = stepped(2000)
-time.sleep(0.5)
-out['still'] = clocks[-1]
-out['paused'] = srv('get_physics_properties', GetPhysicsProperties)().pause
-out['contacts'] = [(s.collision1_name, s.collision2_name, s.contact_positions[0].z, s.contact_normals[0].z,
-                    s.total_wrench.force.z, m.header.frame_id) for m in contacts[-1:] for s in m.states]
-out['contact_messages'] = len(contacts)
-print(json.dumps(out))
-""", timeout=90)
+    out = ros.probe('gazebo_ros/probes/step_physics_runs_that_many_iterations_while_paused_and_scene_contacts_has_the_tyres.py',
+                    timeout=90)
     assert out['after_7'] - out['start'] == 7000000, 'seven 1 ms steps, and /clock at once'
     assert out['after_2000'] - out['after_7'] == 2000000000
     assert out['still'] == out['after_2000'] and out['paused'] is True, 'paused again after the steps'
@@ -248,30 +117,8 @@ print(json.dumps(out))
 
 
 @pytest.mark.ros
-def test_spawn_and_delete_with_gazebo_ros_messages(ros, paused_plant, urdf_xml):
-    out = ros.python(PRELUDE + """
-template = %r
-urdf = lambda ns: template.replace('/tianracer', ns)   # each car its own controller namespace
-spawn = srv('spawn_urdf_model', SpawnModel)
-sdf_spawn = srv('spawn_sdf_model', SpawnModel)
-out['second'] = result(spawn('car2', urdf('/car2'), '/car2', pose(0.0, 1.0), 'tianracer::base_footprint'))
-out['second_at'] = srv('get_model_state', GetModelState)('car2', '').pose.position.y
-out['again'] = result(spawn('car2', urdf('/car2b'), '/car2b', pose(), ''))
-out['bad_frame'] = result(spawn('car3', urdf('/car3'), '/car3', pose(), 'nowhere'))
-try:
-    spawn('box', '<sdf version="1.6"><model name="box"/></sdf>', '', pose(), '')
-    out['not_urdf'] = 'answered'
-except rospy.ServiceException:
-    out['not_urdf'] = 'call failed'
-sdf = sdf_spawn('box', '<sdf version="1.6"><model name="box"/></sdf>', '', pose(), '')
-out['sdf'] = result(sdf)
-out['sdf_takes_urdf'] = result(sdf_spawn('car4', urdf('/car4'), '/car4', pose(0.0, -1.0), ''))
-delete = srv('delete_model', DeleteModel)
-out['delete'] = result(delete('car2'))
-out['delete_again'] = result(delete('car2'))
-out['names'] = srv('get_world_properties', GetWorldProperties)().model_names
-print(json.dumps(out))
-""" % urdf_xml, timeout=120)
+def test_spawn_and_delete_with_gazebo_ros_messages(ros, paused_plant, urdf_file):
+    out = ros.probe('gazebo_ros/probes/spawn_and_delete_with_gazebo_ros_messages.py', urdf_file, timeout=120)
     assert out['second'] == [True, 'SpawnModel: Successfully spawned entity']
     assert out['second_at'] == pytest.approx(1.0, abs=1e-3), 'spawned relative to tianracer::base_footprint'
     assert out['again'] == [False, 'SpawnModel: Failure - entity already exists.']
@@ -288,27 +135,8 @@ print(json.dumps(out))
 @pytest.mark.ros
 @pytest.mark.slow
 def test_model_and_link_states_are_published_on_every_step_with_scoped_names(ros, paused_plant):
-    out = ros.python(PRELUDE + """
-stamps = []
-sub = rospy.Subscriber('/gazebo/model_states', ModelStates, lambda m: stamps.append(rospy.get_rostime().to_sec()))
-time.sleep(1.0)
-out_while_paused = len(stamps)
-srv('unpause_physics', Empty)()
-time.sleep(3.0)
-sub.unregister()
-srv('pause_physics', Empty)()
-time.sleep(0.5)
-srv('unpause_physics', Empty)()
-links = rospy.wait_for_message('/gazebo/link_states', LinkStates, 30)
-models = rospy.wait_for_message('/gazebo/model_states', ModelStates, 30)
-srv('pause_physics', Empty)()
-get_link = srv('get_link_state', GetLinkState)('tianracer::laser_link', '')
-i = links.name.index('tianracer::laser_link')
-out = {'links': links.name, 'models': models.name, 'laser_z': [links.pose[i].position.z,
-       get_link.link_state.pose.position.z], 'count': len(stamps), 'span': stamps[-1] - stamps[0],
-       'while_paused': out_while_paused}
-print(json.dumps(out))
-""", timeout=90)
+    out = ros.probe('gazebo_ros/probes/model_and_link_states_are_published_on_every_step_with_scoped_names.py',
+                    timeout=90)
     assert out['models'] == ['tianracer']
     assert 'tianracer::base_link' in out['links'] and 'tianracer::left_rear_wheel' in out['links']
     assert all(name.startswith('tianracer::') for name in out['links'])
@@ -329,13 +157,7 @@ def test_spawn_model_sets_joints_unpauses_and_reports_like_gazebo_ros(ros, urdf_
     log = spawn.stdout + spawn.stderr
     assert spawn.returncode == 0, log + plant.log()
     assert 'Spawn status: SpawnModel: Successfully spawned entity' in log
-    state = ros.python(PRELUDE + """
-hinge = srv('get_link_state', GetLinkState)('car::left_steering_hinge', 'car::base_link').link_state.pose
-out = {'hinge': 2 * math.atan2(hinge.orientation.z, hinge.orientation.w),
-       'x': srv('get_model_state', GetModelState)('car', '').pose.position.x,
-       'paused': srv('get_physics_properties', GetPhysicsProperties)().pause}
-print(json.dumps(out))
-""", timeout=60)
+    state = ros.probe('gazebo_ros/probes/spawn_model_sets_joints_unpauses_and_reports_like_gazebo_ros.py', timeout=60)
     assert state['hinge'] == pytest.approx(0.25, abs=0.02) and state['x'] == pytest.approx(0.5, abs=0.01)
     assert state['paused'] is False, '-unpause'
     again = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'robot_description', '-model', 'car'],
@@ -358,8 +180,6 @@ def test_a_script_reading_link_states_drives_the_car_with_ackermann_drive_stampe
     drive = ros.run([PYTHON, os.path.join(TEST_DIR, 'scripts', 'drive_to_point.py'), '_x:=2.0', '_y:=1.5',
                      '_tolerance:=0.25', '_timeout:=40'], timeout=150)
     assert drive.returncode == 0, drive.stdout + drive.stderr
-    final = ros.python(PRELUDE + """
-m = srv('get_model_state', GetModelState)('tianracer', '')
-print(json.dumps([m.pose.position.x, m.pose.position.y]))
-""", timeout=60)
+    final = ros.probe('gazebo_ros/probes/a_script_reading_link_states_drives_the_car_with_ackermann_drive_stamped.py',
+                      timeout=60)
     assert math.hypot(final[0] - 2.0, final[1] - 1.5) < 0.4, (final, drive.stdout)

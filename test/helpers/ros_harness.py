@@ -1,7 +1,7 @@
 """Real ROS processes for the integration tests, the ROS benchmarks and `make demo`: a ROS master on a
 free loopback port, roslaunch, rosrun and the command-line tools, each test with its own master.
 rospy binds a process to one master, so the tests talk to ROS through subprocesses (the tools, or
-short rospy programs). A test harness, not part of the runtime package: the suite's conftest.py puts
+short rospy programs, the rooms' probes/). A test harness, not part of the runtime package: the suite's conftest.py puts
 this folder (test/helpers) on sys.path, bench/ and tools/ put it there themselves, and the processes
 a RosSystem starts find it on PYTHONPATH (their rospy programs import it by name, `ros_harness`)."""
 import json
@@ -15,14 +15,14 @@ import time
 
 import yaml
 
+from suite_paths import HELPERS, TEST_DIR  # the processes' PYTHONPATH; the probes are named relative to test/
 from tianracer_description.tianracer import CONFIG_YAML
 
 PYTHON = '/usr/bin/python3'
-HELPERS = os.path.dirname(os.path.abspath(__file__))  # this folder, for the processes' PYTHONPATH
 
 
 def message_to_dict(message):
-    """A ROS message as plain JSON values, for the rospy snippets of the tests: times as seconds,
+    """A ROS message as plain JSON values, for the rospy programs of the tests (probes/): times as seconds,
     non-finite floats as their repr (JSON has none)."""
     if hasattr(message, 'to_sec'):
         return message.to_sec()
@@ -36,7 +36,7 @@ def message_to_dict(message):
 
 
 def connected_publisher(topic, message_class, timeout=30.0, **options):
-    """For the rospy snippets of the tests: a rospy Publisher once a subscriber has connected to it, so
+    """For the rospy programs of the tests (probes/): a rospy Publisher once a subscriber has connected to it, so
     that what it publishes next is heard at once (before the connection a message is lost, or, latched,
     it arrives later by the connection's time and shortens a measurement that follows it)."""
     import rospy
@@ -119,9 +119,18 @@ class RosSystem:
     def run(self, args, timeout=30, input=None):
         return subprocess.run(args, env=self.env, capture_output=True, text=True, timeout=timeout, input=input)
 
+    def probe(self, program, *args, timeout=30):
+        """Runs a rospy program of the suite (test/<room>/probes/<name>.py, named relative to test/) with
+        `args` against this master; it prints one JSON value on its last line, which is returned."""
+        return self._json_of([PYTHON, os.path.join(TEST_DIR, program), *map(str, args)], timeout)
+
     def python(self, code, timeout=30):
-        """Runs a rospy snippet against this master; it prints one JSON value, which is returned."""
-        result = self.run([PYTHON, '-c', textwrap.dedent(code)], timeout=timeout)
+        """Runs a rospy program given as text (the benchmarks' generated ones) against this master; it
+        prints one JSON value on its last line, which is returned."""
+        return self._json_of([PYTHON, '-c', textwrap.dedent(code)], timeout)
+
+    def _json_of(self, args, timeout):
+        result = self.run(args, timeout=timeout)
         assert result.returncode == 0, result.stderr
         return json.loads(result.stdout.strip().splitlines()[-1])
 
@@ -132,20 +141,7 @@ class RosSystem:
 
     def wait_for_controllers(self, count, namespace='/tianracer', timeout=60):
         """Until `count` controllers run in the namespace's controller manager (polled every 20 ms)."""
-        self.python("""
-            import json, time, rospy
-            from controller_manager_msgs.srv import ListControllers
-            name = '%s/controller_manager/list_controllers'
-            while True:
-                try:
-                    rospy.wait_for_service(name, 0.05)
-                    if [c.state for c in rospy.ServiceProxy(name, ListControllers)().controller].count('running') == %d:
-                        break
-                except (rospy.ROSException, rospy.ServiceException):
-                    pass
-                time.sleep(0.02)
-            print(json.dumps(True))
-        """ % (namespace, count), timeout=timeout)
+        self.probe('helpers/probes/wait_for_controllers.py', namespace, count, timeout=timeout)
 
     @staticmethod
     def wait_until(condition, timeout, what):
@@ -203,28 +199,7 @@ def frames_in(ros, target, topics, timeout=30):
     header's frame id and that frame's origin in `target` at the message's stamp. A message stamped
     before the buffer's first transform is dropped for the next, as a tf2 message filter drops it.
     {topic: {'frame': ..., 'xyz': [x, y, z]}}; a lookup that fails fails the snippet."""
-    return ros.python(f"""
-        import json, rospy, rostopic, tf2_ros
-        rospy.init_node('tf2_probe', anonymous=True)
-        buffer = tf2_ros.Buffer()
-        listener = tf2_ros.TransformListener(buffer)
-        out = {{}}
-        for topic in {list(topics)!r}:
-            cls, name, _ = rostopic.get_topic_class(topic, blocking=True)
-            for attempt in range(5):
-                msg = rospy.wait_for_message(topic, cls, timeout={timeout})
-                try:
-                    t = buffer.lookup_transform({target!r}, msg.header.frame_id, msg.header.stamp, rospy.Duration(10.0))
-                    break
-                except tf2_ros.ExtrapolationException:
-                    # Stamped before the listener's first /tf message: rviz's message filter drops such a
-                    # message too. The next one is newer; a stamp that never resolves fails at the fifth.
-                    if attempt == 4:
-                        raise
-            v = t.transform.translation
-            out[topic] = {{'frame': msg.header.frame_id, 'xyz': [v.x, v.y, v.z]}}
-        print(json.dumps(out))
-    """, timeout=timeout * len(topics) + 30)
+    return ros.probe('helpers/probes/frames_in.py', target, timeout, *topics, timeout=timeout * len(topics) + 30)
 
 
 def running_controllers(namespace, count, timeout=60.0):

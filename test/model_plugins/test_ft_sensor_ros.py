@@ -13,25 +13,7 @@ pytestmark = pytest.mark.ros
 @pytest.mark.slow
 def test_wrench_stamped_of_the_elbow_with_a_push(ros, tmp_path):
     start_arm(ros, tmp_path, urdf=arm_with_ft_sensors_urdf())
-    seen = ros.python("""
-        import json, rospy
-        from geometry_msgs.msg import Wrench, WrenchStamped
-        from ros_harness import connected_publisher
-        rospy.init_node('probe')
-        rospy.sleep(1.0)
-        def reading():
-            m = rospy.wait_for_message('/elbow_ft', WrenchStamped, 10)
-            return {'frame': m.header.frame_id, 'stamp': m.header.stamp.to_sec(),
-                    'force': [m.wrench.force.x, m.wrench.force.y, m.wrench.force.z],
-                    'torque': [m.wrench.torque.x, m.wrench.torque.y, m.wrench.torque.z]}
-        held = reading()
-        push = connected_publisher('/push', Wrench, queue_size=1, latch=True)
-        w = Wrench()
-        w.force.y = 5.0
-        push.publish(w)
-        rospy.sleep(1.0)
-        print(json.dumps({'held': held, 'pushed': reading()}))
-    """, timeout=60)
+    seen = ros.probe('model_plugins/probes/wrench_stamped_of_the_elbow_with_a_push.py', timeout=60)
     held, pushed = seen['held'], seen['pushed']
     weight = (FOREARM[0] + HAND[0]) * G
     assert held['frame'] == 'forearm' and held['stamp'] > 0.5

@@ -19,19 +19,8 @@ def test_the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server(ro
     spawn_urdf(ros, plant, '/gripper/robot_description', 'gripper')
     spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/gripper', 'finger_controller'], 'spawner')
     ros.wait_for_controllers(1, namespace='/gripper')
-    seen = ros.python("""
-        import json, rospy
-        from gazebo_msgs.msg import LinkStates
-        from std_msgs.msg import Float64
-        from ros_harness import connected_publisher
-        rospy.init_node('probe')
-        pub = connected_publisher('/gripper/finger_controller/command', Float64, queue_size=1, latch=True)
-        pub.publish(Float64(0.03))
-        rospy.sleep(2.0)
-        links = rospy.wait_for_message('/gazebo/link_states', LinkStates, 10)
-        y = {name.split('::')[1]: pose.position.y for name, pose in zip(links.name, links.pose)}
-        print(json.dumps(y))
-    """, timeout=60)
+    seen = ros.probe('model_plugins/probes/the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server.py',
+                     timeout=60)
     spawner.stop()
     assert seen['finger_left'] == pytest.approx(0.01 + 0.03, abs=1e-3), 'the controller moved the first finger'
     assert seen['finger_right'] == pytest.approx(-0.01 - 0.03, abs=1e-3), 'the PID (gains at /mimic_gains) the second'

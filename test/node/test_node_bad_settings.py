@@ -31,19 +31,7 @@ def test_a_real_time_factor_too_small_or_not_a_number_is_refused(ros, value):
 def test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c(ros):
     # At 1e-3 one 1 ms step lasts a wall second; services and Ctrl-C must not wait for it.
     plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0.001'], 'plant')
-    latency = ros.python("""
-        import json, time, rospy
-        from std_srvs.srv import Empty
-        rospy.wait_for_service('/gazebo/reset_world', 20)
-        call = rospy.ServiceProxy('/gazebo/reset_world', Empty)
-        call()
-        worst = 0.0
-        for _ in range(3):
-            start = time.monotonic()
-            call()
-            worst = max(worst, time.monotonic() - start)
-        print(json.dumps(worst))
-    """)
+    latency = ros.probe('node/probes/a_slow_pace_keeps_serving_and_stops_on_ctrl_c.py')
     assert latency < 0.3, plant.log()
     sent = time.monotonic()
     plant.interrupt()
@@ -58,7 +46,7 @@ def test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c(ros):
     ('<robotNamespace>/tian racer</robotNamespace>', "robotNamespace: '/tian racer'"),
     ('<robotNamespace>/tianracer</robotNamespace><eStopTopic>e stop</eStopTopic>', "eStopTopic: 'e stop'"),
 ])
-def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, urdf_xml, bad, what):
+def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, urdf_xml, bad, what, tmp_path):
     import re
     tag = re.match(r'<(\w+)>', bad).group(1)
     original = '<topicName>scan</topicName>' if tag == 'topicName' else \
@@ -67,14 +55,10 @@ def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, 
     bad_urdf = urdf_xml.replace(original, bad, 1)
     plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0'], 'plant')
     ros.run(['rosservice', 'call', '--wait', '/gazebo/pause_physics'], timeout=30)
-    spawn = ros.python("""
-        import json, rospy
-        from gazebo_msgs.srv import SpawnModel
-        call = rospy.ServiceProxy('/gazebo/spawn_urdf_model', SpawnModel)
-        bad = call(model_name='bad', model_xml=%r, robot_namespace='')
-        good = call(model_name='good', model_xml=%r, robot_namespace='')
-        print(json.dumps([bad.success, bad.status_message, good.success]))
-    """ % (bad_urdf, urdf_xml.replace(original, original, 1)), timeout=60)
+    (tmp_path / 'bad.urdf').write_text(bad_urdf)
+    (tmp_path / 'good.urdf').write_text(urdf_xml.replace(original, original, 1))
+    spawn = ros.probe('node/probes/spawn_a_bad_and_a_good_robot.py', tmp_path / 'bad.urdf', tmp_path / 'good.urdf',
+                      timeout=60)
     assert spawn[0] is False and what in spawn[1], spawn
     assert spawn[2] is True, plant.log()
     ros.service('/gazebo/unpause_physics')

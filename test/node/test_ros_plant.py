@@ -35,20 +35,8 @@ def wait_for_running(ros, names, timeout=20):
 
 
 def echo(ros, topic, count=1, timeout=15):
-    """`count` messages of a topic as dicts (rospy snippet: no YAML guessing of nan/inf)."""
-    return ros.python(f"""
-        import json, rospy, rostopic
-        from ros_harness import message_to_dict
-        rospy.init_node('probe', anonymous=True)
-        cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
-        got = []
-        sub = rospy.Subscriber(name, cls, lambda m: got.append(message_to_dict(m)))
-        import time
-        end = time.monotonic() + {timeout}
-        while len(got) < {count} and time.monotonic() < end:
-            time.sleep(0.01)
-        print(json.dumps(got[:{count}]))
-    """, timeout=timeout + 10)
+    """`count` messages of a topic as dicts (a rospy probe: no YAML guessing of nan/inf)."""
+    return ros.probe('node/probes/echo.py', topic, count, timeout, timeout=timeout + 10)
 
 
 @pytest.mark.slow
@@ -149,33 +137,7 @@ def test_non_finite_commands_leave_the_state_finite(ros, plant):
 
 def test_pause_unpause_and_reset_like_gazebo(ros, plant):
     assert ros.run(['rosparam', 'get', '/use_sim_time']).stdout.strip() == 'true'
-    clock = ros.python("""
-        import json, time, rospy
-        from rosgraph_msgs.msg import Clock
-        from std_srvs.srv import Empty
-        rospy.init_node('probe', anonymous=True)
-        stamps = []
-        rospy.Subscriber('/clock', Clock, lambda m: stamps.append(m.clock.to_sec()))
-        def call(name):
-            rospy.wait_for_service(name, 10)
-            rospy.ServiceProxy(name, Empty)()
-        def settle(seconds):
-            time.sleep(seconds)
-            return len(stamps)
-        settle(1.0)
-        call('/gazebo/pause_physics')
-        n = settle(0.1)
-        paused_at = stamps[-1]
-        during_pause = settle(0.5) - n
-        call('/gazebo/unpause_physics')
-        end = time.time() + 20  # generous: a loaded machine may take a while to publish again
-        while len(stamps) <= n and time.time() < end:
-            time.sleep(0.01)
-        resumed = stamps[n]
-        call('/gazebo/reset_simulation')
-        settle(0.3)
-        print(json.dumps(dict(paused_at=paused_at, during_pause=during_pause, resumed=resumed, after_reset=stamps[-1])))
-    """)
+    clock = ros.probe('node/probes/pause_unpause_and_reset_like_gazebo.py')
     assert clock['during_pause'] == 0, 'no /clock while paused'
     assert clock['paused_at'] < clock['resumed'] < clock['paused_at'] + 0.05, 'time goes on from where it stopped'
     assert clock['after_reset'] < 0.5, 'reset_simulation restarts time from 0'
@@ -203,30 +165,7 @@ def test_spawn_model_with_a_malformed_urdf_exits_1_with_the_parsers_message(ros,
 
 @pytest.mark.slow
 def test_cameras_publish_at_their_rates_only_while_subscribed(ros, plant):
-    rates = ros.python("""
-        import json, time, rospy
-        from sensor_msgs.msg import CameraInfo, Image, PointCloud2
-        rospy.init_node('camera_probe', anonymous=True)
-        got = {}
-        def keep(topic):
-            return lambda m: got.setdefault(topic, []).append(m)
-        topics = {'/camera/image_raw': Image, '/camera/camera_info': CameraInfo,
-                  '/depth_camera/depth/image_raw': Image,
-                  '/depth_camera/depth/camera_info': CameraInfo,
-                  '/depth_camera/depth/points': PointCloud2}
-        subs = [rospy.Subscriber(t, cls, keep(t)) for t, cls in topics.items()]
-        time.sleep(4.0)
-        out = {}
-        for topic, msgs in got.items():
-            stamps = [m.header.stamp.to_sec() for m in msgs[2:]]
-            out[topic] = dict(rate=(len(stamps) - 1) / (stamps[-1] - stamps[0]), frame=msgs[-1].header.frame_id,
-                              size=[msgs[-1].width, msgs[-1].height],
-                              encoding=getattr(msgs[-1], 'encoding', None))
-        for s in subs:
-            s.unregister()
-        time.sleep(2.0)
-        print(json.dumps(out))
-    """, timeout=60)
+    rates = ros.probe('node/probes/cameras_publish_at_their_rates_only_while_subscribed.py', timeout=60)
     camera, info = rates['/camera/image_raw'], rates['/camera/camera_info']
     assert camera['rate'] == pytest.approx(30, rel=0.05) and camera['encoding'] == 'rgb8'
     assert info['size'] == camera['size'] == [160, 120]

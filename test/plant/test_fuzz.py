@@ -67,29 +67,8 @@ def test_the_node_survives_the_fuzzed_urdfs(ros, urdf_file):
     plant = tianracer_plant(ros, urdf_file)
     # The car's robotNamespace is the fuzzed copies' too: it leaves, and comes back at the end.
     assert ros.service('/gazebo/delete_model', '{model_name: tianracer}')['success'] is True
-    outcome = ros.python("""
-        import json, sys, time, rospy
-        sys.path.insert(0, %r)
-        import fuzz_cases
-        from gazebo_msgs.srv import SpawnModel, DeleteModel
-        from tianracer_description.tianracer import tianracer_urdf
-        from geometry_msgs.msg import Pose
-        rospy.wait_for_service('/gazebo/spawn_urdf_model', 30)
-        spawn = rospy.ServiceProxy('/gazebo/spawn_urdf_model', SpawnModel)
-        delete = rospy.ServiceProxy('/gazebo/delete_model', DeleteModel)
-        urdf = tianracer_urdf()
-        spawned = 0
-        for seed in range(%d, %d):
-            text, pose, _ = fuzz_cases.mutated_urdf(seed, urdf)
-            start = Pose()
-            start.position.z = pose[2]
-            start.orientation.w = 1.0
-            if spawn(model_name='fuzz%%d' %% seed, model_xml=text, robot_namespace='', initial_pose=start).success:
-                spawned += 1
-                time.sleep(0.05)
-                assert delete(model_name='fuzz%%d' %% seed).success
-        print(json.dumps(spawned))
-    """ % (os.path.dirname(FUZZ_CASES), BASE_SEED * CASES, (BASE_SEED + 1) * CASES), timeout=600)
+    outcome = ros.probe('plant/probes/spawn_the_fuzzed_urdfs.py', BASE_SEED * CASES, (BASE_SEED + 1) * CASES,
+                        timeout=600)
     assert outcome >= 0.2 * CASES, outcome
     assert plant.popen.poll() is None, plant.log()
     respawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'robot_description',

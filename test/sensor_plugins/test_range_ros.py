@@ -15,28 +15,7 @@ def test_range_sensor_reports_the_nearest_ray_to_a_wall(ros, tmp_path):
     plant = start_plant(ros, str(tmp_path / 'wall.world'))
     ros.run(['rosparam', 'set', '/robot_description', '--textfile', str(tmp_path / 'skid_bot.urdf')])
     spawn_urdf(ros, plant, '/robot_description', 'skid_bot')
-    seen = ros.python("""
-        import json, rospy
-        from geometry_msgs.msg import Twist
-        from nav_msgs.msg import Odometry
-        from sensor_msgs.msg import Range
-        from ros_harness import connected_publisher
-        rospy.init_node('probe')
-        before = rospy.wait_for_message('/range/fr', Range, 30)
-        pub = connected_publisher('/cmd_vel', Twist, queue_size=1)
-        twist = Twist()
-        twist.linear.x = 0.2
-        for _ in range(10):
-            pub.publish(twist)
-            rospy.sleep(0.1)
-        pub.publish(Twist())
-        rospy.sleep(0.5)
-        after = rospy.wait_for_message('/range/fr', Range, 10)
-        x = rospy.wait_for_message('/odom', Odometry, 10).pose.pose.position.x
-        print(json.dumps({'frame': before.header.frame_id, 'radiation': before.radiation_type,
-                          'fov': before.field_of_view, 'limits': [before.min_range, before.max_range],
-                          'before': before.range, 'after': after.range, 'x': x}))
-    """, timeout=60)
+    seen = ros.probe('sensor_plugins/probes/range_sensor_reports_the_nearest_ray_to_a_wall.py', timeout=60)
     assert seen['frame'] == 'range_front' and seen['radiation'] == 1, 'infrared'
     assert seen['fov'] == pytest.approx(0.26) and seen['limits'] == pytest.approx([0.02, 0.9])
     assert seen['before'] == pytest.approx(0.55, abs=0.005), 'the straight-ahead ray: 0.7 - 0.15 m'

@@ -9,16 +9,7 @@ pytestmark = pytest.mark.ros
 
 
 def first_message(ros, topic):
-    return ros.python(f"""
-        import json, rospy, rostopic
-        rospy.init_node('probe', anonymous=True)
-        cls, name, _ = rostopic.get_topic_class({topic!r}, blocking=True)
-        m = rospy.wait_for_message({topic!r}, cls, timeout=30)
-        out = {{'frame': m.header.frame_id, 'type': m._type}}
-        if hasattr(m, 'child_frame_id'):
-            out['child'] = m.child_frame_id
-        print(json.dumps(out))
-    """, timeout=60)
+    return ros.probe('sensor_plugins/probes/first_message.py', topic, timeout=60)
 
 
 @pytest.mark.slow
@@ -98,19 +89,7 @@ def test_the_node_survives_whatever_a_sensor_asks_for_on_every_embree_kernel(emb
     urdf.write_text(EDGE_URDF)
     ros.run(['rosparam', 'set', '/edges_description', '--textfile', str(urdf)])
     spawn_urdf(ros, plant, '/edges_description', 'edges')
-    scans = ros.python(f"""
-        import json, math, rospy
-        from sensor_msgs.msg import Image, LaserScan
-        rospy.init_node('probe', anonymous=True)
-        out = {{}}
-        for name in {list(SCANNING)!r}:
-            m = rospy.wait_for_message('/' + name, LaserScan, timeout=30)
-            out[name] = {{'n': len(m.ranges), 'finite': sum(math.isfinite(r) for r in m.ranges),
-                         'below_min': sum(r < m.range_min for r in m.ranges)}}
-        image = rospy.wait_for_message('/one_pixel/image_raw', Image, timeout=30)
-        out['one_pixel'] = {{'n': image.width * image.height}}
-        print(json.dumps(out))
-    """, timeout=120)
+    scans = ros.probe('sensor_plugins/probes/scans_of_every_edge_case.py', *SCANNING, timeout=120)
     for name, (samples, *_rest) in SCANNING.items():
         assert scans[name]['n'] == samples, (name, scans[name])
         assert scans[name]['below_min'] == 0, (name, scans[name])

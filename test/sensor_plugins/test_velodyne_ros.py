@@ -31,24 +31,7 @@ def test_vlp16_and_hdl32_point_clouds(ros, tmp_path):
     ros.run(['rosparam', 'set', '/robot_description', '--textfile',
              os.path.join(FIXTURES, 'urdf', 'velodyne_mast.urdf')])
     spawn_urdf(ros, plant, '/robot_description', 'velodyne_mast')
-    seen = ros.python("""
-        import json, math, rospy
-        from sensor_msgs import point_cloud2
-        from sensor_msgs.msg import PointCloud2
-        rospy.init_node('probe')
-        out = {}
-        for topic in ('/velodyne_points', '/hdl32/points'):
-            cloud = rospy.wait_for_message(topic, PointCloud2, 30)
-            points = list(point_cloud2.read_points(cloud, skip_nans=False))
-            out[topic] = {
-                'frame': cloud.header.frame_id,
-                'fields': [(f.name, f.offset, f.datatype) for f in cloud.fields],
-                'shape': [cloud.height, cloud.width, cloud.point_step, cloud.row_step, cloud.is_dense],
-                'points': [[round(v, 5) if isinstance(v, float) and not math.isnan(v) else (None if isinstance(v, float) else v)
-                            for v in p] for p in points[::7]],
-                'count': len(points), 'rings_in_order': [p[4] for p in points[:40]]}
-        print(json.dumps(out))
-    """, timeout=90)
+    seen = ros.probe('sensor_plugins/probes/vlp16_and_hdl32_point_clouds.py', timeout=90)
     vlp, hdl = seen['/velodyne_points'], seen['/hdl32/points']
     layout = [['x', 0, 7], ['y', 4, 7], ['z', 8, 7], ['intensity', 12, 7], ['ring', 16, 4], ['time', 18, 7]]
     assert vlp['fields'] == layout and hdl['fields'] == layout, 'x y z intensity float32, ring uint16, time float32'

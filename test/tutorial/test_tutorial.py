@@ -10,6 +10,8 @@ import time
 
 import pytest
 
+from ros_harness import PYTHON
+from suite_paths import TEST_DIR
 from tianracer_description.ackermann import max_ideal_steering
 from tianracer_description.path_metrics import circle_radius
 from tianracer_description.tianracer import PACKAGE, TUTORIAL_CONTROLLERS
@@ -48,36 +50,9 @@ def test_tianracer_launch_brings_up_the_tutorials_system(tutorial):
         assert topic in topics
 
 
-DRIVE_AND_STOP = """
-    import json, math, time, rospy
-    from geometry_msgs.msg import Twist
-    from nav_msgs.msg import Odometry
-    from std_msgs.msg import Float64
-    rospy.init_node('tutorial_probe', anonymous=True)
-    odom, wheel = [], []
-    rospy.Subscriber('/tianracer/odom', Odometry, lambda m: odom.append(
-        (m.header.stamp.to_sec(), m.pose.pose.position.x, m.pose.pose.position.y, m.twist.twist.linear.x)))
-    rospy.Subscriber('/tianracer/rear_left_velocity_controller/command', Float64,
-                     lambda m: wheel.append((rospy.get_rostime().to_sec(), m.data)))
-    pub = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
-    time.sleep(1.0)
-    twist = Twist()
-    twist.linear.x, twist.angular.z = 1.0, 1.0   # the tutorial's rostopic pub line, at 10 Hz
-    start = rospy.get_rostime().to_sec()
-    rate = rospy.Rate(10)
-    while rospy.get_rostime().to_sec() - start < 8.0:
-        pub.publish(twist)
-        last_twist = rospy.get_rostime().to_sec()
-        rate.sleep()
-    circle = [(x, y) for t, x, y, v in odom if start + 3.0 <= t <= last_twist]
-    time.sleep(2.5)
-    print(json.dumps(dict(circle=circle, last_twist=last_twist, wheel=wheel, odom_after=odom[-1])))
-"""
-
-
 @pytest.mark.slow
 def test_rostopic_pub_drives_the_circle_of_the_geometry_and_the_car_stops(tutorial, urdf_xml):
-    run = tutorial.python(DRIVE_AND_STOP, timeout=60)
+    run = tutorial.probe('tutorial/probes/drive_the_circle_and_stop.py', timeout=60)
     g = ackermann_geometry(urdf_xml)
     steering = max_ideal_steering(g.wheelbase, g.front_track, g.max_steer)  # angular.z 1.0 is clamped
     expected = g.wheelbase / math.tan(steering)
@@ -90,28 +65,6 @@ def test_rostopic_pub_drives_the_circle_of_the_geometry_and_the_car_stops(tutori
     assert abs(run['odom_after'][3]) < 0.05, 'the car stops'
 
 
-YAW_RATE_DRIVE = """
-    import json, rospy
-    from geometry_msgs.msg import Twist
-    from nav_msgs.msg import Odometry
-    rospy.init_node('yaw_rate_driver', anonymous=True)
-    yaw_rates = []
-    rospy.Subscriber('/tianracer/odom', Odometry, lambda m: yaw_rates.append(m.twist.twist.angular.z))
-    pub = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
-    # the 4 s start once the converter listens and odometry arrives (connecting takes seconds on a
-    # slow machine)
-    while (pub.get_num_connections() == 0 or not yaw_rates) and not rospy.is_shutdown():
-        rospy.sleep(0.05)
-    twist = Twist()
-    twist.linear.x, twist.angular.z = 0.5, 0.4
-    end = rospy.get_time() + 4.0
-    while rospy.get_time() < end:
-        pub.publish(twist)
-        rospy.sleep(0.05)
-    print(json.dumps(yaw_rates[-20:]))
-"""
-
-
 @pytest.mark.slow
 def test_tianracer_world_launch_angular_mode_yaw_rate_turns_at_the_asked_rate(ros):
     """tianracer.launch stays the tutorial's text; tianracer_world.launch's angular_mode reaches the
@@ -119,29 +72,16 @@ def test_tianracer_world_launch_angular_mode_yaw_rate_turns_at_the_asked_rate(ro
     ros.start(['roslaunch', 'tianracer_description', 'tianracer_world.launch', 'gui:=false',
                'angular_mode:=yaw_rate'], 'tianracer_world_launch')
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
-    yaw_rates = ros.python(YAW_RATE_DRIVE, timeout=60)
+    yaw_rates = ros.probe('tutorial/probes/yaw_rate_drive.py', timeout=60)
     assert len(yaw_rates) == 20
     assert sum(yaw_rates) / len(yaw_rates) == pytest.approx(0.4, rel=0.1)
-
-
-TELEOP_PROBE = """
-    import json, time, rospy
-    from geometry_msgs.msg import Twist
-    rospy.init_node('teleop_probe', anonymous=True)
-    got = []
-    rospy.Subscriber('/tianracer/cmd_vel', Twist, lambda m: got.append((time.time(), m.linear.x, m.angular.z)))
-    end = time.time() + {seconds}
-    while time.time() < end:
-        time.sleep(0.05)
-    print(json.dumps(got))
-"""
 
 
 @pytest.mark.slow
 def test_teleop_in_a_terminal(tutorial):
     master, slave = pty.openpty()
     sane = termios.tcgetattr(slave)
-    probe = subprocess.Popen(['/usr/bin/python3', '-c', __import__('textwrap').dedent(TELEOP_PROBE.format(seconds=14))],
+    probe = subprocess.Popen([PYTHON, os.path.join(TEST_DIR, 'tutorial', 'probes', 'teleop_commands.py'), '14'],
                              env=tutorial.env, stdout=subprocess.PIPE, text=True)
     teleop = subprocess.Popen(['rosrun', 'tianracer_description', 'teleop.py'], env=tutorial.env,
                               stdin=slave, stdout=slave, stderr=slave, start_new_session=True)

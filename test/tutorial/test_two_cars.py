@@ -40,34 +40,7 @@ def test_scans_images_and_imu_of_both_cars_transform_into_odom(ros, two_cars):
 def test_each_car_has_its_own_controllers(ros, two_cars):
     """cmd_vel of car1 moves car1 only, then AckermannDriveStamped of car2 moves car2 only (each through
     its own converter and controllers)."""
-    moved = ros.python("""
-        import json, rospy
-        from ackermann_msgs.msg import AckermannDriveStamped
-        from geometry_msgs.msg import Twist
-        from nav_msgs.msg import Odometry
-        rospy.init_node('driver', anonymous=True)
-        x = {}
-        for car in ('car1', 'car2'):
-            rospy.Subscriber('/%s/tianracer/odom' % car, Odometry, lambda m, c=car: x.__setitem__(c, m.pose.pose.position.x))
-        twist_pub = rospy.Publisher('/car1/tianracer/cmd_vel', Twist, queue_size=1)
-        ackermann_pub = rospy.Publisher('/car2/tianracer/ackermann_cmd_stamped', AckermannDriveStamped, queue_size=1)
-        while len(x) < 2:
-            rospy.sleep(0.05)
-        moved = []
-        for pub, message in ((twist_pub, Twist()), (ackermann_pub, AckermannDriveStamped())):
-            if isinstance(message, Twist):
-                message.linear.x = 0.5
-            else:
-                message.drive.speed = 0.5
-            start = dict(x)
-            end = rospy.get_time() + 3.0
-            while rospy.get_time() < end:
-                pub.publish(message)
-                rospy.sleep(0.05)
-            rospy.sleep(1.0)  # the converter's dead man's switch stops the car
-            moved.append({c: x[c] - start[c] for c in x})
-        print(json.dumps(moved))
-    """, timeout=120)
+    moved = ros.probe('tutorial/probes/each_car_has_its_own_controllers.py', timeout=120)
     twist_phase, ackermann_phase = moved
     assert twist_phase['car1'] > 0.5
     assert abs(twist_phase['car2']) < 0.01
@@ -76,14 +49,7 @@ def test_each_car_has_its_own_controllers(ros, two_cars):
 
 
 def test_imu_at_rest_reads_gravity_up_and_no_rotation(ros, two_cars):
-    reading = ros.python("""
-        import json, rospy
-        from sensor_msgs.msg import Imu
-        rospy.init_node('imu_probe', anonymous=True)
-        m = rospy.wait_for_message('/car2/imu', Imu, timeout=30)
-        a, w = m.linear_acceleration, m.angular_velocity
-        print(json.dumps({'frame': m.header.frame_id, 'a': [a.x, a.y, a.z], 'w': [w.x, w.y, w.z]}))
-    """, timeout=60)
+    reading = ros.probe('tutorial/probes/imu_at_rest_reads_gravity_up_and_no_rotation.py', timeout=60)
     assert reading['frame'] == 'car2/imu_link'
     assert reading['a'][2] == pytest.approx(9.8, abs=0.05)
     assert math.hypot(reading['a'][0], reading['a'][1]) < 0.05

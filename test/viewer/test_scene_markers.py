@@ -93,13 +93,7 @@ def test_the_node_publishes_the_plants_world_latched_in_its_frame(ros):
     from ros_harness import start_plant
     start_plant(ros, RACE_TRACK_WORLD)
     ros.start(['rosrun', 'tianracer_description', 'scene_markers', '_frame_id:=world'], 'scene_markers')
-    out = ros.python("""
-import json, rospy
-from visualization_msgs.msg import MarkerArray
-rospy.init_node('markers_probe', anonymous=True)
-markers = rospy.wait_for_message('/gazebo/scene_markers', MarkerArray, timeout=30).markers
-print(json.dumps([[m.header.frame_id, m.action, m.type, m.ns] for m in markers]))
-""", timeout=60)
+    out = ros.probe('viewer/probes/the_node_publishes_the_plants_world_latched_in_its_frame.py', timeout=60)
     assert out[0][1] == 3  # DELETEALL
     world_visuals = [v for v in scene_of(RACE_TRACK_WORLD)['visuals'] if not v['model']]
     assert sorted(m[3] for m in out[1:]) == sorted(v['link'].split('::')[0] for v in world_visuals)
@@ -128,13 +122,7 @@ def test_rviz_started_with_rviz_true_draws_the_race_tracks_walls(ros, tmp_path):
     ros.env['DISPLAY'] = ':' + xvfb.log().strip()
     ros.start(['roslaunch', 'tianracer_description', 'tianracer_world.launch', 'gui:=false', 'rviz:=true',
                'world_name:=' + RACE_TRACK_WORLD], 'launch')
-    ros.python("""
-import json, rospy
-from visualization_msgs.msg import MarkerArray
-rospy.init_node('markers_probe', anonymous=True)
-rospy.wait_for_message('/gazebo/scene_markers', MarkerArray, timeout=60)
-print(json.dumps(True))
-""", timeout=90)
+    ros.probe('viewer/probes/rviz_started_with_rviz_true_draws_the_race_tracks_walls.py', timeout=90)
 
     def red_share():
         dump = subprocess.run(['xwd', '-root', '-silent'], env=ros.env, capture_output=True, timeout=30)

@@ -190,28 +190,7 @@ def test_the_cars_drawn_pose_follows_model_states_as_it_drives(page, ros):
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
     start = driver.execute_script("return viewer.linkPose('tianracer::base_link')")
     # 1.5 s at 12 rad/s on the rear wheels (about 0.4 m/s), then stopped; the pose of the model then
-    moved = ros.python("""
-        import json, rospy
-        from std_msgs.msg import Float64
-        from gazebo_msgs.msg import ModelStates
-        rospy.init_node('driver', anonymous=True)
-        wheels = [rospy.Publisher('/tianracer/%s/command' % c, Float64, queue_size=1)
-                  for c in ('rear_left_velocity_controller', 'rear_right_velocity_controller')]
-        rospy.sleep(1.0)
-        end = rospy.Time.now() + rospy.Duration(1.5)
-        while rospy.Time.now() < end:
-            for w in wheels:
-                w.publish(12.0)
-            rospy.sleep(0.05)
-        for _ in range(20):
-            for w in wheels:
-                w.publish(0.0)
-            rospy.sleep(0.05)
-        rospy.sleep(1.0)
-        states = rospy.wait_for_message('/gazebo/model_states', ModelStates, timeout=10)
-        p = states.pose[states.name.index('tianracer')].position
-        print(json.dumps([p.x, p.y]))
-    """, timeout=60)
+    moved = ros.probe('viewer/probes/the_cars_drawn_pose_follows_model_states_as_it_drives.py', timeout=60)
     time.sleep(0.5)  # a few of the page's 30 pose updates a second
     drawn = driver.execute_script("return viewer.linkPose('tianracer::base_link')")
     assert math.hypot(moved[0] - start[0], moved[1] - start[1]) > 0.2, 'the car did not drive: %s' % moved
@@ -296,21 +275,6 @@ def test_the_mesh_tracks_collada_floor_and_stl_walls_are_drawn_where_the_plant_h
         assert min(seen.values()) > 20, seen
 
 
-CLOCK_NOW = """
-    import json, time, rospy
-    from rosgraph_msgs.msg import Clock
-    rospy.init_node('clock_probe', anonymous=True)
-    times = []
-    for _ in range(2):
-        try:
-            times.append(rospy.wait_for_message('/clock', Clock, timeout=2.0).clock.to_sec())
-        except rospy.ROSException:  # nothing published: stopped
-            times.append(None)
-        time.sleep(1.0)  # wall time: sim time stands while paused
-    print(json.dumps(times))
-"""
-
-
 @pytest.mark.slow
 def test_pause_stops_the_clock_play_starts_it_and_reset_world_puts_the_car_back(page):
     from selenium.webdriver.common.by import By
@@ -319,12 +283,12 @@ def test_pause_stops_the_clock_play_starts_it_and_reset_world_puts_the_car_back(
              'the status: running, near real time')
     driver.find_element(By.ID, 'pause').click()
     wait_for(driver, 'viewer.status().paused === true', 15, 'the page to show paused')
-    before, after = ros.python(CLOCK_NOW)
+    before, after = ros.probe('viewer/probes/clock_twice.py')
     assert before == after, '/clock went on while paused: %s -> %s' % (before, after)
     wait_for(driver, 'viewer.status().real_time_factor === 0', 15, 'the real time factor to fall to 0')
     driver.find_element(By.ID, 'play').click()
     wait_for(driver, 'viewer.status().paused === false', 15, 'the page to show running')
-    before, after = ros.python(CLOCK_NOW)
+    before, after = ros.probe('viewer/probes/clock_twice.py')
     assert after - before > 0.5, '/clock stood after play: %s -> %s' % (before, after)
 
     ros.service('/gazebo/set_model_state', "{model_state: {model_name: tianracer, pose: {position: {x: 1.0, y: 0.5, "
@@ -400,16 +364,6 @@ def test_empty_world_launch_gui_true_starts_the_viewer_and_prints_where(ros):
     assert 'rviz' not in ros.run(['rosnode', 'list']).stdout
 
 
-MODEL_XY = """
-    import json, rospy
-    from gazebo_msgs.msg import ModelStates
-    rospy.init_node('model_probe', anonymous=True)
-    states = rospy.wait_for_message('/gazebo/model_states', ModelStates, timeout=10)
-    p = states.pose[states.name.index('tianracer')].position
-    print(json.dumps([p.x, p.y]))
-"""
-
-
 @pytest.mark.slow
 def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting_go_stops_it(page):
     from selenium.webdriver.common.action_chains import ActionChains
@@ -424,9 +378,9 @@ def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting
                      ".some((o) => o.value === '/tianracer/cmd_vel')", 30, "the converter's topic to be offered")
     Select(driver.find_element(By.ID, 'drive_topic')).select_by_value('/tianracer/cmd_vel')
     driver.execute_script('document.activeElement.blur()')
-    start = ros.python(MODEL_XY)
+    start = ros.probe('viewer/probes/model_xy.py')
     ActionChains(driver).key_down('i').pause(2.0).key_up('i').perform()  # i: straight ahead
-    driven = at_rest(lambda: ros.python(MODEL_XY))  # the converter's 0.2 s and the car rolling out
+    driven = at_rest(lambda: ros.probe('viewer/probes/model_xy.py'))  # the converter's 0.2 s and the car rolling out
     assert driven[0] - start[0] > 0.3, 'the car did not drive ahead: %s -> %s' % (start, driven)
 
 
@@ -441,15 +395,7 @@ def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turn
     source = driver.execute_script("return document.querySelector('#images figure[data-topic=\"%s\"] img').src" % topic)
     shown = np.asarray(Image.open(io.BytesIO(base64.b64decode(source.split(',', 1)[1]))).convert('RGB'), dtype=float)
     # the same camera's frame straight from the topic (the car stands: the same view, other noise)
-    frame = ros.python("""
-        import json, rospy, numpy
-        from sensor_msgs.msg import Image
-        rospy.init_node('camera_probe', anonymous=True)
-        m = rospy.wait_for_message('%s', Image, timeout=10)
-        pixels = numpy.frombuffer(m.data, numpy.uint8).reshape(m.height, m.step)[:, :3 * m.width]
-        print(json.dumps({'encoding': m.encoding, 'size': [m.width, m.height],
-                          'mean': pixels.reshape(m.height, m.width, 3).reshape(-1, 3).mean(axis=0).tolist()}))
-    """ % topic)
+    frame = ros.probe('viewer/probes/camera_frame_mean.py', topic)
     assert frame['encoding'] == 'rgb8'
     assert [shown.shape[1], shown.shape[0]] == frame['size']
     assert np.abs(shown.reshape(-1, 3).mean(axis=0) - frame['mean']).max() < 6, (
