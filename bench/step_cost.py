@@ -59,8 +59,11 @@ def callgrind_instructions(steps, urdf_path, workdir):
 
 def callgrind_total(command, out):
     """The instructions `command` executes, counted by callgrind (its output file: `out`)."""
+    # One hash seed for every run: with Python's random one, its start-up differs between the two
+    # processes by enough to move the per-step figure by about 1 % between runs of the same build.
     subprocess.run(['valgrind', '--tool=callgrind', '--callgrind-out-file=' + out] + command,
-                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                   env=dict(os.environ, PYTHONHASHSEED='0'))
     with open(out) as f:
         for line in f:
             match = re.match(r'(?:summary|totals):\s+(\d+)', line)

@@ -1,4 +1,4 @@
-"""The README's screenshots of the browser viewer (docs/images/viewer_*.png), made the way
+"""The README's and docs/viewer.md's screenshots of the browser viewer (docs/images/viewer_*.png), made the way
 test/viewer/test_viewer.py opens the page (Debian's chromium, headless): the race track with the car, its
 camera's overlay and its lidar's hits, and the mesh track of test/fixtures/gazebo_pkg.
 

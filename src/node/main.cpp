@@ -25,7 +25,7 @@ int main(int argc, char** argv)
           "                        default: the world's <real_time_factor>\n"
           "  ~pub_clock_frequency  /clock rate in Hz (default 100)\n"
           "  ~paused               start paused (default false)\n"
-          "Services and topics: gazebo_ros's (~spawn_urdf_model, ~get_model_state, ~model_states, ...; README)\n");
+          "Services and topics: gazebo_ros's (~spawn_urdf_model, ~get_model_state, ~model_states, ...; docs/gazebo_compatibility.md)\n");
       return 0;
     }
   ros::init(argc, argv, "gazebo");  // gazebo_ros's node name: its services are /gazebo/...

@@ -1,4 +1,4 @@
-"""The README's claims about how the plant's physics differs from Gazebo's, each checked through the
+"""docs/gazebo_compatibility.md's claims about how the plant's physics differs from Gazebo's, each checked through the
 Python module (no ROS master): the friction of two surfaces is the smaller one (ODE's rule), the
 tutorial's steering gains oscillate when applied explicitly and settle as the plant applies them, the
 car at rest creeps less than half a millimetre in 10 s, a moving link's mesh collision is its convex hull.

@@ -244,7 +244,7 @@ def test_three_cars_racing_with_follow_the_gap_stay_off_the_walls_and_each_other
 
 @pytest.mark.slow
 def test_ppo_from_stable_baselines3_trains_on_the_vector_env():
-    """The README's example, short: a few thousand PPO steps on two cars of the vector env (PyTorch on
+    """docs/racing.md's example, short: a few thousand PPO steps on two cars of the vector env (PyTorch on
     the CPU), through Sb3VecEnv; the ended episodes' last observations reach SB3 as it expects."""
     sys.path.insert(0, os.path.join(REPOSITORY, 'examples', 'racing'))  # the example is a program, no package
     from train_ppo import Sb3VecEnv, evaluate, model_policy, train

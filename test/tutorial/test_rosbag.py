@@ -1,4 +1,4 @@
-"""Recording a simulation as users do (README, "Recording a drive"): rosbag records odom, scan and
+"""Recording a simulation as users do (docs/ros_usage.md, "Recording a drive"): rosbag records odom, scan and
 TF while the car drives, and the bag plays back, with --clock, the messages it holds."""
 import pytest
 import yaml
