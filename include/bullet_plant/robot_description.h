@@ -32,8 +32,8 @@ struct SensorDescription;
 
 // What the description makes of a gazebo_ros plugin file. Every file the plant simulates registers
 // one under its file names (registry.h), beside the code that simulates it: a model plugin in its own
-// file (GAZEBO_ROS_MODEL_PLUGIN, model_plugin.h); the sensor plugins' ROS-free halves in
-// src/plant/description/sensor_plugin_files.cpp, their ROS halves in src/node/sensor_plugins/. A
+// file (GAZEBO_ROS_MODEL_PLUGIN, model_plugin.h); a sensor plugin's ROS-free half in its own file of
+// src/plant/gazebo_plugins/ (GAZEBO_ROS_SENSOR_PLUGIN_FILE), its ROS half in src/node/sensor_plugins/. A
 // file nobody registered is warned about at parse and ignored.
 enum class PluginRole
 {

@@ -5,7 +5,7 @@
 // computed since the last call (the sensor itself keeps <update_rate>: Sensor::due). A plugin
 // registers itself under its library's file names with GAZEBO_ROS_SENSOR_PLUGIN in its own file; its
 // ROS-free half (the <sensor> it loads in, its naming rules), which the plant and Python read too, is
-// its line in src/plant/description/sensor_plugin_files.cpp. Everything runs on the simulation thread.
+// its file of the same name in src/plant/gazebo_plugins/. Everything runs on the simulation thread.
 #pragma once
 
 #include <cmath>
@@ -85,7 +85,7 @@ using SensorPluginFactory = std::function<std::unique_ptr<SensorPlugin>()>;
 
 // In a plugin's .cpp, as GZ_REGISTER_SENSOR_PLUGIN in Gazebo: `Class` made for each of the plugin
 // files that follow (libgazebo_ros_*.so). What the description makes of those files is their
-// ROS-free half (src/plant/description/sensor_plugin_files.cpp).
+// ROS-free half (src/plant/gazebo_plugins/, GAZEBO_ROS_SENSOR_PLUGIN_FILE).
 #define GAZEBO_ROS_SENSOR_PLUGIN(Class, ...)                                                                         \
   BULLET_PLANT_REGISTER(                                                                                             \
       ::bullet_plant::SensorPluginFactory, Class,                                                                    \
