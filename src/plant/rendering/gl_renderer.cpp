@@ -509,6 +509,18 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   return int(meshes_.size()) - 1;
 }
 
+void GlRenderer::removeMesh(int mesh)
+{
+  Mesh& m = meshes_.at(size_t(mesh));
+  if (!m.vertex_array)
+    return;
+  context_.makeCurrent();
+  glDeleteVertexArrays(1, &m.vertex_array);
+  glDeleteBuffers(1, &m.buffer);
+  context_.release();
+  m = Mesh();
+}
+
 // Gazebo's sampling (rendering/RenderEngine.cc: five mipmap levels, OGRE's TFO_ANISOTROPIC at its
 // default anisotropy of 1): trilinear, repeating.
 unsigned GlRenderer::textureOf(const std::shared_ptr<const Texture>& image)
@@ -739,9 +751,16 @@ const GlRenderer::Target& GlRenderer::target(int width, int height)
   return targets_.back();
 }
 
-void GlRenderer::render(const std::vector<Draw>& draws, const Frame& pose, const PinholeCamera& camera,
+void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, const PinholeCamera& camera,
                         const Lighting& lighting, PinholeImage& out)
 {
+  // A frame in flight on a worker may name a mesh removed since its snapshot: it is left out (its
+  // bounds would spoil the shadow map's fit).
+  std::vector<Draw> draws;
+  draws.reserve(snapshot.size());
+  for (const Draw& d : snapshot)
+    if (meshes_.at(size_t(d.mesh)).vertex_array)
+      draws.push_back(d);
   context_.makeCurrent();
   if (lighting.shadows)
     drawShadowMaps(draws, lighting);

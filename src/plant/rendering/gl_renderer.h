@@ -54,6 +54,9 @@ public:
 
   // Uploads a mesh once; its handle for draws.
   int addMesh(const GlTriangles& triangles);
+  // Frees a mesh's GL storage (its robot was deleted). Its handle is not reused: a draw of it, from a
+  // frame snapshotted before, draws nothing.
+  void removeMesh(int mesh);
 
   struct Draw
   {

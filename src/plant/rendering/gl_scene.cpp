@@ -55,9 +55,13 @@ int GlScene::addBody(const void* owner, const std::vector<RayPrimitive>& shapes)
 
 void GlScene::removeOwner(const void* owner)
 {
+  std::lock_guard<std::mutex> lock(gl_);  // a worker may be drawing
   for (Body& b : bodies_)
-    if (b.owner == owner && owner)
+    if (b.owner == owner && owner && b.mesh >= 0)
+    {
+      renderer_.removeMesh(b.mesh);
       b.mesh = -1;
+    }
 }
 
 void GlScene::setPose(int body, const Frame& world_from_body) { bodies_.at(size_t(body)).pose = world_from_body; }

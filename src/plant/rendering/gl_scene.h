@@ -19,7 +19,7 @@ public:
 
   // A robot body's shapes in the body frame, uploaded once; its handle for setPose.
   int addBody(const void* owner, const std::vector<RayPrimitive>& shapes);
-  // Takes every body of `owner` out of the frames from now on.
+  // Takes every body of `owner` out of the frames from now on, and frees their meshes.
   void removeOwner(const void* owner);
   void setPose(int body, const Frame& world_from_body);
 
