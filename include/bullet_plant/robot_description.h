@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -142,7 +143,15 @@ struct SurfaceDescription
 {
   double mu1 = 1.0, mu2 = 1.0;  // Gazebo's defaults
   double kp = 0.0, kd = 0.0;    // 0: not given
+  // SDF's <bounce>: the share of the normal speed a contact gives back, above `threshold` m/s.
+  double restitution = 0.0, restitution_threshold = 100000.0;
   bool given = false;
+};
+
+// SDF's <joint><axis><dynamics> spring: a torque (force) -stiffness * (q - reference) on the joint.
+struct JointSpring
+{
+  double stiffness = 0.0, reference = 0.0;
 };
 
 struct TransmissionDescription
@@ -185,6 +194,15 @@ struct RobotDescription
   std::map<std::string, SurfaceDescription> surfaces;  // by link
   std::vector<SensorDescription> sensors;
   std::vector<ModelPluginDescription> model_plugins;
+  // From SDF (sdf_model.h): links that are frames only, not the model's links: the model frame
+  // ("__model__") where it is not the root link's, and a joint's frame where SDF puts it apart from
+  // its child link's (URDF's child frame is its joint's). Massless, folded by a fixed joint into the
+  // body of a link, and not listed among the robot's links.
+  std::set<std::string> frame_links;
+  std::map<std::string, JointSpring> joint_springs;  // by joint
+  // From SDF: collisions keep their SDF names ("model::link::collision"), where sdformat's URDF
+  // converter names a URDF's collisions after their link ("link_collision").
+  bool sdf_collision_names = false;
   std::vector<std::string> warnings;                   // things read but not fully supported
   std::vector<std::string> errors;                     // things refused (logged as errors at spawn)
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)

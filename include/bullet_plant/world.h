@@ -1,4 +1,5 @@
-// The simulated world: static scene from SDF, robots from URDF, fixed-step Bullet physics.
+// The simulated world: static scenery and moving models from SDF, robots from URDF or SDF, fixed-step
+// Bullet physics.
 // Deterministic: the same description, spawns and commands give bit-identical trajectories.
 #pragma once
 
@@ -59,11 +60,11 @@ public:
   double time() const;
   uint64_t steps() const;
 
-  // Adds a robot from URDF text with its root link at pose. robot_namespace is the spawn
-  // namespace (spawn_model -robot_namespace); initial_joints sets joint positions (-J).
-  // Throws DescriptionError (bad URDF, transmission naming a missing joint, duplicate name);
-  // the world is unchanged then.
-  Robot& spawn(const std::string& urdf_xml, const std::string& name, const urdf::Pose& pose,
+  // Adds a model from URDF or SDF text (parseModelXml), its model frame (URDF: the root link) at
+  // pose. robot_namespace is the spawn namespace (spawn_model -robot_namespace); initial_joints sets
+  // joint positions (-J). Throws DescriptionError (bad URDF or SDF, transmission naming a missing
+  // joint, duplicate name); the world is unchanged then.
+  Robot& spawn(const std::string& model_xml, const std::string& name, const urdf::Pose& pose,
                const std::string& robot_namespace = "",
                const std::map<std::string, double>& initial_joints = {});
   // The same from a description already parsed (parseRobotDescription), e.g. by a caller that

@@ -1,13 +1,15 @@
-// The part of an SDF world that Gazebo's own worlds and their users' worlds use for static scenes:
-// <physics>, <gravity>, the sun's direction, static models with box/cylinder/sphere/plane/mesh
-// collisions, nested models, and <include>d models found by model:// (resource_uri.h). The plant's
-// own ground_plane and sun stand in for Gazebo's models of those names.
+// An SDF world as the plant reads it: <physics>, <gravity>, the sun's direction, <scene>; static
+// models (box/cylinder/sphere/plane/mesh collisions, nested models, <include>d models found by
+// model://, resource_uri.h) as scenery that never moves; every other model as a model the world
+// simulates (sdf_model.h). The plant's own ground_plane and sun stand in for Gazebo's models of those
+// names.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "bullet_plant/geometry.h"
+#include "bullet_plant/sdf_model.h"
 
 namespace bullet_plant
 {
@@ -49,7 +51,11 @@ struct WorldDescription
   bool shadows = true;  // <scene><shadows>: the sun's shadows in camera images (SDF's default)
   std::vector<StaticCollision> collisions;
   std::vector<StaticVisual> visuals;
+  // The models that move (SDF's default; not <static>), in file order: the world spawns each as
+  // spawn_model would, under its name and at its pose.
+  std::vector<ModelDescription> models;
   std::vector<std::string> warnings;  // each unsupported element once: what, where, left out
+  std::vector<std::string> errors;    // models refused (what sdf_model.h refuses), the world goes on without them
   std::string file;      // the world file; "" when parsed from text
   std::string base_dir;  // relative URIs of the world itself resolve against it ("": working directory)
 };

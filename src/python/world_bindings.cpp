@@ -149,7 +149,7 @@ void init_world(py::module_& m)
         return w.handleTo(w.world->spawn(urdf, name, poseFromTuple(pose), ns, joints));
       }, py::arg("urdf"), py::arg("name"), py::arg("pose") = std::vector<double>(6, 0.0), py::arg("namespace") = "",
          py::arg("joints") = std::map<std::string, double>(), py::keep_alive<0, 1>(),
-         "add a robot from URDF text; raises DescriptionError naming what is wrong")
+         "add a model from URDF or SDF text; raises DescriptionError naming what is wrong")
       .def("remove", [](PyWorld& w, const std::string& name) { return w.remove(name); }, py::arg("name"),
            "take a robot out; its handles then raise RobotRemovedError")
       .def("robot", [](PyWorld& w, const std::string& name) {

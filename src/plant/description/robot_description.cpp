@@ -14,6 +14,7 @@
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/registry.h"
+#include "description/gazebo_elements.h"
 #include "description/xml_util.h"
 
 namespace bullet_plant
@@ -248,176 +249,6 @@ void readTransmissions(const tinyxml2::XMLElement* robot, RobotDescription& out)
   }
 }
 
-void readControlPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
-{
-  ControlPluginDescription& c = out.control;
-  c.present = true;
-  c.robot_namespace = xml::childText(plugin, "robotNamespace", "");
-  c.robot_param = xml::childText(plugin, "robotParam", "robot_description");
-  c.control_period = xml::childDouble(plugin, "controlPeriod", 0.0);
-  c.e_stop_topic = xml::childText(plugin, "eStopTopic", "");
-  c.legacy_mode_ns_given = plugin->FirstChildElement("legacyModeNS") != nullptr;
-  const std::string legacy = xml::childText(plugin, "legacyModeNS", "true");
-  c.legacy_mode_ns = legacy == "true" || legacy == "1";
-  c.sim_type = xml::childText(plugin, "robotSimType", c.sim_type);
-  if (c.sim_type != ControlPluginDescription().sim_type)
-  {
-    // gazebo_ros_control cannot load such a class and leaves the robot without a controller manager.
-    out.errors.push_back("gazebo_ros_control: robotSimType '" + c.sim_type + "' is not available (the plant has "
-                         "only gazebo_ros_control/DefaultRobotHWSim); the robot gets no controller manager. Remove "
-                         "<robotSimType> or set it to gazebo_ros_control/DefaultRobotHWSim");
-    c.present = false;
-  }
-}
-
-void readPluginBlock(const tinyxml2::XMLElement* plugin, SensorDescription& d)
-{
-  d.plugin_name = plugin->Attribute("name") ? plugin->Attribute("name") : "";
-  d.plugin_filename = plugin->Attribute("filename") ? plugin->Attribute("filename") : "";
-  d.plugin_given = true;
-  d.plugin_file = findPluginFile(d.plugin_filename);
-  for (auto* p = plugin->FirstChildElement(); p; p = p->NextSiblingElement())
-    d.plugin[p->Name()] = p->GetText() ? xml::trimmed(p->GetText()) : "";
-}
-
-std::string unknownPluginWarning(const std::string& name, const std::string& filename, const std::string& where)
-{
-  return "plugin '" + name + "' (" + filename + ")" + where + " is not simulated by the plant and is ignored (simulated: " +
-         simulatedPluginNames() + ")";
-}
-
-// gazebo_ros_imu and gazebo_ros_p3d: model plugins that follow one link (bodyName).
-void readLinkSensorPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
-{
-  SensorDescription d;
-  readPluginBlock(plugin, d);
-  d.model_plugin = true;
-  d.name = d.plugin_name.empty() ? d.plugin_filename : d.plugin_name;
-  d.type = d.plugin_file->sensor_type;
-  d.link = d.pluginParam("bodyName");
-  if (d.link.empty() || !out.model->getLink(d.link))
-  {
-    out.errors.push_back("plugin '" + d.name + "' (" + d.plugin_filename + ") " +
-                         (d.link.empty() ? "has no <bodyName>" : "names bodyName '" + d.link + "', which is no link of the robot") +
-                         "; it publishes nothing. Set <bodyName> to a link of the URDF");
-    return;
-  }
-  const std::string frame = d.pluginParam("frameName", "world");
-  if (d.type == "p3d" && frame != "world" && frame != "/world" && frame != "map" && frame != "/map" &&
-      !out.model->getLink(frame))
-  {
-    out.errors.push_back("gazebo_ros_p3d plugin: frameName: " + frame + " does not exist, will not publish pose");
-    return;
-  }
-  if (d.type == "p3d" && d.pluginParam("topicName").empty())
-  {
-    out.errors.push_back("plugin '" + d.name + "' (libgazebo_ros_p3d.so) has no <topicName>; it publishes nothing");
-    return;
-  }
-  out.sensors.push_back(d);
-}
-
-void readNoise(const tinyxml2::XMLElement* parent, Noise& noise)
-{
-  auto* n = parent ? parent->FirstChildElement("noise") : nullptr;
-  if (!n)
-    return;
-  noise.gaussian = xml::childText(n, "type", "gaussian") == "gaussian";
-  noise.mean = xml::childDouble(n, "mean", 0.0);
-  noise.stddev = xml::childDouble(n, "stddev", 0.0);
-}
-
-// A count (samples, pixels) as written, in an int: beyond its range the nearest int (converting
-// would be undefined), not a number -1, for the checks at spawn to refuse.
-int countOf(double written)
-{
-  if (std::isnan(written))
-    return -1;
-  return int(std::max(double(std::numeric_limits<int>::min()), std::min(written, double(std::numeric_limits<int>::max()))));
-}
-
-// A <camera>: its field of view, image, clip and noise.
-void readCamera(const tinyxml2::XMLElement* cam, SensorDescription& d)
-{
-  d.horizontal_fov = xml::childDouble(cam, "horizontal_fov", 1.047);
-  if (auto* image = cam->FirstChildElement("image"))
-  {
-    d.image_width = countOf(xml::childDouble(image, "width", 320));
-    d.image_height = countOf(xml::childDouble(image, "height", 240));
-    d.image_format = xml::childText(image, "format", "R8G8B8");
-  }
-  if (auto* clip = cam->FirstChildElement("clip"))
-  {
-    d.clip_near = xml::childDouble(clip, "near", 0.1);
-    d.clip_far = xml::childDouble(clip, "far", 100.0);
-  }
-  readNoise(cam, d.noise);
-}
-
-SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& link)
-{
-  SensorDescription d;
-  d.link = link;
-  d.name = s->Attribute("name") ? s->Attribute("name") : "";
-  d.type = s->Attribute("type") ? s->Attribute("type") : "";
-  d.update_rate = xml::childDouble(s, "update_rate", 0.0);
-  d.pose = xml::parseSdfPose(xml::childText(s, "pose", ""));
-  if (auto* ray = s->FirstChildElement("ray"))
-  {
-    if (auto* h = xml::child(ray, "scan/horizontal"))
-    {
-      d.horizontal_samples = countOf(xml::childDouble(h, "samples", 1));
-      d.horizontal_min_angle = xml::childDouble(h, "min_angle", 0.0);
-      d.horizontal_max_angle = xml::childDouble(h, "max_angle", 0.0);
-    }
-    if (auto* v = xml::child(ray, "scan/vertical"))
-    {
-      d.vertical_samples = countOf(xml::childDouble(v, "samples", 1));
-      d.vertical_min_angle = xml::childDouble(v, "min_angle", 0.0);
-      d.vertical_max_angle = xml::childDouble(v, "max_angle", 0.0);
-    }
-    if (auto* r = ray->FirstChildElement("range"))
-    {
-      d.range_min = xml::childDouble(r, "min", 0.0);
-      d.range_max = xml::childDouble(r, "max", 0.0);
-      d.range_resolution = xml::childDouble(r, "resolution", 0.0);
-    }
-    readNoise(ray, d.noise);
-  }
-  if (auto* cam = s->FirstChildElement("camera"))
-    readCamera(cam, d);
-  if (auto* contact = s->FirstChildElement("contact"))
-    for (auto* c = contact->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
-      d.contact_collisions.push_back(xml::trimmed(c->GetText() ? c->GetText() : ""));
-  if (auto* plugin = s->FirstChildElement("plugin"))
-    readPluginBlock(plugin, d);
-  return d;
-}
-
-// A <sensor type="multicamera">: one camera per <camera>, sharing the sensor's rate and plugin.
-std::vector<SensorDescription> readMulticamera(const tinyxml2::XMLElement* s, const std::string& link)
-{
-  std::vector<SensorDescription> cameras;
-  for (auto* cam = s->FirstChildElement("camera"); cam; cam = cam->NextSiblingElement("camera"))
-  {
-    SensorDescription d = readSensor(s, link);
-    const SensorDescription defaults;
-    d.type = "camera";
-    d.image_width = defaults.image_width;
-    d.image_height = defaults.image_height;
-    d.image_format = defaults.image_format;
-    d.clip_near = defaults.clip_near;
-    d.clip_far = defaults.clip_far;
-    d.noise = defaults.noise;
-    readCamera(cam, d);
-    d.multicamera_camera = cam->Attribute("name") ? cam->Attribute("name") : "";
-    d.name += "::" + d.multicamera_camera;
-    d.pose = compose(d.pose, xml::parseSdfPose(xml::childText(cam, "pose", "")));
-    cameras.push_back(std::move(d));
-  }
-  return cameras;
-}
-
 void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& out)
 {
   for (auto* g = robot->FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo"))
@@ -430,25 +261,7 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
       if (!is_static.empty())
         out.is_static = is_static == "true" || is_static == "1";
       for (auto* p = g->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin"))
-      {
-        const std::string filename = p->Attribute("filename") ? p->Attribute("filename") : "";
-        const PluginFile* file = findPluginFile(filename);
-        if (filename == "libgazebo_ros_control.so")
-          readControlPlugin(p, out);
-        else if (file && file->role == PluginRole::LinkSensor)
-          readLinkSensorPlugin(p, out);
-        else if (file && file->role == PluginRole::Model)
-        {
-          ModelPluginDescription d;
-          d.name = p->Attribute("name") ? p->Attribute("name") : "";
-          d.filename = filename;
-          for (auto* e = p->FirstChildElement(); e; e = e->NextSiblingElement())
-            d.params[e->Name()] = e->GetText() ? xml::trimmed(e->GetText()) : "";
-          out.model_plugins.push_back(std::move(d));
-        }
-        else
-          out.warnings.push_back(unknownPluginWarning(p->Attribute("name") ? p->Attribute("name") : "", filename, ""));
-      }
+        readModelPlugin(p, out);
       continue;
     }
     std::string link = reference;
@@ -466,31 +279,7 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     surface.mu2 = xml::childDouble(g, "mu2", surface.mu2);
     surface.kp = xml::childDouble(g, "kp", surface.kp);
     surface.kd = xml::childDouble(g, "kd", surface.kd);
-    std::vector<SensorDescription> sensors;
-    for (auto* s = g->FirstChildElement("sensor"); s; s = s->NextSiblingElement("sensor"))
-    {
-      if (!s->Attribute("type", "multicamera"))
-        sensors.push_back(readSensor(s, link));
-      else
-        for (SensorDescription& camera : readMulticamera(s, link))
-          sensors.push_back(std::move(camera));
-    }
-    for (SensorDescription& sensor : sensors)
-    {
-      out.sensors.push_back(std::move(sensor));
-      SensorDescription& d = out.sensors.back();
-      if (d.plugin_given && (!d.plugin_file || d.plugin_file->role != PluginRole::Sensor))
-      {
-        out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));
-        d.plugin_file = nullptr;  // a model plugin's file in a <sensor> is no sensor plugin
-      }
-      const std::string refusal = d.plugin_file && d.plugin_file->refusal ? d.plugin_file->refusal(d) : "";
-      if (!refusal.empty())
-      {
-        out.errors.push_back("sensor '" + d.name + "': " + refusal + "; it publishes nothing");
-        d.plugin_file = nullptr;
-      }
-    }
+    readSensors(g, link, out);
   }
 }
 

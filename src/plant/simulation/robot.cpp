@@ -117,7 +117,8 @@ std::vector<std::string> Robot::linkNames() const
 {
   std::vector<std::string> names;
   for (const auto& kv : in_->multibody.link_in_body)
-    names.push_back(kv.first);
+    if (!in_->description.frame_links.count(kv.first))  // SDF's frames are no links
+      names.push_back(kv.first);
   return names;
 }
 

@@ -109,6 +109,17 @@ std::vector<BodyPlan> planBodies(Robot::Internals& r, const urdf::LinkConstShare
         }
       };
   visit(*root, 0, btTransform::getIdentity());
+  // A body begun by an SDF frame (the model frame, a joint frame) goes by the first link fixed to
+  // it: Gazebo's names (contacts, link states) are the links'.
+  for (Body& body : bodies)
+    if (r.description.frame_links.count(body.link))
+      if (urdf::LinkConstSharedPtr frame = model.getLink(body.link))
+        for (const urdf::JointSharedPtr& joint : frame->child_joints)
+          if (joint->type == urdf::Joint::FIXED && !r.description.frame_links.count(joint->child_link_name))
+          {
+            body.link = joint->child_link_name;
+            break;
+          }
   return plans;
 }
 
@@ -218,13 +229,19 @@ bool fitWheelToJoint(const urdf::Joint* joint, Collider& collider, Shape& shape,
 // links fixed to it, which it lumps into `owner`: by (URDF link, index in its collision_array).
 // Its order: the owner's own, then each fixed child's, depth first in child-joint order (urdfdom's,
 // by joint name). Entry i is named (the URDF name, or its original link's) + "_collision", + "_i" for
-// i > 0, then prefixed "<owner>_fixed_joint_lump__" unless it starts with the owner's name.
+// i > 0, then prefixed "<owner>_fixed_joint_lump__" unless it starts with the owner's name. An SDF
+// model's collisions (`sdf_names`) keep their own names.
 void nameLumpedCollisions(const urdf::ModelInterface& model, const std::string& owner, const urdf::Link& link,
-                          std::map<std::pair<std::string, size_t>, std::string>& names, size_t& index)
+                          bool sdf_names, std::map<std::pair<std::string, size_t>, std::string>& names, size_t& index)
 {
   for (size_t c = 0; c < link.collision_array.size(); ++c, ++index)
   {
     const urdf::CollisionSharedPtr& collision = link.collision_array[c];
+    if (sdf_names)
+    {
+      names[{link.name, c}] = collision->name;
+      continue;
+    }
     std::string name = (collision && !collision->name.empty() ? collision->name : link.name) + "_collision";
     if (index > 0)
       name += "_" + std::to_string(index);
@@ -235,7 +252,7 @@ void nameLumpedCollisions(const urdf::ModelInterface& model, const std::string& 
   for (const urdf::JointSharedPtr& joint : link.child_joints)
     if (joint && joint->type == urdf::Joint::FIXED)
       if (urdf::LinkConstSharedPtr child = model.getLink(joint->child_link_name))
-        nameLumpedCollisions(model, owner, *child, names, index);
+        nameLumpedCollisions(model, owner, *child, sdf_names, names, index);
 }
 
 // 3. Collision shapes, in each body's COM frame: a compound of the links' shapes, or the only shape
@@ -252,7 +269,7 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
     if (urdf::LinkConstSharedPtr owner = model.getLink(body.link))
     {
       size_t index = 0;
-      nameLumpedCollisions(model, body.link, *owner, sdf_names, index);
+      nameLumpedCollisions(model, body.link, *owner, r.description.sdf_collision_names, sdf_names, index);
     }
   for (const auto& kv : placement)
   {

@@ -187,6 +187,18 @@ World::World(const WorldDescription& description) : in_(new Internals)
   }
   for (const std::string& warning : description.warnings)
     w.log.warn("world: " + warning);
+  for (const std::string& error : description.errors)
+    w.log.error("world: " + error);
+  // The models that move, as spawn_model would add them; one the plant refuses leaves the rest.
+  for (const ModelDescription& model : description.models)
+    try
+    {
+      spawn(model.robot, model.name, model.pose);
+    }
+    catch (const std::exception& e)
+    {
+      w.log.error("world: model '" + model.name + "' is left out: " + e.what());
+    }
 }
 
 World::~World()
@@ -232,10 +244,10 @@ int64_t World::timeNs() const { return in_->time_ns; }
 double World::time() const { return in_->time_ns * 1e-9; }
 uint64_t World::steps() const { return in_->steps; }
 
-Robot& World::spawn(const std::string& urdf_xml, const std::string& name, const urdf::Pose& pose,
+Robot& World::spawn(const std::string& model_xml, const std::string& name, const urdf::Pose& pose,
                     const std::string& robot_namespace, const std::map<std::string, double>& initial_joints)
 {
-  return spawn(parseRobotDescription(urdf_xml), name, pose, robot_namespace, initial_joints);
+  return spawn(parseModelXml(model_xml).robot, name, pose, robot_namespace, initial_joints);
 }
 
 Robot& World::spawn(RobotDescription description, const std::string& name, const urdf::Pose& pose,

@@ -1,0 +1,198 @@
+#include "description/sdf_elements.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "bullet_plant/log.h"
+#include "description/resource_uri.h"
+#include "description/xml_util.h"
+
+namespace bullet_plant
+{
+namespace sdf
+{
+void parseXml(tinyxml2::XMLDocument& doc, const std::string& text, const Source& source)
+{
+  if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
+    throw DescriptionError("SDF " + source.describe() + " is not well-formed XML: line " +
+                           std::to_string(doc.ErrorLineNum()) + ": " + doc.ErrorStr());
+}
+
+std::string readFile(const std::string& path, const std::string& what)
+{
+  std::ifstream in(path);
+  if (!in)
+    throw DescriptionError("cannot read " + what + " '" + path + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string directoryOf(const std::string& path) { return std::filesystem::absolute(path).parent_path().string(); }
+
+bool isTrue(const std::string& text) { return text == "true" || text == "1"; }
+
+namespace
+{
+bool readMesh(const tinyxml2::XMLElement* mesh, const std::string& where, const Source& source, Shape& shape,
+              std::vector<std::string>& warnings, const std::string& left_out)
+{
+  shape.kind = Shape::Kind::Mesh;
+  shape.mesh_uri = xml::childText(mesh, "uri", "");
+  std::vector<double> scale = xml::numbers(xml::childText(mesh, "scale", "1 1 1"), 3, where + " <mesh><scale>");
+  shape.scale = urdf::Vector3(scale[0], scale[1], scale[2]);
+  std::string reason;
+  shape.mesh_file = resolveUri(shape.mesh_uri, source.dir, reason);
+  if (shape.mesh_file.empty())
+    warnings.push_back(where + " in " + source.describe() + ": <mesh> " + reason + "; " + left_out);
+  return !shape.mesh_file.empty();
+}
+}  // namespace
+
+bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,
+                  std::vector<std::string>& warnings, const std::string& left_out)
+{
+  if (auto* box = geometry->FirstChildElement("box"))
+  {
+    shape.kind = Shape::Kind::Box;
+    std::vector<double> size = xml::numbers(xml::childText(box, "size", "1 1 1"), 3, where + " <box><size>");
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!(size[i] > 0 && size[i] <= kMaxLength))
+        throw DescriptionError(where + ": <box><size> " + xml::childText(box, "size", "") +
+                               ": box sizes must be positive and at most " + formatNumber(kMaxLength) + " m");
+      shape.box_size[i] = size[i];
+    }
+  }
+  else if (auto* cylinder = geometry->FirstChildElement("cylinder"))
+  {
+    shape.kind = Shape::Kind::Cylinder;
+    shape.radius = xml::childDouble(cylinder, "radius", 1.0);
+    shape.length = xml::childDouble(cylinder, "length", 1.0);
+    if (!(shape.radius > 0 && shape.length > 0 && shape.radius <= kMaxLength && shape.length <= kMaxLength))
+      throw DescriptionError(where + ": <cylinder> radius " + formatNumber(shape.radius) + " length " +
+                             formatNumber(shape.length) + ": both must be positive and at most " +
+                             formatNumber(kMaxLength) + " m");
+  }
+  else if (auto* sphere = geometry->FirstChildElement("sphere"))
+  {
+    shape.kind = Shape::Kind::Sphere;
+    shape.radius = xml::childDouble(sphere, "radius", 1.0);
+    if (!(shape.radius > 0 && shape.radius <= kMaxLength))
+      throw DescriptionError(where + ": <sphere><radius> " + formatNumber(shape.radius) +
+                             " must be positive and at most " + formatNumber(kMaxLength) + " m");
+  }
+  else if (auto* plane = geometry->FirstChildElement("plane"))
+  {
+    shape.kind = Shape::Kind::Plane;
+    std::vector<double> n = xml::numbers(xml::childText(plane, "normal", "0 0 1"), 3, where + " <plane><normal>");
+    double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(norm >= 1e-9 && std::isfinite(norm)))
+      throw DescriptionError(where + ": <plane><normal> must be a finite vector that is not zero");
+    shape.normal = urdf::Vector3(n[0] / norm, n[1] / norm, n[2] / norm);
+  }
+  else if (auto* mesh = geometry->FirstChildElement("mesh"))
+    return readMesh(mesh, where, source, shape, warnings, left_out);
+  else
+  {
+    const tinyxml2::XMLElement* first = geometry->FirstChildElement();
+    warnings.push_back(where + " in " + source.describe() + ": geometry <" + std::string(first ? first->Name() : "") +
+                       "> is not supported (box, cylinder, sphere, plane, mesh); " + left_out);
+    return false;
+  }
+  return true;
+}
+
+Rgba readColour(const tinyxml2::XMLElement* visual)
+{
+  Rgba colour;
+  const tinyxml2::XMLElement* material = visual ? visual->FirstChildElement("material") : nullptr;
+  if (!material)
+    return colour;
+  std::string text = xml::childText(material, "diffuse", xml::childText(material, "ambient", ""));
+  if (text.empty())
+    return colour;
+  std::vector<double> c = xml::numbers(text, 4, "<material><diffuse>");
+  return {float(c[0]), float(c[1]), float(c[2]), float(c[3])};
+}
+
+SurfaceDescription readSurface(const tinyxml2::XMLElement* collision)
+{
+  SurfaceDescription s;
+  const tinyxml2::XMLElement* surface = collision ? collision->FirstChildElement("surface") : nullptr;
+  if (!surface)
+    return s;
+  s.given = true;
+  s.mu1 = xml::childDouble(surface, "friction/ode/mu", s.mu1);
+  s.mu2 = xml::childDouble(surface, "friction/ode/mu2", s.mu2);
+  s.kp = xml::childDouble(surface, "contact/ode/kp", s.kp);
+  s.kd = xml::childDouble(surface, "contact/ode/kd", s.kd);
+  s.restitution = xml::childDouble(surface, "bounce/restitution_coefficient", s.restitution);
+  s.restitution_threshold = xml::childDouble(surface, "bounce/threshold", s.restitution_threshold);
+  return s;
+}
+
+std::string modelFile(const std::string& model_dir)
+{
+  tinyxml2::XMLDocument config;
+  const std::string config_path = model_dir + "/model.config";
+  if (config.LoadFile(config_path.c_str()) != tinyxml2::XML_SUCCESS)
+  {
+    if (config.ErrorID() == tinyxml2::XML_ERROR_FILE_NOT_FOUND)
+      return model_dir + "/model.sdf";
+    throw DescriptionError("model config '" + config_path + "' is not well-formed XML: line " +
+                           std::to_string(config.ErrorLineNum()) + ": " + config.ErrorStr());
+  }
+  const tinyxml2::XMLElement* root = config.FirstChildElement("model");
+  std::string best = "model.sdf";
+  std::vector<double> best_version;
+  for (auto* sdf = root ? root->FirstChildElement("sdf") : nullptr; sdf; sdf = sdf->NextSiblingElement("sdf"))
+  {
+    std::vector<double> version;
+    std::stringstream parts(sdf->Attribute("version") ? sdf->Attribute("version") : "0");
+    for (std::string part; std::getline(parts, part, '.');)
+      version.push_back(std::atof(part.c_str()));
+    if (sdf->GetText() && (best_version.empty() || version > best_version))
+    {
+      best = xml::trimmed(sdf->GetText());
+      best_version = version;
+    }
+  }
+  return model_dir + "/" + best;
+}
+
+std::string includedModelDir(const std::string& uri, const Source& source, std::string& reason)
+{
+  if (uri.rfind("model://", 0) == 0)
+  {
+    std::string name = uri.substr(8);
+    while (!name.empty() && name.back() == '/')
+      name.pop_back();
+    return findModelDir(name, reason);
+  }
+  std::string dir = uri.rfind("file://", 0) == 0 ? uri.substr(7) : uri;
+  if (!dir.empty() && dir[0] != '/' && !source.dir.empty())
+    dir = source.dir + "/" + dir;
+  std::error_code ec;
+  if (std::filesystem::is_directory(dir, ec))
+    return dir;
+  reason = "no model directory at '" + dir + "'";
+  return "";
+}
+
+int versionOf(const tinyxml2::XMLElement* element)
+{
+  const tinyxml2::XMLElement* root = element ? element->GetDocument()->FirstChildElement("sdf") : nullptr;
+  const char* version = root ? root->Attribute("version") : nullptr;
+  if (!version)
+    return 106;
+  const std::string text = version;
+  const size_t dot = text.find('.');
+  return std::atoi(text.substr(0, dot).c_str()) * 100 + (dot == std::string::npos ? 0 : std::atoi(text.c_str() + dot + 1));
+}
+
+}  // namespace sdf
+}  // namespace bullet_plant

@@ -1,0 +1,72 @@
+// The SDF elements a world's static scenery and a simulated model both read, in one place: where an
+// element came from, <geometry>, <material> colours, <surface>, 1.7's <pose relative_to>, and
+// finding the file of an <include>d model. Private to the plant.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <tinyxml2.h>
+
+#include "bullet_plant/geometry.h"
+#include "bullet_plant/robot_description.h"
+
+namespace bullet_plant
+{
+namespace sdf
+{
+// Where SDF elements come from: the file messages name, and the directory their relative URIs
+// resolve against (the world file's, or the included model's).
+struct Source
+{
+  std::string file;  // "" for SDF given as text
+  std::string dir;
+  std::string describe() const { return file.empty() ? "the SDF text" : "'" + file + "'"; }
+};
+
+// Nested includes deeper than this are a loop (a model including itself).
+constexpr int kMaxModelDepth = 16;
+
+// Throws DescriptionError with the line for XML that is not well-formed.
+void parseXml(tinyxml2::XMLDocument& doc, const std::string& text, const Source& source);
+std::string readFile(const std::string& path, const std::string& what);
+std::string directoryOf(const std::string& path);
+bool isTrue(const std::string& text);
+
+// The shape of a <geometry> (box, cylinder, sphere, plane, mesh with its <scale>); false with a
+// warning ending in `left_out` for a geometry the plant does not have or a mesh not found. Throws
+// DescriptionError for a size that is not positive.
+bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,
+                  std::vector<std::string>& warnings, const std::string& left_out = "collision left out");
+
+// A <visual>'s <material><diffuse> (else <ambient>) colour; the plant's grey without one.
+Rgba readColour(const tinyxml2::XMLElement* visual);
+
+// A <collision>'s <surface>: friction (ode mu, mu2), bounce and contact stiffness, SDF's defaults
+// where absent.
+SurfaceDescription readSurface(const tinyxml2::XMLElement* collision);
+
+// The model file model.config names: the <sdf> of the newest version; model.sdf without a config.
+std::string modelFile(const std::string& model_dir);
+// The directory an <include><uri> names: model://NAME through the model path, or a path (relative to
+// the including file's directory); "" with `reason` when there is none.
+std::string includedModelDir(const std::string& uri, const Source& source, std::string& reason);
+
+// The <sdf version="..."> of the document holding `element`, as major * 100 + minor (1.6 -> 106);
+// 106 when not given.
+int versionOf(const tinyxml2::XMLElement* element);
+
+}  // namespace sdf
+}  // namespace bullet_plant
+
+#include "bullet_plant/sdf_model.h"
+
+namespace bullet_plant
+{
+namespace sdf
+{
+// A <model> element read as the plant simulates it (sdf_model.cpp): what parseSdfModel gives, for the
+// world's reader too. `depth`: how deep in includes it is.
+ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& source, int depth = 0);
+}  // namespace sdf
+}  // namespace bullet_plant
