@@ -504,9 +504,17 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   glEnableVertexAttribArray(3);
   glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(10 * sizeof(float)));
   glBindVertexArray(0);
-  meshes_.push_back(mesh);
+  // A freed slot is taken again (a world that spawns and deletes models all day keeps its size).
+  auto slot = std::find_if(meshes_.begin(), meshes_.end(), [](const Mesh& m) { return !m.vertex_array; });
+  if (slot == meshes_.end())
+    slot = meshes_.insert(slot, mesh);
+  else
+  {
+    mesh.generation = slot->generation + 1;
+    *slot = std::move(mesh);
+  }
   context_.release();
-  return int(meshes_.size()) - 1;
+  return int(slot - meshes_.begin());
 }
 
 void GlRenderer::removeMesh(int mesh)
@@ -518,7 +526,9 @@ void GlRenderer::removeMesh(int mesh)
   glDeleteVertexArrays(1, &m.vertex_array);
   glDeleteBuffers(1, &m.buffer);
   context_.release();
+  const unsigned generation = m.generation;
   m = Mesh();
+  m.generation = generation;
 }
 
 // Gazebo's sampling (rendering/RenderEngine.cc: five mipmap levels, OGRE's TFO_ANISOTROPIC at its
@@ -754,13 +764,16 @@ const GlRenderer::Target& GlRenderer::target(int width, int height)
 void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, const PinholeCamera& camera,
                         const Lighting& lighting, PinholeImage& out)
 {
-  // A frame in flight on a worker may name a mesh removed since its snapshot: it is left out (its
-  // bounds would spoil the shadow map's fit).
+  // A frame in flight on a worker may name a mesh removed since its snapshot (its slot empty, or
+  // holding a mesh added since): it is left out (its bounds would spoil the shadow map's fit).
   std::vector<Draw> draws;
   draws.reserve(snapshot.size());
   for (const Draw& d : snapshot)
-    if (meshes_.at(size_t(d.mesh)).vertex_array)
+  {
+    const Mesh& mesh = meshes_.at(size_t(d.mesh));
+    if (mesh.vertex_array && mesh.generation == d.generation)
       draws.push_back(d);
+  }
   context_.makeCurrent();
   if (lighting.shadows)
     drawShadowMaps(draws, lighting);

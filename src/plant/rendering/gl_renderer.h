@@ -54,9 +54,12 @@ public:
 
   // Uploads a mesh once; its handle for draws.
   int addMesh(const GlTriangles& triangles);
-  // Frees a mesh's GL storage (its robot was deleted). Its handle is not reused: a draw of it, from a
-  // frame snapshotted before, draws nothing.
+  // Frees a mesh's GL storage (its robot was deleted). Its slot is taken by a later addMesh; a draw of
+  // it from a frame snapshotted before draws nothing (meshGeneration tells the two apart).
   void removeMesh(int mesh);
+  // Which of the meshes its slot held `mesh` is: slots are taken again once freed, so a draw made
+  // before a removal (a frame in flight) tells its mesh from the slot's next one.
+  unsigned meshGeneration(int mesh) const { return meshes_.at(size_t(mesh)).generation; }
 
   struct Draw
   {
@@ -64,6 +67,7 @@ public:
     Frame world_from_body;
     bool moves = true;         // false: where it was last frame (the static shadow map is kept)
     bool casts_shadow = true;  // false: only receives shadows (a ground plane)
+    unsigned generation = 0;   // the mesh's (meshGeneration) when the draw was made
   };
   // The frame of `camera` at `pose` (x forward, y left, z up; the optical frame is z forward, x
   // right, y down): rgb8 rounded by the GL, then the camera's noise (noisyRgbFromRgba); depth in
@@ -85,6 +89,7 @@ private:
     int vertex_count = 0;
     std::vector<Run> runs;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};  // bounds, body frame
+    unsigned generation = 0;  // how many meshes this slot has held: a draw of an earlier one is stale
   };
   struct ShadowMap  // depth from the light, compared on lookup (sampler2DShadow)
   {
