@@ -1,7 +1,8 @@
 // Pinhole frames (pinhole.h) by OpenGL ES 3 rasterization on a GlContext (gl_context.h), into an
 // off-screen framebuffer: cameras rendered the way Gazebo renders them. Triangles are uploaded once
 // per mesh and drawn with a pose per frame. Shading: ambient + (1 - ambient) * max(0, n . towards_light)
-// on the face the camera sees, times the colour (flat on flat faces, the surface's normal on curved ones);
+// on the face the camera sees, plus the point and spot lights' share per pixel (pinhole.h's
+// Lighting::LocalLight), times the colour (flat on flat faces, the surface's normal on curved ones);
 // depth is the distance along the optical axis, written by the fragment shader into a float
 // attachment (exact where a depth buffer is not), +inf where nothing is drawn within the clip range.
 #pragma once
@@ -122,8 +123,10 @@ private:
     unsigned program = 0;
     int clip_from_body, world_from_body, textured, image, camera_origin, camera_forward, towards_light, ambient;
     int static_shadow_from_world, moving_shadow_from_world, static_shadow, moving_shadow;  // -1: not in it
+    int light_count, light_position, light_colour, light_direction, light_attenuation, light_spot;
   };
-  CameraProgram camera_programs_[4];  // [static shadows + 2 * moving shadows]
+  static constexpr int kCameraPrograms = 8;
+  CameraProgram camera_programs_[kCameraPrograms];  // [static shadows + 2 * moving shadows + 4 * local lights]
   unsigned shadow_program_ = 0;
   int light_clip_from_body_ = -1;  // the shadow program's
   ShadowMap static_shadow_, moving_shadow_;
