@@ -1,6 +1,7 @@
-// A robot as gazebo_ros reads it from URDF: urdfdom's kinematic tree plus the Gazebo extensions
-// (<gazebo reference> surface tags and sensors, the gazebo_ros_control plugin block) and the
-// <transmission> elements that gazebo_ros_control turns into joint handles.
+// A model as the plant simulates it, read from URDF as gazebo_ros reads one: urdfdom's kinematic tree
+// plus the Gazebo extensions (<gazebo reference> surface tags and sensors, the gazebo_ros_control
+// plugin block) and the <transmission> elements that gazebo_ros_control turns into joint handles. An
+// SDF model becomes the same (sdf_model.h).
 #pragma once
 
 #include <map>
