@@ -183,7 +183,14 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
                              "; skipped");
     return;
   }
-  Source model_source{sdf::modelFile(dir), dir};
+  std::string loop;
+  const Source model_source = sdf::includedSource(sdf::modelFile(dir), dir, source, loop);
+  if (!loop.empty())
+  {
+    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + " is an include loop (" + loop +
+                             "); skipped");
+    return;
+  }
   tinyxml2::XMLDocument doc;
   sdf::parseXml(doc, sdf::readFile(model_source.file, "model file"), model_source);
   const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
