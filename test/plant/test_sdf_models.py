@@ -436,3 +436,52 @@ def test_a_mesh_not_found_is_left_out_with_a_warning():
     assert w.robots == ['boat']
     warnings = logged(w, 'WARN')
     assert any("boat" in m and "hull" in m and 'no_such_model' in m for m in warnings), warnings
+
+
+# Two-axis joints: Gazebo reports a universal (or revolute2) joint as one joint of two angles; the
+# plant's joint_names show it as two revolutes, '<joint>' about <axis> (carried by the parent) and
+# '<joint>::axis2' about <axis2> (carried by the first).
+
+@pytest.mark.parametrize('kind', ['universal', 'revolute2'])
+def test_a_two_axis_joint_is_two_revolutes_the_second_turned_by_the_first(kind):
+    sdf = model('m', link('base') + link('cross', '0 0 0.5 0 0 0')
+                + joint('u', 'base', 'cross', type=kind,
+                        axis='<axis><xyz>1 0 0</xyz></axis><axis2><xyz>0 1 0</xyz></axis2>'))
+    w, robot = spawn(sdf, joints={'u': 0.4, 'u::axis2': -0.3})
+    assert sorted(robot.joint_names) == ['u', 'u::axis2']
+    assert robot.joint_state('u')[0] == pytest.approx(0.4)
+    assert robot.joint_state('u::axis2')[0] == pytest.approx(-0.3)
+    turn = axis_angle((1, 0, 0), 0.4) @ axis_angle((0, 1, 0), -0.3)
+    assert_pose(robot.link_pose('cross'), (np.array([0, 0, 0.5]), turn))
+    assert [m for m in logged(w, 'WARN') if "'u::axis2'" in m]  # says how it is simulated
+    assert 'u::__axis2_frame__' not in robot.joint_names
+
+
+def test_a_universal_joints_second_axis_keeps_its_limits():
+    # A pendulum hanging from a universal joint, pushed sideways by gravity about both axes.
+    sdf = model('p', link('post', '0 0 1 0 0 0') + joint('anchor', 'world', 'post', type='fixed', axis='')
+                + link('bob', '0.3 0.3 1 0 0 0')
+                + joint('u', 'post', 'bob', type='universal', pose_text='-0.3 -0.3 0 0 0 0',
+                        axis='<axis><xyz>1 0 0</xyz></axis>'
+                             '<axis2><xyz>0 1 0</xyz><limit><lower>-0.2</lower><upper>0.2</upper></limit></axis2>'))
+    w, robot = spawn(sdf, 'p')
+    seen = []
+    for _ in range(100):
+        w.step(10)
+        seen.append(robot.joint_state('u::axis2')[0])
+    assert max(abs(q) for q in seen) == pytest.approx(0.2, abs=0.05)
+    assert abs(robot.joint_state('u')[0]) > 0.5  # the first axis is free
+
+
+def test_a_ball_joint_is_held_fixed_saying_why():
+    sdf = model('m', link('base') + link('arm', '0 0 0.5 0 0 0') + joint('b', 'base', 'arm', type='ball', axis=''))
+    w, robot = spawn(sdf)
+    assert robot.joint_names == []
+    assert [m for m in logged(w, 'WARN') if "joint 'b'" in m and 'held fixed' in m and 'spherical' in m]
+
+
+def test_a_world_keeps_its_good_models_when_ones_pose_is_not_a_pose():
+    w = load(world(model('bad', link('body'), model_pose='0 nan 0 0 0 0'),
+                   model('good', link('body', '0 0 0.5 0 0 0'))))
+    assert w.robots == ['good']
+    assert [e for e in logged(w, 'ERROR') if "'bad'" in e and '<pose>' in e and 'nan' in e], logged(w, 'ERROR')

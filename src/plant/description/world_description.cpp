@@ -137,14 +137,16 @@ void readModel(const tinyxml2::XMLElement* model, const Source& source, const Pl
 }
 
 // A model that moves, read as spawn_model reads one, or refused with the reason (the world goes on).
+// `own_pose`: the model's <pose> places it (a world's <model>), else `placement`'s (an <include>'s).
 void addMovingModel(const tinyxml2::XMLElement* model, const Source& source, const Placement& placement, int depth,
-                    WorldDescription& world)
+                    WorldDescription& world, bool own_pose = false)
 {
   try
   {
     ModelDescription moving = sdf::readModel(model, source, depth);
     moving.name = placement.name;
-    moving.pose = placement.pose;
+    if (!own_pose)
+      moving.pose = placement.pose;
     moving.robot.is_static = false;
     for (const ModelDescription& other : world.models)
       if (other.name == moving.name)
@@ -296,12 +298,14 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     {
       Placement placement;
       placement.name = e->Attribute("name") ? e->Attribute("name") : "model";
-      placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
       placement.is_static = sdf::isTrue(xml::childText(e, "static", "false"));
       if (placement.is_static)
+      {
+        placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
         readModel(e, source, placement, 0, world);
+      }
       else
-        addMovingModel(e, source, placement, 0, world);
+        addMovingModel(e, source, placement, 0, world, true);
     }
     else if (tag == "include")
       readInclude(e, source, "", urdf::Pose(), 0, world);
