@@ -485,3 +485,12 @@ def test_a_world_keeps_its_good_models_when_ones_pose_is_not_a_pose():
                    model('good', link('body', '0 0 0.5 0 0 0'))))
     assert w.robots == ['good']
     assert [e for e in logged(w, 'ERROR') if "'bad'" in e and '<pose>' in e and 'nan' in e], logged(w, 'ERROR')
+
+
+def test_spawn_puts_an_sdf_models_own_pose_in_the_spawn_pose_as_gazebo_ros_does():
+    # gazebo_ros's updateSDFAttributes: the model's <pose> + the initial pose.
+    at = (1, 2, 0.5, 0, 0, 0.8)
+    w, robot = spawn(model('m', link('body', '0.1 0 0 0 0 0'), model_pose='0 0 0.3 0 0 0.5'), at=at)
+    frame = compose(pose(*at), pose(0, 0, 0.3, 0, 0, 0.5))
+    assert_pose(robot.base_pose(), frame)
+    assert_pose(robot.link_pose('body'), compose(frame, pose(0.1)))
