@@ -494,3 +494,10 @@ def test_spawn_puts_an_sdf_models_own_pose_in_the_spawn_pose_as_gazebo_ros_does(
     frame = compose(pose(*at), pose(0, 0, 0.3, 0, 0, 0.5))
     assert_pose(robot.base_pose(), frame)
     assert_pose(robot.link_pose('body'), compose(frame, pose(0.1)))
+
+
+def test_a_joint_spring_the_physics_does_not_simulate_is_said():
+    sdf = model('m', link('base') + link('arm', '0 0 0.5 0 0 0') + joint(
+        'j', 'base', 'arm', axis='<axis><xyz>1 0 0</xyz><dynamics><spring_stiffness>5</spring_stiffness></dynamics></axis>'))
+    w, robot = spawn(sdf)
+    assert [m for m in logged(w, 'WARN') if "joint 'j'" in m and 'spring_stiffness> 5' in m and 'not simulated' in m]

@@ -547,7 +547,12 @@ void readAxis(urdf::Joint& j, const JointPart& part, const char* axis_tag, const
       throw DescriptionError(where + "<dynamics>: spring_stiffness " + formatNumber(spring.stiffness) +
                              " must be a finite number >= 0, spring_reference finite");
     if (spring.stiffness > 0)
+    {
       out.joint_springs[j.name] = spring;
+      // Kept for the physics, which has no joint springs yet (nothing reads joint_springs).
+      out.warnings.push_back(where + "<dynamics><spring_stiffness> " + formatNumber(spring.stiffness) +
+                             ": joint springs are not simulated yet; the joint moves without it");
+    }
   }
 }
 
