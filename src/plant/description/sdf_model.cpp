@@ -318,7 +318,7 @@ urdf::InertialSharedPtr readInertial(const tinyxml2::XMLElement* link, const std
   const double largest = kMaxLinkMass * kMaxLength * kMaxLength;
   // The principal moments (the eigenvalues, by the trigonometric method for symmetric 3x3 matrices)
   // obey the triangle inequality, as sdformat's MassMatrix3::IsValid asks: the largest is at most the
-  // sum of the other two (tolerance as gz-math's, relative to the largest).
+  // sum of the other two (within 1e-6 of the largest).
   const double mean = (a + b + c) / 3.0;
   const double off = d * d + f * f + g * g;
   const double spread = std::sqrt(((a - mean) * (a - mean) + (b - mean) * (b - mean) + (c - mean) * (c - mean) +
