@@ -118,9 +118,12 @@ struct PyWorld
       if (echo && level >= LogLevel::Warn)
         std::cerr << "[" << levelName(level) << "] " << m << std::endl;
     });
-    // The world logged its description's warnings while it was built, before this sink existed.
+    // The world logged its description's warnings and errors (models refused) while it was built,
+    // before this sink existed.
     for (const std::string& warning : d.warnings)
       messages.emplace_back(levelName(LogLevel::Warn), "world: " + warning);
+    for (const std::string& error : d.errors)
+      messages.emplace_back(levelName(LogLevel::Error), "world: " + error);
   }
   ~PyWorld()
   {

@@ -1,5 +1,5 @@
 """The fuzz cases of test_fuzz.py: mutated URDFs, mutated SDF worlds and random sequences of Python API
-calls, each made from (kind, seed) alone, so a failing case is reproduced by its seed:
+calls (and of test_sdf_fuzz.py: worlds of SDF models that move), each made from (kind, seed) alone, so a failing case is reproduced by its seed:
 
     /usr/bin/python3 test/helpers/fuzz_cases.py urdf 1234 1     # kind, first seed, number of cases
 
@@ -9,6 +9,7 @@ the process dying or not answering; the test then reruns the batch case by case 
 """
 import json
 import math
+import os
 import random
 import re
 import sys
@@ -125,6 +126,92 @@ def sdf_case(seed, urdf, bullet_plant):
     return drive(world, robot, rng, STEPS_PER_CASE)
 
 
+# SDF models that move (test_sdf_fuzz.py): worlds of them, mutated, and structures a mutation does
+# not make: deep nesting, include loops (test/fixtures/sdf_models/loop_a and loop_b), hostile values
+# in every number a model has.
+SDF_MODELS = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'fixtures', 'sdf_models')
+HOSTILE_NUMBERS = ['nan', 'inf', '-inf', '1e300', '-1e300', '0', '-1', '1e-300', '-0.5', '']
+
+MODEL_WORLD = """<?xml version="1.0"?>
+<sdf version="{version}"><world name="fuzz">
+  <include><uri>model://ground_plane</uri></include>
+  <physics type="ode"><max_step_size>0.001</max_step_size></physics>
+  <model name="arm"><pose>0 0 0.5 0 0 0.3</pose>
+    <link name="base"><inertial><mass>2</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz></inertia></inertial>
+      <collision name="c"><geometry><box><size>0.3 0.3 0.3</size></box></geometry></collision></link>
+    <link name="upper"><pose>0 0 0.4 0 0 0</pose>
+      <collision name="c"><geometry><cylinder><radius>0.05</radius><length>0.5</length></cylinder></geometry></collision></link>
+    <link name="lower"><pose>0.2 0 0.6 0 1.2 0</pose>
+      <collision name="c"><geometry><sphere><radius>0.05</radius></sphere></geometry></collision></link>
+    <frame name="elbow" attached_to="upper"><pose>0 0 0.25 0 0 0</pose></frame>
+    <joint name="shoulder" type="revolute"><parent>base</parent><child>upper</child><pose>0 0 -0.25 0 0 0</pose>
+      <axis><xyz expressed_in="__model__">0 1 0</xyz><use_parent_model_frame>true</use_parent_model_frame>
+        <limit><lower>-1</lower><upper>1</upper><effort>10</effort></limit>
+        <dynamics><damping>0.1</damping><spring_stiffness>1</spring_stiffness></dynamics></axis></joint>
+    <joint name="elbow" type="universal"><parent>upper</parent><child>lower</child>
+      <pose relative_to="elbow">0 0 0 0 0 0</pose>
+      <axis><xyz>1 0 0</xyz></axis><axis2><xyz>0 1 0</xyz><limit><lower>-0.5</lower><upper>0.5</upper></limit></axis2></joint>
+    <model name="hand"><pose>0.4 0 0.6 0 0 0</pose>
+      <link name="palm"><collision name="c"><geometry><box><size>0.1 0.1 0.02</size></box></geometry></collision></link>
+      <link name="finger"><pose>0 0.05 0 0 0 0</pose></link>
+      <joint name="slide" type="prismatic"><parent>palm</parent><child>finger</child>
+        <axis><xyz>0 1 0</xyz><limit><lower>0</lower><upper>0.04</upper></limit></axis></joint>
+    </model>
+    <joint name="wrist" type="{wrist}"><parent>lower</parent><child>hand::palm</child><axis><xyz>0 0 1</xyz></axis>
+      <axis2><xyz>1 0 0</xyz></axis2></joint>
+  </model>
+  <include><uri>model://swing_arm</uri><name>swing</name><pose>2 0 0.2 0 0 0</pose></include>
+  <model name="loop"><pose>-2 0 1 0 0 0</pose><include><uri>model://loop_a</uri></include></model>
+  <include><uri>model://loop_b</uri><pose>-2 2 1 0 0 0</pose></include>
+  <model name="crate"><static>{static}</static><pose>0 2 0.2 0 0 0</pose>
+    <link name="link"><collision name="c"><geometry><box><size>0.4 0.4 0.4</size></box></geometry></collision>
+      <collision name="m"><geometry><mesh><uri>model://nowhere/mesh.stl</uri></mesh></geometry></collision></link></model>
+  {extra}
+</world></sdf>"""
+
+
+def nested_models(rng, depth):
+    """`depth` models each inside the last, each a link joined to its parent model's."""
+    text, closing = '', ''
+    for level in range(depth):
+        parent = 'l' if level == 0 else 'm%d::l' % (level - 1)
+        text += ('<model name="m%d"><pose>0 0 0.1 0 0 %s</pose><link name="l"><collision name="c"><geometry><box>'
+                 '<size>0.05 0.05 0.05</size></box></geometry></collision></link>' % (level, rng.choice(['0', '0.1'])))
+        closing = '</model>' + closing
+    joints = ''.join('<joint name="j%d" type="%s"><parent>%s</parent><child>%s</child><axis><xyz>1 0 0</xyz></axis>'
+                     '</joint>' % (level, rng.choice(['revolute', 'fixed', 'ball']),
+                                   'l' if level == 0 else '::'.join('m%d' % k for k in range(level)) + '::l',
+                                   '::'.join('m%d' % k for k in range(level + 1)) + '::l')
+                     for level in range(depth))
+    return ('<model name="deep"><pose>0 -2 1 0 0 0</pose><link name="l"/>' + text + closing + joints + '</model>')
+
+
+def sdf_model_case(seed, urdf, bullet_plant):
+    os.environ['GAZEBO_MODEL_PATH'] = SDF_MODELS
+    rng = random.Random(seed)
+    extra = nested_models(rng, rng.choice([2, 12, 40])) if rng.random() < 0.3 else ''
+    text = MODEL_WORLD.format(version=rng.choice(['1.4', '1.5', '1.6', '1.7']), extra=extra,
+                              wrist=rng.choice(['revolute', 'continuous', 'universal', 'revolute2', 'ball', 'screw',
+                                                'gearbox', 'fixed', 'prismatic', 'hinge']),
+                              static=rng.choice(['true', 'false']))
+    if rng.random() < 0.3:  # many numbers hostile at once (the physics' step left alone)
+        share = rng.choice([0.02, 0.1, 0.3])
+        text = re.sub(r'(?<=>)[^<>]*\d[^<>]*(?=</(?!max_step_size))',
+                      lambda m: ' '.join(rng.choice(HOSTILE_NUMBERS) for _ in m.group(0).split())
+                      if rng.random() < share else m.group(0), text)
+    text = mutate_xml(text, rng, rng.randint(0, 4))
+    world = bullet_plant.World.from_sdf(text)
+    world.echo = False
+    finite = finite_state(world)
+    if rng.random() < 0.5:  # the same text's first model through spawn (parseModelXml)
+        try:
+            world.spawn(text, 'spawned', pose=(0, 0, rng.choice([0.0, 1.0]), 0, 0, 0))
+        except bullet_plant.DescriptionError:
+            pass
+    world.step(STEPS_PER_CASE)
+    return finite and finite_state(world)
+
+
 def random_tree(rng, depth=0):
     if depth > 3 or rng.random() < 0.4:
         return rng.choice([1, -1.5, float('nan'), float('inf'), 'text', True, None, [1, 2], 10 ** 30])
@@ -185,7 +272,7 @@ def api_case(seed, urdf, bullet_plant):
     return finite
 
 
-CASES = {'urdf': urdf_case, 'sdf': sdf_case, 'api': api_case}
+CASES = {'urdf': urdf_case, 'sdf': sdf_case, 'api': api_case, 'sdf_model': sdf_model_case}
 
 
 def main(kind, first, count):

@@ -183,6 +183,28 @@ std::string includedModelDir(const std::string& uri, const Source& source, std::
   return "";
 }
 
+Source includedSource(const std::string& model_file, const std::string& model_dir, const Source& from,
+                      std::string& loop)
+{
+  Source source{model_file, model_dir, from.includers};
+  if (!from.file.empty())
+    source.includers.push_back(from.file);
+  loop.clear();
+  std::error_code ec;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(model_file, ec);
+  for (size_t i = 0; i < source.includers.size(); ++i)
+  {
+    std::error_code other_ec;
+    if (std::filesystem::weakly_canonical(source.includers[i], other_ec) != canonical)
+      continue;
+    for (size_t j = i; j < source.includers.size(); ++j)
+      loop += "'" + source.includers[j] + "' -> ";
+    loop += "'" + model_file + "'";
+    break;
+  }
+  return source;
+}
+
 int versionOf(const tinyxml2::XMLElement* element)
 {
   const tinyxml2::XMLElement* root = element ? element->GetDocument()->FirstChildElement("sdf") : nullptr;

@@ -22,6 +22,9 @@ struct Source
   std::string file;  // "" for SDF given as text
   std::string dir;
   std::string describe() const { return file.empty() ? "the SDF text" : "'" + file + "'"; }
+  // The model files whose <include>s led here, outermost first: an include of one of them (or of
+  // `file`) is a loop.
+  std::vector<std::string> includers;
 };
 
 // Nested includes deeper than this are a loop (a model including itself).
@@ -51,6 +54,11 @@ std::string modelFile(const std::string& model_dir);
 // The directory an <include><uri> names: model://NAME through the model path, or a path (relative to
 // the including file's directory); "" with `reason` when there is none.
 std::string includedModelDir(const std::string& uri, const Source& source, std::string& reason);
+
+// The Source of the model file `model_file` in `model_dir` included from `from`; "" in `loop` unless
+// that file is `from`'s own or one of its includers' (an include loop: the chain, "a -> b -> a").
+Source includedSource(const std::string& model_file, const std::string& model_dir, const Source& from,
+                      std::string& loop);
 
 // The <sdf version="..."> of the document holding `element`, as major * 100 + minor (1.6 -> 106);
 // 106 when not given.

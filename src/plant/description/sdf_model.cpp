@@ -31,6 +31,14 @@ std::string attribute(const tinyxml2::XMLElement* e, const char* name, const std
   return value ? value : fallback;
 }
 
+// A refusal from a shared reader (a number that is not one, "<mass>: 'nan' is not a finite number")
+// with the model element it is in said first.
+DescriptionError inContext(const std::string& where, const DescriptionError& e)
+{
+  const std::string what = e.what();
+  return what.rfind("model '", 0) == 0 ? e : DescriptionError(where + ": " + what);
+}
+
 bool isIdentity(const urdf::Pose& p)
 {
   return std::abs(p.position.x) < 1e-12 && std::abs(p.position.y) < 1e-12 && std::abs(p.position.z) < 1e-12 &&
@@ -38,38 +46,65 @@ bool isIdentity(const urdf::Pose& p)
 }
 
 // The frames one (possibly nested) model's <pose relative_to> may name, each with its pose and the
-// frame that pose is relative to (SDF 1.7; 1.5 and 1.6 wrote `frame`): resolved to the model frame.
+// frame that pose is relative to (SDF 1.7; 1.5 and 1.6 wrote `frame`, which sdformat's 1.6 to 1.7
+// converter renames relative_to): resolved to the model frame. A nested model's frames are named
+// through it ("inner::link"), as a joint's <child> in the outer model names them. Where a link, a
+// nested model, a <frame> and a joint share a name (1.6 allows a joint named as its link), the name
+// is the link's (then the model's, the frame's).
 class FrameGraph
 {
 public:
+  enum Rank { kLink, kModel, kFrame, kJoint };
   FrameGraph(std::string model) : model_(std::move(model)) {}
-  void add(const std::string& name, const std::string& relative_to, const urdf::Pose& pose)
+  void add(const std::string& name, Rank rank, const std::string& relative_to, const urdf::Pose& pose)
   {
-    entries_[name] = {relative_to, pose};
+    auto it = entries_.find(name);
+    if (it == entries_.end() || rank < it->second.rank)
+      entries_[name] = {rank, relative_to, pose};
   }
-  bool has(const std::string& name) const { return entries_.count(name) > 0; }
+  void nest(const std::string& name, std::shared_ptr<const FrameGraph> graph) { nested_[name] = std::move(graph); }
+  bool has(const std::string& name) const
+  {
+    if (name.empty() || name == kModelFrame || entries_.count(name))
+      return true;
+    const size_t scope = name.find("::");
+    auto nested = scope == std::string::npos ? nested_.end() : nested_.find(name.substr(0, scope));
+    return nested != nested_.end() && entries_.count(nested->first) && nested->second->has(name.substr(scope + 2));
+  }
   // The frame's pose in the model frame; throws DescriptionError for a frame the model lacks or a cycle.
   urdf::Pose resolve(const std::string& name, int depth = 0) const
   {
     if (name.empty() || name == kModelFrame)
       return urdf::Pose();
+    if (depth > int(entries_.size()) + 1)
+      throw DescriptionError("model '" + model_ + "': the poses relative to '" + name + "' form a cycle; give one of "
+                             "them relative to another frame");
     auto it = entries_.find(name);
-    if (it == entries_.end())
-      throw DescriptionError("model '" + model_ + "': <pose relative_to=\"" + name + "\"> names no frame, link, joint "
-                             "or model of the model");
-    if (depth > int(entries_.size()))
-      throw DescriptionError("model '" + model_ + "': the poses relative to '" + name + "' form a cycle");
-    return compose(resolve(it->second.relative_to, depth + 1), it->second.pose);
+    if (it != entries_.end())
+      return resolve(it->second.relative_to, it->second.pose, depth + 1);
+    const size_t scope = name.find("::");
+    auto nested = scope == std::string::npos ? nested_.end() : nested_.find(name.substr(0, scope));
+    if (nested == nested_.end())
+      throw DescriptionError("model '" + model_ + "': <pose relative_to=\"" + name + "\"> names no frame, link, "
+                             "joint or model of the model");
+    return compose(resolve(nested->first, depth + 1), nested->second->resolve(name.substr(scope + 2)));
+  }
+  // A pose relative to the frame `relative_to` ("": the model frame), in the model frame.
+  urdf::Pose resolve(const std::string& relative_to, const urdf::Pose& pose, int depth = 0) const
+  {
+    return compose(resolve(relative_to, depth), pose);
   }
 
 private:
   struct Entry
   {
+    Rank rank;
     std::string relative_to;
     urdf::Pose pose;
   };
   std::string model_;
   std::map<std::string, Entry> entries_;
+  std::map<std::string, std::shared_ptr<const FrameGraph>> nested_;
 };
 
 // A <pose>'s text and the frame it is relative to ("" when not given).
@@ -95,6 +130,9 @@ struct JointPart
   const tinyxml2::XMLElement* element;
   int version;
   urdf::Pose model_frame;  // the frame of the model that declares it, in the top model's frame
+  // 1.7's <axis><xyz expressed_in> and <axis2><xyz expressed_in> naming a frame of the declaring model
+  // (not __model__): that frame, in the top model's frame.
+  std::map<std::string, urdf::Pose> axis_frames;
 };
 
 struct ModelParts
@@ -106,12 +144,14 @@ struct ModelParts
   std::vector<std::unique_ptr<tinyxml2::XMLDocument>> included;  // documents the parts point into
 };
 
-void collectModel(const tinyxml2::XMLElement* model, const std::string& scope, const urdf::Pose& in_top,
-                  const Source& source, int depth, ModelParts& parts, RobotDescription& out);
+std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model, const std::string& scope,
+                                               const urdf::Pose& in_top, const Source& source, int depth,
+                                               ModelParts& parts, RobotDescription& out);
 
-// An <include> inside a model: the included model read as if nested here.
+// An <include> inside a model: the included model read as if nested here, its frame added to `frames`
+// under the include's name.
 void collectInclude(const tinyxml2::XMLElement* include, const std::string& scope, const urdf::Pose& in_top,
-                    const FrameGraph& frames, const Source& source, int depth, ModelParts& parts, RobotDescription& out)
+                    FrameGraph& frames, const Source& source, int depth, ModelParts& parts, RobotDescription& out)
 {
   const std::string uri = xml::childText(include, "uri", "");
   std::string reason;
@@ -123,7 +163,14 @@ void collectInclude(const tinyxml2::XMLElement* include, const std::string& scop
                            "; skipped");
     return;
   }
-  Source model_source{sdf::modelFile(dir), dir};
+  std::string loop;
+  const Source model_source = sdf::includedSource(sdf::modelFile(dir), dir, source, loop);
+  if (!loop.empty())
+  {
+    out.warnings.push_back("model '" + parts.name + "': <include> of '" + uri + "' is an include loop (" + loop +
+                           "); skipped");
+    return;
+  }
   parts.included.emplace_back(new tinyxml2::XMLDocument);
   tinyxml2::XMLDocument& doc = *parts.included.back();
   sdf::parseXml(doc, sdf::readFile(model_source.file, "model file"), model_source);
@@ -138,30 +185,50 @@ void collectInclude(const tinyxml2::XMLElement* include, const std::string& scop
   const std::string name = xml::childText(include, "name", attribute(nested, "name", "model"));
   std::string relative_to;
   urdf::Pose pose = include->FirstChildElement("pose") ? poseOf(include, relative_to) : poseOf(nested, relative_to);
-  pose = compose(frames.resolve(relative_to), pose);
-  collectModel(nested, scope + name + "::", compose(in_top, pose), model_source, depth + 1, parts, out);
+  frames.add(name, FrameGraph::kModel, relative_to, pose);
+  frames.nest(name, collectModel(nested, scope + name + "::", compose(in_top, frames.resolve(relative_to, pose)),
+                                 model_source, depth + 1, parts, out));
 }
 
-void collectModel(const tinyxml2::XMLElement* model, const std::string& scope, const urdf::Pose& in_top,
-                  const Source& source, int depth, ModelParts& parts, RobotDescription& out)
+// One model's links, joints, plugins and nested models into `parts`, `in_top` being its frame in the
+// top model's; its frames, for the model holding it.
+std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model, const std::string& scope,
+                                               const urdf::Pose& in_top, const Source& source, int depth,
+                                               ModelParts& parts, RobotDescription& out)
 {
+  if (depth > sdf::kMaxModelDepth * 4)
+    throw DescriptionError("model '" + parts.name + "': models nested " + std::to_string(depth) + " deep at '" + scope +
+                           "'; the plant reads at most " + std::to_string(sdf::kMaxModelDepth * 4));
   const int version = sdf::versionOf(model);
-  FrameGraph frames(parts.name);
+  auto graph = std::make_shared<FrameGraph>(parts.name);
+  FrameGraph& frames = *graph;
   // Every named frame first: a pose may be relative to one declared after it.
   for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
   {
     const std::string tag = e->Name(), name = attribute(e, "name");
     std::string relative_to;
     const urdf::Pose pose = poseOf(e, relative_to);
-    if (tag == "link" || tag == "model")
-      frames.add(name, relative_to, pose);
+    if (tag == "link")
+      frames.add(name, FrameGraph::kLink, relative_to, pose);
+    else if (tag == "model")
+      frames.add(name, FrameGraph::kModel, relative_to, pose);
     else if (tag == "frame")
     {
       const std::string attached_to = attribute(e, "attached_to");
-      frames.add(name, relative_to.empty() ? attached_to : relative_to, pose);
+      frames.add(name, FrameGraph::kFrame, relative_to.empty() ? attached_to : relative_to, pose);
     }
     else if (tag == "joint")
-      frames.add(name, relative_to.empty() ? xml::childText(e, "child", "") : relative_to, pose);
+      frames.add(name, FrameGraph::kJoint, relative_to.empty() ? xml::childText(e, "child", "") : relative_to, pose);
+  }
+  // Nested and included models next: the joints below may name their frames ("inner::link").
+  for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
+  {
+    const std::string tag = e->Name(), name = attribute(e, "name");
+    if (tag == "model")
+      frames.nest(name, collectModel(e, scope + name + "::", compose(in_top, frames.resolve(name)), source, depth + 1,
+                                     parts, out));
+    else if (tag == "include")
+      collectInclude(e, scope, in_top, frames, source, depth + 1, parts, out);
   }
   for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
   {
@@ -172,7 +239,9 @@ void collectModel(const tinyxml2::XMLElement* model, const std::string& scope, c
         if (link.name == scope + name)
           throw DescriptionError("model '" + parts.name + "': link '" + scope + name + "' is given twice; link names "
                                  "must be unique in a model");
-      parts.links.push_back({scope + name, compose(in_top, frames.resolve(name)), e, source});
+      std::string relative_to;
+      const urdf::Pose pose = poseOf(e, relative_to);
+      parts.links.push_back({scope + name, compose(in_top, frames.resolve(relative_to, pose)), e, source});
     }
     else if (tag == "joint")
     {
@@ -185,13 +254,26 @@ void collectModel(const tinyxml2::XMLElement* model, const std::string& scope, c
       const std::string parent = xml::childText(e, "parent", ""), child = xml::childText(e, "child", "");
       joint.parent = parent == kWorld ? kWorld : scope + parent;
       joint.child = scope + child;
-      joint.pose = compose(in_top, frames.resolve(name));
+      if (!frames.has(child) || child == kWorld || child.empty())
+        throw DescriptionError("model '" + parts.name + "' joint '" + joint.name + "': <child> '" + child +
+                               "' is no link of the model; name one of its links");
+      std::string relative_to;
+      const urdf::Pose pose = poseOf(e, relative_to);
+      joint.pose = compose(in_top, frames.resolve(relative_to.empty() ? child : relative_to, pose));
+      for (const char* axis_tag : {"axis", "axis2"})
+      {
+        const tinyxml2::XMLElement* axis = e->FirstChildElement(axis_tag);
+        const std::string expressed_in = attribute(axis ? axis->FirstChildElement("xyz") : nullptr, "expressed_in");
+        if (expressed_in.empty() || expressed_in == kModelFrame)
+          continue;
+        if (!frames.has(expressed_in))
+          throw DescriptionError("model '" + parts.name + "' joint '" + joint.name + "': <" + axis_tag +
+                                 "><xyz expressed_in=\"" + expressed_in + "\"> names no frame, link, joint or "
+                                 "model of the model; name one, or __model__ (or leave it out: the joint frame)");
+        joint.axis_frames[axis_tag] = compose(in_top, frames.resolve(expressed_in));
+      }
       parts.joints.push_back(joint);
     }
-    else if (tag == "model")
-      collectModel(e, scope + name + "::", compose(in_top, frames.resolve(name)), source, depth + 1, parts, out);
-    else if (tag == "include")
-      collectInclude(e, scope, in_top, frames, source, depth + 1, parts, out);
     else if (tag == "plugin")
       parts.plugins.push_back(e);
     else if (tag == "enable_wind" && sdf::isTrue(xml::trimmed(e->GetText() ? e->GetText() : "")))
@@ -200,6 +282,7 @@ void collectModel(const tinyxml2::XMLElement* model, const std::string& scope, c
       out.warnings.push_back("model '" + parts.name + "': <self_collide> is ignored: a model's links do not "
                              "collide with each other in the plant");
   }
+  return graph;
 }
 
 // <inertial>: SDF's defaults (mass 1 kg, unit moments) where absent; the mass and inertia checked as
@@ -233,12 +316,31 @@ urdf::InertialSharedPtr readInertial(const tinyxml2::XMLElement* link, const std
   const double minor2 = a * b - d * d;
   const double det = a * (b * c - g * g) - d * (d * c - g * f) + f * (d * g - b * f);
   const double largest = kMaxLinkMass * kMaxLength * kMaxLength;
-  if (!(a > 0 && minor2 > 0 && det > 0) || std::max({a, b, c}) > largest)
+  // The principal moments (the eigenvalues, by the trigonometric method for symmetric 3x3 matrices)
+  // obey the triangle inequality, as sdformat's MassMatrix3::IsValid asks: the largest is at most the
+  // sum of the other two (within 1e-6 of the largest).
+  const double mean = (a + b + c) / 3.0;
+  const double off = d * d + f * f + g * g;
+  const double spread = std::sqrt(((a - mean) * (a - mean) + (b - mean) * (b - mean) + (c - mean) * (c - mean) +
+                                   2.0 * off) / 6.0);
+  double largest_moment = mean;
+  if (spread > 0)
+  {
+    const double p = spread;
+    const double b11 = (a - mean) / p, b22 = (b - mean) / p, b33 = (c - mean) / p;
+    const double b12 = d / p, b13 = f / p, b23 = g / p;
+    const double half_det = (b11 * (b22 * b33 - b23 * b23) - b12 * (b12 * b33 - b23 * b13) +
+                             b13 * (b12 * b23 - b22 * b13)) / 2.0;
+    const double phi = std::acos(std::max(-1.0, std::min(1.0, half_det))) / 3.0;
+    largest_moment = mean + 2.0 * p * std::cos(phi);
+  }
+  const bool triangle = largest_moment <= (3.0 * mean - largest_moment) + 1e-6 * largest_moment;
+  if (!(a > 0 && minor2 > 0 && det > 0) || !triangle || std::max({a, b, c}) > largest)
   {
     std::ostringstream text;
     text << where << "<inertia> ixx " << a << " iyy " << b << " izz " << c << " ixy " << d << " ixz " << f << " iyz "
-         << g << " is not positive definite (or beyond " << largest
-         << " kg m^2): every moment must be positive and each at most the sum of the other two";
+         << g << " is not " << (a > 0 && minor2 > 0 && det > 0 ? "a body's inertia" : "positive definite") << " (or beyond " << largest
+         << " kg m^2): every principal moment must be positive and each at most the sum of the other two";
     throw DescriptionError(text.str());
   }
   return inertial;
@@ -348,27 +450,32 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
   return link;
 }
 
-// The joint's axis in the joint frame: SDF 1.4 gives it in the model frame, 1.5 and 1.6 where
-// <use_parent_model_frame> says, 1.7 where <xyz expressed_in> says.
-urdf::Vector3 jointAxis(const JointPart& joint, const std::string& model)
+// The joint's axis (`axis_tag`: axis or axis2) in the joint frame: SDF 1.4 gives it in the model
+// frame (sdformat's 1.4 to 1.5 converter adds <use_parent_model_frame>true), 1.5 and 1.6 where
+// <use_parent_model_frame> says (default: the joint frame), 1.7 where <xyz expressed_in> says (1.7's
+// converter turns use_parent_model_frame into expressed_in="__model__"; default: the joint frame).
+urdf::Vector3 jointAxis(const JointPart& joint, const std::string& model, const char* axis_tag = "axis")
 {
-  const tinyxml2::XMLElement* axis = joint.element->FirstChildElement("axis");
+  const tinyxml2::XMLElement* axis = joint.element->FirstChildElement(axis_tag);
   const tinyxml2::XMLElement* xyz_element = axis ? axis->FirstChildElement("xyz") : nullptr;
   const std::string text = xyz_element && xyz_element->GetText() ? xyz_element->GetText() : "0 0 1";
-  const std::vector<double> xyz = xml::numbers(text, 3, "model '" + model + "' joint '" + joint.name + "' <axis><xyz>");
+  const std::string where = "model '" + model + "' joint '" + joint.name + "': <" + axis_tag + "><xyz>";
+  const std::vector<double> xyz = xml::numbers(text, 3, where);
   const double norm = std::sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
   if (!(norm > 1e-9) || !std::isfinite(norm))
-    throw DescriptionError("model '" + model + "' joint '" + joint.name + "': <axis><xyz> " + xml::trimmed(text) +
-                           " is not a direction: give a vector that is not zero");
+    throw DescriptionError(where + " " + xml::trimmed(text) + " is not a direction: give a finite vector that is "
+                           "not zero");
   urdf::Vector3 v(xyz[0] / norm, xyz[1] / norm, xyz[2] / norm);
   const std::string expressed_in = attribute(xyz_element, "expressed_in");
-  const bool in_model = joint.version < 105 || sdf::isTrue(xml::childText(axis, "use_parent_model_frame", "false")) ||
+  const bool in_model = joint.version < 105 ||
+                        (joint.version < 107 && sdf::isTrue(xml::childText(axis, "use_parent_model_frame", "false"))) ||
                         expressed_in == kModelFrame;
-  if (in_model)  // model frame -> joint frame
-    v = rotate(inverse(compose(inverse(joint.model_frame), joint.pose)).rotation, v);
-  else if (!expressed_in.empty())
-    throw DescriptionError("model '" + model + "' joint '" + joint.name + "': <xyz expressed_in=\"" + expressed_in +
-                           "\"> is not supported (the joint frame or __model__ are)");
+  const auto named = joint.axis_frames.find(axis_tag);
+  if (in_model || named != joint.axis_frames.end())
+  {
+    const urdf::Pose& frame = in_model ? joint.model_frame : named->second;
+    v = rotate(inverse(compose(inverse(frame), joint.pose)).rotation, v);  // that frame -> joint frame
+  }
   return v;
 }
 
@@ -392,38 +499,14 @@ std::shared_ptr<urdf::Link> frameLink(const std::string& name, RobotDescription&
   return link;
 }
 
-// A movable or fixed SDF joint as a URDF joint from `parent_frame` (the parent link's frame, in the
-// model) to its child frame, the joint frame.
-std::shared_ptr<urdf::Joint> readJoint(const JointPart& part, const urdf::Pose& parent_frame, const std::string& parent,
-                                       const std::string& child, const std::string& model, RobotDescription& out)
+// One axis (`axis_tag`: axis or axis2) of a movable SDF joint on the URDF joint `j`: its direction,
+// <limit> and <dynamics>; `type` revolute (continuous without limits) or prismatic.
+void readAxis(urdf::Joint& j, const JointPart& part, const char* axis_tag, const std::string& type,
+              const std::string& model, RobotDescription& out)
 {
-  auto j = std::make_shared<urdf::Joint>();
-  j->name = part.name;
-  j->parent_link_name = parent;
-  j->child_link_name = child;
-  j->parent_to_joint_origin_transform = compose(inverse(parent_frame), part.pose);
-  const std::string& type = part.type;
-  if (type == "fixed")
-  {
-    j->type = urdf::Joint::FIXED;
-    return j;
-  }
-  if (type != "revolute" && type != "continuous" && type != "prismatic")
-  {
-    if (type == "ball" || type == "universal" || type == "revolute2" || type == "screw" || type == "gearbox")
-      out.warnings.push_back("model '" + model + "' joint '" + part.name + "' is of type '" + type +
-                             "', which the plant does not simulate yet (revolute, continuous, prismatic, fixed); "
-                             "it is held fixed");
-    else
-      throw DescriptionError("model '" + model + "' joint '" + part.name + "': type '" + type +
-                             "' is not an SDF joint type (revolute, continuous, prismatic, fixed, ball, universal, "
-                             "revolute2, screw, gearbox)");
-    j->type = urdf::Joint::FIXED;
-    return j;
-  }
-  j->axis = jointAxis(part, model);
-  const tinyxml2::XMLElement* axis = part.element->FirstChildElement("axis");
-  const std::string where = "model '" + model + "' joint '" + part.name + "' <axis>";
+  j.axis = jointAxis(part, model, axis_tag);
+  const tinyxml2::XMLElement* axis = part.element->FirstChildElement(axis_tag);
+  const std::string where = "model '" + model + "' joint '" + part.name + "' <" + axis_tag + ">";
   auto limits = std::make_shared<urdf::JointLimits>();
   limits->lower = xml::childDouble(axis, "limit/lower", -kSdfUnlimited);
   limits->upper = xml::childDouble(axis, "limit/upper", kSdfUnlimited);
@@ -432,23 +515,31 @@ std::shared_ptr<urdf::Joint> readJoint(const JointPart& part, const urdf::Pose& 
   if (std::isnan(limits->lower) || std::isnan(limits->upper))
     throw DescriptionError(where + "<limit>: lower and upper must be numbers");
   // SDF: a negative effort or velocity limit is none.
-  if (limits->effort < 0)
+  if (!(limits->effort >= 0))
     limits->effort = std::numeric_limits<double>::infinity();
+  if (!(limits->velocity >= 0))
+    limits->velocity = -1.0;
   const bool unlimited = limits->lower <= -kSdfUnlimited && limits->upper >= kSdfUnlimited;
   if (unlimited)
     limits->lower = limits->upper = 0.0;  // no position limits (the builder's lower < upper test)
-  j->limits = limits;
-  j->type = type == "prismatic" ? urdf::Joint::PRISMATIC
-            : type == "continuous" || unlimited ? urdf::Joint::CONTINUOUS
-                                                : urdf::Joint::REVOLUTE;
+  else if (!(limits->lower <= limits->upper) || !std::isfinite(limits->lower) || !std::isfinite(limits->upper) ||
+           std::max(std::abs(limits->lower), std::abs(limits->upper)) > kSdfUnlimited)
+    throw DescriptionError(where + "<limit>: lower " + formatNumber(limits->lower) + " and upper " +
+                           formatNumber(limits->upper) + " are no range: give lower <= upper, both finite (or leave "
+                           "both out for a joint without limits)");
+  j.limits = limits;
+  j.type = type == "prismatic" ? urdf::Joint::PRISMATIC
+           : type == "continuous" || unlimited ? urdf::Joint::CONTINUOUS
+                                               : urdf::Joint::REVOLUTE;
   if (const tinyxml2::XMLElement* dynamics = axis ? axis->FirstChildElement("dynamics") : nullptr)
   {
-    j->dynamics = std::make_shared<urdf::JointDynamics>();
-    j->dynamics->damping = xml::childDouble(dynamics, "damping", 0.0);
-    j->dynamics->friction = xml::childDouble(dynamics, "friction", 0.0);
-    if (!(j->dynamics->damping >= 0) || !(j->dynamics->friction >= 0))
-      throw DescriptionError(where + "<dynamics>: damping " + formatNumber(j->dynamics->damping) + " and friction " +
-                             formatNumber(j->dynamics->friction) + " must be numbers >= 0");
+    j.dynamics = std::make_shared<urdf::JointDynamics>();
+    j.dynamics->damping = xml::childDouble(dynamics, "damping", 0.0);
+    j.dynamics->friction = xml::childDouble(dynamics, "friction", 0.0);
+    if (!(j.dynamics->damping >= 0 && std::isfinite(j.dynamics->damping)) ||
+        !(j.dynamics->friction >= 0 && std::isfinite(j.dynamics->friction)))
+      throw DescriptionError(where + "<dynamics>: damping " + formatNumber(j.dynamics->damping) + " and friction " +
+                             formatNumber(j.dynamics->friction) + " must be finite numbers >= 0");
     JointSpring spring;
     spring.stiffness = xml::childDouble(dynamics, "spring_stiffness", 0.0);
     spring.reference = xml::childDouble(dynamics, "spring_reference", 0.0);
@@ -456,9 +547,78 @@ std::shared_ptr<urdf::Joint> readJoint(const JointPart& part, const urdf::Pose& 
       throw DescriptionError(where + "<dynamics>: spring_stiffness " + formatNumber(spring.stiffness) +
                              " must be a finite number >= 0, spring_reference finite");
     if (spring.stiffness > 0)
-      out.joint_springs[part.name] = spring;
+    {
+      out.joint_springs[j.name] = spring;
+      // Kept for the physics, which has no joint springs yet (nothing reads joint_springs).
+      out.warnings.push_back(where + "<dynamics><spring_stiffness> " + formatNumber(spring.stiffness) +
+                             ": joint springs are not simulated yet; the joint moves without it");
+    }
   }
-  return j;
+}
+
+// The mass the frame between a universal (or revolute2) joint's two axes gets: SDF's frame has none,
+// and the physics needs one (the robot builder's least mass without a warning).
+constexpr double kAxisFrameMass = 1e-3;  // kg
+constexpr double kAxisFrameInertia = 1e-6;  // kg m^2
+
+// An SDF joint as URDF joints from `parent_frame` (the parent link's frame, in the model) to `child`,
+// a link in the joint frame, added to `tree`. Revolute, continuous, prismatic and fixed joints are one
+// URDF joint; universal and revolute2 are two revolutes, the second named "<joint>::axis2", through
+// a frame link at the joint frame (Gazebo reports them as one joint of two axes).
+void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pose& parent_frame,
+              const std::string& parent, const std::string& child, const std::string& model, RobotDescription& out)
+{
+  auto j = std::make_shared<urdf::Joint>();
+  j->name = part.name;
+  j->parent_link_name = parent;
+  j->child_link_name = child;
+  j->parent_to_joint_origin_transform = compose(inverse(parent_frame), part.pose);
+  tree.joints_[part.name] = j;
+  const std::string& type = part.type;
+  if (type == "revolute" || type == "continuous" || type == "prismatic")
+    readAxis(*j, part, "axis", type, model, out);
+  else if (type == "universal" || type == "revolute2")
+  {
+    const std::string between = part.name + "::__axis2_frame__";
+    auto frame = std::make_shared<urdf::Link>();
+    frame->name = between;
+    frame->inertial = std::make_shared<urdf::Inertial>();
+    frame->inertial->mass = kAxisFrameMass;
+    frame->inertial->ixx = frame->inertial->iyy = frame->inertial->izz = kAxisFrameInertia;
+    tree.links_[between] = frame;
+    out.frame_links.insert(between);
+    j->child_link_name = between;
+    readAxis(*j, part, "axis", "revolute", model, out);
+    auto second = std::make_shared<urdf::Joint>();
+    second->name = part.name + "::axis2";
+    second->parent_link_name = between;
+    second->child_link_name = child;
+    if (!part.element->FirstChildElement("axis2"))
+      throw DescriptionError("model '" + model + "' joint '" + part.name + "' of type '" + type + "' has no <axis2>: "
+                             "give its second axis");
+    readAxis(*second, part, "axis2", "revolute", model, out);
+    if (tree.joints_.count(second->name))
+      throw DescriptionError("model '" + model + "' joint '" + second->name + "' is given twice");
+    tree.joints_[second->name] = second;
+    out.warnings.push_back("model '" + model + "' joint '" + part.name + "' (" + type + "): simulated as two "
+                           "revolute joints, '" + part.name + "' about <axis> and '" + second->name + "' about <axis2>");
+  }
+  else if (type == "fixed")
+    j->type = urdf::Joint::FIXED;
+  else if (type == "ball" || type == "screw" || type == "gearbox")
+  {
+    out.warnings.push_back("model '" + model + "' joint '" + part.name + "' is of type '" + type + "', which the "
+                           "plant does not simulate (" +
+                           (type == "ball" ? std::string("its multibody physics has revolute and prismatic joints, no "
+                                                         "spherical one")
+                                           : std::string("revolute, continuous, prismatic, universal, revolute2, fixed")) +
+                           "); it is held fixed");
+    j->type = urdf::Joint::FIXED;
+  }
+  else
+    throw DescriptionError("model '" + model + "' joint '" + part.name + "': type '" + type +
+                           "' is not an SDF joint type (revolute, continuous, prismatic, fixed, ball, universal, "
+                           "revolute2, screw, gearbox)");
 }
 
 // The model's links and joints as a URDF tree: links in their own frames, a joint frame apart from
@@ -473,7 +633,14 @@ void buildTree(const ModelParts& parts, RobotDescription& out)
   for (const LinkPart& part : parts.links)
   {
     links[part.name] = &part;
-    tree->links_[part.name] = readLink(part, model, out);
+    try
+    {
+      tree->links_[part.name] = readLink(part, model, out);
+    }
+    catch (const DescriptionError& e)
+    {
+      throw inContext("model '" + model + "' link '" + part.name + "'", e);
+    }
   }
   if (links.empty())
     throw DescriptionError("model '" + model + "' has no <link>: a model that moves needs one");
@@ -506,14 +673,21 @@ void buildTree(const ModelParts& parts, RobotDescription& out)
         tree->links_[kWorld] = frameLink(kWorld, out);
     }
     const urdf::Pose joint_in_child = compose(inverse(child_frame), part.pose);
-    if (isIdentity(joint_in_child))
-      tree->joints_[part.name] = readJoint(part, parent_frame, parent, part.child, model, out);
-    else
+    try
     {
-      const std::string frame = part.name + "::__joint_frame__";
-      tree->links_[frame] = frameLink(frame, out);
-      tree->joints_[part.name] = readJoint(part, parent_frame, parent, frame, model, out);
-      tree->joints_[frame] = fixedJoint(frame, frame, part.child, inverse(joint_in_child));
+      if (isIdentity(joint_in_child))
+        addJoint(*tree, part, parent_frame, parent, part.child, model, out);
+      else
+      {
+        const std::string frame = part.name + "::__joint_frame__";
+        tree->links_[frame] = frameLink(frame, out);
+        addJoint(*tree, part, parent_frame, parent, frame, model, out);
+        tree->joints_[frame] = fixedJoint(frame, frame, part.child, inverse(joint_in_child));
+      }
+    }
+    catch (const DescriptionError& e)
+    {
+      throw inContext(where, e);
     }
   }
   // The roots: links no joint hangs from.
@@ -560,14 +734,22 @@ ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& sour
 {
   ModelDescription out;
   out.name = attribute(model, "name", "model");
-  std::string relative_to;
-  out.pose = poseOf(model, relative_to);
+
   out.robot.base_dir = source.dir;
   out.robot.sdf_collision_names = true;
   out.robot.is_static = isTrue(xml::childText(model, "static", "false"));
   ModelParts parts;
   parts.name = out.name;
-  collectModel(model, "", urdf::Pose(), source, depth, parts, out.robot);
+  try
+  {
+    std::string relative_to;
+    out.pose = poseOf(model, relative_to);
+    collectModel(model, "", urdf::Pose(), source, depth, parts, out.robot);
+  }
+  catch (const DescriptionError& e)
+  {
+    throw inContext("model '" + out.name + "'", e);
+  }
   buildTree(parts, out.robot);
   for (const tinyxml2::XMLElement* plugin : parts.plugins)
     readModelPlugin(plugin, out.robot);

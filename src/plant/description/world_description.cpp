@@ -152,15 +152,17 @@ bool hasSensorOrPlugin(const tinyxml2::XMLElement* model)
 }
 
 // A model that moves (or a static one with sensors or plugins), read as spawn_model reads one, or
-// refused with the reason (the world goes on).
+// refused with the reason (the world goes on). `own_pose`: the model's <pose> places it (a world's
+// <model>), else `placement`'s (an <include>'s).
 void addMovingModel(const tinyxml2::XMLElement* model, const Source& source, const Placement& placement, int depth,
-                    WorldDescription& world)
+                    WorldDescription& world, bool own_pose = false)
 {
   try
   {
     ModelDescription moving = sdf::readModel(model, source, depth);
     moving.name = placement.name;
-    moving.pose = placement.pose;
+    if (!own_pose)
+      moving.pose = placement.pose;
     moving.robot.is_static = placement.is_static;
     for (const ModelDescription& other : world.models)
       if (other.name == moving.name)
@@ -199,7 +201,14 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
                              "; skipped");
     return;
   }
-  Source model_source{sdf::modelFile(dir), dir};
+  std::string loop;
+  const Source model_source = sdf::includedSource(sdf::modelFile(dir), dir, source, loop);
+  if (!loop.empty())
+  {
+    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + " is an include loop (" + loop +
+                             "); skipped");
+    return;
+  }
   tinyxml2::XMLDocument doc;
   sdf::parseXml(doc, sdf::readFile(model_source.file, "model file"), model_source);
   const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
@@ -358,12 +367,14 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     {
       Placement placement;
       placement.name = e->Attribute("name") ? e->Attribute("name") : "model";
-      placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
       placement.is_static = sdf::isTrue(xml::childText(e, "static", "false"));
       if (placement.is_static && !hasSensorOrPlugin(e))
+      {
+        placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
         readModel(e, source, placement, 0, world);
+      }
       else
-        addMovingModel(e, source, placement, 0, world);
+        addMovingModel(e, source, placement, 0, world, true);
     }
     else if (tag == "include")
       readInclude(e, source, "", urdf::Pose(), 0, world);

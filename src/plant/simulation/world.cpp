@@ -256,7 +256,10 @@ uint64_t World::steps() const { return in_->steps; }
 Robot& World::spawn(const std::string& model_xml, const std::string& name, const urdf::Pose& pose,
                     const std::string& robot_namespace, const std::map<std::string, double>& initial_joints)
 {
-  return spawn(parseModelXml(model_xml).robot, name, pose, robot_namespace, initial_joints);
+  // gazebo_ros's spawn puts an SDF model's own <pose> in the spawn pose (updateSDFAttributes:
+  // model_pose + initial pose); a URDF's is the identity.
+  ModelDescription model = parseModelXml(model_xml);
+  return spawn(std::move(model.robot), name, compose(pose, model.pose), robot_namespace, initial_joints);
 }
 
 Robot& World::spawn(RobotDescription description, const std::string& name, const urdf::Pose& pose,
