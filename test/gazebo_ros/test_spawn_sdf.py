@@ -42,6 +42,17 @@ PENDULUM = """<model name="pendulum"><pose>3 0 1 0 0 0</pose>
   <joint name="hinge" type="revolute"><parent>world</parent><child>bar</child><axis><xyz>0 1 0</xyz></axis></joint>
 </model>"""
 
+# A world model ROS cannot name a topic of: left out with an error naming it, the node goes on.
+BAD_TOPIC = """<model name="badly_named"><pose>-3 0 0.1 0 0 0</pose>
+  <link name="body"><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+    <collision name="shell"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+    <sensor type="ray" name="lidar"><ray><scan><horizontal><samples>3</samples></horizontal></scan>
+      <range><min>0.1</min><max>5</max></range></ray>
+      <plugin name="lidar_plugin" filename="libgazebo_ros_laser.so"><topicName>bad topic</topicName></plugin>
+    </sensor>
+  </link>
+</model>"""
+
 MODEL_CONFIG = """<?xml version="1.0"?>
 <model><name>Tiny box</name><version>1.0</version><sdf version="1.6">tiny.sdf</sdf>
   <description>a box the tests spawn from the model path</description></model>"""
@@ -56,9 +67,11 @@ def sim(tmp_path_factory):
     (models / 'tiny_box').mkdir(parents=True)
     (models / 'tiny_box' / 'model.config').write_text(MODEL_CONFIG)
     (models / 'tiny_box' / 'tiny.sdf').write_text(sdf(box_sdf('tiny_box', size=0.1, pose='0 0 0.05 0 0 0')))
+    (models / 'tiny_post').mkdir()
+    (models / 'tiny_post' / 'model.sdf').write_text(sdf(box_sdf('tiny_post', size=0.1, static=True)))
     (work / 'box.sdf').write_text(sdf(box_sdf('from_file', pose='0.5 0 0.1 0 0 0')))
     world = work / 'falling.world'
-    world.write_text(sdf_world(box_sdf('crate', pose='0 -3 1 0 0 0') + PENDULUM))
+    world.write_text(sdf_world(box_sdf('crate', pose='0 -3 1 0 0 0') + PENDULUM + BAD_TOPIC))
     system = RosSystem(str(work))
     system.env['GAZEBO_MODEL_PATH'] = str(models)
     try:
@@ -80,6 +93,7 @@ def test_spawn_model_sdf_from_a_file_a_parameter_the_model_path_and_stdin(sim):
         'file_box': spawn_model(sim, '-sdf', '-file', os.path.join(work, 'box.sdf'), '-model', 'file_box', '-y', '1'),
         'param_box': spawn_model(sim, '-sdf', '-param', '/box_sdf', '-model', 'param_box', '-y', '2', '-Y', '1.5708'),
         'db_box': spawn_model(sim, '-sdf', '-database', 'tiny_box', '-model', 'db_box', '-x', '2', '-y', '1', '-z', '0.3'),
+        'post': spawn_model(sim, '-sdf', '-database', 'tiny_post', '-model', 'post', '-x', '-2', '-z', '0.5'),
         'stdin_box': spawn_model(sim, '-sdf', '-stdin', '-model', 'stdin_box', '-y', '3',
                                  input=sdf(box_sdf('whatever', pose='0 0 0.1 0 0 0'))),
     }
@@ -91,6 +105,8 @@ def test_spawn_model_sdf_from_a_file_a_parameter_the_model_path_and_stdin(sim):
     assert out['param_box'] == pytest.approx([0.0, 2.5, 0.1, math.pi / 2], abs=1e-3)
     # -database: the include's pose is the spawn pose; the model file's own <pose> is not used, as Gazebo.
     assert out['db_box'] == pytest.approx([2.0, 1.0, 0.3, 0.0], abs=1e-3)
+    assert out['post'] == pytest.approx([-2.0, 0.0, 0.5, 0.0], abs=1e-3), 'a static model (model.sdf without a model.config), fixed where it is put'
+    assert out['static']['post'] is True and out['static']['db_box'] is False
     assert out['stdin_box'] == pytest.approx([0.0, 3.0, 0.1, 0.0], abs=1e-3)
     assert out['bodies']['db_box'] == ['body'] and out['geoms']['db_box'] == ['shell']
 
@@ -140,3 +156,5 @@ def test_world_file_models_are_gazebo_ros_models(sim):
     assert 'crate' not in out['after_delete']
     log = sim.plant.log()
     assert "world model 'crate' loaded" in log and "world model 'pendulum' loaded" in log, log
+    assert 'badly_named' not in out['model_states']
+    assert "world model 'badly_named' is left out: sensor 'lidar'" in log and "'bad topic' is not a valid ROS name" in log
