@@ -135,7 +135,6 @@ def test_spawn_sdf_model_service_names_places_refuses_and_deletes(sim):
     assert out['still_running'] is True, 'the node answers after every refusal'
 
 
-@pytest.mark.slow
 def test_world_file_models_are_gazebo_ros_models(sim):
     out = sim.probe('gazebo_ros/probes/world_file_models.py', timeout=90)
     assert {'crate', 'pendulum'} <= set(out['model_states']), out['model_states']
