@@ -62,9 +62,11 @@ ModelDescription readSpawnedModel(const std::string& model_xml)
   if (!include)
     return parseModelXml(model_xml);  // URDF or an SDF model, or the parser's complaint
   // The model database request: the world reader finds and reads the included model.
-  const std::string uri = include->FirstChildElement("uri") && include->FirstChildElement("uri")->GetText()
-                              ? include->FirstChildElement("uri")->GetText()
-                              : "";
+  std::string uri = include->FirstChildElement("uri") && include->FirstChildElement("uri")->GetText()
+                        ? include->FirstChildElement("uri")->GetText()
+                        : "";
+  uri.erase(0, uri.find_first_not_of(" \t\r\n"));
+  uri.erase(uri.find_last_not_of(" \t\r\n") + 1);
   if (!include->FirstChildElement("pose"))
     include->InsertEndChild(doc.NewElement("pose"))->ToElement()->SetText("0 0 0 0 0 0");
   auto read = [&doc] {
@@ -79,8 +81,9 @@ ModelDescription readSpawnedModel(const std::string& model_xml)
   bool is_static = false;
   if (found.models.empty())
   {
+    // Not found: the world reader's warning names the URI and where it looked.
     for (const std::string& warning : found.warnings)
-      if (warning.find("<include>") != std::string::npos)
+      if (warning.rfind("<include> of '" + uri + "'", 0) == 0)
         throw DescriptionError(warning);
     // Found, but <static>: scenery to a world; spawned, a model fixed where it is put, as Gazebo's.
     tinyxml2::XMLElement* static_element = include->FirstChildElement("static");
