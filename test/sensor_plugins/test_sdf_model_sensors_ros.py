@@ -2,8 +2,8 @@
 sensor (gazebo_ros_imu_sensor) and a gazebo_ros_p3d model plugin publishes from the node's start as
 its URDF twin, spawned by spawn_model, does: the same topic names (the twin's under its
 -robot_namespace), frame ids (the twin's laser and camera frames under its namespace's tf prefix,
-as upstream's plugins resolve them), sizes and values. Each stands 1.5 m before a wall of its own, 20 m
-apart."""
+as upstream's plugins resolve them), sizes and values; so does the same SDF spawned by spawn_model
+-sdf -robot_namespace. Each stands 1.5 m before a wall of its own, 20 m apart."""
 import pytest
 
 from plant_helpers import box_model, sdf_world
@@ -60,14 +60,26 @@ TOPICS = [('/scan', 'base', '/twin/scan', 'twin/base'),
 
 
 def test_a_world_file_sdf_model_publishes_as_its_urdf_twin(ros, tmp_path):
-    walls = box_model('wall', (0.2, 2.0, 1.0), (1.5, 0.0, 0.5)) + box_model('twin_wall', (0.2, 2.0, 1.0), (1.5, 20.0, 0.5))
+    walls = ''.join(box_model(name, (0.2, 2.0, 1.0), (1.5, y, 0.5))
+                    for name, y in (('wall', 0.0), ('twin_wall', 20.0), ('sdf_twin_wall', -20.0)))
     (tmp_path / 'probe.world').write_text(sdf_world(SDF_MODEL + walls))
     (tmp_path / 'twin.urdf').write_text(URDF_TWIN)
     plant = start_plant(ros, str(tmp_path / 'probe.world'))
     ros.run(['rosparam', 'set', '/twin_description', '--textfile', str(tmp_path / 'twin.urdf')])
     spawn_urdf(ros, plant, '/twin_description', 'twin', '-y', '20', '-z', '0.1', '-robot_namespace', '/twin')
+    # The same SDF spawned by spawn_sdf_model in a namespace of its own publishes as the twin does there.
+    spawned = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-sdf', '-stdin', '-model', 'sdf_twin', '-y', '-20',
+                       '-robot_namespace', '/sdf_twin'], timeout=60,
+                      input='<sdf version="1.6">%s</sdf>' % SDF_MODEL.replace('"probe"', '"anything"'))
+    assert spawned.returncode == 0, spawned.stdout + spawned.stderr + plant.log()
     topics = [t for sdf_topic, _, urdf_topic, _ in TOPICS for t in (sdf_topic, urdf_topic)]
-    seen = ros.probe('sensor_plugins/probes/messages_after.py', 1.0, *topics, timeout=90)
+    spawned_topics = [t.replace('/twin/', '/sdf_twin/') for _, _, t, _ in TOPICS]
+    seen = ros.probe('sensor_plugins/probes/messages_after.py', 1.0, *topics, *spawned_topics, timeout=90)
+    for _, _, urdf_topic, twin_frame in TOPICS:
+        spawned_topic = urdf_topic.replace('/twin/', '/sdf_twin/')
+        assert seen[spawned_topic]['frame'] == twin_frame.replace('twin/', 'sdf_twin/'), spawned_topic
+    assert seen['/sdf_twin/scan']['ranges'] == pytest.approx(seen['/scan']['ranges'], abs=2e-3)
+    assert seen['/sdf_twin/ground_truth']['position'] == pytest.approx([0.0, -20.0, 0.1], abs=2e-3)
     for sdf_topic, frame, urdf_topic, twin_frame in TOPICS:
         mine, twin = seen[sdf_topic], seen[urdf_topic]
         assert mine['type'] == twin['type'], (sdf_topic, mine['type'], twin['type'])
