@@ -211,17 +211,16 @@ bool GazeboRosApiPlugin::spawnURDFModel(gazebo_msgs::SpawnModel::Request& req, g
 
 bool GazeboRosApiPlugin::spawnSDFModel(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res)
 {
-  // URDF is taken too, as gazebo_ros's does; the plant's robots are URDF only.
+  // SDF (<sdf>, or the old <gazebo>) and URDF, told by the root element as gazebo_ros tells them;
+  // XML that is not well-formed goes on to the plant, whose error names the parser's complaint.
   const std::string root = rootElement(req.model_xml);
-  if (root == "robot")
+  if (root.empty() || root == "robot" || root == "sdf" || root == "gazebo")
     return spawnModel(req, res);
   res.success = false;
-  res.status_message = root == "sdf" || root == "gazebo"
-                           ? "SpawnModel: Failure - the Bullet plant spawns URDF models only; put SDF model '" +
-                                 req.model_name + "' in the world file (<include> or <model>)"
-                           : "GazeboRosApiPlugin SpawnModel Failure: input model_xml not SDF or URDF, or cannot "
-                             "be converted to Gazebo compatible format.";
-  ROS_ERROR_STREAM(res.status_message);
+  res.status_message = "GazeboRosApiPlugin SpawnModel Failure: input model_xml not SDF or URDF, or cannot be "
+                       "converted to Gazebo compatible format.";
+  ROS_ERROR_STREAM(res.status_message << " (model '" << req.model_name << "': the root element is <" << root
+                                      << ">; send <sdf version=\"1.6\"><model ...></sdf> or a URDF <robot>)");
   return true;
 }
 
@@ -507,6 +506,21 @@ bool GazeboRosApiPlugin::getModelProperties(gazebo_msgs::GetModelProperties::Req
     return true;
   }
   res.body_names = robot->linkNames();
+  // Each link's collisions in link order, as Gazebo lists them: their SDF names, or for a URDF the
+  // names the plant's contacts give them (the collision's or link's name and "_collision", a second
+  // one numbered, as sdformat's URDF reader).
+  const urdf::ModelInterface& model = *robot->description().model;
+  for (const std::string& link_name : res.body_names)
+    if (urdf::LinkConstSharedPtr link = model.getLink(link_name))
+      for (size_t i = 0; i < link->collision_array.size(); ++i)
+      {
+        const urdf::CollisionSharedPtr& collision = link->collision_array[i];
+        if (robot->description().sdf_collision_names)
+          res.geom_names.push_back(collision->name);
+        else
+          res.geom_names.push_back((collision->name.empty() ? link_name : collision->name) + "_collision" +
+                                   (i > 0 ? "_" + std::to_string(i) : ""));
+      }
   res.joint_names = robot->jointNames();
   res.is_static = robot->description().is_static;
   res.success = true;

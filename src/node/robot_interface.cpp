@@ -25,7 +25,9 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
     model_plugin_topics_.back()->refresh({{"", plugin}});
     plugin_odometry_ = plugin_odometry_ || plugin->output<OdometrySample>() || plugin->output<TransformSample>();
   }
-  if (!plugin_odometry_)
+  // The plant's ground truth is for URDF robots; an SDF model (a world file's box, spawn_model -sdf)
+  // publishes only what its plugins publish, as in Gazebo: odom -> "link" of every box would fight on /tf.
+  if (!plugin_odometry_ && !robot.description().sdf_collision_names)
     odometry_.reset(new OdometryPublisher(robot, nh_));
   for (Sensor* sensor : robot.sensors())
     if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor, robot, plant.world().timeStep()))

@@ -7,9 +7,12 @@
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
+#include <tinyxml2.h>
 
+#include "bullet_plant/geometry.h"
 #include "bullet_plant/params.h"
 #include "bullet_plant/plugin_names.h"
+#include "bullet_plant/world_description.h"
 #include "ros_names.h"
 #include "ros_time.h"
 
@@ -46,6 +49,56 @@ Param toParam(XmlRpc::XmlRpcValue& v)
 }
 
 }  // namespace
+
+ModelDescription readSpawnedModel(const std::string& model_xml)
+{
+  tinyxml2::XMLDocument doc;
+  doc.Parse(model_xml.c_str(), model_xml.size());
+  tinyxml2::XMLElement* root = doc.Error() ? nullptr : doc.RootElement();
+  tinyxml2::XMLElement* world = root && std::string(root->Name()) == "sdf" && !root->FirstChildElement("model")
+                                    ? root->FirstChildElement("world")
+                                    : nullptr;
+  tinyxml2::XMLElement* include = world && !world->FirstChildElement("model") ? world->FirstChildElement("include") : nullptr;
+  if (!include)
+    return parseModelXml(model_xml);  // URDF or an SDF model, or the parser's complaint
+  // The model database request: the world reader finds and reads the included model.
+  std::string uri = include->FirstChildElement("uri") && include->FirstChildElement("uri")->GetText()
+                        ? include->FirstChildElement("uri")->GetText()
+                        : "";
+  uri.erase(0, uri.find_first_not_of(" \t\r\n"));
+  uri.erase(uri.find_last_not_of(" \t\r\n") + 1);
+  if (!include->FirstChildElement("pose"))
+    include->InsertEndChild(doc.NewElement("pose"))->ToElement()->SetText("0 0 0 0 0 0");
+  auto read = [&doc] {
+    tinyxml2::XMLPrinter printer;
+    doc.Print(&printer);
+    WorldDescription world = parseWorldDescription(printer.CStr());
+    if (!world.errors.empty())
+      throw DescriptionError(world.errors.front());
+    return world;
+  };
+  WorldDescription found = read();
+  bool is_static = false;
+  if (found.models.empty())
+  {
+    // Not found: the world reader's warning names the URI and where it looked.
+    for (const std::string& warning : found.warnings)
+      if (warning.rfind("<include> of '" + uri + "'", 0) == 0)
+        throw DescriptionError(warning);
+    // Found, but <static>: scenery to a world; spawned, a model fixed where it is put, as Gazebo's.
+    tinyxml2::XMLElement* static_element = include->FirstChildElement("static");
+    if (!static_element)
+      static_element = include->InsertEndChild(doc.NewElement("static"))->ToElement();
+    static_element->SetText("false");
+    found = read();
+    is_static = true;
+  }
+  if (found.models.empty())
+    throw DescriptionError("<include> of '" + uri + "' gives no model to spawn");
+  ModelDescription model = std::move(found.models.front());
+  model.robot.is_static = model.robot.is_static || is_static;
+  return model;
+}
 
 void RosPlant::post(std::function<void()> work)
 {
@@ -120,6 +173,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
       case LogLevel::Error: ROS_ERROR_STREAM(m); break;
     }
   });
+  loadWorldModels();
   real_time_factor_ = readRealTimeFactor(private_nh_, description.real_time_factor);
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.
   double clock_rate = 100.0;
@@ -150,15 +204,19 @@ void RosPlant::copyParams(const std::string& key)
   });
 }
 
-bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std::string& ns, const urdf::Pose& pose,
-                     const std::map<std::string, double>& joints, std::string& message)
+bool RosPlant::spawn(const std::string& name, const std::string& model_xml, const std::string& ns,
+                     const urdf::Pose& pose, const std::map<std::string, double>& joints, std::string& message)
 {
   // The robot namespace decides where its pid_gains live: read it before the sim thread spawns.
   RobotDescription description;
+  urdf::Pose model_pose;
   std::string control_ns;
   try
   {
-    description = parseRobotDescription(urdf);
+    ModelDescription model = readSpawnedModel(model_xml);
+    // gazebo_ros: the SDF's model <pose> in the frame of the request's initial pose (a URDF has none).
+    model_pose = compose(pose, model.pose);
+    description = std::move(model.robot);
     control_ns = description.control.controlNamespace(ns);
     requireValidRosName(description.control.givenControlNamespace(ns), "robot '" + name + "' robotNamespace");
   }
@@ -190,20 +248,8 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
           throw std::invalid_argument("robot '" + name + "': robotNamespace '" + other->controlNamespace() +
                                       "' already holds the controller manager of robot '" + other->name() +
                                       "'; give each robot its own namespace (spawn_model -robot_namespace)");
-      Robot& robot = world_->spawn(std::move(description), name, pose, ns, joints);
-      std::unique_ptr<ModelPlugins> plugins;
-      try
-      {
-        plugins = load_model_plugins_(*this, robot);
-      }
-      catch (const std::exception&)
-      {
-        // A name ROS refuses (a sensor topic, the namespace): refuse the whole robot, as no half of it can run.
-        world_->remove(name);
-        throw;
-      }
-      robots_[name] = std::move(plugins);
-      robots_[name]->updateSubscriptions();
+      Robot& robot = world_->spawn(std::move(description), name, model_pose, ns, joints);
+      loadModelPlugins(robot);
       message = "spawned '" + name + "'" + (robot.controllerManager() ? " with a controller manager in " + robot.controlNamespace() : "");
       ROS_INFO_STREAM(message);
       return true;
@@ -215,6 +261,41 @@ bool RosPlant::spawn(const std::string& name, const std::string& urdf, const std
       return false;
     }
   });
+}
+
+void RosPlant::loadModelPlugins(Robot& robot)
+{
+  const std::string name = robot.name();
+  std::unique_ptr<ModelPlugins> plugins;
+  try
+  {
+    plugins = load_model_plugins_(*this, robot);
+  }
+  catch (const std::exception&)
+  {
+    // A name ROS refuses (a sensor topic, the namespace): refuse the whole robot, as no half of it can run.
+    world_->remove(name);
+    throw;
+  }
+  robots_[name] = std::move(plugins);
+  robots_[name]->updateSubscriptions();
+}
+
+void RosPlant::loadWorldModels()
+{
+  std::vector<std::string> names;
+  for (Robot* robot : world_->robots())
+    names.push_back(robot->name());
+  for (const std::string& name : names)
+    try
+    {
+      loadModelPlugins(*world_->robot(name));
+      ROS_INFO("world model '%s' loaded", name.c_str());
+    }
+    catch (const std::exception& e)
+    {
+      ROS_ERROR("world model '%s' is left out: %s", name.c_str(), e.what());
+    }
 }
 
 bool RosPlant::remove(const std::string& name, std::string& message)

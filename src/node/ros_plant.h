@@ -1,7 +1,8 @@
 // The plant as a ROS node, as gzserver hosts gazebo_ros: the world, the simulation loop and its
 // pacing, /clock, pausing, resetting, spawning and removing. What runs around it attaches as
 // Gazebo's plugins do, through events: each robot's model plugins (RobotInterface: gazebo_ros_control
-// and the sensor plugins) are loaded when it spawns and updated after every step; system plugins
+// and the sensor plugins) are loaded when it spawns, or at start for the world file's models, and
+// updated after every step; system plugins
 // (GazeboRosApiPlugin) connect to the end of each step. main.cpp wires them. ROS callbacks never
 // touch the world: they queue work that the simulation thread runs between steps, and wait for its
 // result when they must answer.
@@ -21,6 +22,7 @@
 #include <ros/ros.h>
 
 #include "bullet_plant/rate_gate.h"
+#include "bullet_plant/sdf_model.h"
 #include "bullet_plant/world.h"
 
 namespace bullet_plant
@@ -74,11 +76,17 @@ public:
   double realTimeFactor() const { return real_time_factor_; }
   void setRealTimeFactor(double factor);
   // From a ROS callback (they wait on the simulation thread): false with the reason in `message`.
-  bool spawn(const std::string& name, const std::string& urdf, const std::string& ns, const urdf::Pose& pose,
+  // `model_xml`: URDF or SDF (readSpawnedModel), named `name` whatever it calls itself; `pose` places
+  // its model frame as gazebo_ros does (SDF: the model's own <pose> taken relative to it).
+  bool spawn(const std::string& name, const std::string& model_xml, const std::string& ns, const urdf::Pose& pose,
              const std::map<std::string, double>& joints, std::string& message);
   bool remove(const std::string& name, std::string& message);
 
 private:
+  // The world file's models, which the World spawned as it was made: their model plugins, as spawn's.
+  void loadWorldModels();
+  // A robot just added: its model plugins; throws (the robot taken out again) when they cannot load.
+  void loadModelPlugins(Robot& robot);
   void runQueuedWork();
   void stepAndPublish();
   void publishClock(bool force = false);
@@ -106,6 +114,13 @@ private:
   ros::WallTime last_status_;
   int64_t status_start_sim_ns_ = 0;
 };
+
+// What spawn_urdf_model and spawn_sdf_model are given, as gazebo_ros takes it: URDF (<robot>), an SDF
+// model (<sdf><model>), or gazebo_ros's model database request (<sdf><world><include><uri>model://NAME,
+// what spawn_model -database sends), found in GAZEBO_MODEL_PATH and the packages' gazebo_model_path
+// exports as the world file's includes are; the include's <pose> (none: the identity, as gazebo_ros
+// writes one) is the model's pose. Throws DescriptionError naming what is wrong.
+ModelDescription readSpawnedModel(const std::string& model_xml);
 
 template <class Result>
 Result RosPlant::onSimThread(std::function<Result()> work)

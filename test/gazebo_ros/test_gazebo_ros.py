@@ -125,7 +125,8 @@ def test_spawn_and_delete_with_gazebo_ros_messages(ros, paused_plant, urdf_file)
     assert out['bad_frame'] == [False, 'SpawnModel: reference reference_frame not found, did you forget to scope '
                                        'the link by model name?']
     assert out['not_urdf'] == 'call failed', 'spawn_urdf_model fails the call for what is not URDF, as gazebo_ros'
-    assert out['sdf'][0] is False and 'URDF models only' in out['sdf'][1] and "'box'" in out['sdf'][1]
+    # spawn_sdf_model takes SDF (test_spawn_sdf.py); one the plant refuses answers the parser's message
+    assert out['sdf'] == [False, "SpawnModel: Failure - model 'box' has no <link>: a model that moves needs one"]
     assert out['sdf_takes_urdf'] == [True, 'SpawnModel: Successfully spawned entity']
     assert out['delete'] == [True, 'DeleteModel: successfully deleted model']
     assert out['delete_again'] == [False, 'DeleteModel: model does not exist']
@@ -165,7 +166,8 @@ def test_spawn_model_sets_joints_unpauses_and_reports_like_gazebo_ros(ros, urdf_
     assert again.returncode == 1
     assert 'SpawnModel: Failure - entity already exists.' in again.stdout + again.stderr
     sdf = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-sdf', '-database', 'coke_can', '-model', 'can'], timeout=60)
-    assert sdf.returncode == 1 and 'URDF models only' in sdf.stdout + sdf.stderr
+    # no coke_can on the model path: the status names the include and where it was looked for
+    assert sdf.returncode == 1 and 'model://coke_can' in sdf.stdout and 'GAZEBO_MODEL_PATH' in sdf.stdout
     usage = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-param', 'robot_description', '-model', 'x'], timeout=60)
     assert usage.returncode == 1 and '-urdf or -sdf' in usage.stdout + usage.stderr
 
