@@ -30,7 +30,9 @@ struct Contact
 class World
 {
 public:
-  explicit World(const WorldDescription& description = emptyWorldDescription());
+  // `sink`: where the world's messages go from its first on (the models of the description it
+  // spawns while built say theirs); without one, stderr until log().setSink.
+  explicit World(const WorldDescription& description = emptyWorldDescription(), LogSink sink = nullptr);
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;

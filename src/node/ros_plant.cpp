@@ -160,11 +160,9 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   std::string world_file;
   private_nh_.param<std::string>("world_name", world_file, "");
   WorldDescription description = world_file.empty() ? emptyWorldDescription() : parseWorldFile(world_file);
-  world_.reset(new World(description));
-  // Camera frames render while the following steps run and are published when done, stamped
-  // with their own time: the simulation does not stall on a frame.
-  world_->setFramesAhead(true);
-  world_->log().setSink([](LogLevel level, const std::string& m) {
+  // rosout from the world's first message on: what it says while it is built (models refused or
+  // spawned from the world file) is the node's too.
+  world_.reset(new World(description, [](LogLevel level, const std::string& m) {
     switch (level)
     {
       case LogLevel::Debug: ROS_DEBUG_STREAM(m); break;
@@ -172,7 +170,10 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
       case LogLevel::Warn: ROS_WARN_STREAM(m); break;
       case LogLevel::Error: ROS_ERROR_STREAM(m); break;
     }
-  });
+  }));
+  // Camera frames render while the following steps run and are published when done, stamped
+  // with their own time: the simulation does not stall on a frame.
+  world_->setFramesAhead(true);
   loadWorldModels();
   real_time_factor_ = readRealTimeFactor(private_nh_, description.real_time_factor);
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.

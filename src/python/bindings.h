@@ -108,22 +108,18 @@ auto onManager(F f)
 // A World plus the messages its log produced, kept for Python to read.
 struct PyWorld
 {
-  explicit PyWorld(const WorldDescription& d) : world(new World(d))
+  explicit PyWorld(const WorldDescription& d)
   {
-    world->log().setSink([this](LogLevel level, const std::string& m) {
+    // The sink from the world's first message on: what it says while it is built (its description's
+    // warnings, the models it refused or spawned) is in messages() too.
+    world.reset(new World(d, [this](LogLevel level, const std::string& m) {
       std::lock_guard<std::mutex> lock(mutex);
       messages.emplace_back(levelName(level), m);
       if (messages.size() > 10000)
         messages.pop_front();
       if (echo && level >= LogLevel::Warn)
         std::cerr << "[" << levelName(level) << "] " << m << std::endl;
-    });
-    // The world logged its description's warnings and errors (models refused) while it was built,
-    // before this sink existed.
-    for (const std::string& warning : d.warnings)
-      messages.emplace_back(levelName(LogLevel::Warn), "world: " + warning);
-    for (const std::string& error : d.errors)
-      messages.emplace_back(levelName(LogLevel::Error), "world: " + error);
+    }));
   }
   ~PyWorld()
   {

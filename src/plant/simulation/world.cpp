@@ -106,9 +106,11 @@ std::string World::Internals::collisionNameOf(const btCollisionObject* object, i
   return nameOf(object);
 }
 
-World::World(const WorldDescription& description) : in_(new Internals)
+World::World(const WorldDescription& description, LogSink sink) : in_(new Internals)
 {
   Internals& w = *in_;
+  if (sink)
+    w.log.setSink(std::move(sink));
   w.description = description;
   w.step_s = description.max_step_size;
   w.step_ns = static_cast<int64_t>(std::llround(description.max_step_size * 1e9));
