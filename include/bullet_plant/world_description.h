@@ -55,6 +55,10 @@ struct WorldDescription
   std::string name = "default";
   double max_step_size = 0.001;      // s, within [kMinStepSize, kMaxStepSize]
   double real_time_factor = 1.0;
+  // <physics><real_time_update_rate>: the steps per wall second Gazebo's loop paces itself to (0: as
+  // fast as it can). Gazebo paces by it, not by <real_time_factor>: the pace is their product's.
+  double real_time_update_rate = 1000.0;
+  double pace() const { return real_time_update_rate > 0 ? real_time_update_rate * max_step_size : 0.0; }
   // <physics><ode><constraints><contact_max_correcting_vel>: the fastest a contact corrects a
   // penetration, m/s (Gazebo's default).
   double contact_max_correcting_vel = 100.0;

@@ -22,7 +22,7 @@ int main(int argc, char** argv)
           "  ~world_name           world file (SDF) to load, as a path or as Gazebo finds it (worlds/empty.world);\n"
           "                        empty for an empty world\n"
           "  ~real_time_factor     simulated seconds per wall second (>= 0.001; 0 or less: as fast as possible);\n"
-          "                        default: the world's <real_time_factor>\n"
+          "                        default: the world's <real_time_update_rate> x <max_step_size>, as Gazebo paces\n"
           "  ~pub_clock_frequency  /clock rate in Hz (default 100)\n"
           "  ~paused               start paused (default false)\n"
           "Services and topics: gazebo_ros's (~spawn_urdf_model, ~get_model_state, ~model_states, ...; docs/gazebo_compatibility.md)\n");

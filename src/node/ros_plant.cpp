@@ -175,7 +175,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   // with their own time: the simulation does not stall on a frame.
   world_->setFramesAhead(true);
   loadWorldModels();
-  real_time_factor_ = readRealTimeFactor(private_nh_, description.real_time_factor);
+  real_time_factor_ = readRealTimeFactor(private_nh_, description.pace());
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.
   double clock_rate = 100.0;
   private_nh_.param("pub_clock_frequency", clock_rate, clock_rate);

@@ -142,6 +142,9 @@ void init_world(py::module_& m)
       })
       .def_property_readonly("time_step", [](PyWorld& w) { return w.world->timeStep(); })
       .def_property_readonly("real_time_factor", [](PyWorld& w) { return w.world->description().real_time_factor; })
+      .def_property_readonly("pace", [](PyWorld& w) { return w.world->description().pace(); },
+                             "simulated seconds per wall second Gazebo keeps this world at: <real_time_update_rate> x "
+                             "<max_step_size> (0: as fast as possible)")
       .def_property_readonly("time", [](PyWorld& w) { return w.world->time(); })
       .def_property_readonly("steps", [](PyWorld& w) { return w.world->steps(); })
       .def("spawn", [](PyWorld& w, const std::string& urdf, const std::string& name, std::vector<double> pose,

@@ -10,7 +10,7 @@ import re
 
 import pytest
 
-from plant_helpers import logged
+from plant_helpers import logged, yaw_of
 from suite_paths import REPOSITORY
 from tianracer_description import bullet_plant
 
@@ -304,3 +304,33 @@ def test_node_resolves_a_launched_worlds_uris_against_its_file(ros, tmp_path):
                    30, 'the plant node')
     not_found = [line for line in node.log().splitlines() if 'not found' in line]
     assert len(not_found) == 1 and 'rocks::link::lost' in not_found[0], node.log()
+
+
+def test_a_saved_worlds_state_starts_its_models_where_the_state_puts_them():
+    """gzclient's Save World writes each model's pose twice: its <model><pose> as loaded and the
+    <state> block's, which Gazebo applies (World::SetState)."""
+    box = """<link name="link"><collision name="collision"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link>"""
+    world = bullet_plant.World.from_sdf(f"""<sdf version="1.6"><world name="saved">
+<model name="crate"><pose>0 0 0.1 0 0 0</pose>{box}</model>
+<model name="still"><pose>5 0 0.1 0 0 0</pose>{box}</model>
+<state world_name="saved"><sim_time>12 0</sim_time>
+  <model name="crate"><pose>1 2 0.1 0 0 1.5</pose><link name="link"><pose>1 2 0.1 0 0 1.5</pose></link></model>
+</state></world></sdf>""")
+    world.echo = False
+    assert world.robot('crate').base_pose()[:3] == pytest.approx([1, 2, 0.1])
+    assert yaw_of(world.robot('crate').base_pose()) == pytest.approx(1.5)
+    assert world.robot('still').base_pose()[:3] == pytest.approx([5, 0, 0.1]), 'not in the state: where the file put it'
+    assert not [m for level, m in world.messages() if '<state>' in m], 'a one-link model says nothing of its link poses'
+    world.step(100)
+    world.reset_world()
+    assert world.robot('crate').base_pose()[:3] == pytest.approx([1, 2, 0.1], abs=1e-6), 'reset_world: the state pose'
+
+
+def test_real_time_update_rate_is_the_pace_gazebo_keeps():
+    fast = bullet_plant.World.from_sdf("""<sdf version="1.6"><world name="w"><physics type="ode">
+<max_step_size>0.002</max_step_size><real_time_update_rate>250</real_time_update_rate></physics></world></sdf>""")
+    assert fast.pace == pytest.approx(0.5)
+    assert bullet_plant.World().pace == pytest.approx(1.0)
+    with pytest.raises(bullet_plant.DescriptionError, match='real_time_update_rate'):
+        bullet_plant.World.from_sdf("""<sdf version="1.6"><world name="w"><physics type="ode">
+<real_time_update_rate>-5</real_time_update_rate></physics></world></sdf>""")

@@ -275,6 +275,39 @@ LightDescription readLocalLight(const tinyxml2::XMLElement* light, bool spot, Wo
   return out;
 }
 
+// A saved world's <state> (gzclient's "Save World" writes one): each model it names that the world
+// simulates starts at the state's <pose>, as Gazebo's World::SetState puts it. What the plant does
+// not take from it is said once: link poses (joint positions), scenery moved, insertions, deletions.
+void applyState(const tinyxml2::XMLElement* state, const Source& source, WorldDescription& world)
+{
+  std::vector<std::string> left_out;
+  for (auto* m = state->FirstChildElement("model"); m; m = m->NextSiblingElement("model"))
+  {
+    const std::string name = m->Attribute("name") ? m->Attribute("name") : "";
+    auto model = std::find_if(world.models.begin(), world.models.end(),
+                              [&](const ModelDescription& d) { return d.name == name; });
+    if (model == world.models.end())
+      continue;  // scenery (static) or not in the world: where the file put it
+    if (m->FirstChildElement("pose"))
+      model->pose = xml::parseSdfPose(xml::childText(m, "pose", ""));
+    // A model without movable joints has its links where its pose puts them.
+    bool movable = false;
+    for (const auto& joint : model->robot.model->joints_)
+      movable = movable || joint.second->type != urdf::Joint::FIXED;
+    if (m->FirstChildElement("link") && movable)
+      left_out.push_back("the link poses of '" + name + "'");
+  }
+  for (const char* tag : {"insertions", "deletions"})
+    if (state->FirstChildElement(tag))
+      left_out.push_back(std::string("<") + tag + ">");
+  std::string text;
+  for (const std::string& what : left_out)
+    text += (text.empty() ? "" : ", ") + what;
+  if (!text.empty())
+    world.warnings.push_back("<state> in " + source.describe() + ": the models start at its poses; " + text +
+                             " are not applied (the models' joints start at their files' positions)");
+}
+
 // World elements that put things into the scene which the plant does not build.
 bool isUnsupportedWorldElement(const std::string& tag)
 {
@@ -298,6 +331,10 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
   {
     world.max_step_size = xml::childDouble(physics, "max_step_size", world.max_step_size);
     world.real_time_factor = xml::childDouble(physics, "real_time_factor", world.real_time_factor);
+    world.real_time_update_rate = xml::childDouble(physics, "real_time_update_rate", world.real_time_update_rate);
+    if (!(world.real_time_update_rate >= 0 && std::isfinite(world.real_time_update_rate)))
+      throw DescriptionError("<physics><real_time_update_rate> " + formatNumber(world.real_time_update_rate) +
+                             " must be a finite rate >= 0 Hz (0: as fast as possible; Gazebo's default: 1000)");
     world.contact_max_correcting_vel =
         xml::childDouble(physics, "ode/constraints/contact_max_correcting_vel", world.contact_max_correcting_vel);
     if (!(world.contact_max_correcting_vel >= 0 && std::isfinite(world.contact_max_correcting_vel)))
@@ -381,6 +418,8 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     else if (isUnsupportedWorldElement(tag))
       world.warnings.push_back("<" + tag + "> in " + source.describe() + " is not supported; skipped");
   }
+  if (const tinyxml2::XMLElement* state = w->FirstChildElement("state"))
+    applyState(state, source, world);
   bool has_plane = false;
   for (const StaticCollision& c : world.collisions)
     has_plane = has_plane || c.shape.kind == Shape::Kind::Plane;
