@@ -80,6 +80,7 @@ bench: build
 		$$([ "$$(id -u)" -eq 0 ] || echo sudo) $(PYTHON) -m pip install -q --root-user-action=ignore --break-system-packages mujoco pybullet; }
 	@$(ROS_ENV) $(PYTHON) bench/plant_vs_peers.py
 	@$(ROS_ENV) $(PYTHON) bench/sensor_bench.py
+	@$(ROS_ENV) $(PYTHON) bench/box_pile_vs_mujoco.py
 
 demo: build
 	@$(ROS_ENV) $(PYTHON) tools/demo.py

@@ -30,6 +30,22 @@ struct StaticVisual
   Rgba colour;        // <material><diffuse> (or <ambient>)
 };
 
+// A <light> of type point or spot: what cameras are lit by besides the sun (the world's directional
+// light, light_direction below), as Gazebo's renderer (OGRE) lights them: diffuse colour times the
+// cosine of the incidence, times 1 / (constant + linear d + quadratic d^2) within `range` metres,
+// times a spot's cone factor.
+struct LightDescription
+{
+  std::string name;
+  bool spot = false;
+  urdf::Vector3 position{0, 0, 0};    // in the world
+  urdf::Vector3 direction{0, 0, -1};  // a spot's axis, in the world (unit)
+  Rgba diffuse{1.0f, 1.0f, 1.0f, 1.0f};
+  // SDF's defaults (<attenuation>, <spot>)
+  double range = 10.0, constant = 1.0, linear = 1.0, quadratic = 0.0;
+  double inner_angle = 0.0, outer_angle = 0.0, falloff = 0.0;  // rad, full cone angles
+};
+
 // The physics step's range: below a nanosecond the step rounds to zero simulated nanoseconds and
 // time never advances; beyond 0.1 s nothing the plant simulates stays stable.
 constexpr double kMinStepSize = 1e-9, kMaxStepSize = 0.1;  // s
@@ -49,6 +65,7 @@ struct WorldDescription
   Rgba background{0.70f, 0.80f, 0.95f, 1.0f};
   double ambient = 0.35;
   bool shadows = true;  // <scene><shadows>: the sun's shadows in camera images (SDF's default)
+  std::vector<LightDescription> lights;  // point and spot lights, in file order
   std::vector<StaticCollision> collisions;
   std::vector<StaticVisual> visuals;
   // The models that move (SDF's default; not <static>), in file order: the world spawns each as

@@ -136,7 +136,23 @@ void readModel(const tinyxml2::XMLElement* model, const Source& source, const Pl
   }
 }
 
-// A model that moves, read as spawn_model reads one, or refused with the reason (the world goes on).
+// A static model with a <sensor> or a <plugin> (gazebo_plugins' test worlds hold their cameras so)
+// is a model of the world that never moves, not scenery: its sensors and plugins run.
+bool hasSensorOrPlugin(const tinyxml2::XMLElement* model)
+{
+  if (model->FirstChildElement("plugin"))
+    return true;
+  for (auto* link = model->FirstChildElement("link"); link; link = link->NextSiblingElement("link"))
+    if (link->FirstChildElement("sensor"))
+      return true;
+  for (auto* nested = model->FirstChildElement("model"); nested; nested = nested->NextSiblingElement("model"))
+    if (hasSensorOrPlugin(nested))
+      return true;
+  return false;
+}
+
+// A model that moves (or a static one with sensors or plugins), read as spawn_model reads one, or
+// refused with the reason (the world goes on).
 void addMovingModel(const tinyxml2::XMLElement* model, const Source& source, const Placement& placement, int depth,
                     WorldDescription& world)
 {
@@ -145,7 +161,7 @@ void addMovingModel(const tinyxml2::XMLElement* model, const Source& source, con
     ModelDescription moving = sdf::readModel(model, source, depth);
     moving.name = placement.name;
     moving.pose = placement.pose;
-    moving.robot.is_static = false;
+    moving.robot.is_static = placement.is_static;
     for (const ModelDescription& other : world.models)
       if (other.name == moving.name)
         throw DescriptionError("a model named '" + moving.name + "' is already in the world; model names must be unique");
@@ -200,10 +216,54 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
   placement.pose = include->FirstChildElement("pose") ? pose
                                                       : compose(pose, xml::parseSdfPose(xml::childText(model, "pose", "")));
   placement.is_static = sdf::isTrue(xml::childText(include, "static", xml::childText(model, "static", "false")));
-  if (scope.empty() && !placement.is_static)
+  if (scope.empty() && (!placement.is_static || hasSensorOrPlugin(model)))
     addMovingModel(model, model_source, placement, depth, world);
   else
     readModel(model, model_source, placement, depth, world);
+}
+
+// A point or spot <light>: its pose in the world, SDF's defaults where absent. A value that is not
+// a number stops the load (xml::numbers); one that lights nothing (a negative range) is warned about.
+LightDescription readLocalLight(const tinyxml2::XMLElement* light, bool spot, WorldDescription& world)
+{
+  LightDescription out;
+  out.name = light->Attribute("name") ? light->Attribute("name") : "";
+  out.spot = spot;
+  const std::string where = "light '" + out.name + "'";
+  const urdf::Pose pose = xml::parseSdfPose(xml::childText(light, "pose", ""));
+  out.position = pose.position;
+  const std::vector<double> d = xml::numbers(xml::childText(light, "direction", "0 0 -1"), 3, where + " <direction>");
+  const urdf::Vector3 direction = rotate(pose.rotation, urdf::Vector3(d[0], d[1], d[2]));
+  const double norm = std::sqrt(direction.x * direction.x + direction.y * direction.y + direction.z * direction.z);
+  if (norm > 0 && std::isfinite(norm))
+    out.direction = scaled(direction, 1.0 / norm);
+  const std::string diffuse = xml::childText(light, "diffuse", "");
+  if (!diffuse.empty())
+  {
+    const std::vector<double> c = colourNumbers(diffuse, where + " <diffuse>");
+    out.diffuse = {float(c[0]), float(c[1]), float(c[2]), 1.0f};
+  }
+  out.range = xml::childDouble(light, "attenuation/range", out.range);
+  out.constant = xml::childDouble(light, "attenuation/constant", out.constant);
+  out.linear = xml::childDouble(light, "attenuation/linear", out.linear);
+  out.quadratic = xml::childDouble(light, "attenuation/quadratic", out.quadratic);
+  out.inner_angle = xml::childDouble(light, "spot/inner_angle", out.inner_angle);
+  out.outer_angle = xml::childDouble(light, "spot/outer_angle", out.outer_angle);
+  out.falloff = xml::childDouble(light, "spot/falloff", out.falloff);
+  for (double v : {out.position.x, out.position.y, out.position.z, out.range, out.constant, out.linear, out.quadratic,
+                   out.inner_angle, out.outer_angle, out.falloff})
+    if (!std::isfinite(v))
+      throw DescriptionError(where + ": its pose, <attenuation> and <spot> must be finite numbers");
+  if (out.range <= 0 || out.constant < 0 || out.linear < 0 || out.quadratic < 0 ||
+      out.constant + out.linear + out.quadratic <= 0)
+    world.warnings.push_back(where + ": <attenuation> range " + formatNumber(out.range) + ", constant " +
+                             formatNumber(out.constant) + ", linear " + formatNumber(out.linear) + ", quadratic " +
+                             formatNumber(out.quadratic) + " lights nothing (give a positive range and factors >= 0, "
+                             "not all 0); left dark");
+  if (out.range <= 0 || out.constant < 0 || out.linear < 0 || out.quadratic < 0 ||
+      out.constant + out.linear + out.quadratic <= 0)
+    out.range = 0;  // cameras leave it out
+  return out;
 }
 
 // World elements that put things into the scene which the plant does not build.
@@ -261,11 +321,20 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     }
   }
   for (auto* light = w->FirstChildElement("light"); light; light = light->NextSiblingElement("light"))
-    if (light->Attribute("type") && std::string(light->Attribute("type")) == "directional")
+  {
+    const std::string type = light->Attribute("type") ? light->Attribute("type") : "point";
+    if (type == "directional")
     {
       std::vector<double> d = xml::numbers(xml::childText(light, "direction", "-0.5 0.1 -0.9"), 3, "<light><direction>");
       world.light_direction = urdf::Vector3(d[0], d[1], d[2]);
     }
+    else if (type == "point" || type == "spot")
+      world.lights.push_back(readLocalLight(light, type == "spot", world));
+    else
+      world.warnings.push_back("light '" + std::string(light->Attribute("name") ? light->Attribute("name") : "") +
+                               "' in " + source.describe() + " is of type '" + type +
+                               "' (point, spot, directional are); left out");
+  }
   if (const tinyxml2::XMLElement* scene = w->FirstChildElement("scene"))
   {
     const std::string background = xml::childText(scene, "background", "");
@@ -291,7 +360,7 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
       placement.name = e->Attribute("name") ? e->Attribute("name") : "model";
       placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
       placement.is_static = sdf::isTrue(xml::childText(e, "static", "false"));
-      if (placement.is_static)
+      if (placement.is_static && !hasSensorOrPlugin(e))
         readModel(e, source, placement, 0, world);
       else
         addMovingModel(e, source, placement, 0, world);

@@ -19,8 +19,11 @@ namespace
 // normals. The face the camera sees is lit by the directional light over the ambient term. The
 // depth along the optical axis and the shadow maps' coordinates are affine in the position, so
 // their perspective-correct interpolation is exact.
-// The camera program's shaders, after "#version 300 es" and the defines STATIC_SHADOWS and
-// MOVING_SHADOWS (0 or 1): a frame without shadows pays nothing for them.
+// Point and spot lights are worked out per pixel (a lamp over a floor of two triangles lights a
+// patch no vertex sees), in the fragment shader, from the world position and the normal on the
+// side the camera sees.
+// The camera program's shaders, after "#version 300 es" and the defines STATIC_SHADOWS,
+// MOVING_SHADOWS and LOCAL_LIGHTS (0 or 1): a frame without shadows or lamps pays nothing for them.
 const char* const kVertexShader = R"(
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
@@ -44,6 +47,10 @@ out vec3 static_shadow_coordinates;
 uniform mat4 moving_shadow_from_world;
 out vec3 moving_shadow_coordinates;
 #endif
+#if LOCAL_LIGHTS
+out vec3 world_position;
+out vec3 seen_normal;  // the world normal on the side the camera sees (zero for a degenerate one)
+#endif
 void main()
 {
   vec4 world = world_from_body * vec4(position, 1.0);
@@ -58,6 +65,10 @@ void main()
 #endif
 #if MOVING_SHADOWS
   moving_shadow_coordinates = (moving_shadow_from_world * world).xyz;
+#endif
+#if LOCAL_LIGHTS
+  world_position = world.xyz;
+  seen_normal = length_n > 0.0 ? facing * world_normal / length_n : vec3(0.0);
 #endif
   texture_uv = uv;
   face_colour = colour;
@@ -87,6 +98,51 @@ uniform sampler2DShadow static_shadow;
 in vec3 moving_shadow_coordinates;
 uniform sampler2DShadow moving_shadow;
 #endif
+#if LOCAL_LIGHTS
+in vec3 world_position;
+in vec3 seen_normal;
+uniform int light_count;
+uniform vec3 light_position[8];
+uniform vec3 light_colour[8];
+uniform vec3 light_direction[8];    // a spot's axis; zero for a point light
+uniform vec4 light_attenuation[8];  // range, constant, linear, quadratic
+uniform vec3 light_spot[8];         // cos(inner / 2), cos(outer / 2), falloff
+// OGRE's per-pixel point and spot light: diffuse * (n . l) / (constant + linear d + quadratic d^2)
+// within range, times a spot's ((rho - cos(outer/2)) / (cos(inner/2) - cos(outer/2)))^falloff.
+vec3 localLight()
+{
+  vec3 sum = vec3(0.0);
+  float length_n = length(seen_normal);
+  if (length_n == 0.0)
+    return sum;
+  vec3 n = seen_normal / length_n;
+  for (int i = 0; i < light_count; ++i)
+  {
+    vec3 to_light = light_position[i] - world_position;
+    float d = length(to_light);
+    vec4 a = light_attenuation[i];
+    if (d > a.x || d == 0.0)
+      continue;
+    vec3 l = to_light / d;
+    float lambert = max(0.0, dot(n, l));
+    float spot = 1.0;
+    if (dot(light_direction[i], light_direction[i]) > 0.0)
+    {
+      float rho = dot(-l, light_direction[i]);
+      float inner = light_spot[i].x, outer = light_spot[i].y;
+      if (rho < outer)
+        spot = 0.0;
+      else if (inner > outer)
+      {
+        spot = clamp((rho - outer) / (inner - outer), 0.0, 1.0);
+        spot = light_spot[i].z > 0.0 ? pow(spot, light_spot[i].z) : 1.0;
+      }
+    }
+    sum += light_colour[i] * (lambert * spot / (a.y + a.z * d + a.w * d * d));
+  }
+  return sum;
+}
+#endif
 layout(location = 0) out vec4 colour;
 layout(location = 1) out float depth;
 float lightThrough(sampler2DShadow map, vec3 at)
@@ -111,7 +167,11 @@ void main()
 #endif
   // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
   vec3 base = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)).rgb : face_colour.rgb;
+#if LOCAL_LIGHTS
+  colour = vec4(base * (ambient + diffuse * light + localLight()), 1.0);
+#else
   colour = vec4(base * (ambient + diffuse * light), 1.0);
+#endif
   depth = depth_along_axis;
 }
 )";
@@ -394,11 +454,12 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
   }
   try
   {
-    for (int variant = 0; variant < 4; ++variant)
+    for (int variant = 0; variant < kCameraPrograms; ++variant)
     {
       CameraProgram& p = camera_programs_[variant];
       const std::string defines = std::string("#version 300 es\n#define STATIC_SHADOWS ") + char('0' + (variant & 1)) +
-                                  "\n#define MOVING_SHADOWS " + char('0' + (variant >> 1)) + "\n";
+                                  "\n#define MOVING_SHADOWS " + char('0' + ((variant >> 1) & 1)) +
+                                  "\n#define LOCAL_LIGHTS " + char('0' + (variant >> 2)) + "\n";
       p.program = link(defines + kVertexShader, defines + kFragmentShader);
       for (const auto& u : {std::make_pair(&p.clip_from_body, "clip_from_body"),
                             std::make_pair(&p.world_from_body, "world_from_body"),
@@ -409,7 +470,13 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
                             std::make_pair(&p.static_shadow_from_world, "static_shadow_from_world"),
                             std::make_pair(&p.moving_shadow_from_world, "moving_shadow_from_world"),
                             std::make_pair(&p.static_shadow, "static_shadow"),
-                            std::make_pair(&p.moving_shadow, "moving_shadow")})
+                            std::make_pair(&p.moving_shadow, "moving_shadow"),
+                            std::make_pair(&p.light_count, "light_count"),
+                            std::make_pair(&p.light_position, "light_position"),
+                            std::make_pair(&p.light_colour, "light_colour"),
+                            std::make_pair(&p.light_direction, "light_direction"),
+                            std::make_pair(&p.light_attenuation, "light_attenuation"),
+                            std::make_pair(&p.light_spot, "light_spot")})
         *u.first = glGetUniformLocation(p.program, u.second);
     }
     shadow_program_ = link(kShadowVertexShader, kShadowFragmentShader);
@@ -504,9 +571,17 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   glEnableVertexAttribArray(3);
   glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(10 * sizeof(float)));
   glBindVertexArray(0);
-  meshes_.push_back(mesh);
+  // A freed slot is taken again (a world that spawns and deletes models all day keeps its size).
+  auto slot = std::find_if(meshes_.begin(), meshes_.end(), [](const Mesh& m) { return !m.vertex_array; });
+  if (slot == meshes_.end())
+    slot = meshes_.insert(slot, mesh);
+  else
+  {
+    mesh.generation = slot->generation + 1;
+    *slot = std::move(mesh);
+  }
   context_.release();
-  return int(meshes_.size()) - 1;
+  return int(slot - meshes_.begin());
 }
 
 void GlRenderer::removeMesh(int mesh)
@@ -518,7 +593,9 @@ void GlRenderer::removeMesh(int mesh)
   glDeleteVertexArrays(1, &m.vertex_array);
   glDeleteBuffers(1, &m.buffer);
   context_.release();
+  const unsigned generation = m.generation;
   m = Mesh();
+  m.generation = generation;
 }
 
 // Gazebo's sampling (rendering/RenderEngine.cc: five mipmap levels, OGRE's TFO_ANISOTROPIC at its
@@ -754,13 +831,16 @@ const GlRenderer::Target& GlRenderer::target(int width, int height)
 void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, const PinholeCamera& camera,
                         const Lighting& lighting, PinholeImage& out)
 {
-  // A frame in flight on a worker may name a mesh removed since its snapshot: it is left out (its
-  // bounds would spoil the shadow map's fit).
+  // A frame in flight on a worker may name a mesh removed since its snapshot (its slot empty, or
+  // holding a mesh added since): it is left out (its bounds would spoil the shadow map's fit).
   std::vector<Draw> draws;
   draws.reserve(snapshot.size());
   for (const Draw& d : snapshot)
-    if (meshes_.at(size_t(d.mesh)).vertex_array)
+  {
+    const Mesh& mesh = meshes_.at(size_t(d.mesh));
+    if (mesh.vertex_array && mesh.generation == d.generation)
       draws.push_back(d);
+  }
   context_.makeCurrent();
   if (lighting.shadows)
     drawShadowMaps(draws, lighting);
@@ -783,8 +863,29 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
   glClearBufferfv(GL_DEPTH, 0, &farthest);
   const bool static_shadows = lighting.shadows && static_shadow_.used;
   const bool moving_shadows = lighting.shadows && moving_shadow_.used;
-  const CameraProgram& program = camera_programs_[int(static_shadows) + 2 * int(moving_shadows)];
+  const bool local_lights = !lighting.local.empty();
+  const CameraProgram& program = camera_programs_[int(static_shadows) + 2 * int(moving_shadows) + 4 * int(local_lights)];
   glUseProgram(program.program);
+  if (local_lights)
+  {
+    const GLsizei n = GLsizei(std::min(lighting.local.size(), Lighting::kMaxLocalLights));
+    std::vector<float> position, colour, direction, attenuation, spot;
+    for (GLsizei i = 0; i < n; ++i)
+    {
+      const Lighting::LocalLight& light = lighting.local[size_t(i)];
+      position.insert(position.end(), light.position, light.position + 3);
+      colour.insert(colour.end(), light.colour, light.colour + 3);
+      direction.insert(direction.end(), light.direction, light.direction + 3);
+      attenuation.insert(attenuation.end(), light.attenuation, light.attenuation + 4);
+      spot.insert(spot.end(), light.spot, light.spot + 3);
+    }
+    glUniform1i(program.light_count, n);
+    glUniform3fv(program.light_position, n, position.data());
+    glUniform3fv(program.light_colour, n, colour.data());
+    glUniform3fv(program.light_direction, n, direction.data());
+    glUniform4fv(program.light_attenuation, n, attenuation.data());
+    glUniform3fv(program.light_spot, n, spot.data());
+  }
   const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
   glUniform3f(program.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
   glUniform3fv(program.camera_forward, 1, forward);

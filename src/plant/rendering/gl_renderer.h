@@ -1,7 +1,8 @@
 // Pinhole frames (pinhole.h) by OpenGL ES 3 rasterization on a GlContext (gl_context.h), into an
 // off-screen framebuffer: cameras rendered the way Gazebo renders them. Triangles are uploaded once
 // per mesh and drawn with a pose per frame. Shading: ambient + (1 - ambient) * max(0, n . towards_light)
-// on the face the camera sees, times the colour (flat on flat faces, the surface's normal on curved ones);
+// on the face the camera sees, plus the point and spot lights' share per pixel (pinhole.h's
+// Lighting::LocalLight), times the colour (flat on flat faces, the surface's normal on curved ones);
 // depth is the distance along the optical axis, written by the fragment shader into a float
 // attachment (exact where a depth buffer is not), +inf where nothing is drawn within the clip range.
 #pragma once
@@ -54,9 +55,12 @@ public:
 
   // Uploads a mesh once; its handle for draws.
   int addMesh(const GlTriangles& triangles);
-  // Frees a mesh's GL storage (its robot was deleted). Its handle is not reused: a draw of it, from a
-  // frame snapshotted before, draws nothing.
+  // Frees a mesh's GL storage (its robot was deleted). Its slot is taken by a later addMesh; a draw of
+  // it from a frame snapshotted before draws nothing (meshGeneration tells the two apart).
   void removeMesh(int mesh);
+  // Which of the meshes its slot held `mesh` is: slots are taken again once freed, so a draw made
+  // before a removal (a frame in flight) tells its mesh from the slot's next one.
+  unsigned meshGeneration(int mesh) const { return meshes_.at(size_t(mesh)).generation; }
 
   struct Draw
   {
@@ -64,6 +68,7 @@ public:
     Frame world_from_body;
     bool moves = true;         // false: where it was last frame (the static shadow map is kept)
     bool casts_shadow = true;  // false: only receives shadows (a ground plane)
+    unsigned generation = 0;   // the mesh's (meshGeneration) when the draw was made
   };
   // The frame of `camera` at `pose` (x forward, y left, z up; the optical frame is z forward, x
   // right, y down): rgb8 rounded by the GL, then the camera's noise (noisyRgbFromRgba); depth in
@@ -85,6 +90,7 @@ private:
     int vertex_count = 0;
     std::vector<Run> runs;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};  // bounds, body frame
+    unsigned generation = 0;  // how many meshes this slot has held: a draw of an earlier one is stale
   };
   struct ShadowMap  // depth from the light, compared on lookup (sampler2DShadow)
   {
@@ -117,8 +123,10 @@ private:
     unsigned program = 0;
     int clip_from_body, world_from_body, textured, image, camera_origin, camera_forward, towards_light, ambient;
     int static_shadow_from_world, moving_shadow_from_world, static_shadow, moving_shadow;  // -1: not in it
+    int light_count, light_position, light_colour, light_direction, light_attenuation, light_spot;
   };
-  CameraProgram camera_programs_[4];  // [static shadows + 2 * moving shadows]
+  static constexpr int kCameraPrograms = 8;
+  CameraProgram camera_programs_[kCameraPrograms];  // [static shadows + 2 * moving shadows + 4 * local lights]
   unsigned shadow_program_ = 0;
   int light_clip_from_body_ = -1;  // the shadow program's
   ShadowMap static_shadow_, moving_shadow_;

@@ -1,5 +1,7 @@
 #include "rendering/gl_scene.h"
 
+#include <algorithm>
+
 namespace bullet_plant
 {
 GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes, Planes planes)
@@ -49,18 +51,26 @@ int GlScene::addBody(const void* owner, const std::vector<RayPrimitive>& shapes)
 {
   const GlTriangles body = camerasView(shapes, Planes::Included);
   std::lock_guard<std::mutex> lock(gl_);
-  bodies_.push_back(Body{owner, body.xyz.empty() ? -1 : renderer_.addMesh(body), Frame(), true, true});
-  return int(bodies_.size()) - 1;
+  const Body added{owner, body.xyz.empty() ? -1 : renderer_.addMesh(body), Frame(), true, true};
+  // A removed body's slot is taken again: a world that spawns and deletes models all day keeps its size.
+  auto slot = std::find_if(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.moves && !b.owner; });
+  if (slot == bodies_.end())
+    slot = bodies_.insert(slot, added);
+  else
+    *slot = added;
+  return int(slot - bodies_.begin());
 }
 
 void GlScene::removeOwner(const void* owner)
 {
   std::lock_guard<std::mutex> lock(gl_);  // a worker may be drawing
   for (Body& b : bodies_)
-    if (b.owner == owner && owner && b.mesh >= 0)
+    if (b.owner == owner && owner)
     {
-      renderer_.removeMesh(b.mesh);
+      if (b.mesh >= 0)
+        renderer_.removeMesh(b.mesh);
       b.mesh = -1;
+      b.owner = nullptr;  // the slot is free
     }
 }
 
@@ -71,7 +81,7 @@ std::vector<GlRenderer::Draw> GlScene::snapshot(const void* hidden) const
   std::vector<GlRenderer::Draw> draws;
   for (const Body& b : bodies_)
     if (b.mesh >= 0 && !(hidden && b.owner == hidden))
-      draws.push_back(GlRenderer::Draw{b.mesh, b.pose, b.moves, b.casts_shadow});
+      draws.push_back(GlRenderer::Draw{b.mesh, b.pose, b.moves, b.casts_shadow, renderer_.meshGeneration(b.mesh)});
   return draws;
 }
 

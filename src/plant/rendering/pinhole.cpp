@@ -8,9 +8,32 @@
 
 namespace bullet_plant
 {
-Lighting Lighting::of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows)
+Lighting Lighting::of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows,
+                      const std::vector<LightDescription>& lights)
 {
   Lighting l;
+  for (const LightDescription& light : lights)
+  {
+    if (light.range <= 0 || l.local.size() == kMaxLocalLights)
+      continue;
+    LocalLight local;
+    const double position[3] = {light.position.x, light.position.y, light.position.z};
+    const double direction[3] = {light.direction.x, light.direction.y, light.direction.z};
+    const float colour[3] = {light.diffuse.r, light.diffuse.g, light.diffuse.b};
+    for (int i = 0; i < 3; ++i)
+    {
+      local.position[i] = float(position[i]);
+      local.colour[i] = colour[i];
+      local.direction[i] = light.spot ? float(direction[i]) : 0.0f;
+    }
+    const double attenuation[4] = {light.range, light.constant, light.linear, light.quadratic};
+    for (int i = 0; i < 4; ++i)
+      local.attenuation[i] = float(attenuation[i]);
+    local.spot[0] = float(std::cos(light.inner_angle / 2));
+    local.spot[1] = float(std::cos(light.outer_angle / 2));
+    local.spot[2] = float(light.falloff);
+    l.local.push_back(local);
+  }
   l.shadows = shadows;
   const double towards[3] = {-light_direction.x, -light_direction.y, -light_direction.z};
   const double n = std::sqrt(towards[0] * towards[0] + towards[1] * towards[1] + towards[2] * towards[2]);

@@ -1,5 +1,5 @@
 // What a camera renders, whoever renders it: a pinhole (image size, focal lengths and centre,
-// clip range), one directional light over an ambient term, the frame it gives (colour bytes and
+// clip range), one directional light and point and spot lights over an ambient term, the frame it gives (colour bytes and
 // depths), and the camera's noise on the colour.
 #pragma once
 
@@ -11,6 +11,7 @@
 #include <urdf_model/pose.h>
 
 #include "bullet_plant/geometry.h"  // Rgba
+#include "bullet_plant/world_description.h"  // LightDescription
 
 namespace bullet_plant
 {
@@ -22,7 +23,20 @@ struct Lighting
   double ambient = 0.35;
   float background[3] = {0.70f, 0.80f, 0.95f};
   bool shadows = true;  // the light's shadows (<scene><shadows>, true by default as in Gazebo)
-  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows);
+  // Point and spot lights (world_description.h's LightDescription), lit per pixel; they cast no shadows.
+  struct LocalLight
+  {
+    float position[3];
+    float colour[3];
+    float direction[3];    // a spot's axis (unit); zero for a point light
+    float attenuation[4];  // range, constant, linear, quadratic
+    float spot[3];         // cos(inner / 2), cos(outer / 2), falloff
+  };
+  // OGRE's default limit of lights on one object, as Gazebo renders: the first ones in the file.
+  static constexpr size_t kMaxLocalLights = 8;
+  std::vector<LocalLight> local;
+  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows,
+                     const std::vector<LightDescription>& lights = {});
 };
 
 // A pinhole camera's frame: its pixels (centres at integer coordinates u right, v down from the

@@ -195,6 +195,9 @@ World::World(const WorldDescription& description) : in_(new Internals)
     w.log.warn("world: " + warning);
   for (const std::string& error : description.errors)
     w.log.error("world: " + error);
+  if (description.lights.size() > Lighting::kMaxLocalLights)
+    w.log.warn("world: " + std::to_string(description.lights.size()) + " point and spot lights; cameras are lit by the "
+               "first " + std::to_string(Lighting::kMaxLocalLights) + " (OGRE's limit on one object, which Gazebo renders with)");
   // The models that move, as spawn_model would add them; one the plant refuses leaves the rest.
   for (const ModelDescription& model : description.models)
     try
@@ -506,7 +509,8 @@ void World::Internals::collectFrames()
 
 Lighting World::Internals::lighting() const
 {
-  return Lighting::of(description.light_direction, description.ambient, description.background, description.shadows);
+  return Lighting::of(description.light_direction, description.ambient, description.background, description.shadows,
+                      description.lights);
 }
 
 std::vector<Contact> World::contacts() const
