@@ -1,5 +1,8 @@
 #include "physics/dynamics_world.h"
 
+#include <algorithm>
+
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
@@ -127,12 +130,24 @@ void DynamicsWorld::updateAabbs()
   }
 }
 
+// The threshold btCollisionDispatcher::getNewManifold gives a pair: with its default
+// CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD, gContactBreakingThreshold times the smaller shape's
+// size (getAngularMotionDisc): about 0.05 mm for the car's wheels, not 1 mm.
+btScalar DynamicsWorld::pairThreshold(const btPersistentManifold& manifold) const
+{
+  const auto* dispatcher = static_cast<const btCollisionDispatcher*>(m_dispatcher1);
+  if (!(dispatcher->getDispatcherFlags() & btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD))
+    return gContactBreakingThreshold;
+  return std::min(manifold.getBody0()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold),
+                  manifold.getBody1()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold));
+}
+
 void DynamicsWorld::setManifoldThresholds()
 {
   for (int i = 0; i < m_dispatcher1->getNumManifolds(); ++i)
   {
     btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(i);
-    btScalar threshold = gContactBreakingThreshold;
+    btScalar threshold = pairThreshold(*manifold);
     if (manifold->getNumContacts() == 0)
       threshold += reachOf(*manifold->getBody0()) + reachOf(*manifold->getBody1());
     manifold->setContactBreakingThreshold(threshold);
