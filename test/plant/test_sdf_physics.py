@@ -1,7 +1,8 @@
 """SDF models that move, checked against the physics they stand for: a pendulum's period, a block on
 an incline (sticking below atan(mu), sliding at g (sin - mu cos) above), a prismatic joint's limit, a
-box dropped on the ground landing flat and resting, a stack of boxes standing. Models are SDF text
-spawned into the plant's default world (ground plane at z = 0, 1 ms steps, g = 9.8)."""
+box dropped on the ground landing flat and resting, a stack of boxes standing, a ball's <bounce> (to
+e^2 h, Gazebo's smaller-of-two restitution and threshold). Models are SDF text spawned into the
+plant's default world (ground plane at z = 0, 1 ms steps, g = 9.8) or an SDF world of their own."""
 import math
 
 import numpy as np
@@ -154,3 +155,60 @@ def test_a_stack_of_ten_boxes_stands_for_a_minute():
         assert math.hypot(p[0], p[1]) < 0.02, (k, p)
         assert p[2] == pytest.approx(0.1 + 0.2 * k, abs=0.01), (k, p)
         assert tilt(p) < 2.0, (k, p)
+
+
+def ball_world(ground_bounce, ball_bounce, drop):
+    """A static ground model with a <plane> and the given <bounce> (restitution, threshold or None),
+    and a 0.1 m ball (a robot named 'ball') with its own, its lowest point `drop` m above the ground."""
+    def surface(bounce):
+        if bounce is None:
+            return ''
+        e, threshold = bounce
+        return (f'<surface><bounce><restitution_coefficient>{e}</restitution_coefficient>'
+                f'<threshold>{threshold}</threshold></bounce></surface>')
+    radius = 0.05
+    world = f"""<?xml version="1.0"?><sdf version="1.7"><world name="w">
+<model name="ground"><static>true</static><link name="link"><collision name="c">
+  <geometry><plane><normal>0 0 1</normal><size>10 10</size></plane></geometry>{surface(ground_bounce)}</collision></link></model>
+<model name="ball"><pose>0 0 {radius + drop} 0 0 0</pose><link name="link">{inertial(0.1, 0.4 * 0.1 * radius ** 2)}
+  <collision name="c"><geometry><sphere><radius>{radius}</radius></sphere></geometry>{surface(ball_bounce)}</collision></link></model>
+</world></sdf>"""
+    w = bp.World.from_sdf(world)
+    return w, w.robot('ball'), radius
+
+
+def rebound_height(w, ball, radius, steps=900):
+    """How high the ball's lowest point rises after it first lands (m)."""
+    highest, landed, falling = 0.0, False, True
+    for _ in range(steps):
+        w.step(1)
+        z = ball.base_pose()[2] - radius
+        vz = ball.base_twist()[0][2]
+        landed = landed or z < 2e-3
+        if landed:
+            falling = falling and vz < 0
+            highest = max(highest, z) if not falling else highest
+    assert landed
+    return highest
+
+
+@pytest.mark.parametrize('ball_e', [0.5, 0.8])
+def test_a_ball_rebounds_to_e_squared_h_with_the_smaller_restitution_of_the_two_surfaces(ball_e):
+    # Gazebo's ODE (ODEPhysics::Collide) bounces a contact at the smaller of the two restitutions,
+    # above the smaller of the two thresholds. 1 m at 4.4 m/s, the ground's e 0.6.
+    drop, ground_e = 1.0, 0.6
+    w, ball, radius = ball_world((ground_e, 0.1), (ball_e, 0.1), drop)
+    e = min(ground_e, ball_e)
+    assert rebound_height(w, ball, radius) == pytest.approx(e * e * drop, rel=0.03)
+
+
+def test_a_ball_does_not_bounce_below_the_threshold_nor_off_a_surface_without_bounce():
+    drop = 1.0  # it lands at 4.4 m/s
+    for ground, ball_bounce in [((0.6, 1e5), (0.8, 5.0)),  # the smaller threshold, 5 m/s, is not reached
+                                (None, (0.8, 0.1))]:        # the ground has no <bounce>: restitution 0
+        w, ball, radius = ball_world(ground, ball_bounce, drop)
+        assert rebound_height(w, ball, radius) < 2e-3, (ground, ball_bounce)
+    # while a threshold of the ground's below the ball's lets it bounce (the smaller of the two)
+    w, ball, radius = ball_world((0.6, 0.1), (0.8, 5.0), drop)
+    assert rebound_height(w, ball, radius) == pytest.approx(0.36 * drop, rel=0.03)
+

@@ -41,9 +41,15 @@ bool neverMoves(const btCollisionObject& object)
 
 DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, DenseRowSolver* solver,
                              btCollisionConfiguration* configuration)
-  : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration)
+  : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration), solver_(solver)
 {
   solver->useStates(this);
+}
+
+void DynamicsWorld::removeCollisionObject(btCollisionObject* object)
+{
+  solver_->forgetBounce(object);
+  btMultiBodyDynamicsWorld::removeCollisionObject(object);
 }
 
 DynamicsWorld::StepState& DynamicsWorld::stepState(btMultiBody& body)

@@ -50,6 +50,8 @@ public:
   // manifold's threshold, so on a mesh a falling body is still found inside it.
   void updateAabbs() override;
   void performDiscreteCollisionDetection() override;
+  // The solver forgets what it keeps of the object (its bounce threshold).
+  void removeCollisionObject(btCollisionObject* object) override;
 
   const MultibodyState* stateOf(btMultiBody& body) override;
   void needArticulatedPass(btMultiBody& body) override;
@@ -76,6 +78,7 @@ private:
   void setManifoldThresholds();
   btScalar pairThreshold(const btPersistentManifold& manifold) const;
 
+  DenseRowSolver* solver_;
   std::vector<StepState> states_;  // this step's first states_used_ are current
   std::vector<btScalar> reach_;
   std::vector<btVector3> link_omega_, link_velocity_;

@@ -324,6 +324,8 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
                           " is not a friction coefficient; it is taken as 0");
         body.mu = 0;
       }
+      body.restitution = std::max(0.0, surface->second.restitution);
+      body.restitution_threshold = surface->second.restitution_threshold;
     }
   }
 
@@ -521,7 +523,7 @@ void addColliders(Robot::Internals& r)
     btMultiBodyLinkCollider* col = r.multibody.colliders.back().get();
     col->setCollisionShape(body.shape);
     col->setFriction(btScalar(body.mu));
-    col->setRestitution(0);
+    r.world->solver->setBounce(*col, btScalar(body.restitution), btScalar(body.restitution_threshold));
     col->setWorldTransform(r.multibody.bodyWorldTransform(int(bi)));
     correctInternalEdges(*col);
     r.world->dynamics->addCollisionObject(col, btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);
