@@ -1,8 +1,9 @@
 """SDF models that move, checked against the physics they stand for: a pendulum's period, a block on
 an incline (sticking below atan(mu), sliding at g (sin - mu cos) above), a prismatic joint's limit, a
 box dropped on the ground landing flat and resting, a stack of boxes standing, a ball's <bounce> (to
-e^2 h, Gazebo's smaller-of-two restitution and threshold). Models are SDF text spawned into the
-plant's default world (ground plane at z = 0, 1 ms steps, g = 9.8) or an SDF world of their own."""
+e^2 h, Gazebo's smaller-of-two restitution and threshold), a joint's <spring_stiffness> (at
+sqrt(k / I), and stable when stiff). Models are SDF text spawned into the plant's default world
+(ground plane at z = 0, 1 ms steps, g = 9.8) or an SDF world of their own."""
 import math
 
 import numpy as np
@@ -212,3 +213,42 @@ def test_a_ball_does_not_bounce_below_the_threshold_nor_off_a_surface_without_bo
     w, ball, radius = ball_world((0.6, 0.1), (0.8, 5.0), drop)
     assert rebound_height(w, ball, radius) == pytest.approx(0.36 * drop, rel=0.03)
 
+
+def torsion_pendulum(stiffness, inertia, reference):
+    """A rotor on a vertical revolute joint to the world with a <spring_stiffness>, starting at q = 0
+    against its spring's reference."""
+    w = bp.World()
+    model = sdf(f"""
+<link name="rotor"><pose>0 0 1 0 0 0</pose>{inertial(1.0, inertia)}</link>
+<joint name="spin" type="revolute"><parent>world</parent><child>rotor</child><axis><xyz>0 0 1</xyz>
+  <limit><lower>-1e16</lower><upper>1e16</upper></limit>
+  <dynamics><spring_stiffness>{stiffness}</spring_stiffness><spring_reference>{reference}</spring_reference></dynamics>
+</axis></joint>""", 'rotor')
+    return w, w.spawn(model, 'rotor', [0, 0, 0, 0, 0, 0])
+
+
+def test_a_joint_spring_oscillates_at_root_k_over_i():
+    stiffness, inertia, reference = 4.0, 0.01, 0.2  # omega 20 rad/s, period 0.314 s
+    w, rotor = torsion_pendulum(stiffness, inertia, reference)
+    t, q = [], []
+    for _ in range(2000):
+        w.step(1)
+        t.append(w.time)
+        q.append(rotor.joint_state('spin')[0])
+    assert max(q) - min(q) == pytest.approx(2 * reference, rel=0.02)  # about the reference, undamped
+    periods = np.diff(crossings(np.array(t), q))
+    omega = 2 * math.pi / np.mean(periods)
+    assert omega == pytest.approx(math.sqrt(stiffness / inertia), rel=0.01), periods
+
+
+def test_a_stiff_joint_spring_stays_stable_and_settles_at_its_reference():
+    # k dt^2 = 10 I: an explicit spring torque would multiply the swing by ~10 a step.
+    stiffness, inertia, reference = 1e5, 0.01, 0.2
+    w, rotor = torsion_pendulum(stiffness, inertia, reference)
+    swing = 0.0
+    for _ in range(500):
+        w.step(1)
+        q, qd = rotor.joint_state('spin')[:2]
+        swing = max(swing, abs(q - reference))
+    assert swing <= reference + 1e-6
+    assert q == pytest.approx(reference, abs=1e-4) and abs(qd) < 1e-2
