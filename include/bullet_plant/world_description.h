@@ -19,6 +19,8 @@ struct StaticCollision
   Shape shape;
   urdf::Pose pose;    // in the world
   double mu = 1.0;    // Gazebo's default friction
+  // <surface><bounce>: restitution_coefficient, and the speed (m/s) it applies above (SDF's defaults)
+  double restitution = 0.0, restitution_threshold = 100000.0;
 };
 
 // What cameras (and gpu_ray lidars) see of a static model: one of its links' <visual>s.

@@ -79,8 +79,8 @@ void driveRigid(MovableJoint& j, double target_velocity, double dt)
   j.drive->drive(clampAbs(target_velocity, std::min(j.limits.velocity, kMaxJointSpeed)), kInf, j.limits.effort * dt);
 }
 
-// The joints' passive dynamics: damping (where no drive carries it), dry friction, limits; and the
-// explicit efforts of this step as joint torques.
+// The joints' passive dynamics: damping (where no drive carries it), springs, dry friction, limits;
+// and the explicit efforts of this step as joint torques.
 void passiveDynamics(std::vector<MovableJoint>& joints, btMultiBody& mb, double dt)
 {
   for (MovableJoint& j : joints)
@@ -96,6 +96,16 @@ void passiveDynamics(std::vector<MovableJoint>& joints, btMultiBody& mb, double 
     }
     else if (j.damper)
       j.damper->disable();
+    if (j.spring_stiffness > 0)
+    {
+      const double stretch = q - j.spring_reference;
+      // The row's impulse k dt^2 (-stretch / dt - qd') is dt times -k (q + qd' dt - reference): the
+      // spring at the end of the step.
+      if (j.spring)
+        j.spring->drive(-stretch / dt, j.spring_stiffness * dt * dt, kInf);
+      else
+        torque -= j.spring_stiffness * stretch;
+    }
     if (j.dry_friction)
       j.dry_friction->drive(0.0, kInf, j.friction * dt);
     if (j.limits.has_position)

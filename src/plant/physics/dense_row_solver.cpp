@@ -171,9 +171,31 @@ void DenseRowSolver::limitCorrectingVelocity(btPersistentManifold& manifold, con
   }
 }
 
+void DenseRowSolver::setBounce(btCollisionObject& object, btScalar restitution, btScalar threshold)
+{
+  object.setRestitution(restitution);
+  if (restitution > 0)
+    bounce_thresholds_[&object] = threshold;
+  else
+    bounce_thresholds_.erase(&object);
+}
+
+btScalar DenseRowSolver::bounceThreshold(const btPersistentManifold& manifold) const
+{
+  btScalar threshold = BT_LARGE_FLOAT;
+  for (const btCollisionObject* object : {manifold.getBody0(), manifold.getBody1()})
+  {
+    auto found = bounce_thresholds_.find(object);
+    if (found != bounce_thresholds_.end())
+      threshold = std::min(threshold, found->second);
+  }
+  return threshold;
+}
+
 // setupMultiBodyContactConstraint for a multibody on one side and the static world on the other.
 void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
-                                     btManifoldPoint& point, const btContactSolverInfo& info, bool friction)
+                                     btManifoldPoint& point, const btContactSolverInfo& info, bool friction,
+                                     btScalar bounce_threshold)
 {
   btMultiBodySolverConstraint& row = rows[index];
   const bool on_a = row.m_multiBodyA != nullptr;
@@ -224,22 +246,34 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
     relative_velocity += velocity[i] * jacobian[i];
   row.m_friction = point.m_combinedFriction;
 
-  btScalar distance = 0, restitution = 0;
+  btScalar distance = 0, bounce = 0;
   if (!friction)
   {
     distance = point.getDistance() + info.m_linearSlop;
-    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
-                                            info.m_restitutionVelocityThreshold), btScalar(0));
+    // ODE's bounce (its contact joint's getInfo2): the surfaces part at restitution times the speed
+    // they meet at, where that speed is above the threshold. A point still ahead (a speculative
+    // contact, DynamicsWorld) bounces only if the bodies reach it within the step; they part from
+    // where they touch then, not from the point's distance.
+    const btScalar approach = -relative_velocity;
+    if (point.m_combinedRestitution > 0 && approach > bounce_threshold && approach * info.m_timeStep > distance)
+      bounce = point.m_combinedRestitution * approach;
   }
   else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
   {
     distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
   }
-  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
+  btScalar positional_error = 0, velocity_error = -relative_velocity;
   if (!friction && distance > 0)
     velocity_error -= distance / info.m_timeStep;
   else
     positional_error = -distance * erp / info.m_timeStep;
+  if (bounce > 0)
+  {
+    // ODE again: the speed apart is the larger of the bounce and the depth's correction, not their
+    // sum (Bullet's), which would throw a body that landed deep higher than it fell.
+    positional_error = std::max(positional_error - bounce, btScalar(0));
+    velocity_error = bounce - relative_velocity;
+  }
   row.m_rhsPenetration = 0;
   row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
   row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
@@ -272,6 +306,7 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
     row.m_originalContactPoint = &point;
   };
   const bool two_directions = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
+  const btScalar bounce_threshold = bounce_thresholds_.empty() ? BT_LARGE_FLOAT : bounceThreshold(manifold);
   for (int j = 0; j < manifold.getNumContacts(); ++j)
   {
     btManifoldPoint& point = manifold.getContactPoint(j);
@@ -285,7 +320,8 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
     btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
     start(normal, point);
     normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
-    setupContactRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false);
+    setupContactRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
+                    bounce_threshold);
 
     btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
     point.m_lateralFrictionDir1.normalize();

@@ -23,6 +23,7 @@
 // torque had to be rebuilt from nothing by the iterations of every step.
 #pragma once
 
+#include <unordered_map>
 #include <vector>
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
@@ -57,6 +58,13 @@ public:
   // corrected (the world sets its SDF value). Without a cap a link spawned deep inside a static box
   // leaves it at depth * erp / dt (km/s for 2 cm at 1 ms).
   void setMaxCorrectingVelocity(btScalar v) { max_correcting_velocity_ = v; }
+  // SDF's <bounce> on a collision object: its restitution (Bullet's field, which the world combines
+  // as Gazebo does, the smaller of a pair's) and the speed it bounces above. Gazebo's ODE takes the
+  // smaller of a pair's speeds; Bullet keeps one for the world (m_restitutionVelocityThreshold),
+  // which its own rows (a multibody against another) go on using. The world forgets an object's
+  // speed as it removes the object (DynamicsWorld).
+  void setBounce(btCollisionObject& object, btScalar restitution, btScalar threshold);
+  void forgetBounce(const btCollisionObject* object) { bounce_thresholds_.erase(object); }
 
 protected:
   void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
@@ -129,7 +137,9 @@ private:
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
   void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
   void setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
-                       const btContactSolverInfo& info, bool friction);
+                       const btContactSolverInfo& info, bool friction, btScalar bounce_threshold = BT_LARGE_FLOAT);
+  // The speed a manifold's points bounce above: the smaller of its two objects' (setBounce).
+  btScalar bounceThreshold(const btPersistentManifold& manifold) const;
 
   bool denseApplies(const btContactSolverInfo& info) const;
   void collectRows();
@@ -145,6 +155,7 @@ private:
 
   MultibodyStates* states_ = nullptr;
   btScalar max_correcting_velocity_ = BT_LARGE_FLOAT;
+  std::unordered_map<const btCollisionObject*, btScalar> bounce_thresholds_;  // objects with a restitution
   std::vector<BodyRows> body_rows_;  // this solve's first bodies_used_ are current
   size_t bodies_used_ = 0;
   std::vector<DeferredRow> deferred_;

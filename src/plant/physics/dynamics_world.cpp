@@ -1,5 +1,10 @@
 #include "physics/dynamics_world.h"
 
+#include <algorithm>
+
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionShapes/btCollisionShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
@@ -36,9 +41,15 @@ bool neverMoves(const btCollisionObject& object)
 
 DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, DenseRowSolver* solver,
                              btCollisionConfiguration* configuration)
-  : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration)
+  : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration), solver_(solver)
 {
   solver->useStates(this);
+}
+
+void DynamicsWorld::removeCollisionObject(btCollisionObject* object)
+{
+  solver_->forgetBounce(object);
+  btMultiBodyDynamicsWorld::removeCollisionObject(object);
 }
 
 DynamicsWorld::StepState& DynamicsWorld::stepState(btMultiBody& body)
@@ -67,11 +78,98 @@ void DynamicsWorld::addCollisionObject(btCollisionObject* object, int group, int
     updateSingleAabb(object);
 }
 
+// Each awake multibody link's reach: (|v| + |omega| * r) * dt, r the radius of a sphere about the
+// link's frame that holds its shape, v and omega the link's velocities at the start of the step
+// (gravity adds g * dt^2 = 10 um at 1 ms, well within the breaking threshold on top).
+void DynamicsWorld::measureReach()
+{
+  reach_.assign(size_t(m_collisionObjects.size()), btScalar(0));
+  const btScalar dt = getSolverInfo().m_timeStep;
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+  {
+    btMultiBody* body = m_multiBodies[i];
+    if (sleeping(*body))
+      continue;
+    const int links = body->getNumLinks();
+    link_omega_.resize(size_t(links) + 1);
+    link_velocity_.resize(size_t(links) + 1);
+    body->compTreeLinkVelocities(link_omega_.data(), link_velocity_.data());  // index 0: the base
+    for (int link = -1; link < links; ++link)
+    {
+      btMultiBodyLinkCollider* collider = link < 0 ? body->getBaseCollider() : body->getLink(link).m_collider;
+      if (!collider || collider->getWorldArrayIndex() < 0)
+        continue;
+      btVector3 centre;
+      btScalar radius;
+      collider->getCollisionShape()->getBoundingSphere(centre, radius);
+      const size_t k = size_t(link + 1);
+      reach_[size_t(collider->getWorldArrayIndex())] =
+          (link_velocity_[k].length() + link_omega_[k].length() * (centre.length() + radius)) * dt;
+    }
+  }
+}
+
+btScalar DynamicsWorld::reachOf(const btCollisionObject& object) const
+{
+  const int index = object.getWorldArrayIndex();
+  return index >= 0 && size_t(index) < reach_.size() ? reach_[size_t(index)] : btScalar(0);
+}
+
 void DynamicsWorld::updateAabbs()
 {
+  measureReach();
   for (int i = 0; i < m_collisionObjects.size(); ++i)
-    if (!neverMoves(*m_collisionObjects[i]))
-      updateSingleAabb(m_collisionObjects[i]);
+  {
+    btCollisionObject* object = m_collisionObjects[i];
+    if (neverMoves(*object))
+      continue;
+    updateSingleAabb(object);
+    // Bullet's box is the shape's grown by the breaking threshold; one that may move further in a
+    // step than that is grown by twice its reach (see the header).
+    const btScalar reach = reachOf(*object);
+    btBroadphaseProxy* proxy = object->getBroadphaseHandle();
+    if (reach > gContactBreakingThreshold && proxy && object->getActivationState() != DISABLE_SIMULATION)
+    {
+      const btVector3 grow(2 * reach, 2 * reach, 2 * reach);
+      m_broadphasePairCache->setAabb(proxy, proxy->m_aabbMin - grow, proxy->m_aabbMax + grow, m_dispatcher1);
+    }
+  }
+}
+
+// The threshold btCollisionDispatcher::getNewManifold gives a pair: with its default
+// CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD, gContactBreakingThreshold times the smaller shape's
+// size (getAngularMotionDisc): about 0.05 mm for the car's wheels, not 1 mm.
+btScalar DynamicsWorld::pairThreshold(const btPersistentManifold& manifold) const
+{
+  const auto* dispatcher = static_cast<const btCollisionDispatcher*>(m_dispatcher1);
+  if (!(dispatcher->getDispatcherFlags() & btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD))
+    return gContactBreakingThreshold;
+  return std::min(manifold.getBody0()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold),
+                  manifold.getBody1()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold));
+}
+
+void DynamicsWorld::setManifoldThresholds()
+{
+  for (int i = 0; i < m_dispatcher1->getNumManifolds(); ++i)
+  {
+    btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(i);
+    btScalar threshold = pairThreshold(*manifold);
+    if (manifold->getNumContacts() == 0)
+      threshold += reachOf(*manifold->getBody0()) + reachOf(*manifold->getBody1());
+    manifold->setContactBreakingThreshold(threshold);
+  }
+}
+
+// btCollisionWorld::performDiscreteCollisionDetection with the manifolds' thresholds set between
+// the broad phase and the narrow phase.
+void DynamicsWorld::performDiscreteCollisionDetection()
+{
+  updateAabbs();
+  computeOverlappingPairs();
+  setManifoldThresholds();
+  if (m_dispatcher1)
+    m_dispatcher1->dispatchAllCollisionPairs(m_broadphasePairCache->getOverlappingPairCache(), getDispatchInfo(),
+                                             m_dispatcher1);
 }
 
 void DynamicsWorld::runArticulatedPass(StepState& step)

@@ -31,7 +31,27 @@ public:
   // the race circuit's 258 walls cost the car's step 7 us of 16.
   void addCollisionObject(btCollisionObject* object, int group = btBroadphaseProxy::DefaultFilter,
                           int mask = btBroadphaseProxy::AllFilter) override;
+  // Speculative contacts for bodies that arrive faster than the contact breaking threshold per
+  // step (gContactBreakingThreshold, 1 mm: a body dropped from 1 m moves 4.4 mm a step at 1 ms).
+  // Bullet's narrow phase reports points up to the manifold's threshold apart and the solver lets
+  // such a point close only by its distance in the step (DenseRowSolver, Bullet's own rows alike);
+  // with the 1 mm threshold a falling body was found 4 mm deep instead, and the penetration's
+  // correction (erp * depth / dt) threw it back up. So each moving link's box is grown by twice its
+  // reach (how far any of its points can move in a step), which makes the pair a step before the
+  // bodies can touch, and a manifold without points looks as far as its two bodies' reach. A
+  // manifold with points keeps the threshold Bullet's dispatcher gives the pair, relative to the
+  // smaller shape's size (0.05 mm for a wheel): a rolling wheel's points go stale as it turns. With
+  // 1 mm a wheel on a mesh kept several (10 points under the car's four wheels, each with its
+  // friction rows) and the car kept the yaw it landed with on test_track_world's Collada floor
+  // (4.1 deg for 14 s: into the side wall at 6.8 m, 9.09 m of the 10); with the pair's own threshold
+  // it straightens out (4.3 -> 2.5 deg in its first 2 m) and drives the 10 m.
+  // What this does not reach: a convex shape against a triangle mesh. Bullet's convex-concave
+  // algorithm collects the triangles within the mesh's margin of the shape's box, whatever the
+  // manifold's threshold, so on a mesh a falling body is still found inside it.
   void updateAabbs() override;
+  void performDiscreteCollisionDetection() override;
+  // The solver forgets what it keeps of the object (its bounce threshold).
+  void removeCollisionObject(btCollisionObject* object) override;
 
   const MultibodyState* stateOf(btMultiBody& body) override;
   void needArticulatedPass(btMultiBody& body) override;
@@ -51,7 +71,17 @@ private:
   // in the function).
   bool integrateVelocities(btMultiBody& body, btScalar dt);
 
+  // How far a collision object's points can move in this step (m), by its index in the world's
+  // objects; 0 for objects that do not move.
+  btScalar reachOf(const btCollisionObject& object) const;
+  void measureReach();
+  void setManifoldThresholds();
+  btScalar pairThreshold(const btPersistentManifold& manifold) const;
+
+  DenseRowSolver* solver_;
   std::vector<StepState> states_;  // this step's first states_used_ are current
+  std::vector<btScalar> reach_;
+  std::vector<btVector3> link_omega_, link_velocity_;
   size_t states_used_ = 0;
   std::vector<btScalar> accelerations_;
 };

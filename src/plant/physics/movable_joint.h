@@ -25,6 +25,9 @@ struct MovableJoint
   double damping = 0.0, friction = 0.0;
   std::unique_ptr<JointDrive> drive;           // the joint layer's motor / implicit PID
   std::unique_ptr<JointDrive> damper;          // URDF <dynamics damping> where an explicit torque would be unstable
+  // SDF's <dynamics><spring_stiffness>, <spring_reference>: an effort -stiffness * (q - reference).
+  double spring_stiffness = 0.0, spring_reference = 0.0;
+  std::unique_ptr<JointDrive> spring;          // the spring where an explicit effort would not do (robot_builder.cpp)
   std::unique_ptr<JointDrive> dry_friction;    // URDF <dynamics friction>
   std::unique_ptr<JointDrive> lower_limit, upper_limit;  // rows only while the joint is at a limit
   double axis_inertia = 0.0;                   // the child body's inertia about the joint axis

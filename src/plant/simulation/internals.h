@@ -16,6 +16,7 @@
 #include "bullet_plant/world.h"
 #include "bullet_plant/model_plugin.h"
 #include "hardware/joint_layer_sim.h"
+#include "physics/dense_row_solver.h"
 #include "hardware/model_joint_sim.h"
 #include "rendering/frame_worker.h"
 #include "rendering/ray_caster.h"
@@ -87,7 +88,7 @@ struct World::Internals
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btBroadphaseInterface> broadphase;
-  std::unique_ptr<btMultiBodyConstraintSolver> solver;
+  std::unique_ptr<DenseRowSolver> solver;
   std::unique_ptr<btMultiBodyDynamicsWorld> dynamics;
   std::vector<std::shared_ptr<btCollisionShape>> static_shapes;  // a static mesh's may be shared (collision_shapes.h)
   std::vector<std::unique_ptr<btCollisionObject>> static_objects;

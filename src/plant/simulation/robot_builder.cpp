@@ -72,6 +72,18 @@ JointInterface parseInterface(const std::string& name, bool& ok)
 // URDF damping as a plain torque -c*qd is stable while c*dt stays well below the inertia it acts on.
 bool explicitDampingStable(const MovableJoint& j, double dt) { return j.damping * dt < 0.5 * j.axis_inertia; }
 
+// A spring as a plain effort -k*(q - reference), integrated with the velocity before the position
+// (symplectic Euler), keeps its energy and runs at omega (1 + (omega dt)^2 / 24), omega^2 = k / I,
+// but is unstable from omega dt = 2. Held to k dt^2 < 0.1 I (omega dt < 0.32: 0.4 % fast), which
+// leaves a margin for the inertia the joint really moves (the child body's own is a lower bound
+// only while the rest of the robot is heavier). A stiffer spring is an implicit row, -k at the end
+// of the step: stable for any k, at the price of damping of its own and a lower frequency
+// (atan(omega dt) / dt), as ODE's implicit spring-damper (Gazebo's joint stops with erp and cfm).
+bool explicitSpringAccurate(const MovableJoint& j, double dt)
+{
+  return j.spring_stiffness * dt * dt < 0.1 * j.axis_inertia;
+}
+
 // 1. Bodies: each movable joint starts one; fixed joints fold their child into the parent body.
 std::vector<BodyPlan> planBodies(Robot::Internals& r, const urdf::LinkConstSharedPtr& root, LinkPlacement& placement)
 {
@@ -324,6 +336,8 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
                           " is not a friction coefficient; it is taken as 0");
         body.mu = 0;
       }
+      body.restitution = std::max(0.0, surface->second.restitution);
+      body.restitution_threshold = surface->second.restitution_threshold;
     }
   }
 
@@ -444,8 +458,8 @@ void limitUnlimitedEfforts(Robot::Internals& r)
                     formatNumber(limit) + (strongest > 0 ? " (the robot's largest)" : " (the plant's default)"));
 }
 
-// 5. Movable joints: limits, URDF dynamics, the drive the joint layer uses and the rows for
-// damping, dry friction and limits.
+// 5. Movable joints: limits, URDF dynamics, SDF springs, the drive the joint layer uses and the rows
+// for damping, springs, dry friction and limits.
 void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const std::vector<double>& axis_inertia,
                   const std::map<std::string, double>& initial_joints)
 {
@@ -487,6 +501,14 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
     add(j.drive);
     if (j.damping > 0 && !explicitDampingStable(j, r.world->step_s))
       add(j.damper);
+    auto spring = r.description.joint_springs.find(j.name);
+    if (spring != r.description.joint_springs.end())
+    {
+      j.spring_stiffness = spring->second.stiffness;
+      j.spring_reference = spring->second.reference;
+      if (j.spring_stiffness > 0 && !explicitSpringAccurate(j, r.world->step_s))
+        add(j.spring);
+    }
     if (j.friction > 0)
       add(j.dry_friction);
     if (j.limits.has_position)
@@ -521,7 +543,7 @@ void addColliders(Robot::Internals& r)
     btMultiBodyLinkCollider* col = r.multibody.colliders.back().get();
     col->setCollisionShape(body.shape);
     col->setFriction(btScalar(body.mu));
-    col->setRestitution(0);
+    r.world->solver->setBounce(*col, btScalar(body.restitution), btScalar(body.restitution_threshold));
     col->setWorldTransform(r.multibody.bodyWorldTransform(int(bi)));
     correctInternalEdges(*col);
     r.world->dynamics->addCollisionObject(col, btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);

@@ -77,7 +77,8 @@ void RobotMultibody::updateKinematics()
 void RobotMultibody::disableJointRows()
 {
   for (MovableJoint& j : joints)
-    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.dry_friction.get(), j.lower_limit.get(), j.upper_limit.get()})
+    for (JointDrive* c : {j.drive.get(), j.damper.get(), j.spring.get(), j.dry_friction.get(), j.lower_limit.get(),
+                          j.upper_limit.get()})
       if (c)
         c->disable();
 }

@@ -48,6 +48,7 @@ struct Body
   std::vector<std::string> collision_names;
   std::vector<RayPrimitive> ray_shapes;  // for sensors, in the COM frame: the collisions (lidars) and visuals (cameras)
   double mu = 1.0;
+  double restitution = 0.0, restitution_threshold = 100000.0;  // SDF's <bounce>, as SurfaceDescription
 
   // The name of the collision Bullet reports as `child` (a compound's child index); the only one
   // of a body with one collision; empty for an index that is none of them.

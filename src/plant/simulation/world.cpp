@@ -26,6 +26,12 @@ btScalar smallerFriction(const btCollisionObject* a, const btCollisionObject* b)
 {
   return std::min(a->getFriction(), b->getFriction());
 }
+// And their bounce (SDF's restitution_coefficient) as well (ODEPhysics::Collide): a body bounces
+// only off a surface that declares a <bounce> too.
+btScalar smallerRestitution(const btCollisionObject* a, const btCollisionObject* b)
+{
+  return std::min(a->getRestitution(), b->getRestitution());
+}
 // How deep a link may start inside another body before the spawn warns: resting contacts are
 // well under a millimetre deep.
 constexpr btScalar kDeepAtSpawn = 0.01;  // m
@@ -115,6 +121,7 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
   w.step_s = description.max_step_size;
   w.step_ns = static_cast<int64_t>(std::llround(description.max_step_size * 1e9));
   gCalculateCombinedFrictionCallback = &smallerFriction;
+  gCalculateCombinedRestitutionCallback = &smallerRestitution;
   // Contact points are kept while within this distance of where they were found. Bullet's 2 cm
   // default keeps up to four stale points under a rolling 3 cm wheel: slower and less accurate.
   gContactBreakingThreshold = btScalar(0.001);
@@ -170,7 +177,7 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
     object->setCollisionShape(w.static_shapes.back().get());
     object->setWorldTransform(toBullet(c.pose));
     object->setFriction(btScalar(c.mu));
-    object->setRestitution(0);
+    w.solver->setBounce(*object, btScalar(c.restitution), btScalar(c.restitution_threshold));
     correctInternalEdges(*object);
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
