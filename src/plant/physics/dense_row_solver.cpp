@@ -38,13 +38,9 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
 
 int DenseRowSolver::bodySlot(btMultiBody* body)
 {
-  if (!states_)
-    return -1;
   const int number = MultibodyStates::numberOf(*body);
-  if (number < 0 || number >= states_->multibodyCount())
+  if (number < 0 || size_t(number) >= slot_of_.size())  // no states_, or not numbered by them
     return -1;
-  if (slot_of_.size() < size_t(states_->multibodyCount()))
-    slot_of_.resize(states_->multibodyCount(), -1);
   int& known = slot_of_[number];
   if (known < 0)
   {
@@ -331,6 +327,7 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
   }
   for (size_t k = 0; k < bodies_used_; ++k)  // the last solve's slots (numbered as they were then)
     slot_of_[body_rows_[k].number] = -1;
+  slot_of_.resize(states_ ? states_->multibodyCount() : 0, -1);
   bodies_used_ = 0;
   deferred_.clear();
   for (int i = 0; i < numManifolds; ++i)
@@ -473,15 +470,14 @@ void DenseRowSolver::buildBlocks()
     g.offset = offset;
     g.block = block;
     g.stride = g.dense ? (g.size + kLanes - 1) / kLanes * kLanes : 0;
-    offset += g.stride;
+    offset += g.dense ? g.stride : g.size;
     block += g.stride * g.stride;
   }
   delassus_.assign(block, 0);
   row_velocity_.assign(offset, 0);
   members_.resize(offset);
   for (size_t k = 0; k < rows_.size(); ++k)
-    if (groups_[rows_[k].group].dense)
-      members_[groups_[rows_[k].group].offset + rows_[k].local] = int(k);
+    members_[groups_[rows_[k].group].offset + rows_[k].local] = int(k);
   if (any_sparse_)  // Bullet's setup may already have moved the velocities (warm starting)
   {
     const int n = m_data.m_deltaVelocities.size();

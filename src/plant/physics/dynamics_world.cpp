@@ -18,6 +18,10 @@ namespace
 {
 bool sleeping(const btMultiBody& body)
 {
+  // One that may not sleep is set ACTIVE_TAG by every step's updateActivationState, so its island
+  // never sleeps: no need to look at each of its colliders (the car has thirteen).
+  if (!body.getCanSleep())
+    return false;
   if (body.getBaseCollider() && body.getBaseCollider()->getActivationState() == ISLAND_SLEEPING)
     return true;
   for (int i = 0; i < body.getNumLinks(); ++i)
