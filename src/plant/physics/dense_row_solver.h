@@ -89,6 +89,7 @@ private:
   // Measured on bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second):
   // 5.27M, 5.35M, 6.02M and 6.45M instructions a step with caps of 16, 32, 64 and 128 rows, 8.02M
   // with none. 32 leaves the car (16 rows on the ground) room for its chassis' contacts too.
+  static constexpr int kMaxDenseRows = 32;
   typedef btScalar Lanes __attribute__((vector_size(kLanes * sizeof(btScalar)), aligned(sizeof(btScalar)), may_alias));
 
   // A row during the iterations: Bullet's numbers, copied from its constraint and back.
