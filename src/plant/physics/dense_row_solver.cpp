@@ -454,6 +454,9 @@ void DenseRowSolver::collectRows()
     row.group = group;
     row.local = groups_[group].size++;
   }
+  for (size_t k = 0; k < bodies_.size(); ++k)
+    if (bodies_[k]->getNumDofs() > 0)
+      groups_[group_of_root[root(int(k))]].articulated = true;
 }
 
 void DenseRowSolver::buildBlocks()
@@ -465,7 +468,7 @@ void DenseRowSolver::buildBlocks()
   any_sparse_ = false;
   for (Group& g : groups_)
   {
-    g.dense = g.size <= kMaxDenseRows;
+    g.dense = g.size <= (g.articulated ? kMaxDenseRows : kMaxDenseFreeRows);
     any_sparse_ |= !g.dense;
     g.offset = offset;
     g.block = block;

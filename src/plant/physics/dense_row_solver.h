@@ -83,13 +83,18 @@ private:
   // kLanes scalars side by side (GCC/Clang vector extension: one SSE register of floats); a
   // group's rows are padded to whole Lanes.
   static constexpr int kLanes = 4;
-  // The largest group solved on a dense block. A dense visit costs stride / kLanes vector
+  // The largest group solved on a dense block: where a multibody with joints has rows in it, and
+  // where all its multibodies are free bodies (0 links). A dense visit costs stride / kLanes vector
   // multiply-adds, a sparse one 2 (n_A + n_B) scalar ones (24 for two free boxes, 36 for the car's
-  // 18 dof against the ground) plus its indexing; the block costs stride^2 / 2 entries to build.
-  // Measured on bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second):
-  // 5.27M, 5.35M, 6.02M and 6.45M instructions a step with caps of 16, 32, 64 and 128 rows, 8.02M
-  // with none. 32 leaves the car (16 rows on the ground) room for its chassis' contacts too.
-  static constexpr int kMaxDenseRows = 32;
+  // 18 dof against the ground) plus its indexing; the block costs stride^2 / 2 entries to build, so
+  // the block pays longer where rows share many degrees of freedom. Measured on
+  // bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second): 5.27M, 5.35M, 6.02M
+  // and 6.45M instructions a step with caps of 16, 32, 64 and 128 rows, 8.02M with none. The car
+  // on a mesh floor has more than 32 rows (its wheels meet several triangles); at 64 its solve
+  // stays dense as before (test_track_world.py's rolling over a mesh's inner edges, a 1 mm bound,
+  // fails with its arithmetic regrouped).
+  static constexpr int kMaxDenseRows = 64;
+  static constexpr int kMaxDenseFreeRows = 32;
   typedef btScalar Lanes __attribute__((vector_size(kLanes * sizeof(btScalar)), aligned(sizeof(btScalar)), may_alias));
 
   // A row during the iterations: Bullet's numbers, copied from its constraint and back.
@@ -115,6 +120,7 @@ private:
     int offset = 0;  // into row_velocity_ and members_
     int block = 0;   // into delassus_
     bool dense = true;
+    bool articulated = false;  // a multibody with joints has rows in it
   };
   // A row whose response waits for the other rows of its multibody (finishDeferredRows).
   struct DeferredRow
