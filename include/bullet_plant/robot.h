@@ -89,6 +89,11 @@ public:
   void applyJointEffort(const std::string& joint, double effort, int64_t start_ns, int64_t duration_ns);
   void clearJointEfforts(const std::string& joint);
 
+  // At rest and taken out of the step until something wakes it (a moving body's touch, a wrench or
+  // effort, a new state or gravity), as ODE's auto-disable takes Gazebo's resting bodies out. Only
+  // a model with no controller manager, model plugins or sensors sleeps.
+  bool asleep() const;
+
   // gazebo_ros_control's e-stop: while on, efforts are 0 and velocity commands 0.
   void setEStop(bool on);
   bool eStop() const;

@@ -1,6 +1,8 @@
 // bullet_plant.Robot: joint handles, poses, the e-stop and the robot's controller manager.
 #include "bindings.h"
 
+#include <cmath>
+
 namespace bullet_plant
 {
 namespace python
@@ -114,6 +116,26 @@ py::class_<RobotRef> init_robot(py::module_& m)
            py::arg("angular") = std::vector<double>{0, 0, 0},
            "gazebo_ros's set_link_state: the whole robot moved rigidly so that `link` is at `pose` (x y z qx qy qz "
            "qw, world), every body moving with (linear, angular) (of the link's origin, world frame)")
+      .def("apply_link_wrench", onRobot([](Robot& r, const std::string& link, const std::vector<double>& force,
+                                           const std::vector<double>& torque, double start, double duration) {
+        if (force.size() != 3 || torque.size() != 3)
+          throw py::value_error("apply_link_wrench takes a force and a torque of three numbers each");
+        try
+        {
+          r.applyLinkWrench(link, urdf::Vector3(force[0], force[1], force[2]), urdf::Vector3(torque[0], torque[1], torque[2]),
+                            std::llround(start * 1e9), duration < 0 ? -1 : std::llround(duration * 1e9));
+        }
+        catch (const std::out_of_range& e)
+        {
+          throw py::key_error(e.what());
+        }
+      }), py::arg("link"), py::arg("force"), py::arg("torque") = std::vector<double>{0, 0, 0}, py::arg("start") = 0.0,
+           py::arg("duration") = -1.0,
+           "gazebo_ros's apply_body_wrench: force (at the link's centre of mass) and torque in world axes, added "
+           "every step from simulated time `start` (s) for `duration` (s; negative: until clear_link_wrenches)")
+      .def("clear_link_wrenches", onRobot([](Robot& r, const std::string& link) { r.clearLinkWrenches(link); }))
+      .def_property_readonly("asleep", onRobot([](Robot& r) { return r.asleep(); }),
+                             "at rest and left out of the step until touched, pushed or set (free models only)")
       .def_property("e_stop", onRobot([](Robot& r) { return r.eStop(); }), onRobot([](Robot& r, bool on) { r.setEStop(on); }))
       .def_property_readonly("recoveries", onRobot([](Robot& r) { return r.recoveries(); }))
       .def_property_readonly("disabled", onRobot([](Robot& r) { return r.disabled(); }), "taken out of the physics after diverging step after step")

@@ -146,6 +146,14 @@ void init_world(py::module_& m)
                              "simulated seconds per wall second Gazebo keeps this world at: <real_time_update_rate> x "
                              "<max_step_size> (0: as fast as possible)")
       .def_property_readonly("time", [](PyWorld& w) { return w.world->time(); })
+      .def_property("gravity", [](PyWorld& w) {
+        const urdf::Vector3 g = w.world->gravity();
+        return std::vector<double>{g.x, g.y, g.z};
+      }, [](PyWorld& w, const std::vector<double>& g) {
+        if (g.size() != 3)
+          throw py::value_error("gravity is three numbers (m/s^2, world frame)");
+        w.world->setGravity(urdf::Vector3(g[0], g[1], g[2]));
+      }, "m/s^2, world frame (gazebo's set_physics_properties); setting it wakes every model asleep")
       .def_property_readonly("steps", [](PyWorld& w) { return w.world->steps(); })
       .def("spawn", [](PyWorld& w, const std::string& urdf, const std::string& name, std::vector<double> pose,
                        const std::string& ns, std::map<std::string, double> joints) {

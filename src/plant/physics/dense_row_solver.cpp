@@ -38,16 +38,22 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
 
 int DenseRowSolver::bodySlot(btMultiBody* body)
 {
-  for (size_t k = 0; k < bodies_used_; ++k)
-    if (body_rows_[k].body == body)
-      return body_rows_[k].state ? int(k) : -1;
-  if (bodies_used_ == body_rows_.size())
-    body_rows_.emplace_back();
-  BodyRows& slot = body_rows_[bodies_used_++];
-  slot.body = body;
-  slot.state = states_ ? states_->stateOf(*body) : nullptr;
-  slot.rows.clear();
-  return slot.state ? int(bodies_used_ - 1) : -1;
+  const int number = MultibodyStates::numberOf(*body);
+  if (number < 0 || size_t(number) >= slot_of_.size())  // no states_, or not numbered by them
+    return -1;
+  int& known = slot_of_[number];
+  if (known < 0)
+  {
+    known = int(bodies_used_);
+    if (bodies_used_ == body_rows_.size())
+      body_rows_.emplace_back();
+    BodyRows& slot = body_rows_[bodies_used_++];
+    slot.body = body;
+    slot.number = number;
+    slot.state = states_->stateOf(*body);
+    slot.rows.clear();
+  }
+  return body_rows_[known].state ? known : -1;
 }
 
 void DenseRowSolver::needArticulatedPass(btMultiBody* body)
@@ -355,6 +361,9 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
     btMultiBodyConstraintSolver::convertContacts(manifolds, numManifolds, info);
     return;
   }
+  for (size_t k = 0; k < bodies_used_; ++k)  // the last solve's slots (numbered as they were then)
+    slot_of_[body_rows_[k].number] = -1;
+  slot_of_.resize(states_ ? states_->multibodyCount() : 0, -1);
   bodies_used_ = 0;
   deferred_.clear();
   for (int i = 0; i < numManifolds; ++i)
@@ -426,13 +435,17 @@ void DenseRowSolver::collectRows()
   rows_.clear();
   bodies_.clear();
   parent_.clear();
-  auto node = [this](btMultiBody* body) {
-    for (size_t k = 0; k < bodies_.size(); ++k)
-      if (bodies_[k] == body)
-        return int(k);
-    bodies_.push_back(body);
-    parent_.push_back(int(parent_.size()));
-    return int(bodies_.size() - 1);
+  // A multibody's rows all name the same offset of its degrees of freedom in m_deltaVelocities.
+  node_of_.assign(m_data.m_deltaVelocities.size(), -1);
+  auto node = [this](btMultiBody* body, int offset) {
+    int& k = node_of_[offset];
+    if (k < 0)
+    {
+      k = int(bodies_.size());
+      bodies_.push_back(body);
+      parent_.push_back(k);
+    }
+    return k;
   };
   auto root = [this](int k) {
     while (parent_[k] != k)
@@ -445,8 +458,8 @@ void DenseRowSolver::collectRows()
     for (int k = 0; k < rows->size(); ++k)
     {
       btMultiBodySolverConstraint& c = (*rows)[k];
-      const int a = c.m_multiBodyA ? node(c.m_multiBodyA) : -1;
-      const int b = c.m_multiBodyB ? node(c.m_multiBodyB) : -1;
+      const int a = c.m_multiBodyA ? node(c.m_multiBodyA, c.m_deltaVelAindex) : -1;
+      const int b = c.m_multiBodyB ? node(c.m_multiBodyB, c.m_deltaVelBindex) : -1;
       if (a >= 0 && b >= 0)
         parent_[root(a)] = root(b);
       Row row{};
@@ -477,19 +490,26 @@ void DenseRowSolver::collectRows()
     row.group = group;
     row.local = groups_[group].size++;
   }
+  for (size_t k = 0; k < bodies_.size(); ++k)
+    if (bodies_[k]->getNumDofs() > 0)
+      groups_[group_of_root[root(int(k))]].articulated = true;
 }
 
 void DenseRowSolver::buildBlocks()
 {
   // Each group's block and velocities are padded to a multiple of kLanes rows (zeros), so a
   // visit's update is whole Lanes.
+  // A group too large for a block keeps none (stride 0) and is iterated in Bullet's sparse form.
   int offset = 0, block = 0;
+  any_sparse_ = false;
   for (Group& g : groups_)
   {
+    g.dense = g.size <= (g.articulated ? kMaxDenseRows : kMaxDenseFreeRows);
+    any_sparse_ |= !g.dense;
     g.offset = offset;
     g.block = block;
-    g.stride = (g.size + kLanes - 1) / kLanes * kLanes;
-    offset += g.stride;
+    g.stride = g.dense ? (g.size + kLanes - 1) / kLanes * kLanes : 0;
+    offset += g.dense ? g.stride : g.size;
     block += g.stride * g.stride;
   }
   delassus_.assign(block, 0);
@@ -497,11 +517,23 @@ void DenseRowSolver::buildBlocks()
   members_.resize(offset);
   for (size_t k = 0; k < rows_.size(); ++k)
     members_[groups_[rows_[k].group].offset + rows_[k].local] = int(k);
+  if (any_sparse_)  // Bullet's setup may already have moved the velocities (warm starting)
+  {
+    const int n = m_data.m_deltaVelocities.size();
+    dof_velocity_.assign(n ? &m_data.m_deltaVelocities[0] : nullptr, n ? &m_data.m_deltaVelocities[0] + n : nullptr);
+  }
 
   for (Row& row : rows_)
   {
     const Group& g = groups_[row.group];
     const btMultiBodySolverConstraint& c = *row.constraint;
+    row.sparse = !g.dense;
+    if (row.sparse)
+    {
+      row.velocity = row.column = -1;
+      row.stride = 0;
+      continue;
+    }
     row.velocity = g.offset;
     row.column = g.block + row.local * g.stride;
     row.stride = g.stride;
@@ -538,7 +570,9 @@ btScalar DenseRowSolver::delassusEntry(int i, int j) const
 {
   const Row& a = rows_.at(i);
   const Row& b = rows_.at(j);
-  return a.group == b.group ? delassus_[a.column + b.local] : btScalar(0);
+  if (a.group != b.group)
+    return 0;
+  return a.sparse ? response(*a.constraint, *b.constraint, m_data) : delassus_[a.column + b.local];
 }
 
 void DenseRowSolver::loadRows()
@@ -577,7 +611,10 @@ void DenseRowSolver::startAt(Row& row, btScalar impulse)
   if (row.impulse != 0 || impulse == 0 || !std::isfinite(impulse))  // started by Bullet, or nothing to start from
     return;
   row.impulse = std::min(std::max(impulse, row.lower), row.upper);
-  addToVelocities(row, row.impulse);
+  if (row.sparse)
+    addToDofVelocities(row, row.impulse);
+  else
+    addToVelocities(row, row.impulse);
 }
 
 void DenseRowSolver::warmStart(const btContactSolverInfo& info)
@@ -628,10 +665,44 @@ inline void DenseRowSolver::addToVelocities(const Row& row, btScalar impulse)
     velocity[q] += impulse * column[q];
 }
 
+btScalar DenseRowSolver::sparseVelocity(const Row& row) const
+{
+  const btMultiBodySolverConstraint& c = *row.constraint;
+  btScalar velocity = 0;
+  if (c.m_multiBodyA)
+    velocity += dot(&m_data.m_jacobians[c.m_jacAindex], &dof_velocity_[c.m_deltaVelAindex],
+                    degreesOfFreedom(c.m_multiBodyA));
+  if (c.m_multiBodyB)
+    velocity += dot(&m_data.m_jacobians[c.m_jacBindex], &dof_velocity_[c.m_deltaVelBindex],
+                    degreesOfFreedom(c.m_multiBodyB));
+  return velocity;
+}
+
+void DenseRowSolver::addToDofVelocities(const Row& row, btScalar impulse)
+{
+  const btMultiBodySolverConstraint& c = *row.constraint;
+  if (c.m_multiBodyA)
+  {
+    const btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacAindex];
+    btScalar* velocity = &dof_velocity_[c.m_deltaVelAindex];
+    for (int k = 0, n = degreesOfFreedom(c.m_multiBodyA); k < n; ++k)
+      velocity[k] += unit[k] * impulse;
+  }
+  if (c.m_multiBodyB)
+  {
+    const btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacBindex];
+    btScalar* velocity = &dof_velocity_[c.m_deltaVelBindex];
+    for (int k = 0, n = degreesOfFreedom(c.m_multiBodyB); k < n; ++k)
+      velocity[k] += unit[k] * impulse;
+  }
+}
+
+template <bool kSparseRows>
 inline btScalar DenseRowSolver::visit(Row& row)
 {
   const btScalar applied = row.impulse;
-  btScalar delta = row.rhs - applied * row.cfm - row_velocity_[row.velocity + row.local] * row.inverse_mass;
+  const btScalar velocity = kSparseRows && row.sparse ? sparseVelocity(row) : row_velocity_[row.velocity + row.local];
+  btScalar delta = row.rhs - applied * row.cfm - velocity * row.inverse_mass;
   const btScalar sum = applied + delta;
   if (sum < row.lower)
   {
@@ -648,7 +719,12 @@ inline btScalar DenseRowSolver::visit(Row& row)
     row.impulse = sum;
   }
   if (delta != 0)
-    addToVelocities(row, delta);
+  {
+    if (kSparseRows && row.sparse)
+      addToDofVelocities(row, delta);
+    else
+      addToVelocities(row, delta);
+  }
   // Bullet's residual is the velocity change; a row Bullet disabled (no effective mass) has none.
   return delta * row.mass;
 }
@@ -688,19 +764,9 @@ void DenseRowSolver::applyVelocityChanges()
   }
 }
 
-btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int numBodies,
-                                                           btPersistentManifold** manifolds, int numManifolds,
-                                                           btTypedConstraint** constraints, int numConstraints,
-                                                           const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+template <bool kSparseRows>
+void DenseRowSolver::iterate(const btContactSolverInfo& info, btCollisionObject** bodies, int numBodies, int numManifolds)
 {
-  if (!denseApplies(info))
-    return btMultiBodyConstraintSolver::solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds,
-                                                                          constraints, numConstraints, info, debugDrawer);
-  collectRows();
-  buildBlocks();
-  loadRows();
-  warmStart(info);
-
   const int non_contact = m_multiBodyNonContactConstraints.size();
   const int normal = m_multiBodyNormalContactConstraints.size();
   const int friction = m_multiBodyFrictionContactConstraints.size();
@@ -716,7 +782,7 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
       for (int j = 0; j < non_contact; ++j)
       {
         // Bullet alternates the direction over these rows from one iteration to the next.
-        const btScalar r = visit(rows_[(iteration & 1) ? j : non_contact - 1 - j]);
+        const btScalar r = visit<kSparseRows>(rows_[(iteration & 1) ? j : non_contact - 1 - j]);
         residual = std::max(residual, r * r);
       }
     }
@@ -724,7 +790,7 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
     {
       for (int j = 0; j < normal; ++j)
       {
-        const btScalar r = visit(rows_[non_contact + j]);
+        const btScalar r = visit<kSparseRows>(rows_[non_contact + j]);
         residual = std::max(residual, r * r);
       }
       for (int j = 0; j < friction; ++j)
@@ -735,7 +801,7 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
         {
           row.lower = -row.friction * normal_impulse;
           row.upper = row.friction * normal_impulse;
-          const btScalar r = visit(row);
+          const btScalar r = visit<kSparseRows>(row);
           residual = std::max(residual, r * r);
         }
       }
@@ -752,6 +818,25 @@ btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** b
       break;
     }
   }
+}
+
+btScalar DenseRowSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int numBodies,
+                                                           btPersistentManifold** manifolds, int numManifolds,
+                                                           btTypedConstraint** constraints, int numConstraints,
+                                                           const btContactSolverInfo& info, btIDebugDraw* debugDrawer)
+{
+  if (!denseApplies(info))
+    return btMultiBodyConstraintSolver::solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds,
+                                                                          constraints, numConstraints, info, debugDrawer);
+  collectRows();
+  buildBlocks();
+  loadRows();
+  warmStart(info);
+
+  if (any_sparse_)
+    iterate<true>(info, bodies, numBodies, numManifolds);
+  else
+    iterate<false>(info, bodies, numBodies, numManifolds);
   storeRows();
   applyVelocityChanges();
   return 0;

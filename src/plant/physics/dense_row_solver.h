@@ -6,6 +6,11 @@
 // multibody): for the car (12 dof, 16 rows, 20 passes) that was a third of a step. With A, each
 // visit is one axpy over the rows of its group.
 //
+// A group of more than kMaxDenseRows rows (a pile of boxes, whose contacts join every box into one
+// group) keeps Bullet's sparse form instead: its block would cost (rows)^2 entries to build and a
+// visit would cost a pass over all of its rows, where J.dv and dv += M^-1 J^T di touch only the
+// degrees of freedom of the row's two multibodies (12 for two free boxes).
+//
 // Same rows, same order, same clamping, friction bounds and residual as Bullet's iterations;
 // only the arithmetic is regrouped. Setup and write-back (forces, impulses kept for the next
 // step) are Bullet's. Where the dense form does not apply (rigid bodies that move, cone
@@ -26,6 +31,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 
 #include "physics/multibody_dynamics.h"
@@ -43,6 +49,10 @@ public:
   // caches of Bullet's articulated-body pass, which must then have run this step.
   virtual void needArticulatedPass(btMultiBody& body) = 0;
   virtual void needArticulatedPasses() = 0;
+  // The multibodies are numbered 0 .. multibodyCount() - 1, each in its user index, so that tables
+  // of them are indexed rather than searched (a pile of 100 free boxes is 100 multibodies).
+  virtual int multibodyCount() const = 0;
+  static int numberOf(const btMultiBody& body) { return body.getUserIndex(); }
 
 protected:
   ~MultibodyStates() = default;
@@ -81,6 +91,18 @@ private:
   // kLanes scalars side by side (GCC/Clang vector extension: one SSE register of floats); a
   // group's rows are padded to whole Lanes.
   static constexpr int kLanes = 4;
+  // The largest group solved on a dense block: where a multibody with joints has rows in it, and
+  // where all its multibodies are free bodies (0 links). A dense visit costs stride / kLanes vector
+  // multiply-adds, a sparse one 2 (n_A + n_B) scalar ones (24 for two free boxes, 36 for the car's
+  // 18 dof against the ground) plus its indexing; the block costs stride^2 / 2 entries to build, so
+  // the block pays longer where rows share many degrees of freedom. Measured on
+  // bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second): 5.27M, 5.35M, 6.02M
+  // and 6.45M instructions a step with caps of 16, 32, 64 and 128 rows, 8.02M with none. The car
+  // on a mesh floor has more than 32 rows (its wheels meet several triangles); at 64 its solve
+  // stays dense as before (test_track_world.py's rolling over a mesh's inner edges, a 1 mm bound,
+  // fails with its arithmetic regrouped).
+  static constexpr int kMaxDenseRows = 64;
+  static constexpr int kMaxDenseFreeRows = 32;
   typedef btScalar Lanes __attribute__((vector_size(kLanes * sizeof(btScalar)), aligned(sizeof(btScalar)), may_alias));
 
   // A row during the iterations: Bullet's numbers, copied from its constraint and back.
@@ -94,6 +116,7 @@ private:
     int column;    // the row's column of the group's block in delassus_
     int stride;    // the group's padded size
     int normal;    // friction rows: the rows_ index of their contact's normal row; others -1
+    bool sparse;   // its group has no dense block: J.dv from dof_velocity_
     btScalar rhs, cfm, inverse_mass, lower, upper, friction;
     btScalar mass;  // 1 / inverse_mass, or 0 for a row Bullet disabled: the residual is delta * mass
     btScalar impulse, start_impulse;
@@ -104,6 +127,8 @@ private:
     int stride = 0;  // size padded to whole Lanes
     int offset = 0;  // into row_velocity_ and members_
     int block = 0;   // into delassus_
+    bool dense = true;
+    bool articulated = false;  // a multibody with joints has rows in it
   };
   // A row whose response waits for the other rows of its multibody (finishDeferredRows).
   struct DeferredRow
@@ -121,6 +146,7 @@ private:
   struct BodyRows
   {
     btMultiBody* body = nullptr;
+    int number = -1;  // MultibodyStates::numberOf(body) in this solve
     const MultibodyState* state = nullptr;
     std::vector<int> rows;  // deferred_ indices
     std::vector<btScalar> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
@@ -149,8 +175,17 @@ private:
   void warmStart(const btContactSolverInfo& info);
   void startAt(Row& row, btScalar impulse);
   void addToVelocities(const Row& row, btScalar impulse);
-  // Bullet's resolveSingleConstraintRowGeneric on the dense block; returns Bullet's residual.
+  // The sparse form's J.dv and dv += M^-1 J^T impulse, on dof_velocity_.
+  btScalar sparseVelocity(const Row& row) const;
+  void addToDofVelocities(const Row& row, btScalar impulse);
+  // Bullet's resolveSingleConstraintRowGeneric on the dense block (or, with kSparseRows, on
+  // dof_velocity_ for a row whose group has none); returns Bullet's residual.
+  template <bool kSparseRows>
   btScalar visit(Row& row);
+  // Bullet's iterations over rows_; kSparseRows where some group has no dense block, so that a
+  // world of small groups (the car) pays nothing for the choice.
+  template <bool kSparseRows>
+  void iterate(const btContactSolverInfo& info, btCollisionObject** bodies, int numBodies, int numManifolds);
   void applyVelocityChanges();
 
   MultibodyStates* states_ = nullptr;
@@ -158,15 +193,19 @@ private:
   std::unordered_map<const btCollisionObject*, btScalar> bounce_thresholds_;  // objects with a restitution
   std::vector<BodyRows> body_rows_;  // this solve's first bodies_used_ are current
   size_t bodies_used_ = 0;
+  std::vector<int> slot_of_;  // by multibody number: its body_rows_ index in this solve, or -1
   std::vector<DeferredRow> deferred_;
   std::vector<Row> rows_;  // non-contact rows, then normal contacts, then friction, as Bullet's arrays
   std::vector<Group> groups_;
   std::vector<int> members_;  // rows_ indices, group by group in block order
   std::vector<btMultiBody*> bodies_;  // multibodies with rows, and their union-find parents
   std::vector<int> parent_;
+  std::vector<int> node_of_;  // by offset in m_data.m_deltaVelocities (a multibody's companion id): its bodies_ index
   std::vector<btScalar> delassus_;           // each group's block, row-major (symmetric)
   std::vector<btScalar> row_velocity_;       // J.dv of each row, kept current
   std::vector<btScalar> velocity_change_;    // per degree of freedom, laid out as m_data.m_deltaVelocities
+  std::vector<btScalar> dof_velocity_;       // the sparse rows' dv, laid out as m_data.m_deltaVelocities
+  bool any_sparse_ = false;
 };
 
 }  // namespace bullet_plant

@@ -23,6 +23,10 @@ namespace
 {
 bool sleeping(const btMultiBody& body)
 {
+  // One that may not sleep is set ACTIVE_TAG by every step's updateActivationState, so its island
+  // never sleeps: no need to look at each of its colliders (the car has thirteen).
+  if (!body.getCanSleep())
+    return false;
   if (body.getBaseCollider() && body.getBaseCollider()->getActivationState() == ISLAND_SLEEPING)
     return true;
   for (int i = 0; i < body.getNumLinks(); ++i)
@@ -41,41 +45,83 @@ bool neverMoves(const btCollisionObject& object)
 
 DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, DenseRowSolver* solver,
                              btCollisionConfiguration* configuration)
-  : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration), solver_(solver)
+  : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration)
 {
   solver->useStates(this);
 }
 
 void DynamicsWorld::removeCollisionObject(btCollisionObject* object)
 {
-  solver_->forgetBounce(object);
+  // The world's solver of the moment: setMultiBodyConstraintSolver may have replaced the first.
+  if (auto* solver = dynamic_cast<DenseRowSolver*>(m_multiBodyConstraintSolver))
+    solver->forgetBounce(object);
   btMultiBodyDynamicsWorld::removeCollisionObject(object);
+}
+
+void wakeUp(btMultiBody& body)
+{
+  body.wakeUp();  // and its sleep timer starts again
+  auto activate = [](btMultiBodyLinkCollider* collider) {
+    if (collider && collider->getActivationState() != DISABLE_DEACTIVATION)
+    {
+      collider->setActivationState(ACTIVE_TAG);
+      collider->setDeactivationTime(0);
+    }
+  };
+  activate(body.getBaseCollider());
+  for (int i = 0; i < body.getNumLinks(); ++i)
+    activate(body.getLink(i).m_collider);
+}
+
+void DynamicsWorld::addMultiBody(btMultiBody* body, int group, int mask)
+{
+  btMultiBodyDynamicsWorld::addMultiBody(body, group, mask);
+  body->setUserIndex(m_multiBodies.size() - 1);
+  states_.emplace_back();
+}
+
+void DynamicsWorld::removeMultiBody(btMultiBody* body)
+{
+  btMultiBodyDynamicsWorld::removeMultiBody(body);  // moves the last multibody into its place
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+    m_multiBodies[i]->setUserIndex(i);
+  states_.clear();  // rebuilt at the next step anyway
+  states_.resize(m_multiBodies.size());
+  built_.clear();
 }
 
 DynamicsWorld::StepState& DynamicsWorld::stepState(btMultiBody& body)
 {
-  for (size_t k = 0; k < states_used_; ++k)
-    if (states_[k].body == &body)
-      return states_[k];
-  if (states_used_ == states_.size())
-    states_.emplace_back();
-  StepState& step = states_[states_used_++];
-  step.body = &body;
+  const int number = numberOf(body);
+  StepState& step = states_[number];
+  if (step.current)
+    return step;
+  step.current = true;
+  built_.push_back(number);
   step.articulated_pass_pending = false;
   if (!step.state)
     step.state.reset(new MultibodyState);
-  if (!buildMultibodyState(body, *step.state))
-    step.state.reset();
+  step.valid = buildMultibodyState(body, *step.state);
   return step;
 }
 
-const MultibodyState* DynamicsWorld::stateOf(btMultiBody& body) { return stepState(body).state.get(); }
+const MultibodyState* DynamicsWorld::stateOf(btMultiBody& body)
+{
+  const StepState& step = stepState(body);
+  return step.valid ? step.state.get() : nullptr;
+}
 
 void DynamicsWorld::addCollisionObject(btCollisionObject* object, int group, int mask)
 {
   btMultiBodyDynamicsWorld::addCollisionObject(object, group, mask);
   if (neverMoves(*object))
+  {
     updateSingleAabb(object);
+    // As btDiscreteDynamicsWorld::addRigidBody does for a static body: a pair of two inactive
+    // objects is left out of the narrow phase (btCollisionDispatcher::needsCollision), so a body
+    // asleep on the ground costs no contact test. A moving body's pairs with it are active.
+    object->setActivationState(ISLAND_SLEEPING);
+  }
 }
 
 // Each awake multibody link's reach: (|v| + |omega| * r) * dt, r the radius of a sphere about the
@@ -121,7 +167,7 @@ void DynamicsWorld::updateAabbs()
   for (int i = 0; i < m_collisionObjects.size(); ++i)
   {
     btCollisionObject* object = m_collisionObjects[i];
-    if (neverMoves(*object))
+    if (neverMoves(*object) || object->getActivationState() == ISLAND_SLEEPING)
       continue;
     updateSingleAabb(object);
     // Bullet's box is the shape's grown by the breaking threshold; one that may move further in a
@@ -172,28 +218,44 @@ void DynamicsWorld::performDiscreteCollisionDetection()
                                              m_dispatcher1);
 }
 
-void DynamicsWorld::runArticulatedPass(StepState& step)
+void DynamicsWorld::updateActivationState(btScalar timeStep)
+{
+  btMultiBodyDynamicsWorld::updateActivationState(timeStep);
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+  {
+    btMultiBody* body = m_multiBodies[i];
+    if (!sleeping(*body))
+      continue;
+    body->setBaseVel(btVector3(0, 0, 0));
+    body->setBaseOmega(btVector3(0, 0, 0));
+    for (int link = 0; link < body->getNumLinks(); ++link)
+      for (int dof = 0; dof < body->getLink(link).m_dofCount; ++dof)
+        body->getJointVelMultiDof(link)[dof] = 0;
+  }
+}
+
+void DynamicsWorld::runArticulatedPass(btMultiBody& body, StepState& step)
 {
   if (!step.articulated_pass_pending)
     return;
   // With dt = 0 the pass leaves the velocities alone and only fills its caches, which depend on
   // the configuration alone.
-  step.body->computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, m_scratch_r, m_scratch_v, m_scratch_m, false,
-                                                                  false, false);
+  body.computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, m_scratch_r, m_scratch_v, m_scratch_m, false, false,
+                                                            false);
   step.articulated_pass_pending = false;
 }
 
 void DynamicsWorld::needArticulatedPass(btMultiBody& body)
 {
-  for (size_t k = 0; k < states_used_; ++k)
-    if (states_[k].body == &body)
-      runArticulatedPass(states_[k]);
+  StepState& step = states_[numberOf(body)];
+  if (step.current)
+    runArticulatedPass(body, step);
 }
 
 void DynamicsWorld::needArticulatedPasses()
 {
-  for (size_t k = 0; k < states_used_; ++k)
-    runArticulatedPass(states_[k]);
+  for (int number : built_)
+    runArticulatedPass(*m_multiBodies[number], states_[number]);
 }
 
 bool DynamicsWorld::integrateVelocities(btMultiBody& body, btScalar dt)
@@ -206,7 +268,7 @@ bool DynamicsWorld::integrateVelocities(btMultiBody& body, btScalar dt)
     if (body.getLink(i).m_jointFeedback || body.isLinkAndAllAncestorsKinematic(i))
       return false;
   StepState& step = stepState(body);
-  if (!step.state)
+  if (!step.valid)
     return false;
   accelerations_.resize(body.getNumDofs() + 6);
   forwardDynamics(body, *step.state, accelerations_.data());
@@ -221,7 +283,9 @@ bool DynamicsWorld::integrateVelocities(btMultiBody& body, btScalar dt)
 // velocities from its joint-space state where it can, else from Bullet's pass.
 void DynamicsWorld::solveExternalForces(btContactSolverInfo& info)
 {
-  states_used_ = 0;  // a new step: every multibody's state is rebuilt when first asked for
+  for (int number : built_)  // a new step: every multibody's state is rebuilt when first asked for
+    states_[number].current = false;
+  built_.clear();
   for (int i = 0; i < m_multiBodies.size(); ++i)
     if (m_multiBodies[i]->isUsingRK4Integration())
     {
@@ -229,7 +293,10 @@ void DynamicsWorld::solveExternalForces(btContactSolverInfo& info)
       return;
     }
 
-  forwardKinematics();
+  // Bullet's forwardKinematics() for the awake multibodies: a sleeping one has not moved.
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+    if (!sleeping(*m_multiBodies[i]))
+      m_multiBodies[i]->forwardKinematics(m_scratch_world_to_local, m_scratch_local_origin);
   clearMultiBodyConstraintForces();
   m_sortedConstraints.resize(m_constraints.size());
   for (int i = 0; i < m_constraints.size(); ++i)

@@ -48,25 +48,37 @@ public:
   // What this does not reach: a convex shape against a triangle mesh. Bullet's convex-concave
   // algorithm collects the triangles within the mesh's margin of the shape's box, whatever the
   // manifold's threshold, so on a mesh a falling body is still found inside it.
+  // Objects asleep (ISLAND_SLEEPING) are left out too: they do not move until something wakes them.
   void updateAabbs() override;
   void performDiscreteCollisionDetection() override;
   // The solver forgets what it keeps of the object (its bounce threshold).
   void removeCollisionObject(btCollisionObject* object) override;
+  // Bullet's deactivation, and then what Bullet does for a sleeping rigid body: its velocities are
+  // zeroed, so that it wakes from rest rather than from the sub-threshold drift it fell asleep with.
+  void updateActivationState(btScalar timeStep) override;
+
+  // Each multibody is numbered by its place in the world (MultibodyStates::numberOf), kept in its
+  // user index: the step's and the solver's tables are indexed by it rather than searched.
+  void addMultiBody(btMultiBody* body, int group = btBroadphaseProxy::DefaultFilter,
+                    int mask = btBroadphaseProxy::AllFilter) override;
+  void removeMultiBody(btMultiBody* body) override;
 
   const MultibodyState* stateOf(btMultiBody& body) override;
   void needArticulatedPass(btMultiBody& body) override;
   void needArticulatedPasses() override;
+  int multibodyCount() const override { return m_multiBodies.size(); }
 
 private:
   // A multibody's state in this step.
   struct StepState
   {
-    btMultiBody* body = nullptr;
-    std::unique_ptr<MultibodyState> state;  // null: M is not positive definite, Bullet's passes answer
+    std::unique_ptr<MultibodyState> state;  // kept from step to step for its storage
+    bool current = false;                   // built this step
+    bool valid = false;                     // false: M is not positive definite, Bullet's passes answer
     bool articulated_pass_pending = false;  // its velocities came from integrateVelocities
   };
   StepState& stepState(btMultiBody& body);  // built when first asked for in the step
-  void runArticulatedPass(StepState& step);
+  void runArticulatedPass(btMultiBody& body, StepState& step);
   // qd += dt * M^-1 (tau - C). Returns false where Bullet's pass must run instead (see the cases
   // in the function).
   bool integrateVelocities(btMultiBody& body, btScalar dt);
@@ -78,12 +90,16 @@ private:
   void setManifoldThresholds();
   btScalar pairThreshold(const btPersistentManifold& manifold) const;
 
-  DenseRowSolver* solver_;
-  std::vector<StepState> states_;  // this step's first states_used_ are current
   std::vector<btScalar> reach_;
   std::vector<btVector3> link_omega_, link_velocity_;
-  size_t states_used_ = 0;
+  std::vector<StepState> states_;  // by multibody number
+  std::vector<int> built_;         // the numbers of this step's current states, in the order built
   std::vector<btScalar> accelerations_;
 };
+
+// Wakes a multibody that sleeps or is about to (and with it, at the next step, every body asleep
+// in its island). Contacts with a moving body wake a sleeping one from inside the step; what moves
+// it from outside (a wrench, a joint effort, a new state or gravity) must call this.
+void wakeUp(btMultiBody& body);
 
 }  // namespace bullet_plant

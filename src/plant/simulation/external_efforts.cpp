@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "physics/dynamics_world.h"
+
 namespace bullet_plant
 {
 namespace
@@ -40,12 +42,21 @@ void ExternalEfforts::apply(RobotMultibody& multibody, int64_t time_ns)
 {
   auto due = [time_ns](int64_t start, int64_t end) { return time_ns >= start && (end < 0 || time_ns <= end); };
   auto expired = [time_ns](int64_t end) { return end >= 0 && time_ns > end; };
+  bool acted = false;  // a body asleep wakes to feel it
   for (const LinkWrench& w : wrenches_)
     if (due(w.start_ns, w.end_ns))
+    {
       multibody.addBodyWrench(w.body, w.force, w.torque);
+      acted = true;
+    }
   for (const JointEffort& e : joint_efforts_)
     if (due(e.start_ns, e.end_ns))
+    {
       multibody.bullet->addJointTorque(e.link, btScalar(e.effort));
+      acted = true;
+    }
+  if (acted)
+    wakeUp(*multibody.bullet);
   wrenches_.erase(std::remove_if(wrenches_.begin(), wrenches_.end(), [&](const LinkWrench& w) { return expired(w.end_ns); }),
                   wrenches_.end());
   joint_efforts_.erase(std::remove_if(joint_efforts_.begin(), joint_efforts_.end(),

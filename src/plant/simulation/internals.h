@@ -66,8 +66,13 @@ struct Robot::Internals
   void updateModelPlugins(int64_t time_ns);
   void updateSensors(int64_t time_ns);
   void resetToSpawn();
-  // After positions or velocities were set by hand: kinematics, stale contact pairs, the last good state.
+  // After positions or velocities were set by hand: kinematics, stale contact pairs, the last good
+  // state, and a body asleep woken.
   void settleAfterTeleport();
+  // Asleep (DynamicsWorld's deactivation): World::step leaves its joint layer, recovery and
+  // read-back alone, as the physics leaves its bodies. Only a model nothing drives from inside
+  // may sleep (buildRobot).
+  bool asleep() const;
   // The joint rows' and contacts' impulses (the solver's warm start) and the contacts themselves.
   void forgetSolverHistory();
 };

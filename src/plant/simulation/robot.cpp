@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "physics/bullet_conversions.h"
+#include "physics/dynamics_world.h"
 #include "simulation/internals.h"
 
 namespace bullet_plant
@@ -16,6 +17,7 @@ namespace bullet_plant
 void Robot::Internals::settleAfterTeleport()
 {
   multibody.updateKinematics();
+  wakeUp(*multibody.bullet);
   joint_layer.resetPids();
   forgetSolverHistory();
   recovery.last_good.save(multibody);
@@ -69,6 +71,7 @@ std::vector<JointHandle>& Robot::handles() { return in_->joint_layer.handles(); 
 JointHandle* Robot::handle(const std::string& joint) { return in_->joint_layer.handle(joint); }
 long Robot::recoveries() const { return in_->recovery.recoveries; }
 bool Robot::disabled() const { return in_->disabled; }
+bool Robot::asleep() const { return in_->asleep(); }
 void Robot::setEStop(bool on) { in_->joint_layer.setEStop(on); }
 bool Robot::eStop() const { return in_->joint_layer.eStop(); }
 

@@ -709,6 +709,29 @@ void createModelPlugins(Robot::Internals& r)
 }
 }  // namespace
 
+namespace
+{
+// A model nothing drives from inside (no controller manager, model plugins or sensors: a free SDF
+// object, a loose part) sleeps when at rest, as Gazebo's bodies do under ODE's auto-disable: a
+// resting body then costs the step nothing until a moving body touches it (Bullet's islands), or
+// a wrench, a joint effort, a new state or gravity wakes it (wakeUp). At rest: the multibody's
+// velocities, squared and summed (Bullet's measure), below kSleepSpeed^2 for kSleepTime. Gazebo
+// sets ODE's auto-disable to 0.1 m/s and 0.1 rad/s for 1 s (ODEPhysics::Load); Bullet's multibody
+// defaults (0.22 m/s for 2 s) would stop a box still sliding at 0.2 m/s. A robot with
+// controllers, plugins or sensors never sleeps: they run at every step whether or not it moves.
+constexpr double kSleepSpeed = 0.1;
+constexpr double kSleepTime = 1.0;
+
+void allowSleep(Robot::Internals& r)
+{
+  const bool driven = r.controller_manager || !r.model_plugins.empty() || !r.sensors.empty();
+  btMultiBody& mb = *r.multibody.bullet;
+  mb.setCanSleep(!driven);
+  mb.setSleepThreshold(btScalar(kSleepSpeed * kSleepSpeed));
+  mb.setSleepTimeout(btScalar(kSleepTime));
+}
+}  // namespace
+
 void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints)
 {
   urdf::LinkConstSharedPtr root = r.description.model->getRoot();
@@ -730,6 +753,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   createControllerManager(r);
   createSensors(r);
   createModelPlugins(r);
+  allowSleep(r);
   for (const std::string& w : r.description.warnings)
     r.world->log.warn(r.name + ": " + w);
   for (const std::string& e : r.description.errors)

@@ -4,6 +4,8 @@
 // (the joint layer), the physics step (joint wrenches watched around it, joint_wrench_watch.h),
 // recoverIfDiverged (divergence_recovery.h), readSim, updateSensors; World::step runs each phase
 // for every robot before the next.
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
+
 #include "simulation/internals.h"
 
 namespace bullet_plant
@@ -22,6 +24,12 @@ void Robot::Internals::updateModelPlugins(int64_t time_ns)
     plugin->OnUpdate(time_ns);
   for (auto& joint : model_joints)
     joint.second->apply(world->step_s);
+}
+
+bool Robot::Internals::asleep() const
+{
+  const btMultiBodyLinkCollider* base = multibody.bullet->getBaseCollider();
+  return multibody.bullet->getCanSleep() && base && base->getActivationState() == ISLAND_SLEEPING;
 }
 
 void Robot::Internals::updateSensors(int64_t time_ns)

@@ -257,6 +257,9 @@ void World::setGravity(const urdf::Vector3& g)
   if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z))
     throw std::invalid_argument("gravity must be finite");
   in_->dynamics->setGravity(toBullet(g));
+  for (auto& r : in_->robots)  // a body asleep at rest under the old gravity need not be under the new
+    if (!r->in_->disabled)
+      wakeUp(*r->in_->multibody.bullet);
 }
 int64_t World::timeNs() const { return in_->time_ns; }
 double World::time() const { return in_->time_ns * 1e-9; }
@@ -333,6 +336,9 @@ bool World::remove(const std::string& name)
         in_->frame_worker->waitAll();  // its cameras' frames in the making write into them
       removeRobot(*(*it)->in_);
       in_->robots.erase(it);
+      for (auto& r : in_->robots)  // what rested on it must fall
+        if (!r->in_->disabled)
+          wakeUp(*r->in_->multibody.bullet);
       return true;
     }
   return false;
@@ -374,7 +380,7 @@ void World::step(int n)
         r->in_->updateModelPlugins(w.time_ns);
       }
     for (auto& r : w.robots)
-      if (!r->in_->disabled)
+      if (!r->in_->disabled && !r->in_->asleep())
         r->in_->joint_layer.writeSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
     if (w.physics_enabled)
     {
@@ -390,13 +396,13 @@ void World::step(int n)
     w.time_ns += w.step_ns;
     ++w.steps;
     for (auto& r : w.robots)
-      if (!r->in_->disabled)
+      if (!r->in_->disabled && !r->in_->asleep())
       {
         recoverIfDiverged(*r->in_);
         r->in_->joint_layer.readSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
       }
     for (auto& r : w.robots)
-      if (!r->in_->disabled)
+      if (!r->in_->disabled && !r->in_->asleep())
         r->in_->updateSensors(w.time_ns);
   }
   if (!w.frames_ahead)
