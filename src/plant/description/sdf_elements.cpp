@@ -205,6 +205,32 @@ Source includedSource(const std::string& model_file, const std::string& model_di
   return source;
 }
 
+const tinyxml2::XMLElement* readIncludedModel(const std::string& uri, const Source& from, int depth,
+                                              tinyxml2::XMLDocument& doc, Source& model_source, std::string& why)
+{
+  if (depth > kMaxModelDepth)
+  {
+    why = "models nested too deep (an include loop?)";
+    return nullptr;
+  }
+  const std::string dir = includedModelDir(uri, from, why);
+  if (dir.empty())
+    return nullptr;
+  std::string loop;
+  model_source = includedSource(modelFile(dir), dir, from, loop);
+  if (!loop.empty())
+  {
+    why = "an include loop (" + loop + ")";
+    return nullptr;
+  }
+  parseXml(doc, readFile(model_source.file, "model file"), model_source);
+  const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
+  const tinyxml2::XMLElement* model = sdf ? sdf->FirstChildElement("model") : nullptr;
+  if (!model)
+    why = model_source.describe() + " has no <sdf><model>";
+  return model;
+}
+
 int versionOf(const tinyxml2::XMLElement* element)
 {
   const tinyxml2::XMLElement* root = element ? element->GetDocument()->FirstChildElement("sdf") : nullptr;

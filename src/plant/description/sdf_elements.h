@@ -60,6 +60,13 @@ std::string includedModelDir(const std::string& uri, const Source& source, std::
 Source includedSource(const std::string& model_file, const std::string& model_dir, const Source& from,
                       std::string& loop);
 
+// An <include>'s model, found as Gazebo finds it (includedModelDir, modelFile) and read into `doc`:
+// its <model> element, `model_source` saying where it came from; null with `why` when there is none
+// to read (nested deeper than kMaxModelDepth, not found, an include loop, no <sdf><model> in the
+// file). Throws DescriptionError for a file that is not well-formed XML.
+const tinyxml2::XMLElement* readIncludedModel(const std::string& uri, const Source& from, int depth,
+                                              tinyxml2::XMLDocument& doc, Source& model_source, std::string& why);
+
 // The <sdf version="..."> of the document holding `element`, as major * 100 + minor (1.6 -> 106);
 // 106 when not given.
 int versionOf(const tinyxml2::XMLElement* element);

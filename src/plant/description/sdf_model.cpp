@@ -154,32 +154,14 @@ void collectInclude(const tinyxml2::XMLElement* include, const std::string& scop
                     FrameGraph& frames, const Source& source, int depth, ModelParts& parts, RobotDescription& out)
 {
   const std::string uri = xml::childText(include, "uri", "");
-  std::string reason;
-  const std::string dir = depth > sdf::kMaxModelDepth ? "" : sdf::includedModelDir(uri, source, reason);
-  if (dir.empty())
-  {
-    out.warnings.push_back("model '" + parts.name + "': <include> of '" + uri + "': " +
-                           (depth > sdf::kMaxModelDepth ? "models nested too deep (an include loop?)" : reason) +
-                           "; skipped");
-    return;
-  }
-  std::string loop;
-  const Source model_source = sdf::includedSource(sdf::modelFile(dir), dir, source, loop);
-  if (!loop.empty())
-  {
-    out.warnings.push_back("model '" + parts.name + "': <include> of '" + uri + "' is an include loop (" + loop +
-                           "); skipped");
-    return;
-  }
   parts.included.emplace_back(new tinyxml2::XMLDocument);
-  tinyxml2::XMLDocument& doc = *parts.included.back();
-  sdf::parseXml(doc, sdf::readFile(model_source.file, "model file"), model_source);
-  const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
-  const tinyxml2::XMLElement* nested = sdf ? sdf->FirstChildElement("model") : nullptr;
+  Source model_source;
+  std::string why;
+  const tinyxml2::XMLElement* nested =
+      sdf::readIncludedModel(uri, source, depth, *parts.included.back(), model_source, why);
   if (!nested)
   {
-    out.warnings.push_back("model '" + parts.name + "': <include> of '" + uri + "': " + model_source.describe() +
-                           " has no <sdf><model>; skipped");
+    out.warnings.push_back("model '" + parts.name + "': <include> of '" + uri + "': " + why + "; skipped");
     return;
   }
   const std::string name = xml::childText(include, "name", attribute(nested, "name", "model"));

@@ -195,31 +195,13 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
   }
   if (uri == "model://sun" || uri == "model://sun/")
     return;  // the default light direction is the sun's
-  std::string reason;
-  const std::string dir = depth > sdf::kMaxModelDepth ? "" : sdf::includedModelDir(uri, source, reason);
-  if (dir.empty())
-  {
-    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + ": " +
-                             (depth > sdf::kMaxModelDepth ? "models nested too deep (an include loop?)" : reason) +
-                             "; skipped");
-    return;
-  }
-  std::string loop;
-  const Source model_source = sdf::includedSource(sdf::modelFile(dir), dir, source, loop);
-  if (!loop.empty())
-  {
-    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + " is an include loop (" + loop +
-                             "); skipped");
-    return;
-  }
   tinyxml2::XMLDocument doc;
-  sdf::parseXml(doc, sdf::readFile(model_source.file, "model file"), model_source);
-  const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
-  const tinyxml2::XMLElement* model = sdf ? sdf->FirstChildElement("model") : nullptr;
+  Source model_source;
+  std::string why;
+  const tinyxml2::XMLElement* model = sdf::readIncludedModel(uri, source, depth, doc, model_source, why);
   if (!model)
   {
-    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + ": " + model_source.describe() +
-                             " has no <sdf><model>; skipped");
+    world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + ": " + why + "; skipped");
     return;
   }
   Placement placement;

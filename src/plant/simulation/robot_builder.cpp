@@ -718,13 +718,16 @@ namespace
 // velocities, squared and summed (Bullet's measure), below kSleepSpeed^2 for kSleepTime. Gazebo
 // sets ODE's auto-disable to 0.1 m/s and 0.1 rad/s for 1 s (ODEPhysics::Load); Bullet's multibody
 // defaults (0.22 m/s for 2 s) would stop a box still sliding at 0.2 m/s. A robot with
-// controllers, plugins or sensors never sleeps: they run at every step whether or not it moves.
+// controllers, plugins or sensors never sleeps: they run at every step whether or not it moves. Nor
+// does a model with movable joints, as Gazebo keeps one awake: a pendulum swinging 0.05 rad either
+// side moves slower than 0.1 rad/s all the time and would stop.
 constexpr double kSleepSpeed = 0.1;
 constexpr double kSleepTime = 1.0;
 
 void allowSleep(Robot::Internals& r)
 {
-  const bool driven = r.controller_manager || !r.model_plugins.empty() || !r.sensors.empty();
+  const bool driven = r.controller_manager || !r.model_plugins.empty() || !r.sensors.empty() ||
+                      !r.multibody.joints.empty();
   btMultiBody& mb = *r.multibody.bullet;
   mb.setCanSleep(!driven);
   mb.setSleepThreshold(btScalar(kSleepSpeed * kSleepSpeed));
