@@ -12,6 +12,7 @@
 #include "physics/bullet_conversions.h"
 #include "physics/dense_row_solver.h"
 #include "physics/dynamics_world.h"
+#include "physics/plane_contact.h"
 #include "physics/wheel_contact.h"
 #include "simulation/collision_shapes.h"
 #include "simulation/internals.h"
@@ -134,13 +135,13 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
   pools.m_defaultMaxPersistentManifoldPoolSize = 1024;
   pools.m_defaultMaxCollisionAlgorithmPoolSize = 1024;
   w.collision_config.reset(new btDefaultCollisionConfiguration(pools));
+  w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
   // A convex shape meets a plane in up to four points at once, as ODE's box-plane test gives them.
   // Bullet's default finds one (the deepest vertex) per step: a box landing flat took its whole
   // impact on one corner, which tipped it over and threw it 14 cm back up from a 1 m drop. With
-  // three perturbed queries (Bullet's own multipoint option) all four corners are in the manifold
-  // from the first step of contact.
-  w.collision_config->setPlaneConvexMultipointIterations(3, 3);
-  w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
+  // three perturbed queries (Bullet's own multipoint option, asked only near the plane:
+  // plane_contact.h) all four corners are in the manifold from the first step of contact.
+  registerPlaneContact(*w.dispatcher);
   registerWheelContact(*w.dispatcher);
   w.broadphase.reset(new btDbvtBroadphase());
   auto* solver = new DenseRowSolver();
