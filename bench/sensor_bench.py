@@ -158,6 +158,7 @@ def write_mesh_track(directory):
     with open(world, 'w') as f:
         f.write(f"""<?xml version="1.0"?>
 <sdf version="1.6"><world name="mesh_race_track">
+  <include><uri>model://ground_plane</uri></include>
   <include><uri>model://sun</uri></include>
   <scene><ambient>0.4 0.4 0.4 1</ambient><background>0.7 0.7 0.7 1</background></scene>
   {mesh_model('floor', 'floor.obj')}

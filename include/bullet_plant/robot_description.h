@@ -201,9 +201,17 @@ struct RobotDescription
   // body of a link, and not listed among the robot's links.
   std::set<std::string> frame_links;
   std::map<std::string, JointSpring> joint_springs;  // by joint
-  // From SDF: collisions keep their SDF names ("model::link::collision"), where sdformat's URDF
-  // converter names a URDF's collisions after their link ("link_collision").
-  bool sdf_collision_names = false;
+  // The format the model was written in. Gazebo treats the two apart in two ways the plant keeps: an
+  // SDF model's collisions keep their SDF names ("model::link::collision") where sdformat's URDF
+  // converter names a URDF's after their link ("link_collision"); and an SDF model (a world file's
+  // box, spawn_model -sdf) publishes only what its plugins publish, where the plant gives a URDF
+  // robot ground-truth odometry.
+  enum class Format
+  {
+    Urdf,
+    Sdf
+  };
+  Format format = Format::Urdf;
   std::vector<std::string> warnings;                   // things read but not fully supported
   std::vector<std::string> errors;                     // things refused (logged as errors at spawn)
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)

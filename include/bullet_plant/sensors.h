@@ -49,6 +49,8 @@ public:
   // The readings made so far.
   uint64_t updates() const { return updates_; }
   int64_t periodNs() const { return gate_.periodNs(); }
+  // What a plugin makes of the rate, as Gazebo's Sensor::SetUpdateRate (0: every step it is active).
+  void setUpdatePeriodNs(int64_t period_ns) { gate_.setPeriodNs(period_ns); }
   // Reads the simulation through `context` when a reading is due at `time_ns` (the robot calls it
   // for each active sensor every step).
   void updateIfDue(SensorContext& context, int64_t time_ns);

@@ -85,7 +85,8 @@ struct WorldDescription
 
 // Parses SDF text (<sdf><world>...). Throws DescriptionError for XML that is not well-formed (with
 // the line) and for values that are not numbers; elements the plant does not support are left out
-// with a warning. Adds a ground plane when the world has none, as an empty Gazebo world has one.
+// with a warning. The world has the ground its file gives it (model://ground_plane, a <plane>, a
+// floor mesh) and none other, as in Gazebo.
 WorldDescription parseWorldDescription(const std::string& sdf_xml, const std::string& base_dir = "");
 // Reads and parses a world file; its relative URIs resolve against its directory. A name that is not
 // a file is looked for as Gazebo looks for `worlds/empty.world`: in GAZEBO_RESOURCE_PATH, then in

@@ -515,7 +515,7 @@ bool GazeboRosApiPlugin::getModelProperties(gazebo_msgs::GetModelProperties::Req
       for (size_t i = 0; i < link->collision_array.size(); ++i)
       {
         const urdf::CollisionSharedPtr& collision = link->collision_array[i];
-        if (robot->description().sdf_collision_names)
+        if (robot->description().format == RobotDescription::Format::Sdf)
           res.geom_names.push_back(collision->name);
         else
           res.geom_names.push_back((collision->name.empty() ? link_name : collision->name) + "_collision" +

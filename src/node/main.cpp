@@ -25,6 +25,7 @@ int main(int argc, char** argv)
           "                        default: the world's <real_time_update_rate> x <max_step_size>, as Gazebo paces\n"
           "  ~pub_clock_frequency  /clock rate in Hz (default 100)\n"
           "  ~paused               start paused (default false)\n"
+          "  ~iterations           simulate this many steps, then stop (default 0: until shut down)\n"
           "Services and topics: gazebo_ros's (~spawn_urdf_model, ~get_model_state, ~model_states, ...; docs/gazebo_compatibility.md)\n");
       return 0;
     }

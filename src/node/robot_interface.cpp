@@ -25,9 +25,9 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
     model_plugin_topics_.back()->refresh({{"", plugin}});
     plugin_odometry_ = plugin_odometry_ || plugin->output<OdometrySample>() || plugin->output<TransformSample>();
   }
-  // The plant's ground truth is for URDF robots; an SDF model (a world file's box, spawn_model -sdf)
-  // publishes only what its plugins publish, as in Gazebo: odom -> "link" of every box would fight on /tf.
-  if (!plugin_odometry_ && !robot.description().sdf_collision_names)
+  // The plant's ground truth is for URDF robots; an SDF model publishes only what its plugins
+  // publish, as in Gazebo: odom -> "link" of every box would fight on /tf.
+  if (!plugin_odometry_ && robot.description().format == RobotDescription::Format::Urdf)
     odometry_.reset(new OdometryPublisher(robot, nh_));
   for (Sensor* sensor : robot.sensors())
     if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor, robot, plant.world().timeStep()))

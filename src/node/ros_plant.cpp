@@ -184,6 +184,13 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   bool paused = false;
   private_nh_.param("paused", paused, false);
   applyPaused(paused);
+  // gzserver --iters N: the world simulates N steps and the server stops, as Gazebo's run_worlds(N).
+  int iterations = 0;
+  private_nh_.param("iterations", iterations, 0);
+  if (iterations < 0)
+    throw std::runtime_error("parameter " + private_nh_.resolveName("iterations") + " = " +
+                             std::to_string(iterations) + ": give a number of steps, or 0 to run until stopped");
+  iterations_ = static_cast<uint64_t>(iterations);
   ROS_INFO("Bullet plant ready: world '%s', %.4f s steps, real time factor %g%s", description.name.c_str(),
            world_->timeStep(), real_time_factor_, paused ? " (paused)" : "");
 }
@@ -451,6 +458,12 @@ void RosPlant::run()
       continue;
     }
     stepAndPublish();
+    if (iterations_ > 0 && world_->steps() >= iterations_)
+    {
+      ROS_INFO("Bullet plant: %llu iterations simulated (~iterations), %.3f s of simulated time; stopping",
+               static_cast<unsigned long long>(iterations_), world_->timeNs() * 1e-9);
+      break;
+    }
     pace();
     publishStatus();
   }

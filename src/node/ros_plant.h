@@ -108,6 +108,7 @@ private:
   std::atomic<bool> paused_{false};
   uint64_t steps_requested_ = 0;  // left of requestSteps' while paused
   double real_time_factor_ = 1.0;
+  uint64_t iterations_ = 0;  // ~iterations: steps to simulate before stopping (0: until shut down)
   RateGate clock_gate_;  // pub_clock_frequency
   ros::WallTime pace_start_wall_;
   int64_t pace_start_sim_ns_ = 0;

@@ -1,5 +1,5 @@
 """The fuzz cases of test_fuzz.py: mutated URDFs, mutated SDF worlds and random sequences of Python API
-calls (and of test_sdf_fuzz.py: worlds of SDF models that move), each made from (kind, seed) alone, so a failing case is reproduced by its seed:
+calls and worlds of SDF models that move, each made from (kind, seed) alone, so a failing case is reproduced by its seed:
 
     /usr/bin/python3 test/helpers/fuzz_cases.py urdf 1234 1     # kind, first seed, number of cases
 
@@ -126,7 +126,7 @@ def sdf_case(seed, urdf, bullet_plant):
     return drive(world, robot, rng, STEPS_PER_CASE)
 
 
-# SDF models that move (test_sdf_fuzz.py): worlds of them, mutated, and structures a mutation does
+# SDF models that move (test_fuzz.py, kind sdf_model): worlds of them, mutated, and structures a mutation does
 # not make: deep nesting, include loops (test/fixtures/sdf_models/loop_a and loop_b), hostile values
 # in every number a model has.
 SDF_MODELS = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'fixtures', 'sdf_models')
@@ -186,8 +186,9 @@ def nested_models(rng, depth):
     return ('<model name="deep"><pose>0 -2 1 0 0 0</pose><link name="l"/>' + text + closing + joints + '</model>')
 
 
-def sdf_model_case(seed, urdf, bullet_plant):
-    os.environ['GAZEBO_MODEL_PATH'] = SDF_MODELS
+def mutated_sdf_models(seed):
+    """The world of moving SDF models of case `seed` (its models need GAZEBO_MODEL_PATH=SDF_MODELS) and
+    the case's random source."""
     rng = random.Random(seed)
     extra = nested_models(rng, rng.choice([2, 12, 40])) if rng.random() < 0.3 else ''
     text = MODEL_WORLD.format(version=rng.choice(['1.4', '1.5', '1.6', '1.7']), extra=extra,
@@ -199,7 +200,12 @@ def sdf_model_case(seed, urdf, bullet_plant):
         text = re.sub(r'(?<=>)[^<>]*\d[^<>]*(?=</(?!max_step_size))',
                       lambda m: ' '.join(rng.choice(HOSTILE_NUMBERS) for _ in m.group(0).split())
                       if rng.random() < share else m.group(0), text)
-    text = mutate_xml(text, rng, rng.randint(0, 4))
+    return mutate_xml(text, rng, rng.randint(0, 4)), rng
+
+
+def sdf_model_case(seed, urdf, bullet_plant):
+    os.environ['GAZEBO_MODEL_PATH'] = SDF_MODELS
+    text, rng = mutated_sdf_models(seed)
     world = bullet_plant.World.from_sdf(text)
     world.echo = False
     finite = finite_state(world)

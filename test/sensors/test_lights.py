@@ -2,7 +2,15 @@
 the light's diffuse colour times n . l, over constant + linear d + quadratic d^2, within its range,
 and a spot's cone. A camera in a static SDF model of the world looks straight down at the ground
 plane (grey 0.7) from 3 m; the sun shines straight down too, so every floor pixel has the same
-light but for the lamp's share, which is what each test reads."""
+light but for the lamp's share, which is what each test reads. The lights are drawn by a shader
+that llvmpipe compiles for the CPU's vector width: the point light is checked at the width this CPU
+picks and at 128 bits (SSE, what a CPU without AVX gets), in a process of its own (llvmpipe reads
+LP_NATIVE_VECTOR_WIDTH once)."""
+import json
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -12,9 +20,20 @@ FLOOR = 0.7 * 255  # the ground plane's grey, in levels
 WIDTH, HEIGHT, FOV = 81, 61, 1.2
 
 
-def looking_down(lights=''):
+def looking_down(lights='', vector_width=None):
+    """The grey levels the camera sees; with vector_width, from llvmpipe at that width in a process of
+    its own."""
+    if vector_width:
+        env = dict(os.environ, LP_NATIVE_VECTOR_WIDTH=vector_width)
+        env.pop('TIANRACER_GL_DEVICE', None)
+        code = ('import json, sys; sys.path.insert(0, %r); import test_lights; '
+                'print(json.dumps(test_lights.looking_down(%r).tolist()))' % (os.path.dirname(__file__), lights))
+        run = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True, env=env, timeout=120)
+        assert run.returncode == 0, run.stderr
+        return np.array(json.loads(run.stdout.strip().splitlines()[-1]))
     world = bullet_plant.World.from_sdf(f"""<sdf version="1.6"><world name="lit">
 <scene><ambient>0.2 0.2 0.2 1</ambient><shadows>false</shadows></scene>
+<include><uri>model://ground_plane</uri></include>
 <light name="sun" type="directional"><direction>0 0 -1</direction></light>
 {lights}
 <model name="eye"><static>true</static><pose>0 0 3 0 1.5707963267948966 0</pose><link name="link">
@@ -46,8 +65,9 @@ def point_light(pose='0 0 1 0 0 0', range_m=5.0):
 <attenuation><range>{range_m}</range><constant>1</constant><linear>0.5</linear><quadratic>0</quadratic></attenuation></light>"""
 
 
-def test_a_point_light_adds_its_attenuated_share_to_every_pixel_it_reaches():
-    dark, lit = looking_down(), looking_down(point_light())
+@pytest.mark.parametrize('vector_width', [None, '128'], ids=['native', 'llvmpipe128'])
+def test_a_point_light_adds_its_attenuated_share_to_every_pixel_it_reaches(vector_width):
+    dark, lit = looking_down(vector_width=vector_width), looking_down(point_light(), vector_width)
     assert lit.max() < 250, 'no pixel saturated: the shares are all seen'
     for u, v in ((40, 30), (10, 10), (70, 50), (40, 5)):
         assert lit[v, u] - dark[v, u] == pytest.approx(lamp_share([0, 0, 1], u, v), abs=2.5), (u, v)

@@ -2,11 +2,12 @@
 // channel: intensity) on <topicName> (default "/world"), frame tf::resolve(tf_prefix, <frameName>)
 // (default "/world"), every scan of the sensor while subscribed. Upstream's rules, quirks included
 // (docs/interfaces.md section 11):
-// - rows from the lowest up, each from the first azimuth; a range is held to max - min, and a point
-//   sits at the mean angle of the ray pair its range is interpolated between, so with
-//   <resolution> 1 point k carries ray k's range half a step towards ray k + 1 (the last row and
-//   column at their ray's own angle);
-// - <gaussianNoise> is added to x, y and z of a point short of max - min, and to every intensity
+// - rows from the lowest up, each from the first azimuth; a ray that hits nothing reads its full
+//   length, max; a range below min is -inf and above max +inf (REP 117, gazebo_ros_pkgs 2.9.2's
+//   clipping fix: before it, ranges were held to max - min); a point sits at the mean angle of the
+//   ray pair its range is interpolated between, so with <resolution> 1 point k carries ray k's
+//   range half a step towards ray k + 1 (the last row and column at their ray's own angle);
+// - <gaussianNoise> is added to x, y and z of a point short of max, and to every intensity
 //   (Gazebo's retro values: 0 here);
 // - <updateRate> and <hokuyoMinIntensity> are read and not used, as upstream.
 // A single row or column (upstream divides by zero there: NaN points) sits at its min angle.
@@ -47,7 +48,7 @@ public:
     const LaserScan& scan = lidar_->latest();
     const SensorDescription& d = lidar_->description();
     const int columns = d.horizontal_samples, rows = scan.vertical_samples;
-    const double span = double(scan.range_max) - double(scan.range_min);
+    const double range_min = scan.range_min, range_max = scan.range_max;
     cloud_.header.stamp = rosTime(scan.stamp_ns);
     cloud_.points.resize(size_t(columns) * rows);
     cloud_.channels.resize(1);
@@ -62,12 +63,16 @@ public:
         const double yaw = pairAngle(column, columns, d.horizontal_min_angle, d.horizontal_max_angle);
         const float ray = scan.ranges[size_t(column) + size_t(row) * columns];
         // Gazebo's ray reads its full length where it hits nothing.
-        const double r = std::min(std::isfinite(ray) ? double(ray) : ray > 0 ? double(scan.range_max) : double(scan.range_min), span);
+        double r = std::isfinite(ray) ? double(ray) : ray > 0 ? range_max : -kInfinity;
+        if (r < range_min)
+          r = -kInfinity;
+        else if (r > range_max)
+          r = kInfinity;
         geometry_msgs::Point32& point = cloud_.points[k];
         point.x = float(r * std::cos(pitch) * std::cos(yaw));
         point.y = float(r * std::cos(pitch) * std::sin(yaw));
         point.z = float(r * std::sin(pitch));
-        if (std::fabs(span - r) >= 1e-6)
+        if (std::fabs(range_max - r) > 1e-6)  // upstream's EPSILON_DIFF
         {
           point.x += float(gaussian_kernel_(0.0, gaussian_noise_));
           point.y += float(gaussian_kernel_(0.0, gaussian_noise_));
@@ -80,6 +85,8 @@ public:
   }
 
 private:
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
   // The angle upstream gives sample `i` of `count` rays over [min, max]: the mean of ray i's and
   // ray i + 1's (the last ray's own), rays being spaced (max - min) / (count - 1).
   static double pairAngle(int i, int count, double min, double max)

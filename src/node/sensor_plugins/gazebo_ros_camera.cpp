@@ -25,9 +25,13 @@ void GazeboRosCamera::OnUpdate()
 {
   if (!takeUpdate(*camera_))
     return;
+  publish(camera_->latest());
+}
+
+void GazeboRosCamera::publish(const CameraFrame& frame)
+{
   // Images are serialized from the frame as roscpp sends them, only for topics with subscribers
   // (frame_messages.h).
-  const CameraFrame& frame = camera_->latest();
   const std_msgs::Header header = frameHeader(frame, frame_id_);
   image_pub_.publish(RgbImageOf{frame, header});
   info_pub_.publish(cameraInfo(frame, header));

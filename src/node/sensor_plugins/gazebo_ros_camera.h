@@ -21,6 +21,8 @@ public:
   void OnUpdate() override;
 
 protected:
+  // The frame's image and info, then publishFrame's topics.
+  void publish(const CameraFrame& frame);
   // After the image and its info, with the same frame (the depth plugin's extra topics).
   virtual void publishFrame(const CameraFrame& frame, const std_msgs::Header& header) {}
   sensor_msgs::CameraInfo cameraInfo(const CameraFrame& f, const std_msgs::Header& header) const;

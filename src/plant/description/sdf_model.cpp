@@ -718,7 +718,7 @@ ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& sour
   out.name = attribute(model, "name", "model");
 
   out.robot.base_dir = source.dir;
-  out.robot.sdf_collision_names = true;
+  out.robot.format = RobotDescription::Format::Sdf;
   out.robot.is_static = isTrue(xml::childText(model, "static", "false"));
   ModelParts parts;
   parts.name = out.name;

@@ -405,11 +405,8 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
   }
   if (const tinyxml2::XMLElement* state = w->FirstChildElement("state"))
     applyState(state, source, world);
-  bool has_plane = false;
-  for (const StaticCollision& c : world.collisions)
-    has_plane = has_plane || c.shape.kind == Shape::Kind::Plane;
-  if (!has_plane)
-    addGroundPlane("ground_plane", urdf::Pose(), world);
+  // A world gets the ground its file gives it and no other, as in Gazebo: a house whose floor is a
+  // mesh has no plane under it, a world of objects in the void has nothing to fall on.
   return world;
 }
 

@@ -281,7 +281,8 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
     if (urdf::LinkConstSharedPtr owner = model.getLink(body.link))
     {
       size_t index = 0;
-      nameLumpedCollisions(model, body.link, *owner, r.description.sdf_collision_names, sdf_names, index);
+      nameLumpedCollisions(model, body.link, *owner, r.description.format == RobotDescription::Format::Sdf,
+                           sdf_names, index);
     }
   for (const auto& kv : placement)
   {
