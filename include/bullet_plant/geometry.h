@@ -11,11 +11,13 @@ namespace bullet_plant
 {
 struct Shape
 {
-  enum class Kind { Box, Cylinder, Sphere, Plane, Mesh };
+  // Capsule and Ellipsoid: SDF 1.8's (sdformat 11), which the plant reads in every version.
+  enum class Kind { Box, Cylinder, Sphere, Plane, Mesh, Capsule, Ellipsoid };
   Kind kind = Kind::Box;
   std::array<double, 3> box_size{{0, 0, 0}};  // full lengths x y z
-  double radius = 0.0;                          // cylinder, sphere
-  double length = 0.0;                          // cylinder, along its z axis
+  double radius = 0.0;                          // cylinder, sphere, capsule
+  double length = 0.0;                          // cylinder, and a capsule's cylindrical part, along its z axis
+  std::array<double, 3> radii{{0, 0, 0}};      // ellipsoid, along its x y z axes
   urdf::Vector3 normal{0, 0, 1};                // plane, through the shape origin
   std::string mesh_uri;                         // mesh: as written in the URDF/SDF (for messages)
   std::string mesh_file;                        // mesh: the file it resolved to (resolveUri)

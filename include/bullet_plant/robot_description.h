@@ -14,6 +14,8 @@
 #include <urdf_model/model.h>
 #include <urdf_world/types.h>
 
+#include "bullet_plant/geometry.h"
+
 namespace bullet_plant
 {
 // Thrown for input that cannot describe a robot or world; the message names the offending thing.
@@ -155,6 +157,21 @@ struct JointSpring
   double stiffness = 0.0, reference = 0.0;
 };
 
+// A shape URDF has no element for (SDF's capsule and ellipsoid) in the URDF tree: a urdf::Mesh
+// without a file, which code that knows only URDF's shapes finds nothing in, carrying the shape.
+struct ShapeGeometry : urdf::Mesh
+{
+  Shape shape;
+};
+
+// SDF's per-link physics that URDF cannot say, with SDF's defaults.
+struct LinkPhysics
+{
+  bool gravity = true;        // <gravity>: false, the link feels no gravity
+  bool kinematic = false;     // <kinematic>: moved only by the states and velocities set, not by dynamics
+  bool self_collide = false;  // <self_collide>, else its model's: collides with the model's other links
+};
+
 struct TransmissionDescription
 {
   std::string name;
@@ -201,6 +218,10 @@ struct RobotDescription
   // body of a link, and not listed among the robot's links.
   std::set<std::string> frame_links;
   std::map<std::string, JointSpring> joint_springs;  // by joint
+  // From SDF: each link's <gravity>, <kinematic>, <self_collide>; a link not listed has the defaults.
+  std::map<std::string, LinkPhysics> link_physics;
+  // SDF's <model><allow_auto_disable> (false in the model or a nested one): the model never sleeps.
+  bool allow_auto_disable = true;
   // The format the model was written in. Gazebo treats the two apart in two ways the plant keeps: an
   // SDF model's collisions keep their SDF names ("model::link::collision") where sdformat's URDF
   // converter names a URDF's after their link ("link_collision"); and an SDF model (a world file's

@@ -56,8 +56,11 @@ public:
   void setTimeStep(double seconds);
   urdf::Vector3 gravity() const;
   void setGravity(const urdf::Vector3& gravity);
-  // The constraint solver's passes per step (get_physics_properties' sor_pgs_iters).
+  // The constraint solver's passes per step (get_physics_properties' sor_pgs_iters), its contact
+  // rows' over-relaxation (sor_pgs_w) and the depth its contacts leave, m (contact_surface_layer).
   int solverIterations() const;
+  double solverRelaxation() const;
+  double contactSurfaceLayer() const;
   int64_t timeNs() const;         // simulated time
   double time() const;
   uint64_t steps() const;

@@ -51,6 +51,8 @@ struct LightDescription
 // The physics step's range: below a nanosecond the step rounds to zero simulated nanoseconds and
 // time never advances; beyond 0.1 s nothing the plant simulates stays stable.
 constexpr double kMinStepSize = 1e-9, kMaxStepSize = 0.1;  // s
+// The most solver passes a step the plant takes from <iters> (ODE's quick step default: 50).
+constexpr int kMaxSolverIterations = 1000;
 
 struct WorldDescription
 {
@@ -64,7 +66,17 @@ struct WorldDescription
   // <physics><ode><constraints><contact_max_correcting_vel>: the fastest a contact corrects a
   // penetration, m/s (Gazebo's default).
   double contact_max_correcting_vel = 100.0;
+  // <physics><ode> settings the plant's solver (Bullet's sequential impulses, iterated as ODE's quick
+  // step) has an equivalent of, where the world gives them; otherwise the plant's own (10 passes,
+  // no over-relaxation, no penetration allowed): <solver><iters> (1 .. kMaxSolverIterations),
+  // <solver><sor> (over-relaxation of the contacts' rows, (0, 2)), <constraints><contact_surface_layer>
+  // (the depth contacts leave, m).
+  int solver_iterations = 0;             // 0: not given
+  double sor = 0.0;                      // 0: not given
+  double contact_surface_layer = -1.0;   // < 0: not given
   urdf::Vector3 gravity{0, 0, -9.8};
+  // <magnetic_field> (tesla, world frame): SDF's default, Gazebo's for its magnetometer sensors.
+  urdf::Vector3 magnetic_field{5.5645e-6, 22.8758e-6, -42.3884e-6};
   urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
   // <scene>: what cameras see where nothing is hit, and the share of light a surface facing away
   // from the sun still gets (the mean of <ambient>'s red, green and blue).

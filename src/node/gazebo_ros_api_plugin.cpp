@@ -559,7 +559,9 @@ bool GazeboRosApiPlugin::getPhysicsProperties(gazebo_msgs::GetPhysicsProperties:
   res.max_update_rate = plant_.realTimeFactor() > 0 ? plant_.realTimeFactor() / world_.timeStep() : 0.0;
   res.gravity = toMsg(world_.gravity());
   res.ode_config.sor_pgs_iters = world_.solverIterations();
-  res.ode_config.sor_pgs_w = 1.0;
+  res.ode_config.sor_pgs_w = world_.solverRelaxation();
+  res.ode_config.contact_surface_layer = world_.contactSurfaceLayer();
+  res.ode_config.contact_max_correcting_vel = world_.description().contact_max_correcting_vel;
   res.success = true;
   res.status_message = "GetPhysicsProperties: got properties";
   return true;

@@ -69,7 +69,7 @@ void init_world(py::module_& m)
       .def_property_readonly("file", [](PyWorld& w) { return w.world->description().file; },
                              "the world file ('' for a world from text)")
       .def("static_collisions", [](PyWorld& w) {
-        static const char* kind_names[] = {"box", "cylinder", "sphere", "plane", "mesh"};
+        static const char* kind_names[] = {"box", "cylinder", "sphere", "plane", "mesh", "capsule", "ellipsoid"};
         py::list out;
         for (const StaticCollision& c : w.world->description().collisions)
         {
@@ -154,6 +154,13 @@ void init_world(py::module_& m)
           throw py::value_error("gravity is three numbers (m/s^2, world frame)");
         w.world->setGravity(urdf::Vector3(g[0], g[1], g[2]));
       }, "m/s^2, world frame (gazebo's set_physics_properties); setting it wakes every model asleep")
+      .def_property_readonly("magnetic_field", [](PyWorld& w) {
+        const urdf::Vector3& b = w.world->description().magnetic_field;
+        return std::vector<double>{b.x, b.y, b.z};
+      }, "the world's <magnetic_field>, tesla, world frame (SDF's default where it gives none)")
+      .def_property_readonly("solver_iterations", [](PyWorld& w) { return w.world->solverIterations(); },
+                             "the constraint solver's passes a step (<physics><ode><solver><iters>, else 10; "
+                             "get_physics_properties' sor_pgs_iters)")
       .def_property_readonly("steps", [](PyWorld& w) { return w.world->steps(); })
       .def("spawn", [](PyWorld& w, const std::string& urdf, const std::string& name, std::vector<double> pose,
                        const std::string& ns, std::map<std::string, double> joints) {

@@ -135,14 +135,21 @@ HOSTILE_NUMBERS = ['nan', 'inf', '-inf', '1e300', '-1e300', '0', '-1', '1e-300',
 MODEL_WORLD = """<?xml version="1.0"?>
 <sdf version="{version}"><world name="fuzz">
   <include><uri>model://ground_plane</uri></include>
-  <physics type="ode"><max_step_size>0.001</max_step_size></physics>
-  <model name="arm"><pose>0 0 0.5 0 0 0.3</pose>
+  <physics type="ode"><max_step_size>0.001</max_step_size>
+    <ode><solver><iters>20</iters><sor>1.3</sor></solver><constraints><erp>0.2</erp>
+      <contact_surface_layer>0.001</contact_surface_layer></constraints></ode></physics>
+  <magnetic_field>5.5645e-6 22.8758e-6 -42.3884e-6</magnetic_field>
+  <model name="arm"><pose>0 0 0.5 0 0 0.3</pose><self_collide>true</self_collide>
+    <allow_auto_disable>false</allow_auto_disable>
     <link name="base"><inertial><mass>2</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz></inertia></inertial>
-      <collision name="c"><geometry><box><size>0.3 0.3 0.3</size></box></geometry></collision></link>
+      <collision name="c"><geometry><box><size>0.3 0.3 0.3</size></box></geometry></collision>
+      <visual name="v"><geometry><ellipsoid><radii>0.2 0.15 0.1</radii></ellipsoid></geometry></visual></link>
     <link name="upper"><pose>0 0 0.4 0 0 0</pose>
       <collision name="c"><geometry><cylinder><radius>0.05</radius><length>0.5</length></cylinder></geometry></collision></link>
-    <link name="lower"><pose>0.2 0 0.6 0 1.2 0</pose>
-      <collision name="c"><geometry><sphere><radius>0.05</radius></sphere></geometry></collision></link>
+    <link name="lower"><pose>0.2 0 0.6 0 1.2 0</pose><self_collide>false</self_collide>
+      <collision name="c"><geometry><sphere><radius>0.05</radius></sphere></geometry></collision>
+      <collision name="pill"><pose>0 0 0.1 0 0 0</pose><geometry><capsule><radius>0.03</radius><length>0.1</length>
+        </capsule></geometry></collision></link>
     <frame name="elbow" attached_to="upper"><pose>0 0 0.25 0 0 0</pose></frame>
     <joint name="shoulder" type="revolute"><parent>base</parent><child>upper</child><pose>0 0 -0.25 0 0 0</pose>
       <axis><xyz expressed_in="__model__">0 1 0</xyz><use_parent_model_frame>true</use_parent_model_frame>
@@ -153,7 +160,8 @@ MODEL_WORLD = """<?xml version="1.0"?>
       <axis><xyz>1 0 0</xyz></axis><axis2><xyz>0 1 0</xyz><limit><lower>-0.5</lower><upper>0.5</upper></limit></axis2></joint>
     <model name="hand"><pose>0.4 0 0.6 0 0 0</pose>
       <link name="palm"><collision name="c"><geometry><box><size>0.1 0.1 0.02</size></box></geometry></collision></link>
-      <link name="finger"><pose>0 0.05 0 0 0 0</pose></link>
+      <link name="finger"><pose>0 0.05 0 0 0 0</pose><gravity>false</gravity>
+        <collision name="tip"><geometry><ellipsoid><radii>0.02 0.01 0.01</radii></ellipsoid></geometry></collision></link>
       <joint name="slide" type="prismatic"><parent>palm</parent><child>finger</child>
         <axis><xyz>0 1 0</xyz><limit><lower>0</lower><upper>0.04</upper></limit></axis></joint>
     </model>
@@ -164,7 +172,8 @@ MODEL_WORLD = """<?xml version="1.0"?>
   <model name="loop"><pose>-2 0 1 0 0 0</pose><include><uri>model://loop_a</uri></include></model>
   <include><uri>model://loop_b</uri><pose>-2 2 1 0 0 0</pose></include>
   <model name="crate"><static>{static}</static><pose>0 2 0.2 0 0 0</pose>
-    <link name="link"><collision name="c"><geometry><box><size>0.4 0.4 0.4</size></box></geometry></collision>
+    <link name="link"><kinematic>true</kinematic>
+      <collision name="c"><geometry><box><size>0.4 0.4 0.4</size></box></geometry></collision>
       <collision name="m"><geometry><mesh><uri>model://nowhere/mesh.stl</uri></mesh></geometry></collision></link></model>
   {extra}
 </world></sdf>"""

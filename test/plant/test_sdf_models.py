@@ -3,8 +3,9 @@ with them: the model frame and link poses, joint axes per SDF version (1.4: the 
 1.6: <use_parent_model_frame>; 1.7: <xyz expressed_in>), a joint frame apart from its child link, 1.7
 <pose relative_to> and <frame attached_to>, nested and included models scoped as Gazebo scopes them,
 <static> models as scenery, limits, SDF's defaults (1 kg, unit inertia), Gazebo's collision names;
-and bad models refused one by one, naming model, element and value, while the world keeps the
-others. Fixtures are inline but for the model directory test/fixtures/sdf_models/swing_arm."""
+SDF 1.8's capsule and ellipsoid as scenery, in the viewer's scene and in a depth camera's image; and
+bad models refused one by one, naming model, element and value, while the world keeps the others
+(bad solver settings and magnetic fields refuse the world). Fixtures are inline but for the model directory test/fixtures/sdf_models/swing_arm."""
 import math
 import os
 
@@ -397,6 +398,29 @@ BAD = {
     'unknown joint type': (link('body') + link('arm') + joint('j', 'body', 'arm', type='hinge'),
                            r"joint 'j'.*type 'hinge'"),
     'duplicate link names': (link('body') + link('body'), r"link 'body' is given twice"),
+    'capsule of negative radius': (
+        link('body', extra='<collision name="cap"><geometry><capsule><radius>-0.1</radius><length>0.2</length>'
+                           '</capsule></geometry></collision>'), r"link 'body' collision 'cap'.*<capsule> radius -0.1"),
+    'capsule of nan length': (
+        link('body', extra='<collision name="cap"><geometry><capsule><radius>0.1</radius><length>nan</length>'
+                           '</capsule></geometry></collision>'), r"link 'body' collision 'cap'.*<capsule><length>.*'nan'"),
+    'ellipsoid with a nan radius': (
+        link('body', extra='<visual name="egg"><geometry><ellipsoid><radii>0.1 nan 0.1</radii></ellipsoid></geometry>'
+                           '</visual>'), r"link 'body' visual 'egg'.*<ellipsoid><radii>.*0.1 nan 0.1"),
+    'ellipsoid with a zero radius': (
+        link('body', extra='<collision name="egg"><geometry><ellipsoid><radii>0.1 0.1 0</radii></ellipsoid>'
+                           '</geometry></collision>'), r"link 'body' collision 'egg'.*<ellipsoid><radii> 0.1 0.1 0"),
+    'ellipsoid with two radii': (
+        link('body', extra='<collision name="egg"><geometry><ellipsoid><radii>0.1 0.1</radii></ellipsoid>'
+                           '</geometry></collision>'), r"link 'body' collision 'egg'.*<ellipsoid><radii>"),
+    'gravity that is no boolean': (link('body', extra='<gravity>maybe</gravity>'),
+                                   r"link 'body'.*<gravity> 'maybe' is not a boolean"),
+    'kinematic that is no boolean': (link('body', extra='<kinematic>2</kinematic>'),
+                                     r"link 'body'.*<kinematic> '2' is not a boolean"),
+    'self_collide that is no boolean': ('<self_collide>yes</self_collide>' + link('body'),
+                                        r"<self_collide> 'yes' is not a boolean"),
+    'allow_auto_disable that is no boolean': ('<allow_auto_disable>nan</allow_auto_disable>' + link('body'),
+                                              r"<allow_auto_disable> 'nan' is not a boolean"),
     'four-bar loop': (link('ground') + link('crank') + link('coupler') + link('rocker')
                       + joint('j1', 'ground', 'crank') + joint('j2', 'crank', 'coupler')
                       + joint('j3', 'ground', 'rocker') + joint('j4', 'rocker', 'coupler'),
@@ -501,3 +525,91 @@ def test_a_joint_spring_the_physics_does_not_simulate_is_said():
         'j', 'base', 'arm', axis='<axis><xyz>1 0 0</xyz><dynamics><spring_stiffness>5</spring_stiffness></dynamics></axis>'))
     w, robot = spawn(sdf)
     assert [m for m in logged(w, 'WARN') if "joint 'j'" in m and 'spring_stiffness> 5' in m and 'not simulated' in m]
+
+
+# SDF 1.8's capsule and ellipsoid, <link> physics and the world's <physics> as read.
+
+def test_capsules_and_ellipsoids_are_static_scenery_and_what_viewers_draw():
+    shapes = ('<collision name="cap"><geometry><capsule><radius>0.1</radius><length>0.3</length></capsule></geometry>'
+              '</collision><visual name="egg"><geometry><ellipsoid><radii>0.3 0.2 0.1</radii></ellipsoid></geometry>'
+              '</visual>')
+    w = load(world(model('shelf', link('board', '0 0 0.5 0 0 0', extra=shapes), static=True),
+                   model('toy', link('body', '2 0 0.5 0 0 0', extra=shapes))))
+    kinds = {c['name']: c['kind'] for c in w.static_collisions()}
+    assert kinds['shelf::board::cap'] == 'capsule'
+    import json
+    drawn = {v['link']: v for v in json.loads(w.scene_json())['visuals'] if v['kind'] == 'ellipsoid'}
+    assert set(drawn) == {'shelf::board::egg', 'toy::body'}
+    assert drawn['toy::body']['radii'] == pytest.approx([0.3, 0.2, 0.1])
+    assert not [m for m in logged(w, 'WARN') if 'capsule' in m or 'ellipsoid' in m]
+
+
+def test_a_depth_camera_sees_an_ellipsoid_and_a_capsule_where_they_are():
+    # A depth camera 2 m up looking straight down at an ellipsoid (radii 0.3 0.2 0.1) and a standing
+    # capsule (radius 0.1, cylinder 0.3), both visuals only, the ellipsoid's link feeling no gravity:
+    # every point the camera measures on them lies on their surfaces, and the ellipsoid's top is at
+    # 1 + c, the capsule's at 1 + 0.15 + 0.1.
+    shapes = model('shapes', """<link name="egg"><pose>0 0 1 0 0 0</pose><gravity>false</gravity>
+      <visual name="v"><geometry><ellipsoid><radii>0.3 0.2 0.1</radii></ellipsoid></geometry></visual></link>""")
+    pill = model('pill', """<link name="pill"><pose>0.45 0 1 0 0 0</pose>
+      <visual name="v"><geometry><capsule><radius>0.1</radius><length>0.3</length></capsule></geometry></visual>
+      </link>""", static=True)
+    eye = model('eye', """<link name="eye"><pose>0.2 0 3 0 1.5707963267948966 0</pose>
+      <sensor name="depth" type="depth"><update_rate>100</update_rate><camera><horizontal_fov>0.6</horizontal_fov>
+        <image><width>96</width><height>96</height><format>R8G8B8</format></image><clip><near>0.1</near><far>10</far></clip>
+      </camera></sensor></link>""", static=True)
+    w = load(world(shapes, pill, eye))
+    eye = w.robot('eye')
+    eye.enable_sensor('depth')
+    w.step(30)
+    frame = eye.image('depth')
+    if frame is None:
+        pytest.skip('no OpenGL: ' + '; '.join(m for m in logged(w, 'WARN') + logged(w, 'INFO') if 'cameras' in m))
+    # optical frame: z along the camera's x (down), x along its -y, y along its -z (-x of the world)
+    rotation = np.column_stack([[0, -1, 0], [-1, 0, 0], [0, 0, -1]])
+    origin = np.array([0.2, 0, 3.0])
+    points = frame['points'].reshape(-1, 3) @ rotation.T + origin
+    depth = frame['depth'].reshape(-1)
+    hit = np.isfinite(depth) & (points[:, 2] > 0.5)
+    egg = hit & (points[:, 0] < 0.32)
+    pill = hit & (points[:, 0] > 0.33)
+    assert egg.sum() > 200 and pill.sum() > 50
+    e = points[egg] - [0, 0, 1]
+    assert np.abs((e[:, 0] / 0.3) ** 2 + (e[:, 1] / 0.2) ** 2 + (e[:, 2] / 0.1) ** 2 - 1).max() < 0.02
+    c = points[pill] - [0.45, 0, 1]
+    axis = np.clip(c[:, 2], -0.15, 0.15)
+    assert np.abs(np.sqrt(c[:, 0] ** 2 + c[:, 1] ** 2 + (c[:, 2] - axis) ** 2) - 0.1).max() < 2e-3
+    assert points[egg][:, 2].max() == pytest.approx(1.1, abs=2e-3)
+    assert points[pill][:, 2].max() == pytest.approx(1.25, abs=2e-3)
+    assert w.robot('shapes').link_pose('egg')[2] == pytest.approx(1.0, abs=1e-9)  # no gravity: it stays
+
+
+def test_a_kinematic_link_beyond_the_base_is_said_to_move_by_dynamics():
+    w, robot = spawn(model('arm', link('body', '0 0 0.05 0 0 0') + link('tip', '0.3 0 0.05 0 0 0',
+                                                                          extra='<kinematic>true</kinematic>')
+                           + joint('j', 'body', 'tip')), 'arm')
+    warnings = logged(w, 'WARN')
+    assert any("'tip'" in m and 'kinematic' in m for m in warnings), warnings
+
+
+@pytest.mark.parametrize('ode, expected', [
+    ('<solver><iters>0</iters></solver>', r'<solver><iters> 0'),
+    ('<solver><iters>2.5</iters></solver>', r'<solver><iters> 2.5'),
+    ('<solver><iters>nan</iters></solver>', r"<solver><iters>.*'nan'"),
+    ('<solver><sor>2</sor></solver>', r'<solver><sor> 2'),
+    ('<solver><sor>-1</sor></solver>', r'<solver><sor> -1'),
+    ('<constraints><contact_surface_layer>-0.001</contact_surface_layer></constraints>',
+     r'<contact_surface_layer> -0.001'),
+    ('<constraints><contact_surface_layer>inf</contact_surface_layer></constraints>', r"<contact_surface_layer>.*'inf'"),
+])
+def test_a_world_with_a_solver_setting_it_cannot_take_is_refused_naming_it(ode, expected):
+    with pytest.raises(bp.DescriptionError, match=expected):
+        bp.World.from_sdf(f'<?xml version="1.0"?><sdf version="1.6"><world name="w"><physics type="ode"><ode>{ode}'
+                          '</ode></physics></world></sdf>')
+
+
+@pytest.mark.parametrize('field', ['1 2', 'nan 0 0', '1e-5 inf 0'])
+def test_a_world_with_a_magnetic_field_that_is_not_one_is_refused(field):
+    with pytest.raises(bp.DescriptionError, match='<magnetic_field>'):
+        bp.World.from_sdf(f'<?xml version="1.0"?><sdf version="1.6"><world name="w"><magnetic_field>{field}'
+                          '</magnetic_field></world></sdf>')

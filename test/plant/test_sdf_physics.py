@@ -2,7 +2,11 @@
 an incline (sticking below atan(mu), sliding at g (sin - mu cos) above), a prismatic joint's limit, a
 box dropped on the ground landing flat and resting, a stack of boxes standing, a ball's <bounce> (to
 e^2 h, Gazebo's smaller-of-two restitution and threshold), a joint's <spring_stiffness> (at
-sqrt(k / I), and stable when stiff). Models are SDF text spawned into the plant's default world
+sqrt(k / I), and stable when stiff); SDF 1.8's capsule and ellipsoid resting at their half height,
+met by rays on their surfaces, a capsule rolling at v0 / (1 + I / (m r^2)); <gravity>false (a floating
+box, a pendulum's period from its other mass), <kinematic> (moved by its velocity alone),
+<self_collide> (an arm folding onto its own base), <allow_auto_disable>, and the world's ODE
+<iters>, <sor> and <contact_surface_layer> against one Gauss-Seidel sweep's arithmetic. Models are SDF text spawned into the plant's default world
 (ground plane at z = 0, 1 ms steps, g = 9.8) or an SDF world of their own."""
 import math
 
@@ -252,3 +256,263 @@ def test_a_stiff_joint_spring_stays_stable_and_settles_at_its_reference():
         swing = max(swing, abs(q - reference))
     assert swing <= reference + 1e-6
     assert q == pytest.approx(reference, abs=1e-4) and abs(qd) < 1e-2
+
+
+# SDF 1.8's capsule and ellipsoid.
+
+def shape_link(name, geometry, mass, inertia, pose='0 0 0 0 0 0', extra=''):
+    """A link whose collision and visual are `geometry` (SDF text), its principal moments `inertia`."""
+    ixx, iyy, izz = inertia
+    return (f'<link name="{name}"><pose>{pose}</pose><inertial><mass>{mass}</mass><inertia><ixx>{ixx}</ixx>'
+            f'<iyy>{iyy}</iyy><izz>{izz}</izz></inertia></inertial>'
+            f'<collision name="c"><geometry>{geometry}</geometry></collision>'
+            f'<visual name="v"><geometry>{geometry}</geometry></visual>{extra}</link>')
+
+
+CAPSULE = '<capsule><radius>0.1</radius><length>0.4</length></capsule>'
+ELLIPSOID = '<ellipsoid><radii>0.3 0.2 0.1</radii></ellipsoid>'
+
+
+@pytest.mark.parametrize('geometry, roll, half_height', [
+    (CAPSULE, 0.0, 0.2 + 0.1),            # standing: half its cylinder plus a hemisphere
+    (CAPSULE, math.pi / 2, 0.1),          # lying: its radius
+    (ELLIPSOID, 0.0, 0.1),                # its smallest radius vertical, the stable way up
+], ids=['capsule standing', 'capsule lying', 'ellipsoid'])
+def test_a_capsule_and_an_ellipsoid_rest_at_their_half_height(geometry, roll, half_height):
+    w = bp.World()
+    body = w.spawn(sdf(shape_link('l', geometry, 1.0, (0.01, 0.01, 0.005))), 'shape',
+                   [0, 0, half_height + 0.01, roll, 0, 0])
+    w.step(1500)
+    p = body.base_pose()
+    assert p[2] == pytest.approx(half_height, abs=1e-3)
+    assert tilt(p) == pytest.approx(math.degrees(roll), abs=0.5)
+    assert np.linalg.norm(body.base_twist()[0]) < 1e-3  # at rest
+
+
+def test_the_rays_of_lidars_meet_a_capsule_and_an_ellipsoid_on_their_surfaces():
+    # Straight down onto each, off its centre: the capsule's hemisphere at x = 0.25 (0.05 beyond its
+    # cylinder) is sqrt(r^2 - 0.05^2) above the end's centre; the ellipsoid at x = 0.2 is
+    # c sqrt(1 - (x/a)^2) above its own.
+    w = bp.World()
+    w.spawn(sdf(shape_link('l', CAPSULE, 1.0, (0.01, 0.01, 0.005), pose='0 0 0 0 1.5707963267948966 0') +
+                '<static>true</static>', 'capsule'), 'capsule', [0, 0, 1, 0, 0, 0])
+    w.spawn(sdf(shape_link('l', ELLIPSOID, 1.0, (0.01, 0.01, 0.005)) + '<static>true</static>', 'ellipsoid'),
+            'ellipsoid', [0, 3, 1, 0, 0, 0])
+    assert w.cast_ray([0.0, 0, 2], [0, 0, -1], 5.0) == pytest.approx(1 - 0.1, abs=1e-6)
+    assert w.cast_ray([0.25, 0, 2], [0, 0, -1], 5.0) == pytest.approx(1 - math.sqrt(0.1 ** 2 - 0.05 ** 2), abs=1e-6)
+    assert w.cast_ray([0.2, 3, 2], [0, 0, -1], 5.0) == pytest.approx(1 - 0.1 * math.sqrt(1 - (0.2 / 0.3) ** 2), abs=1e-6)
+    assert w.cast_ray([-1, 3, 1], [1, 0, 0], 5.0) == pytest.approx(1 - 0.3, abs=1e-6)
+
+
+def test_a_capsule_lying_down_rolls_at_v0_over_one_plus_i_over_m_r_squared():
+    # Pushed at v0 across its axis without spin, friction brings it to rolling at
+    # v = v0 / (1 + I / (m r^2)) (angular momentum about the contact line is kept), then it rolls on
+    # at v with omega = v / r. Its axis along y; I about it 0.5 m r^2: v = v0 / 1.5.
+    m, r, v0 = 1.0, 0.1, 1.0
+    axis_inertia = 0.5 * m * r * r
+    w = bp.World()
+    capsule = w.spawn(sdf(shape_link('l', CAPSULE, m, (0.004, 0.004, axis_inertia))), 'capsule',
+                      [0, 0, r, math.pi / 2, 0, 0])
+    w.step(10)
+    capsule.set_link_state('l', list(capsule.link_pose('l')), [v0, 0, 0], [0, 0, 0])
+    w.step(500)
+    linear, angular = capsule.base_twist()
+    v = v0 / (1 + axis_inertia / (m * r * r))
+    assert linear[0] == pytest.approx(v, rel=0.02)
+    assert angular[1] == pytest.approx(v / r, rel=0.02)  # rolling: about +y for +x
+    x0 = capsule.base_pose()[0]
+    w.step(1000)
+    assert capsule.base_pose()[0] - x0 == pytest.approx(v * 1.0, rel=0.02)  # and keeps rolling
+    assert capsule.base_pose()[2] == pytest.approx(r, abs=1e-3)
+
+
+# <link><gravity> and <kinematic>.
+
+def test_a_link_without_gravity_floats_where_it_is():
+    w = bp.World()
+    box = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 1.0).replace('</link>', '<gravity>false</gravity></link>')),
+                  'floating', [0, 0, 1, 0, 0, 0])
+    w.step(2000)
+    assert box.base_pose()[:3] == pytest.approx([0, 0, 1], abs=1e-9)
+    # and moves as a free body when pushed: 1 N on 1 kg for 0.5 s, s = a t^2 / 2 (none of it down)
+    box.apply_link_wrench('l', [1, 0, 0], start=w.time, duration=0.5)
+    w.step(500)
+    p = box.base_pose()
+    assert p[0] == pytest.approx(0.125, rel=0.01)
+    assert p[2] == pytest.approx(1, abs=1e-9)
+
+
+def two_mass_pendulum(weight_gravity):
+    """A rod hinged to the world at z = 2 (axis y) holding two point masses fixed to it: 1 kg at
+    0.5 m (the rod's link) and 2 kg at 1 m (a link of its own, fixed to the rod, with
+    <gravity>weight_gravity</gravity>); 0.05 rad from hanging."""
+    angle = 0.05
+    s, c = math.sin(angle), math.cos(angle)
+    gravity = '' if weight_gravity else '<gravity>false</gravity>'
+    model = sdf(f"""
+<link name="rod"><pose>{0.5 * s} 0 {2 - 0.5 * c} 0 {angle} 0</pose>{inertial(1.0, 1e-6)}</link>
+<link name="weight"><pose>{1.0 * s} 0 {2 - 1.0 * c} 0 {angle} 0</pose>{inertial(2.0, 1e-6)}{gravity}</link>
+<joint name="hinge" type="revolute"><parent>world</parent><child>rod</child>
+  <pose>0 0 0.5 0 0 0</pose><axis><xyz>0 1 0</xyz></axis></joint>
+<joint name="weld" type="fixed"><parent>rod</parent><child>weight</child></joint>""", 'pendulum')
+    w = bp.World()
+    p = w.spawn(model, 'pendulum', [0, 0, 0, 0, 0, 0])
+    t, q = [], []
+    for _ in range(15000):  # three periods and more
+        w.step(1)
+        t.append(w.time)
+        q.append(p.joint_state('hinge')[0])
+    return np.mean(np.diff(crossings(np.array(t), q)))
+
+
+@pytest.mark.parametrize('weight_gravity', [True, False])
+def test_a_pendulum_whose_weight_feels_no_gravity_swings_at_the_period_of_its_other_mass(weight_gravity):
+    # T = 2 pi sqrt(I / (g sum m l)), I = sum m l^2 = 1 * 0.25 + 2 * 1 = 2.25 kg m^2; gravity pulls on
+    # 1 * 0.5 + 2 * 1 = 2.5 kg m with the weight's gravity, 0.5 kg m without: the two links are one
+    # rigid body in the plant, which feels gravity on the rod's mass alone, at the rod's place.
+    inertia = 1.0 * 0.5 ** 2 + 2.0 * 1.0 ** 2
+    moment = 1.0 * 0.5 + (2.0 * 1.0 if weight_gravity else 0.0)
+    expected = 2 * math.pi * math.sqrt(inertia / (G * moment)) * (1 + 0.05 ** 2 / 16)
+    assert two_mass_pendulum(weight_gravity) == pytest.approx(expected, rel=0.005)
+
+
+def test_a_kinematic_link_moves_only_at_the_velocity_set_on_it():
+    # A kinematic 1 x 1 x 0.1 m platform at z = 1: gravity does not pull it, a 5 kg box dropped on it
+    # rests on it without pushing it down; set moving at 0.5 m/s along x and 0.2 rad/s about z, it
+    # moves 0.5 m and turns 0.2 rad in 1 s.
+    w = bp.World()
+    platform = w.spawn(sdf(box_link('deck', (1, 1, 0.1), 50.0).replace('</link>', '<kinematic>true</kinematic></link>')),
+                       'platform', [0, 0, 1, 0, 0, 0])
+    box = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 5.0)), 'box', [0, 0, 1.3, 0, 0, 0])
+    w.step(1500)
+    assert platform.base_pose()[:3] == pytest.approx([0, 0, 1], abs=1e-9)
+    assert box.base_pose()[2] == pytest.approx(1 + 0.05 + 0.1, abs=1e-3)
+    box.set_link_state('l', [3, 0, 0.1, 0, 0, 0, 1])  # out of the way
+    platform.set_link_state('deck', [0, 0, 1, 0, 0, 0, 1], [0.5, 0, 0], [0, 0, 0.2])
+    w.step(1000)
+    p = platform.base_pose()
+    assert p[:3] == pytest.approx([0.5, 0, 1], abs=1e-4)  # 1000 single-precision steps
+    assert 2 * math.atan2(p[5], p[6]) == pytest.approx(0.2, abs=1e-4)
+    linear, angular = platform.base_twist()
+    assert list(linear) == pytest.approx([0.5, 0, 0], abs=1e-9) and angular[2] == pytest.approx(0.2)
+
+
+# <self_collide>.
+
+def folding_arm(model_self_collide=None, arm_self_collide=None, base_self_collide=None):
+    """A base fixed to the world: a 0.4 m block under the arm's swing; a post on a vertical hinge held
+    by its limits, sunk into the base (joined to it, so never touching it); an arm hinged to the top
+    of the post at z = 0.6, 0.4 m long along x, released horizontal. Returns the arm's lowest angle
+    below horizontal (rad) over 1.5 s."""
+    model_flag = '' if model_self_collide is None else f'<self_collide>{str(model_self_collide).lower()}</self_collide>'
+    arm_flag = '' if arm_self_collide is None else f'<self_collide>{str(arm_self_collide).lower()}</self_collide>'
+    base_flag = '' if base_self_collide is None else f'<self_collide>{str(base_self_collide).lower()}</self_collide>'
+    model = sdf(f"""{model_flag}
+<link name="base">{inertial(10.0, 1.0)}{base_flag}
+  <collision name="slab"><pose>0 0 0.05 0 0 0</pose><geometry><box><size>1 1 0.1</size></box></geometry></collision>
+  <collision name="block"><pose>0.35 0 0.2 0 0 0</pose><geometry><box><size>0.3 0.3 0.4</size></box></geometry></collision>
+</link>
+<link name="post"><pose>0 0 0.3 0 0 0</pose>{inertial(1.0, 0.01)}
+  <collision name="c"><geometry><box><size>0.04 0.04 0.6</size></box></geometry></collision></link>
+<link name="arm"><pose>0.2 0 0.6 0 0 0</pose>{inertial(1.0, 0.01)}{arm_flag}
+  <collision name="c"><geometry><box><size>0.4 0.02 0.02</size></box></geometry></collision></link>
+<joint name="anchor" type="fixed"><parent>world</parent><child>base</child></joint>
+<joint name="turn" type="revolute"><parent>base</parent><child>post</child><axis><xyz>0 0 1</xyz>
+  <limit><lower>-0.001</lower><upper>0.001</upper></limit></axis></joint>
+<joint name="elbow" type="revolute"><parent>post</parent><child>arm</child><pose>-0.2 0 0 0 0 0</pose>
+  <axis><xyz>0 1 0</xyz></axis></joint>""", 'folding')
+    w = bp.World()
+    robot = w.spawn(model, 'folding', [0, 0, 0, 0, 0, 0])
+    lowest = 0.0
+    for _ in range(1500):
+        w.step(1)
+        lowest = max(lowest, robot.joint_state('elbow')[0])  # +y turns +x down
+    return lowest
+
+
+def test_an_arm_folding_onto_its_own_base_stops_on_it_with_self_collide_and_passes_through_without():
+    # With self_collide the arm's lower face rests on the block's top (z = 0.4) where its far end
+    # reaches it: 0.6 - 0.4 sin(a) - 0.01 cos(a) = 0.4.
+    rest = next(a for a in np.linspace(0, 1, 100001) if 0.6 - 0.4 * math.sin(a) - 0.01 * math.cos(a) <= 0.4)
+    # Two links collide where either self-collides (SDF's rule, ODE's spaces): the model's flag is
+    # every link's default, a link's own replaces it.
+    assert folding_arm(model_self_collide=True) == pytest.approx(rest, abs=0.02)
+    assert folding_arm(arm_self_collide=True) == pytest.approx(rest, abs=0.02)
+    assert folding_arm(base_self_collide=True) == pytest.approx(rest, abs=0.02)
+    assert folding_arm(model_self_collide=True, arm_self_collide=False) == pytest.approx(rest, abs=0.02)
+    assert folding_arm() > math.pi / 2 - 0.05  # SDF's default: it swings through
+    assert folding_arm(model_self_collide=True, arm_self_collide=False, base_self_collide=False) > math.pi / 2 - 0.05
+
+
+# <allow_auto_disable> and <physics><ode>.
+
+def test_a_model_that_may_not_auto_disable_never_sleeps():
+    w = bp.World()
+    sleeper = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 1.0)), 'sleeper', [0, 0, 0.1, 0, 0, 0])
+    awake = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 1.0) + '<allow_auto_disable>false</allow_auto_disable>'),
+                    'awake', [1, 0, 0.1, 0, 0, 0])
+    w.step(3000)
+    assert sleeper.asleep and not awake.asleep
+
+
+def physics_world(ode, bodies, gravity='0 0 0'):
+    return bp.World.from_sdf(f"""<?xml version="1.0"?><sdf version="1.6"><world name="w">
+<gravity>{gravity}</gravity>
+<physics type="ode"><max_step_size>0.001</max_step_size><ode>{ode}</ode></physics>
+{bodies}</world></sdf>""")
+
+
+def balls(count):
+    """`count` 0.1 m balls of 1 kg in a row along x at z = 1, touching."""
+    return ''.join(f'<model name="b{k}"><pose>{0.2 * k} 0 1 0 0 0</pose><link name="l">{inertial(1.0, 0.004)}'
+                   '<collision name="c"><geometry><sphere><radius>0.1</radius></sphere></geometry></collision>'
+                   '</link></model>' for k in range(count))
+
+
+def after_one_step_of_a_hit(w, count, v=1.0):
+    """The balls' x velocities one step after the first, moving at v, meets the others at rest."""
+    w.robot('b0').set_link_state('l', [0, 0, 1, 0, 0, 0, 1], [v, 0, 0], [0, 0, 0])
+    w.step(1)
+    return [w.robot(f'b{k}').base_twist()[0][0] for k in range(count)]
+
+
+def test_the_solvers_iters_are_odes_sweeps_over_the_contacts():
+    # A ball at 1 m/s meets two resting in a row, no bounce: the exact (many-sweep) solve moves all
+    # three at 1/3 m/s; one Gauss-Seidel sweep shares the first pair's speed (1/2 each), then the
+    # second ball's with the third, and leaves the first ball at 1/2.
+    w = physics_world('<solver><iters>1</iters></solver>', balls(3))
+    assert w.solver_iterations == 1
+    assert after_one_step_of_a_hit(w, 3)[0] == pytest.approx(0.5, abs=0.01)
+    w = physics_world('<solver><iters>200</iters></solver>', balls(3))
+    assert w.solver_iterations == 200
+    assert after_one_step_of_a_hit(w, 3) == pytest.approx([1 / 3] * 3, abs=0.01)
+    assert physics_world('', balls(1)).solver_iterations == 10  # the plant's own without <iters>
+
+
+@pytest.mark.parametrize('sor', [1.0, 0.5, 1.3])
+def test_the_solvers_sor_over_relaxes_each_contact_row(sor):
+    # One sweep over one contact between equal balls: the row takes sor times the impulse that stops
+    # their approach, m v / 2: the first keeps v (1 - sor / 2), the second gets v sor / 2.
+    w = physics_world(f'<solver><iters>1</iters><sor>{sor}</sor></solver>', balls(2))
+    assert after_one_step_of_a_hit(w, 2) == pytest.approx([1 - sor / 2, sor / 2], abs=0.01)
+
+
+@pytest.mark.parametrize('layer', [0.0, 0.005])
+def test_contacts_leave_the_contact_surface_layer_of_depth(layer):
+    # ODE corrects a contact's depth beyond the layer only: a box rests `layer` deep in the ground.
+    box = '<model name="box"><pose>0 0 0.1 0 0 0</pose>' + box_link('l', (0.2, 0.2, 0.2), 1.0) + '</model>'
+    w = physics_world(f'<constraints><contact_surface_layer>{layer}</contact_surface_layer></constraints>',
+                      '<include><uri>model://ground_plane</uri></include>' + box, gravity='0 0 -9.8')
+    w.step(2000)
+    assert w.robot('box').base_pose()[2] == pytest.approx(0.1 - layer, abs=3e-4)
+
+
+def test_erp_and_cfm_are_said_once_as_not_applied_and_the_magnetic_field_is_read():
+    w = bp.World.from_sdf("""<?xml version="1.0"?><sdf version="1.6"><world name="w">
+<magnetic_field>1e-5 2e-5 -4e-5</magnetic_field>
+<physics type="ode"><ode><constraints><erp>0.2</erp><cfm>0.001</cfm></constraints></ode></physics>
+</world></sdf>""")
+    said = [text for level, text in w.messages() if 'not applied' in text]
+    assert len(said) == 1 and '<erp>' in said[0] and '<cfm>' in said[0], said
+    assert w.magnetic_field == pytest.approx([1e-5, 2e-5, -4e-5])
+    assert bp.World().magnetic_field == pytest.approx([5.5645e-6, 22.8758e-6, -42.3884e-6])  # SDF's default

@@ -182,6 +182,19 @@ function shapeOf(visual) {
     holder.add(mesh);
     return holder;
   }
+  if (visual.kind === 'capsule') {
+    const mesh = new THREE.Mesh(new THREE.CapsuleGeometry(visual.radius, visual.length, 8, 32),
+                                material(visual.colour));
+    mesh.rotation.x = Math.PI / 2;  // along y in three.js, along z in SDF
+    const holder = new THREE.Group();
+    holder.add(mesh);
+    return holder;
+  }
+  if (visual.kind === 'ellipsoid') {
+    const mesh = new THREE.Mesh(new THREE.SphereGeometry(1, 32, 16), material(visual.colour));
+    mesh.scale.set(visual.radii[0], visual.radii[1], visual.radii[2]);
+    return mesh;
+  }
   if (visual.kind === 'plane') {
     const mesh = new THREE.Mesh(new THREE.PlaneGeometry(GROUND_SIZE, GROUND_SIZE), material(visual.colour));
     const n = visual.normal;

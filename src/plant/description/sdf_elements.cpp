@@ -1,5 +1,6 @@
 #include "description/sdf_elements.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -34,6 +35,22 @@ std::string readFile(const std::string& path, const std::string& what)
 std::string directoryOf(const std::string& path) { return std::filesystem::absolute(path).parent_path().string(); }
 
 bool isTrue(const std::string& text) { return text == "true" || text == "1"; }
+
+bool readFlag(const tinyxml2::XMLElement* parent, const char* tag, bool fallback, const std::string& where)
+{
+  const tinyxml2::XMLElement* e = parent ? parent->FirstChildElement(tag) : nullptr;
+  if (!e)
+    return fallback;
+  const std::string text = xml::trimmed(e->GetText() ? e->GetText() : "");
+  std::string lower = text;
+  for (char& c : lower)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "true" || lower == "1")
+    return true;
+  if (lower == "false" || lower == "0")
+    return false;
+  throw DescriptionError(where + ": <" + tag + "> '" + text + "' is not a boolean: give true or false (1 or 0)");
+}
 
 namespace
 {
@@ -85,6 +102,35 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
       throw DescriptionError(where + ": <sphere><radius> " + formatNumber(shape.radius) +
                              " must be positive and at most " + formatNumber(kMaxLength) + " m");
   }
+  else if (auto* capsule = geometry->FirstChildElement("capsule"))
+  {
+    // SDF 1.8's (sdformat 11); defaults radius 0.5, length 1.
+    shape.kind = Shape::Kind::Capsule;
+    auto size = [&](const char* tag, double fallback) {
+      const std::string text = xml::childText(capsule, tag, "");
+      return text.empty() ? fallback : xml::numbers(text, 1, where + ": <capsule><" + tag + ">")[0];
+    };
+    shape.radius = size("radius", 0.5);
+    shape.length = size("length", 1.0);
+    if (!(shape.radius > 0 && shape.length >= 0 && shape.radius <= kMaxLength && shape.length <= kMaxLength))
+      throw DescriptionError(where + ": <capsule> radius " + formatNumber(shape.radius) + " length " +
+                             formatNumber(shape.length) + ": the radius must be positive, the length at least 0, "
+                             "both at most " + formatNumber(kMaxLength) + " m");
+  }
+  else if (auto* ellipsoid = geometry->FirstChildElement("ellipsoid"))
+  {
+    // SDF 1.8's (sdformat 11); default radii 1 1 1.
+    shape.kind = Shape::Kind::Ellipsoid;
+    const std::string text = xml::childText(ellipsoid, "radii", "1 1 1");
+    std::vector<double> radii = xml::numbers(text, 3, where + " <ellipsoid><radii>");
+    for (int i = 0; i < 3; ++i)
+    {
+      if (!(radii[i] > 0 && radii[i] <= kMaxLength))
+        throw DescriptionError(where + ": <ellipsoid><radii> " + xml::trimmed(text) +
+                               ": each radius must be positive and at most " + formatNumber(kMaxLength) + " m");
+      shape.radii[i] = radii[i];
+    }
+  }
   else if (auto* plane = geometry->FirstChildElement("plane"))
   {
     shape.kind = Shape::Kind::Plane;
@@ -100,7 +146,7 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
   {
     const tinyxml2::XMLElement* first = geometry->FirstChildElement();
     warnings.push_back(where + " in " + source.describe() + ": geometry <" + std::string(first ? first->Name() : "") +
-                       "> is not supported (box, cylinder, sphere, plane, mesh); " + left_out);
+                       "> is not supported (box, cylinder, sphere, capsule, ellipsoid, plane, mesh); " + left_out);
     return false;
   }
   return true;

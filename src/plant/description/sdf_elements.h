@@ -35,8 +35,12 @@ void parseXml(tinyxml2::XMLDocument& doc, const std::string& text, const Source&
 std::string readFile(const std::string& path, const std::string& what);
 std::string directoryOf(const std::string& path);
 bool isTrue(const std::string& text);
+// A boolean child element as sdformat reads one (true, false, 1, 0, any case; `fallback` without the
+// element). Throws DescriptionError naming `where`, the element and its text for anything else.
+bool readFlag(const tinyxml2::XMLElement* parent, const char* tag, bool fallback, const std::string& where);
 
-// The shape of a <geometry> (box, cylinder, sphere, plane, mesh with its <scale>); false with a
+// The shape of a <geometry> (box, cylinder, sphere, plane, mesh with its <scale>, and SDF 1.8's capsule
+// and ellipsoid); false with a
 // warning ending in `left_out` for a geometry the plant does not have or a mesh not found. Throws
 // DescriptionError for a size that is not positive.
 bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,

@@ -121,6 +121,7 @@ struct LinkPart
   urdf::Pose pose;   // in the top model's frame
   const tinyxml2::XMLElement* element;
   Source source;
+  bool model_self_collide;  // the <self_collide> of the model declaring it: the link's default
 };
 
 struct JointPart
@@ -182,6 +183,10 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
     throw DescriptionError("model '" + parts.name + "': models nested " + std::to_string(depth) + " deep at '" + scope +
                            "'; the plant reads at most " + std::to_string(sdf::kMaxModelDepth * 4));
   const int version = sdf::versionOf(model);
+  const std::string in_model = "model '" + parts.name + "'" + (scope.empty() ? "" : " (its model '" + scope + "')");
+  const bool self_collide = sdf::readFlag(model, "self_collide", false, in_model);
+  if (!sdf::readFlag(model, "allow_auto_disable", true, in_model))
+    out.allow_auto_disable = false;
   auto graph = std::make_shared<FrameGraph>(parts.name);
   FrameGraph& frames = *graph;
   // Every named frame first: a pose may be relative to one declared after it.
@@ -223,7 +228,7 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
                                  "must be unique in a model");
       std::string relative_to;
       const urdf::Pose pose = poseOf(e, relative_to);
-      parts.links.push_back({scope + name, compose(in_top, frames.resolve(relative_to, pose)), e, source});
+      parts.links.push_back({scope + name, compose(in_top, frames.resolve(relative_to, pose)), e, source, self_collide});
     }
     else if (tag == "joint")
     {
@@ -260,9 +265,6 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
       parts.plugins.push_back(e);
     else if (tag == "enable_wind" && sdf::isTrue(xml::trimmed(e->GetText() ? e->GetText() : "")))
       out.warnings.push_back("model '" + parts.name + "': <enable_wind> is ignored (the plant has no wind)");
-    else if (tag == "self_collide" && sdf::isTrue(xml::trimmed(e->GetText() ? e->GetText() : "")))
-      out.warnings.push_back("model '" + parts.name + "': <self_collide> is ignored: a model's links do not "
-                             "collide with each other in the plant");
   }
   return graph;
 }
@@ -358,6 +360,13 @@ urdf::GeometrySharedPtr toUrdfGeometry(const Shape& shape)
       mesh->scale = shape.scale;
       return mesh;
     }
+    case Shape::Kind::Capsule:
+    case Shape::Kind::Ellipsoid:
+    {
+      auto carried = std::make_shared<ShapeGeometry>();
+      carried->shape = shape;
+      return carried;
+    }
     case Shape::Kind::Plane:
       break;
   }
@@ -421,13 +430,11 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
   }
   if (!link->visual_array.empty())
     link->visual = link->visual_array.front();
-  for (const char* flag : {"gravity", "kinematic"})
-  {
-    const std::string text = xml::childText(part.element, flag, "");
-    if (!text.empty() && sdf::isTrue(text) != (std::string(flag) == "gravity"))
-      out.warnings.push_back(in_link + ": <" + flag + ">" + text + "</" + flag + "> is not simulated yet; the link "
-                             "moves as a dynamic link under gravity");
-  }
+  LinkPhysics physics;
+  physics.gravity = sdf::readFlag(part.element, "gravity", true, in_link);
+  physics.kinematic = sdf::readFlag(part.element, "kinematic", false, in_link);
+  physics.self_collide = sdf::readFlag(part.element, "self_collide", part.model_self_collide, in_link);
+  out.link_physics[part.name] = physics;
   readSensors(part.element, part.name, out);
   return link;
 }

@@ -293,6 +293,64 @@ void applyState(const tinyxml2::XMLElement* state, const Source& source, WorldDe
                              " are not applied (the models' joints start at their files' positions)");
 }
 
+// <physics><ode>'s solver settings: those the plant's solver has an equivalent of, checked; the
+// others said once as not applied.
+void readSolverSettings(const tinyxml2::XMLElement* physics, const Source& source, WorldDescription& world)
+{
+  const tinyxml2::XMLElement* ode = physics->FirstChildElement("ode");
+  if (!ode)
+    return;
+  auto number = [&](const char* path, const std::string& element) {
+    return xml::numbers(xml::childText(ode, path, ""), 1, "<physics><ode>" + element)[0];
+  };
+  auto fail = [](const std::string& element, double value, const std::string& range) {
+    std::ostringstream text;
+    text << "<physics><ode>" << element << " " << value << " " << range;
+    throw DescriptionError(text.str());
+  };
+  if (ode->FirstChildElement("solver") && ode->FirstChildElement("solver")->FirstChildElement("iters"))
+  {
+    const double iters = number("solver/iters", "<solver><iters>");
+    if (!(iters >= 1 && iters <= kMaxSolverIterations && iters == std::floor(iters)))
+      fail("<solver><iters>", iters, "must be a whole number of passes from 1 to " +
+                                         std::to_string(kMaxSolverIterations) + " (Gazebo's default: 50)");
+    world.solver_iterations = int(iters);
+  }
+  if (ode->FirstChildElement("solver") && ode->FirstChildElement("solver")->FirstChildElement("sor"))
+  {
+    world.sor = number("solver/sor", "<solver><sor>");
+    if (!(world.sor > 0 && world.sor < 2))
+      fail("<solver><sor>", world.sor, "must lie between 0 and 2, where over-relaxation converges (Gazebo's "
+                                       "default: 1.3)");
+  }
+  if (ode->FirstChildElement("constraints") &&
+      ode->FirstChildElement("constraints")->FirstChildElement("contact_surface_layer"))
+  {
+    world.contact_surface_layer = number("constraints/contact_surface_layer", "<constraints><contact_surface_layer>");
+    if (!(world.contact_surface_layer >= 0 && world.contact_surface_layer <= 1))
+      fail("<constraints><contact_surface_layer>", world.contact_surface_layer,
+           "must be a depth from 0 to 1 m (Gazebo's default: 0.001)");
+  }
+  std::string not_applied;
+  if (xml::childText(ode, "solver/type", "quick") == "world")
+    not_applied = "<type>world (dWorldStep's direct solve; the plant iterates)";
+  for (const char* path : {"solver/min_step_size", "solver/precon_iters", "solver/use_dynamic_moi_rescaling",
+                           "solver/friction_model", "solver/island_threads", "solver/thread_position_correction",
+                           "constraints/erp", "constraints/cfm"})
+  {
+    const std::string text(path);
+    const size_t slash = text.find('/');
+    const tinyxml2::XMLElement* group = ode->FirstChildElement(text.substr(0, slash).c_str());
+    if (group && group->FirstChildElement(text.substr(slash + 1).c_str()))
+      not_applied += (not_applied.empty() ? "<" : ", <") + text.substr(slash + 1) + ">";
+  }
+  if (!not_applied.empty())
+    world.warnings.push_back("<physics><ode> in " + source.describe() + ": " + not_applied + " not applied: the "
+                             "plant's solver is Bullet's multibody one, iterated as ODE's quick step; its joints are "
+                             "reduced coordinates that need no error reduction, and its contacts take none of the "
+                             "world's erp and cfm, as Gazebo's take theirs from each <surface>'s kp and kd");
+}
+
 // World elements that put things into the scene which the plant does not build.
 bool isUnsupportedWorldElement(const std::string& tag)
 {
@@ -329,6 +387,7 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
            << " must be a finite speed >= 0 m/s (Gazebo's default: 100)";
       throw DescriptionError(text.str());
     }
+    readSolverSettings(physics, source, world);
     if (!(world.max_step_size >= kMinStepSize && world.max_step_size <= kMaxStepSize))
     {
       std::ostringstream text;
@@ -350,6 +409,16 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
            << " m/s^2 (Earth: 9.8)";
       throw DescriptionError(text.str());
     }
+  }
+  const std::string magnetic_field = xml::childText(w, "magnetic_field", "");
+  if (!magnetic_field.empty())
+  {
+    std::vector<double> b = xml::numbers(magnetic_field, 3, "<magnetic_field>");
+    for (double v : b)
+      if (!std::isfinite(v))
+        throw DescriptionError("<magnetic_field> " + xml::trimmed(magnetic_field) + " must be three finite numbers "
+                               "(tesla, world frame)");
+    world.magnetic_field = urdf::Vector3(b[0], b[1], b[2]);
   }
   for (auto* light = w->FirstChildElement("light"); light; light = light->NextSiblingElement("light"))
   {

@@ -43,6 +43,54 @@ bool neverMoves(const btCollisionObject& object)
 }
 }  // namespace
 
+void gravityOn(const btMultiBody& multibody, int body, const btVector3& g, btVector3& force, btVector3& torque)
+{
+  const PartialGravity* partial = PartialGravity::of(multibody);
+  if (!partial)
+  {
+    force = g * (body == 0 ? multibody.getBaseMass() : multibody.getLinkMass(body - 1));
+    torque.setZero();
+    return;
+  }
+  force = g * partial->mass[size_t(body)];
+  const btQuaternion to_world = body == 0 ? multibody.getWorldToBaseRot().inverse()
+                                          : multibody.getLink(body - 1).m_cachedWorldTransform.getRotation();
+  torque = quatRotate(to_world, partial->offset[size_t(body)]).cross(force);
+}
+
+void DynamicsWorld::applyGravity()
+{
+  btDiscreteDynamicsWorld::applyGravity();  // the rigid bodies' (the plant makes none)
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+  {
+    btMultiBody* body = m_multiBodies[i];
+    if (sleeping(*body))
+      continue;
+    if (!PartialGravity::of(*body))  // Bullet's own arithmetic
+    {
+      body->addBaseForce(m_gravity * body->getBaseMass());
+      for (int j = 0; j < body->getNumLinks(); ++j)
+        body->addLinkForce(j, m_gravity * body->getLinkMass(j));
+      continue;
+    }
+    btVector3 force, torque;
+    for (int b = 0; b <= body->getNumLinks(); ++b)
+    {
+      gravityOn(*body, b, m_gravity, force, torque);
+      if (b == 0)
+      {
+        body->addBaseForce(force);
+        body->addBaseTorque(torque);
+      }
+      else
+      {
+        body->addLinkForce(b - 1, force);
+        body->addLinkTorque(b - 1, torque);
+      }
+    }
+  }
+}
+
 DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, DenseRowSolver* solver,
                              btCollisionConfiguration* configuration)
   : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration)

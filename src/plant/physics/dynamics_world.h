@@ -17,6 +17,24 @@
 
 namespace bullet_plant
 {
+// Gravity on a multibody whose links do not all feel it (SDF's <link><gravity>false</gravity>): per
+// body (the base first, then Bullet's links), the mass gravity pulls and where, from the body's
+// centre of mass in its own frame. The multibody's user pointer points to it; a multibody without
+// one feels gravity on all of its mass, as Bullet applies it.
+struct PartialGravity
+{
+  std::vector<btScalar> mass;
+  std::vector<btVector3> offset;
+  static const PartialGravity* of(const btMultiBody& body)
+  {
+    return static_cast<const PartialGravity*>(body.getUserPointer());
+  }
+};
+
+// The force gravity `g` puts on body `body` of the multibody (0 the base) and its torque about the
+// body's centre of mass, world frame.
+void gravityOn(const btMultiBody& multibody, int body, const btVector3& g, btVector3& force, btVector3& torque);
+
 class DynamicsWorld : public btMultiBodyDynamicsWorld, public MultibodyStates
 {
 public:
@@ -25,6 +43,9 @@ public:
                 btCollisionConfiguration* configuration);
 
   void solveExternalForces(btContactSolverInfo& info) override;
+  // Bullet's gravity on each awake multibody (m g on every body), or a PartialGravity's where the
+  // multibody has one.
+  void applyGravity() override;
   // Bullet's box update of every object at every step (m_forceUpdateAllAabbs), less the plain static
   // objects: a world's static shapes never move, so their boxes are made once, as they are added
   // (with the contact breaking threshold around them, as Bullet's update makes them). Recomputing

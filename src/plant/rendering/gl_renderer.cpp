@@ -353,9 +353,11 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
         colour(primitive.colour);
     }
   }
-  else if (primitive.kind == Shape::Kind::Sphere || primitive.kind == Shape::Kind::Cylinder)
+  else if (primitive.kind == Shape::Kind::Sphere || primitive.kind == Shape::Kind::Cylinder ||
+           primitive.kind == Shape::Kind::Capsule || primitive.kind == Shape::Kind::Ellipsoid)
   {
-    const double r = primitive.radius;
+    const bool ellipsoid = primitive.kind == Shape::Kind::Ellipsoid;
+    const double r = ellipsoid ? std::max({primitive.half[0], primitive.half[1], primitive.half[2]}) : primitive.radius;
     // segments around: the chord's sagitta r (1 - cos(pi / n)) within the tolerance
     const int n = std::min(1024, std::max(8, int(std::ceil(M_PI / std::acos(std::max(-1.0, 1.0 - kCurvedTolerance / r))))));
     auto normal = [&](double x, double y, double z) {
@@ -376,17 +378,37 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
       colour(primitive.colour);
       colour(primitive.colour);
     };
-    if (primitive.kind == Shape::Kind::Sphere)
+    if (primitive.kind != Shape::Kind::Cylinder)
     {
-      const int rings = std::max(4, n / 2);
-      auto point = [&](int ring, int segment) {
+      // A sphere (radius r) scaled to the ellipsoid's radii, its normal the gradient (x/a, y/b, z/c)
+      // of the unit sphere's point; a capsule's hemispheres, the upper ring half raised by the half
+      // length and the lower lowered, the equator a ring boundary.
+      const double a = ellipsoid ? primitive.half[0] : r, b = ellipsoid ? primitive.half[1] : r,
+                   c = ellipsoid ? primitive.half[2] : r;
+      const double h = primitive.kind == Shape::Kind::Capsule ? primitive.half_length : 0.0;
+      const int rings = (std::max(4, n / 2) + 1) / 2 * 2;
+      auto point = [&](int ring, int segment, double offset) {
         const double polar = M_PI * ring / rings, azimuth = 2 * M_PI * segment / n;
         const double x = std::sin(polar) * std::cos(azimuth), y = std::sin(polar) * std::sin(azimuth), z = std::cos(polar);
-        return std::array<double, 6>{r * x, r * y, r * z, x, y, z};
+        const double nx = x / a, ny = y / b, nz = z / c, length = std::sqrt(nx * nx + ny * ny + nz * nz);
+        return std::array<double, 6>{a * x, b * y, c * z + offset, nx / length, ny / length, nz / length};
       };
       for (int ring = 0; ring < rings; ++ring)
+      {
+        const double offset = ring < rings / 2 ? h : -h;
         for (int segment = 0; segment < n; ++segment)
-          quad(point(ring, segment), point(ring + 1, segment), point(ring + 1, segment + 1), point(ring, segment + 1));
+          quad(point(ring, segment, offset), point(ring + 1, segment, offset), point(ring + 1, segment + 1, offset),
+               point(ring, segment + 1, offset));
+      }
+      if (h > 0)  // the capsule's side between its hemispheres
+        for (int segment = 0; segment < n; ++segment)
+        {
+          auto side = [&](int k, double z) {
+            const double angle = 2 * M_PI * k / n, x = std::cos(angle), y = std::sin(angle);
+            return std::array<double, 6>{r * x, r * y, z, x, y, 0};
+          };
+          quad(side(segment, -h), side(segment + 1, -h), side(segment + 1, h), side(segment, h));
+        }
     }
     else
     {

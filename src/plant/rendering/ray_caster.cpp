@@ -22,15 +22,22 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPlaneHalfSize = 1000.0;
 constexpr double kPlaneTile = 100.0;
 
-// Outward unit normal of a sphere or cylinder at a point on it (shape frame).
+// Outward unit normal of a sphere, cylinder, capsule or ellipsoid at a point on it (shape frame).
 void curvedNormal(const RayPrimitive& p, const double q[3], double n[3])
 {
   n[0] = n[1] = n[2] = 0.0;
-  if (p.kind == Shape::Kind::Sphere)
+  if (p.kind == Shape::Kind::Sphere || p.kind == Shape::Kind::Capsule || p.kind == Shape::Kind::Ellipsoid)
   {
-    const double r = norm(q);
+    // From the nearest point of the capsule's axis segment; an ellipsoid's gradient (x/a^2, y/b^2, z/c^2).
+    double g[3] = {q[0], q[1], q[2]};
+    if (p.kind == Shape::Kind::Capsule)
+      g[2] -= std::max(-p.half_length, std::min(p.half_length, q[2]));
+    else if (p.kind == Shape::Kind::Ellipsoid)
+      for (int i = 0; i < 3; ++i)
+        g[i] = q[i] / (p.half[i] * p.half[i]);
+    const double r = norm(g);
     for (int i = 0; r > 0 && i < 3; ++i)
-      n[i] = q[i] / r;
+      n[i] = g[i] / r;
     return;
   }
   const double radial = std::hypot(q[0], q[1]);
@@ -172,7 +179,10 @@ void boxTriangles(const double half[3], std::vector<float>& vertices, std::vecto
 void curvedBounds(const RTCBoundsFunctionArguments* args)
 {
   const RayPrimitive& p = *static_cast<const RayPrimitive*>(args->geometryUserPtr);
-  const double r = p.kind == Shape::Kind::Sphere ? p.radius : std::hypot(p.radius, p.half_length);
+  const double r = p.kind == Shape::Kind::Sphere      ? p.radius
+                   : p.kind == Shape::Kind::Capsule   ? p.radius + p.half_length
+                   : p.kind == Shape::Kind::Ellipsoid ? std::max({p.half[0], p.half[1], p.half[2]})
+                                                      : std::hypot(p.radius, p.half_length);
   RTCBounds* b = args->bounds_o;
   b->lower_x = float(p.frame.t[0] - r) - 1e-4f;
   b->lower_y = float(p.frame.t[1] - r) - 1e-4f;
@@ -204,8 +214,10 @@ void curvedIntersect(const RTCIntersectFunctionNArguments* args)
     double o[3], d[3];
     p.frame.inverseApply(origin, o);
     p.frame.inverseRotate(dir, d);
-    const double along = p.kind == Shape::Kind::Sphere ? intersectSphere(o, d, p.radius)
-                                                       : intersectCylinder(o, d, p.radius, p.half_length);
+    const double along = p.kind == Shape::Kind::Sphere      ? intersectSphere(o, d, p.radius)
+                         : p.kind == Shape::Kind::Capsule   ? intersectCapsule(o, d, p.radius, p.half_length)
+                         : p.kind == Shape::Kind::Ellipsoid ? intersectEllipsoid(o, d, p.half)
+                                                            : intersectCylinder(o, d, p.radius, p.half_length);
     const double t = along / length;  // in the ray's own units
     if (!(t >= RTCRayN_tnear(ray, N, i) && t < RTCRayN_tfar(ray, N, i)))
       continue;
@@ -314,6 +326,36 @@ double intersectCylinder(const double o[3], const double d[3], double r, double 
   return best;
 }
 
+double intersectCapsule(const double o[3], const double d[3], double r, double half_length)
+{
+  // Starts inside: within r of the axis segment.
+  const double along = std::max(-half_length, std::min(half_length, o[2]));
+  if (o[0] * o[0] + o[1] * o[1] + (o[2] - along) * (o[2] - along) < r * r)
+    return kInf;
+  // Outside the union of a cylinder and two spheres, the ray enters it where it first enters one.
+  const double top[3] = {o[0], o[1], o[2] - half_length}, bottom[3] = {o[0], o[1], o[2] + half_length};
+  return std::min({intersectCylinder(o, d, r, half_length), intersectSphere(top, d, r), intersectSphere(bottom, d, r)});
+}
+
+double intersectEllipsoid(const double o[3], const double d[3], const double radii[3])
+{
+  // In the frame scaled by 1 / radii the ellipsoid is the unit sphere: |o' + t d'|^2 = 1, t the
+  // distance along the unit ray.
+  double os[3], ds[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    os[i] = o[i] / radii[i];
+    ds[i] = d[i] / radii[i];
+  }
+  const double a = dot(ds, ds), b = dot(os, ds), c = dot(os, os) - 1.0;
+  if (c <= 0.0)
+    return kInf;  // starts inside
+  const double disc = b * b - a * c;
+  if (disc < 0.0 || b > 0.0 || !(a > 0.0))
+    return kInf;
+  return (-b - std::sqrt(disc)) / a;
+}
+
 // ------------------------------------------------------------------------------------ primitives
 
 RayPrimitive RayPrimitive::fromMesh(const std::shared_ptr<const MeshData>& mesh, const urdf::Pose& pose, const void* owner)
@@ -344,6 +386,14 @@ RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, con
       break;
     case Shape::Kind::Sphere:
       p.radius = s.radius;
+      break;
+    case Shape::Kind::Capsule:
+      p.radius = s.radius;
+      p.half_length = s.length / 2.0;
+      break;
+    case Shape::Kind::Ellipsoid:
+      for (int i = 0; i < 3; ++i)
+        p.half[i] = s.radii[size_t(i)];
       break;
     case Shape::Kind::Plane:
       p.normal[0] = s.normal.x; p.normal[1] = s.normal.y; p.normal[2] = s.normal.z;
@@ -413,6 +463,8 @@ struct RayScene::ShapeSet
           break;
         case Shape::Kind::Sphere:
         case Shape::Kind::Cylinder:
+        case Shape::Kind::Capsule:
+        case Shape::Kind::Ellipsoid:
           g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
           rtcSetGeometryUserPrimitiveCount(g, 1);
           rtcSetGeometryUserData(g, const_cast<RayPrimitive*>(&p));

@@ -3,9 +3,9 @@
 // into its own Embree scene and placed in the top-level scene as an instance, so a sensor update
 // only moves instances (rtcSetGeometryTransform) and commits the top level, never rebuilding a
 // link's geometry. Boxes, planes and meshes are triangles (a box's and a plane's faces are exactly
-// planar, so triangles are exact and take Embree's fast path); spheres and cylinders are user
-// geometry intersected analytically in double precision (tessellating them would move a curved
-// surface by up to its chord error). The world's planes are a shape set of their own, built with
+// planar, so triangles are exact and take Embree's fast path); spheres, cylinders, capsules and
+// ellipsoids are user geometry intersected analytically in double precision (tessellating them
+// would move a curved surface by up to its chord error). The world's planes are a shape set of their own, built with
 // Embree's robust traversal: in the fast one, rays that run exactly along the edge two of a plane's
 // triangles share slipped through (14 of 20,001 in a test), and out of the other static shapes' BVH
 // a 2 km plane no longer spoils its boxes (the car's lidar on the race track: 16 against 13.9 M rays
@@ -43,9 +43,9 @@ enum SeenBy : unsigned
 struct RayPrimitive
 {
   Shape::Kind kind = Shape::Kind::Box;
-  double half[3] = {0, 0, 0};  // box half extents
-  double radius = 0.0;         // cylinder, sphere
-  double half_length = 0.0;    // cylinder
+  double half[3] = {0, 0, 0};  // box half extents; an ellipsoid's radii
+  double radius = 0.0;         // cylinder, sphere, capsule
+  double half_length = 0.0;    // cylinder, capsule (half its cylindrical part)
   double normal[3] = {0, 0, 1};
   Frame frame;                 // shape frame in its parent's frame
   const void* owner = nullptr; // the robot it belongs to (null: the world)
@@ -74,6 +74,9 @@ struct RayHit
 // cylinder's surface; +inf if it misses or starts inside.
 double intersectSphere(const double o[3], const double d[3], double radius);
 double intersectCylinder(const double o[3], const double d[3], double radius, double half_length);
+// A capsule along z (half_length: half its cylindrical part) and an ellipsoid (radii x y z), the same way.
+double intersectCapsule(const double o[3], const double d[3], double radius, double half_length);
+double intersectEllipsoid(const double o[3], const double d[3], const double radii[3]);
 
 // A plane (through the origin, unit `normal`) as the sensors see it: a square of 2 km a side in
 // tiles of 100 m, triangles (x y z per vertex, three indices each), far beyond any sensor's range.

@@ -1,6 +1,7 @@
 #include "simulation/collision_shapes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -12,6 +13,7 @@
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
 #include <LinearMath/btConvexHullComputer.h>
 
+#include "bullet_plant/robot_description.h"
 #include "description/resource_uri.h"
 #include "physics/bullet_conversions.h"
 
@@ -26,6 +28,83 @@ btCollisionShape* withMargin(btCollisionShape* shape, Shape::Kind kind)
   if (kind == Shape::Kind::Box || kind == Shape::Kind::Cylinder)
     shape->setMargin(kCollisionMargin);
   return shape;
+}
+
+// An ellipsoid by its support function, exact in every direction: the point of the ellipsoid with
+// radii a - m, b - m, c - m farthest along d is (a'^2 dx, b'^2 dy, c'^2 dz) / |(a' dx, b' dy, c' dz)|,
+// and Bullet adds the margin m around it, so the outer surface is the ellipsoid's along its axes and
+// within m (a - c)^2 / (2 a c) of it elsewhere (a fraction of a micrometre for the margin's half
+// millimetre). Bullet's scaled shapes do not serve: a btMultiSphereShape with non-uniform local
+// scaling gives the scaled sphere's point along d, not the ellipsoid's farthest one, so a tilted
+// ellipsoid would rest too low, and a hull of sampled points has facets that bump as it rolls.
+class EllipsoidShape : public btConvexInternalShape
+{
+public:
+  explicit EllipsoidShape(const std::array<double, 3>& radii)
+  {
+    m_shapeType = CUSTOM_CONVEX_SHAPE_TYPE;
+    // Each inner radius keeps at least half the smallest: an ellipsoid thinner than twice the margin
+    // takes a margin of a quarter of its least radius.
+    const double least = std::min({radii[0], radii[1], radii[2]});
+    const btScalar margin = btScalar(std::min(double(kCollisionMargin), least / 4));
+    for (int i = 0; i < 3; ++i)
+      inner_[i] = btScalar(radii[i]) - margin;
+    setMargin(margin);
+    m_implicitShapeDimensions = inner_;
+  }
+  btVector3 localGetSupportingVertexWithoutMargin(const btVector3& d) const override
+  {
+    const btVector3 scaled = inner_ * d;  // (a dx, b dy, c dz)
+    const btScalar length = scaled.length();
+    if (!(length > SIMD_EPSILON))
+      return btVector3(inner_.x(), 0, 0);
+    return inner_ * scaled / length;
+  }
+  void batchedUnitVectorGetSupportingVertexWithoutMargin(const btVector3* directions, btVector3* out,
+                                                         int count) const override
+  {
+    for (int i = 0; i < count; ++i)
+      out[i] = localGetSupportingVertexWithoutMargin(directions[i]);
+  }
+  void calculateLocalInertia(btScalar mass, btVector3& inertia) const override
+  {
+    const btVector3 r = inner_ + btVector3(getMargin(), getMargin(), getMargin());
+    inertia.setValue(mass / 5 * (r.y() * r.y() + r.z() * r.z()), mass / 5 * (r.x() * r.x() + r.z() * r.z()),
+                     mass / 5 * (r.x() * r.x() + r.y() * r.y()));
+  }
+  void getAabb(const btTransform& t, btVector3& min, btVector3& max) const override
+  {
+    // The extent along world axis i: the support's, sqrt(sum_k (R_ik r_k)^2), plus the margin.
+    const btMatrix3x3& basis = t.getBasis();
+    btVector3 half;
+    for (int i = 0; i < 3; ++i)
+      half[i] = (basis[i] * inner_).length() + getMargin();
+    min = t.getOrigin() - half;
+    max = t.getOrigin() + half;
+  }
+  void setLocalScaling(const btVector3&) override {}  // the radii are the shape's own
+  const char* getName() const override { return "Ellipsoid"; }
+  int getNumPreferredPenetrationDirections() const override { return 0; }
+  void getPreferredPenetrationDirection(int, btVector3&) const override {}
+
+private:
+  btVector3 inner_;
+};
+
+// A capsule along the body axis `axis` (0 x, 1 y, 2 z): Bullet's margin is its radius, so its
+// surface is the capsule's own.
+btCollisionShape* capsuleAlong(int axis, double radius, double length)
+{
+  const btScalar r = btScalar(radius), h = btScalar(length);
+  switch (axis)
+  {
+    case 0:
+      return new btCapsuleShapeX(r, h);
+    case 1:
+      return new btCapsuleShape(r, h);
+    default:
+      return new btCapsuleShapeZ(r, h);
+  }
 }
 
 // Bullet's triangle mesh over the loaded file's arrays, which it keeps alive (copies of a mesh share
@@ -258,6 +337,12 @@ btCollisionShape* makeCollisionShape(const Shape& s)
     case Shape::Kind::Plane:
       shape = new btStaticPlaneShape(toBullet(s.normal), 0);
       break;
+    case Shape::Kind::Capsule:
+      shape = capsuleAlong(2, s.radius, s.length);
+      break;
+    case Shape::Kind::Ellipsoid:
+      shape = new EllipsoidShape(s.radii);
+      break;
     case Shape::Kind::Mesh:
       return nullptr;  // makeCollider
   }
@@ -352,6 +437,23 @@ btCollisionShape* makeAlignedCollisionShape(const Shape& s, const btTransform& p
           return nullptr;
       }
     }
+    case Shape::Kind::Capsule:
+    {
+      const int axis = bodyAxisOf(2);
+      return axis < 0 ? nullptr : capsuleAlong(axis, s.radius, s.length);
+    }
+    case Shape::Kind::Ellipsoid:
+    {
+      std::array<double, 3> radii{{0, 0, 0}};
+      for (int k = 0; k < 3; ++k)
+      {
+        const int i = bodyAxisOf(k);
+        if (i < 0)
+          return nullptr;
+        radii[size_t(i)] = s.radii[size_t(k)];
+      }
+      return new EllipsoidShape(radii);
+    }
     case Shape::Kind::Plane:
     case Shape::Kind::Mesh:
       break;
@@ -362,6 +464,11 @@ btCollisionShape* makeAlignedCollisionShape(const Shape& s, const btTransform& p
 bool shapeFromUrdf(const urdf::Geometry& g, const std::string& link, const Log& log, Shape& s)
 {
   s = Shape();
+  if (const auto* carried = dynamic_cast<const ShapeGeometry*>(&g))
+  {
+    s = carried->shape;  // checked where it was read (sdf::readGeometry)
+    return true;
+  }
   switch (g.type)
   {
     case urdf::Geometry::BOX:

@@ -32,8 +32,8 @@ constexpr int kMaxHullVertices = 100;
 // bodies as convex hulls (Bullet has no moving concave collision that is fast and robust).
 enum class Mobility { Static, Moving };
 
-// The shape in its own frame (a cylinder along its z axis). The caller owns it. Not for meshes
-// (makeCollider loads them).
+// The shape in its own frame (a cylinder and a capsule along its z axis; an ellipsoid by its exact
+// support function). The caller owns it. Not for meshes (makeCollider loads them).
 btCollisionShape* makeCollisionShape(const Shape& shape);
 
 // A mesh as a static triangle mesh (Bullet's BVH over the loaded triangles, which the shape keeps
@@ -64,8 +64,9 @@ Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& p
 
 // The shape as Bullet's axis-aligned primitive where its pose in a body frame is one of its
 // symmetries (no offset; for a box a rotation that permutes its axes, for a cylinder one that puts
-// its axis on a body axis, for a sphere any): then the body's collider needs no compound, which
-// costs every contact pair a tree walk and a transform per step. Null where a compound is needed.
+// its axis on a body axis, for a sphere any, for a capsule as a cylinder, for an ellipsoid as a box):
+// then the body's collider needs no compound, which costs every contact pair a tree walk and a
+// transform per step. Null where a compound is needed.
 btCollisionShape* makeAlignedCollisionShape(const Shape& shape, const btTransform& pose);
 
 // A wheel-shaped mesh as the cylinder about `axis` that it fills: the vertices' farthest reach from
@@ -78,7 +79,8 @@ bool fitWheelCylinder(const MeshData& mesh, const btTransform& mesh_pose, const 
 
 // A URDF <collision>'s geometry as a Shape (a mesh's filename resolved with resolveUri, relative
 // paths against the working directory as URDF comes as text). False, with a warning naming the link,
-// where the geometry cannot be simulated (a mesh file not found, zero or negative size).
+// where the geometry cannot be simulated (a mesh file not found, zero or negative size). An SDF
+// capsule or ellipsoid (ShapeGeometry, robot_description.h) is its shape.
 bool shapeFromUrdf(const urdf::Geometry& geometry, const std::string& link, const Log& log, Shape& shape);
 
 }  // namespace bullet_plant

@@ -52,6 +52,9 @@ struct Robot::Internals
   btTransform spawn_pose;                                  // of the URDF root link
   DivergenceRecovery recovery;
   bool disabled = false;                  // out of the physics after diverging step after step
+  // SDF's <kinematic> base: a fixed base, which contacts, gravity and forces do not move and Bullet
+  // carries on at the base velocity set on it (setLinkState), as ODE moves a kinematic body.
+  bool kinematic = false;
   ExternalEfforts external_efforts;       // Robot::applyLinkWrench, applyJointEffort
   JointWrenchWatches wrench_watches;      // ModelPluginContext::watchJointWrench
   std::vector<int> ray_bodies;            // each body's handle in the world's RayScene (-1: no shapes)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "physics/dynamics_world.h"
 #include "simulation/internals.h"
 
 namespace bullet_plant
@@ -109,11 +110,13 @@ void JointWrenchWatches::afterStep(const RobotMultibody& multibody, const std::s
     {
       const int b = w.bodies[k];
       const btVector3 com = multibody.bodyWorldTransform(b).getOrigin();
-      const btVector3 external = mb.getLink(b - 1).m_mass * gravity + w.force_added[k];
+      btVector3 weight, weight_torque;  // a link without <gravity> feels none (PartialGravity)
+      gravityOn(mb, b, gravity, weight, weight_torque);
+      const btVector3 external = weight + w.force_added[k];
       const btVector3 needed = (momentum[size_t(b)] - w.momentum[k]) / dt;
       const btVector3 turning = (angular_momentum[size_t(b)] - w.angular_momentum[k]) / dt;
       force += needed - external;
-      torque += turning + (com - at).cross(needed) - w.torque_added[k] - (com - at).cross(external);
+      torque += turning + (com - at).cross(needed) - w.torque_added[k] - (com - at).cross(external) - weight_torque;
     }
     for (int m = 0; m < dispatcher.getNumManifolds(); ++m)
     {

@@ -218,6 +218,57 @@ void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool wo
   warnOfMassRatio(r);
 }
 
+const LinkPhysics& physicsOf(const Robot::Internals& r, const std::string& link)
+{
+  static const LinkPhysics defaults;
+  auto found = r.description.link_physics.find(link);
+  return found == r.description.link_physics.end() ? defaults : found->second;
+}
+
+// 2b. Where links feel no gravity (SDF's <gravity>false): the mass gravity pulls on each body, the
+// share of its links' that do, and where that mass lies, from the body's centre of mass. Gazebo's
+// ODE turns gravity off per link (dBodySetGravityMode); a body of links fixed together feels its
+// gravity links' weight, at their centre of mass.
+void partialGravity(Robot::Internals& r, const LinkPlacement& placement)
+{
+  const urdf::ModelInterface& model = *r.description.model;
+  bool any_off = false;
+  for (const auto& kv : placement)
+    any_off = any_off || !physicsOf(r, kv.first).gravity;
+  if (!any_off)
+    return;
+  const std::vector<Body>& bodies = r.multibody.bodies;
+  auto partial = std::make_unique<PartialGravity>();
+  partial->mass.assign(bodies.size(), 0);
+  partial->offset.assign(bodies.size(), btVector3(0, 0, 0));
+  for (size_t bi = 0; bi < bodies.size(); ++bi)
+  {
+    double total = 0, pulled = 0;
+    btVector3 weighted(0, 0, 0);
+    for (const auto& kv : placement)
+    {
+      urdf::LinkConstSharedPtr link = model.getLink(kv.first);
+      if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
+        continue;
+      total += link->inertial->mass;
+      if (!physicsOf(r, kv.first).gravity)
+        continue;
+      pulled += link->inertial->mass;
+      weighted += kv.second.second * toBullet(link->inertial->origin.position) * btScalar(link->inertial->mass);
+    }
+    // A body lighter than the minimum (given kMinimumMass) feels gravity as its links do.
+    bool all_pulled = true;
+    for (const auto& kv : placement)
+      if (kv.second.first == int(bi))
+        all_pulled = all_pulled && physicsOf(r, kv.first).gravity;
+    const double share = total > 0 ? pulled / total : (all_pulled ? 1.0 : 0.0);
+    partial->mass[bi] = btScalar(bodies[bi].mass * share);
+    if (pulled > 0)
+      partial->offset[bi] = bodies[bi].urdf_from_com.inverse() * (weighted / btScalar(pulled));
+  }
+  r.multibody.partial_gravity = std::move(partial);
+}
+
 // A wheel-shaped mesh on the link of a continuous joint (whose frame is the joint's) becomes the
 // cylinder it fills about the joint axis, said in the collider's note; `shape` and `in_link` follow.
 bool fitWheelToJoint(const urdf::Joint* joint, Collider& collider, Shape& shape, btTransform& in_link)
@@ -372,7 +423,7 @@ void visualShapes(Robot::Internals& r, const LinkPlacement& placement)
       if (!v || !v->geometry)
         continue;
       Shape shape;
-      std::string reason = "is not a box, cylinder, sphere or a mesh that is found";
+      std::string reason = "is not a box, cylinder, sphere, capsule, ellipsoid or a mesh that is found";
       std::shared_ptr<const MeshData> mesh;
       if (shapeFromUrdf(*v->geometry, link->name, quiet, shape) &&
           (shape.kind != Shape::Kind::Mesh || (mesh = loadMesh(shape.mesh_file, shape.scale, reason))))
@@ -427,7 +478,9 @@ std::vector<double> createMultibody(Robot::Internals& r, const std::vector<BodyP
                         offset_in_parent.getOrigin(), -offset_in_child.getOrigin(), true);
   }
   mb->finalizeMultiDof();
-  mb->setHasSelfCollision(false);
+  mb->setHasSelfCollision(false);  // SDF's <self_collide>: addColliders
+  if (r.multibody.partial_gravity)
+    mb->setUserPointer(r.multibody.partial_gravity.get());
   mb->setLinearDamping(0);
   mb->setAngularDamping(0);
   mb->setMaxCoordinateVelocity(btScalar(kMaxJointSpeed));
@@ -523,6 +576,44 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
   limitUnlimitedEfforts(r);
 }
 
+// A body's collider in a model whose links collide with each other (SDF's <self_collide>), as
+// Gazebo's ODE collides them: two bodies of the model touch where either self-collides (a
+// self-colliding link's collisions are in a space of their own, which ODE collides with the model's
+// space and every other space), never two joined by a joint (ODEPhysics::CollisionCallback's
+// dAreConnectedExcluding). A body's links fixed together are one body: it self-collides where any of
+// them does.
+class SelfCollidingCollider : public btMultiBodyLinkCollider
+{
+public:
+  SelfCollidingCollider(btMultiBody* multibody, int link, bool self_collide, int joined_to)
+    : btMultiBodyLinkCollider(multibody, link), self_collide_(self_collide), joined_to_(joined_to)
+  {
+  }
+  bool checkCollideWithOverride(const btCollisionObject* object) const override
+  {
+    const btMultiBodyLinkCollider* other = btMultiBodyLinkCollider::upcast(object);
+    if (!other || other->m_multiBody != m_multiBody)
+      return true;
+    const auto* ours = static_cast<const SelfCollidingCollider*>(other);  // every collider of the model is one
+    return (self_collide_ || ours->self_collide_) && joined_to_ != other->m_link && ours->joined_to_ != m_link;
+  }
+
+private:
+  bool self_collide_;
+  int joined_to_;  // the Bullet link its joint joins it to (-1 the base), past frames; -2 for the base
+};
+
+// Whether any body's links collide with the model's other links.
+bool selfColliding(const Robot::Internals& r, std::vector<bool>& body_self_collides)
+{
+  const std::vector<Body>& bodies = r.multibody.bodies;
+  body_self_collides.assign(bodies.size(), false);
+  for (const auto& kv : r.multibody.link_in_body)
+    if (physicsOf(r, kv.first).self_collide)
+      body_self_collides[size_t(kv.second.first)] = true;
+  return std::find(body_self_collides.begin(), body_self_collides.end(), true) != body_self_collides.end();
+}
+
 // 6. Colliders: one per body with a shape, in the world's broadphase. A robot without any collision
 // still gets one, shapeless, on its base: Bullet solves a multibody's constraint rows (the joint
 // layer's motors, limits, damping) within its simulation island, and only colliders make islands.
@@ -535,12 +626,25 @@ void addColliders(Robot::Internals& r)
     bodies[0].child_shapes.emplace_back(new btEmptyShape());
     bodies[0].shape = bodies[0].child_shapes.back().get();
   }
+  std::vector<bool> self_collides;
+  const bool self_colliding = selfColliding(r, self_collides);
+  mb->setHasSelfCollision(self_colliding);
   for (size_t bi = 0; bi < bodies.size(); ++bi)
   {
     Body& body = bodies[bi];
     if (!body.shape)
       continue;
-    r.multibody.colliders.emplace_back(new btMultiBodyLinkCollider(mb, int(bi) - 1));
+    if (self_colliding)
+    {
+      // The body its joint joins it to, past the frames between two axes of a universal joint.
+      int joined = bi == 0 ? -1 : body.parent;
+      while (joined > 0 && r.description.frame_links.count(bodies[size_t(joined)].link))
+        joined = bodies[size_t(joined)].parent;
+      r.multibody.colliders.emplace_back(
+          new SelfCollidingCollider(mb, int(bi) - 1, self_collides[bi], bi == 0 ? -2 : joined - 1));
+    }
+    else
+      r.multibody.colliders.emplace_back(new btMultiBodyLinkCollider(mb, int(bi) - 1));
     btMultiBodyLinkCollider* col = r.multibody.colliders.back().get();
     col->setCollisionShape(body.shape);
     col->setFriction(btScalar(body.mu));
@@ -727,8 +831,10 @@ constexpr double kSleepTime = 1.0;
 
 void allowSleep(Robot::Internals& r)
 {
+  // SDF's <allow_auto_disable>false: never (ODELink::Init's auto-disable flag off); a kinematic
+  // model moves at its set velocity whatever touches it.
   const bool driven = r.controller_manager || !r.model_plugins.empty() || !r.sensors.empty() ||
-                      !r.multibody.joints.empty();
+                      !r.multibody.joints.empty() || !r.description.allow_auto_disable || r.kinematic;
   btMultiBody& mb = *r.multibody.bullet;
   mb.setCanSleep(!driven);
   mb.setSleepThreshold(btScalar(kSleepSpeed * kSleepSpeed));
@@ -742,13 +848,30 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   if (!root)
     throw DescriptionError("URDF of '" + r.name + "' has no root link");
   const bool world_rooted = root->name == "world";
-  // A static model (<gazebo><static>) never moves: its base is fixed where it is spawned.
-  const bool fixed_base = world_rooted || r.description.is_static;
 
   LinkPlacement placement;
   const std::vector<BodyPlan> plans = planBodies(r, root, placement);
+  // SDF's <kinematic>: a base with a kinematic link is a fixed base, not moved by dynamics, as ODE's
+  // kinematic body (infinite mass, no gravity); Bullet moves a fixed base at the velocity set on it,
+  // as ODE moves a kinematic body. A kinematic link beyond the base is a joint's child, which the
+  // multibody moves by dynamics.
+  std::string dynamic_kinematic;
+  for (const auto& kv : placement)
+    if (physicsOf(r, kv.first).kinematic)
+    {
+      if (kv.second.first == 0)
+        r.kinematic = !world_rooted && !r.description.is_static;
+      else
+        dynamic_kinematic += (dynamic_kinematic.empty() ? "'" : ", '") + kv.first + "'";
+    }
+  if (!dynamic_kinematic.empty())
+    r.world->log.warn("robot '" + r.name + "': links " + dynamic_kinematic + " are <kinematic> but hang from a "
+                      "movable joint; the plant moves them by dynamics (only a model's base link is kinematic)");
+  // A static model (<gazebo><static>) never moves: its base is fixed where it is spawned.
+  const bool fixed_base = world_rooted || r.description.is_static || r.kinematic;
   massProperties(r, placement, world_rooted);
-  collisionShapes(r, placement, plans, fixed_base);
+  partialGravity(r, placement);
+  collisionShapes(r, placement, plans, fixed_base && !r.kinematic);
   visualShapes(r, placement);
   const std::vector<double> axis_inertia = createMultibody(r, plans, fixed_base, pose);
   createJoints(r, plans, axis_inertia, initial_joints);

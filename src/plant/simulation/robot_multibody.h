@@ -18,6 +18,7 @@
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/log.h"
 #include "physics/bullet_conversions.h"
+#include "physics/dynamics_world.h"
 #include "physics/joint_drive.h"
 #include "physics/movable_joint.h"
 #include "rendering/ray_caster.h"
@@ -69,6 +70,9 @@ struct RobotMultibody
   std::map<std::string, size_t> joint_index;
   std::unique_ptr<btMultiBody> bullet;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;
+  // Where some links feel no gravity (SDF's <gravity>false): what it pulls on each body, the
+  // multibody's user pointer (DynamicsWorld::applyGravity). Null where every link feels it.
+  std::unique_ptr<PartialGravity> partial_gravity;
 
   btTransform bodyWorldTransform(int body) const;
   // Throws std::out_of_range naming the robot for an unknown link.

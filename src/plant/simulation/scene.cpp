@@ -50,7 +50,7 @@ std::vector<double> xyz(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
 
 std::string sceneJson(const Scene& scene)
 {
-  static const char* kind_names[] = {"box", "cylinder", "sphere", "plane", "mesh"};
+  static const char* kind_names[] = {"box", "cylinder", "sphere", "plane", "mesh", "capsule", "ellipsoid"};
   nlohmann::json visuals = nlohmann::json::array();
   for (const SceneVisual& v : scene.visuals)
   {
@@ -64,8 +64,10 @@ std::string sceneJson(const Scene& scene)
     switch (s.kind)
     {
       case Shape::Kind::Box: out["size"] = s.box_size; break;
-      case Shape::Kind::Cylinder: out["length"] = s.length; [[fallthrough]];
+      case Shape::Kind::Cylinder:
+      case Shape::Kind::Capsule: out["length"] = s.length; [[fallthrough]];
       case Shape::Kind::Sphere: out["radius"] = s.radius; break;
+      case Shape::Kind::Ellipsoid: out["radii"] = s.radii; break;
       case Shape::Kind::Plane: out["normal"] = xyz(s.normal); break;
       case Shape::Kind::Mesh:
         out["mesh"] = s.mesh_file;

@@ -13,6 +13,7 @@
 #include "physics/dense_row_solver.h"
 #include "physics/dynamics_world.h"
 #include "physics/plane_contact.h"
+#include "physics/capsule_contact.h"
 #include "physics/wheel_contact.h"
 #include "simulation/collision_shapes.h"
 #include "simulation/internals.h"
@@ -143,6 +144,7 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
   // plane_contact.h) all four corners are in the manifold from the first step of contact.
   registerPlaneContact(*w.dispatcher);
   registerWheelContact(*w.dispatcher);
+  registerCapsuleContact(*w.dispatcher);  // ODE's two end points, where Bullet's test gives one end or the other
   w.broadphase.reset(new btDbvtBroadphase());
   auto* solver = new DenseRowSolver();
   solver->setMaxCorrectingVelocity(btScalar(description.contact_max_correcting_vel));
@@ -161,6 +163,15 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
   // their limits.
   info.m_splitImpulse = false;
   info.m_timeStep = btScalar(w.step_s);
+  // The world's <physics><ode> where it gives them (world_description.h): ODE's quick step passes,
+  // its over-relaxation (Bullet's m_sor scales each contact row's update as ODE's sor does) and the
+  // depth contacts leave (Bullet's slop: a contact pushes only beyond it, as ODE's surface layer).
+  if (description.solver_iterations > 0)
+    info.m_numIterations = description.solver_iterations;
+  if (description.sor > 0)
+    info.m_sor = btScalar(description.sor);
+  if (description.contact_surface_layer >= 0)
+    info.m_linearSlop = btScalar(description.contact_surface_layer);
 
   for (const StaticCollision& c : description.collisions)
   {
@@ -236,6 +247,8 @@ double World::timeStep() const { return in_->step_s; }
 int64_t World::timeStepNs() const { return in_->step_ns; }
 
 int World::solverIterations() const { return in_->dynamics->getSolverInfo().m_numIterations; }
+double World::solverRelaxation() const { return in_->dynamics->getSolverInfo().m_sor; }
+double World::contactSurfaceLayer() const { return in_->dynamics->getSolverInfo().m_linearSlop; }
 
 void World::setTimeStep(double seconds)
 {
