@@ -155,6 +155,16 @@ struct JointSpring
   double stiffness = 0.0, reference = 0.0;
 };
 
+// Two movable (URDF) joints whose positions are tied, q_follower = multiplier * q_leader: an SDF
+// screw's turn (leader) and the slide the plant adds for it (follower), a gearbox's two gears.
+struct JointCouplingDescription
+{
+  std::string name;              // the SDF joint (screw or gearbox), for messages
+  std::string leader, follower;  // URDF joints
+  double multiplier = 0.0;
+  bool follower_internal = false;  // the plant's own joint (a screw's slide): no joint of the robot's own
+};
+
 struct TransmissionDescription
 {
   std::string name;
@@ -201,6 +211,11 @@ struct RobotDescription
   // body of a link, and not listed among the robot's links.
   std::set<std::string> frame_links;
   std::map<std::string, JointSpring> joint_springs;  // by joint
+  // From SDF: ball joints, which URDF has no type for: their URDF joints are FLOATING; the child turns
+  // freely about the joint frame's origin (three rotations, no translation).
+  std::set<std::string> ball_joints;
+  // From SDF: joints whose positions are tied, held by one constraint row each (JointCoupling).
+  std::vector<JointCouplingDescription> joint_couplings;
   // From SDF: collisions keep their SDF names ("model::link::collision"), where sdformat's URDF
   // converter names a URDF's collisions after their link ("link_collision").
   bool sdf_collision_names = false;
