@@ -49,9 +49,13 @@ public:
   std::vector<JointHandle>& handles();
   JointHandle* handle(const std::string& joint);
 
-  // Every movable joint of the URDF (transmitted or not), in URDF order, and its state.
+  // Every movable joint of the URDF (transmitted or not), in URDF order, and its state: the joints
+  // with one position (an SDF screw is its turn, a gearbox no joint of its own). An SDF ball joint's
+  // state is Gazebo 11's ODE ball joint's: position NaN, velocity and effort 0.
   std::vector<std::string> jointNames() const;
   bool jointState(const std::string& joint, double& position, double& velocity, double& effort) const;
+  // SDF's ball joints (get_model_properties lists them with jointNames, as Gazebo lists every joint).
+  std::vector<std::string> ballJointNames() const;
 
   // Pose of the URDF root link in the world, and the twist of its origin (world frame).
   urdf::Pose basePose() const;

@@ -172,6 +172,16 @@ struct LinkPhysics
   bool self_collide = false;  // <self_collide>, else its model's: collides with the model's other links
 };
 
+// Two movable (URDF) joints whose positions are tied, q_follower = multiplier * q_leader: an SDF
+// screw's turn (leader) and the slide the plant adds for it (follower), a gearbox's two gears.
+struct JointCouplingDescription
+{
+  std::string name;              // the SDF joint (screw or gearbox), for messages
+  std::string leader, follower;  // URDF joints
+  double multiplier = 0.0;
+  bool follower_internal = false;  // the plant's own joint (a screw's slide): no joint of the robot's own
+};
+
 struct TransmissionDescription
 {
   std::string name;
@@ -222,6 +232,11 @@ struct RobotDescription
   std::map<std::string, LinkPhysics> link_physics;
   // SDF's <model><allow_auto_disable> (false in the model or a nested one): the model never sleeps.
   bool allow_auto_disable = true;
+  // From SDF: ball joints, which URDF has no type for: their URDF joints are FLOATING; the child turns
+  // freely about the joint frame's origin (three rotations, no translation).
+  std::set<std::string> ball_joints;
+  // From SDF: joints whose positions are tied, held by one constraint row each (JointCoupling).
+  std::vector<JointCouplingDescription> joint_couplings;
   // The format the model was written in. Gazebo treats the two apart in two ways the plant keeps: an
   // SDF model's collisions keep their SDF names ("model::link::collision") where sdformat's URDF
   // converter names a URDF's after their link ("link_collision"); and an SDF model (a world file's

@@ -522,6 +522,8 @@ bool GazeboRosApiPlugin::getModelProperties(gazebo_msgs::GetModelProperties::Req
                                    (i > 0 ? "_" + std::to_string(i) : ""));
       }
   res.joint_names = robot->jointNames();
+  for (const std::string& ball : robot->ballJointNames())  // Gazebo lists them too (get_joint_properties: NaN, 0)
+    res.joint_names.push_back(ball);
   res.is_static = robot->description().is_static;
   res.success = true;
   res.status_message = "GetModelProperties: got properties";

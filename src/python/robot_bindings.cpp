@@ -69,13 +69,14 @@ py::class_<RobotRef> init_robot(py::module_& m)
         }
         return d;
       }))
-      .def_property_readonly("joint_names", onRobot([](Robot& r) { return r.jointNames(); }), "every movable joint of the URDF")
+      .def_property_readonly("joint_names", onRobot([](Robot& r) { return r.jointNames(); }),
+                             "every movable joint of the URDF with one position (an SDF screw: its turn; not ball joints)")
       .def("joint_state", onRobot([](Robot& r, const std::string& joint) {
         double p, v, e;
         if (!r.jointState(joint, p, v, e))
           throw py::key_error("robot '" + r.name() + "' has no movable joint '" + joint + "'");
         return py::make_tuple(p, v, e);
-      }), "(position, velocity, effort) of a movable joint")
+      }), "(position, velocity, effort) of a movable joint; of an SDF ball joint (nan, 0, 0), as Gazebo 11's")
       .def("base_pose", onRobot([](Robot& r) { return poseArray(r.basePose()); }),
            "root link pose in the world: x y z qx qy qz qw")
       .def("base_twist", onRobot([](Robot& r) {

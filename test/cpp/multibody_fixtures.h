@@ -43,17 +43,23 @@ inline btQuaternion randomRotation(std::mt19937& rng)
 }
 
 // A chain of `links` bodies with random masses, inertias, joint axes, offsets and revolute or
-// prismatic joints, at random joint positions and velocities (and base pose and twist).
-inline std::unique_ptr<btMultiBody> randomChain(std::mt19937& rng, bool fixed_base, int links = 10)
+// prismatic joints, at random joint positions and velocities (and base pose and twist). With
+// `ball_joints`, every third link from the second hangs from a spherical joint (an SDF ball joint:
+// three velocities, a quaternion position) instead.
+inline std::unique_ptr<btMultiBody> randomChain(std::mt19937& rng, bool fixed_base, int links = 10,
+                                                bool ball_joints = false)
 {
   std::unique_ptr<btMultiBody> body(
       new btMultiBody(links, uniform(rng, 1, 3), randomVector(rng, 0.02, 0.2), fixed_base, false));
+  auto ball = [&](int i) { return ball_joints && i % 3 == 1; };
   for (int i = 0; i < links; ++i)
   {
     const btScalar mass = uniform(rng, 0.3, 2);
     const btVector3 inertia = randomVector(rng, 0.005, 0.05);
     const btVector3 pivot = randomVector(rng, -0.3, 0.3), com = randomVector(rng, -0.3, 0.3);
-    if (rng() % 2)
+    if (ball(i))
+      body->setupSpherical(i, mass, inertia, i - 1, randomRotation(rng), pivot, com, true);
+    else if (rng() % 2)
       body->setupRevolute(i, mass, inertia, i - 1, randomRotation(rng), randomDirection(rng), pivot, com, true);
     else
       body->setupPrismatic(i, mass, inertia, i - 1, randomRotation(rng), randomDirection(rng), pivot, com, true);
@@ -69,6 +75,15 @@ inline std::unique_ptr<btMultiBody> randomChain(std::mt19937& rng, bool fixed_ba
   }
   for (int i = 0; i < links; ++i)
   {
+    if (ball(i))
+    {
+      const btQuaternion q = randomRotation(rng);
+      const btScalar position[4] = {q.x(), q.y(), q.z(), q.w()};
+      const btVector3 velocity = randomVector(rng, -2, 2);
+      body->setJointPosMultiDof(i, position);
+      body->setJointVelMultiDof(i, velocity.m_floats);
+      continue;
+    }
     body->setJointPos(i, uniform(rng, -1, 1));
     body->setJointVel(i, uniform(rng, -2, 2));
   }

@@ -2,7 +2,7 @@
 model database (a model directory of GAZEBO_MODEL_PATH with its model.config) and stdin; the
 spawn_sdf_model service itself (the model's own <pose> relative to the initial pose, the request's
 name over the SDF's, gazebo_ros's refusals); and a world file's moving models (a free box and a
-pendulum) as models of gazebo_ros: listed, falling, moved, reset, described. One master and one
+pendulum, a ball-jointed bob) as models of gazebo_ros: listed, falling, moved, reset, described. One master and one
 node for the whole file, started paused: the spawn tests read exact poses, the world test unpauses."""
 import math
 import os
@@ -42,6 +42,16 @@ PENDULUM = """<model name="pendulum"><pose>3 0 1 0 0 0</pose>
   <joint name="hinge" type="revolute"><parent>world</parent><child>bar</child><axis><xyz>0 1 0</xyz></axis></joint>
 </model>"""
 
+# A bob hung 0.5 m below a ball joint fixed to the world, 0.2 m out: gazebo_ros lists the joint and
+# answers get_joint_properties for it as Gazebo 11's ODE ball joint (position NaN, rate 0).
+SWIVEL = """<model name="swivel"><pose>-3 3 1 0 0 0</pose>
+  <link name="bob"><pose>0.2 0 -0.5 0 0 0</pose>
+    <inertial><mass>0.5</mass><inertia><ixx>0.001</ixx><iyy>0.001</iyy><izz>0.001</izz></inertia></inertial>
+    <collision name="ball"><geometry><sphere><radius>0.05</radius></sphere></geometry></collision>
+  </link>
+  <joint name="socket" type="ball"><parent>world</parent><child>bob</child><pose>-0.2 0 0.5 0 0 0</pose></joint>
+</model>"""
+
 # A world model ROS cannot name a topic of: left out with an error naming it, the node goes on.
 BAD_TOPIC = """<model name="badly_named"><pose>-3 0 0.1 0 0 0</pose>
   <link name="body"><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
@@ -71,7 +81,7 @@ def sim(tmp_path_factory):
     (models / 'tiny_post' / 'model.sdf').write_text(sdf(box_sdf('tiny_post', size=0.1, static=True)))
     (work / 'box.sdf').write_text(sdf(box_sdf('from_file', pose='0.5 0 0.1 0 0 0')))
     world = work / 'falling.world'
-    world.write_text(sdf_world(box_sdf('crate', pose='0 -3 1 0 0 0') + PENDULUM + BAD_TOPIC))
+    world.write_text(sdf_world(box_sdf('crate', pose='0 -3 1 0 0 0') + PENDULUM + SWIVEL + BAD_TOPIC))
     system = RosSystem(str(work))
     system.env['GAZEBO_MODEL_PATH'] = str(models)
     try:
@@ -151,6 +161,10 @@ def test_world_file_models_are_gazebo_ros_models(sim):
                             'joint_names': ['hinge'], 'is_static': False}
     assert out['crate_props'] == {'success': True, 'body_names': ['body'], 'geom_names': ['shell'],
                                   'joint_names': [], 'is_static': False}
+    assert out['swivel_props']['joint_names'] == ['socket']
+    success, position, rate = out['socket']
+    assert success and len(position) == 1 and math.isnan(position[0]) and rate == [0.0], out['socket']
+    assert out['swivel_swung'] > 0.01, 'the bob swung about its ball joint'
     assert out['delete'] == [True, 'DeleteModel: successfully deleted model']
     assert 'crate' not in out['after_delete']
     log = sim.plant.log()

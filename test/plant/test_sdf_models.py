@@ -497,11 +497,14 @@ def test_a_universal_joints_second_axis_keeps_its_limits():
     assert abs(robot.joint_state('u')[0]) > 0.5  # the first axis is free
 
 
-def test_a_ball_joint_is_held_fixed_saying_why():
+def test_a_ball_joint_is_simulated_and_reports_as_gazebos_ode_ball_joint():
+    # test_sdf_joints.py checks its physics; here: not held fixed, and Gazebo 11's state (NaN, 0).
     sdf = model('m', link('base') + link('arm', '0 0 0.5 0 0 0') + joint('b', 'base', 'arm', type='ball', axis=''))
     w, robot = spawn(sdf)
-    assert robot.joint_names == []
-    assert [m for m in logged(w, 'WARN') if "joint 'b'" in m and 'held fixed' in m and 'spherical' in m]
+    assert robot.joint_names == []  # the joints with one position
+    position, velocity, _ = robot.joint_state('b')
+    assert math.isnan(position) and velocity == 0
+    assert not [m for m in logged(w, 'WARN') if "joint 'b'" in m]
 
 
 def test_a_world_keeps_its_good_models_when_ones_pose_is_not_a_pose():

@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <tinyxml2.h>
@@ -545,15 +546,57 @@ void readAxis(urdf::Joint& j, const JointPart& part, const char* axis_tag, const
   }
 }
 
-// The mass the frame between a universal (or revolute2) joint's two axes gets: SDF's frame has none,
-// and the physics needs one (the robot builder's least mass without a warning).
+// The mass the frame between a universal (or revolute2) joint's two axes gets, and the one between a
+// screw's turn and its slide: SDF's frame has none, and the physics needs one (the robot builder's
+// least mass without a warning).
 constexpr double kAxisFrameMass = 1e-3;  // kg
 constexpr double kAxisFrameInertia = 1e-6;  // kg m^2
+
+std::shared_ptr<urdf::Link> axisFrameLink(urdf::ModelInterface& tree, const std::string& name, RobotDescription& out)
+{
+  auto frame = std::make_shared<urdf::Link>();
+  frame->name = name;
+  frame->inertial = std::make_shared<urdf::Inertial>();
+  frame->inertial->mass = kAxisFrameMass;
+  frame->inertial->ixx = frame->inertial->iyy = frame->inertial->izz = kAxisFrameInertia;
+  tree.links_[name] = frame;
+  out.frame_links.insert(name);
+  return frame;
+}
+
+// A screw joint's thread as Gazebo 11 reads it: <thread_pitch> in rad/m, the child advancing
+// -angle / thread_pitch along the axis (ODEScrewJoint hands ODE -thread_pitch, whose screw row holds
+// the slide at angle / its pitch), so a positive value is a left-handed thread, as sdformat's
+// joint.sdf says. Where only SDF 1.10's <screw_thread_pitch> (m per turn, positive right-handed) is
+// given, that: thread_pitch = -2 pi / screw_thread_pitch. Returns the metres the child advances per
+// radian it turns; throws DescriptionError for a thread that is none (zero, not finite) or
+// advances more than kMaxLength a turn.
+double screwAdvancePerRadian(const JointPart& part, const std::string& model)
+{
+  const tinyxml2::XMLElement* e = part.element;
+  const std::string where = "model '" + model + "' joint '" + part.name + "' (screw)";
+  const bool per_turn = !e->FirstChildElement("thread_pitch") && e->FirstChildElement("screw_thread_pitch");
+  const char* tag = per_turn ? "screw_thread_pitch" : "thread_pitch";
+  const double value = xml::childDouble(e, tag, 1.0);  // sdformat's default for either
+  const double advance = per_turn ? value / (2 * M_PI) : -1.0 / value;
+  if (!(value != 0) || !std::isfinite(value) || !(std::abs(advance) * 2 * M_PI <= kMaxLength))
+    throw DescriptionError(where + ": <" + tag + "> " + formatNumber(value) + " is no thread: give " +
+                           (per_turn ? "the metres the child advances a turn (positive: right-handed)"
+                                     : "the radians the child turns a metre it advances (Gazebo's: positive "
+                                       "for a left-handed thread)") +
+                           ", not 0, finite, and at most " + formatNumber(kMaxLength) + " m a turn");
+  return advance;
+}
 
 // An SDF joint as URDF joints from `parent_frame` (the parent link's frame, in the model) to `child`,
 // a link in the joint frame, added to `tree`. Revolute, continuous, prismatic and fixed joints are one
 // URDF joint; universal and revolute2 are two revolutes, the second named "<joint>::axis2", through
-// a frame link at the joint frame (Gazebo reports them as one joint of two axes).
+// a frame link at the joint frame (Gazebo reports them as one joint of two axes). A ball is one
+// FLOATING URDF joint named in RobotDescription::ball_joints (the builder makes it spherical). A screw
+// is a revolute (its turn, named as the joint, with <axis>'s limits and dynamics) and a prismatic
+// slide "<joint>::__screw_slide__" along the same axis through a frame link, the slide tied to the
+// turn (RobotDescription::joint_couplings). A gearbox here is one that is its child's only joint:
+// held fixed (buildTree couples the others).
 void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pose& parent_frame,
               const std::string& parent, const std::string& child, const std::string& model, RobotDescription& out)
 {
@@ -564,18 +607,13 @@ void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pos
   j->parent_to_joint_origin_transform = compose(inverse(parent_frame), part.pose);
   tree.joints_[part.name] = j;
   const std::string& type = part.type;
+  const std::string where = "model '" + model + "' joint '" + part.name + "'";
   if (type == "revolute" || type == "continuous" || type == "prismatic")
     readAxis(*j, part, "axis", type, model, out);
   else if (type == "universal" || type == "revolute2")
   {
     const std::string between = part.name + "::__axis2_frame__";
-    auto frame = std::make_shared<urdf::Link>();
-    frame->name = between;
-    frame->inertial = std::make_shared<urdf::Inertial>();
-    frame->inertial->mass = kAxisFrameMass;
-    frame->inertial->ixx = frame->inertial->iyy = frame->inertial->izz = kAxisFrameInertia;
-    tree.links_[between] = frame;
-    out.frame_links.insert(between);
+    axisFrameLink(tree, between, out);
     j->child_link_name = between;
     readAxis(*j, part, "axis", "revolute", model, out);
     auto second = std::make_shared<urdf::Joint>();
@@ -583,31 +621,134 @@ void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pos
     second->parent_link_name = between;
     second->child_link_name = child;
     if (!part.element->FirstChildElement("axis2"))
-      throw DescriptionError("model '" + model + "' joint '" + part.name + "' of type '" + type + "' has no <axis2>: "
-                             "give its second axis");
+      throw DescriptionError(where + " of type '" + type + "' has no <axis2>: give its second axis");
     readAxis(*second, part, "axis2", "revolute", model, out);
     if (tree.joints_.count(second->name))
       throw DescriptionError("model '" + model + "' joint '" + second->name + "' is given twice");
     tree.joints_[second->name] = second;
-    out.warnings.push_back("model '" + model + "' joint '" + part.name + "' (" + type + "): simulated as two "
-                           "revolute joints, '" + part.name + "' about <axis> and '" + second->name + "' about <axis2>");
+    out.warnings.push_back(where + " (" + type + "): simulated as two revolute joints, '" + part.name +
+                           "' about <axis> and '" + second->name + "' about <axis2>");
+  }
+  else if (type == "ball")
+  {
+    j->type = urdf::Joint::FLOATING;
+    out.ball_joints.insert(part.name);
+    if (part.element->FirstChildElement("axis") || part.element->FirstChildElement("axis2"))
+      out.warnings.push_back(where + " (ball): its <axis> is ignored: a ball joint turns freely about its origin, "
+                             "without an axis, limits, damping or friction, as Gazebo's");
+  }
+  else if (type == "screw")
+  {
+    const double advance = screwAdvancePerRadian(part, model);
+    const std::string between = part.name + "::__screw_frame__";
+    axisFrameLink(tree, between, out);
+    j->child_link_name = between;
+    readAxis(*j, part, "axis", "revolute", model, out);
+    auto slide = std::make_shared<urdf::Joint>();
+    slide->name = part.name + "::__screw_slide__";
+    slide->type = urdf::Joint::PRISMATIC;
+    slide->parent_link_name = between;
+    slide->child_link_name = child;
+    slide->axis = j->axis;  // the frame turns about the axis, which stays where it is
+    if (tree.joints_.count(slide->name))
+      throw DescriptionError("model '" + model + "' joint '" + slide->name + "' is given twice");
+    tree.joints_[slide->name] = slide;
+    out.joint_couplings.push_back({part.name, part.name, slide->name, advance, true});
   }
   else if (type == "fixed")
     j->type = urdf::Joint::FIXED;
-  else if (type == "ball" || type == "screw" || type == "gearbox")
+  else if (type == "gearbox")
   {
-    out.warnings.push_back("model '" + model + "' joint '" + part.name + "' is of type '" + type + "', which the "
-                           "plant does not simulate (" +
-                           (type == "ball" ? std::string("its multibody physics has revolute and prismatic joints, no "
-                                                         "spherical one")
-                                           : std::string("revolute, continuous, prismatic, universal, revolute2, fixed")) +
-                           "); it is held fixed");
+    out.warnings.push_back(where + " is a gearbox and the only joint link '" + part.child + "' hangs from: a "
+                           "gearbox couples two revolute joints that hang from its <gearbox_reference_body>, and "
+                           "alone it would leave the link free in five directions, which the plant's tree of links "
+                           "cannot; it is held fixed");
     j->type = urdf::Joint::FIXED;
   }
   else
     throw DescriptionError("model '" + model + "' joint '" + part.name + "': type '" + type +
                            "' is not an SDF joint type (revolute, continuous, prismatic, fixed, ball, universal, "
                            "revolute2, screw, gearbox)");
+}
+
+// The link at the top of the rigid body `link` is part of: up through fixed joints (and gearboxes
+// held fixed) to a link that hangs from a movable joint, from none, or the world.
+std::string rigidRoot(std::string link, const std::map<std::string, const JointPart*>& hangs_from)
+{
+  for (size_t guard = 0; guard <= hangs_from.size(); ++guard)  // a tree: the guard only bounds the walk
+  {
+    auto it = hangs_from.find(link);
+    if (it == hangs_from.end() || (it->second->type != "fixed" && it->second->type != "gearbox"))
+      break;
+    link = it->second->parent;
+  }
+  return link;
+}
+
+// A gearbox between two links that each hang from a revolute joint off its <gearbox_reference_body>
+// (or a link fixed to it). Gazebo 11's ODE gearbox holds theta_child = -gearbox_ratio theta_parent,
+// each angle its link's from the reference body, the child's about <axis> and the parent's about
+// <axis2> (ODEGearboxJoint hands ODE's first body, the child, <axis>; sdformat's joint.sdf words it
+// the other way round, which is the same where the two axes agree, as they do in Gazebo's gearbox
+// world). In the plant's tree that ties the two revolute joints' positions, q_child = m q_parent
+// with m = -ratio times the signs of the joints' axes along the gearbox's: a coupling
+// (RobotDescription::joint_couplings). A gearbox the plant cannot tie so is left out with an error,
+// the model moving on without it; a ratio that is no number refuses the model (xml::childDouble).
+void coupleGears(const JointPart& gearbox, const std::map<std::string, const LinkPart*>& links,
+                 const std::map<std::string, const JointPart*>& hangs_from, const std::string& model,
+                 RobotDescription& out)
+{
+  const std::string where = "model '" + model + "' joint '" + gearbox.name + "' (gearbox)";
+  const double ratio = xml::childDouble(gearbox.element, "gearbox_ratio", 1.0);
+  const std::string reference = xml::trimmed(xml::childText(gearbox.element, "gearbox_reference_body", ""));
+  auto leaveOut = [&](const std::string& why) {
+    out.errors.push_back(where + ": " + why + "; the gears are not coupled");
+  };
+  if (reference != kWorld && !links.count(reference))
+    return leaveOut("<gearbox_reference_body> '" + reference + "' is no link of the model (nor 'world'): name the "
+                    "link both gears turn on");
+  const std::string base = rigidRoot(reference, hangs_from);
+  struct Gear
+  {
+    const char* role;
+    std::string link;
+    const char* axis_tag;
+    const JointPart* joint;
+    double sign;
+  };
+  Gear gears[2] = {{"parent", gearbox.parent, "axis2", nullptr, 0.0}, {"child", gearbox.child, "axis", nullptr, 0.0}};
+  for (Gear& gear : gears)
+  {
+    const std::string its = std::string("its ") + gear.role + " '" + gear.link + "'";
+    auto it = hangs_from.find(gear.link);
+    if (it == hangs_from.end())
+      return leaveOut(its + " hangs from no joint: a gearbox couples two revolute joints that hang from its "
+                      "<gearbox_reference_body> '" + reference + "'");
+    const JointPart& joint = *it->second;
+    if (joint.type != "revolute" && joint.type != "continuous")
+      return leaveOut(its + " hangs from joint '" + joint.name + "', which is " + joint.type + ": a gearbox couples two "
+                      "revolute joints that hang from its <gearbox_reference_body> '" + reference + "'");
+    if (rigidRoot(joint.parent, hangs_from) != base)
+      return leaveOut("joint '" + joint.name + "' that " + its + " hangs from does not hang from its "
+                      "<gearbox_reference_body> '" + reference + "' (nor from a link fixed to it): a gear's angle is "
+                      "its angle from that body");
+    const urdf::Vector3 a = rotate(joint.pose.rotation, jointAxis(joint, model));
+    const urdf::Vector3 b = rotate(gearbox.pose.rotation, jointAxis(gearbox, model, gear.axis_tag));
+    const double along = a.x * b.x + a.y * b.y + a.z * b.z;
+    if (!(std::abs(along) >= 1 - 1e-6))
+      return leaveOut(std::string("its <") + gear.axis_tag + "> is not along the axis of joint '" + joint.name +
+                      "' that " + its + " turns about: the plant couples the two joints' angles");
+    gear.joint = &joint;
+    gear.sign = along > 0 ? 1.0 : -1.0;
+  }
+  for (const JointCouplingDescription& other : out.joint_couplings)
+    if (other.follower == gears[1].joint->name)
+      return leaveOut("joint '" + other.follower + "' is the child gear of gearbox '" + other.name + "' already");
+  if (ratio == 0)
+    out.warnings.push_back(where + ": <gearbox_ratio> 0 holds the child gear's joint '" + gears[1].joint->name +
+                           "' still");
+  out.joint_couplings.push_back(
+      {gearbox.name, gears[0].joint->name, gears[1].joint->name, -ratio * gears[0].sign * gears[1].sign, false});
 }
 
 // The model's links and joints as a URDF tree: links in their own frames, a joint frame apart from
@@ -634,24 +775,19 @@ void buildTree(const ModelParts& parts, RobotDescription& out)
   if (links.empty())
     throw DescriptionError("model '" + model + "' has no <link>: a model that moves needs one");
   std::map<std::string, std::string> parent_of;  // child link -> joint
+  std::map<std::string, const JointPart*> hangs_from;  // child link -> its joint
+  std::set<std::string> joint_names;
+  std::vector<const JointPart*> gearboxes;
   bool world_rooted = false;
-  for (const JointPart& part : parts.joints)
-  {
+  auto addTreeJoint = [&](const JointPart& part) {
     const std::string where = "model '" + model + "' joint '" + part.name + "'";
-    if (tree->joints_.count(part.name))
-      throw DescriptionError(where + " is given twice; joint names must be unique in a model");
-    if (!links.count(part.child))
-      throw DescriptionError(where + ": <child> '" + part.child + "' is no link of the model");
-    if (part.parent != kWorld && !links.count(part.parent))
-      throw DescriptionError(where + ": <parent> '" + part.parent + "' is no link of the model (nor 'world')");
-    if (part.parent == part.child)
-      throw DescriptionError(where + " joins link '" + part.child + "' to itself");
     if (parent_of.count(part.child))
       throw DescriptionError(where + " closes a kinematic loop: link '" + part.child + "' already hangs from joint '" +
                              parent_of[part.child] + "'. The plant simulates a model's links as a tree (a Featherstone "
                              "multibody) and has no loop-closing constraints yet; model the loop as two models, or "
                              "leave one joint out");
     parent_of[part.child] = part.name;
+    hangs_from[part.child] = &part;
     const urdf::Pose child_frame = links[part.child]->pose;
     const urdf::Pose parent_frame = part.parent == kWorld ? urdf::Pose() : links[part.parent]->pose;
     std::string parent = part.parent;
@@ -677,6 +813,38 @@ void buildTree(const ModelParts& parts, RobotDescription& out)
     catch (const DescriptionError& e)
     {
       throw inContext(where, e);
+    }
+  };
+  for (const JointPart& part : parts.joints)
+  {
+    const std::string where = "model '" + model + "' joint '" + part.name + "'";
+    if (!joint_names.insert(part.name).second || tree->joints_.count(part.name))
+      throw DescriptionError(where + " is given twice; joint names must be unique in a model");
+    if (!links.count(part.child))
+      throw DescriptionError(where + ": <child> '" + part.child + "' is no link of the model");
+    if (part.parent != kWorld && !links.count(part.parent))
+      throw DescriptionError(where + ": <parent> '" + part.parent + "' is no link of the model (nor 'world')");
+    if (part.parent == part.child)
+      throw DescriptionError(where + " joins link '" + part.child + "' to itself");
+    if (part.type == "gearbox")
+      gearboxes.push_back(&part);  // once the tree is known: a constraint between two of its joints
+    else
+      addTreeJoint(part);
+  }
+  for (const JointPart* gearbox : gearboxes)
+  {
+    if (!parent_of.count(gearbox->child))
+    {
+      addTreeJoint(*gearbox);  // its child's only joint: held fixed (addJoint)
+      continue;
+    }
+    try
+    {
+      coupleGears(*gearbox, links, hangs_from, model, out);
+    }
+    catch (const DescriptionError& e)
+    {
+      throw inContext("model '" + model + "' joint '" + gearbox->name + "'", e);
     }
   }
   // The roots: links no joint hangs from.

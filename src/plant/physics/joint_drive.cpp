@@ -13,6 +13,13 @@ JointDrive::JointDrive(btMultiBodyDynamicsWorld* world, btMultiBody* body, int l
 {
 }
 
+JointDrive::JointDrive(btMultiBodyDynamicsWorld* world, btMultiBody* body, int link, int coupled_link, double ratio)
+  : JointDrive(world, body, link)
+{
+  coupled_link_ = coupled_link;
+  coupled_ratio_ = ratio;
+}
+
 JointDrive::~JointDrive() { setEnabled(false); }
 
 void JointDrive::setEnabled(bool enabled)
@@ -30,6 +37,8 @@ void JointDrive::finalizeMultiDof()
 {
   allocateJacobiansMultiDof();
   jacobianA(0)[6 + m_bodyA->getLink(m_linkA).m_dofOffset] = 1;  // the row is the joint's velocity
+  if (coupled_link_ >= 0)
+    jacobianA(0)[6 + m_bodyA->getLink(coupled_link_).m_dofOffset] = btScalar(-coupled_ratio_);
   m_numDofsFinalized = m_jacSizeBoth;
 }
 
@@ -124,8 +133,8 @@ btMultiBodySolverConstraint& JointDrive::startRow(btMultiBodyConstraintArray& ro
   return row;
 }
 
-// What fillMultiBodyConstraint makes of this row (one multibody, the joint's velocity, no position
-// error) up to the response.
+// What fillMultiBodyConstraint makes of this row (one multibody, the joint's velocity or a coupled
+// pair's, no position error) up to the response.
 int JointDrive::createRowWithoutResponse(btMultiBodyConstraintArray& rows, btMultiBodyJacobianData& data,
                                          btScalar& velocity_error, btScalar& cfm)
 {
@@ -154,7 +163,10 @@ int JointDrive::createRowWithoutResponse(btMultiBodyConstraintArray& rows, btMul
   row.m_appliedPushImpulse = 0;
   row.m_rhsPenetration = 0;
 
-  velocity_error = btScalar(target_velocity_) - body->getVelocityVector()[6 + body->getLink(m_linkA).m_dofOffset];
+  const btScalar* qd = body->getVelocityVector();
+  velocity_error = btScalar(target_velocity_) - qd[6 + body->getLink(m_linkA).m_dofOffset];
+  if (coupled_link_ >= 0)
+    velocity_error += btScalar(coupled_ratio_) * qd[6 + body->getLink(coupled_link_).m_dofOffset];
   // A soft drive: with cfm = 1/gain the converged impulse is gain * (target - qd_end).
   cfm = std::isinf(gain_) ? btScalar(0) : btScalar(1.0 / gain_);
   return rows.size() - 1;

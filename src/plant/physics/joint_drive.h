@@ -1,5 +1,7 @@
 // One constraint row on a joint's velocity, solved together with the contacts:
 //   impulse = gain * (target_velocity - qd_end), clamped to [-max_impulse, max_impulse].
+// A coupled row (a screw's slide to its turn, a gearbox's gears) is on qd - ratio * qd_other of
+// another joint of the same multibody instead.
 // gain = infinity gives a rigid velocity motor; a finite gain is a soft (implicit) drive, i.e. a
 // spring-damper evaluated at the end of the step, stable for any gain and inertia.
 // The row acts on the joint's own multibody only (Bullet's joint motor also carries an all-zero
@@ -21,6 +23,8 @@ public:
   // The drive is in the world's constraints only while enabled: an idle drive costs the world's
   // per-step sorting and island bookkeeping nothing.
   JointDrive(btMultiBodyDynamicsWorld* world, btMultiBody* body, int link);
+  // The row on qd(link) - ratio * qd(coupled_link), both single-dof links of `body`.
+  JointDrive(btMultiBodyDynamicsWorld* world, btMultiBody* body, int link, int coupled_link, double ratio);
   ~JointDrive() override;
 
   void drive(double target_velocity, double gain, double max_impulse);
@@ -60,6 +64,8 @@ private:
   int side_ = 0;  // 0: two-sided drive; +1: velocity >= target; -1: velocity <= target
   double target_velocity_ = 0.0;
   double gain_ = std::numeric_limits<double>::infinity();
+  int coupled_link_ = -1;  // -1: a row on the joint's own velocity alone
+  double coupled_ratio_ = 0.0;
 };
 
 }  // namespace bullet_plant

@@ -1,6 +1,9 @@
 #include "physics/movable_joint.h"
 
 #include <algorithm>
+#include <limits>
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
 
 namespace bullet_plant
 {
@@ -13,6 +16,13 @@ double positionWithinLimits(const MovableJoint& j, double q, Log& log, const std
   log.warn(what + " " + formatNumber(q) + " of joint '" + j.name + "' of '" + robot + "' is outside its URDF limits [" +
            formatNumber(j.limits.lower) + ", " + formatNumber(j.limits.upper) + "]; it starts at " + formatNumber(within));
   return within;
+}
+
+void holdCoupling(JointCoupling& c, const std::vector<MovableJoint>& joints, const btMultiBody& body, double dt)
+{
+  const double mismatch = body.getJointPos(joints[c.follower].link) - c.multiplier * body.getJointPos(joints[c.leader].link);
+  const double inf = std::numeric_limits<double>::infinity();
+  c.row->drive(-kCouplingRecovery * mismatch / dt, inf, inf);
 }
 
 }  // namespace bullet_plant

@@ -1,5 +1,6 @@
 #include "simulation/divergence_recovery.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -18,6 +19,10 @@ void LastGoodState::save(const RobotMultibody& robot)
     q[i] = mb->getJointPos(robot.joints[i].link);
     qd[i] = mb->getJointVel(robot.joints[i].link);
   }
+  ball_q.resize(4 * robot.balls.size());
+  for (size_t i = 0; i < robot.balls.size(); ++i)
+    std::copy(mb->getJointPosMultiDof(robot.balls[i].link), mb->getJointPosMultiDof(robot.balls[i].link) + 4,
+              &ball_q[4 * i]);
   base = mb->getBaseWorldTransform();
   base_velocity = mb->getBaseVel();
   base_omega = mb->getBaseOmega();
@@ -33,6 +38,12 @@ void LastGoodState::restore(RobotMultibody& robot) const
   {
     mb->setJointPos(robot.joints[i].link, q[i]);
     mb->setJointVel(robot.joints[i].link, 0);
+  }
+  const btScalar at_rest[3] = {0, 0, 0};
+  for (size_t i = 0; i < robot.balls.size(); ++i)
+  {
+    mb->setJointPosMultiDof(robot.balls[i].link, &ball_q[4 * i]);
+    mb->setJointVelMultiDof(robot.balls[i].link, at_rest);
   }
   robot.updateKinematics();
 }
@@ -51,6 +62,13 @@ bool stateFinite(const RobotMultibody& robot)
   for (const MovableJoint& j : robot.joints)
     if (!std::isfinite(mb->getJointPos(j.link)) || !std::isfinite(mb->getJointVel(j.link)))
       return false;
+  for (const BallJoint& b : robot.balls)
+  {
+    const btScalar* q = mb->getJointPosMultiDof(b.link);
+    const btScalar* qd = mb->getJointVelMultiDof(b.link);
+    if (!std::isfinite(q[0] + q[1] + q[2] + q[3]) || !std::isfinite(qd[0] + qd[1] + qd[2]))
+      return false;
+  }
   return true;
 }
 }  // namespace

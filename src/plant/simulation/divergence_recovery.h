@@ -19,6 +19,7 @@ namespace bullet_plant
 struct LastGoodState
 {
   std::vector<btScalar> q, qd;
+  std::vector<btScalar> ball_q;  // Bullet's quaternion (x y z w) of each ball joint, one after the other
   btTransform base = btTransform::getIdentity();
   btVector3 base_velocity{0, 0, 0}, base_omega{0, 0, 0};
 

@@ -4,6 +4,7 @@
 // in joint_layer.cpp, its sensors in sensors.cpp.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "physics/bullet_conversions.h"
@@ -45,6 +46,11 @@ void Robot::Internals::resetToSpawn()
   last_good.base = spawn_pose * multibody.bodies[0].urdf_from_com;
   for (size_t i = 0; i < multibody.joints.size(); ++i)
     last_good.q[i] = btScalar(multibody.joints[i].initial_position);
+  for (size_t i = 0; i < multibody.balls.size(); ++i)  // as built: the joint frame's own orientation
+  {
+    std::fill(&last_good.ball_q[4 * i], &last_good.ball_q[4 * i] + 3, btScalar(0));
+    last_good.ball_q[4 * i + 3] = 1;
+  }
   last_good.restore(multibody);
   settleAfterTeleport();
 }
@@ -79,7 +85,16 @@ std::vector<std::string> Robot::jointNames() const
 {
   std::vector<std::string> names;
   for (const MovableJoint& j : in_->multibody.joints)
-    names.push_back(j.name);
+    if (!j.internal)
+      names.push_back(j.name);
+  return names;
+}
+
+std::vector<std::string> Robot::ballJointNames() const
+{
+  std::vector<std::string> names;
+  for (const BallJoint& b : in_->multibody.balls)
+    names.push_back(b.name);
   return names;
 }
 
@@ -88,7 +103,14 @@ bool Robot::jointState(const std::string& joint, double& position, double& veloc
   const RobotMultibody& mb = in_->multibody;
   auto it = mb.joint_index.find(joint);
   if (it == mb.joint_index.end())
-    return false;
+  {
+    if (!mb.ball(joint))
+      return false;
+    // Gazebo 11's ODEBallJoint: no position (NaN), velocity 0, no effort.
+    position = std::numeric_limits<double>::quiet_NaN();
+    velocity = effort = 0.0;
+    return true;
+  }
   const MovableJoint& j = mb.joints[it->second];
   position = mb.bullet->getJointPos(j.link);
   velocity = mb.bullet->getJointVel(j.link);
@@ -138,9 +160,12 @@ int bodyOfLink(const RobotMultibody& multibody, const std::string& link, const s
 const MovableJoint& movableJoint(const RobotMultibody& multibody, const std::string& joint, const std::string& robot)
 {
   auto it = multibody.joint_index.find(joint);
-  if (it == multibody.joint_index.end())
-    throw std::out_of_range("robot '" + robot + "' has no movable joint '" + joint + "'");
-  return multibody.joints[it->second];
+  if (it != multibody.joint_index.end())
+    return multibody.joints[it->second];
+  if (multibody.ball(joint))
+    throw std::invalid_argument("joint '" + joint + "' of robot '" + robot + "' is a ball joint, which has no one "
+                                "position or effort (Gazebo's ODE ball joint has neither)");
+  throw std::out_of_range("robot '" + robot + "' has no movable joint '" + joint + "'");
 }
 }  // namespace
 
@@ -187,6 +212,9 @@ void Robot::setLinkState(const std::string& link, const urdf::Pose& pose, const 
   mb.setBaseVel(v + omega.cross(base.getOrigin() - toBullet(pose).getOrigin()));
   for (const MovableJoint& j : multibody.joints)
     mb.setJointVel(j.link, 0);
+  const btScalar at_rest[3] = {0, 0, 0};
+  for (const BallJoint& b : multibody.balls)
+    mb.setJointVelMultiDof(b.link, at_rest);
   in_->settleAfterTeleport();
 }
 
@@ -205,6 +233,20 @@ void Robot::setJointPositions(const std::map<std::string, double>& positions)
     const MovableJoint& j = movableJoint(multibody, kv.first, in_->name);
     mb.setJointPos(j.link, btScalar(positionWithinLimits(j, kv.second, in_->world->log, in_->name, "position")));
     mb.setJointVel(j.link, 0);
+  }
+  // Coupled joints stay in mesh: a follower set alone moves its leader, else it follows its leader.
+  for (const JointCoupling& c : multibody.couplings)
+  {
+    const MovableJoint& leader = multibody.joints[c.leader];
+    const MovableJoint& follower = multibody.joints[c.follower];
+    if (positions.count(follower.name) && !positions.count(leader.name) && c.multiplier != 0)
+    {
+      const double q = mb.getJointPos(follower.link) / c.multiplier;
+      mb.setJointPos(leader.link, btScalar(positionWithinLimits(leader, q, in_->world->log, in_->name, "position")));
+      mb.setJointVel(leader.link, 0);
+    }
+    mb.setJointPos(follower.link, btScalar(c.multiplier * mb.getJointPos(leader.link)));
+    mb.setJointVel(follower.link, 0);
   }
   in_->settleAfterTeleport();
 }

@@ -84,6 +84,12 @@ bool explicitSpringAccurate(const MovableJoint& j, double dt)
   return j.spring_stiffness * dt * dt < 0.1 * j.axis_inertia;
 }
 
+// An SDF ball joint (RobotDescription::ball_joints): a spherical Bullet link.
+bool isBall(const Robot::Internals& r, const urdf::Joint& joint)
+{
+  return joint.type == urdf::Joint::FLOATING && r.description.ball_joints.count(joint.name);
+}
+
 // 1. Bodies: each movable joint starts one; fixed joints fold their child into the parent body.
 std::vector<BodyPlan> planBodies(Robot::Internals& r, const urdf::LinkConstSharedPtr& root, LinkPlacement& placement)
 {
@@ -100,7 +106,7 @@ std::vector<BodyPlan> planBodies(Robot::Internals& r, const urdf::LinkConstShare
           urdf::LinkConstSharedPtr child = model.getLink(joint->child_link_name);
           btTransform joint_frame = in_body * toBullet(joint->parent_to_joint_origin_transform);
           bool movable = joint->type == urdf::Joint::REVOLUTE || joint->type == urdf::Joint::CONTINUOUS ||
-                         joint->type == urdf::Joint::PRISMATIC;
+                         joint->type == urdf::Joint::PRISMATIC || isBall(r, *joint);
           if (!movable && joint->type != urdf::Joint::FIXED)
             r.world->log.warn("joint '" + joint->name + "' of '" + r.name + "' is floating or planar, which the plant "
                               "does not simulate; it is held fixed");
@@ -470,7 +476,10 @@ std::vector<double> createMultibody(Robot::Internals& r, const std::vector<BodyP
     axis_inertia[bi] = joint.type == urdf::Joint::PRISMATIC
                            ? body.mass
                            : axis.dot(body.inertia_diagonal * axis) + body.mass * lever.length2();
-    if (joint.type == urdf::Joint::PRISMATIC)
+    if (isBall(r, joint))  // three rotations about the joint frame's origin; no axis
+      mb->setupSpherical(bi - 1, btScalar(body.mass), body.inertia_diagonal, body.parent - 1, parent_to_this,
+                         offset_in_parent.getOrigin(), -offset_in_child.getOrigin(), true);
+    else if (joint.type == urdf::Joint::PRISMATIC)
       mb->setupPrismatic(bi - 1, btScalar(body.mass), body.inertia_diagonal, body.parent - 1, parent_to_this, axis,
                          offset_in_parent.getOrigin(), -offset_in_child.getOrigin(), true);
     else
@@ -500,7 +509,7 @@ void limitUnlimitedEfforts(Robot::Internals& r)
   for (const MovableJoint& j : r.multibody.joints)
     if (std::isfinite(j.limits.effort))
       strongest = std::max(strongest, j.limits.effort);
-    else
+    else if (!j.internal)
       unlimited += (unlimited.empty() ? "'" : ", '") + j.name + "'";
   if (unlimited.empty())
     return;
@@ -512,8 +521,43 @@ void limitUnlimitedEfforts(Robot::Internals& r)
                     formatNumber(limit) + (strongest > 0 ? " (the robot's largest)" : " (the plant's default)"));
 }
 
+// 5b. SDF's couplings (a screw's slide to its turn, a gearbox's gears): a row each, the followers'
+// initial positions the leaders' times the multiplier (a follower given one alone moves its leader).
+void coupleJoints(Robot::Internals& r, const std::map<std::string, double>& initial_joints)
+{
+  RobotMultibody& multibody = r.multibody;
+  for (const JointCouplingDescription& c : r.description.joint_couplings)
+  {
+    auto leader = multibody.joint_index.find(c.leader), follower = multibody.joint_index.find(c.follower);
+    if (leader == multibody.joint_index.end() || follower == multibody.joint_index.end())
+    {
+      r.world->log.error("robot '" + r.name + "': joint '" + c.name + "' couples joints '" + c.leader + "' and '" +
+                         c.follower + "', which are not both movable; they are not coupled");
+      continue;
+    }
+    MovableJoint& f = multibody.joints[follower->second];
+    MovableJoint& l = multibody.joints[leader->second];
+    f.internal = c.follower_internal;
+    JointCoupling k;
+    k.name = c.name;
+    k.leader = leader->second;
+    k.follower = follower->second;
+    k.multiplier = c.multiplier;
+    k.row.reset(new JointDrive(r.world->dynamics.get(), multibody.bullet.get(), f.link, l.link, c.multiplier));
+    multibody.couplings.push_back(std::move(k));
+    if (initial_joints.count(c.follower) && !initial_joints.count(c.leader) && c.multiplier != 0)
+    {
+      l.initial_position = positionWithinLimits(l, f.initial_position / c.multiplier, r.world->log, r.name,
+                                                "initial position");
+      multibody.bullet->setJointPos(l.link, btScalar(l.initial_position));
+    }
+    f.initial_position = c.multiplier * l.initial_position;
+    multibody.bullet->setJointPos(f.link, btScalar(f.initial_position));
+  }
+}
+
 // 5. Movable joints: limits, URDF dynamics, SDF springs, the drive the joint layer uses and the rows
-// for damping, springs, dry friction and limits.
+// for damping, springs, dry friction and limits; SDF's ball joints beside them, and couplings.
 void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const std::vector<double>& axis_inertia,
                   const std::map<std::string, double>& initial_joints)
 {
@@ -521,6 +565,11 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
   for (size_t bi = 1; bi < plans.size(); ++bi)
   {
     const urdf::Joint& uj = *plans[bi].joint;
+    if (isBall(r, uj))
+    {
+      r.multibody.balls.push_back({uj.name, int(bi) - 1});
+      continue;
+    }
     MovableJoint j;
     j.name = uj.name;
     j.link = int(bi) - 1;
@@ -573,6 +622,7 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
     r.multibody.joint_index[j.name] = r.multibody.joints.size();
     r.multibody.joints.push_back(std::move(j));
   }
+  coupleJoints(r, initial_joints);
   limitUnlimitedEfforts(r);
 }
 
@@ -672,8 +722,9 @@ void createHandles(Robot::Internals& r)
                              "' does not have; fix the transmission or add the joint to the URDF");
     auto index = r.multibody.joint_index.find(t.joint);
     if (index == r.multibody.joint_index.end())
-      throw DescriptionError("transmission '" + t.name + "' names joint '" + t.joint +
-                             "', which is fixed; only revolute, continuous and prismatic joints can be actuated");
+      throw DescriptionError("transmission '" + t.name + "' names joint '" + t.joint + "', which is " +
+                             (r.multibody.ball(t.joint) ? "a ball joint" : "fixed") +
+                             "; only revolute, continuous and prismatic joints can be actuated");
     if (r.joint_layer.drives(index->second))
     {
       r.world->log.warn("joint '" + t.joint + "' appears in more than one transmission; the first one is used");
@@ -834,7 +885,8 @@ void allowSleep(Robot::Internals& r)
   // SDF's <allow_auto_disable>false: never (ODELink::Init's auto-disable flag off); a kinematic
   // model moves at its set velocity whatever touches it.
   const bool driven = r.controller_manager || !r.model_plugins.empty() || !r.sensors.empty() ||
-                      !r.multibody.joints.empty() || !r.description.allow_auto_disable || r.kinematic;
+                      !r.multibody.joints.empty() || !r.multibody.balls.empty() || !r.description.allow_auto_disable ||
+                      r.kinematic;
   btMultiBody& mb = *r.multibody.bullet;
   mb.setCanSleep(!driven);
   mb.setSleepThreshold(btScalar(kSleepSpeed * kSleepSpeed));

@@ -81,6 +81,22 @@ void RobotMultibody::disableJointRows()
                           j.upper_limit.get()})
       if (c)
         c->disable();
+  for (JointCoupling& c : couplings)
+    c.row->disable();
+}
+
+void RobotMultibody::holdCouplings(double dt)
+{
+  for (JointCoupling& c : couplings)
+    holdCoupling(c, joints, *bullet, dt);
+}
+
+const BallJoint* RobotMultibody::ball(const std::string& name) const
+{
+  for (const BallJoint& b : balls)
+    if (b.name == name)
+      return &b;
+  return nullptr;
 }
 
 }  // namespace bullet_plant

@@ -1,7 +1,7 @@
 // A robot's Bullet multibody and what the plant keeps beside it: which URDF links make up each
-// rigid body, the movable joints with their limits and the constraint rows that act on them, and
-// the colliders. Built by robot_builder.cpp; read and driven by the joint layer, the sensors and
-// the Robot; its methods are in robot_multibody.cpp.
+// rigid body, the movable joints with their limits and the constraint rows that act on them, SDF's
+// ball joints and joint couplings, and the colliders. Built by robot_builder.cpp; read and driven by
+// the joint layer, the sensors and the Robot; its methods are in robot_multibody.cpp.
 #pragma once
 
 #include <map>
@@ -68,6 +68,8 @@ struct RobotMultibody
   std::map<std::string, std::pair<int, btTransform>> link_in_body;  // link -> (body, link frame in COM frame)
   std::vector<MovableJoint> joints;                 // URDF order
   std::map<std::string, size_t> joint_index;
+  std::vector<BallJoint> balls;                     // SDF's ball joints
+  std::vector<JointCoupling> couplings;             // SDF's screws and gearboxes
   std::unique_ptr<btMultiBody> bullet;
   std::vector<std::unique_ptr<btMultiBodyLinkCollider>> colliders;
   // Where some links feel no gravity (SDF's <gravity>false): what it pulls on each body, the
@@ -90,6 +92,10 @@ struct RobotMultibody
   // Every JointDrive leaves the world's constraints with its impulse forgotten, as when built
   // (the warm start and the world's constraint order would otherwise carry the past on).
   void disableJointRows();
+  // Each coupling's row for the coming step (holdCoupling).
+  void holdCouplings(double dt);
+  // A ball joint by name, or null.
+  const BallJoint* ball(const std::string& name) const;
 };
 
 }  // namespace bullet_plant

@@ -395,7 +395,11 @@ void World::step(int n)
       }
     for (auto& r : w.robots)
       if (!r->in_->disabled && !r->in_->asleep())
+      {
         r->in_->joint_layer.writeSim(r->in_->multibody.joints, *r->in_->multibody.bullet, w.step_s);
+        if (!r->in_->multibody.couplings.empty())
+          r->in_->multibody.holdCouplings(w.step_s);
+      }
     if (w.physics_enabled)
     {
       for (auto& r : w.robots)

@@ -1,6 +1,7 @@
 """The ROS side of test_spawn_sdf.py::test_world_file_models_are_gazebo_ros_models: the world file's crate
-and pendulum in /gazebo/model_states, the crate falling and resting once unpaused, set_model_state
-and reset_world on them, get_model_properties, delete_model; it prints one JSON value on its last line."""
+and pendulum (and a ball-jointed bob) in /gazebo/model_states, the crate falling and resting once
+unpaused, set_model_state and reset_world on them, get_model_properties, get_joint_properties of the
+ball joint, delete_model; it prints one JSON value on its last line."""
 from gazebo_services_probe import *  # noqa: F401,F403  (the node, srv, pose, result, out)
 get = srv('get_model_state', GetModelState)
 link = srv('get_link_state', GetLinkState)
@@ -22,8 +23,14 @@ def props(name):
             'joint_names': list(r.joint_names), 'is_static': bool(r.is_static)}
 
 
+def bob():
+    p = link('swivel::bob', '').link_state.pose.position
+    return [p.x, p.y, p.z]
+
+
 out['start'] = xyz('crate')
 out['pendulum_start'] = pitch('pendulum::bar')
+swivel_start = bob()
 srv('unpause_physics', Empty)()
 states = rospy.wait_for_message('/gazebo/model_states', ModelStates, timeout=30)
 out['model_states'] = list(states.name)
@@ -35,6 +42,7 @@ m = get('crate', '')
 out['rested'] = [m.pose.position.x, m.pose.position.y, m.pose.position.z]
 out['rested_speed'] = m.twist.linear.z
 out['pendulum_swung'] = abs(pitch('pendulum::bar') - out['pendulum_start'])
+out['swivel_swung'] = math.dist(bob(), swivel_start)
 srv('pause_physics', Empty)()
 out['set'] = result(srv('set_model_state', SetModelState)(ModelState('crate', pose(1.0, -4.0, 0.5), Twist(), 'world')))
 out['moved'] = xyz('crate')
@@ -43,6 +51,9 @@ out['reset_crate'] = xyz('crate')
 out['reset_pendulum'] = pitch('pendulum::bar')
 out['props'] = props('pendulum')
 out['crate_props'] = props('crate')
+out['swivel_props'] = props('swivel')
+socket = srv('get_joint_properties', GetJointProperties)('socket')
+out['socket'] = [bool(socket.success), list(socket.position), list(socket.rate)]
 out['delete'] = result(srv('delete_model', DeleteModel)('crate'))
 out['after_delete'] = list(srv('get_world_properties', GetWorldProperties)().model_names)
 print(json.dumps(out))
