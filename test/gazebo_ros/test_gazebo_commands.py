@@ -1,29 +1,20 @@
 """gazebo_ros's commands as Gazebo users and gazebo_ros_pkgs' own tests run them: `rosrun gazebo_ros
 gzserver [options] WORLD` (the plant's node on the world, with Gazebo 11's options: -u, --iters, and
 one warning for an option that does nothing here), `gzclient` (the browser viewer) and `gazebo` (both,
-stopped together). Each test has its own master."""
+stopped together)."""
 import socket
 import urllib.request
 
 import pytest
 
 from plant_helpers import sdf_world
-from ros_harness import RosSystem, free_port
+from ros_harness import free_port
 
 pytestmark = pytest.mark.ros
 
 CRATE = """<model name="crate"><pose>0 0 1 0 0 0</pose><link name="body">
   <inertial><mass>1</mass><inertia><ixx>0.0067</ixx><iyy>0.0067</iyy><izz>0.0067</izz></inertia></inertial>
   <collision name="shell"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model>"""
-
-
-@pytest.fixture
-def ros(tmp_path):
-    system = RosSystem(str(tmp_path))
-    try:
-        yield system
-    finally:
-        system.close()
 
 
 @pytest.fixture
