@@ -1,5 +1,5 @@
-"""A world file's SDF model with a camera (gazebo_ros_camera), a ray sensor (gazebo_ros_laser), an IMU
-sensor (gazebo_ros_imu_sensor) and a gazebo_ros_p3d model plugin publishes from the node's start as
+"""A world file's SDF model with a camera (gazebo_ros_camera), a ray sensor (gazebo_ros_laser), a range
+sensor (gazebo_ros_range), an IMU sensor (gazebo_ros_imu_sensor) and a gazebo_ros_p3d model plugin publishes from the node's start as
 its URDF twin, spawned by spawn_model, does: the same topic names (the twin's under its
 -robot_namespace), frame ids (the twin's laser and camera frames under its namespace's tf prefix,
 as upstream's plugins resolve them), sizes and values; so does the same SDF spawned by spawn_model
@@ -21,6 +21,13 @@ SENSORS = """
       <camera><horizontal_fov>1.0</horizontal_fov><image><width>16</width><height>12</height></image>
         <clip><near>0.05</near><far>20</far></clip></camera>
       <plugin name="eye_plugin" filename="libgazebo_ros_camera.so"><cameraName>cam</cameraName><frameName>base</frameName></plugin>
+    </sensor>
+    <sensor type="ray" name="sonar"><pose>0.1 0 0.05 0 0 0</pose><update_rate>10</update_rate>
+      <ray><scan><horizontal><samples>3</samples><min_angle>-0.1</min_angle><max_angle>0.1</max_angle></horizontal>
+        <vertical><samples>3</samples><min_angle>-0.1</min_angle><max_angle>0.1</max_angle></vertical></scan>
+        <range><min>0.02</min><max>4</max></range></ray>
+      <plugin name="sonar_plugin" filename="libgazebo_ros_range.so"><topicName>range</topicName>
+        <frameName>base</frameName><radiation>ultrasound</radiation><fov>0.2</fov></plugin>
     </sensor>
     <sensor type="imu" name="imu"><update_rate>50</update_rate>
       <plugin name="imu_plugin" filename="libgazebo_ros_imu_sensor.so"><topicName>imu</topicName>
@@ -50,11 +57,13 @@ URDF_TWIN = f"""<robot name="twin">
 </robot>"""
 
 # the world-file model's topic and frame id, its twin's: the laser and the camera resolve their
-# frameName against the namespace's tf prefix, as upstream's do (the twin's is /twin); the IMU sensor
+# frameName against the namespace's tf prefix, as upstream's do (the twin's is /twin); the range
+# plugin only against a tf_prefix parameter of its own namespace (none here) and the IMU sensor
 # keeps it as given; p3d publishes in `world`.
 TOPICS = [('/scan', 'base', '/twin/scan', 'twin/base'),
           ('/cam/image_raw', 'base', '/twin/cam/image_raw', 'twin/base'),
           ('/cam/camera_info', 'base', '/twin/cam/camera_info', 'twin/base'),
+          ('/range', 'base', '/twin/range', 'base'),
           ('/probe/imu', 'base', '/twin/imu', 'base'),
           ('/ground_truth', 'world', '/twin/ground_truth', 'world')]
 
@@ -88,6 +97,10 @@ def test_a_world_file_sdf_model_publishes_as_its_urdf_twin(ros, tmp_path):
     assert len(scan['ranges']) == len(twin_scan['ranges']) == 9
     assert scan['ranges'] == pytest.approx(twin_scan['ranges'], abs=2e-3)
     assert scan['ranges'][4] == pytest.approx(1.5 - 0.1 - 0.1, abs=5e-3), 'the wall face 1.3 m before the lidar'
+    sonar, twin_sonar = seen['/range'], seen['/twin/range']
+    assert sonar['range'] == pytest.approx(twin_sonar['range'], abs=2e-3)
+    assert sonar['range'] == pytest.approx(1.5 - 0.1 - 0.1, abs=5e-3), 'the nearest ray: the wall face 1.3 m ahead'
+    assert [sonar['radiation'], sonar['fov']] == [twin_sonar['radiation'], twin_sonar['fov']] == [0, pytest.approx(0.2)]
     image, twin_image = seen['/cam/image_raw'], seen['/twin/cam/image_raw']
     assert [image['width'], image['height'], image['encoding']] == [twin_image['width'], twin_image['height'],
                                                                     twin_image['encoding']] == [16, 12, 'rgb8']

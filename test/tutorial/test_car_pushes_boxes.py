@@ -1,6 +1,7 @@
 """The tutorial's car, with its five controllers, drives into a wall of 20 free boxes that a world file
 declares (SDF models that are not static) and pushes them out of its way; until it touches them it
-drives exactly as it does in a world without them, and its controllers run on throughout."""
+drives exactly as it does in a world without them, and its controllers run on throughout. It also
+pushes open a door hung on a damped revolute joint, which swings and comes to rest."""
 import numpy as np
 import pytest
 
@@ -73,3 +74,44 @@ def test_the_car_pushes_a_wall_of_free_boxes_and_drives_as_alone_until_it_touche
     assert [c['state'] for c in manager.list()] == ['running'] * len(TUTORIAL_CONTROLLERS)
     assert car.base_pose()[2] < 0.2
     assert np.isfinite(track).all()
+
+
+DOOR_WIDTH, DOOR_HEIGHT, DOOR_MASS = 0.8, 0.5, 2.0
+DOOR_DAMPING = 1.0  # N m s / rad at the hinge
+
+
+def door():
+    """A door across the car's path at WALL_X: a panel hung from the world by a revolute joint about z
+    at its +y edge, with damping, its lower edge 5 cm above the floor."""
+    i_hinge = DOOR_MASS * DOOR_WIDTH ** 2 / 12
+    return f"""<model name="door"><pose>{WALL_X + 0.02} 0 {0.05 + DOOR_HEIGHT / 2} 0 0 0</pose>
+  <link name="panel">
+    <inertial><mass>{DOOR_MASS}</mass><inertia><ixx>{i_hinge}</ixx><iyy>{i_hinge}</iyy><izz>{i_hinge}</izz></inertia></inertial>
+    <collision name="collision"><geometry><box><size>0.04 {DOOR_WIDTH} {DOOR_HEIGHT}</size></box></geometry></collision>
+    <visual name="visual"><geometry><box><size>0.04 {DOOR_WIDTH} {DOOR_HEIGHT}</size></box></geometry></visual>
+  </link>
+  <joint name="hinge" type="revolute"><parent>world</parent><child>panel</child>
+    <pose>0 {DOOR_WIDTH / 2} 0 0 0 0</pose>
+    <axis><xyz>0 0 1</xyz><dynamics><damping>{DOOR_DAMPING}</damping></dynamics></axis></joint>
+</model>"""
+
+
+def test_the_car_pushes_a_damped_door_open_and_the_door_comes_to_rest(urdf_xml, control_config):
+    """Pushed at its middle, 0.4 m from the hinge, the door turns positive about z and the car drives
+    through; once clear of the car, its damping stops it: the hinge's rate decays as exp(-b t / I),
+    I = m w^2 / 3 about the hinge (I / b = 0.43 s)."""
+    world, car, manager, _ = drive(urdf_xml, control_config, sdf_world(door()))
+    hinge = world.robot('door')
+    assert hinge.joint_state('hinge')[0] > 0.3, 'the car pushed the door open'
+    assert car.base_pose()[0] > WALL_X + 0.5, 'and drove through the doorway'
+    for controller in REAR_WHEEL_CONTROLLERS:
+        manager.command(controller, 0.0)
+    world.step(500)
+    rate = hinge.joint_state('hinge')[1]
+    world.step(500)
+    later = hinge.joint_state('hinge')[1]
+    time_constant = DOOR_MASS * DOOR_WIDTH ** 2 / 3 / DOOR_DAMPING
+    assert later / rate == pytest.approx(np.exp(-0.5 / time_constant), rel=0.05), (rate, later)
+    world.step(2000)
+    angle, rate = hinge.joint_state('hinge')[:2]
+    assert abs(rate) < 1e-3 and 0.3 < angle < 3.0, 'at rest, open'

@@ -3,8 +3,8 @@ comparison (test_sdf_model_sensors_ros.py):
 
     messages_after.py SECONDS TOPIC...
 
-prints {TOPIC: {'type', 'frame', and per type: LaserScan ranges; Image width, height, encoding and
-mean byte; CameraInfo K; Imu orientation and acceleration; Odometry child and position}} as one JSON
+prints {TOPIC: {'type', 'frame', and per type: LaserScan ranges; Range range, radiation and fov; Image
+width, height, encoding and mean byte; CameraInfo K; Imu orientation and acceleration; Odometry child and position}} as one JSON
 object on its last line."""
 import json, rospy, rostopic, sys, time
 after = float(sys.argv[1])
@@ -16,6 +16,8 @@ def summary(m):
     out = {'type': m._type, 'frame': m.header.frame_id}
     if m._type == 'sensor_msgs/LaserScan':
         out['ranges'] = [r if r == r and r != float('inf') else None for r in m.ranges]
+    elif m._type == 'sensor_msgs/Range':
+        out.update(range=m.range, radiation=m.radiation_type, fov=m.field_of_view)
     elif m._type == 'sensor_msgs/Image':
         data = bytearray(m.data)
         out.update(width=m.width, height=m.height, encoding=m.encoding, mean=sum(data) / max(1, len(data)))
