@@ -552,16 +552,29 @@ void readAxis(urdf::Joint& j, const JointPart& part, const char* axis_tag, const
 constexpr double kAxisFrameMass = 1e-3;  // kg
 constexpr double kAxisFrameInertia = 1e-6;  // kg m^2
 
-std::shared_ptr<urdf::Link> axisFrameLink(urdf::ModelInterface& tree, const std::string& name, RobotDescription& out)
+// One SDF joint as two URDF joints in a row (a universal's two axes, a screw's turn and slide):
+// `first` now ends at a new frame link `frame`, from which a second joint `second` (a revolute at the
+// joint's origin, to be given its axis) goes on to first's child. Returns the second joint.
+urdf::Joint& splitJoint(urdf::ModelInterface& tree, urdf::Joint& first, const std::string& frame,
+                        const std::string& second, const std::string& model, RobotDescription& out)
 {
-  auto frame = std::make_shared<urdf::Link>();
-  frame->name = name;
-  frame->inertial = std::make_shared<urdf::Inertial>();
-  frame->inertial->mass = kAxisFrameMass;
-  frame->inertial->ixx = frame->inertial->iyy = frame->inertial->izz = kAxisFrameInertia;
-  tree.links_[name] = frame;
-  out.frame_links.insert(name);
-  return frame;
+  auto link = std::make_shared<urdf::Link>();
+  link->name = frame;
+  link->inertial = std::make_shared<urdf::Inertial>();
+  link->inertial->mass = kAxisFrameMass;
+  link->inertial->ixx = link->inertial->iyy = link->inertial->izz = kAxisFrameInertia;
+  tree.links_[frame] = link;
+  out.frame_links.insert(frame);
+  auto joint = std::make_shared<urdf::Joint>();
+  joint->name = second;
+  joint->type = urdf::Joint::REVOLUTE;
+  joint->parent_link_name = frame;
+  joint->child_link_name = first.child_link_name;
+  first.child_link_name = frame;
+  if (tree.joints_.count(second))
+    throw DescriptionError("model '" + model + "' joint '" + second + "' is given twice");
+  tree.joints_[second] = joint;
+  return *joint;
 }
 
 // A screw joint's thread as Gazebo 11 reads it: <thread_pitch> in rad/m, the child advancing
@@ -612,22 +625,13 @@ void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pos
     readAxis(*j, part, "axis", type, model, out);
   else if (type == "universal" || type == "revolute2")
   {
-    const std::string between = part.name + "::__axis2_frame__";
-    axisFrameLink(tree, between, out);
-    j->child_link_name = between;
-    readAxis(*j, part, "axis", "revolute", model, out);
-    auto second = std::make_shared<urdf::Joint>();
-    second->name = part.name + "::axis2";
-    second->parent_link_name = between;
-    second->child_link_name = child;
     if (!part.element->FirstChildElement("axis2"))
       throw DescriptionError(where + " of type '" + type + "' has no <axis2>: give its second axis");
-    readAxis(*second, part, "axis2", "revolute", model, out);
-    if (tree.joints_.count(second->name))
-      throw DescriptionError("model '" + model + "' joint '" + second->name + "' is given twice");
-    tree.joints_[second->name] = second;
+    readAxis(*j, part, "axis", "revolute", model, out);
+    urdf::Joint& second = splitJoint(tree, *j, part.name + "::__axis2_frame__", part.name + "::axis2", model, out);
+    readAxis(second, part, "axis2", "revolute", model, out);
     out.warnings.push_back(where + " (" + type + "): simulated as two revolute joints, '" + part.name +
-                           "' about <axis> and '" + second->name + "' about <axis2>");
+                           "' about <axis> and '" + second.name + "' about <axis2>");
   }
   else if (type == "ball")
   {
@@ -640,20 +644,12 @@ void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pos
   else if (type == "screw")
   {
     const double advance = screwAdvancePerRadian(part, model);
-    const std::string between = part.name + "::__screw_frame__";
-    axisFrameLink(tree, between, out);
-    j->child_link_name = between;
     readAxis(*j, part, "axis", "revolute", model, out);
-    auto slide = std::make_shared<urdf::Joint>();
-    slide->name = part.name + "::__screw_slide__";
-    slide->type = urdf::Joint::PRISMATIC;
-    slide->parent_link_name = between;
-    slide->child_link_name = child;
-    slide->axis = j->axis;  // the frame turns about the axis, which stays where it is
-    if (tree.joints_.count(slide->name))
-      throw DescriptionError("model '" + model + "' joint '" + slide->name + "' is given twice");
-    tree.joints_[slide->name] = slide;
-    out.joint_couplings.push_back({part.name, part.name, slide->name, advance, true});
+    urdf::Joint& slide =
+        splitJoint(tree, *j, part.name + "::__screw_frame__", part.name + "::__screw_slide__", model, out);
+    slide.type = urdf::Joint::PRISMATIC;
+    slide.axis = j->axis;  // the frame turns about the axis, which stays where it is
+    out.joint_couplings.push_back({part.name, part.name, slide.name, advance, true});
   }
   else if (type == "fixed")
     j->type = urdf::Joint::FIXED;

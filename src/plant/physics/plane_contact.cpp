@@ -1,9 +1,9 @@
 #include "physics/plane_contact.h"
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
-#include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
 #include <BulletCollision/CollisionDispatch/btConvexPlaneCollisionAlgorithm.h>
-#include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
+
+#include "physics/plane_pair.h"
 
 namespace bullet_plant
 {
@@ -32,22 +32,11 @@ public:
     // from the plane than the manifold's threshold, plus the most a perturbed query tilts it down
     // (its angle is the breaking threshold over the shape's radius), gives none in any query.
     if (manifolds.size() == 1 && manifolds[0]->getNumContacts() == 0 &&
-        clearance(swapped_ ? body1 : body0, swapped_ ? body0 : body1) >
+        clearance(shapeOfPair(body0, body1, swapped_), planeOfPair(body0, body1, swapped_)) >
             manifolds[0]->getContactBreakingThreshold() + gContactBreakingThreshold)
       return;
     btConvexPlaneCollisionAlgorithm::processCollision(body0, body1, info, result);
   }
-
-  struct CreateFunc : public btCollisionAlgorithmCreateFunc
-  {
-    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
-                                                   const btCollisionObjectWrapper* body0,
-                                                   const btCollisionObjectWrapper* body1) override
-    {
-      void* memory = ci.m_dispatcher1->allocateCollisionAlgorithm(sizeof(PlaneContactAlgorithm));
-      return new (memory) PlaneContactAlgorithm(ci, body0, body1, m_swapped);
-    }
-  };
 
 private:
   // How far the convex shape's world box lies above the plane (negative: it reaches below).
@@ -55,12 +44,9 @@ private:
   {
     btVector3 low, high;
     convex->getCollisionShape()->getAabb(convex->getWorldTransform(), low, high);
-    const auto* plane = static_cast<const btStaticPlaneShape*>(plane_wrap->getCollisionShape());
-    const btTransform& plane_pose = plane_wrap->getWorldTransform();
-    const btVector3 normal = plane_pose.getBasis() * plane->getPlaneNormal();
-    const btVector3 on_plane = plane_pose * (plane->getPlaneNormal() * plane->getPlaneConstant());
+    const WorldPlane plane = WorldPlane::of(plane_wrap);
     const btVector3 centre = (low + high) * btScalar(0.5), half = (high - low) * btScalar(0.5);
-    return normal.dot(centre - on_plane) - normal.absolute().dot(half);
+    return plane.height(centre) - plane.normal.absolute().dot(half);
   }
 
   bool swapped_;
@@ -69,14 +55,9 @@ private:
 
 void registerPlaneContact(btCollisionDispatcher& dispatcher)
 {
-  static PlaneContactAlgorithm::CreateFunc convex_plane, plane_convex;
-  plane_convex.m_swapped = true;
   for (int type = 0; type < CONCAVE_SHAPES_START_HERE; ++type)
     if (btBroadphaseProxy::isConvex(type) && type != CYLINDER_SHAPE_PROXYTYPE)
-    {
-      dispatcher.registerCollisionCreateFunc(type, STATIC_PLANE_PROXYTYPE, &convex_plane);
-      dispatcher.registerCollisionCreateFunc(STATIC_PLANE_PROXYTYPE, type, &plane_convex);
-    }
+      registerPlanePair<PlaneContactAlgorithm>(dispatcher, type);
 }
 
 }  // namespace bullet_plant
