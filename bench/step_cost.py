@@ -41,6 +41,9 @@ def driving_car(urdf, world_sdf=None):
     car = world.spawn(urdf, 'tianracer', pose=(0, 0, 0, 0, 0, 0))
     manager = car.controller_manager
     manager.spawn(list(TUTORIAL_CONTROLLERS))
+    # The switch happens in the control loop, which resets the controllers' commands: a command given
+    # before it is lost (until stop 45 this car stood still through every figure and digest).
+    world.step(2)
     for name in REAR_WHEEL_CONTROLLERS:
         manager.command(name, WHEEL_RATE)
     return world, car, manager
@@ -94,6 +97,9 @@ def digest(urdf):
         sha.update(np.asarray(car.scan('lidar')['ranges'], dtype=np.float32).tobytes())
         sha.update(np.asarray(car.image('camera')['rgb']).tobytes())
         sha.update(np.asarray(car.image('depth_camera')['depth'], dtype=np.float32).tobytes())
+    travelled = float(np.hypot(*car.base_pose()[:2]))
+    if travelled < 0.5 * DIGEST_STEPS * 1e-3:  # 1 m/s commanded
+        raise RuntimeError('the car went %.2f m in %g s: it should drive at 1 m/s' % (travelled, DIGEST_STEPS * 1e-3))
     return sha.hexdigest(), physics.hexdigest()
 
 
