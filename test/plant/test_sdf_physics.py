@@ -1,9 +1,10 @@
 """SDF models that move, checked against the physics they stand for: a pendulum's period, a block on
-an incline (sticking below atan(mu), sliding at g (sin - mu cos) above), a prismatic joint's limit, a
-box dropped on the ground landing flat and resting, a stack of boxes standing, a ball's <bounce> (to
-e^2 h, Gazebo's smaller-of-two restitution and threshold), a joint's <spring_stiffness> (at
-sqrt(k / I), and stable when stiff). Models are SDF text spawned into the plant's default world
-(ground plane at z = 0, 1 ms steps, g = 9.8) or an SDF world of their own."""
+an incline (sticking below atan(mu), sliding at g (sin - mu cos) above), a <surface>'s friction (mu
+along fdir1, mu2 across it), contact stiffness (m g / kp per point at rest), min_depth and max_vel, a
+prismatic joint's limit, a box dropped on the ground landing flat and resting, a stack of boxes
+standing, a ball's <bounce> (to e^2 h, Gazebo's smaller-of-two restitution and threshold), a joint's
+<spring_stiffness> (at sqrt(k / I), and stable when stiff). Models are SDF text spawned into the
+plant's default world (ground plane at z = 0, 1 ms steps, g = 9.8) or an SDF world of their own."""
 import math
 
 import numpy as np
