@@ -142,13 +142,21 @@ struct SensorDescription
   ModelPluginDescription pluginBlock() const { return {plugin_name, plugin_filename, plugin}; }
 };
 
+// A collision's <surface> (SDF), or a link's <gazebo reference> friction tags (URDF: `urdf`).
 struct SurfaceDescription
 {
+  // <friction><ode>: mu along fdir1 (or ODE's default first direction), mu2 across it.
   double mu1 = 1.0, mu2 = 1.0;  // Gazebo's defaults
-  double kp = 0.0, kd = 0.0;    // 0: not given
+  urdf::Vector3 fdir1{0, 0, 0};  // in the collision's frame; zero: not given (SDF's default)
+  // <contact><ode>: negative where not given (the plant's own rigid contact then, see docs/sdf.md).
+  double kp = -1.0, kd = -1.0;
+  double max_vel = -1.0, min_depth = -1.0;
   // SDF's <bounce>: the share of the normal speed a contact gives back, above `threshold` m/s.
   double restitution = 0.0, restitution_threshold = 100000.0;
   bool given = false;
+  // From a URDF's <gazebo reference> tags: the plant takes min(mu1, mu2) for the link and leaves
+  // kp and kd out (the tutorial car's wheels declare them; its contacts stay the plant's own).
+  bool urdf = false;
 };
 
 // SDF's <joint><axis><dynamics> spring: a torque (force) -stiffness * (q - reference) on the joint.
@@ -219,7 +227,9 @@ struct RobotDescription
   bool is_static = false;  // <gazebo><static>true</static></gazebo>: the whole robot never moves
   ControlPluginDescription control;
   std::vector<TransmissionDescription> transmissions;
-  std::map<std::string, SurfaceDescription> surfaces;  // by link
+  std::map<std::string, SurfaceDescription> surfaces;  // by link: its first collision's (URDF: its tags)
+  // SDF: each link's collisions' surfaces, in the order of the link's collision_array.
+  std::map<std::string, std::vector<SurfaceDescription>> collision_surfaces;
   std::vector<SensorDescription> sensors;
   std::vector<ModelPluginDescription> model_plugins;
   // From SDF (sdf_model.h): links that are frames only, not the model's links: the model frame

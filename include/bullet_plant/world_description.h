@@ -21,6 +21,7 @@ struct StaticCollision
   double mu = 1.0;    // Gazebo's default friction
   // <surface><bounce>: restitution_coefficient, and the speed (m/s) it applies above (SDF's defaults)
   double restitution = 0.0, restitution_threshold = 100000.0;
+  SurfaceDescription surface;  // the whole <surface>: mu2, fdir1 and <contact> besides
 };
 
 // What cameras (and gpu_ray lidars) see of a static model: one of its links' <visual>s.

@@ -1,13 +1,15 @@
 """SDF models that move, checked against the physics they stand for: a pendulum's period, a block on
-an incline (sticking below atan(mu), sliding at g (sin - mu cos) above), a prismatic joint's limit, a
-box dropped on the ground landing flat and resting, a stack of boxes standing, a ball's <bounce> (to
-e^2 h, Gazebo's smaller-of-two restitution and threshold), a joint's <spring_stiffness> (at
-sqrt(k / I), and stable when stiff); SDF 1.8's capsule and ellipsoid resting at their half height,
-met by rays on their surfaces, a capsule rolling at v0 / (1 + I / (m r^2)); <gravity>false (a floating
-box, a pendulum's period from its other mass), <kinematic> (moved by its velocity alone),
-<self_collide> (an arm folding onto its own base), <allow_auto_disable>, and the world's ODE
-<iters>, <sor> and <contact_surface_layer> against one Gauss-Seidel sweep's arithmetic. Models are SDF text spawned into the plant's default world
-(ground plane at z = 0, 1 ms steps, g = 9.8) or an SDF world of their own."""
+an incline (sticking below atan(mu), sliding at g (sin - mu cos) above), a <surface>'s friction (mu
+along fdir1, mu2 across it), contact stiffness (m g / kp per point at rest), min_depth and max_vel, a
+prismatic joint's limit, a box dropped on the ground landing flat and resting, a stack of boxes
+standing, a ball's <bounce> (to e^2 h, Gazebo's smaller-of-two restitution and threshold), a joint's
+<spring_stiffness> (at sqrt(k / I), and stable when stiff); SDF 1.8's capsule and ellipsoid resting at
+their half height, met by rays on their surfaces, a capsule rolling at v0 / (1 + I / (m r^2));
+<gravity>false (a floating box, a pendulum's period from its other mass), <kinematic> (moved by its
+velocity alone), <self_collide> (an arm folding onto its own base), <allow_auto_disable>, and the
+world's ODE <iters>, <sor> and <contact_surface_layer> against one Gauss-Seidel sweep's arithmetic.
+Models are SDF text spawned into the plant's default world (ground plane at z = 0, 1 ms steps,
+g = 9.8) or an SDF world of their own."""
 import math
 
 import numpy as np
@@ -84,8 +86,10 @@ def incline_world(slope_deg, mu):
 
 
 @pytest.mark.parametrize('slope_deg', [20.0, pytest.param(35.0, marks=pytest.mark.xfail(
-    strict=True, reason='slides 5.4 % short (a 1.46 m/s^2 for 1.61): it passed with 1 mm breaking thresholds on '
-    'manifolds in contact, which kept stale points under rolling wheels (dynamics_world.h)'))])
+    strict=True, reason='slides short (a 1.445 m/s^2 for 1.607): on its 2-3 manifold points, whose normal forces '
+    'jump 1.6-15 N from step to step, a friction row keeps the impulse an earlier pass or the warm start gave it '
+    'when its normal impulse falls to 0 in a later pass (Bullet skips the row), 0.520 of the normal force in all. '
+    'Zeroing it, as ODE\'s bounds do, passes (1.611) but moves a driving Tianracer 3.4 mm in 19.7 m'))])
 def test_a_block_on_an_incline_sticks_below_atan_mu_and_slides_at_g_sin_minus_mu_cos(slope_deg):
     mu = 0.5  # atan(0.5) = 26.6 deg
     w, block, slope = incline_world(slope_deg, mu)
@@ -109,6 +113,151 @@ def test_a_block_on_an_incline_sticks_below_atan_mu_and_slides_at_g_sin_minus_mu
         assert distance == pytest.approx(expected, rel=0.05), (distance, expected, speed0)
         assert moved[0] > 0 and moved[2] < 0  # down the slope
         assert tilt(block.base_pose()) == pytest.approx(slope_deg, abs=1.0)  # slides, does not tumble
+
+
+def anisotropic_incline(slope_deg, fdir1, plank_kind, yaw=0.0):
+    """The incline above with a block of <mu> 1.0 and <mu2> 0.1 (and `fdir1` in the block's frame, whose
+    x runs down the slope unless `yaw` turns the link in its model, or none) on a plank of mu = mu2 = 1 (Gazebo takes the smaller of each: the
+    block's). The plank a <static> model spawned (a multibody against another: Bullet's rows) or a
+    static model of an SDF world (a body against the static world: the plant's own rows)."""
+    slope = math.radians(slope_deg)
+    plank = ('<link name="plank"><collision name="c"><geometry><box><size>6 2 0.2</size></box></geometry><surface>'
+             '<friction><ode><mu>1</mu><mu2>1</mu2></ode></friction></surface></collision></link>')
+    if plank_kind == 'world':
+        w = bp.World.from_sdf(f'<?xml version="1.0"?><sdf version="1.7"><world name="w"><model name="plank">'
+                              f'<static>true</static><pose>0 0 3 0 {slope} 0</pose>{plank}</model></world></sdf>')
+    else:
+        w = bp.World()
+        w.spawn(sdf(plank + '<static>true</static>', 'plank'), 'plank', [0, 0, 3.0, 0, slope, 0])
+    direction = f'<fdir1>{fdir1}</fdir1>' if fdir1 else ''
+    # 0.3 x 0.3 x 0.1 m: sliding at mu = 1 on a 50 deg slope it stays flat (a cube would tip: friction
+    # mu N at its base turns it about its lower edge once mu h / 2 reaches half its width)
+    block = sdf(f'<link name="block"><pose>0 0 0 0 0 {yaw}</pose>{inertial(1.0, 0.01)}<collision name="c"><geometry><box><size>0.3 0.3 0.1'
+                f'</size></box></geometry><surface><friction><ode><mu>1.0</mu><mu2>0.1</mu2>{direction}</ode></friction>'
+                '</surface></collision></link>', 'block')
+    nx, nz = math.sin(slope), math.cos(slope)
+    return w, w.spawn(block, 'block', [0.1501 * nx, 0, 3.0 + 0.1501 * nz, 0, slope, 0]), slope
+
+
+# Gazebo's ODE resists sliding along the first friction direction with mu and across it with mu2,
+# each bounded by mu N (the pyramid). Down a slope that lies along fdir1 the block sticks while
+# tan(slope) < mu = 1 (45 deg) and slides at g (sin - mu cos) above; along the second direction it
+# slides once tan(slope) > mu2 = 0.1 (5.7 deg), at g (sin - mu2 cos). Without fdir1 the first
+# direction is ODE's dPlaneSpace of the normal (Bullet's btPlaneSpace1, the same vectors): for a
+# normal within 45 deg of z it lies in the y-z plane, here across the slope, so mu2 holds down it.
+@pytest.mark.parametrize('plank_kind', ['model', 'world'])
+@pytest.mark.parametrize('slope_deg, fdir1, mu_down', [
+    (20.0, '1 0 0', None), (35.0, '1 0 0', None), (50.0, '1 0 0', 1.0),
+    (20.0, '0 1 0', 0.1), (35.0, '0 1 0', 0.1), (20.0, None, 0.1)])
+def test_friction_is_mu_along_fdir1_and_mu2_across_it(plank_kind, slope_deg, fdir1, mu_down):
+    w, block, slope = anisotropic_incline(slope_deg, fdir1, plank_kind)
+    w.step(200)
+    p0, v0 = np.array(block.base_pose()[:3]), np.array(block.base_twist()[0])
+    w.step(500)
+    moved = np.array(block.base_pose()[:3]) - p0
+    down = np.array([math.cos(slope), 0, -math.sin(slope)])
+    if mu_down is None:
+        assert np.linalg.norm(moved) < 1e-4, moved  # it sticks
+    else:
+        a = (np.array(block.base_twist()[0]) - v0) @ down / 0.5
+        assert a == pytest.approx(G * (math.sin(slope) - mu_down * math.cos(slope)), rel=0.02)
+        assert abs(moved[1]) < 1e-3, moved  # straight down the slope
+    assert tilt(block.base_pose()) == pytest.approx(slope_deg, abs=0.5)
+
+
+def test_fdir1_turns_with_its_collision():
+    # The block's link yawed a quarter turn in its model: its fdir1 (x) now lies across the slope, and
+    # mu2 holds it down the slope, as fdir1 "0 1 0" does unturned.
+    w, block, slope = anisotropic_incline(20.0, '1 0 0', 'world', yaw=math.pi / 2)
+    w.step(200)
+    v0 = np.array(block.base_twist()[0])
+    w.step(500)
+    down = np.array([math.cos(slope), 0, -math.sin(slope)])
+    a = (np.array(block.base_twist()[0]) - v0) @ down / 0.5
+    assert a == pytest.approx(G * (math.sin(slope) - 0.1 * math.cos(slope)), rel=0.01)
+
+
+def soft_body(shape, mass, contact):
+    """A body (a 0.2 m box or a 0.1 m ball) with <surface><contact><ode>`contact`, its bottom at z = 0
+    on the default world's ground."""
+    surface = f'<surface><contact><ode>{contact}</ode></contact></surface>' if contact else ''
+    geometry = '<box><size>0.2 0.2 0.2</size></box>' if shape == 'box' else '<sphere><radius>0.1</radius></sphere>'
+    w = bp.World()
+    w.echo = False
+    body = w.spawn(sdf(f'<link name="l">{inertial(mass, mass * 0.004)}<collision name="c"><geometry>{geometry}'
+                       f'</geometry>{surface}</collision></link>', shape), shape, [0, 0, 0.1, 0, 0, 0])
+    return w, body
+
+
+# ODE's contact joint is a spring-damper for a given kp and kd (erp = dt kp / (dt kp + kd),
+# cfm = 1 / (dt kp + kd)), one per contact point; the ground, which says nothing, adds SDF's
+# defaults in series (kp 1e12) and in sum (kd 1). At rest the points carry m g together: a ball on
+# its one point sinks m g / kp, a box on its four corners m g / (4 kp), as in Gazebo.
+@pytest.mark.parametrize('shape, points', [('ball', 1), ('box', 4)])
+@pytest.mark.parametrize('kp, kd', [(2e4, 50.0), (2e5, 200.0), (2e4, None)])
+def test_a_soft_contact_sinks_m_g_over_kp_per_point(shape, points, kp, kd):
+    mass = 2.0
+    damping = f'<kd>{kd}</kd>' if kd is not None else ''
+    w, body = soft_body(shape, mass, f'<kp>{kp}</kp>{damping}')
+    w.step(3000)
+    sink = 0.1 - body.base_pose()[2]
+    assert sink == pytest.approx(mass * G / (points * kp), rel=0.03)
+    assert len(w.contacts()) == points
+
+
+def test_a_contact_without_kp_stays_rigid():
+    for shape in ('ball', 'box'):
+        w, body = soft_body(shape, 2.0, '')
+        w.step(3000)
+        assert abs(0.1 - body.base_pose()[2]) < 1e-6, shape
+
+
+def test_min_depth_is_a_depth_the_contact_does_not_push_out_of():
+    # A box started 1.5 mm into the ground: pushed out without min_depth, left there with 2 mm (ODE
+    # corrects depth - min_depth, nothing below it).
+    for contact, depth in [('', 0.0), ('<min_depth>0.002</min_depth>', 0.0015)]:
+        w = bp.World()
+        w.echo = False
+        box = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 2.0).replace(
+            '</geometry>', f'</geometry><surface><contact><ode>{contact}</ode></contact></surface>')), 'box',
+            [0, 0, 0.1 - 0.0015, 0, 0, 0])
+        w.step(1000)
+        assert 0.1 - box.base_pose()[2] == pytest.approx(depth, abs=2e-5), contact
+
+
+def test_max_vel_caps_the_speed_a_contact_pushes_out_at():
+    # A box started 8 mm into the ground: the plant's contact (erp 0.2) throws it out at 1.6 m/s; with
+    # <max_vel> 0.01 it rises at 1 cm/s and is out in 0.8 s.
+    for contact, fastest in [('', 1.0), ('<max_vel>0.01</max_vel>', 0.01)]:
+        w = bp.World()
+        w.echo = False
+        box = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 2.0).replace(
+            '</geometry>', f'</geometry><surface><contact><ode>{contact}</ode></contact></surface>')), 'box',
+            [0, 0, 0.1 - 0.008, 0, 0, 0])
+        speeds = []
+        for _ in range(1000):
+            w.step(1)
+            speeds.append(box.base_twist()[0][2])
+        if contact:
+            assert max(speeds) == pytest.approx(fastest, rel=0.01)
+            assert box.base_pose()[2] == pytest.approx(0.1, abs=1e-4)
+        else:
+            assert max(speeds) > fastest
+
+
+def test_surface_values_that_mean_nothing_are_left_out_with_a_warning():
+    w = bp.World()
+    w.echo = False
+    box = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 2.0).replace(
+        '</geometry>', '</geometry><surface><friction><ode><mu>0.5</mu><mu2>-1</mu2></ode></friction><contact><ode>'
+        '<kp>0</kp><kd>-3</kd><min_depth>-0.5</min_depth></ode></contact></surface>')), 'box', [0, 0, 0.1, 0, 0, 0])
+    said = [t for level, t in w.messages() if level == 'WARN' and "collision 'c'" in t]
+    assert any('<mu2> -1 is not a friction coefficient; it is taken as 0' in t for t in said), said
+    assert any('<kp> 0 is not above 0; left out' in t for t in said), said
+    assert any('<kd> -3 is negative; left out' in t for t in said), said
+    assert any('<min_depth> -0.5 is negative; left out' in t for t in said), said
+    w.step(1000)
+    assert box.base_pose()[2] == pytest.approx(0.1, abs=1e-5)  # the rigid contact, as without them
 
 
 def test_a_prismatic_joint_stops_at_its_limit():

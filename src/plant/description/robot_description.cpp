@@ -272,6 +272,7 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
       continue;
     }
     SurfaceDescription& surface = out.surfaces[link];
+    surface.urdf = true;
     for (const char* tag : {"mu1", "mu2", "kp", "kd"})
       if (g->FirstChildElement(tag))
         surface.given = true;

@@ -165,7 +165,7 @@ Rgba readColour(const tinyxml2::XMLElement* visual)
   return {float(c[0]), float(c[1]), float(c[2]), float(c[3])};
 }
 
-SurfaceDescription readSurface(const tinyxml2::XMLElement* collision)
+SurfaceDescription readSurface(const tinyxml2::XMLElement* collision, const std::string& where)
 {
   SurfaceDescription s;
   const tinyxml2::XMLElement* surface = collision ? collision->FirstChildElement("surface") : nullptr;
@@ -174,8 +174,16 @@ SurfaceDescription readSurface(const tinyxml2::XMLElement* collision)
   s.given = true;
   s.mu1 = xml::childDouble(surface, "friction/ode/mu", s.mu1);
   s.mu2 = xml::childDouble(surface, "friction/ode/mu2", s.mu2);
+  const std::string fdir1 = xml::childText(surface, "friction/ode/fdir1", "");
+  if (!fdir1.empty())
+  {
+    const std::vector<double> d = xml::numbers(fdir1, 3, where + " <surface><friction><ode><fdir1>");
+    s.fdir1 = urdf::Vector3(d[0], d[1], d[2]);
+  }
   s.kp = xml::childDouble(surface, "contact/ode/kp", s.kp);
   s.kd = xml::childDouble(surface, "contact/ode/kd", s.kd);
+  s.max_vel = xml::childDouble(surface, "contact/ode/max_vel", s.max_vel);
+  s.min_depth = xml::childDouble(surface, "contact/ode/min_depth", s.min_depth);
   s.restitution = xml::childDouble(surface, "bounce/restitution_coefficient", s.restitution);
   s.restitution_threshold = xml::childDouble(surface, "bounce/threshold", s.restitution_threshold);
   return s;

@@ -49,9 +49,10 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
 // A <visual>'s <material><diffuse> (else <ambient>) colour; the plant's grey without one.
 Rgba readColour(const tinyxml2::XMLElement* visual);
 
-// A <collision>'s <surface>: friction (ode mu, mu2), bounce and contact stiffness, SDF's defaults
-// where absent.
-SurfaceDescription readSurface(const tinyxml2::XMLElement* collision);
+// A <collision>'s <surface>: friction (ode mu, mu2, fdir1), bounce and contact (ode kp, kd, max_vel,
+// min_depth), SDF's defaults where absent (the contact's: negative, not given). Throws
+// DescriptionError naming `where` for an fdir1 that is not three numbers.
+SurfaceDescription readSurface(const tinyxml2::XMLElement* collision, const std::string& where);
 
 // The model file model.config names: the <sdf> of the newest version; model.sdf without a config.
 std::string modelFile(const std::string& model_dir);

@@ -404,9 +404,10 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
     collision->origin = xml::parseSdfPose(xml::childText(c, "pose", ""));
     collision->geometry = toUrdfGeometry(shape);
     link->collision_array.push_back(collision);
-    SurfaceDescription surface = sdf::readSurface(c);
+    SurfaceDescription surface = sdf::readSurface(c, where);
     if (surface.given && !out.surfaces[part.name].given)
-      out.surfaces[part.name] = surface;  // the plant's friction is per link: the first collision's
+      out.surfaces[part.name] = surface;  // the link's bounce: its first collision's
+    out.collision_surfaces[part.name].push_back(surface);
   }
   if (!link->collision_array.empty())
     link->collision = link->collision_array.front();

@@ -96,9 +96,9 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
                                " is not a friction coefficient; it is taken as 0");
       collision.mu = 0;
     }
-    const SurfaceDescription surface = sdf::readSurface(c);
-    collision.restitution = surface.restitution;
-    collision.restitution_threshold = surface.restitution_threshold;
+    collision.surface = sdf::readSurface(c, where + " in " + source.describe());
+    collision.restitution = collision.surface.restitution;
+    collision.restitution_threshold = collision.surface.restitution_threshold;
     world.collisions.push_back(collision);
   }
   for (auto* v = link->FirstChildElement("visual"); v; v = v->NextSiblingElement("visual"))

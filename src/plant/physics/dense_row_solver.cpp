@@ -111,6 +111,14 @@ void DenseRowSolver::finishDeferredRows()
   }
 }
 
+// A friction row's coefficient, and the bounds its setup derives from it.
+static void setFriction(btMultiBodySolverConstraint& row, btScalar mu)
+{
+  row.m_friction = mu;
+  row.m_lowerLimit = -mu;
+  row.m_upperLimit = mu;
+}
+
 // A contact between one multibody and the static world, with plain pyramid friction: what
 // convertMultiBodyContact handles without its rigid-body, rolling, spinning, anisotropic and
 // cached-direction cases.
@@ -160,9 +168,11 @@ static void normalRowSoftness(const btManifoldPoint& point, const btContactSolve
 
 // ODE's contact_max_correcting_vel for every solver path (Bullet's rigid and multibody rows and
 // setupContactRow): each turns a penetration into the velocity (depth - slop) * erp / dt, so the
-// depth the rows see is held to what max_correcting_velocity_ corrects in one step. The manifold
-// recomputes its depths from the bodies' positions next step, so nothing of the real depth is lost.
-void DenseRowSolver::limitCorrectingVelocity(btPersistentManifold& manifold, const btContactSolverInfo& info) const
+// depth the rows see is held to what max_correcting_velocity_ corrects in one step, or a surface's
+// max_vel where smaller. The manifold recomputes its depths from the bodies' positions next step,
+// so nothing of the real depth is lost.
+void DenseRowSolver::limitCorrectingVelocity(btPersistentManifold& manifold, const btContactSolverInfo& info,
+                                             const PointSurface* surfaces) const
 {
   for (int j = 0; j < manifold.getNumContacts(); ++j)
   {
@@ -171,7 +181,8 @@ void DenseRowSolver::limitCorrectingVelocity(btPersistentManifold& manifold, con
     normalRowSoftness(point, info, erp, cfm);
     if (erp <= 0)
       continue;
-    const btScalar deepest = -max_correcting_velocity_ * info.m_timeStep / erp - info.m_linearSlop;
+    const btScalar cap = surfaces ? std::min(max_correcting_velocity_, surfaces[j].max_vel) : max_correcting_velocity_;
+    const btScalar deepest = -cap * info.m_timeStep / erp - info.m_linearSlop;
     if (point.m_distance1 < deepest)
       point.m_distance1 = deepest;
   }
@@ -289,8 +300,10 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
 }
 
 // convertMultiBodyContact's rows (a normal row, then one or two friction rows per point), built by
-// setupContactRow.
-void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info)
+// setupContactRow; with `surfaces`, each point's friction directions (ContactSurfaces::apply set
+// them) and its mu2 on the second.
+void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info,
+                                          const PointSurface* surfaces)
 {
   auto* object_a = const_cast<btCollisionObject*>(manifold.getBody0());
   auto* object_b = const_cast<btCollisionObject*>(manifold.getBody1());
@@ -329,9 +342,12 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
     setupContactRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
                     bounce_threshold);
 
-    btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
-    point.m_lateralFrictionDir1.normalize();
-    point.m_lateralFrictionDir2.normalize();
+    if (!surfaces)
+    {
+      btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
+      point.m_lateralFrictionDir1.normalize();
+      point.m_lateralFrictionDir2.normalize();
+    }
     for (int d = 0; d < (two_directions ? 2 : 1); ++d)
     {
       btMultiBodySolverConstraint& row = m_multiBodyFrictionContactConstraints.expandNonInitializing();
@@ -339,9 +355,71 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
       row.m_frictionIndex = normal_index;
       setupContactRow(m_multiBodyFrictionContactConstraints, m_multiBodyFrictionContactConstraints.size() - 1,
                       d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, point, info, true);
+      if (surfaces && d == 1)
+        setFriction(m_multiBodyFrictionContactConstraints[m_multiBodyFrictionContactConstraints.size() - 1],
+                    surfaces[j].mu2);
     }
     if (two_directions && (info.m_solverMode & SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION))
       point.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+  }
+}
+
+// Bullet's convertMultiBodyContact (a multibody against another) along the points' own friction
+// directions, the second direction's rows with the points' mu2: Bullet's sets each point's
+// directions from its normal (btPlaneSpace1) before it reads them, whatever its solver mode. Its
+// rolling and spinning friction rows are left to it (the plant gives no object either).
+void DenseRowSolver::convertMultiBodyContactWithSurfaces(btPersistentManifold& manifold,
+                                                         const btContactSolverInfo& info,
+                                                         const PointSurface* surfaces)
+{
+  for (int j = 0; j < manifold.getNumContacts(); ++j)
+  {
+    const btManifoldPoint& point = manifold.getContactPoint(j);
+    if (point.m_combinedRollingFriction > 0 || point.m_combinedSpinningFriction > 0)
+    {
+      convertMultiBodyContact(&manifold, info);
+      return;
+    }
+  }
+  auto* object_a = const_cast<btCollisionObject*>(manifold.getBody0());
+  auto* object_b = const_cast<btCollisionObject*>(manifold.getBody1());
+  const auto* collider_a = btMultiBodyLinkCollider::upcast(object_a);
+  const auto* collider_b = btMultiBodyLinkCollider::upcast(object_b);
+  const int solver_body_a = collider_a ? -1 : getOrInitSolverBody(*object_a, info.m_timeStep);
+  const int solver_body_b = collider_b ? -1 : getOrInitSolverBody(*object_b, info.m_timeStep);
+  const bool two_directions = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
+  for (int j = 0; j < manifold.getNumContacts(); ++j)
+  {
+    btManifoldPoint& point = manifold.getContactPoint(j);
+    if (point.getDistance() > manifold.getContactProcessingThreshold())
+    {
+      point.m_appliedImpulse = 0;
+      point.m_prevRHS = 0;
+      continue;
+    }
+    const int normal_index = m_multiBodyNormalContactConstraints.size();
+    btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
+    normal.m_orgConstraint = nullptr;
+    normal.m_orgDofIndex = -1;
+    normal.m_solverBodyIdA = solver_body_a;
+    normal.m_solverBodyIdB = solver_body_b;
+    normal.m_multiBodyA = collider_a ? collider_a->m_multiBody : nullptr;
+    if (collider_a)
+      normal.m_linkA = collider_a->m_link;
+    normal.m_multiBodyB = collider_b ? collider_b->m_multiBody : nullptr;
+    if (collider_b)
+      normal.m_linkB = collider_b->m_link;
+    normal.m_originalContactPoint = &point;
+    btScalar relaxation;
+    setupMultiBodyContactConstraint(normal, point.m_normalWorldOnB, point.m_appliedImpulse, point, info, relaxation,
+                                    false);
+    normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
+    addMultiBodyFrictionConstraint(point.m_lateralFrictionDir1, point.m_appliedImpulseLateral1, &manifold,
+                                   normal_index, point, object_a, object_b, relaxation, info);
+    if (two_directions)
+      setFriction(addMultiBodyFrictionConstraint(point.m_lateralFrictionDir2, point.m_appliedImpulseLateral2,
+                                                 &manifold, normal_index, point, object_a, object_b, relaxation, info),
+                  surfaces[j].mu2);
   }
 }
 
@@ -351,8 +429,28 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
     const btMultiBodyLinkCollider* collider = btMultiBodyLinkCollider::upcast(object);
     return collider ? collider->m_multiBody : nullptr;
   };
+  // The points' surfaces first: their stiffness and min_depth change what the cap below sees.
+  const bool any_surfaces = !surfaces_.empty();
+  if (any_surfaces)
+  {
+    point_surfaces_.clear();
+    manifold_surfaces_.assign(size_t(numManifolds), -1);
+    for (int i = 0; i < numManifolds; ++i)
+    {
+      const size_t offset = point_surfaces_.size();
+      point_surfaces_.resize(offset + size_t(manifolds[i]->getNumContacts()));
+      if (surfaces_.apply(*manifolds[i], point_surfaces_.data() + offset))
+        manifold_surfaces_[size_t(i)] = int(offset);
+      else
+        point_surfaces_.resize(offset);
+    }
+  }
+  auto surfacesOf = [&](int i) -> const PointSurface* {
+    return any_surfaces && manifold_surfaces_[size_t(i)] >= 0 ? &point_surfaces_[size_t(manifold_surfaces_[size_t(i)])]
+                                                              : nullptr;
+  };
   for (int i = 0; i < numManifolds; ++i)
-    limitCorrectingVelocity(*manifolds[i], info);
+    limitCorrectingVelocity(*manifolds[i], info, surfacesOf(i));
   // Bullet's articulated warm starting moves velocities while it builds rows: left to Bullet.
   if (info.m_solverMode & SOLVER_USE_ARTICULATED_WARMSTARTING)
   {
@@ -371,15 +469,19 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
     btPersistentManifold* manifold = manifolds[i];
     btMultiBody* a = multiBody(manifold->getBody0());
     btMultiBody* b = multiBody(manifold->getBody1());
+    const PointSurface* surfaces = surfacesOf(i);
     if (!a && !b)
       convertContact(manifold, info);
     else if (contactRowsApply(*manifold, info))
-      convertStaticContact(*manifold, info);
+      convertStaticContact(*manifold, info, surfaces);
     else
     {
       needArticulatedPass(a);
       needArticulatedPass(b);
-      convertMultiBodyContact(manifold, info);
+      if (surfaces && manifold->getNumContacts() > 0)
+        convertMultiBodyContactWithSurfaces(*manifold, info, surfaces);
+      else
+        convertMultiBodyContact(manifold, info);
     }
   }
   m_data.m_solverBodyPool = &m_tmpSolverBodyPool;

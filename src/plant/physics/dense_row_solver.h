@@ -34,6 +34,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 
+#include "physics/contact_surfaces.h"
 #include "physics/multibody_dynamics.h"
 
 namespace bullet_plant
@@ -74,7 +75,19 @@ public:
   // which its own rows (a multibody against another) go on using. The world forgets an object's
   // speed as it removes the object (DynamicsWorld).
   void setBounce(btCollisionObject& object, btScalar restitution, btScalar threshold);
-  void forgetBounce(const btCollisionObject* object) { bounce_thresholds_.erase(object); }
+  // SDF's <surface> of a collision object, one per child of its compound or one for the whole
+  // (contact_surfaces.h): anisotropic friction, contact stiffness and damping, min_depth, max_vel.
+  // Bullet's rows (a multibody against another) get the same as the plant's own.
+  void setSurfaces(const btCollisionObject& object, std::vector<ContactSurface> children, bool moving)
+  {
+    surfaces_.set(object, std::move(children), moving);
+  }
+  // The world forgets what the solver keeps of an object (its bounce and surfaces) as it removes it.
+  void forget(const btCollisionObject* object)
+  {
+    bounce_thresholds_.erase(object);
+    surfaces_.forget(object);
+  }
 
 protected:
   void convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info) override;
@@ -159,9 +172,15 @@ private:
   void finishDeferredRows();
   // Bullet's rows of `body` (none if null) are about to be built.
   void needArticulatedPass(btMultiBody* body);
-  void limitCorrectingVelocity(btPersistentManifold& manifold, const btContactSolverInfo& info) const;
+  // `surfaces`: the manifold's points' (ContactSurfaces::apply), or null where its objects have none.
+  void limitCorrectingVelocity(btPersistentManifold& manifold, const btContactSolverInfo& info,
+                               const PointSurface* surfaces) const;
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
-  void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
+  void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info,
+                            const PointSurface* surfaces);
+  // Bullet's convertMultiBodyContact with the points' own friction directions and coefficients.
+  void convertMultiBodyContactWithSurfaces(btPersistentManifold& manifold, const btContactSolverInfo& info,
+                                           const PointSurface* surfaces);
   void setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
                        const btContactSolverInfo& info, bool friction, btScalar bounce_threshold = BT_LARGE_FLOAT);
   // The speed a manifold's points bounce above: the smaller of its two objects' (setBounce).
@@ -191,6 +210,9 @@ private:
   MultibodyStates* states_ = nullptr;
   btScalar max_correcting_velocity_ = BT_LARGE_FLOAT;
   std::unordered_map<const btCollisionObject*, btScalar> bounce_thresholds_;  // objects with a restitution
+  ContactSurfaces surfaces_;
+  std::vector<PointSurface> point_surfaces_;  // this solve's, manifold by manifold
+  std::vector<int> manifold_surfaces_;        // by manifold: its first in point_surfaces_, or -1
   std::vector<BodyRows> body_rows_;  // this solve's first bodies_used_ are current
   size_t bodies_used_ = 0;
   std::vector<int> slot_of_;  // by multibody number: its body_rows_ index in this solve, or -1

@@ -102,7 +102,7 @@ void DynamicsWorld::removeCollisionObject(btCollisionObject* object)
 {
   // The world's solver of the moment: setMultiBodyConstraintSolver may have replaced the first.
   if (auto* solver = dynamic_cast<DenseRowSolver*>(m_multiBodyConstraintSolver))
-    solver->forgetBounce(object);
+    solver->forget(object);
   btMultiBodyDynamicsWorld::removeCollisionObject(object);
 }
 

@@ -72,7 +72,7 @@ public:
   // Objects asleep (ISLAND_SLEEPING) are left out too: they do not move until something wakes them.
   void updateAabbs() override;
   void performDiscreteCollisionDetection() override;
-  // The solver forgets what it keeps of the object (its bounce threshold).
+  // The solver forgets what it keeps of the object (its bounce threshold and surfaces).
   void removeCollisionObject(btCollisionObject* object) override;
   // Bullet's deactivation, and then what Bullet does for a sleeping rigid body: its velocities are
   // zeroed, so that it wakes from rest rather than from the sub-threshold drift it fell asleep with.

@@ -20,6 +20,44 @@ uint32_t seedFor(const std::string& text)
   return h;
 }
 
+ContactSurface contactSurface(const SurfaceDescription& surface, const btMatrix3x3& frame, const std::string& where,
+                              Log& log, bool& plain)
+{
+  ContactSurface out;
+  auto coefficient = [&](double mu, const char* tag) {
+    if (mu >= 0)  // not negative nor NaN: Bullet would push along the motion
+      return btScalar(mu);
+    log.warn(where + ": <" + tag + "> " + formatNumber(mu) + " is not a friction coefficient; it is taken as 0");
+    return btScalar(0);
+  };
+  out.mu1 = coefficient(surface.mu1, "mu");
+  out.mu2 = coefficient(surface.mu2, "mu2");
+  const btVector3 fdir1 = toBullet(surface.fdir1);
+  if (!fdir1.isZero())
+  {
+    if (std::isfinite(fdir1.length2()))
+      out.fdir1 = frame * fdir1.normalized();
+    else
+      log.warn(where + ": <fdir1> is not a direction; left out");
+  }
+  // <contact><ode>: negative where not given; a given value that means nothing is left out.
+  auto contact = [&](double value, const char* tag, bool positive) {
+    if (value == -1.0)  // the reader's "not given"
+      return btScalar(-1);
+    if (positive ? value > 0 && std::isfinite(value) : value >= 0 && std::isfinite(value))
+      return btScalar(value);
+    log.warn(where + ": <" + tag + "> " + formatNumber(value) + (positive ? " is not above 0" : " is negative") +
+             "; left out");
+    return btScalar(-1);
+  };
+  out.kp = contact(surface.kp, "kp", true);
+  out.kd = contact(surface.kd, "kd", false);
+  out.max_vel = contact(surface.max_vel, "max_vel", false);
+  out.min_depth = contact(surface.min_depth, "min_depth", false);
+  plain = out.mu1 == out.mu2 && out.fdir1.isZero() && out.kp < 0 && out.kd < 0 && out.max_vel < 0 && out.min_depth < 0;
+  return out;
+}
+
 namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -377,6 +415,17 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
       body.child_shapes.push_back(std::move(collider.shape));
       body.compound->addChildShape(in_com, body.child_shapes.back().get());
       body.collision_names.push_back(sdf_names[{link->name, ci}]);
+      // An SDF collision's own surface (a URDF's friction is the link's, below).
+      auto surfaces = r.description.collision_surfaces.find(link->name);
+      if (surfaces != r.description.collision_surfaces.end() && ci < surfaces->second.size())
+      {
+        bool plain = true;
+        body.surfaces.push_back(contactSurface(surfaces->second[ci], in_com.getBasis(),
+                                               "link '" + link->name + "' of '" + r.name + "' collision '" +
+                                                   body.collision_names.back() + "'",
+                                               r.world->log, plain));
+        body.surfaces_plain = body.surfaces_plain && plain;
+      }
       body.shape = body.compound.get();
       last_child[kv.second.first] = shape;
       body.ray_shapes.push_back(std::move(collider.ray));
@@ -389,7 +438,8 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
       body.mu = std::min(surface->second.mu1, surface->second.mu2);
       if (!(body.mu >= 0))  // negative or NaN: Bullet would push along the motion
       {
-        r.world->log.warn("link '" + link->name + "' of '" + r.name + "': friction mu1/mu2 " +
+        if (surface->second.urdf)  // an SDF collision's is said with its surface (contactSurface)
+          r.world->log.warn("link '" + link->name + "' of '" + r.name + "': friction mu1/mu2 " +
                           formatNumber(surface->second.mu1) + "/" + formatNumber(surface->second.mu2) +
                           " is not a friction coefficient; it is taken as 0");
         body.mu = 0;
@@ -397,6 +447,16 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
       body.restitution = std::max(0.0, surface->second.restitution);
       body.restitution_threshold = surface->second.restitution_threshold;
     }
+  }
+
+  for (Body& body : bodies)
+  {
+    // The solver needs a body's surfaces where one asks for more than one friction coefficient, or
+    // where its collisions' coefficients differ; else its collider's friction says it all.
+    for (const ContactSurface& s : body.surfaces)
+      body.surfaces_plain = body.surfaces_plain && s.mu1 == body.surfaces.front().mu1;
+    if (body.surfaces_plain || body.surfaces.size() != body.collision_names.size())
+      body.surfaces.clear();
   }
 
   for (size_t bi = 0; bi < bodies.size(); ++bi)
@@ -699,6 +759,8 @@ void addColliders(Robot::Internals& r)
     col->setCollisionShape(body.shape);
     col->setFriction(btScalar(body.mu));
     r.world->solver->setBounce(*col, btScalar(body.restitution), btScalar(body.restitution_threshold));
+    if (!body.surfaces.empty())
+      r.world->solver->setSurfaces(*col, body.surfaces, !(bi == 0 && mb->hasFixedBase()));
     col->setWorldTransform(r.multibody.bodyWorldTransform(int(bi)));
     correctInternalEdges(*col);
     r.world->dynamics->addCollisionObject(col, btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter);

@@ -16,6 +16,15 @@ namespace bullet_plant
 // "robot/sensor" or "robot/plugin").
 uint32_t seedFor(const std::string& text);
 
+// A collision's SDF <surface> as the solver takes it (ContactSurface), its fdir1 turned into the
+// collider's frame by `frame` (the collision's rotation there). A value that means nothing (a
+// negative or NaN mu, a kp not above 0, a negative kd, max_vel or min_depth, an fdir1 not finite)
+// is said as a warning naming `where` and left out (a mu taken as 0). `plain`: false where the
+// surface asks for more than the plant's own contact with one friction coefficient (mu2 apart from
+// mu, an fdir1, any of <contact><ode>).
+ContactSurface contactSurface(const SurfaceDescription& surface, const btMatrix3x3& frame, const std::string& where,
+                              Log& log, bool& plain);
+
 void buildRobot(Robot::Internals& robot, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints);
 void removeRobot(Robot::Internals& robot);
 // Takes the robot's multibody, colliders and rows out of the dynamics world, leaving the rest (its

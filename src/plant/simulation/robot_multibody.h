@@ -18,6 +18,7 @@
 #include "bullet_plant/joint_layer.h"
 #include "bullet_plant/log.h"
 #include "physics/bullet_conversions.h"
+#include "physics/contact_surfaces.h"
 #include "physics/dynamics_world.h"
 #include "physics/joint_drive.h"
 #include "physics/movable_joint.h"
@@ -50,6 +51,10 @@ struct Body
   std::vector<RayPrimitive> ray_shapes;  // for sensors, in the COM frame: the collisions (lidars) and visuals (cameras)
   double mu = 1.0;
   double restitution = 0.0, restitution_threshold = 100000.0;  // SDF's <bounce>, as SurfaceDescription
+  // An SDF body's collisions' surfaces, in the compound's child order; left empty where `mu` says
+  // all of them (one coefficient, the same for each, nothing of <contact>).
+  std::vector<ContactSurface> surfaces;
+  bool surfaces_plain = true;
 
   // The name of the collision Bullet reports as `child` (a compound's child index); the only one
   // of a body with one collision; empty for an index that is none of them.

@@ -190,6 +190,16 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
     object->setWorldTransform(toBullet(c.pose));
     object->setFriction(btScalar(c.mu));
     w.solver->setBounce(*object, btScalar(c.restitution), btScalar(c.restitution_threshold));
+    {
+      // Its <surface> beyond one friction coefficient (<mu> is c.mu, said already where wrong).
+      SurfaceDescription surface = c.surface;
+      surface.mu1 = c.mu;
+      bool plain = true;
+      ContactSurface contact = contactSurface(surface, btMatrix3x3::getIdentity(), "world: collision '" + c.name + "'",
+                                              w.log, plain);
+      if (!plain)
+        w.solver->setSurfaces(*object, {contact}, false);
+    }
     correctInternalEdges(*object);
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
