@@ -16,11 +16,12 @@
 // step) are Bullet's. Where the dense form does not apply (rigid bodies that move, cone
 // friction), the iterations are Bullet's own.
 //
-// Contacts between a multibody and the static world and JointDrive rows are built here, from
-// the multibody's state of the step (MultibodyState, which DynamicsWorld builds and hands out
-// through MultibodyStates): their J, and their responses M^-1 J^T and block of A for all of the
-// multibody's rows at once. Other rows are Bullet's, with its articulated-body pass per row; A's
-// entries between them and the others are dot products of J and M^-1 J^T.
+// Contacts between a multibody and the static world, contacts between two multibodies and
+// JointDrive rows are built here, from the multibodies' states of the step (MultibodyState, which
+// DynamicsWorld builds and hands out through MultibodyStates): their J, and their responses
+// M^-1 J^T for all of a multibody's rows at once, with its block of A where all of its rows have
+// their other side static. Other rows are Bullet's, with its articulated-body pass per row and
+// side; A's entries between them and the others are dot products of J and M^-1 J^T.
 //
 // One addition: with SOLVER_USE_WARMSTARTING (Bullet's default) every row starts from its impulse
 // of the previous step times m_warmstartingFactor, friction included. Bullet's multibody solver
@@ -117,6 +118,12 @@ private:
     int stride;    // the group's padded size
     int normal;    // friction rows: the rows_ index of their contact's normal row; others -1
     bool sparse;   // its group has no dense block: J.dv from dof_velocity_
+    // The sparse form's sides (A, B): the multibody's velocities in dof_velocity_, the row's J
+    // then M^-1 J^T in sparse_data_, each `lanes` Lanes long (the side's degrees of freedom,
+    // padded); lanes 0 where the side has no multibody.
+    btScalar* dof[2];
+    const btScalar* jacobian[2];
+    int lanes[2];
     btScalar rhs, cfm, inverse_mass, lower, upper, friction;
     btScalar mass;  // 1 / inverse_mass, or 0 for a row Bullet disabled: the residual is delta * mass
     btScalar impulse, start_impulse;
@@ -130,16 +137,21 @@ private:
     bool dense = true;
     bool articulated = false;  // a multibody with joints has rows in it
   };
-  // A row whose response waits for the other rows of its multibody (finishDeferredRows).
+  // One side of a row whose response waits for the other rows of its multibody
+  // (finishDeferredRows). A row between two multibodies has one for each: the first holds what
+  // the row needs and names the second (partner); the second has partner -2.
   struct DeferredRow
   {
     btMultiBodyConstraintArray* rows;
     int index;     // in rows
     int body;      // in body_rows_
     int position;  // in the body's rows
+    int jacobian;  // the side's J in m_data.m_jacobians (its response goes to the same offset)
+    int partner;   // the row's other side in deferred_, -1 for none, -2 for the second side itself
     btScalar velocity_error;  // the row's rhs, cfm and relaxation before Bullet's scaling by
     btScalar cfm;             // its inverse effective mass
     btScalar sor;
+    btScalar diagonal;  // J M^-1 J^T of this side (finishDeferredRows)
   };
   // A multibody with rows in this solve: its state, and its deferred rows' responses and Delassus
   // block (gram).
@@ -151,16 +163,34 @@ private:
     std::vector<int> rows;  // deferred_ indices
     std::vector<btScalar> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
     int stride = 0;
+    // Some of its rows have another multibody on their other side: no gram (a pile's box has
+    // dozens of rows, and its group is iterated sparse), only each row's diagonal.
+    bool pair_rows = false;
+    bool has_gram = false;
   };
   // The multibody's slot in body_rows_ for this solve, or -1 where Bullet's passes must answer.
   int bodySlot(btMultiBody* body);
   void deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error, btScalar cfm,
                      btScalar sor);
+  // Both sides of a row between two multibodies (slot_b's side after slot_a's).
+  void deferPairResponse(btMultiBodyConstraintArray& rows, int index, int slot_a, int slot_b, btScalar velocity_error,
+                         btScalar cfm, btScalar sor);
   void finishDeferredRows();
   // Bullet's rows of `body` (none if null) are about to be built.
   void needArticulatedPass(btMultiBody* body);
   void limitCorrectingVelocity(btPersistentManifold& manifold, const btContactSolverInfo& info) const;
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
+  // Plain pyramid friction between two different multibodies whose states answer.
+  bool pairRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
+  // convertMultiBodyContact's rows for two multibodies, built by setupPairRow.
+  void convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
+  // setupMultiBodyContactConstraint for two multibodies: Bullet's rows (its restitution among them),
+  // with J and M^-1 J^T from their states.
+  void setupPairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
+                    const btContactSolverInfo& info, bool friction, int slot_a, int slot_b);
+  // Room in m_data's arrays for the rows of the manifolds' points: Bullet grows them by each row's
+  // size exactly, copying them whole, each time a step has more rows than any before.
+  void reserveRowData(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info);
   void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
   void setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
                        const btContactSolverInfo& info, bool friction, btScalar bounce_threshold = BT_LARGE_FLOAT);
@@ -176,8 +206,8 @@ private:
   void startAt(Row& row, btScalar impulse);
   void addToVelocities(const Row& row, btScalar impulse);
   // The sparse form's J.dv and dv += M^-1 J^T impulse, on dof_velocity_.
-  btScalar sparseVelocity(const Row& row) const;
-  void addToDofVelocities(const Row& row, btScalar impulse);
+  static btScalar sparseVelocity(const Row& row);
+  static void addToDofVelocities(const Row& row, btScalar impulse);
   // Bullet's resolveSingleConstraintRowGeneric on the dense block (or, with kSparseRows, on
   // dof_velocity_ for a row whose group has none); returns Bullet's residual.
   template <bool kSparseRows>
@@ -204,7 +234,11 @@ private:
   std::vector<btScalar> delassus_;           // each group's block, row-major (symmetric)
   std::vector<btScalar> row_velocity_;       // J.dv of each row, kept current
   std::vector<btScalar> velocity_change_;    // per degree of freedom, laid out as m_data.m_deltaVelocities
-  std::vector<btScalar> dof_velocity_;       // the sparse rows' dv, laid out as m_data.m_deltaVelocities
+  // The sparse rows' dv: each multibody of bodies_ at packed_offset_, its degrees of freedom padded
+  // to whole Lanes.
+  std::vector<btScalar> dof_velocity_;
+  std::vector<int> packed_offset_;           // by bodies_ index
+  std::vector<btScalar> sparse_data_;        // the sparse rows' J and M^-1 J^T per side, padded as dof_velocity_
   bool any_sparse_ = false;
 };
 

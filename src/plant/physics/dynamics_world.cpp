@@ -184,22 +184,31 @@ void DynamicsWorld::updateAabbs()
 
 // The threshold btCollisionDispatcher::getNewManifold gives a pair: with its default
 // CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD, gContactBreakingThreshold times the smaller shape's
-// size (getAngularMotionDisc): about 0.05 mm for the car's wheels, not 1 mm.
-btScalar DynamicsWorld::pairThreshold(const btPersistentManifold& manifold) const
+// size (getAngularMotionDisc, a bounding sphere through the shape's virtual box): about 0.05 mm for
+// the car's wheels, not 1 mm. Each object's is found once a step (breaking_), not once for each of
+// its manifolds (a box in a pile has a dozen).
+btScalar DynamicsWorld::breakingThreshold(const btCollisionObject& object)
 {
-  const auto* dispatcher = static_cast<const btCollisionDispatcher*>(m_dispatcher1);
-  if (!(dispatcher->getDispatcherFlags() & btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD))
-    return gContactBreakingThreshold;
-  return std::min(manifold.getBody0()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold),
-                  manifold.getBody1()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold));
+  const int index = object.getWorldArrayIndex();
+  if (index < 0 || size_t(index) >= breaking_.size())
+    return object.getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold);
+  btScalar& threshold = breaking_[size_t(index)];
+  if (threshold < 0)
+    threshold = object.getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold);
+  return threshold;
 }
 
 void DynamicsWorld::setManifoldThresholds()
 {
+  const auto* dispatcher = static_cast<const btCollisionDispatcher*>(m_dispatcher1);
+  const bool relative = dispatcher->getDispatcherFlags() & btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD;
+  breaking_.assign(size_t(m_collisionObjects.size()), btScalar(-1));
   for (int i = 0; i < m_dispatcher1->getNumManifolds(); ++i)
   {
     btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(i);
-    btScalar threshold = pairThreshold(*manifold);
+    btScalar threshold = relative ? std::min(breakingThreshold(*manifold->getBody0()),
+                                             breakingThreshold(*manifold->getBody1()))
+                                  : gContactBreakingThreshold;
     if (manifold->getNumContacts() == 0)
       threshold += reachOf(*manifold->getBody0()) + reachOf(*manifold->getBody1());
     manifold->setContactBreakingThreshold(threshold);

@@ -88,9 +88,11 @@ private:
   btScalar reachOf(const btCollisionObject& object) const;
   void measureReach();
   void setManifoldThresholds();
-  btScalar pairThreshold(const btPersistentManifold& manifold) const;
+  // The object's shape's contact breaking threshold, once a step.
+  btScalar breakingThreshold(const btCollisionObject& object);
 
   std::vector<btScalar> reach_;
+  std::vector<btScalar> breaking_;  // by the object's index in the world: its threshold this step, or -1
   std::vector<btVector3> link_omega_, link_velocity_;
   std::vector<StepState> states_;  // by multibody number
   std::vector<int> built_;         // the numbers of this step's current states, in the order built

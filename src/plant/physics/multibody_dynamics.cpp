@@ -490,7 +490,7 @@ void solveInertiaColumns(const MultibodyState& state, btScalar* x, int count, bt
     }
   }
   // x^T M^-1 x = y^T y, block by block of its upper triangle.
-  for (int r = 0; r < k; r += kInertiaSides)
+  for (int r = 0; gram && r < k; r += kInertiaSides)
     for (int s = r; s < k; s += kInertiaSides)
     {
       Sides acc[kInertiaSides] = {};

@@ -94,7 +94,7 @@ void forwardDynamics(const btMultiBody& body, MultibodyState& state, btScalar* q
 
 // For `count` right-hand sides at once (a multiple of kInertiaSides: pad with zeros), stored degree
 // of freedom by degree of freedom (x[i * count + r] is entry i of side r): x <- M^-1 x, and
-// gram (count x count, row-major) <- x^T M^-1 x of the sides as given. In float.
+// gram (count x count, row-major) <- x^T M^-1 x of the sides as given (unless gram is null). In float.
 constexpr int kInertiaSides = 4;
 void solveInertiaColumns(const MultibodyState& state, btScalar* x, int count, btScalar* gram);
 
