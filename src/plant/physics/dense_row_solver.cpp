@@ -34,7 +34,54 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
                    degreesOfFreedom(sides_i[a]));
   return sum;
 }
+// What Bullet derives from a row's J M^-1 J^T + cfm (denominator): m_jacDiagABInv =
+// sor / denominator, and the rhs and cfm scaled by it.
+void scaleRow(btMultiBodySolverConstraint& row, btScalar denominator, btScalar velocity_error, btScalar cfm,
+              btScalar sor)
+{
+  row.m_jacDiagABInv = denominator > SIMD_EPSILON ? sor / denominator : btScalar(0);
+  row.m_rhs = velocity_error * row.m_jacDiagABInv;
+  row.m_cfm = cfm * row.m_jacDiagABInv;
+}
+
+// A multibody without links on a floating base whose M is diag(I, m) (its base frame at its
+// centre of mass): the inverse of each block.
+bool freeBodyInverse(const btMultiBody& body, const MultibodyState& state, btScalar* inverse_inertia,
+                     btScalar& inverse_mass)
+{
+  if (body.getNumLinks() != 0 || state.first != 0 || state.n != 6 || state.composites.empty())
+    return false;
+  const MultibodyState::Composite& all = state.composites[0];
+  if (all.moment[0] != 0 || all.moment[1] != 0 || all.moment[2] != 0 || !(all.mass > 0))
+    return false;
+  const double* I = all.inertia;
+  const double c00 = I[4] * I[8] - I[5] * I[7], c01 = I[5] * I[6] - I[3] * I[8], c02 = I[3] * I[7] - I[4] * I[6];
+  const double determinant = I[0] * c00 + I[1] * c01 + I[2] * c02;
+  if (!(determinant > 0))
+    return false;
+  const double inverse[9] = {c00, I[2] * I[7] - I[1] * I[8], I[1] * I[5] - I[2] * I[4],
+                             c01, I[0] * I[8] - I[2] * I[6], I[2] * I[3] - I[0] * I[5],
+                             c02, I[1] * I[6] - I[0] * I[7], I[0] * I[4] - I[1] * I[3]};
+  for (int k = 0; k < 9; ++k)
+    inverse_inertia[k] = btScalar(inverse[k] / determinant);
+  inverse_mass = btScalar(1 / all.mass);
+  return true;
+}
 }  // namespace
+
+btScalar DenseRowSolver::freeResponse(const BodyRows& slot, const btScalar* jacobian, btScalar* response)
+{
+  const btScalar* I = slot.inverse_inertia;
+  btScalar diagonal = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    response[a] = I[3 * a] * jacobian[0] + I[3 * a + 1] * jacobian[1] + I[3 * a + 2] * jacobian[2];
+    response[3 + a] = jacobian[3 + a] * slot.inverse_mass;
+  }
+  for (int i = 0; i < 6; ++i)
+    diagonal += jacobian[i] * response[i];
+  return diagonal;
+}
 
 int DenseRowSolver::bodySlot(btMultiBody* body)
 {
@@ -53,6 +100,7 @@ int DenseRowSolver::bodySlot(btMultiBody* body)
     slot.state = states_->stateOf(*body);
     slot.rows.clear();
     slot.pair_rows = false;
+    slot.free = slot.state && freeBodyInverse(*body, *slot.state, slot.inverse_inertia, slot.inverse_mass);
   }
   return body_rows_[known].state ? known : -1;
 }
@@ -63,14 +111,20 @@ void DenseRowSolver::needArticulatedPass(btMultiBody* body)
     states_->needArticulatedPass(*body);
 }
 
-void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
-                                   btScalar cfm, btScalar sor)
+void DenseRowSolver::deferSide(btMultiBodyConstraintArray& rows, int index, int slot, int jacobian,
+                               btScalar velocity_error, btScalar cfm, btScalar sor, btScalar other)
 {
   std::vector<int>& own = body_rows_[slot].rows;
   own.push_back(int(deferred_.size()));
+  deferred_.push_back(
+      DeferredRow{&rows, index, slot, int(own.size() - 1), jacobian, -1, velocity_error, cfm, sor, 0, other});
+}
+
+void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
+                                   btScalar cfm, btScalar sor)
+{
   const btMultiBodySolverConstraint& row = rows[index];
-  const int jacobian = row.m_multiBodyA ? row.m_jacAindex : row.m_jacBindex;
-  deferred_.push_back(DeferredRow{&rows, index, slot, int(own.size() - 1), jacobian, -1, velocity_error, cfm, sor, 0});
+  deferSide(rows, index, slot, row.m_multiBodyA ? row.m_jacAindex : row.m_jacBindex, velocity_error, cfm, sor, 0);
 }
 
 void DenseRowSolver::deferPairResponse(btMultiBodyConstraintArray& rows, int index, int slot_a, int slot_b,
@@ -78,13 +132,10 @@ void DenseRowSolver::deferPairResponse(btMultiBodyConstraintArray& rows, int ind
 {
   const btMultiBodySolverConstraint& row = rows[index];
   const int first = int(deferred_.size());
-  std::vector<int>& own_a = body_rows_[slot_a].rows;
-  own_a.push_back(first);
-  deferred_.push_back(
-      DeferredRow{&rows, index, slot_a, int(own_a.size() - 1), row.m_jacAindex, first + 1, velocity_error, cfm, sor, 0});
-  std::vector<int>& own_b = body_rows_[slot_b].rows;
-  own_b.push_back(first + 1);
-  deferred_.push_back(DeferredRow{&rows, index, slot_b, int(own_b.size() - 1), row.m_jacBindex, -2, 0, 0, 0, 0});
+  deferSide(rows, index, slot_a, row.m_jacAindex, velocity_error, cfm, sor, 0);
+  deferSide(rows, index, slot_b, row.m_jacBindex, 0, 0, 0, 0);
+  deferred_[first].partner = first + 1;
+  deferred_[first + 1].partner = -2;
   body_rows_[slot_a].pair_rows = body_rows_[slot_b].pair_rows = true;
 }
 
@@ -136,12 +187,10 @@ void DenseRowSolver::finishDeferredRows()
   {
     if (d.partner == -2)
       continue;
-    btMultiBodySolverConstraint& row = (*d.rows)[d.index];
-    const btScalar denominator =
-        d.partner >= 0 ? d.diagonal + deferred_[d.partner].diagonal + d.cfm : d.diagonal + d.cfm;
-    row.m_jacDiagABInv = denominator > SIMD_EPSILON ? d.sor / denominator : btScalar(0);
-    row.m_rhs = d.velocity_error * row.m_jacDiagABInv;
-    row.m_cfm = d.cfm * row.m_jacDiagABInv;
+    const btScalar denominator = d.partner >= 0 ? d.diagonal + deferred_[d.partner].diagonal + d.cfm
+                                 : d.other != 0 ? d.diagonal + d.other + d.cfm
+                                                : d.diagonal + d.cfm;
+    scaleRow((*d.rows)[d.index], denominator, d.velocity_error, d.cfm, d.sor);
   }
 }
 
@@ -261,8 +310,9 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   }
   int& jacobian_index = on_a ? row.m_jacAindex : row.m_jacBindex;
   jacobian_index = m_data.m_jacobians.size();
-  m_data.m_jacobians.resize(m_data.m_jacobians.size() + n);
-  m_data.m_deltaVelocitiesUnitImpulse.resize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
+  // Both written whole below (J here, M^-1 J^T by the free body's response or finishDeferredRows).
+  m_data.m_jacobians.resizeNoInitialize(m_data.m_jacobians.size() + n);
+  m_data.m_deltaVelocitiesUnitImpulse.resizeNoInitialize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
   btScalar* jacobian = &m_data.m_jacobians[jacobian_index];
   const int slot = bodySlot(body);
   contactJacobianRow(*body_rows_[slot].state, link, position, normal, jacobian);
@@ -319,7 +369,11 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
   row.m_appliedImpulse = 0;
   row.m_appliedPushImpulse = 0;
-  deferResponse(rows, index, slot, positional_error + velocity_error, cfm, info.m_sor);
+  if (body_rows_[slot].free)
+    scaleRow(row, freeResponse(body_rows_[slot], jacobian, &m_data.m_deltaVelocitiesUnitImpulse[jacobian_index]) + cfm,
+             positional_error + velocity_error, cfm, info.m_sor);
+  else
+    deferResponse(rows, index, slot, positional_error + velocity_error, cfm, info.m_sor);
 }
 
 // convertMultiBodyContact's rows (a normal row, then one or two friction rows per point), built by
@@ -431,8 +485,8 @@ void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, c
     }
     int& jacobian_index = side == 0 ? row.m_jacAindex : row.m_jacBindex;
     jacobian_index = m_data.m_jacobians.size();
-    m_data.m_jacobians.resize(m_data.m_jacobians.size() + n);
-    m_data.m_deltaVelocitiesUnitImpulse.resize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
+    m_data.m_jacobians.resizeNoInitialize(m_data.m_jacobians.size() + n);
+    m_data.m_deltaVelocitiesUnitImpulse.resizeNoInitialize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
     btScalar* jacobian = &m_data.m_jacobians[jacobian_index];
     contactJacobianRow(*body_rows_[side == 0 ? slot_a : slot_b].state, link, position,
                        side == 0 ? direction : -direction, jacobian);
@@ -472,7 +526,25 @@ void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, c
   row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
   row.m_appliedImpulse = 0;
   row.m_appliedPushImpulse = 0;
-  deferPairResponse(rows, index, slot_a, slot_b, positional_error + velocity_error, cfm, info.m_sor);
+  // A free body's side is answered now; the others wait for their multibody's other rows.
+  const int slots[2] = {slot_a, slot_b};
+  const int jacobians[2] = {row.m_jacAindex, row.m_jacBindex};
+  btScalar diagonal[2] = {0, 0};
+  for (int side = 0; side < 2; ++side)
+    if (body_rows_[slots[side]].free)
+      diagonal[side] = freeResponse(body_rows_[slots[side]], &m_data.m_jacobians[jacobians[side]],
+                                    &m_data.m_deltaVelocitiesUnitImpulse[jacobians[side]]);
+  const btScalar velocity_error_all = positional_error + velocity_error;
+  if (body_rows_[slot_a].free && body_rows_[slot_b].free)
+    scaleRow(row, diagonal[0] + diagonal[1] + cfm, velocity_error_all, cfm, info.m_sor);
+  else if (body_rows_[slot_a].free || body_rows_[slot_b].free)
+  {
+    const int side = body_rows_[slot_a].free ? 1 : 0;
+    deferSide(rows, index, slots[side], jacobians[side], velocity_error_all, cfm, info.m_sor, diagonal[1 - side]);
+    body_rows_[slots[side]].pair_rows = true;
+  }
+  else
+    deferPairResponse(rows, index, slot_a, slot_b, velocity_error_all, cfm, info.m_sor);
 }
 
 void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info)
@@ -569,6 +641,8 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
   for (int i = 0; i < numManifolds; ++i)
   {
     btPersistentManifold* manifold = manifolds[i];
+    if (manifold->getNumContacts() == 0)  // no rows in any of the forms below (a pile has hundreds)
+      continue;
     btMultiBody* a = multiBody(manifold->getBody0());
     btMultiBody* b = multiBody(manifold->getBody1());
     if (!a && !b)

@@ -152,6 +152,7 @@ private:
     btScalar cfm;             // its inverse effective mass
     btScalar sor;
     btScalar diagonal;  // J M^-1 J^T of this side (finishDeferredRows)
+    btScalar other;     // J M^-1 J^T of the row's other side where that side is not deferred, else 0
   };
   // A multibody with rows in this solve: its state, and its deferred rows' responses and Delassus
   // block (gram).
@@ -167,6 +168,11 @@ private:
     // dozens of rows, and its group is iterated sparse), only each row's diagonal.
     bool pair_rows = false;
     bool has_gram = false;
+    // A free body (no links, a floating base): M is diag(I, m) about its centre of mass, so a
+    // row's response is I^-1 J_angular and J_linear / m, computed as the row is set up.
+    bool free = false;
+    btScalar inverse_inertia[9];  // world axes, row-major
+    btScalar inverse_mass = 0;
   };
   // The multibody's slot in body_rows_ for this solve, or -1 where Bullet's passes must answer.
   int bodySlot(btMultiBody* body);
@@ -175,6 +181,12 @@ private:
   // Both sides of a row between two multibodies (slot_b's side after slot_a's).
   void deferPairResponse(btMultiBodyConstraintArray& rows, int index, int slot_a, int slot_b, btScalar velocity_error,
                          btScalar cfm, btScalar sor);
+  // One side of a row, its J at `jacobian`; `other` is J M^-1 J^T of the row's other side, found
+  // already (a free body's).
+  void deferSide(btMultiBodyConstraintArray& rows, int index, int slot, int jacobian, btScalar velocity_error,
+                 btScalar cfm, btScalar sor, btScalar other);
+  // A free body's M^-1 J^T of the row J (6 entries each); returns J M^-1 J^T.
+  static btScalar freeResponse(const BodyRows& slot, const btScalar* jacobian, btScalar* response);
   void finishDeferredRows();
   // Bullet's rows of `body` (none if null) are about to be built.
   void needArticulatedPass(btMultiBody* body);
