@@ -44,29 +44,6 @@ void scaleRow(btMultiBodySolverConstraint& row, btScalar denominator, btScalar v
   row.m_cfm = cfm * row.m_jacDiagABInv;
 }
 
-// A multibody without links on a floating base whose M is diag(I, m) (its base frame at its
-// centre of mass): the inverse of each block.
-bool freeBodyInverse(const btMultiBody& body, const MultibodyState& state, btScalar* inverse_inertia,
-                     btScalar& inverse_mass)
-{
-  if (body.getNumLinks() != 0 || state.first != 0 || state.n != 6 || state.composites.empty())
-    return false;
-  const MultibodyState::Composite& all = state.composites[0];
-  if (all.moment[0] != 0 || all.moment[1] != 0 || all.moment[2] != 0 || !(all.mass > 0))
-    return false;
-  const double* I = all.inertia;
-  const double c00 = I[4] * I[8] - I[5] * I[7], c01 = I[5] * I[6] - I[3] * I[8], c02 = I[3] * I[7] - I[4] * I[6];
-  const double determinant = I[0] * c00 + I[1] * c01 + I[2] * c02;
-  if (!(determinant > 0))
-    return false;
-  const double inverse[9] = {c00, I[2] * I[7] - I[1] * I[8], I[1] * I[5] - I[2] * I[4],
-                             c01, I[0] * I[8] - I[2] * I[6], I[2] * I[3] - I[0] * I[5],
-                             c02, I[1] * I[6] - I[0] * I[7], I[0] * I[4] - I[1] * I[3]};
-  for (int k = 0; k < 9; ++k)
-    inverse_inertia[k] = btScalar(inverse[k] / determinant);
-  inverse_mass = btScalar(1 / all.mass);
-  return true;
-}
 }  // namespace
 
 btScalar DenseRowSolver::freeResponse(const BodyRows& slot, const btScalar* jacobian, btScalar* response)
@@ -100,7 +77,13 @@ int DenseRowSolver::bodySlot(btMultiBody* body)
     slot.state = states_->stateOf(*body);
     slot.rows.clear();
     slot.pair_rows = false;
-    slot.free = slot.state && freeBodyInverse(*body, *slot.state, slot.inverse_inertia, slot.inverse_mass);
+    slot.free = slot.state && slot.state->free;
+    if (slot.free)
+    {
+      for (int k = 0; k < 9; ++k)
+        slot.inverse_inertia[k] = btScalar(slot.state->inverse_inertia[k]);
+      slot.inverse_mass = btScalar(slot.state->inverse_mass);
+    }
   }
   return body_rows_[known].state ? known : -1;
 }

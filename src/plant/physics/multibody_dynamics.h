@@ -58,6 +58,11 @@ struct MultibodyState
   std::vector<DofMotion> dofs;         // per generalized velocity, the joints' entries (linkKinematics)
   std::vector<Composite> composites;   // per body (compositeRigidBodyInertia)
   std::vector<double> inertia;         // M, n x n row-major, lower triangle (compositeRigidBodyInertia)
+  // A free body (no links, a floating base, M = diag(I, m) about its centre of mass): M^-1 in closed
+  // form, and no factor (factorInertia).
+  bool free = false;
+  double inverse_inertia[9];  // I^-1, world axes, row-major
+  double inverse_mass = 0;
   std::vector<double> lower;           // its Cholesky factor L, M = L L^T (factorInertia)
   std::vector<double> inverse_diagonal;
   std::vector<btScalar> lower_scalar, inverse_diagonal_scalar;  // the factor in float, for solveInertiaColumns
@@ -73,7 +78,8 @@ void linkKinematics(const btMultiBody& body, MultibodyState& state);
 // The composite rigid bodies, and from them M (after linkKinematics).
 void compositeRigidBodyInertia(const btMultiBody& body, MultibodyState& state);
 
-// M = L L^T. False if M is not positive definite (then Bullet's own passes must answer).
+// M = L L^T, or for a free body I^-1 and 1 / m. False if M is not positive definite (then Bullet's
+// own passes must answer).
 bool factorInertia(MultibodyState& state);
 
 // linkKinematics, compositeRigidBodyInertia and factorInertia: the state of one step.
