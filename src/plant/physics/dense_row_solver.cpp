@@ -847,6 +847,8 @@ void DenseRowSolver::buildBlocks()
     return;
   // The sparse rows' J and M^-1 J^T, padded with zeros as their multibodies' velocities.
   sparse_data_.assign(sparse_size, btScalar(0));
+  std::fill(std::begin(sparse_zero_dof_), std::end(sparse_zero_dof_), btScalar(0));
+  std::fill(std::begin(sparse_zero_data_), std::end(sparse_zero_data_), btScalar(0));
   btScalar* data = sparse_data_.data();
   for (Row& row : rows_)
   {
@@ -872,6 +874,14 @@ void DenseRowSolver::buildBlocks()
       std::copy_n(&m_data.m_deltaVelocitiesUnitImpulse[jacobians[side]], n, data + lanes * kLanes);
       data += 2 * lanes * kLanes;
     }
+    row.two_lanes = row.lanes[0] <= 2 && row.lanes[1] <= 2;
+    for (int side = 0; row.two_lanes && side < 2; ++side)
+      if (!row.lanes[side])
+      {
+        row.lanes[side] = 2;
+        row.dof[side] = sparse_zero_dof_;
+        row.jacobian[side] = sparse_zero_data_;
+      }
   }
 }
 
@@ -976,6 +986,15 @@ inline void DenseRowSolver::addToVelocities(const Row& row, btScalar impulse)
 
 inline btScalar DenseRowSolver::sparseVelocity(const Row& row)
 {
+  if (row.two_lanes)
+  {
+    const Lanes* ja = reinterpret_cast<const Lanes*>(row.jacobian[0]);
+    const Lanes* va = reinterpret_cast<const Lanes*>(row.dof[0]);
+    const Lanes* jb = reinterpret_cast<const Lanes*>(row.jacobian[1]);
+    const Lanes* vb = reinterpret_cast<const Lanes*>(row.dof[1]);
+    const Lanes sum = (ja[0] * va[0] + ja[1] * va[1]) + (jb[0] * vb[0] + jb[1] * vb[1]);
+    return (sum[0] + sum[1]) + (sum[2] + sum[3]);
+  }
   Lanes sum = {};
   for (int side = 0; side < 2; ++side)
   {
@@ -992,6 +1011,18 @@ inline btScalar DenseRowSolver::sparseVelocity(const Row& row)
 
 inline void DenseRowSolver::addToDofVelocities(const Row& row, btScalar impulse)
 {
+  if (row.two_lanes)
+  {
+    const Lanes* ua = reinterpret_cast<const Lanes*>(row.jacobian[0]) + 2;
+    Lanes* va = reinterpret_cast<Lanes*>(row.dof[0]);
+    const Lanes* ub = reinterpret_cast<const Lanes*>(row.jacobian[1]) + 2;
+    Lanes* vb = reinterpret_cast<Lanes*>(row.dof[1]);
+    va[0] += ua[0] * impulse;
+    va[1] += ua[1] * impulse;
+    vb[0] += ub[0] * impulse;
+    vb[1] += ub[1] * impulse;
+    return;
+  }
   for (int side = 0; side < 2; ++side)
   {
     const int lanes = row.lanes[side];

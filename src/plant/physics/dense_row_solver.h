@@ -94,16 +94,20 @@ private:
   static constexpr int kLanes = 4;
   // The largest group solved on a dense block: where a multibody with joints has rows in it, and
   // where all its multibodies are free bodies (0 links). A dense visit costs stride / kLanes vector
-  // multiply-adds, a sparse one 2 (n_A + n_B) scalar ones (24 for two free boxes, 36 for the car's
-  // 18 dof against the ground) plus its indexing; the block costs stride^2 / 2 entries to build, so
-  // the block pays longer where rows share many degrees of freedom. Measured on
-  // bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second): 5.27M, 5.35M, 6.02M
-  // and 6.45M instructions a step with caps of 16, 32, 64 and 128 rows, 8.02M with none. The car
-  // on a mesh floor has more than 32 rows (its wheels meet several triangles); at 64 its solve
-  // stays dense as before (test_track_world.py's rolling over a mesh's inner edges, a 1 mm bound,
-  // fails with its arithmetic regrouped).
+  // multiply-adds, a sparse one (n_A + n_B) / kLanes each way (4 for two free boxes, each padded to
+  // two Lanes, a box against the ground alike) plus its indexing; the block costs stride^2 / 2
+  // entries to build, so the block pays longer where rows share many degrees of freedom. Measured
+  // on bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second), when the sparse
+  // visit was Bullet's scalar loops: 5.27M, 5.35M, 6.02M and 6.45M instructions a step with caps of
+  // 16, 32, 64 and 128 rows, 8.02M with none; with the two-Lanes visit, 3.64M, 3.56M and 3.53M with
+  // free-body caps of 32, 12 and 0. At 12 a box alone on the ground (4 points, 12 rows) keeps its
+  // block: with none test_sdf_physics.py's block on a 35 deg incline slides 4.9 % short of
+  // g (sin - mu cos) instead of 5.4 %, inside the test's 5 % (its strict xfail). The car on a mesh
+  // floor has more than 32 rows (its wheels meet several triangles); at 64 its solve stays dense as
+  // before (test_track_world.py's rolling over a mesh's inner edges, a 1 mm bound, fails with its
+  // arithmetic regrouped).
   static constexpr int kMaxDenseRows = 64;
-  static constexpr int kMaxDenseFreeRows = 32;
+  static constexpr int kMaxDenseFreeRows = 12;
   typedef btScalar Lanes __attribute__((vector_size(kLanes * sizeof(btScalar)), aligned(sizeof(btScalar)), may_alias));
 
   // A row during the iterations: Bullet's numbers, copied from its constraint and back.
@@ -124,6 +128,9 @@ private:
     btScalar* dof[2];
     const btScalar* jacobian[2];
     int lanes[2];
+    // Both sides two Lanes (free bodies, 6 degrees of freedom; a side without a multibody points
+    // at zeros, sparse_zeros_): J.dv and its update take no branches.
+    bool two_lanes;
     btScalar rhs, cfm, inverse_mass, lower, upper, friction;
     btScalar mass;  // 1 / inverse_mass, or 0 for a row Bullet disabled: the residual is delta * mass
     btScalar impulse, start_impulse;
@@ -251,6 +258,8 @@ private:
   std::vector<btScalar> dof_velocity_;
   std::vector<int> packed_offset_;           // by bodies_ index
   std::vector<btScalar> sparse_data_;        // the sparse rows' J and M^-1 J^T per side, padded as dof_velocity_
+  // A missing side of a two_lanes row: its velocities (added zeros) and its J and M^-1 J^T (zeros).
+  btScalar sparse_zero_dof_[2 * kLanes], sparse_zero_data_[4 * kLanes];
   bool any_sparse_ = false;
 };
 
