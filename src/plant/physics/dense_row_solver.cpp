@@ -530,6 +530,87 @@ void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, c
     deferPairResponse(rows, index, slot_a, slot_b, velocity_error_all, cfm, info.m_sor);
 }
 
+void DenseRowSolver::setupFreePairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
+                                      btManifoldPoint& point, const btContactSolverInfo& info, bool friction,
+                                      const FreeSide (&sides)[2])
+{
+  btMultiBodySolverConstraint& row = rows[index];
+  btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
+  btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
+  if (!friction)
+    normalRowSoftness(point, info, erp, cfm);
+  cfm *= btScalar(1) / info.m_timeStep;
+
+  // J = (arm x d, d) for side A, (arm x -d, -d) for side B: what contactJacobianRow gives a free body.
+  const int first = m_data.m_jacobians.size();
+  m_data.m_jacobians.resizeNoInitialize(first + 12);
+  m_data.m_deltaVelocitiesUnitImpulse.resizeNoInitialize(first + 12);
+  btScalar relative_velocity = 0, denominator = cfm;
+  btVector3 angular[2];
+  for (int side = 0; side < 2; ++side)
+  {
+    const FreeSide& free = sides[side];
+    const btVector3 linear = side == 0 ? direction : -direction;
+    angular[side] = free.arm.cross(linear);
+    int& velocity_index = side == 0 ? row.m_deltaVelAindex : row.m_deltaVelBindex;
+    velocity_index = free.body->getCompanionId();
+    if (velocity_index < 0)
+    {
+      velocity_index = m_data.m_deltaVelocities.size();
+      free.body->setCompanionId(velocity_index);
+      m_data.m_deltaVelocities.resize(m_data.m_deltaVelocities.size() + 6);
+    }
+    (side == 0 ? row.m_jacAindex : row.m_jacBindex) = first + 6 * side;
+    btScalar* jacobian = &m_data.m_jacobians[first + 6 * side];
+    btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[first + 6 * side];
+    const btScalar* I = free.slot->inverse_inertia;
+    for (int a = 0; a < 3; ++a)
+    {
+      jacobian[a] = angular[side][a];
+      jacobian[3 + a] = linear[a];
+      response[a] = I[3 * a] * angular[side][0] + I[3 * a + 1] * angular[side][1] + I[3 * a + 2] * angular[side][2];
+      response[3 + a] = linear[a] * free.slot->inverse_mass;
+    }
+    const btScalar* velocity = free.body->getVelocityVector();
+    for (int i = 0; i < 6; ++i)
+    {
+      denominator += jacobian[i] * response[i];
+      relative_velocity += velocity[i] * jacobian[i];
+    }
+  }
+  row.m_relpos1CrossNormal = angular[0];
+  row.m_contactNormal1 = direction;
+  row.m_relpos2CrossNormal = angular[1];
+  row.m_contactNormal2 = -direction;
+  row.m_angularComponentA.setZero();
+  row.m_angularComponentB.setZero();
+  row.m_friction = point.m_combinedFriction;
+
+  btScalar distance = 0, restitution = 0;
+  if (!friction)
+  {
+    distance = point.getDistance() + info.m_linearSlop;
+    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
+                                            info.m_restitutionVelocityThreshold),
+                           btScalar(0));
+  }
+  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
+  {
+    distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
+  }
+  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
+  if (!friction && distance > 0)
+    velocity_error -= distance / info.m_timeStep;
+  else
+    positional_error = -distance * erp / info.m_timeStep;
+  row.m_rhsPenetration = 0;
+  row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
+  row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  scaleRow(row, denominator, positional_error + velocity_error, cfm, info.m_sor);
+}
+
 void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info)
 {
   const auto* collider_a = btMultiBodyLinkCollider::upcast(manifold.getBody0());
@@ -548,6 +629,8 @@ void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const bt
     row.m_originalContactPoint = &point;
   };
   const bool two_directions = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
+  // Free bodies have no links: their points' lever arms are from the base.
+  const bool free_pair = body_rows_[slot_a].free && body_rows_[slot_b].free;
   for (int j = 0; j < manifold.getNumContacts(); ++j)
   {
     btManifoldPoint& point = manifold.getContactPoint(j);
@@ -561,8 +644,15 @@ void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const bt
     btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
     start(normal, point);
     normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
-    setupPairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false, slot_a,
-                 slot_b);
+    const FreeSide sides[2] = {
+        {&body_rows_[slot_a], collider_a->m_multiBody, point.getPositionWorldOnA() - collider_a->m_multiBody->getBasePos()},
+        {&body_rows_[slot_b], collider_b->m_multiBody, point.getPositionWorldOnB() - collider_b->m_multiBody->getBasePos()}};
+    if (free_pair)
+      setupFreePairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
+                       sides);
+    else
+      setupPairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
+                   slot_a, slot_b);
 
     btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
     point.m_lateralFrictionDir1.normalize();
@@ -572,9 +662,12 @@ void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const bt
       btMultiBodySolverConstraint& row = m_multiBodyFrictionContactConstraints.expandNonInitializing();
       start(row, point);
       row.m_frictionIndex = normal_index;
-      setupPairRow(m_multiBodyFrictionContactConstraints, m_multiBodyFrictionContactConstraints.size() - 1,
-                   d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, point, info, true, slot_a,
-                   slot_b);
+      const btVector3& direction = d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2;
+      const int index = m_multiBodyFrictionContactConstraints.size() - 1;
+      if (free_pair)
+        setupFreePairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, sides);
+      else
+        setupPairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, slot_a, slot_b);
     }
     if (two_directions && (info.m_solverMode & SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION))
       point.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;

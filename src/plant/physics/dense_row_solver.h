@@ -201,6 +201,17 @@ private:
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
   // Plain pyramid friction between two different multibodies whose states answer.
   bool pairRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
+  // One side of a contact point between two free bodies: its body and lever arm.
+  struct FreeSide
+  {
+    const BodyRows* slot;
+    btMultiBody* body;
+    btVector3 arm;  // from the body's centre of mass to the point
+  };
+  // setupPairRow where both multibodies are free bodies: J, M^-1 J^T and the row's numbers in
+  // closed form, from the point's lever arms.
+  void setupFreePairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
+                        const btContactSolverInfo& info, bool friction, const FreeSide (&sides)[2]);
   // convertMultiBodyContact's rows for two multibodies, built by setupPairRow.
   void convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info);
   // setupMultiBodyContactConstraint for two multibodies: Bullet's rows (its restitution among them),
