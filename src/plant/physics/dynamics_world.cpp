@@ -1,7 +1,9 @@
 #include "physics/dynamics_world.h"
 
 #include <algorithm>
+#include <typeinfo>
 
+#include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
@@ -48,6 +50,40 @@ DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* br
   : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration)
 {
   solver->useStates(this);
+  if (auto* collision_dispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher))
+    collision_dispatcher->setNearCallback(&DynamicsWorld::nearCallback);
+}
+
+void DynamicsWorld::nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info)
+{
+  const btBroadphaseProxy* proxy0 = pair.m_pProxy0;
+  const btBroadphaseProxy* proxy1 = pair.m_pProxy1;
+  const auto* object0 = static_cast<const btCollisionObject*>(proxy0->m_clientObject);
+  const auto* object1 = static_cast<const btCollisionObject*>(proxy1->m_clientObject);
+  if (pair.m_algorithm && info.m_dispatchFunc == btDispatcherInfo::DISPATCH_DISCRETE &&
+      object0->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE &&
+      object1->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE &&
+      typeid(*pair.m_algorithm) == typeid(btBoxBoxCollisionAlgorithm))
+  {
+    btScalar gap = 0;
+    for (int a = 0; a < 3; ++a)
+      gap = std::max(gap, std::max(proxy1->m_aabbMin[a] - proxy0->m_aabbMax[a], proxy0->m_aabbMin[a] - proxy1->m_aabbMax[a]));
+    // The algorithm's manifold (it owns one, or has none), listed into a buffer on the stack.
+    btPersistentManifold* listed[4];
+    btManifoldArray manifolds;
+    manifolds.initializeFromBuffer(listed, 0, 4);
+    pair.m_algorithm->getAllContactManifolds(manifolds);
+    btPersistentManifold* manifold = manifolds.size() ? manifolds[0] : nullptr;
+    // Without a manifold the algorithm does nothing; with one, what it does for boxes this far apart.
+    if (gap > btScalar(1e-3) && (!manifold || gap > manifold->getContactBreakingThreshold()))
+    {
+      if (manifold && manifold->getNumContacts() > 0 && dispatcher.needsCollision(object0, object1))
+        manifold->refreshContactPoints(manifold->getBody0()->getWorldTransform(),
+                                       manifold->getBody1()->getWorldTransform());
+      return;
+    }
+  }
+  btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
 }
 
 void DynamicsWorld::removeCollisionObject(btCollisionObject* object)
