@@ -940,6 +940,7 @@ void DenseRowSolver::buildBlocks()
     return;
   // The sparse rows' J and M^-1 J^T, padded with zeros as their multibodies' velocities.
   sparse_data_.assign(sparse_size, btScalar(0));
+  body_sparse_.assign(bodies_.size(), 0);
   std::fill(std::begin(sparse_zero_dof_), std::end(sparse_zero_dof_), btScalar(0));
   std::fill(std::begin(sparse_zero_data_), std::end(sparse_zero_data_), btScalar(0));
   btScalar* data = sparse_data_.data();
@@ -960,11 +961,23 @@ void DenseRowSolver::buildBlocks()
         continue;
       const int n = degreesOfFreedom(bodies[side]);
       const int lanes = (n + kLanes - 1) / kLanes;
+      const int node = node_of_[velocities[side]];
+      body_sparse_[node] = 1;
       row.lanes[side] = lanes;
-      row.dof[side] = &dof_velocity_[packed_offset_[node_of_[velocities[side]]]];
+      row.dof[side] = &dof_velocity_[packed_offset_[node]];
       row.jacobian[side] = data;
-      std::copy_n(&m_data.m_jacobians[jacobians[side]], n, data);
-      std::copy_n(&m_data.m_deltaVelocitiesUnitImpulse[jacobians[side]], n, data + lanes * kLanes);
+      const btScalar* jacobian = &m_data.m_jacobians[jacobians[side]];
+      const btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobians[side]];
+      if (n == 6)  // a free body: copies of a known size
+      {
+        std::copy_n(jacobian, 6, data);
+        std::copy_n(response, 6, data + 2 * kLanes);
+      }
+      else
+      {
+        std::copy_n(jacobian, n, data);
+        std::copy_n(response, n, data + lanes * kLanes);
+      }
       data += 2 * lanes * kLanes;
     }
     row.two_lanes = row.lanes[0] <= 2 && row.lanes[1] <= 2;
@@ -1170,7 +1183,7 @@ void DenseRowSolver::applyVelocityChanges()
   for (const Row& row : rows_)
   {
     const btScalar impulse = row.impulse - row.start_impulse;
-    if (impulse == 0)
+    if (impulse == 0 || row.sparse)  // a sparse group's bodies have theirs in dof_velocity_
       continue;
     const btMultiBodySolverConstraint& c = *row.constraint;
     if (c.m_multiBodyA)
@@ -1188,10 +1201,14 @@ void DenseRowSolver::applyVelocityChanges()
   }
   // Bullet (DIRECTLY_UPDATE_VELOCITY_DURING_SOLVER_ITERATIONS) moves both its buffer and the
   // multibody's pending velocity change; its write-back reads neither again.
-  for (btMultiBody* body : bodies_)
+  for (size_t b = 0; b < bodies_.size(); ++b)
   {
+    btMultiBody* body = bodies_[b];
     const int first = body->getCompanionId();
     const int n = degreesOfFreedom(body);
+    if (any_sparse_ && body_sparse_[b])
+      for (int k = 0; k < n; ++k)
+        velocity_change_[first + k] = dof_velocity_[packed_offset_[b] + k] - m_data.m_deltaVelocities[first + k];
     for (int k = 0; k < n; ++k)
       m_data.m_deltaVelocities[first + k] += velocity_change_[first + k];
     body->applyDeltaVeeMultiDof2(&velocity_change_[first], 1);

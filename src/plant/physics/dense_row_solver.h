@@ -268,6 +268,7 @@ private:
   // to whole Lanes.
   std::vector<btScalar> dof_velocity_;
   std::vector<int> packed_offset_;           // by bodies_ index
+  std::vector<char> body_sparse_;            // by bodies_ index: its group is sparse (its dv is in dof_velocity_)
   std::vector<btScalar> sparse_data_;        // the sparse rows' J and M^-1 J^T per side, padded as dof_velocity_
   // A missing side of a two_lanes row: its velocities (added zeros) and its J and M^-1 J^T (zeros).
   btScalar sparse_zero_dof_[2 * kLanes], sparse_zero_data_[4 * kLanes];

@@ -5,6 +5,7 @@
 
 #include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
@@ -54,20 +55,51 @@ DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* br
     collision_dispatcher->setNearCallback(&DynamicsWorld::nearCallback);
 }
 
+namespace
+{
+// The base of a multibody without links: a free body.
+bool freeBody(const btCollisionObject& object)
+{
+  const btMultiBodyLinkCollider* collider = btMultiBodyLinkCollider::upcast(&object);
+  return collider && collider->m_link < 0 && collider->m_multiBody->getNumLinks() == 0;
+}
+}  // namespace
+
 void DynamicsWorld::nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info)
 {
   const btBroadphaseProxy* proxy0 = pair.m_pProxy0;
   const btBroadphaseProxy* proxy1 = pair.m_pProxy1;
   const auto* object0 = static_cast<const btCollisionObject*>(proxy0->m_clientObject);
   const auto* object1 = static_cast<const btCollisionObject*>(proxy1->m_clientObject);
-  if (pair.m_algorithm && info.m_dispatchFunc == btDispatcherInfo::DISPATCH_DISCRETE &&
-      object0->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE &&
-      object1->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE &&
-      typeid(*pair.m_algorithm) == typeid(btBoxBoxCollisionAlgorithm))
+  if (info.m_dispatchFunc != btDispatcherInfo::DISPATCH_DISCRETE ||
+      object0->getCollisionShape()->getShapeType() != BOX_SHAPE_PROXYTYPE ||
+      object1->getCollisionShape()->getShapeType() != BOX_SHAPE_PROXYTYPE)
   {
-    btScalar gap = 0;
-    for (int a = 0; a < 3; ++a)
-      gap = std::max(gap, std::max(proxy1->m_aabbMin[a] - proxy0->m_aabbMax[a], proxy0->m_aabbMin[a] - proxy1->m_aabbMax[a]));
+    btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
+    return;
+  }
+  btScalar gap = 0;
+  for (int a = 0; a < 3; ++a)
+    gap = std::max(gap, std::max(proxy1->m_aabbMin[a] - proxy0->m_aabbMax[a], proxy0->m_aabbMin[a] - proxy1->m_aabbMax[a]));
+  if (!pair.m_algorithm && gap > btScalar(1e-3) && freeBody(*object0) && freeBody(*object1))
+  {
+    // Two free boxes apart, not yet given an algorithm: none yet, and so no manifold (a pile's
+    // boxes had two empty ones each for every one with points, all sorted into islands and
+    // passed over every step). A manifold made now would be given the pair's breaking threshold
+    // (getNewManifold): the smaller shape's size times gContactBreakingThreshold, or that alone.
+    // The gap clears that when it clears gContactBreakingThreshold times the larger of 1 and the
+    // smaller size (a box's half diagonal with its margin), with 1 % to spare.
+    auto size2 = [](const btCollisionObject& object) {
+      const auto* box = static_cast<const btBoxShape*>(object.getCollisionShape());
+      const btScalar margin = box->getMarginNV();
+      return (box->getImplicitShapeDimensions() + btVector3(margin, margin, margin)).length2();
+    };
+    const btScalar clears = gap / (btScalar(1.01) * gContactBreakingThreshold);
+    if (clears > 1 && std::min(size2(*object0), size2(*object1)) < clears * clears)
+      return;
+  }
+  if (pair.m_algorithm && typeid(*pair.m_algorithm) == typeid(btBoxBoxCollisionAlgorithm))
+  {
     // The algorithm's manifold (it owns one, or has none), listed into a buffer on the stack.
     btPersistentManifold* listed[4];
     btManifoldArray manifolds;

@@ -59,7 +59,11 @@ public:
   // than the manifold's breaking threshold, and than 1 mm, give that query no point (it reports
   // boxes that overlap, and their separation along the best of its 15 axes is at least their
   // distance / sqrt(3), far above its 1e-5 tolerances): what is left of its work is the manifold's
-  // refresh of the points it has, done here as btBoxBoxCollisionAlgorithm does it.
+  // refresh of the points it has, done here as btBoxBoxCollisionAlgorithm does it. Two free
+  // bodies' boxes (multibodies without links) that far apart get no algorithm yet, and so no
+  // manifold: the pile's empty manifolds, two for each one with points, went through the islands'
+  // sort and the solver's setup every step. (Where a robot with joints is one side the algorithm
+  // is made as Bullet makes it: the order of the manifolds, and so of the rows, stays Bullet's.)
   static void nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info);
   // The solver forgets what it keeps of the object (its bounce threshold).
   void removeCollisionObject(btCollisionObject* object) override;
