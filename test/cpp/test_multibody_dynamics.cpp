@@ -1,6 +1,6 @@
 // The joint-space algorithms (physics/multibody_dynamics.cpp) against Bullet's articulated-body
-// pass on random chains (free and fixed base, with and without spherical joints) and on the
-// Tianracer spawned through the plant.
+// pass on random chains (free and fixed base, with and without spherical joints), free bodies (no
+// links) and on the Tianracer spawned through the plant.
 //
 // Tolerances: Bullet computes in float (btScalar), the algorithms here in double from the same
 // float inputs, so the two differ by Bullet's rounding, which the articulated-body pass amplifies
@@ -193,6 +193,28 @@ TEST(MultibodyDynamics, AlgorithmsMatchBulletOnRandomChainsWithBallJoints)
     report(name + " qdd relative difference", worst);
     EXPECT_LT(worst, kBallChainBound);
   }
+}
+
+// A free body (no links, a floating base) takes the closed form M^-1 = diag(I^-1, 1 / m)
+// (factorInertia): the same checks on random ones.
+TEST(MultibodyDynamics, FreeBodiesMatchBullet)
+{
+  double worst = 0;
+  for (unsigned seed = 1; seed <= 10; ++seed)
+  {
+    std::mt19937 rng(seed);
+    std::unique_ptr<btMultiBody> body = randomChain(rng, false, 0);
+    applyRandomLoads(rng, *body);
+    updateKinematics(*body);
+    MultibodyState state;
+    ASSERT_TRUE(buildMultibodyState(*body, state));
+    EXPECT_TRUE(state.free);
+    worst = std::max(worst, forwardDynamicsDifference(*body));
+    expectInverseInertiaMatchesBullet(*body, rng, "free body " + std::to_string(seed));
+    expectContactJacobianMatchesBullet(*body, rng, "free body " + std::to_string(seed));
+  }
+  report("free bodies qdd relative difference", worst);
+  EXPECT_LT(worst, kFloatBound);
 }
 
 TEST(MultibodyDynamics, StateIsNotBuiltForAnInertiaThatIsNotPositiveDefinite)

@@ -34,7 +34,31 @@ btScalar response(const btMultiBodySolverConstraint& i, const btMultiBodySolverC
                    degreesOfFreedom(sides_i[a]));
   return sum;
 }
+// What Bullet derives from a row's J M^-1 J^T + cfm (denominator): m_jacDiagABInv =
+// sor / denominator, and the rhs and cfm scaled by it.
+void scaleRow(btMultiBodySolverConstraint& row, btScalar denominator, btScalar velocity_error, btScalar cfm,
+              btScalar sor)
+{
+  row.m_jacDiagABInv = denominator > SIMD_EPSILON ? sor / denominator : btScalar(0);
+  row.m_rhs = velocity_error * row.m_jacDiagABInv;
+  row.m_cfm = cfm * row.m_jacDiagABInv;
+}
+
 }  // namespace
+
+btScalar DenseRowSolver::freeResponse(const BodyRows& slot, const btScalar* jacobian, btScalar* response)
+{
+  const btScalar* I = slot.inverse_inertia;
+  btScalar diagonal = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    response[a] = I[3 * a] * jacobian[0] + I[3 * a + 1] * jacobian[1] + I[3 * a + 2] * jacobian[2];
+    response[3 + a] = jacobian[3 + a] * slot.inverse_mass;
+  }
+  for (int i = 0; i < 6; ++i)
+    diagonal += jacobian[i] * response[i];
+  return diagonal;
+}
 
 int DenseRowSolver::bodySlot(btMultiBody* body)
 {
@@ -52,6 +76,14 @@ int DenseRowSolver::bodySlot(btMultiBody* body)
     slot.number = number;
     slot.state = states_->stateOf(*body);
     slot.rows.clear();
+    slot.pair_rows = false;
+    slot.free = slot.state && slot.state->free;
+    if (slot.free)
+    {
+      for (int k = 0; k < 9; ++k)
+        slot.inverse_inertia[k] = btScalar(slot.state->inverse_inertia[k]);
+      slot.inverse_mass = btScalar(slot.state->inverse_mass);
+    }
   }
   return body_rows_[known].state ? known : -1;
 }
@@ -62,52 +94,86 @@ void DenseRowSolver::needArticulatedPass(btMultiBody* body)
     states_->needArticulatedPass(*body);
 }
 
-void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
-                                   btScalar cfm, btScalar sor)
+void DenseRowSolver::deferSide(btMultiBodyConstraintArray& rows, int index, int slot, int jacobian,
+                               btScalar velocity_error, btScalar cfm, btScalar sor, btScalar other)
 {
   std::vector<int>& own = body_rows_[slot].rows;
   own.push_back(int(deferred_.size()));
-  deferred_.push_back(DeferredRow{&rows, index, slot, int(own.size() - 1), velocity_error, cfm, sor});
+  deferred_.push_back(
+      DeferredRow{&rows, index, slot, int(own.size() - 1), jacobian, -1, velocity_error, cfm, sor, 0, other});
+}
+
+void DenseRowSolver::deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error,
+                                   btScalar cfm, btScalar sor)
+{
+  const btMultiBodySolverConstraint& row = rows[index];
+  deferSide(rows, index, slot, row.m_multiBodyA ? row.m_jacAindex : row.m_jacBindex, velocity_error, cfm, sor, 0);
+}
+
+void DenseRowSolver::deferPairResponse(btMultiBodyConstraintArray& rows, int index, int slot_a, int slot_b,
+                                       btScalar velocity_error, btScalar cfm, btScalar sor)
+{
+  const btMultiBodySolverConstraint& row = rows[index];
+  const int first = int(deferred_.size());
+  deferSide(rows, index, slot_a, row.m_jacAindex, velocity_error, cfm, sor, 0);
+  deferSide(rows, index, slot_b, row.m_jacBindex, 0, 0, 0, 0);
+  deferred_[first].partner = first + 1;
+  deferred_[first + 1].partner = -2;
+  body_rows_[slot_a].pair_rows = body_rows_[slot_b].pair_rows = true;
 }
 
 // The responses M^-1 J^T of each multibody's deferred rows, all at once, and what Bullet derives
-// from them: m_jacDiagABInv = sor / (J M^-1 J^T + cfm), and the rhs and cfm scaled by it.
+// from them: m_jacDiagABInv = sor / (J M^-1 J^T + cfm) (the sum over a row's two sides between two
+// multibodies), and the rhs and cfm scaled by it.
 void DenseRowSolver::finishDeferredRows()
 {
   for (size_t s = 0; s < bodies_used_; ++s)
   {
     BodyRows& slot = body_rows_[s];
     const int k = int(slot.rows.size());
+    slot.has_gram = false;
     if (k == 0)
       continue;
     const int n = slot.state->n;
     const int padded = (k + kInertiaSides - 1) / kInertiaSides * kInertiaSides;
     slot.columns.assign(size_t(n) * padded, btScalar(0));
-    slot.gram.resize(size_t(padded) * padded);
+    slot.has_gram = !slot.pair_rows;
+    if (slot.has_gram)
+      slot.gram.resize(size_t(padded) * padded);
     slot.stride = padded;
-    auto jacobianIndex = [&](const DeferredRow& d) {
-      const btMultiBodySolverConstraint& row = (*d.rows)[d.index];
-      return row.m_multiBodyA ? row.m_jacAindex : row.m_jacBindex;
-    };
     for (int p = 0; p < k; ++p)
     {
-      const btScalar* jacobian = &m_data.m_jacobians[jacobianIndex(deferred_[slot.rows[p]])];
+      const btScalar* jacobian = &m_data.m_jacobians[deferred_[slot.rows[p]].jacobian];
       for (int i = 0; i < n; ++i)
         slot.columns[size_t(i) * padded + p] = jacobian[i];
     }
-    solveInertiaColumns(*slot.state, slot.columns.data(), padded, slot.gram.data());
+    solveInertiaColumns(*slot.state, slot.columns.data(), padded, slot.has_gram ? slot.gram.data() : nullptr);
     for (int p = 0; p < k; ++p)
     {
-      const DeferredRow& d = deferred_[slot.rows[p]];
-      btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobianIndex(d)];
+      DeferredRow& d = deferred_[slot.rows[p]];
+      btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[d.jacobian];
       for (int i = 0; i < n; ++i)
         response[i] = slot.columns[size_t(i) * padded + p];
-      btMultiBodySolverConstraint& row = (*d.rows)[d.index];
-      const btScalar denominator = slot.gram[size_t(p) * padded + p] + d.cfm;
-      row.m_jacDiagABInv = denominator > SIMD_EPSILON ? d.sor / denominator : btScalar(0);
-      row.m_rhs = d.velocity_error * row.m_jacDiagABInv;
-      row.m_cfm = d.cfm * row.m_jacDiagABInv;
+      if (slot.has_gram)
+        d.diagonal = slot.gram[size_t(p) * padded + p];
+      else
+      {
+        const btScalar* jacobian = &m_data.m_jacobians[d.jacobian];
+        btScalar diagonal = 0;
+        for (int i = 0; i < n; ++i)
+          diagonal += jacobian[i] * response[i];
+        d.diagonal = diagonal;
+      }
     }
+  }
+  for (const DeferredRow& d : deferred_)
+  {
+    if (d.partner == -2)
+      continue;
+    const btScalar denominator = d.partner >= 0 ? d.diagonal + deferred_[d.partner].diagonal + d.cfm
+                                 : d.other != 0 ? d.diagonal + d.other + d.cfm
+                                                : d.diagonal + d.cfm;
+    scaleRow((*d.rows)[d.index], denominator, d.velocity_error, d.cfm, d.sor);
   }
 }
 
@@ -238,8 +304,9 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   }
   int& jacobian_index = on_a ? row.m_jacAindex : row.m_jacBindex;
   jacobian_index = m_data.m_jacobians.size();
-  m_data.m_jacobians.resize(m_data.m_jacobians.size() + n);
-  m_data.m_deltaVelocitiesUnitImpulse.resize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
+  // Both written whole below (J here, M^-1 J^T by the free body's response or finishDeferredRows).
+  m_data.m_jacobians.resizeNoInitialize(m_data.m_jacobians.size() + n);
+  m_data.m_deltaVelocitiesUnitImpulse.resizeNoInitialize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
   btScalar* jacobian = &m_data.m_jacobians[jacobian_index];
   const int slot = bodySlot(body);
   contactJacobianRow(*body_rows_[slot].state, link, position, normal, jacobian);
@@ -296,7 +363,11 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
   row.m_appliedImpulse = 0;
   row.m_appliedPushImpulse = 0;
-  deferResponse(rows, index, slot, positional_error + velocity_error, cfm, info.m_sor);
+  if (body_rows_[slot].free)
+    scaleRow(row, freeResponse(body_rows_[slot], jacobian, &m_data.m_deltaVelocitiesUnitImpulse[jacobian_index]) + cfm,
+             positional_error + velocity_error, cfm, info.m_sor);
+  else
+    deferResponse(rows, index, slot, positional_error + velocity_error, cfm, info.m_sor);
 }
 
 // convertMultiBodyContact's rows (a normal row, then one or two friction rows per point), built by
@@ -423,6 +494,288 @@ void DenseRowSolver::convertMultiBodyContactWithSurfaces(btPersistentManifold& m
   }
 }
 
+// A contact between two different multibodies whose states answer, with plain pyramid friction.
+bool DenseRowSolver::pairRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info)
+{
+  const auto* a = btMultiBodyLinkCollider::upcast(manifold.getBody0());
+  const auto* b = btMultiBodyLinkCollider::upcast(manifold.getBody1());
+  if (!a || !b || a->m_multiBody == b->m_multiBody)
+    return false;
+  for (const btCollisionObject* object : {manifold.getBody0(), manifold.getBody1()})
+    if (object->hasAnisotropicFriction(btCollisionObject::CF_ANISOTROPIC_FRICTION |
+                                       btCollisionObject::CF_ANISOTROPIC_ROLLING_FRICTION))
+      return false;
+  if (info.m_solverMode & SOLVER_ENABLE_FRICTION_DIRECTION_CACHING)
+    return false;
+  for (int j = 0; j < manifold.getNumContacts(); ++j)
+  {
+    const btManifoldPoint& point = manifold.getContactPoint(j);
+    if (point.m_combinedRollingFriction > 0 || point.m_combinedSpinningFriction > 0)
+      return false;
+  }
+  return bodySlot(a->m_multiBody) >= 0 && bodySlot(b->m_multiBody) >= 0;
+}
+
+void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
+                                  btManifoldPoint& point, const btContactSolverInfo& info, bool friction, int slot_a,
+                                  int slot_b)
+{
+  btMultiBodySolverConstraint& row = rows[index];
+  btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
+  btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
+  if (!friction)
+    normalRowSoftness(point, info, erp, cfm);
+  cfm *= btScalar(1) / info.m_timeStep;
+
+  // Side A moves along the direction, side B against it; each J from its multibody's state.
+  btScalar relative_velocity = 0;
+  btVector3 arms[2];
+  for (int side = 0; side < 2; ++side)
+  {
+    btMultiBody* body = side == 0 ? row.m_multiBodyA : row.m_multiBodyB;
+    const int link = side == 0 ? row.m_linkA : row.m_linkB;
+    const btVector3& position = side == 0 ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+    const int n = body->getNumDofs() + 6;
+    int& velocity_index = side == 0 ? row.m_deltaVelAindex : row.m_deltaVelBindex;
+    velocity_index = body->getCompanionId();
+    if (velocity_index < 0)
+    {
+      velocity_index = m_data.m_deltaVelocities.size();
+      body->setCompanionId(velocity_index);
+      m_data.m_deltaVelocities.resize(m_data.m_deltaVelocities.size() + n);
+    }
+    int& jacobian_index = side == 0 ? row.m_jacAindex : row.m_jacBindex;
+    jacobian_index = m_data.m_jacobians.size();
+    m_data.m_jacobians.resizeNoInitialize(m_data.m_jacobians.size() + n);
+    m_data.m_deltaVelocitiesUnitImpulse.resizeNoInitialize(m_data.m_deltaVelocitiesUnitImpulse.size() + n);
+    btScalar* jacobian = &m_data.m_jacobians[jacobian_index];
+    contactJacobianRow(*body_rows_[side == 0 ? slot_a : slot_b].state, link, position,
+                       side == 0 ? direction : -direction, jacobian);
+    const btVector3 origin = link < 0 ? body->getBasePos() : body->getLink(link).m_cachedWorldTransform.getOrigin();
+    arms[side] = position - origin;
+    const btScalar* velocity = body->getVelocityVector();
+    for (int i = 0; i < n; ++i)
+      relative_velocity += velocity[i] * jacobian[i];
+  }
+  row.m_relpos1CrossNormal = arms[0].cross(direction);
+  row.m_contactNormal1 = direction;
+  row.m_relpos2CrossNormal = -arms[1].cross(direction);
+  row.m_contactNormal2 = -direction;
+  row.m_angularComponentA.setZero();
+  row.m_angularComponentB.setZero();
+  row.m_friction = point.m_combinedFriction;
+
+  btScalar distance = 0, restitution = 0;
+  if (!friction)
+  {
+    distance = point.getDistance() + info.m_linearSlop;
+    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
+                                            info.m_restitutionVelocityThreshold),
+                           btScalar(0));
+  }
+  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
+  {
+    distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
+  }
+  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
+  if (!friction && distance > 0)
+    velocity_error -= distance / info.m_timeStep;
+  else
+    positional_error = -distance * erp / info.m_timeStep;
+  row.m_rhsPenetration = 0;
+  row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
+  row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  // A free body's side is answered now; the others wait for their multibody's other rows.
+  const int slots[2] = {slot_a, slot_b};
+  const int jacobians[2] = {row.m_jacAindex, row.m_jacBindex};
+  btScalar diagonal[2] = {0, 0};
+  for (int side = 0; side < 2; ++side)
+    if (body_rows_[slots[side]].free)
+      diagonal[side] = freeResponse(body_rows_[slots[side]], &m_data.m_jacobians[jacobians[side]],
+                                    &m_data.m_deltaVelocitiesUnitImpulse[jacobians[side]]);
+  const btScalar velocity_error_all = positional_error + velocity_error;
+  if (body_rows_[slot_a].free && body_rows_[slot_b].free)
+    scaleRow(row, diagonal[0] + diagonal[1] + cfm, velocity_error_all, cfm, info.m_sor);
+  else if (body_rows_[slot_a].free || body_rows_[slot_b].free)
+  {
+    const int side = body_rows_[slot_a].free ? 1 : 0;
+    deferSide(rows, index, slots[side], jacobians[side], velocity_error_all, cfm, info.m_sor, diagonal[1 - side]);
+    body_rows_[slots[side]].pair_rows = true;
+  }
+  else
+    deferPairResponse(rows, index, slot_a, slot_b, velocity_error_all, cfm, info.m_sor);
+}
+
+void DenseRowSolver::setupFreePairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
+                                      btManifoldPoint& point, const btContactSolverInfo& info, bool friction,
+                                      const FreeSide (&sides)[2])
+{
+  btMultiBodySolverConstraint& row = rows[index];
+  btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
+  btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
+  if (!friction)
+    normalRowSoftness(point, info, erp, cfm);
+  cfm *= btScalar(1) / info.m_timeStep;
+
+  // J = (arm x d, d) for side A, (arm x -d, -d) for side B: what contactJacobianRow gives a free body.
+  const int first = m_data.m_jacobians.size();
+  m_data.m_jacobians.resizeNoInitialize(first + 12);
+  m_data.m_deltaVelocitiesUnitImpulse.resizeNoInitialize(first + 12);
+  btScalar relative_velocity = 0, denominator = cfm;
+  btVector3 angular[2];
+  for (int side = 0; side < 2; ++side)
+  {
+    const FreeSide& free = sides[side];
+    const btVector3 linear = side == 0 ? direction : -direction;
+    angular[side] = free.arm.cross(linear);
+    int& velocity_index = side == 0 ? row.m_deltaVelAindex : row.m_deltaVelBindex;
+    velocity_index = free.body->getCompanionId();
+    if (velocity_index < 0)
+    {
+      velocity_index = m_data.m_deltaVelocities.size();
+      free.body->setCompanionId(velocity_index);
+      m_data.m_deltaVelocities.resize(m_data.m_deltaVelocities.size() + 6);
+    }
+    (side == 0 ? row.m_jacAindex : row.m_jacBindex) = first + 6 * side;
+    btScalar* jacobian = &m_data.m_jacobians[first + 6 * side];
+    btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[first + 6 * side];
+    const btScalar* I = free.slot->inverse_inertia;
+    for (int a = 0; a < 3; ++a)
+    {
+      jacobian[a] = angular[side][a];
+      jacobian[3 + a] = linear[a];
+      response[a] = I[3 * a] * angular[side][0] + I[3 * a + 1] * angular[side][1] + I[3 * a + 2] * angular[side][2];
+      response[3 + a] = linear[a] * free.slot->inverse_mass;
+    }
+    const btScalar* velocity = free.body->getVelocityVector();
+    for (int i = 0; i < 6; ++i)
+    {
+      denominator += jacobian[i] * response[i];
+      relative_velocity += velocity[i] * jacobian[i];
+    }
+  }
+  row.m_relpos1CrossNormal = angular[0];
+  row.m_contactNormal1 = direction;
+  row.m_relpos2CrossNormal = angular[1];
+  row.m_contactNormal2 = -direction;
+  row.m_angularComponentA.setZero();
+  row.m_angularComponentB.setZero();
+  row.m_friction = point.m_combinedFriction;
+
+  btScalar distance = 0, restitution = 0;
+  if (!friction)
+  {
+    distance = point.getDistance() + info.m_linearSlop;
+    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
+                                            info.m_restitutionVelocityThreshold),
+                           btScalar(0));
+  }
+  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
+  {
+    distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
+  }
+  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
+  if (!friction && distance > 0)
+    velocity_error -= distance / info.m_timeStep;
+  else
+    positional_error = -distance * erp / info.m_timeStep;
+  row.m_rhsPenetration = 0;
+  row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
+  row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  scaleRow(row, denominator, positional_error + velocity_error, cfm, info.m_sor);
+}
+
+void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info,
+                                        const PointSurface* surfaces)
+{
+  const auto* collider_a = btMultiBodyLinkCollider::upcast(manifold.getBody0());
+  const auto* collider_b = btMultiBodyLinkCollider::upcast(manifold.getBody1());
+  const int slot_a = bodySlot(collider_a->m_multiBody);
+  const int slot_b = bodySlot(collider_b->m_multiBody);
+  auto start = [&](btMultiBodySolverConstraint& row, btManifoldPoint& point) {
+    row.m_orgConstraint = nullptr;
+    row.m_orgDofIndex = -1;
+    row.m_solverBodyIdA = -1;
+    row.m_solverBodyIdB = -1;
+    row.m_multiBodyA = collider_a->m_multiBody;
+    row.m_multiBodyB = collider_b->m_multiBody;
+    row.m_linkA = collider_a->m_link;
+    row.m_linkB = collider_b->m_link;
+    row.m_originalContactPoint = &point;
+  };
+  const bool two_directions = info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS;
+  // Free bodies have no links: their points' lever arms are from the base.
+  const bool free_pair = body_rows_[slot_a].free && body_rows_[slot_b].free;
+  for (int j = 0; j < manifold.getNumContacts(); ++j)
+  {
+    btManifoldPoint& point = manifold.getContactPoint(j);
+    if (point.getDistance() > manifold.getContactProcessingThreshold())
+    {
+      point.m_appliedImpulse = 0;
+      point.m_prevRHS = 0;
+      continue;
+    }
+    const int normal_index = m_multiBodyNormalContactConstraints.size();
+    btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
+    start(normal, point);
+    normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
+    const FreeSide sides[2] = {
+        {&body_rows_[slot_a], collider_a->m_multiBody, point.getPositionWorldOnA() - collider_a->m_multiBody->getBasePos()},
+        {&body_rows_[slot_b], collider_b->m_multiBody, point.getPositionWorldOnB() - collider_b->m_multiBody->getBasePos()}};
+    if (free_pair)
+      setupFreePairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
+                       sides);
+    else
+      setupPairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
+                   slot_a, slot_b);
+
+    if (!surfaces)  // with surfaces, ContactSurfaces::apply has set the point's directions
+    {
+      btPlaneSpace1(point.m_normalWorldOnB, point.m_lateralFrictionDir1, point.m_lateralFrictionDir2);
+      point.m_lateralFrictionDir1.normalize();
+      point.m_lateralFrictionDir2.normalize();
+    }
+    for (int d = 0; d < (two_directions ? 2 : 1); ++d)
+    {
+      btMultiBodySolverConstraint& row = m_multiBodyFrictionContactConstraints.expandNonInitializing();
+      start(row, point);
+      row.m_frictionIndex = normal_index;
+      const btVector3& direction = d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2;
+      const int index = m_multiBodyFrictionContactConstraints.size() - 1;
+      if (free_pair)
+        setupFreePairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, sides);
+      else
+        setupPairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, slot_a, slot_b);
+      if (surfaces && d == 1)
+        setFriction(m_multiBodyFrictionContactConstraints[index], surfaces[j].mu2);
+    }
+    if (two_directions && (info.m_solverMode & SOLVER_DISABLE_VELOCITY_DEPENDENT_FRICTION_DIRECTION))
+      point.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+  }
+}
+
+void DenseRowSolver::reserveRowData(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info)
+{
+  auto dofs = [](const btCollisionObject* object) {
+    const btMultiBodyLinkCollider* collider = btMultiBodyLinkCollider::upcast(object);
+    return collider ? collider->m_multiBody->getNumDofs() + 6 : 0;
+  };
+  const int rows_per_point = (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) ? 3 : 2;
+  int entries = m_data.m_jacobians.size();
+  for (int i = 0; i < numManifolds; ++i)
+    entries += manifolds[i]->getNumContacts() * rows_per_point *
+               (dofs(manifolds[i]->getBody0()) + dofs(manifolds[i]->getBody1()));
+  if (m_data.m_jacobians.capacity() < entries)
+  {
+    m_data.m_jacobians.reserve(entries + entries / 2);
+    m_data.m_deltaVelocitiesUnitImpulse.reserve(entries + entries / 2);
+  }
+}
+
 void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info)
 {
   auto multiBody = [](const btCollisionObject* object) {
@@ -464,9 +817,12 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
   slot_of_.resize(states_ ? states_->multibodyCount() : 0, -1);
   bodies_used_ = 0;
   deferred_.clear();
+  reserveRowData(manifolds, numManifolds, info);
   for (int i = 0; i < numManifolds; ++i)
   {
     btPersistentManifold* manifold = manifolds[i];
+    if (manifold->getNumContacts() == 0)  // no rows in any of the forms below (a pile has hundreds)
+      continue;
     btMultiBody* a = multiBody(manifold->getBody0());
     btMultiBody* b = multiBody(manifold->getBody1());
     const PointSurface* surfaces = surfacesOf(i);
@@ -474,11 +830,13 @@ void DenseRowSolver::convertContacts(btPersistentManifold** manifolds, int numMa
       convertContact(manifold, info);
     else if (contactRowsApply(*manifold, info))
       convertStaticContact(*manifold, info, surfaces);
+    else if (a && b && pairRowsApply(*manifold, info))
+      convertPairContact(*manifold, info, surfaces);
     else
     {
       needArticulatedPass(a);
       needArticulatedPass(b);
-      if (surfaces && manifold->getNumContacts() > 0)
+      if (surfaces)
         convertMultiBodyContactWithSurfaces(*manifold, info, surfaces);
       else
         convertMultiBodyContact(manifold, info);
@@ -575,7 +933,7 @@ void DenseRowSolver::collectRows()
                            m_multiBodyNonContactConstraints.size() + m_multiBodyNormalContactConstraints.size()};
   for (size_t d = 0; d < deferred_.size(); ++d)
     for (int a = 0; a < 3; ++a)
-      if (deferred_[d].rows == arrays[a])
+      if (deferred_[d].rows == arrays[a] && deferred_[d].partner != -2)
         rows_[first_of[a] + deferred_[d].index].deferred = int(d);
 
   // Groups are the union-find roots, numbered in order of first appearance.
@@ -619,11 +977,26 @@ void DenseRowSolver::buildBlocks()
   members_.resize(offset);
   for (size_t k = 0; k < rows_.size(); ++k)
     members_[groups_[rows_[k].group].offset + rows_[k].local] = int(k);
-  if (any_sparse_)  // Bullet's setup may already have moved the velocities (warm starting)
+  if (any_sparse_)
   {
-    const int n = m_data.m_deltaVelocities.size();
-    dof_velocity_.assign(n ? &m_data.m_deltaVelocities[0] : nullptr, n ? &m_data.m_deltaVelocities[0] + n : nullptr);
+    // Each multibody's degrees of freedom padded to whole Lanes, starting from where Bullet's
+    // setup may already have moved the velocities (warm starting).
+    packed_offset_.resize(bodies_.size());
+    int size = 0;
+    for (size_t k = 0; k < bodies_.size(); ++k)
+    {
+      packed_offset_[k] = size;
+      size += (degreesOfFreedom(bodies_[k]) + kLanes - 1) / kLanes * kLanes;
+    }
+    dof_velocity_.assign(size, 0);
+    for (size_t k = 0; k < bodies_.size(); ++k)
+    {
+      const int first = bodies_[k]->getCompanionId();
+      for (int i = 0, n = degreesOfFreedom(bodies_[k]); i < n; ++i)
+        dof_velocity_[packed_offset_[k] + i] = m_data.m_deltaVelocities[first + i];
+    }
   }
+  size_t sparse_size = 0;
 
   for (Row& row : rows_)
   {
@@ -634,6 +1007,10 @@ void DenseRowSolver::buildBlocks()
     {
       row.velocity = row.column = -1;
       row.stride = 0;
+      // Its sides' J and M^-1 J^T go to sparse_data_ (below, once its size is known).
+      for (const btMultiBody* body : {c.m_multiBodyA, c.m_multiBodyB})
+        if (body)
+          sparse_size += 2 * size_t((degreesOfFreedom(body) + kLanes - 1) / kLanes * kLanes);
       continue;
     }
     row.velocity = g.offset;
@@ -653,9 +1030,10 @@ void DenseRowSolver::buildBlocks()
     const int* members = &members_[g.offset];
     // Rows of one multibody whose responses were computed together: their entry is in its gram.
     const DeferredRow* deferred = row.deferred >= 0 ? &deferred_[row.deferred] : nullptr;
-    const btScalar* gram = deferred ? &body_rows_[deferred->body].gram[size_t(deferred->position) *
-                                                                     body_rows_[deferred->body].stride]
-                                  : nullptr;
+    const btScalar* gram = deferred && body_rows_[deferred->body].has_gram
+                               ? &body_rows_[deferred->body].gram[size_t(deferred->position) *
+                                                                  body_rows_[deferred->body].stride]
+                               : nullptr;
     for (int other = 0; other <= row.local; ++other)
     {
       const Row& o = rows_[members[other]];
@@ -665,6 +1043,59 @@ void DenseRowSolver::buildBlocks()
       matrix[row.local * g.stride + other] = a;
       matrix[other * g.stride + row.local] = a;
     }
+  }
+  if (!any_sparse_)
+    return;
+  // The sparse rows' J and M^-1 J^T, padded with zeros as their multibodies' velocities.
+  sparse_data_.assign(sparse_size, btScalar(0));
+  body_sparse_.assign(bodies_.size(), 0);
+  std::fill(std::begin(sparse_zero_dof_), std::end(sparse_zero_dof_), btScalar(0));
+  std::fill(std::begin(sparse_zero_data_), std::end(sparse_zero_data_), btScalar(0));
+  btScalar* data = sparse_data_.data();
+  for (Row& row : rows_)
+  {
+    if (!row.sparse)
+      continue;
+    const btMultiBodySolverConstraint& c = *row.constraint;
+    const btMultiBody* bodies[2] = {c.m_multiBodyA, c.m_multiBodyB};
+    const int jacobians[2] = {c.m_jacAindex, c.m_jacBindex};
+    const int velocities[2] = {c.m_deltaVelAindex, c.m_deltaVelBindex};
+    for (int side = 0; side < 2; ++side)
+    {
+      row.lanes[side] = 0;
+      row.dof[side] = nullptr;
+      row.jacobian[side] = nullptr;
+      if (!bodies[side])
+        continue;
+      const int n = degreesOfFreedom(bodies[side]);
+      const int lanes = (n + kLanes - 1) / kLanes;
+      const int node = node_of_[velocities[side]];
+      body_sparse_[node] = 1;
+      row.lanes[side] = lanes;
+      row.dof[side] = &dof_velocity_[packed_offset_[node]];
+      row.jacobian[side] = data;
+      const btScalar* jacobian = &m_data.m_jacobians[jacobians[side]];
+      const btScalar* response = &m_data.m_deltaVelocitiesUnitImpulse[jacobians[side]];
+      if (n == 6)  // a free body: copies of a known size
+      {
+        std::copy_n(jacobian, 6, data);
+        std::copy_n(response, 6, data + 2 * kLanes);
+      }
+      else
+      {
+        std::copy_n(jacobian, n, data);
+        std::copy_n(response, n, data + lanes * kLanes);
+      }
+      data += 2 * lanes * kLanes;
+    }
+    row.two_lanes = row.lanes[0] <= 2 && row.lanes[1] <= 2;
+    for (int side = 0; row.two_lanes && side < 2; ++side)
+      if (!row.lanes[side])
+      {
+        row.lanes[side] = 2;
+        row.dof[side] = sparse_zero_dof_;
+        row.jacobian[side] = sparse_zero_data_;
+      }
   }
 }
 
@@ -767,35 +1198,58 @@ inline void DenseRowSolver::addToVelocities(const Row& row, btScalar impulse)
     velocity[q] += impulse * column[q];
 }
 
-btScalar DenseRowSolver::sparseVelocity(const Row& row) const
+inline btScalar DenseRowSolver::sparseVelocity(const Row& row)
 {
-  const btMultiBodySolverConstraint& c = *row.constraint;
-  btScalar velocity = 0;
-  if (c.m_multiBodyA)
-    velocity += dot(&m_data.m_jacobians[c.m_jacAindex], &dof_velocity_[c.m_deltaVelAindex],
-                    degreesOfFreedom(c.m_multiBodyA));
-  if (c.m_multiBodyB)
-    velocity += dot(&m_data.m_jacobians[c.m_jacBindex], &dof_velocity_[c.m_deltaVelBindex],
-                    degreesOfFreedom(c.m_multiBodyB));
-  return velocity;
+  if (row.two_lanes)
+  {
+    const Lanes* ja = reinterpret_cast<const Lanes*>(row.jacobian[0]);
+    const Lanes* va = reinterpret_cast<const Lanes*>(row.dof[0]);
+    const Lanes* jb = reinterpret_cast<const Lanes*>(row.jacobian[1]);
+    const Lanes* vb = reinterpret_cast<const Lanes*>(row.dof[1]);
+    const Lanes sum = (ja[0] * va[0] + ja[1] * va[1]) + (jb[0] * vb[0] + jb[1] * vb[1]);
+    return (sum[0] + sum[1]) + (sum[2] + sum[3]);
+  }
+  Lanes sum = {};
+  for (int side = 0; side < 2; ++side)
+  {
+    const Lanes* jacobian = reinterpret_cast<const Lanes*>(row.jacobian[side]);
+    const Lanes* velocity = reinterpret_cast<const Lanes*>(row.dof[side]);
+    if (row.lanes[side] == 2)  // a free body's 6 degrees of freedom
+      sum += jacobian[0] * velocity[0] + jacobian[1] * velocity[1];
+    else
+      for (int q = 0; q < row.lanes[side]; ++q)
+        sum += jacobian[q] * velocity[q];
+  }
+  return (sum[0] + sum[1]) + (sum[2] + sum[3]);
 }
 
-void DenseRowSolver::addToDofVelocities(const Row& row, btScalar impulse)
+inline void DenseRowSolver::addToDofVelocities(const Row& row, btScalar impulse)
 {
-  const btMultiBodySolverConstraint& c = *row.constraint;
-  if (c.m_multiBodyA)
+  if (row.two_lanes)
   {
-    const btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacAindex];
-    btScalar* velocity = &dof_velocity_[c.m_deltaVelAindex];
-    for (int k = 0, n = degreesOfFreedom(c.m_multiBodyA); k < n; ++k)
-      velocity[k] += unit[k] * impulse;
+    const Lanes* ua = reinterpret_cast<const Lanes*>(row.jacobian[0]) + 2;
+    Lanes* va = reinterpret_cast<Lanes*>(row.dof[0]);
+    const Lanes* ub = reinterpret_cast<const Lanes*>(row.jacobian[1]) + 2;
+    Lanes* vb = reinterpret_cast<Lanes*>(row.dof[1]);
+    va[0] += ua[0] * impulse;
+    va[1] += ua[1] * impulse;
+    vb[0] += ub[0] * impulse;
+    vb[1] += ub[1] * impulse;
+    return;
   }
-  if (c.m_multiBodyB)
+  for (int side = 0; side < 2; ++side)
   {
-    const btScalar* unit = &m_data.m_deltaVelocitiesUnitImpulse[c.m_jacBindex];
-    btScalar* velocity = &dof_velocity_[c.m_deltaVelBindex];
-    for (int k = 0, n = degreesOfFreedom(c.m_multiBodyB); k < n; ++k)
-      velocity[k] += unit[k] * impulse;
+    const int lanes = row.lanes[side];
+    const Lanes* unit = reinterpret_cast<const Lanes*>(row.jacobian[side]) + lanes;
+    Lanes* velocity = reinterpret_cast<Lanes*>(row.dof[side]);
+    if (lanes == 2)
+    {
+      velocity[0] += unit[0] * impulse;
+      velocity[1] += unit[1] * impulse;
+    }
+    else
+      for (int q = 0; q < lanes; ++q)
+        velocity[q] += unit[q] * impulse;
   }
 }
 
@@ -837,7 +1291,7 @@ void DenseRowSolver::applyVelocityChanges()
   for (const Row& row : rows_)
   {
     const btScalar impulse = row.impulse - row.start_impulse;
-    if (impulse == 0)
+    if (impulse == 0 || row.sparse)  // a sparse group's bodies have theirs in dof_velocity_
       continue;
     const btMultiBodySolverConstraint& c = *row.constraint;
     if (c.m_multiBodyA)
@@ -855,10 +1309,14 @@ void DenseRowSolver::applyVelocityChanges()
   }
   // Bullet (DIRECTLY_UPDATE_VELOCITY_DURING_SOLVER_ITERATIONS) moves both its buffer and the
   // multibody's pending velocity change; its write-back reads neither again.
-  for (btMultiBody* body : bodies_)
+  for (size_t b = 0; b < bodies_.size(); ++b)
   {
+    btMultiBody* body = bodies_[b];
     const int first = body->getCompanionId();
     const int n = degreesOfFreedom(body);
+    if (any_sparse_ && body_sparse_[b])
+      for (int k = 0; k < n; ++k)
+        velocity_change_[first + k] = dof_velocity_[packed_offset_[b] + k] - m_data.m_deltaVelocities[first + k];
     for (int k = 0; k < n; ++k)
       m_data.m_deltaVelocities[first + k] += velocity_change_[first + k];
     body->applyDeltaVeeMultiDof2(&velocity_change_[first], 1);

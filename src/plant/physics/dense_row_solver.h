@@ -16,11 +16,12 @@
 // step) are Bullet's. Where the dense form does not apply (rigid bodies that move, cone
 // friction), the iterations are Bullet's own.
 //
-// Contacts between a multibody and the static world and JointDrive rows are built here, from
-// the multibody's state of the step (MultibodyState, which DynamicsWorld builds and hands out
-// through MultibodyStates): their J, and their responses M^-1 J^T and block of A for all of the
-// multibody's rows at once. Other rows are Bullet's, with its articulated-body pass per row; A's
-// entries between them and the others are dot products of J and M^-1 J^T.
+// Contacts between a multibody and the static world, contacts between two multibodies and
+// JointDrive rows are built here, from the multibodies' states of the step (MultibodyState, which
+// DynamicsWorld builds and hands out through MultibodyStates): their J, and their responses
+// M^-1 J^T for all of a multibody's rows at once, with its block of A where all of its rows have
+// their other side static. Other rows are Bullet's, with its articulated-body pass per row and
+// side; A's entries between them and the others are dot products of J and M^-1 J^T.
 //
 // One addition: with SOLVER_USE_WARMSTARTING (Bullet's default) every row starts from its impulse
 // of the previous step times m_warmstartingFactor, friction included. Bullet's multibody solver
@@ -106,16 +107,20 @@ private:
   static constexpr int kLanes = 4;
   // The largest group solved on a dense block: where a multibody with joints has rows in it, and
   // where all its multibodies are free bodies (0 links). A dense visit costs stride / kLanes vector
-  // multiply-adds, a sparse one 2 (n_A + n_B) scalar ones (24 for two free boxes, 36 for the car's
-  // 18 dof against the ground) plus its indexing; the block costs stride^2 / 2 entries to build, so
-  // the block pays longer where rows share many degrees of freedom. Measured on
-  // bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second): 5.27M, 5.35M, 6.02M
-  // and 6.45M instructions a step with caps of 16, 32, 64 and 128 rows, 8.02M with none. The car
-  // on a mesh floor has more than 32 rows (its wheels meet several triangles); at 64 its solve
-  // stays dense as before (test_track_world.py's rolling over a mesh's inner edges, a 1 mm bound,
-  // fails with its arithmetic regrouped).
+  // multiply-adds, a sparse one (n_A + n_B) / kLanes each way (4 for two free boxes, each padded to
+  // two Lanes, a box against the ground alike) plus its indexing; the block costs stride^2 / 2
+  // entries to build, so the block pays longer where rows share many degrees of freedom. Measured
+  // on bench/box_pile_vs_mujoco.py's falling pile (callgrind, its first second), when the sparse
+  // visit was Bullet's scalar loops: 5.27M, 5.35M, 6.02M and 6.45M instructions a step with caps of
+  // 16, 32, 64 and 128 rows, 8.02M with none; with the two-Lanes visit, 3.64M, 3.56M and 3.53M with
+  // free-body caps of 32, 12 and 0. At 12 a box alone on the ground (4 points, 12 rows) keeps its
+  // block: with none test_sdf_physics.py's block on a 35 deg incline slides 4.9 % short of
+  // g (sin - mu cos) instead of 5.4 %, inside the test's 5 % (its strict xfail). The car on a mesh
+  // floor has more than 32 rows (its wheels meet several triangles); at 64 its solve stays dense as
+  // before (test_track_world.py's rolling over a mesh's inner edges, a 1 mm bound, fails with its
+  // arithmetic regrouped).
   static constexpr int kMaxDenseRows = 64;
-  static constexpr int kMaxDenseFreeRows = 32;
+  static constexpr int kMaxDenseFreeRows = 12;
   typedef btScalar Lanes __attribute__((vector_size(kLanes * sizeof(btScalar)), aligned(sizeof(btScalar)), may_alias));
 
   // A row during the iterations: Bullet's numbers, copied from its constraint and back.
@@ -130,6 +135,15 @@ private:
     int stride;    // the group's padded size
     int normal;    // friction rows: the rows_ index of their contact's normal row; others -1
     bool sparse;   // its group has no dense block: J.dv from dof_velocity_
+    // The sparse form's sides (A, B): the multibody's velocities in dof_velocity_, the row's J
+    // then M^-1 J^T in sparse_data_, each `lanes` Lanes long (the side's degrees of freedom,
+    // padded); lanes 0 where the side has no multibody.
+    btScalar* dof[2];
+    const btScalar* jacobian[2];
+    int lanes[2];
+    // Both sides two Lanes (free bodies, 6 degrees of freedom; a side without a multibody points
+    // at zeros, sparse_zeros_): J.dv and its update take no branches.
+    bool two_lanes;
     btScalar rhs, cfm, inverse_mass, lower, upper, friction;
     btScalar mass;  // 1 / inverse_mass, or 0 for a row Bullet disabled: the residual is delta * mass
     btScalar impulse, start_impulse;
@@ -143,16 +157,22 @@ private:
     bool dense = true;
     bool articulated = false;  // a multibody with joints has rows in it
   };
-  // A row whose response waits for the other rows of its multibody (finishDeferredRows).
+  // One side of a row whose response waits for the other rows of its multibody
+  // (finishDeferredRows). A row between two multibodies has one for each: the first holds what
+  // the row needs and names the second (partner); the second has partner -2.
   struct DeferredRow
   {
     btMultiBodyConstraintArray* rows;
     int index;     // in rows
     int body;      // in body_rows_
     int position;  // in the body's rows
+    int jacobian;  // the side's J in m_data.m_jacobians (its response goes to the same offset)
+    int partner;   // the row's other side in deferred_, -1 for none, -2 for the second side itself
     btScalar velocity_error;  // the row's rhs, cfm and relaxation before Bullet's scaling by
     btScalar cfm;             // its inverse effective mass
     btScalar sor;
+    btScalar diagonal;  // J M^-1 J^T of this side (finishDeferredRows)
+    btScalar other;     // J M^-1 J^T of the row's other side where that side is not deferred, else 0
   };
   // A multibody with rows in this solve: its state, and its deferred rows' responses and Delassus
   // block (gram).
@@ -164,11 +184,29 @@ private:
     std::vector<int> rows;  // deferred_ indices
     std::vector<btScalar> columns, gram;  // responses (dof by dof) and Delassus block, `stride` rows wide
     int stride = 0;
+    // Some of its rows have another multibody on their other side: no gram (a pile's box has
+    // dozens of rows, and its group is iterated sparse), only each row's diagonal.
+    bool pair_rows = false;
+    bool has_gram = false;
+    // A free body (no links, a floating base): M is diag(I, m) about its centre of mass, so a
+    // row's response is I^-1 J_angular and J_linear / m, computed as the row is set up.
+    bool free = false;
+    btScalar inverse_inertia[9];  // world axes, row-major
+    btScalar inverse_mass = 0;
   };
   // The multibody's slot in body_rows_ for this solve, or -1 where Bullet's passes must answer.
   int bodySlot(btMultiBody* body);
   void deferResponse(btMultiBodyConstraintArray& rows, int index, int slot, btScalar velocity_error, btScalar cfm,
                      btScalar sor);
+  // Both sides of a row between two multibodies (slot_b's side after slot_a's).
+  void deferPairResponse(btMultiBodyConstraintArray& rows, int index, int slot_a, int slot_b, btScalar velocity_error,
+                         btScalar cfm, btScalar sor);
+  // One side of a row, its J at `jacobian`; `other` is J M^-1 J^T of the row's other side, found
+  // already (a free body's).
+  void deferSide(btMultiBodyConstraintArray& rows, int index, int slot, int jacobian, btScalar velocity_error,
+                 btScalar cfm, btScalar sor, btScalar other);
+  // A free body's M^-1 J^T of the row J (6 entries each); returns J M^-1 J^T.
+  static btScalar freeResponse(const BodyRows& slot, const btScalar* jacobian, btScalar* response);
   void finishDeferredRows();
   // Bullet's rows of `body` (none if null) are about to be built.
   void needArticulatedPass(btMultiBody* body);
@@ -176,6 +214,30 @@ private:
   void limitCorrectingVelocity(btPersistentManifold& manifold, const btContactSolverInfo& info,
                                const PointSurface* surfaces) const;
   bool contactRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
+  // Plain pyramid friction between two different multibodies whose states answer.
+  bool pairRowsApply(const btPersistentManifold& manifold, const btContactSolverInfo& info);
+  // One side of a contact point between two free bodies: its body and lever arm.
+  struct FreeSide
+  {
+    const BodyRows* slot;
+    btMultiBody* body;
+    btVector3 arm;  // from the body's centre of mass to the point
+  };
+  // setupPairRow where both multibodies are free bodies: J, M^-1 J^T and the row's numbers in
+  // closed form, from the point's lever arms.
+  void setupFreePairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
+                        const btContactSolverInfo& info, bool friction, const FreeSide (&sides)[2]);
+  // convertMultiBodyContact's rows for two multibodies, built by setupPairRow; with `surfaces`, along
+  // the points' own friction directions, the second direction's rows with the points' mu2.
+  void convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info,
+                          const PointSurface* surfaces);
+  // setupMultiBodyContactConstraint for two multibodies: Bullet's rows (its restitution among them),
+  // with J and M^-1 J^T from their states.
+  void setupPairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
+                    const btContactSolverInfo& info, bool friction, int slot_a, int slot_b);
+  // Room in m_data's arrays for the rows of the manifolds' points: Bullet grows them by each row's
+  // size exactly, copying them whole, each time a step has more rows than any before.
+  void reserveRowData(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info);
   void convertStaticContact(btPersistentManifold& manifold, const btContactSolverInfo& info,
                             const PointSurface* surfaces);
   // Bullet's convertMultiBodyContact with the points' own friction directions and coefficients.
@@ -195,8 +257,8 @@ private:
   void startAt(Row& row, btScalar impulse);
   void addToVelocities(const Row& row, btScalar impulse);
   // The sparse form's J.dv and dv += M^-1 J^T impulse, on dof_velocity_.
-  btScalar sparseVelocity(const Row& row) const;
-  void addToDofVelocities(const Row& row, btScalar impulse);
+  static btScalar sparseVelocity(const Row& row);
+  static void addToDofVelocities(const Row& row, btScalar impulse);
   // Bullet's resolveSingleConstraintRowGeneric on the dense block (or, with kSparseRows, on
   // dof_velocity_ for a row whose group has none); returns Bullet's residual.
   template <bool kSparseRows>
@@ -226,7 +288,14 @@ private:
   std::vector<btScalar> delassus_;           // each group's block, row-major (symmetric)
   std::vector<btScalar> row_velocity_;       // J.dv of each row, kept current
   std::vector<btScalar> velocity_change_;    // per degree of freedom, laid out as m_data.m_deltaVelocities
-  std::vector<btScalar> dof_velocity_;       // the sparse rows' dv, laid out as m_data.m_deltaVelocities
+  // The sparse rows' dv: each multibody of bodies_ at packed_offset_, its degrees of freedom padded
+  // to whole Lanes.
+  std::vector<btScalar> dof_velocity_;
+  std::vector<int> packed_offset_;           // by bodies_ index
+  std::vector<char> body_sparse_;            // by bodies_ index: its group is sparse (its dv is in dof_velocity_)
+  std::vector<btScalar> sparse_data_;        // the sparse rows' J and M^-1 J^T per side, padded as dof_velocity_
+  // A missing side of a two_lanes row: its velocities (added zeros) and its J and M^-1 J^T (zeros).
+  btScalar sparse_zero_dof_[2 * kLanes], sparse_zero_data_[4 * kLanes];
   bool any_sparse_ = false;
 };
 

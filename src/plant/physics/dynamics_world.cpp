@@ -1,8 +1,11 @@
 #include "physics/dynamics_world.h"
 
 #include <algorithm>
+#include <typeinfo>
 
+#include <BulletCollision/CollisionDispatch/btBoxBoxCollisionAlgorithm.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btCollisionShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
@@ -96,6 +99,71 @@ DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* br
   : btMultiBodyDynamicsWorld(dispatcher, broadphase, solver, configuration)
 {
   solver->useStates(this);
+  if (auto* collision_dispatcher = dynamic_cast<btCollisionDispatcher*>(dispatcher))
+    collision_dispatcher->setNearCallback(&DynamicsWorld::nearCallback);
+}
+
+namespace
+{
+// The base of a multibody without links: a free body.
+bool freeBody(const btCollisionObject& object)
+{
+  const btMultiBodyLinkCollider* collider = btMultiBodyLinkCollider::upcast(&object);
+  return collider && collider->m_link < 0 && collider->m_multiBody->getNumLinks() == 0;
+}
+}  // namespace
+
+void DynamicsWorld::nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info)
+{
+  const btBroadphaseProxy* proxy0 = pair.m_pProxy0;
+  const btBroadphaseProxy* proxy1 = pair.m_pProxy1;
+  const auto* object0 = static_cast<const btCollisionObject*>(proxy0->m_clientObject);
+  const auto* object1 = static_cast<const btCollisionObject*>(proxy1->m_clientObject);
+  if (info.m_dispatchFunc != btDispatcherInfo::DISPATCH_DISCRETE ||
+      object0->getCollisionShape()->getShapeType() != BOX_SHAPE_PROXYTYPE ||
+      object1->getCollisionShape()->getShapeType() != BOX_SHAPE_PROXYTYPE)
+  {
+    btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
+    return;
+  }
+  btScalar gap = 0;
+  for (int a = 0; a < 3; ++a)
+    gap = std::max(gap, std::max(proxy1->m_aabbMin[a] - proxy0->m_aabbMax[a], proxy0->m_aabbMin[a] - proxy1->m_aabbMax[a]));
+  if (!pair.m_algorithm && gap > btScalar(1e-3) && freeBody(*object0) && freeBody(*object1))
+  {
+    // Two free boxes apart, not yet given an algorithm: none yet, and so no manifold (a pile's
+    // boxes had two empty ones each for every one with points, all sorted into islands and
+    // passed over every step). A manifold made now would be given the pair's breaking threshold
+    // (getNewManifold): the smaller shape's size times gContactBreakingThreshold, or that alone.
+    // The gap clears that when it clears gContactBreakingThreshold times the larger of 1 and the
+    // smaller size (a box's half diagonal with its margin), with 1 % to spare.
+    auto size2 = [](const btCollisionObject& object) {
+      const auto* box = static_cast<const btBoxShape*>(object.getCollisionShape());
+      const btScalar margin = box->getMarginNV();
+      return (box->getImplicitShapeDimensions() + btVector3(margin, margin, margin)).length2();
+    };
+    const btScalar clears = gap / (btScalar(1.01) * gContactBreakingThreshold);
+    if (clears > 1 && std::min(size2(*object0), size2(*object1)) < clears * clears)
+      return;
+  }
+  if (pair.m_algorithm && typeid(*pair.m_algorithm) == typeid(btBoxBoxCollisionAlgorithm))
+  {
+    // The algorithm's manifold (it owns one, or has none), listed into a buffer on the stack.
+    btPersistentManifold* listed[4];
+    btManifoldArray manifolds;
+    manifolds.initializeFromBuffer(listed, 0, 4);
+    pair.m_algorithm->getAllContactManifolds(manifolds);
+    btPersistentManifold* manifold = manifolds.size() ? manifolds[0] : nullptr;
+    // Without a manifold the algorithm does nothing; with one, what it does for boxes this far apart.
+    if (gap > btScalar(1e-3) && (!manifold || gap > manifold->getContactBreakingThreshold()))
+    {
+      if (manifold && manifold->getNumContacts() > 0 && dispatcher.needsCollision(object0, object1))
+        manifold->refreshContactPoints(manifold->getBody0()->getWorldTransform(),
+                                       manifold->getBody1()->getWorldTransform());
+      return;
+    }
+  }
+  btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
 }
 
 void DynamicsWorld::removeCollisionObject(btCollisionObject* object)
@@ -232,22 +300,31 @@ void DynamicsWorld::updateAabbs()
 
 // The threshold btCollisionDispatcher::getNewManifold gives a pair: with its default
 // CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD, gContactBreakingThreshold times the smaller shape's
-// size (getAngularMotionDisc): about 0.05 mm for the car's wheels, not 1 mm.
-btScalar DynamicsWorld::pairThreshold(const btPersistentManifold& manifold) const
+// size (getAngularMotionDisc, a bounding sphere through the shape's virtual box): about 0.05 mm for
+// the car's wheels, not 1 mm. Each object's is found once a step (breaking_), not once for each of
+// its manifolds (a box in a pile has a dozen).
+btScalar DynamicsWorld::breakingThreshold(const btCollisionObject& object)
 {
-  const auto* dispatcher = static_cast<const btCollisionDispatcher*>(m_dispatcher1);
-  if (!(dispatcher->getDispatcherFlags() & btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD))
-    return gContactBreakingThreshold;
-  return std::min(manifold.getBody0()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold),
-                  manifold.getBody1()->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold));
+  const int index = object.getWorldArrayIndex();
+  if (index < 0 || size_t(index) >= breaking_.size())
+    return object.getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold);
+  btScalar& threshold = breaking_[size_t(index)];
+  if (threshold < 0)
+    threshold = object.getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold);
+  return threshold;
 }
 
 void DynamicsWorld::setManifoldThresholds()
 {
+  const auto* dispatcher = static_cast<const btCollisionDispatcher*>(m_dispatcher1);
+  const bool relative = dispatcher->getDispatcherFlags() & btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD;
+  breaking_.assign(size_t(m_collisionObjects.size()), btScalar(-1));
   for (int i = 0; i < m_dispatcher1->getNumManifolds(); ++i)
   {
     btPersistentManifold* manifold = m_dispatcher1->getManifoldByIndexInternal(i);
-    btScalar threshold = pairThreshold(*manifold);
+    btScalar threshold = relative ? std::min(breakingThreshold(*manifold->getBody0()),
+                                             breakingThreshold(*manifold->getBody1()))
+                                  : gContactBreakingThreshold;
     if (manifold->getNumContacts() == 0)
       threshold += reachOf(*manifold->getBody0()) + reachOf(*manifold->getBody1());
     manifold->setContactBreakingThreshold(threshold);

@@ -194,10 +194,42 @@ void compositeRigidBodyInertia(const btMultiBody& body, MultibodyState& state)
 }
 
 // Cholesky, M = L L^T, over the velocities that move.
+namespace
+{
+// A body without links on a floating base whose M is diag(I, m) (its base frame at its centre of
+// mass): I^-1 and 1 / m, false if M is not that or not positive definite.
+bool invertFreeBody(MultibodyState& state)
+{
+  if (state.bodies.size() != 1 || state.first != 0 || state.n != 6)
+    return false;
+  const double* m = state.inertia.data();
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b)
+      if (m[(3 + a) * 6 + b] != 0 || m[(3 + a) * 6 + 3 + b] != (a == b ? m[21] : 0.0))
+        return false;
+  const double I[9] = {m[0], m[1], m[2], m[6], m[7], m[8], m[12], m[13], m[14]};
+  const double c00 = I[4] * I[8] - I[5] * I[7], c01 = I[5] * I[6] - I[3] * I[8], c02 = I[3] * I[7] - I[4] * I[6];
+  const double determinant = I[0] * c00 + I[1] * c01 + I[2] * c02;
+  // Positive definite: the leading minors positive (Sylvester), as the Cholesky factor needs.
+  if (!(I[0] > 0 && I[0] * I[4] - I[1] * I[3] > 0 && determinant > 0 && m[21] > 0))
+    return false;
+  const double inverse[9] = {c00, I[2] * I[7] - I[1] * I[8], I[1] * I[5] - I[2] * I[4],
+                             c01, I[0] * I[8] - I[2] * I[6], I[2] * I[3] - I[0] * I[5],
+                             c02, I[1] * I[6] - I[0] * I[7], I[0] * I[4] - I[1] * I[3]};
+  for (int k = 0; k < 9; ++k)
+    state.inverse_inertia[k] = inverse[k] / determinant;
+  state.inverse_mass = 1 / m[21];
+  return true;
+}
+}  // namespace
+
 bool factorInertia(MultibodyState& state)
 {
   const int n = state.n, first = state.first;
   const double* m = state.inertia.data();
+  state.free = invertFreeBody(state);
+  if (state.free)
+    return true;
   state.lower.assign(size_t(n) * n, 0.0);
   state.inverse_diagonal.assign(n, 0.0);
   double* lower = state.lower.data();
@@ -386,6 +418,17 @@ void biasForces(const btMultiBody& body, MultibodyState& state)
 
 void solveInertia(const MultibodyState& state, double* x)
 {
+  if (state.free)
+  {
+    const double* I = state.inverse_inertia;
+    const double w[3] = {x[0], x[1], x[2]};
+    for (int a = 0; a < 3; ++a)
+    {
+      x[a] = I[3 * a] * w[0] + I[3 * a + 1] * w[1] + I[3 * a + 2] * w[2];
+      x[3 + a] *= state.inverse_mass;
+    }
+    return;
+  }
   const int n = state.n, first = state.first;
   const double* L = state.lower.data();
   for (int i = first; i < n; ++i)
@@ -473,6 +516,30 @@ typedef btScalar Sides __attribute__((vector_size(kInertiaSides * sizeof(btScala
 // 1.4e-7 of their largest entry (the car driving, steering and tumbling).
 void solveInertiaColumns(const MultibodyState& state, btScalar* x, int count, btScalar* gram)
 {
+  if (state.free)
+  {
+    const int k = count;
+    std::vector<btScalar> original(x, x + size_t(6) * k);
+    for (int r = 0; r < k; ++r)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        x[size_t(a) * k + r] = btScalar(state.inverse_inertia[3 * a] * original[r] +
+                                        state.inverse_inertia[3 * a + 1] * original[size_t(k) + r] +
+                                        state.inverse_inertia[3 * a + 2] * original[size_t(2) * k + r]);
+        x[size_t(3 + a) * k + r] = btScalar(original[size_t(3 + a) * k + r] * state.inverse_mass);
+      }
+    }
+    for (int r = 0; gram && r < k; ++r)
+      for (int t = 0; t < k; ++t)
+      {
+        btScalar sum = 0;
+        for (int i = 0; i < 6; ++i)
+          sum += original[size_t(i) * k + r] * x[size_t(i) * k + t];
+        gram[size_t(r) * k + t] = sum;
+      }
+    return;
+  }
   const int k = count, n = state.n, first = state.first;
   const btScalar* L = state.lower_scalar.data();
   const btScalar* inverse_diagonal = state.inverse_diagonal_scalar.data();
@@ -490,7 +557,7 @@ void solveInertiaColumns(const MultibodyState& state, btScalar* x, int count, bt
     }
   }
   // x^T M^-1 x = y^T y, block by block of its upper triangle.
-  for (int r = 0; r < k; r += kInertiaSides)
+  for (int r = 0; gram && r < k; r += kInertiaSides)
     for (int s = r; s < k; s += kInertiaSides)
     {
       Sides acc[kInertiaSides] = {};

@@ -58,6 +58,11 @@ struct MultibodyState
   std::vector<DofMotion> dofs;         // per generalized velocity, the joints' entries (linkKinematics)
   std::vector<Composite> composites;   // per body (compositeRigidBodyInertia)
   std::vector<double> inertia;         // M, n x n row-major, lower triangle (compositeRigidBodyInertia)
+  // A free body (no links, a floating base, M = diag(I, m) about its centre of mass): M^-1 in closed
+  // form, and no factor (factorInertia).
+  bool free = false;
+  double inverse_inertia[9];  // I^-1, world axes, row-major
+  double inverse_mass = 0;
   std::vector<double> lower;           // its Cholesky factor L, M = L L^T (factorInertia)
   std::vector<double> inverse_diagonal;
   std::vector<btScalar> lower_scalar, inverse_diagonal_scalar;  // the factor in float, for solveInertiaColumns
@@ -73,7 +78,8 @@ void linkKinematics(const btMultiBody& body, MultibodyState& state);
 // The composite rigid bodies, and from them M (after linkKinematics).
 void compositeRigidBodyInertia(const btMultiBody& body, MultibodyState& state);
 
-// M = L L^T. False if M is not positive definite (then Bullet's own passes must answer).
+// M = L L^T, or for a free body I^-1 and 1 / m. False if M is not positive definite (then Bullet's
+// own passes must answer).
 bool factorInertia(MultibodyState& state);
 
 // linkKinematics, compositeRigidBodyInertia and factorInertia: the state of one step.
@@ -94,7 +100,7 @@ void forwardDynamics(const btMultiBody& body, MultibodyState& state, btScalar* q
 
 // For `count` right-hand sides at once (a multiple of kInertiaSides: pad with zeros), stored degree
 // of freedom by degree of freedom (x[i * count + r] is entry i of side r): x <- M^-1 x, and
-// gram (count x count, row-major) <- x^T M^-1 x of the sides as given. In float.
+// gram (count x count, row-major) <- x^T M^-1 x of the sides as given (unless gram is null). In float.
 constexpr int kInertiaSides = 4;
 void solveInertiaColumns(const MultibodyState& state, btScalar* x, int count, btScalar* gram);
 
