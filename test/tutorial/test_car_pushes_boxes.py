@@ -58,10 +58,14 @@ def test_the_car_pushes_a_wall_of_free_boxes_and_drives_as_alone_until_it_touche
 
     # The same drive as in an empty world until the car's nose reaches the wall (its front ~0.3 m
     # ahead of its base: compare while the base is 0.5 m short of the wall), but for the rounding
-    # of a solver that visits the boxes' rows beside the car's (0.25 mm over the metre).
+    # of a solver that visits the boxes' rows beside the car's. The car lands from 5 cm with its
+    # rear wheels already spinning, and a wheel's traction acts only while the wheel touches (a
+    # friction row lets go with its contact, dense_row_solver.h): which solver pass a bouncing wheel
+    # leaves the ground in moves with that rounding, 1.7 mm over the metre (0.09 mm while friction
+    # outlived its contact).
     before_wall = alone[:, 0] < WALL_X - 0.5
     assert before_wall.sum() > 30
-    assert np.abs(track[before_wall] - alone[before_wall]).max() < 1e-3
+    assert np.abs(track[before_wall] - alone[before_wall]).max() < 2.5e-3
 
     # It reached the wall and went on through it, slower than alone: the boxes weigh on it.
     assert track[-1, 0] > WALL_X + 0.2

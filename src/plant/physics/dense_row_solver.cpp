@@ -1364,6 +1364,15 @@ void DenseRowSolver::iterate(const btContactSolverInfo& info, btCollisionObject*
           const btScalar r = visit<kSparseRows>(row);
           residual = std::max(residual, r * r);
         }
+        else if (row.impulse != 0)
+        {
+          // The contact let go in this pass: so does its friction (ODE's bounds, mu times the
+          // normal force, are zero then). Bullet skips the row and keeps the impulse an earlier
+          // pass or the warm start gave it: friction with no normal force under it.
+          row.lower = row.upper = 0;
+          const btScalar r = visit<kSparseRows>(row);
+          residual = std::max(residual, r * r);
+        }
       }
     }
     m_leastSquaresResidual = residual;
