@@ -516,6 +516,37 @@ bool DenseRowSolver::pairRowsApply(const btPersistentManifold& manifold, const b
   return bodySlot(a->m_multiBody) >= 0 && bodySlot(b->m_multiBody) >= 0;
 }
 
+btScalar DenseRowSolver::finishPairRow(btMultiBodySolverConstraint& row, const btManifoldPoint& point,
+                                      const btContactSolverInfo& info, bool friction, const btVector3& direction,
+                                      btScalar relative_velocity, btScalar erp)
+{
+  row.m_friction = point.m_combinedFriction;
+
+  btScalar distance = 0, restitution = 0;
+  if (!friction)
+  {
+    distance = point.getDistance() + info.m_linearSlop;
+    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
+                                            info.m_restitutionVelocityThreshold),
+                           btScalar(0));
+  }
+  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
+  {
+    distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
+  }
+  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
+  if (!friction && distance > 0)
+    velocity_error -= distance / info.m_timeStep;
+  else
+    positional_error = -distance * erp / info.m_timeStep;
+  row.m_rhsPenetration = 0;
+  row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
+  row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
+  row.m_appliedImpulse = 0;
+  row.m_appliedPushImpulse = 0;
+  return positional_error + velocity_error;
+}
+
 void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
                                   btManifoldPoint& point, const btContactSolverInfo& info, bool friction, int slot_a,
                                   int slot_b)
@@ -563,30 +594,7 @@ void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, c
   row.m_contactNormal2 = -direction;
   row.m_angularComponentA.setZero();
   row.m_angularComponentB.setZero();
-  row.m_friction = point.m_combinedFriction;
-
-  btScalar distance = 0, restitution = 0;
-  if (!friction)
-  {
-    distance = point.getDistance() + info.m_linearSlop;
-    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
-                                            info.m_restitutionVelocityThreshold),
-                           btScalar(0));
-  }
-  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
-  {
-    distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
-  }
-  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
-  if (!friction && distance > 0)
-    velocity_error -= distance / info.m_timeStep;
-  else
-    positional_error = -distance * erp / info.m_timeStep;
-  row.m_rhsPenetration = 0;
-  row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
-  row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
-  row.m_appliedImpulse = 0;
-  row.m_appliedPushImpulse = 0;
+  const btScalar velocity_error_all = finishPairRow(row, point, info, friction, direction, relative_velocity, erp);
   // A free body's side is answered now; the others wait for their multibody's other rows.
   const int slots[2] = {slot_a, slot_b};
   const int jacobians[2] = {row.m_jacAindex, row.m_jacBindex};
@@ -595,7 +603,6 @@ void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, c
     if (body_rows_[slots[side]].free)
       diagonal[side] = freeResponse(body_rows_[slots[side]], &m_data.m_jacobians[jacobians[side]],
                                     &m_data.m_deltaVelocitiesUnitImpulse[jacobians[side]]);
-  const btScalar velocity_error_all = positional_error + velocity_error;
   if (body_rows_[slot_a].free && body_rows_[slot_b].free)
     scaleRow(row, diagonal[0] + diagonal[1] + cfm, velocity_error_all, cfm, info.m_sor);
   else if (body_rows_[slot_a].free || body_rows_[slot_b].free)
@@ -662,31 +669,8 @@ void DenseRowSolver::setupFreePairRow(btMultiBodyConstraintArray& rows, int inde
   row.m_contactNormal2 = -direction;
   row.m_angularComponentA.setZero();
   row.m_angularComponentB.setZero();
-  row.m_friction = point.m_combinedFriction;
-
-  btScalar distance = 0, restitution = 0;
-  if (!friction)
-  {
-    distance = point.getDistance() + info.m_linearSlop;
-    restitution = std::max(restitutionCurve(relative_velocity, point.m_combinedRestitution,
-                                            info.m_restitutionVelocityThreshold),
-                           btScalar(0));
-  }
-  else if (point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR)
-  {
-    distance = (point.getPositionWorldOnA() - point.getPositionWorldOnB()).dot(direction);
-  }
-  btScalar positional_error = 0, velocity_error = restitution - relative_velocity;
-  if (!friction && distance > 0)
-    velocity_error -= distance / info.m_timeStep;
-  else
-    positional_error = -distance * erp / info.m_timeStep;
-  row.m_rhsPenetration = 0;
-  row.m_lowerLimit = friction ? -row.m_friction : btScalar(0);
-  row.m_upperLimit = friction ? row.m_friction : btScalar(1e10);
-  row.m_appliedImpulse = 0;
-  row.m_appliedPushImpulse = 0;
-  scaleRow(row, denominator, positional_error + velocity_error, cfm, info.m_sor);
+  scaleRow(row, denominator, finishPairRow(row, point, info, friction, direction, relative_velocity, erp), cfm,
+           info.m_sor);
 }
 
 void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info,

@@ -227,6 +227,13 @@ private:
     btMultiBody* body;
     btVector3 arm;  // from the body's centre of mass to the point
   };
+  // What a row between two multibodies gets whichever way its J and M^-1 J^T were found, as Bullet's
+  // setupMultiBodyContactConstraint gives it: the coefficient and bounds, and the velocity error to
+  // remove (Bullet's restitutionCurve above its threshold, a depth beyond the slop through erp, a gap
+  // closed within the step), from the bodies' velocity along the row. Returns that error.
+  btScalar finishPairRow(btMultiBodySolverConstraint& row, const btManifoldPoint& point,
+                         const btContactSolverInfo& info, bool friction, const btVector3& direction,
+                         btScalar relative_velocity, btScalar erp);
   // setupPairRow where both multibodies are free bodies: J, M^-1 J^T and the row's numbers in
   // closed form, from the point's lever arms.
   void setupFreePairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
