@@ -11,7 +11,7 @@ from plant_helpers import TRACK_WORLD, find_fixture_packages, hold_steering
 from suite_paths import REPOSITORY
 from tianracer_description import bullet_plant
 
-FLOOR_TOP = 0.5   # the include's <pose> lifts the track by 0.5 m (the world has no ground plane, as in Gazebo)
+FLOOR_TOP = 0.5   # the include's <pose> lifts the track by 0.5 m above the world's ground plane
 END_WALL = 11.0   # the end wall's near face, m along x
 COMMAND = 31.25   # rad/s on the rear wheels: 1 m/s
 
@@ -121,7 +121,10 @@ def test_wheels_roll_over_a_mesh_floors_inner_edges_as_over_a_plane(tmp_path, ur
         normals_z += [c['normal'][2] for c in world.contacts()]
     assert np.hypot(*(np.array(car.base_pose()[:2]) - (-1.2, -1.1))) > 2.0, 'drove over the grid'
     assert min(abs(z) for z in normals_z) > 0.999, 'every contact along the faces\' normal'
-    assert np.ptp(heights) < 1e-3, 'no bump at an edge'
+    # Until stop 45 the plant put a ground plane under every world without one, here at the mesh's
+    # own height, and the wheels rode it (0.00 mm); on the mesh alone the base moves 0.6 to 1.2 mm
+    # over the crossing, by path (the rounded margin at the triangles' edges).
+    assert np.ptp(heights) < 1.5e-3, 'no bump at an edge beyond the margin rounding it'
 
 
 def test_follow_the_gap_drives_the_mesh_race_track_with_every_floor_contact_along_the_faces_normal(tmp_path):
