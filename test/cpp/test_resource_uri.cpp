@@ -162,3 +162,21 @@ TEST_F(ResourceUri, WorldFileAsGivenThenResourcePathThenMediaPathExports)
   EXPECT_NE(reason.find("'worlds/none.world'"), std::string::npos) << reason;
   EXPECT_NE(reason.find(root + "/ws/src/group/pkg_dir"), std::string::npos) << reason;
 }
+
+// Worlds shipped as packages (AWS RoboMaker's) name their meshes file://models/NAME/meshes/...,
+// relative to the package that exports itself as gazebo_media_path: Gazebo's FindFile looks in
+// the working directory, then GAZEBO_RESOURCE_PATH (where gazebo_ros puts the exports).
+TEST_F(ResourceUri, RelativeFileUriNotBesideItsFileIsLookedForInTheResourcePath)
+{
+  const std::string model_dir = root + "/ws/src/group/pkg_dir/models/exported";
+  EXPECT_EQ(resolved("file://models/exported/meshes/e.stl", model_dir),
+            real("ws/src/group/pkg_dir/models/exported/meshes/e.stl"));
+  write("media/models/exported/meshes/e.stl", "solid m\nendsolid m\n");
+  setenv("GAZEBO_RESOURCE_PATH", (root + "/media").c_str(), 1);
+  EXPECT_EQ(resolved("file://models/exported/meshes/e.stl", model_dir), real("media/models/exported/meshes/e.stl"));
+  unsetenv("GAZEBO_RESOURCE_PATH");
+  const std::string reason = reasonFor("file://models/exported/meshes/none.stl", model_dir);
+  EXPECT_NE(reason.find(model_dir + "/models/exported/meshes/none.stl"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("GAZEBO_RESOURCE_PATH"), std::string::npos) << reason;
+  EXPECT_NE(reason.find(root + "/ws/src/group/pkg_dir"), std::string::npos) << reason;
+}

@@ -229,6 +229,24 @@ def test_static_comes_from_the_include_over_the_model(tmp_path, model_path):
     assert not [name for name in collisions(world) if name.startswith('loose_crate')]
 
 
+def test_a_model_that_only_wraps_static_models_is_scenery(tmp_path, model_path):
+    # AWS RoboMaker's worlds name and place each static model in a <model> of their own that says
+    # nothing of <static>: the nested model keeps its own, as in Gazebo, so the shelf stays put.
+    make_model(model_path, 'shelf', wall(), static='true')
+    make_model(model_path, 'crate', wall(size='0.2 0.2 0.2'), static='false')
+    world = load(write(tmp_path / 'w.world', world_sdf(f"""
+<model name="shelf_001">{include('model://shelf')}<pose>3 0 0 0 0 0</pose></model>
+<model name="stack"><model name="inner"><static>true</static><link name="link">{wall(pose='0 3 0 0 0 0')}</link></model>
+  {include('model://shelf', pose='0 -3 0 0 0 0')}</model>
+<model name="crate_001">{include('model://crate')}<pose>0 6 1 0 0 0</pose></model>""")))
+    found = collisions(world)
+    assert found['shelf_001::shelf::link::collision']['pose'][:3] == pytest.approx([3, 0, 0])
+    assert {'stack::inner::link::collision', 'stack::shelf::link::collision'} <= set(found)
+    assert world.robots == ['crate_001']  # a wrapped model that moves still moves
+    world.step(200)
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)
+
+
 def test_ground_plane_and_sun_are_built_in(tmp_path, monkeypatch):
     monkeypatch.setenv('GAZEBO_MODEL_PATH', str(tmp_path / 'empty'))
     monkeypatch.setenv('ROS_PACKAGE_PATH', str(tmp_path / 'empty'))

@@ -217,8 +217,26 @@ std::string resolveUri(const std::string& uri, const std::string& base_dir, std:
   {
     if (uri.rfind("file://", 0) == 0)
       path = uri.substr(7);
-    if (!path.empty() && path[0] != '/' && !base_dir.empty())
-      path = base_dir + "/" + path;
+    if (!path.empty() && path[0] != '/')
+    {
+      // Relative: beside the file that names it, then where Gazebo's FindFile looks (the working
+      // directory, then GAZEBO_RESOURCE_PATH: worlds shipped as packages name their meshes
+      // file://models/NAME/meshes/... under their gazebo_media_path export).
+      const std::string relative = path;
+      if (!base_dir.empty())
+        path = base_dir + "/" + relative;
+      if (!isFile(path))
+      {
+        std::vector<std::string> search = resourceSearchPath();
+        search.insert(search.begin(), fs::current_path().string());
+        const std::string found = firstIn(search, relative, isFile);
+        if (!found.empty())
+          return found;
+        reason = "'" + uri + "' not found (looked at '" + path + "', then in the working directory, "
+                 "GAZEBO_RESOURCE_PATH and the gazebo_media_path exports: " + joined(search) + ")";
+        return "";
+      }
+    }
   }
   if (!isFile(path))
   {

@@ -154,6 +154,46 @@ bool hasSensorOrPlugin(const tinyxml2::XMLElement* model)
   return false;
 }
 
+// A model with no links of its own whose nested models and includes are all <static> never moves:
+// Gazebo keeps a nested model's own <static>. (AWS RoboMaker's worlds wrap each include of a static
+// model in a <model> that only names and places it.)
+bool holdsOnlyStaticModels(const tinyxml2::XMLElement* model, const Source& source, int depth)
+{
+  if (model->FirstChildElement("link") || depth > sdf::kMaxModelDepth)
+    return false;
+  bool holds_any = false;
+  for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
+  {
+    const std::string tag = e->Name();
+    if (tag == "model")
+    {
+      holds_any = true;
+      if (!sdf::isTrue(xml::childText(e, "static", "false")) && !holdsOnlyStaticModels(e, source, depth + 1))
+        return false;
+    }
+    else if (tag == "include")
+    {
+      holds_any = true;
+      const std::string include_static = xml::childText(e, "static", "");
+      if (!include_static.empty())
+      {
+        if (!sdf::isTrue(include_static))
+          return false;
+        continue;
+      }
+      tinyxml2::XMLDocument doc;
+      Source model_source;
+      std::string why;
+      const tinyxml2::XMLElement* included =
+          sdf::readIncludedModel(xml::childText(e, "uri", ""), source, depth + 1, doc, model_source, why);
+      if (included && !sdf::isTrue(xml::childText(included, "static", "false")) &&
+          !holdsOnlyStaticModels(included, model_source, depth + 1))
+        return false;  // (one that cannot be read is skipped with its warning when the model is read)
+    }
+  }
+  return holds_any;
+}
+
 // A model that moves (or a static one with sensors or plugins), read as spawn_model reads one, or
 // refused with the reason (the world goes on). `own_pose`: the model's <pose> places it (a world's
 // <model>), else `placement`'s (an <include>'s).
@@ -458,7 +498,7 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     {
       Placement placement;
       placement.name = e->Attribute("name") ? e->Attribute("name") : "model";
-      placement.is_static = sdf::isTrue(xml::childText(e, "static", "false"));
+      placement.is_static = sdf::isTrue(xml::childText(e, "static", "false")) || holdsOnlyStaticModels(e, source, 0);
       if (placement.is_static && !hasSensorOrPlugin(e))
       {
         placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
