@@ -31,6 +31,8 @@ APT_PACKAGES=(
   libtbb-dev
   # the cameras' OpenGL: EGL without a display, OpenGL ES 3, Mesa's llvmpipe where there is no GPU
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
+  # the cameras' levels of detail: meshoptimizer's simplifier
+  libmeshoptimizer-dev
   pybind11-dev python3-dev
   # rviz beside the browser viewer (rviz:=true), the world's markers for it, and a virtual screen
   # (Xvfb) with xwd for the test that screenshots it

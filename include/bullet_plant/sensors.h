@@ -46,8 +46,10 @@ public:
 
   void setActive(bool active) { active_ = active; }
   bool active() const { return active_; }
-  // The readings made so far.
+  // The readings made so far, and those skipped (a camera frame due while the one before it was
+  // still rendering, out of lockstep: World::setLockstep).
   uint64_t updates() const { return updates_; }
+  uint64_t skipped() const { return skipped_; }
   int64_t periodNs() const { return gate_.periodNs(); }
   // What a plugin makes of the rate, as Gazebo's Sensor::SetUpdateRate (0: every step it is active).
   void setUpdatePeriodNs(int64_t period_ns) { gate_.setPeriodNs(period_ns); }
@@ -69,6 +71,7 @@ protected:
   std::mt19937 noise_;
   bool active_ = false;
   uint64_t updates_ = 0;
+  uint64_t skipped_ = 0;
   RateGate gate_;  // <update_rate>, or what the plugin makes of it
 };
 

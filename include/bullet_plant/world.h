@@ -90,6 +90,13 @@ public:
   // module and the tests see every frame due by the time step returns.
   void setFramesAhead(bool ahead);
   bool framesAhead() const;
+  // Lockstep (the default, as the Python module and the tests run): every camera frame due renders,
+  // and a step that makes a frame due waits for that camera's previous one (Gazebo's --lockstep).
+  // Out of it (the node, as Gazebo runs by default): a frame due while its camera's previous one is
+  // still rendering is skipped (Sensor::skipped counts it) and the simulation goes on; the skipped
+  // frames are said in the log once a minute.
+  void setLockstep(bool lockstep);
+  bool lockstep() const;
   // Paused: the node stops stepping; controller switches then apply at once.
   void setPaused(bool paused);
   bool paused() const;

@@ -174,6 +174,11 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   // Camera frames render while the following steps run and are published when done, stamped
   // with their own time: the simulation does not stall on a frame.
   world_->setFramesAhead(true);
+  // As Gazebo runs: a camera frame due while the camera's previous one still renders is skipped and
+  // the simulation goes on; ~lockstep (gzserver --lockstep) renders every frame and waits for it.
+  bool lockstep = false;
+  private_nh_.param("lockstep", lockstep, false);
+  world_->setLockstep(lockstep);
   loadWorldModels();
   real_time_factor_ = readRealTimeFactor(private_nh_, description.pace());
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.

@@ -34,6 +34,8 @@ void init_sensors(py::class_<RobotRef>& robot)
       .def("enable_sensor", onRobot([](Robot& r, const std::string& name, bool on) { sensorOf(r, name).setActive(on); }),
            py::arg("name"), py::arg("on") = true, "sensors work only while enabled (subscribed, in ROS)")
       .def("sensor_updates", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).updates(); }))
+      .def("sensor_skipped", onRobot([](Robot& r, const std::string& name) { return sensorOf(r, name).skipped(); }),
+           "camera frames skipped out of lockstep (World.lockstep False): each was due while the previous one still rendered")
       .def("sensor_topic", onRobot([](Robot& r, const std::string& name) { return pluginTopic(sensorOf(r, name).description()); }))
       .def("sensor_namespace", onRobot([](Robot& r, const std::string& name) { return namespaceOf(r, sensorOf(r, name)); }),
            "the namespace the sensor's gazebo_ros plugin publishes in")

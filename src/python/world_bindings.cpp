@@ -102,6 +102,11 @@ void init_world(py::module_& m)
                     },
                     "camera frames still rendering when step() returns become the latest at a later step "
                     "(default False: step() returns with every frame due made)")
+      .def_property("lockstep", [](PyWorld& w) { return w.world->lockstep(); },
+                    [](PyWorld& w, bool lockstep) { w.world->setLockstep(lockstep); },
+                    "every camera frame due renders, a step waiting for the camera's previous frame (default True, "
+                    "Gazebo's --lockstep); False: a frame due while the camera's previous one still renders is "
+                    "skipped (robot.sensor_skipped counts them), as the node runs")
       .def("messages", [](PyWorld& w, bool clear) {
         std::lock_guard<std::mutex> lock(w.mutex);
         std::vector<std::pair<std::string, std::string>> out(w.messages.begin(), w.messages.end());

@@ -308,6 +308,68 @@ TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsRaysThroughThePixelsSeeThem)
   expectTheRayCastFrame(curvedScene(), "spheres, cylinders, a plane");
 }
 
+// Frustum culling leaves out what lies wholly outside the view and nothing more: boxes behind, above
+// and beside the camera are not drawn, and the frame is still the ray-cast one (the floor and the
+// wall reach out of the view on every side, the near box crosses the near clip plane).
+TEST(GlRenderer, WhatLiesOutsideTheViewIsLeftOutAndTheFrameIsTheSame)
+{
+  std::vector<RayPrimitive> shapes = scene();
+  for (const urdf::Pose& outside : {poseFromXyzRpy(-4, 0.2, 1.2, 0, 0, 0), poseFromXyzRpy(-1.5, 6, 1.2, 0, 0, 0),
+                                    poseFromXyzRpy(-1.5, -6, 1.2, 0, 0, 0), poseFromXyzRpy(-1, 0.2, 8, 0, 0, 0),
+                                    poseFromXyzRpy(60, 0, 1, 0, 0, 0)})
+    shapes.push_back(box(0.5, 0.5, 0.5, outside, Rgba{1, 0, 1, 1}));
+  shapes.push_back(box(0.3, 0.3, 0.3, poseFromXyzRpy(-1.46, 0.2, 1.2, 0, 0.35, 0.05), Rgba{1, 1, 0, 1}));  // the near plane
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, shapes);
+  PinholeImage rasterized;
+  renderer.render(draws, kCamera, pinhole(), Lighting(), rasterized);
+  EXPECT_EQ(renderer.lastFrame().runs_culled, 5);
+  EXPECT_EQ(renderer.lastFrame().runs_drawn, int(shapes.size()) - 5);
+  RayScene rays(shapes);
+  rays.commit(nullptr);
+  expectAgreement(rasterized, castFrame(rays, kCamera, pinhole(), Lighting()), pinhole(), "culled boxes");
+}
+
+// A colour frame draws a coarser level of a finely tessellated shape where its error spans under
+// kLevelOfDetailPixels (a depth frame never does): far fewer vertices, the same picture but for
+// the odd pixel along an outline.
+TEST(GlRenderer, LevelsOfDetailStandInForFarFineShapesInColourFrames)
+{
+  std::vector<RayPrimitive> shapes = curvedScene();
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, shapes);
+  PinholeCamera camera = pinhole();
+  PinholeImage full, coarse;
+  renderer.render(draws, kCamera, camera, Lighting(), full);
+  const GlRenderer::FrameStats every = renderer.lastFrame();
+  EXPECT_EQ(every.vertices_drawn, every.vertices_in_runs);
+  camera.depth = false;
+  renderer.render(draws, kCamera, camera, Lighting(), coarse);
+  const GlRenderer::FrameStats fewer = renderer.lastFrame();
+  EXPECT_LT(fewer.vertices_drawn * 4, every.vertices_drawn) << fewer.vertices_drawn << " of " << every.vertices_drawn;
+  int differ = 0;
+  for (size_t k = 0; k < full.rgb8.size(); k += 3)
+  {
+    int worst = 0;
+    for (size_t c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(int(full.rgb8[k + c]) - int(coarse.rgb8[k + c])));
+    differ += worst > 3;
+  }
+  const int pixels = camera.width * camera.height;
+  if (const char* dump = std::getenv("GL_DUMP"))
+  {
+    stbi_write_png((std::string(dump) + "_full.png").c_str(), camera.width, camera.height, 3, full.rgb8.data(), 3 * camera.width);
+    stbi_write_png((std::string(dump) + "_coarse.png").c_str(), camera.width, camera.height, 3, coarse.rgb8.data(), 3 * camera.width);
+  }
+  EXPECT_LT(differ, pixels / 100) << differ << " of " << pixels << " pixels differ by more than 3/255";
+  std::printf("levels of detail: %ld of %ld vertices drawn, %d of %d pixels differ by more than 3/255\n",
+              fewer.vertices_drawn, every.vertices_drawn, differ, pixels);
+}
+
 // The noise (pinhole.h): each pixel's three values moved by its sample (in levels) from the frame's offset,
 // the same frame for the same offset, another for another; its spread that of the samples.
 TEST(GlRenderer, CameraNoiseIsTheSamplesFromTheFramesOffset)

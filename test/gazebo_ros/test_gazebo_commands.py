@@ -49,15 +49,17 @@ def test_gzserver_runs_the_world_paused_and_warns_once_of_an_option_it_does_not_
     ros.wait_until(lambda: crate_height(ros) < 0.11, 30, 'the crate to land')
     log = server.log()
     assert log.count('--no_such_option') == 1 and 'unknown option' in log, log
+    assert ros.run(['rosparam', 'get', '/gazebo/lockstep']).stdout.strip() == 'false'  # late frames skipped
     assert 'libgazebo_ros_api_plugin' not in log, 'gazebo_ros\'s own system plugin is no surprise'
     assert 'unregistered physics' not in log
 
 
 def test_gzserver_iters_simulates_that_many_steps_and_stops(ros):
-    run = ros.run(['rosrun', 'gazebo_ros', 'gzserver', '--iters', '250', '__name:=gazebo'], timeout=60)
+    run = ros.run(['rosrun', 'gazebo_ros', 'gzserver', '--iters', '250', '--lockstep', '__name:=gazebo'], timeout=60)
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
     assert '250 iterations simulated (~iterations), 0.250 s of simulated time' in out, out
+    assert ros.run(['rosparam', 'get', '/gazebo/lockstep']).stdout.strip() == 'true'  # every camera frame rendered
 
 
 def test_gzserver_refuses_log_playback_and_answers_help_and_version(ros):

@@ -282,6 +282,27 @@ def test_frames_rendered_while_the_simulation_goes_on_are_those_of_their_own_tim
     assert np.array_equal(ahead_depth['depth'], waited_depth['depth'], equal_nan=True)
 
 
+def test_out_of_lockstep_a_late_frame_is_skipped_and_the_simulation_goes_on(control_config, urdf_xml):
+    # The car's camera asked for a frame every step (1 kHz): rendering one takes a
+    # millisecond, a step microseconds. In lockstep (the Python module's default) every frame due is
+    # made and the steps wait for them; out of it (the node, as Gazebo runs) a frame due while the
+    # previous one still renders is skipped, counted, and the steps go on.
+    made = {}
+    for lockstep in (True, False):
+        world = make_world(control_config, sdf_world(box_model('box', BOX_SIZE, BOX_CENTRE)))
+        robot = world.spawn(urdf_xml.replace('<update_rate>30.0', '<update_rate>1000'), 'tianracer')
+        world.frames_ahead = True
+        world.lockstep = lockstep
+        assert world.lockstep == lockstep
+        robot.enable_sensor('camera')
+        world.step(200)
+        world.frames_ahead = False  # collects the frame still rendering
+        made[lockstep] = robot.sensor_updates('camera'), robot.sensor_skipped('camera')
+    assert made[True] == (200, 0)
+    rendered, skipped = made[False]
+    assert rendered + skipped == 200 and rendered >= 1 and skipped > 100, made
+
+
 def resident_kb():
     with open('/proc/self/status') as status:
         return next(int(line.split()[1]) for line in status if line.startswith('VmRSS'))

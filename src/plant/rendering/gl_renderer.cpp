@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include <GLES3/gl3.h>
+#include <meshoptimizer.h>
 
 namespace bullet_plant
 {
@@ -39,6 +40,7 @@ out float diffuse;
 out float depth_along_axis;
 out vec2 texture_uv;
 flat out vec4 face_colour;
+invariant gl_Position;
 #if STATIC_SHADOWS
 uniform mat4 static_shadow_from_world;
 out vec3 static_shadow_coordinates;
@@ -180,6 +182,7 @@ void main()
 const char* const kShadowVertexShader = R"(#version 300 es
 layout(location = 0) in vec3 position;
 uniform mat4 light_clip_from_body;
+invariant gl_Position;
 void main() { gl_Position = light_clip_from_body * vec4(position, 1.0); }
 )";
 const char* const kShadowFragmentShader = R"(#version 300 es
@@ -541,6 +544,85 @@ GlRenderer::~GlRenderer()
   context_.release();
 }
 
+namespace
+{
+constexpr size_t kVertexFloats = 12;  // position, normal, colour, texture coordinates
+// Runs smaller than this are drawn as they are: a level of detail would save less than its draw.
+constexpr int kLevelOfDetailMinTriangles = 64;
+
+// The levels of detail of `count` vertices from `first` in `vertices` (kVertexFloats each), appended
+// to it: meshoptimizer's simplifier halves the triangles level by level while it can, keeping the
+// topology and the seams where the colour, the texture coordinates or a smooth normal change (the
+// corners are welded on those; a flat face's normal is worked out again for each new triangle).
+std::vector<LevelOfDetail> appendLevelsOfDetail(std::vector<float>& vertices, int first, int count)
+{
+  std::vector<LevelOfDetail> levels;
+  if (count < 3 * kLevelOfDetailMinTriangles)
+    return levels;
+  std::vector<float> corners(vertices.begin() + std::ptrdiff_t(first * kVertexFloats),
+                             vertices.begin() + std::ptrdiff_t((first + count) * kVertexFloats));
+  // Smooth: some corner's normal is not its face's (a curved surface's, or a mesh file's own).
+  bool smooth = false;
+  for (size_t t = 0; t < size_t(count) / 3 && !smooth; ++t)
+  {
+    const float* c = &corners[3 * t * kVertexFloats];
+    const std::vector<float> face = flatNormals({c[0], c[1], c[2], c[kVertexFloats], c[kVertexFloats + 1],
+                                                 c[kVertexFloats + 2], c[2 * kVertexFloats], c[2 * kVertexFloats + 1],
+                                                 c[2 * kVertexFloats + 2]});
+    for (int k = 0; k < 3 && !smooth; ++k)
+      for (int i = 0; i < 3; ++i)
+        smooth = smooth || std::fabs(c[k * kVertexFloats + 3 + size_t(i)] - face[size_t(i)]) > 1e-5f;
+  }
+  if (!smooth)
+    for (size_t c = 0; c < size_t(count); ++c)
+      std::fill_n(&corners[c * kVertexFloats + 3], 3, 0.0f);  // flat normals are not the surface's
+  std::vector<unsigned> indices(static_cast<size_t>(count));
+  const size_t unique = meshopt_generateVertexRemap(indices.data(), nullptr, size_t(count), corners.data(), size_t(count),
+                                                    kVertexFloats * sizeof(float));
+  std::vector<float> welded(unique * kVertexFloats);
+  meshopt_remapVertexBuffer(welded.data(), corners.data(), size_t(count), kVertexFloats * sizeof(float), indices.data());
+  const size_t stride = kVertexFloats * sizeof(float);
+  const float scale = meshopt_simplifyScale(welded.data(), unique, stride);
+  std::vector<unsigned> simplified(indices.size());
+  size_t previous = indices.size();
+  for (size_t target = previous / 6 * 3; target >= 3 * size_t(kLevelOfDetailMinTriangles) / 2; target = previous / 6 * 3)
+  {
+    float error = 0;
+    const size_t kept = meshopt_simplify(simplified.data(), indices.data(), indices.size(), welded.data(), unique, stride,
+                                         target, 1.0f, 0, &error);
+    if (kept == 0 || kept > previous * 3 / 4)
+      break;  // it keeps what it cannot take away without tearing
+    LevelOfDetail level{int(vertices.size() / kVertexFloats), int(kept), error * scale};
+    for (size_t i = 0; i < kept; i += 3)
+    {
+      const float* corner[3] = {&welded[simplified[i] * kVertexFloats], &welded[simplified[i + 1] * kVertexFloats],
+                                &welded[simplified[i + 2] * kVertexFloats]};
+      float normal[3] = {0, 0, 0};
+      if (!smooth)
+      {
+        const float a[3] = {corner[1][0] - corner[0][0], corner[1][1] - corner[0][1], corner[1][2] - corner[0][2]};
+        const float b[3] = {corner[2][0] - corner[0][0], corner[2][1] - corner[0][1], corner[2][2] - corner[0][2]};
+        normal[0] = a[1] * b[2] - a[2] * b[1];
+        normal[1] = a[2] * b[0] - a[0] * b[2];
+        normal[2] = a[0] * b[1] - a[1] * b[0];
+        const float n = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+        for (float& x : normal)
+          x = n > 0 ? x / n : 0.0f;
+      }
+      for (const float* c : corner)
+      {
+        vertices.insert(vertices.end(), c, c + kVertexFloats);
+        if (!smooth)
+          std::copy(normal, normal + 3, vertices.end() - std::ptrdiff_t(kVertexFloats) + 3);
+      }
+    }
+    levels.push_back(level);
+    previous = kept;
+  }
+  return levels;
+}
+}  // namespace
+
 int GlRenderer::addMesh(const GlTriangles& triangles)
 {
   context_.makeCurrent();
@@ -571,13 +653,25 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
     mesh.lo[k % 3] = std::min(mesh.lo[k % 3], double(triangles.xyz[k]));
     mesh.hi[k % 3] = std::max(mesh.hi[k % 3], double(triangles.xyz[k]));
   }
+  size_t part = 0;  // the part triangle t is in
   for (size_t t = 0; t < count; ++t)
   {
     const unsigned texture = triangles.texture.empty() ? 0 : textureOf(triangles.texture[t]);
-    if (mesh.runs.empty() || mesh.runs.back().texture != texture)
+    bool part_begins = t == 0;
+    for (; part < triangles.part_ends.size() && triangles.part_ends[part] <= t; ++part)
+      part_begins = true;
+    if (part_begins || mesh.runs.back().texture != texture)
       mesh.runs.push_back(Run{int(3 * t), 0, texture});
-    mesh.runs.back().count += 3;
+    Run& run = mesh.runs.back();
+    run.count += 3;
+    for (size_t k = 9 * t; k < 9 * t + 9; ++k)
+    {
+      run.lo[k % 3] = std::min(run.lo[k % 3], triangles.xyz[k]);
+      run.hi[k % 3] = std::max(run.hi[k % 3], triangles.xyz[k]);
+    }
   }
+  for (Run& run : mesh.runs)
+    run.levels = appendLevelsOfDetail(vertices, run.first, run.count);
   glGenVertexArrays(1, &mesh.vertex_array);
   glGenBuffers(1, &mesh.buffer);
   glBindVertexArray(mesh.vertex_array);
@@ -850,6 +944,88 @@ const GlRenderer::Target& GlRenderer::target(int width, int height)
   return targets_.back();
 }
 
+std::vector<GlRenderer::VisibleRun> GlRenderer::visibleRuns(const std::vector<Draw>& draws, const Frame& pose,
+                                                            const PinholeCamera& camera, double max_error)
+{
+  std::vector<VisibleRun> visible;
+  draw_matrices_.resize(draws.size());
+  last_frame_ = FrameStats();
+  for (size_t d = 0; d < draws.size(); ++d)
+  {
+    const Mesh& mesh = meshes_.at(size_t(draws[d].mesh));
+    const Matrix4 clip = clipFromBody(pose, draws[d].world_from_body, camera);
+    std::copy(clip.m, clip.m + 16, draw_matrices_[d].clip_from_body);
+    const Matrix4 world = fromFrame(draws[d].world_from_body);
+    std::copy(world.m, world.m + 16, draw_matrices_[d].world_from_body);
+    for (const Run& run : mesh.runs)
+    {
+      // Outside when every corner lies beyond one plane of the frustum (-w <= x, y, z <= w), with
+      // a margin for the float arithmetic: what touches the frustum's edge is drawn.
+      int beyond[6] = {0, 0, 0, 0, 0, 0};
+      double nearest = HUGE_VAL;
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        const float p[3] = {corner & 1 ? run.hi[0] : run.lo[0], corner & 2 ? run.hi[1] : run.lo[1],
+                            corner & 4 ? run.hi[2] : run.lo[2]};
+        double c[4];
+        for (int r = 0; r < 4; ++r)
+          c[r] = double(clip.m[r]) * p[0] + double(clip.m[4 + r]) * p[1] + double(clip.m[8 + r]) * p[2] + clip.m[12 + r];
+        const double margin = 1e-4 * std::fabs(c[3]) + 1e-6;
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          beyond[2 * axis] += c[axis] < -c[3] - margin;
+          beyond[2 * axis + 1] += c[axis] > c[3] + margin;
+        }
+        nearest = std::min(nearest, c[3]);  // w: the depth along the optical axis
+      }
+      if (std::find(beyond, beyond + 6, 8) != beyond + 6)
+      {
+        ++last_frame_.runs_culled;
+        continue;
+      }
+      // The coarsest level whose error spans at most kLevelOfDetailPixels at the run's nearest point.
+      int first = run.first, count = run.count;
+      if (!camera.depth && nearest > camera.near)
+        for (const LevelOfDetail& level : run.levels)
+          if (level.error <= max_error && level.error * std::max(camera.fx, camera.fy) <= kLevelOfDetailPixels * nearest)
+          {
+            first = level.first;
+            count = level.count;
+          }
+      visible.push_back(VisibleRun{&mesh, &run, first, count, d, nearest});
+      ++last_frame_.runs_drawn;
+      last_frame_.vertices_drawn += count;
+      last_frame_.vertices_in_runs += run.count;
+    }
+  }
+  std::stable_sort(visible.begin(), visible.end(),
+                   [](const VisibleRun& a, const VisibleRun& b) { return a.nearest < b.nearest; });
+  return visible;
+}
+
+void GlRenderer::drawRuns(const std::vector<VisibleRun>& runs, int clip_from_body, int world_from_body, int textured)
+{
+  size_t bound = size_t(-1);
+  for (const VisibleRun& v : runs)
+  {
+    if (v.draw != bound)
+    {
+      bound = v.draw;
+      glUniformMatrix4fv(clip_from_body, 1, GL_FALSE, draw_matrices_[v.draw].clip_from_body);
+      if (world_from_body >= 0)
+        glUniformMatrix4fv(world_from_body, 1, GL_FALSE, draw_matrices_[v.draw].world_from_body);
+      glBindVertexArray(v.mesh->vertex_array);
+    }
+    if (textured >= 0)
+    {
+      glUniform1i(textured, v.run->texture != 0);
+      glBindTexture(GL_TEXTURE_2D, v.run->texture);
+    }
+    glDrawArrays(GL_TRIANGLES, v.first, v.count);
+  }
+  glBindVertexArray(0);
+}
+
 void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, const PinholeCamera& camera,
                         const Lighting& lighting, PinholeImage& out)
 {
@@ -930,20 +1106,25 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
     glUniformMatrix4fv(program.moving_shadow_from_world, 1, GL_FALSE, moving_shadow_.texture_from_world);
   }
   glActiveTexture(GL_TEXTURE0);
-  for (const Draw& d : draws)
+  // What the camera may see, nearest first: the depth test then spares the shading of what lies
+  // behind (a shelf's books behind its front). With lamps, whose per-pixel sum is a frame's main
+  // cost, the depths are drawn first and each pixel is shaded once.
+  // A level of detail lies within its error of the surface the shadow maps hold: with shadows, no
+  // further than half their bias, or it would shadow itself.
+  const std::vector<VisibleRun> visible =
+      visibleRuns(draws, pose, camera, static_shadows || moving_shadows ? kShadowBias / 2 : HUGE_VAL);
+  if (local_lights)
   {
-    const Mesh& mesh = meshes_.at(size_t(d.mesh));
-    glUniformMatrix4fv(program.clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, camera).m);
-    glUniformMatrix4fv(program.world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
-    glBindVertexArray(mesh.vertex_array);
-    for (const Run& run : mesh.runs)
-    {
-      glUniform1i(program.textured, run.texture != 0);
-      glBindTexture(GL_TEXTURE_2D, run.texture);
-      glDrawArrays(GL_TRIANGLES, run.first, run.count);
-    }
+    glUseProgram(shadow_program_);  // depth only
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    drawRuns(visible, light_clip_from_body_, -1, -1);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LEQUAL);  // the same depths again: invariant gl_Position in both programs
+    glDepthMask(GL_FALSE);
+    glUseProgram(program.program);
   }
-  glBindVertexArray(0);
+  drawRuns(visible, program.clip_from_body, program.world_from_body, program.textured);
+  glDepthMask(GL_TRUE);
   // Read back: the rows come in the image's order (clipFromBody).
   const size_t pixels = size_t(camera.width) * size_t(camera.height);
   colour_pixels_.resize(pixels * 4);

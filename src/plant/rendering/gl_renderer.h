@@ -32,6 +32,9 @@ struct GlTriangles
   // vertex; both empty when no triangle is textured.
   std::vector<std::shared_ptr<const Texture>> texture;  // 1 per triangle, null: its colour
   std::vector<float> uv;                                 // 6 per triangle
+  // Where each part (a primitive: one visual's shape) ends, in triangles, in order; a frame culls
+  // and orders the parts one by one. Empty: one part.
+  std::vector<size_t> part_ends;
 };
 
 // A primitive's triangles in the frame it is placed in (its frame applied), each in what cameras
@@ -42,6 +45,17 @@ struct GlTriangles
 // normals at the vertices.
 constexpr double kCurvedTolerance = 2e-5;  // m: 1 mm in depth even where a ray grazes the surface
 GlTriangles glTrianglesOf(const RayPrimitive& primitive);
+
+// A coarser version of some triangles (meshoptimizer's simplifier): its vertices in the mesh's
+// buffer and the most any point of it lies from the original surface.
+struct LevelOfDetail
+{
+  int first = 0, count = 0;  // vertices
+  float error = 0;           // m
+};
+// The geometric error a colour frame tolerates, in pixels at the nearest point of what is drawn:
+// beneath it a coarser level looks the same (depth frames always get every triangle).
+constexpr double kLevelOfDetailPixels = 0.5;
 
 class GlRenderer
 {
@@ -77,17 +91,27 @@ public:
   // the light change) and the moving ones' (every frame, fitted to them).
   void render(const std::vector<Draw>& draws, const Frame& pose, const PinholeCamera& camera, const Lighting& lighting,
               PinholeImage& out);
+  // What the last frame drew: its runs (a part of a mesh in one texture) within the view frustum and
+  // those left out, and the vertices drawn (fewer than the runs' own where levels of detail stood in).
+  struct FrameStats
+  {
+    int runs_drawn = 0, runs_culled = 0;
+    long vertices_drawn = 0, vertices_in_runs = 0;
+  };
+  const FrameStats& lastFrame() const { return last_frame_; }
 
 private:
-  struct Run  // consecutive vertices drawn with one texture (0: none)
+  struct Run  // consecutive vertices of one part (GlTriangles::part_ends) drawn with one texture (0: none)
   {
     int first = 0, count = 0;
     unsigned texture = 0;
+    float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};  // bounds, body frame
+    std::vector<LevelOfDetail> levels;  // coarser and coarser
   };
   struct Mesh
   {
     unsigned vertex_array = 0, buffer = 0;
-    int vertex_count = 0;
+    int vertex_count = 0;  // the triangles as given (the levels of detail follow them in the buffer)
     std::vector<Run> runs;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};  // bounds, body frame
     unsigned generation = 0;  // how many meshes this slot has held: a draw of an earlier one is stale
@@ -114,6 +138,26 @@ private:
     int width = 0, height = 0;
     unsigned framebuffer = 0, colour = 0, depth = 0, depth_buffer = 0;
   };
+  // A run the camera may see (its bounds within the view frustum), and its draw's matrices.
+  struct VisibleRun
+  {
+    const Mesh* mesh;
+    const Run* run;
+    int first, count;  // the vertices drawn: the run's or one of its levels of detail
+    size_t draw;       // into draw_matrices_
+    double nearest;   // the least depth along the optical axis of its bounds' corners
+  };
+  struct DrawMatrices
+  {
+    float clip_from_body[16], world_from_body[16];  // column major
+  };
+  // The runs of `draws` whose bounds reach into the camera's view frustum (near and far clip
+  // planes included), nearest first, each at the coarsest level of detail whose error is at most
+  // `max_error` (m) and spans at most kLevelOfDetailPixels; fills draw_matrices_.
+  std::vector<VisibleRun> visibleRuns(const std::vector<Draw>& draws, const Frame& pose, const PinholeCamera& camera,
+                                      double max_error);
+  // Draws `runs` with the bound program, whose uniforms' locations are given (-1: not in it).
+  void drawRuns(const std::vector<VisibleRun>& runs, int clip_from_body, int world_from_body, int textured);
   unsigned textureOf(const std::shared_ptr<const Texture>& image);
   const Target& target(int width, int height);
 
@@ -133,6 +177,8 @@ private:
   std::vector<Target> targets_;
   std::vector<Mesh> meshes_;
   std::vector<std::pair<std::shared_ptr<const Texture>, unsigned>> textures_;  // uploaded once each
+  std::vector<DrawMatrices> draw_matrices_;  // a frame's, one per draw
+  FrameStats last_frame_;
   std::vector<uint8_t> colour_pixels_;  // read back: r g b a per pixel
   std::vector<float> depth_pixels_;     // read back as RGBA where the driver reads no single float channel
 };

@@ -32,6 +32,7 @@ GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes, Planes
       }
     }
     all.xyz.insert(all.xyz.end(), t.xyz.begin(), t.xyz.end());
+    all.part_ends.push_back(all.xyz.size() / 9);
     all.colour.insert(all.colour.end(), t.colour.begin(), t.colour.end());
     all.normal.insert(all.normal.end(), t.normal.begin(), t.normal.end());
   }

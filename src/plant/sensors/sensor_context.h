@@ -31,6 +31,9 @@ public:
   virtual GlScene* glScene() = 0;
   // Where camera frames render while the simulation goes on, or null: render them now.
   virtual FrameWorker* frameWorker() = 0;
+  // Whether every camera frame due renders, the simulation waiting for a camera's previous frame
+  // (World::setLockstep); else a frame due while its camera's previous one still renders is skipped.
+  virtual bool lockstep() const = 0;
   virtual Lighting lighting() const = 0;
   // The touching points of `link`'s collisions named in `collisions` (SDF names), grouped by the
   // pair of collisions, as ContactSensor reports them.

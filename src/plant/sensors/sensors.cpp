@@ -55,7 +55,13 @@ bool Camera::update(SensorContext& context, int64_t time_ns)
   GlScene* gl = context.glScene();
   if (!gl)
     return false;  // cameras are off: the world has said why, once
-  collect(true);   // the previous frame first: frames come in their order
+  Rendering& r = *rendering_;
+  if (!context.lockstep() && r.pending && r.worker && !r.worker->done(r.ticket))
+  {
+    ++skipped_;  // late: Gazebo's rendering thread drops the frame and the simulation goes on
+    return false;
+  }
+  collect(true);  // the previous frame first: frames come in their order
   detail::SensorRendering::render(*this, *gl, context.frameWorker(), sensorPose(context, description_),
                                   context.lighting(), time_ns);
   return false;  // the reading counts when collected

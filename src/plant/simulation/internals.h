@@ -1,6 +1,7 @@
 // Private state of World and Robot: what the public classes stand for in Bullet.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -115,6 +116,12 @@ struct World::Internals
   std::unique_ptr<FrameWorker> frame_worker;
   // step() returns without waiting for the frames still rendering (World::setFramesAhead).
   bool frames_ahead = false;
+  // Every camera frame due renders (World::setLockstep); out of it, the skipped ones are said once a
+  // minute of wall time (reportSkippedFrames), each camera's count at the last report kept.
+  bool lockstep = true;
+  std::chrono::steady_clock::time_point next_skip_report{};
+  std::map<const Sensor*, uint64_t> skipped_reported;
+  void reportSkippedFrames();
 
   // "robot::link" or the static collision's name, for messages.
   std::string nameOf(const btCollisionObject* object) const;

@@ -28,6 +28,8 @@ GlScene* RobotSensorContext::glScene() { return robot_.world->glScene(); }
 
 FrameWorker* RobotSensorContext::frameWorker() { return robot_.world->frame_worker.get(); }
 
+bool RobotSensorContext::lockstep() const { return robot_.world->lockstep; }
+
 Lighting RobotSensorContext::lighting() const { return robot_.world->lighting(); }
 
 std::vector<ContactState> RobotSensorContext::contacts(const std::string& link, const std::vector<std::string>& collisions) const

@@ -23,6 +23,7 @@ public:
   const RayScene& lidarScene() override;
   GlScene* glScene() override;
   FrameWorker* frameWorker() override;
+  bool lockstep() const override;
   Lighting lighting() const override;
   std::vector<ContactState> contacts(const std::string& link, const std::vector<std::string>& collisions) const override;
 

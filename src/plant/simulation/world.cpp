@@ -435,9 +435,41 @@ void World::step(int n)
   }
   if (!w.frames_ahead)
     w.collectFrames();
+  if (!w.lockstep)
+    w.reportSkippedFrames();
 }
 
 bool World::framesAhead() const { return in_->frames_ahead; }
+
+bool World::lockstep() const { return in_->lockstep; }
+
+void World::setLockstep(bool lockstep) { in_->lockstep = lockstep; }
+
+void World::Internals::reportSkippedFrames()
+{
+  constexpr auto kReportPeriod = std::chrono::seconds(60);
+  const auto now = std::chrono::steady_clock::now();
+  if (next_skip_report == std::chrono::steady_clock::time_point{})
+    next_skip_report = now + kReportPeriod;
+  if (now < next_skip_report)
+    return;
+  next_skip_report = now + kReportPeriod;
+  std::map<const Sensor*, uint64_t> reported_now;  // the sensors there are now (robots come and go)
+  for (auto& r : robots)
+    for (auto& sensor : r->in_->sensors)
+    {
+      const auto before = skipped_reported.find(sensor.get());
+      const uint64_t reported =
+          before != skipped_reported.end() && before->second <= sensor->skipped() ? before->second : 0;
+      reported_now[sensor.get()] = sensor->skipped();
+      if (sensor->skipped() > reported)
+        log.info("camera '" + sensor->name() + "' of '" + r->name() + "': " +
+                 std::to_string(sensor->skipped() - reported) +
+                 " frames skipped in the last minute: each was due while the one before it was still rendering (the "
+                 "simulation does not wait for a camera out of lockstep; gzserver --lockstep renders every frame)");
+    }
+  skipped_reported.swap(reported_now);
+}
 
 void World::setFramesAhead(bool ahead)
 {
