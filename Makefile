@@ -81,6 +81,7 @@ bench: build
 	@$(ROS_ENV) $(PYTHON) bench/plant_vs_peers.py
 	@$(ROS_ENV) $(PYTHON) bench/sensor_bench.py
 	@$(ROS_ENV) $(PYTHON) bench/box_pile_vs_mujoco.py
+	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) bench/house_bench.py
 
 demo: build
 	@$(ROS_ENV) $(PYTHON) tools/demo.py
