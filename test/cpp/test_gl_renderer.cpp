@@ -309,8 +309,8 @@ TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsRaysThroughThePixelsSeeThem)
 }
 
 // Frustum culling leaves out what lies wholly outside the view and nothing more: boxes behind, above
-// and beside the camera are not drawn, and the frame is still the ray-cast one (the floor and the
-// wall reach out of the view on every side, the near box crosses the near clip plane).
+// and beside the camera and beyond the far clip plane are not drawn, and the frame is still the
+// ray-cast one (the floor reaches out of the view on every side and behind the camera).
 TEST(GlRenderer, WhatLiesOutsideTheViewIsLeftOutAndTheFrameIsTheSame)
 {
   std::vector<RayPrimitive> shapes = scene();
@@ -318,7 +318,6 @@ TEST(GlRenderer, WhatLiesOutsideTheViewIsLeftOutAndTheFrameIsTheSame)
                                     poseFromXyzRpy(-1.5, -6, 1.2, 0, 0, 0), poseFromXyzRpy(-1, 0.2, 8, 0, 0, 0),
                                     poseFromXyzRpy(60, 0, 1, 0, 0, 0)})
     shapes.push_back(box(0.5, 0.5, 0.5, outside, Rgba{1, 0, 1, 1}));
-  shapes.push_back(box(0.3, 0.3, 0.3, poseFromXyzRpy(-1.46, 0.2, 1.2, 0, 0.35, 0.05), Rgba{1, 1, 0, 1}));  // the near plane
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
@@ -330,6 +329,26 @@ TEST(GlRenderer, WhatLiesOutsideTheViewIsLeftOutAndTheFrameIsTheSame)
   RayScene rays(shapes);
   rays.commit(nullptr);
   expectAgreement(rasterized, castFrame(rays, kCamera, pinhole(), Lighting()), pinhole(), "culled boxes");
+}
+
+// Back faces are culled, as OGRE renders Gazebo's cameras: a camera inside its own link's box (the
+// rrbot of gazebo_ros_demos, a 5 cm box around its camera) sees the world outside, not the box.
+TEST(GlRenderer, ACameraInsideABoxSeesOut)
+{
+  std::vector<RayPrimitive> shapes = scene();
+  std::unique_ptr<GlContext> gl = llvmpipe();
+  ASSERT_TRUE(gl);
+  GlRenderer renderer(*gl);
+  std::vector<GlRenderer::Draw> draws = worldDraws(renderer, shapes);
+  const std::vector<RayPrimitive> link = {box(0.05, 0.05, 0.05, poseFromXyzRpy(-1.5, 0.2, 1.2, 0, 0, 0),
+                                               Rgba{0.28f, 0.0f, 0.0f, 1})};
+  const std::vector<GlRenderer::Draw> around = worldDraws(renderer, link);
+  draws.insert(draws.end(), around.begin(), around.end());
+  PinholeImage rasterized;
+  renderer.render(draws, kCamera, pinhole(), Lighting(), rasterized);
+  RayScene rays(shapes);  // the world without the box
+  rays.commit(nullptr);
+  expectAgreement(rasterized, castFrame(rays, kCamera, pinhole(), Lighting()), pinhole(), "inside a box");
 }
 
 // A colour frame draws a coarser level of a finely tessellated shape where its error spans under
@@ -423,7 +442,7 @@ std::vector<RayPrimitive> texturedScene(const std::string& dir)
   std::ofstream(dir + "/wall.obj") << "mtllib wall.mtl\n"
                                       "v 0 -1.5 0\nv 0 1.5 0\nv 0 1.5 2\nv 0 -1.5 2\n"
                                       "vt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n"
-                                      "usemtl tiles\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n";
+                                      "usemtl tiles\nf 1/1 3/3 2/2\nf 1/1 4/4 3/3\n";  // facing -x, the camera
   std::string reason;
   std::shared_ptr<const MeshData> wall = loadMesh(dir + "/wall.obj", urdf::Vector3(1, 1, 1), reason);
   EXPECT_TRUE(wall && wall->submeshes[0].image) << reason;

@@ -1047,7 +1047,12 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
   glViewport(0, 0, camera.width, camera.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
+  // Back faces culled, as OGRE renders Gazebo's cameras: a camera inside its own link's box sees out.
+  // A face counter-clockwise seen from outside is clockwise in the window: clipFromBody puts the
+  // image's top row at the window's bottom.
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glFrontFace(GL_CW);
   glDisable(GL_DITHER);
   const float background[4] = {lighting.background[0], lighting.background[1], lighting.background[2], 1.0f};
   const float no_depth[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};
