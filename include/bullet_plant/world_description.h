@@ -103,8 +103,14 @@ struct WorldDescription
 WorldDescription parseWorldDescription(const std::string& sdf_xml, const std::string& base_dir = "");
 // Reads and parses a world file; its relative URIs resolve against its directory. A name that is not
 // a file is looked for as Gazebo looks for `worlds/empty.world`: in GAZEBO_RESOURCE_PATH, then in
-// the gazebo_media_path exports of the packages on ROS_PACKAGE_PATH (a DescriptionError names them).
+// the gazebo_media_path exports of the packages on ROS_PACKAGE_PATH (WorldFileNotFound names them).
 WorldDescription parseWorldFile(const std::string& name);
+// A world file found nowhere: Gazebo's server then says so and runs worlds/empty.world (the node does).
+class WorldFileNotFound : public DescriptionError
+{
+public:
+  using DescriptionError::DescriptionError;
+};
 // The empty world: default physics and a ground plane.
 WorldDescription emptyWorldDescription();
 

@@ -159,7 +159,18 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
 {
   std::string world_file;
   private_nh_.param<std::string>("world_name", world_file, "");
-  WorldDescription description = world_file.empty() ? emptyWorldDescription() : parseWorldFile(world_file);
+  WorldDescription description = emptyWorldDescription();
+  try
+  {
+    if (!world_file.empty())
+      description = parseWorldFile(world_file);
+  }
+  catch (const WorldFileNotFound& e)
+  {
+    // Gazebo 11's server: the error, then the empty world (Server::ParseArgs)
+    ROS_ERROR("Could not open file[%s]: %s", world_file.c_str(), e.what());
+    ROS_WARN("Falling back on worlds/empty.world");
+  }
   // rosout from the world's first message on: what it says while it is built (models refused or
   // spawned from the world file) is the node's too.
   world_.reset(new World(description, [](LogLevel level, const std::string& m) {

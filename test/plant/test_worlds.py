@@ -306,6 +306,20 @@ def test_node_stops_on_a_malformed_world_naming_file_and_line(ros, tmp_path):
 
 
 @pytest.mark.ros
+def test_node_on_a_world_file_found_nowhere_says_so_and_runs_the_empty_world(ros, tmp_path):
+    # Clearpath Jackal's empty_world.launch names $(find gazebo_ros)/worlds/empty_world.world, which no
+    # gazebo_ros ships: Gazebo 11's server says it could not open the file and runs worlds/empty.world.
+    missing = str(tmp_path / 'worlds' / 'empty_world.world')
+    node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + missing], 'plant')
+    ros.wait_until(lambda: '/gazebo/get_world_properties' in ros.run(['rosservice', 'list'], timeout=5).stdout,
+                   30, 'the plant node')
+    log = node.log()
+    assert 'Could not open file[%s]' % missing in log and 'Falling back on worlds/empty.world' in log, log
+    properties = ros.run(['rosservice', 'call', '/gazebo/get_world_properties'], timeout=10).stdout
+    assert 'success: True' in properties and 'sim_time: 0.0\n' not in properties, properties  # it runs
+
+
+@pytest.mark.ros
 def test_node_resolves_a_launched_worlds_uris_against_its_file(ros, tmp_path):
     models = tmp_path / 'models'
     model_dir = make_model(models, 'statue', MESH_COLLISION.format(name='body', uri='meshes/statue.stl', scale='1 1 1'))

@@ -538,7 +538,7 @@ WorldDescription parseWorldFile(const std::string& name)
   std::string reason;
   const std::string path = findWorldFile(name, reason);
   if (path.empty())
-    throw DescriptionError(reason);
+    throw WorldFileNotFound(reason);
   return parseWorld(sdf::readFile(path, "world file"), Source{path, sdf::directoryOf(path)});
 }
 
