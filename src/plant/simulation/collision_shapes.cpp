@@ -27,6 +27,8 @@ btCollisionShape* withMargin(btCollisionShape* shape, Shape::Kind kind)
 {
   if (kind == Shape::Kind::Box || kind == Shape::Kind::Cylinder)
     shape->setMargin(kCollisionMargin);
+  if (kind == Shape::Kind::Box)
+    static_cast<btBoxShape*>(shape)->initializePolyhedralFeatures();  // faces for mesh contacts: makeCollider
   return shape;
 }
 
@@ -266,6 +268,7 @@ btConvexHullShape* makeHull(const MeshData& mesh)
       shape->addPoint(hull.vertices[v], false);
   shape->recalcLocalAabb();
   shape->setMargin(shrink > 0 ? kCollisionMargin : btScalar(0.0));
+  shape->initializePolyhedralFeatures();  // faces for mesh contacts: makeCollider
   return shape;
 }
 }  // namespace

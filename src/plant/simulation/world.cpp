@@ -150,6 +150,11 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
   solver->setMaxCorrectingVelocity(btScalar(description.contact_max_correcting_vel));
   w.solver.reset(solver);
   w.dynamics.reset(new DynamicsWorld(w.dispatcher.get(), w.broadphase.get(), solver, w.collision_config.get()));
+  // A box or a moving mesh (their faces: collision_shapes.h) on a static mesh's triangle touches it
+  // in up to four points at once, the face clipped against the triangle (Bullet's polyhedral
+  // clipping, asked by its SAT option). With GJK's one point a step a box landed on a corner and
+  // rocked on a mesh floor for ever (0.05 rad, never asleep) where on a plane or a box it settled.
+  w.dynamics->getDispatchInfo().m_enableSatConvex = true;
   const urdf::Vector3& g = description.gravity;
   w.dynamics->setGravity(toBullet(g));
   btContactSolverInfo& info = w.dynamics->getSolverInfo();
