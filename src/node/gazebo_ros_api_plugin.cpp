@@ -975,7 +975,8 @@ bool GazeboRosApiPlugin::setLightProperties(gazebo_msgs::SetLightProperties::Req
     res.status_message = std::string("setLightProperties: ") + e.what();
     return true;
   }
-  sayNotHonoured("set_light_properties' specular", "the cameras render no specular light");
+  if (req.specular.r != 0 || req.specular.g != 0 || req.specular.b != 0)
+    sayNotHonoured("set_light_properties' specular", "the cameras render no specular light");
   if (!light.directional && req.cast_shadows)
     sayNotHonoured("set_light_properties' cast_shadows for a point or spot light", "only the sun casts shadows here");
   publishScene();
