@@ -20,6 +20,9 @@ APT_PACKAGES=(
   ros-rosgraph-msgs libros-rosgraph-msgs-dev python3-rosgraph-msgs
   ros-tf2-msgs libtf2-msgs-dev python3-tf2-msgs python3-tf2-ros
   ros-trajectory-msgs libtrajectory-msgs-dev python3-trajectory-msgs   # gazebo_msgs/SetJointTrajectory, trajectory controllers
+  # dynamic_reconfigure: its messages and server (the node's /gazebo/set_parameters, gazebo_ros's
+  # physics reconfigure), its Python client for scripts and the tests
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
   # actions: control_msgs/FollowJointTrajectory (the node serves it with actionlib)
   ros-actionlib-msgs libactionlib-msgs-dev python3-actionlib-msgs libactionlib-dev python3-actionlib
   # the plant: physics, URDF parsing, XML, Python bindings

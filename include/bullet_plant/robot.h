@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -25,6 +26,28 @@ struct Twist
 {
   std::array<double, 3> linear{{0, 0, 0}};   // m/s
   std::array<double, 3> angular{{0, 0, 0}};  // rad/s
+};
+
+// gazebo_ros's set_joint_properties, ODE's joint parameters of the joint's one axis; NaN leaves a
+// value as it is. damping: N m s/rad (N s/m); lower, upper: ODE's stops (a stop may be infinite,
+// lower == upper holds the joint there, lower > upper is no stop); fmax, vel: ODE's joint motor, at
+// most fmax N m (N) towards the velocity vel, which Gazebo's joint friction is (vel 0).
+struct JointProperties
+{
+  double damping = std::numeric_limits<double>::quiet_NaN();
+  double lower = std::numeric_limits<double>::quiet_NaN(), upper = std::numeric_limits<double>::quiet_NaN();
+  double fmax = std::numeric_limits<double>::quiet_NaN(), vel = std::numeric_limits<double>::quiet_NaN();
+};
+
+// gazebo_ros's get/set_link_properties: a link's own <inertial> (mass, kg; centre of mass in the
+// link frame, m; inertia about it along the inertial frame's axes, kg m^2) and whether it feels
+// gravity.
+struct LinkProperties
+{
+  double mass = 0.0;
+  urdf::Vector3 com{0, 0, 0};
+  double ixx = 0.0, ixy = 0.0, ixz = 0.0, iyy = 0.0, iyz = 0.0, izz = 0.0;
+  bool gravity = true;
 };
 
 class Robot
@@ -92,6 +115,18 @@ public:
   void clearLinkWrenches(const std::string& link);
   void applyJointEffort(const std::string& joint, double effort, int64_t start_ns, int64_t duration_ns);
   void clearJointEfforts(const std::string& joint);
+
+  // set_joint_properties, from the next step on; std::invalid_argument for a value the plant cannot
+  // take (negative damping or fmax, a NaN-free value that is not finite), nothing changed then.
+  void setJointProperties(const std::string& joint, const JointProperties& properties);
+  // get/set_link_properties. Setting: std::invalid_argument for values no link can have (not finite,
+  // a negative mass or moment, beyond the plant's limits), nothing changed then. The link's mass and
+  // inertia change its body's (the links fixed together), its gravity from the next step on; a new
+  // centre of mass is not taken (the link keeps its own; Bullet's body frame is built on it) and the
+  // body keeps its centre of mass and principal axes: what that leaves out is returned, a sentence
+  // each ("" when all is taken).
+  LinkProperties linkProperties(const std::string& link) const;
+  std::string setLinkProperties(const std::string& link, const LinkProperties& properties);
 
   // At rest and taken out of the step until something wakes it (a moving body's touch, a wrench or
   // effort, a new state or gravity), as ODE's auto-disable takes Gazebo's resting bodies out. Only

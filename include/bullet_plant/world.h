@@ -27,6 +27,17 @@ struct Contact
   double depth = 0;
 };
 
+// One of the world's lights as gazebo_ros's light services reach it (World::light, setLight): the
+// sun, its directional light (`directional`: cameras are lit by its direction, in white, with its
+// shadows where the scene has them; its colour and attenuation are kept and reported back, model://sun's
+// until set), or a point or spot light, which cameras render as world_description.h says.
+struct WorldLight
+{
+  bool directional = false;
+  LightDescription light;     // name, colour, attenuation; position and direction (spot, sun) in the world
+  bool cast_shadows = true;   // the sun's; point and spot lights cast none
+};
+
 class World
 {
 public:
@@ -61,6 +72,13 @@ public:
   int solverIterations() const;
   double solverRelaxation() const;
   double contactSurfaceLayer() const;
+  // The fastest a contact pushes a penetration out, m/s (contact_max_correcting_vel).
+  double contactMaxCorrectingVel() const;
+  // set_physics_properties' ODE settings the solver has, from the next step on: passes (1 ..
+  // kMaxSolverIterations), over-relaxation (strictly between 0 and 2), surface layer (0 .. 1 m) and
+  // max correcting velocity (>= 0 m/s), the ranges a world file's <physics><ode> takes. Throws
+  // std::invalid_argument naming the first value out of range; nothing is changed then.
+  void setSolverSettings(int iterations, double relaxation, double surface_layer, double max_correcting_vel);
   int64_t timeNs() const;         // simulated time
   double time() const;
   uint64_t steps() const;
@@ -102,6 +120,19 @@ public:
   bool paused() const;
   void resetSimulation();  // time to 0, robots to their spawn poses and joint positions
   void resetWorld();       // robots to their spawn poses; time goes on
+
+  // The lights by name, gazebo_ros's get_light_properties, set_light_properties and delete_light:
+  // the sun first (if there still is one), then the point and spot lights in file order. A change
+  // shows in every camera frame rendered from then on. light: false for no such light. setLight
+  // sets the light named light.light.name (its kind stays; a zero direction leaves the direction
+  // as it was): false for no such light; throws std::invalid_argument naming a value that is not
+  // finite or an attenuation that lights nothing (negative, or all three 0). removeLight: false
+  // for no such light; without the sun, cameras are lit by the scene's ambient light and the
+  // point and spot lights alone.
+  std::vector<std::string> lightNames() const;
+  bool light(const std::string& name, WorldLight& out) const;
+  bool setLight(const WorldLight& light);
+  bool removeLight(const std::string& name);
 
   // Every contact at the end of the last step (what gzclient's contact view draws, Gazebo's
   // ~/physics/contacts), those of a pair of collisions one after the other.

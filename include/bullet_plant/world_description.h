@@ -79,6 +79,7 @@ struct WorldDescription
   // <magnetic_field> (tesla, world frame): SDF's default, Gazebo's for its magnetometer sensors.
   urdf::Vector3 magnetic_field{5.5645e-6, 22.8758e-6, -42.3884e-6};
   urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
+  std::string sun_name = "sun";  // the directional <light>'s name (model://sun's: sun), as gazebo_ros names it
   // <scene>: what cameras see where nothing is hit, and the share of light a surface facing away
   // from the sun still gets (the mean of <ambient>'s red, green and blue).
   Rgba background{0.70f, 0.80f, 0.95f, 1.0f};

@@ -1,6 +1,9 @@
 #include "gazebo_ros_api_plugin.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include <gazebo_msgs/ContactsState.h>
@@ -112,23 +115,97 @@ std::string rootElement(const std::string& xml)
 GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private_nh)
   : plant_(plant), world_(plant.world()), nh_(private_nh)
 {
-  advertiseServices();
-  model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
-  link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
-  scene_pub_ = nh_.advertise<std_msgs::String>("scene", 1, true);
-  // What viewers pose the scene by (gzclient gets poses throttled too): link_states at ~scene_rate.
-  scene_link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("scene_link_states", 1);
-  // And every contact (gzclient's contact view) on ~scene_contacts at the same rate.
-  scene_contacts_pub_ = nh_.advertise<gazebo_msgs::ContactsState>("scene_contacts", 1);
+  // gazebo_ros's Load(): the parameter, then advertiseServices() only with the ROS network on.
+  nh_.param("enable_ros_network", enable_ros_network_, true);
+  if (enable_ros_network_)
+  {
+    advertiseServices();
+    model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
+    link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
+    // gazebo_ros's physics reconfigure: its first callback, from setCallback here, reads the physics
+    // (the simulation thread has not started yet).
+    physics_reconfigure_.reset(new dynamic_reconfigure::Server<tianracer_description::PhysicsConfig>(nh_));
+    physics_reconfigure_->setCallback(
+        [this](tianracer_description::PhysicsConfig& config, uint32_t level) { physicsReconfigure(config, level); });
+  }
+  else
+    ROS_INFO("ROS gazebo topics/services are disabled (~enable_ros_network false)");
   const int64_t scene_period_ns = periodNsOfRate(nh_.param("scene_rate", kDefaultSceneRate));
   scene_link_states_gate_.setPeriodNs(scene_period_ns);
   scene_contacts_gate_.setPeriodNs(scene_period_ns);
-  publishScene();  // the world's; again after each spawn and delete, the only ways robots come and go
+  watchForViewers();
   plant_.connectWorldUpdateEnd([this] {
     publishModelStates();
     publishLinkStates();
     publishSceneContacts();
   });
+}
+
+// ------------------------------------------------------------------------------ the viewers' topics
+
+namespace
+{
+constexpr double kViewerWatchPeriod = 1.0;  // s of wall time
+
+// Whether the master's system state lists `node`s on `topic` in one of its lists (publishers,
+// subscribers): [[topic, [node, ...]], ...].
+bool listed(XmlRpc::XmlRpcValue& list, const std::string& topic)
+{
+  if (list.getType() != XmlRpc::XmlRpcValue::TypeArray)
+    return false;
+  for (int i = 0; i < list.size(); ++i)
+  {
+    XmlRpc::XmlRpcValue& entry = list[i];
+    if (entry.getType() == XmlRpc::XmlRpcValue::TypeArray && entry.size() == 2 &&
+        entry[0].getType() == XmlRpc::XmlRpcValue::TypeString && static_cast<std::string>(entry[0]) == topic &&
+        entry[1].getType() == XmlRpc::XmlRpcValue::TypeArray && entry[1].size() > 0)
+      return true;
+  }
+  return false;
+}
+}  // namespace
+
+bool GazeboRosApiPlugin::aViewerAsks() const
+{
+  XmlRpc::XmlRpcValue args, result, payload;
+  args[0] = ros::this_node::getName();
+  if (!ros::master::execute("getSystemState", args, result, payload, false) ||
+      payload.getType() != XmlRpc::XmlRpcValue::TypeArray || payload.size() < 2)
+    return false;
+  for (const char* topic : {"scene", "scene_link_states", "scene_contacts"})
+    if (listed(payload[1], nh_.resolveName(topic)))
+      return true;
+  return listed(payload[0], nh_.resolveName("step_physics"));
+}
+
+void GazeboRosApiPlugin::watchForViewers()
+{
+  viewer_watch_ = nh_.createWallTimer(ros::WallDuration(kViewerWatchPeriod), [this](const ros::WallTimerEvent&) {
+    if (viewers_asked_ || !aViewerAsks())
+      return;
+    viewers_asked_ = true;
+    viewer_watch_.stop();
+    plant_.post([this] { advertiseViewerTopics(); });
+  });
+}
+
+void GazeboRosApiPlugin::advertiseViewerTopics()
+{
+  scene_pub_ = nh_.advertise<std_msgs::String>("scene", 1, true);
+  // What viewers pose the scene by (gzclient gets poses throttled too): link_states at ~scene_rate.
+  scene_link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("scene_link_states", 1);
+  // And every contact (gzclient's contact view) on ~scene_contacts at the same rate.
+  scene_contacts_pub_ = nh_.advertise<gazebo_msgs::ContactsState>("scene_contacts", 1);
+  // gzclient's step button, which Gazebo serves over its own transport (WorldControl's multi_step):
+  // that many physics iterations, while paused.
+  subscribers_.push_back(nh_.subscribe<std_msgs::UInt32>("step_physics", 10, [this](const std_msgs::UInt32::ConstPtr& msg) {
+    const uint32_t iterations = msg->data;
+    plant_.post([this, iterations] { plant_.requestSteps(iterations); });
+  }));
+  ROS_INFO("a viewer asked: %s, %s, %s and %s are up", scene_pub_.getTopic().c_str(),
+           scene_link_states_pub_.getTopic().c_str(), scene_contacts_pub_.getTopic().c_str(),
+           subscribers_.back().getTopic().c_str());
+  publishScene();  // the world's; again after each spawn and delete, the only ways robots come and go
 }
 
 template <class Srv>
@@ -168,6 +245,12 @@ void GazeboRosApiPlugin::advertiseServices()
   advertiseOnSimThread<gazebo_msgs::BodyRequest>("clear_body_wrenches", &GazeboRosApiPlugin::clearBodyWrenches);
   advertiseOnSimThread<gazebo_msgs::ApplyJointEffort>("apply_joint_effort", &GazeboRosApiPlugin::applyJointEffort);
   advertiseOnSimThread<gazebo_msgs::JointRequest>("clear_joint_forces", &GazeboRosApiPlugin::clearJointForces);
+  advertiseOnSimThread<gazebo_msgs::SetJointProperties>("set_joint_properties", &GazeboRosApiPlugin::setJointProperties);
+  advertiseOnSimThread<gazebo_msgs::GetLinkProperties>("get_link_properties", &GazeboRosApiPlugin::getLinkProperties);
+  advertiseOnSimThread<gazebo_msgs::SetLinkProperties>("set_link_properties", &GazeboRosApiPlugin::setLinkProperties);
+  advertiseOnSimThread<gazebo_msgs::GetLightProperties>("get_light_properties", &GazeboRosApiPlugin::getLightProperties);
+  advertiseOnSimThread<gazebo_msgs::SetLightProperties>("set_light_properties", &GazeboRosApiPlugin::setLightProperties);
+  advertiseOnSimThread<gazebo_msgs::DeleteLight>("delete_light", &GazeboRosApiPlugin::deleteLight);
 
   // gazebo_ros's topics for the same two requests: queued, nobody waits for them.
   subscribers_.push_back(nh_.subscribe<gazebo_msgs::ModelState>(
@@ -184,12 +267,6 @@ void GazeboRosApiPlugin::advertiseServices()
           updateLinkState(*msg, message);
         });
       }));
-  // Not gazebo_ros's: gzclient's step button, which Gazebo serves over its own transport
-  // (WorldControl's multi_step). That many physics iterations, while paused.
-  subscribers_.push_back(nh_.subscribe<std_msgs::UInt32>("step_physics", 10, [this](const std_msgs::UInt32::ConstPtr& msg) {
-    const uint32_t iterations = msg->data;
-    plant_.post([this, iterations] { plant_.requestSteps(iterations); });
-  }));
 }
 
 // ------------------------------------------------------------------------------ spawn and delete
@@ -563,34 +640,361 @@ bool GazeboRosApiPlugin::getPhysicsProperties(gazebo_msgs::GetPhysicsProperties:
   res.ode_config.sor_pgs_iters = world_.solverIterations();
   res.ode_config.sor_pgs_w = world_.solverRelaxation();
   res.ode_config.contact_surface_layer = world_.contactSurfaceLayer();
-  res.ode_config.contact_max_correcting_vel = world_.description().contact_max_correcting_vel;
+  res.ode_config.contact_max_correcting_vel = world_.contactMaxCorrectingVel();
   res.success = true;
   res.status_message = "GetPhysicsProperties: got properties";
+  return true;
+}
+
+void GazeboRosApiPlugin::sayNotHonoured(const std::string& name, const std::string& why)
+{
+  if (said_not_honoured_.insert(name).second)
+    ROS_WARN("%s is not honoured: %s (said once)", name.c_str(), why.c_str());
+}
+
+bool GazeboRosApiPlugin::applyPhysics(const gazebo_msgs::SetPhysicsProperties::Request& req, std::string& message)
+{
+  // Every value checked before anything changes.
+  if (!std::isfinite(req.max_update_rate))
+  {
+    message = "max_update_rate must be a number (0: as fast as possible)";
+    return false;
+  }
+  if (!(req.time_step >= kMinStepSize && req.time_step <= kMaxStepSize))
+  {
+    std::ostringstream text;
+    text << "time step " << req.time_step << " s is outside [" << kMinStepSize << ", " << kMaxStepSize << "] s";
+    message = text.str();
+    return false;
+  }
+  if (!std::isfinite(req.gravity.x) || !std::isfinite(req.gravity.y) || !std::isfinite(req.gravity.z))
+  {
+    message = "gravity must be finite";
+    return false;
+  }
+  const gazebo_msgs::ODEPhysics& ode = req.ode_config;
+  if (ode.sor_pgs_iters > uint32_t(kMaxSolverIterations))
+  {
+    message = "sor_pgs_iters " + std::to_string(ode.sor_pgs_iters) + " is not a number of solver passes from 1 to " +
+              std::to_string(kMaxSolverIterations);
+    return false;
+  }
+  try
+  {
+    // The ODE settings the plant's solver has (it checks them all before it changes one).
+    world_.setSolverSettings(int(ode.sor_pgs_iters), ode.sor_pgs_w, ode.contact_surface_layer,
+                             ode.contact_max_correcting_vel);
+    world_.setTimeStep(req.time_step);
+    world_.setGravity(urdf::Vector3(req.gravity.x, req.gravity.y, req.gravity.z));
+  }
+  catch (const std::exception& e)
+  {
+    message = e.what();
+    return false;
+  }
+  plant_.setRealTimeFactor(req.max_update_rate > 0 ? req.max_update_rate * world_.timeStep() : 0.0);
+  // ODE's own, which the plant's solver has no counterpart of: what get_physics_properties reports
+  // for them is all they can be.
+  if (ode.auto_disable_bodies)
+    sayNotHonoured("ode_config.auto_disable_bodies", "resting bodies sleep by the plant's own rule "
+                                                     "(docs/gazebo_compatibility.md)");
+  const std::pair<const char*, double> ode_only[] = {{"ode_config.sor_pgs_precon_iters", ode.sor_pgs_precon_iters},
+                                                     {"ode_config.sor_pgs_rms_error_tol", ode.sor_pgs_rms_error_tol},
+                                                     {"ode_config.cfm", ode.cfm},
+                                                     {"ode_config.erp", ode.erp},
+                                                     {"ode_config.max_contacts", ode.max_contacts}};
+  for (const auto& setting : ode_only)
+    if (setting.second != 0)
+      sayNotHonoured(setting.first, "ODE's, which the plant's solver has no counterpart of");
   return true;
 }
 
 bool GazeboRosApiPlugin::setPhysicsProperties(gazebo_msgs::SetPhysicsProperties::Request& req,
                                               gazebo_msgs::SetPhysicsProperties::Response& res)
 {
-  res.success = false;
-  if (!std::isfinite(req.max_update_rate))
+  std::string message;
+  res.success = applyPhysics(req, message);
+  res.status_message = res.success ? "physics engine updated" : "SetPhysicsProperties: " + message + "; nothing was changed";
+  return true;
+}
+
+void GazeboRosApiPlugin::physicsReconfigure(tianracer_description::PhysicsConfig& config, uint32_t)
+{
+  auto fromPhysics = [this](tianracer_description::PhysicsConfig& config) {
+    gazebo_msgs::GetPhysicsProperties::Request req;
+    gazebo_msgs::GetPhysicsProperties::Response now;
+    getPhysicsProperties(req, now);
+    config.time_step = now.time_step;
+    config.max_update_rate = now.max_update_rate;
+    config.gravity_x = now.gravity.x;
+    config.gravity_y = now.gravity.y;
+    config.gravity_z = now.gravity.z;
+    config.auto_disable_bodies = now.ode_config.auto_disable_bodies;
+    config.sor_pgs_precon_iters = int(now.ode_config.sor_pgs_precon_iters);
+    config.sor_pgs_iters = int(now.ode_config.sor_pgs_iters);
+    config.sor_pgs_w = now.ode_config.sor_pgs_w;
+    config.sor_pgs_rms_error_tol = now.ode_config.sor_pgs_rms_error_tol;
+    config.cfm = now.ode_config.cfm;
+    config.erp = now.ode_config.erp;
+    config.contact_surface_layer = now.ode_config.contact_surface_layer;
+    config.contact_max_correcting_vel = now.ode_config.contact_max_correcting_vel;
+    config.max_contacts = int(now.ode_config.max_contacts);
+  };
+  if (!physics_reconfigure_initialized_)
   {
-    res.status_message = "SetPhysicsProperties: max_update_rate must be a number (0: as fast as possible)";
+    fromPhysics(config);  // the constructor's call: the simulation thread is not running yet
+    physics_reconfigure_initialized_ = true;
+    return;
+  }
+  plant_.onSimThread<bool>([&] {
+    tianracer_description::PhysicsConfig now = config;
+    fromPhysics(now);
+    // gazebo_ros's rule: anything that differs from the physics sends the whole config.
+    const bool changed =
+        config.time_step != now.time_step || config.max_update_rate != now.max_update_rate ||
+        config.gravity_x != now.gravity_x || config.gravity_y != now.gravity_y || config.gravity_z != now.gravity_z ||
+        config.auto_disable_bodies != now.auto_disable_bodies || config.sor_pgs_precon_iters != now.sor_pgs_precon_iters ||
+        config.sor_pgs_iters != now.sor_pgs_iters || config.sor_pgs_w != now.sor_pgs_w ||
+        config.sor_pgs_rms_error_tol != now.sor_pgs_rms_error_tol || config.cfm != now.cfm || config.erp != now.erp ||
+        config.contact_surface_layer != now.contact_surface_layer ||
+        config.contact_max_correcting_vel != now.contact_max_correcting_vel || config.max_contacts != now.max_contacts;
+    if (!changed)
+      return true;
+    gazebo_msgs::SetPhysicsProperties::Request req;
+    req.time_step = config.time_step;
+    req.max_update_rate = config.max_update_rate;
+    req.gravity.x = config.gravity_x;
+    req.gravity.y = config.gravity_y;
+    req.gravity.z = config.gravity_z;
+    req.ode_config.auto_disable_bodies = config.auto_disable_bodies;
+    req.ode_config.sor_pgs_precon_iters = uint32_t(std::max(0, config.sor_pgs_precon_iters));
+    req.ode_config.sor_pgs_iters = uint32_t(std::max(0, config.sor_pgs_iters));
+    req.ode_config.sor_pgs_w = config.sor_pgs_w;
+    req.ode_config.sor_pgs_rms_error_tol = config.sor_pgs_rms_error_tol;
+    req.ode_config.cfm = config.cfm;
+    req.ode_config.erp = config.erp;
+    req.ode_config.contact_surface_layer = config.contact_surface_layer;
+    req.ode_config.contact_max_correcting_vel = config.contact_max_correcting_vel;
+    req.ode_config.max_contacts = uint32_t(std::max(0, config.max_contacts));
+    std::string message;
+    if (applyPhysics(req, message))
+      ROS_INFO("physics dynamics reconfigure update complete");
+    else
+    {
+      // parameter_updates then says what the physics still is.
+      ROS_ERROR("physics dynamics reconfigure refused: %s; nothing was changed", message.c_str());
+      config = now;
+    }
+    return true;
+  });
+}
+
+// ------------------------------------------------------------------------------ joint and link properties
+
+bool GazeboRosApiPlugin::setJointProperties(gazebo_msgs::SetJointProperties::Request& req,
+                                            gazebo_msgs::SetJointProperties::Response& res)
+{
+  // Upstream's: the first model with a joint of that name (Model::GetJoint: its name or its scoped
+  // name, model::joint).
+  Robot* owner = nullptr;
+  std::string joint;
+  for (Robot* robot : world_.robots())
+  {
+    for (const std::string& name : robot->jointNames())
+      if (name == req.joint_name || robot->name() + "::" + name == req.joint_name)
+      {
+        owner = robot;
+        joint = name;
+        break;
+      }
+    if (owner)
+      break;
+  }
+  if (!owner)
+  {
+    res.success = false;
+    res.status_message = "SetJointProperties: joint not found";
     return true;
   }
+  const gazebo_msgs::ODEJointProperties& ode = req.ode_joint_config;
+  // The plant's joints have one axis (ball joints none it sets): index 0 of each list.
+  auto first = [](const std::vector<double>& values) {
+    return values.empty() ? std::numeric_limits<double>::quiet_NaN() : values[0];
+  };
+  JointProperties properties;
+  properties.damping = first(ode.damping);
+  properties.upper = first(ode.hiStop);
+  properties.lower = first(ode.loStop);
+  properties.fmax = first(ode.fmax);
+  properties.vel = first(ode.vel);
   try
   {
-    world_.setTimeStep(req.time_step);
-    world_.setGravity(urdf::Vector3(req.gravity.x, req.gravity.y, req.gravity.z));
+    owner->setJointProperties(joint, properties);
   }
   catch (const std::exception& e)
   {
-    res.status_message = std::string("SetPhysicsProperties: ") + e.what() + "; nothing was changed";
+    res.success = false;
+    res.status_message = std::string("SetJointProperties: ") + e.what();
     return true;
   }
-  plant_.setRealTimeFactor(req.max_update_rate > 0 ? req.max_update_rate * world_.timeStep() : 0.0);
+  const std::pair<const char*, const std::vector<double>*> ode_only[] = {
+      {"ode_joint_config.erp", &ode.erp}, {"ode_joint_config.cfm", &ode.cfm},
+      {"ode_joint_config.stop_erp", &ode.stop_erp}, {"ode_joint_config.stop_cfm", &ode.stop_cfm},
+      {"ode_joint_config.fudge_factor", &ode.fudge_factor}};
+  for (const auto& setting : ode_only)
+    if (!setting.second->empty())
+      sayNotHonoured(setting.first, "ODE's constraint softness, which the plant's joint rows have no counterpart of");
+  for (const std::vector<double>* values : {&ode.damping, &ode.hiStop, &ode.loStop, &ode.fmax, &ode.vel})
+    if (values->size() > 1)
+      sayNotHonoured("set_joint_properties beyond a joint's first axis", "the plant's joints have one axis");
   res.success = true;
-  res.status_message = "physics engine updated";
+  res.status_message = "SetJointProperties: properties set";
+  return true;
+}
+
+bool GazeboRosApiPlugin::getLinkProperties(gazebo_msgs::GetLinkProperties::Request& req,
+                                           gazebo_msgs::GetLinkProperties::Response& res)
+{
+  const LinkRef link = findLink(world_, req.link_name);
+  if (!link)
+  {
+    res.success = false;
+    res.status_message = "GetLinkProperties: link not found, did you forget to scope the link by model name?";
+    return true;
+  }
+  const LinkProperties p = link.robot->linkProperties(link.link);
+  res.gravity_mode = p.gravity;
+  res.mass = p.mass;
+  res.ixx = p.ixx;
+  res.iyy = p.iyy;
+  res.izz = p.izz;
+  res.ixy = p.ixy;
+  res.ixz = p.ixz;
+  res.iyz = p.iyz;
+  res.com.position.x = p.com.x;
+  res.com.position.y = p.com.y;
+  res.com.position.z = p.com.z;
+  res.com.orientation.w = 1;  // upstream's: no rotated inertia
+  res.success = true;
+  res.status_message = "GetLinkProperties: got properties";
+  return true;
+}
+
+bool GazeboRosApiPlugin::setLinkProperties(gazebo_msgs::SetLinkProperties::Request& req,
+                                           gazebo_msgs::SetLinkProperties::Response& res)
+{
+  const LinkRef link = findLink(world_, req.link_name);
+  if (!link)
+  {
+    res.success = false;
+    res.status_message = "SetLinkProperties: link not found, did you forget to scope the link by model name?";
+    return true;
+  }
+  LinkProperties p;
+  p.mass = req.mass;
+  p.com = urdf::Vector3(req.com.position.x, req.com.position.y, req.com.position.z);
+  p.ixx = req.ixx;
+  p.ixy = req.ixy;
+  p.ixz = req.ixz;
+  p.iyy = req.iyy;
+  p.iyz = req.iyz;
+  p.izz = req.izz;
+  p.gravity = req.gravity_mode;
+  try
+  {
+    const std::string left_out = link.robot->setLinkProperties(link.link, p);
+    if (!left_out.empty())
+      ROS_WARN("SetLinkProperties: %s: %s", req.link_name.c_str(), left_out.c_str());
+  }
+  catch (const std::exception& e)
+  {
+    res.success = false;
+    res.status_message = std::string("SetLinkProperties: ") + e.what();
+    return true;
+  }
+  res.success = true;
+  res.status_message = "SetLinkProperties: properties set";
+  return true;
+}
+
+// ------------------------------------------------------------------------------ lights
+
+bool GazeboRosApiPlugin::getLightProperties(gazebo_msgs::GetLightProperties::Request& req,
+                                            gazebo_msgs::GetLightProperties::Response& res)
+{
+  WorldLight light;
+  if (!world_.light(req.light_name, light))
+  {
+    res.success = false;
+    res.status_message = "getLightProperties: Requested light " + req.light_name + " not found!";
+    return true;
+  }
+  res.diffuse.r = light.light.diffuse.r;
+  res.diffuse.g = light.light.diffuse.g;
+  res.diffuse.b = light.light.diffuse.b;
+  res.diffuse.a = light.light.diffuse.a;
+  res.attenuation_constant = light.light.constant;
+  res.attenuation_linear = light.light.linear;
+  res.attenuation_quadratic = light.light.quadratic;
+  res.success = true;  // upstream says nothing more
+  return true;
+}
+
+bool GazeboRosApiPlugin::setLightProperties(gazebo_msgs::SetLightProperties::Request& req,
+                                            gazebo_msgs::SetLightProperties::Response& res)
+{
+  WorldLight light;
+  if (!world_.light(req.light_name, light))
+  {
+    res.success = false;
+    res.status_message = "setLightProperties: Requested light " + req.light_name + " not found!";
+    return true;
+  }
+  // Upstream's: every field of the request replaces the light's (its message to the renderer).
+  light.cast_shadows = req.cast_shadows;
+  light.light.diffuse = {float(req.diffuse.r), float(req.diffuse.g), float(req.diffuse.b), float(req.diffuse.a)};
+  light.light.constant = req.attenuation_constant;
+  light.light.linear = req.attenuation_linear;
+  light.light.quadratic = req.attenuation_quadratic;
+  const urdf::Vector3 direction(req.direction.x, req.direction.y, req.direction.z);
+  if (light.directional)
+    light.light.direction = direction;  // a directional light's pose is not used, as the plant reads a world's
+  else
+  {
+    const urdf::Pose pose = fromMsg(req.pose);  // a zero quaternion is the identity
+    light.light.position = pose.position;
+    light.light.direction = rotate(pose.rotation, direction);
+  }
+  try
+  {
+    world_.setLight(light);
+  }
+  catch (const std::exception& e)
+  {
+    res.success = false;
+    res.status_message = std::string("setLightProperties: ") + e.what();
+    return true;
+  }
+  if (req.specular.r != 0 || req.specular.g != 0 || req.specular.b != 0)
+    sayNotHonoured("set_light_properties' specular", "the cameras render no specular light");
+  if (!light.directional && req.cast_shadows)
+    sayNotHonoured("set_light_properties' cast_shadows for a point or spot light", "only the sun casts shadows here");
+  publishScene();
+  res.success = true;
+  return true;
+}
+
+bool GazeboRosApiPlugin::deleteLight(gazebo_msgs::DeleteLight::Request& req, gazebo_msgs::DeleteLight::Response& res)
+{
+  if (!world_.removeLight(req.light_name))
+  {
+    res.success = false;
+    res.status_message = "DeleteLight: Requested light " + req.light_name + " not found!";
+    return true;
+  }
+  publishScene();
+  res.success = true;
+  res.status_message = "DeleteLight: " + req.light_name + " successfully deleted";
   return true;
 }
 
@@ -749,6 +1153,8 @@ void GazeboRosApiPlugin::publishSceneContacts()
 
 void GazeboRosApiPlugin::publishScene()
 {
+  if (!scene_pub_)
+    return;
   std_msgs::String scene;
   scene.data = sceneJson(sceneOf(world_));
   scene_pub_.publish(scene);

@@ -1,21 +1,32 @@
 // gazebo_ros's simulator interface (GazeboRosApiPlugin, Noetic) over the plant: the /gazebo/...
 // services with their success flags and status messages (docs/interfaces.md section 10), the
-// model_states and link_states topics and the set_model_state / set_link_state topics. One member
-// function per service, named as upstream's, wired in advertiseServices(). Every request is
-// answered on the simulation thread, between steps; the spawn and delete services hand their
-// work to RosPlant, which does the same.
+// model_states and link_states topics, the set_model_state / set_link_state topics and the physics'
+// dynamic_reconfigure (set_parameters, parameter_descriptions, parameter_updates), all of it left out
+// with ~enable_ros_network false as Gazebo leaves it out. One member function per service, named as
+// upstream's, wired in advertiseServices(). Every request is answered on the simulation thread,
+// between steps; the spawn and delete services hand their work to RosPlant, which does the same.
+// Beside them the plant's own topics for viewers (~scene, ~scene_link_states, ~scene_contacts,
+// ~step_physics), advertised once a node asks for one of them, so that without a viewer the graph is
+// gazebo_ros's own.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <gazebo_msgs/ApplyBodyWrench.h>
 #include <gazebo_msgs/ApplyJointEffort.h>
 #include <gazebo_msgs/BodyRequest.h>
+#include <gazebo_msgs/DeleteLight.h>
 #include <gazebo_msgs/DeleteModel.h>
+#include <dynamic_reconfigure/server.h>
 #include <gazebo_msgs/GetJointProperties.h>
+#include <gazebo_msgs/GetLightProperties.h>
+#include <gazebo_msgs/GetLinkProperties.h>
 #include <gazebo_msgs/GetLinkState.h>
 #include <gazebo_msgs/GetModelProperties.h>
 #include <gazebo_msgs/GetModelState.h>
@@ -25,6 +36,9 @@
 #include <gazebo_msgs/JointRequest.h>
 #include <gazebo_msgs/LinkState.h>
 #include <gazebo_msgs/ModelState.h>
+#include <gazebo_msgs/SetJointProperties.h>
+#include <gazebo_msgs/SetLightProperties.h>
+#include <gazebo_msgs/SetLinkProperties.h>
 #include <gazebo_msgs/SetLinkState.h>
 #include <gazebo_msgs/SetModelConfiguration.h>
 #include <gazebo_msgs/SetModelState.h>
@@ -32,6 +46,7 @@
 #include <gazebo_msgs/SpawnModel.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
+#include <tianracer_description/PhysicsConfig.h>
 
 #include "bullet_plant/rate_gate.h"
 
@@ -43,7 +58,9 @@ class World;
 class GazeboRosApiPlugin
 {
 public:
-  // Advertises in the node's private namespace (/gazebo when the node is named gazebo).
+  // Advertises in the node's private namespace (/gazebo when the node is named gazebo); with the
+  // parameter ~enable_ros_network false (empty_world.launch's argument), none of gazebo_ros's services
+  // and topics, as Gazebo: /clock (RosPlant's) and roscpp's logger services stay.
   GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private_nh);
   // After each step, on the simulation thread: model and link states while someone subscribes
   // (every step, as gazebo_ros publishes them on each world update).
@@ -59,7 +76,7 @@ public:
   // state per pair of collisions, collision1's forces) at ~scene_rate while subscribed, for viewers.
   void publishSceneContacts();
   // ~scene (latched): what a viewer draws (bullet_plant/scene.h), on the simulation thread (or
-  // before it runs).
+  // before it runs); nothing before a viewer asked for the viewers' topics.
   void publishScene();
 
 private:
@@ -98,6 +115,31 @@ private:
   bool clearBodyWrenches(gazebo_msgs::BodyRequest::Request& req, gazebo_msgs::BodyRequest::Response& res);
   bool applyJointEffort(gazebo_msgs::ApplyJointEffort::Request& req, gazebo_msgs::ApplyJointEffort::Response& res);
   bool clearJointForces(gazebo_msgs::JointRequest::Request& req, gazebo_msgs::JointRequest::Response& res);
+  bool setJointProperties(gazebo_msgs::SetJointProperties::Request& req, gazebo_msgs::SetJointProperties::Response& res);
+  bool getLinkProperties(gazebo_msgs::GetLinkProperties::Request& req, gazebo_msgs::GetLinkProperties::Response& res);
+  bool setLinkProperties(gazebo_msgs::SetLinkProperties::Request& req, gazebo_msgs::SetLinkProperties::Response& res);
+  bool getLightProperties(gazebo_msgs::GetLightProperties::Request& req,
+                          gazebo_msgs::GetLightProperties::Response& res);
+  bool setLightProperties(gazebo_msgs::SetLightProperties::Request& req,
+                          gazebo_msgs::SetLightProperties::Response& res);
+  bool deleteLight(gazebo_msgs::DeleteLight::Request& req, gazebo_msgs::DeleteLight::Response& res);
+
+  // set_physics_properties' work, for the service and the reconfigure alike: false with the reason
+  // in `message` when a value is refused, and nothing changed then.
+  bool applyPhysics(const gazebo_msgs::SetPhysicsProperties::Request& req, std::string& message);
+  // gazebo_ros's physicsReconfigureCallback: the first call (from the constructor, before the
+  // simulation runs) fills the config from the physics; a later one (set_parameters) applies the
+  // config on the simulation thread when it differs from the physics.
+  void physicsReconfigure(tianracer_description::PhysicsConfig& config, uint32_t level);
+  // A warning, once per name, for a setting the plant does not honour.
+  void sayNotHonoured(const std::string& name, const std::string& why);
+
+  // Every second until a node subscribes to ~scene, ~scene_link_states or ~scene_contacts, or
+  // publishes on ~step_physics (the master's system state): then advertiseViewerTopics on the
+  // simulation thread, once.
+  void watchForViewers();
+  bool aViewerAsks() const;
+  void advertiseViewerTopics();
 
   // set_model_state and set_link_state, service and topic alike: whether the state was set;
   // `message` is gazebo_ros's status message either way.
@@ -107,6 +149,12 @@ private:
   RosPlant& plant_;
   World& world_;
   ros::NodeHandle nh_;
+  bool enable_ros_network_ = true;
+  std::unique_ptr<dynamic_reconfigure::Server<tianracer_description::PhysicsConfig>> physics_reconfigure_;
+  bool physics_reconfigure_initialized_ = false;
+  std::set<std::string> said_not_honoured_;
+  ros::WallTimer viewer_watch_;
+  std::atomic<bool> viewers_asked_{false};
   std::vector<ros::ServiceServer> services_;
   std::vector<ros::Subscriber> subscribers_;
   gazebo_msgs::LinkStates linkStates();

@@ -26,6 +26,7 @@ int main(int argc, char** argv)
           "  ~pub_clock_frequency  /clock rate in Hz (default 100)\n"
           "  ~paused               start paused (default false)\n"
           "  ~iterations           simulate this many steps, then stop (default 0: until shut down)\n"
+          "  ~enable_ros_network   false: none of gazebo_ros's services and topics, as Gazebo (default true)\n"
           "Services and topics: gazebo_ros's (~spawn_urdf_model, ~get_model_state, ~model_states, ...; docs/gazebo_compatibility.md)\n");
       return 0;
     }

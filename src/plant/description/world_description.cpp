@@ -467,6 +467,8 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     {
       std::vector<double> d = xml::numbers(xml::childText(light, "direction", "-0.5 0.1 -0.9"), 3, "<light><direction>");
       world.light_direction = urdf::Vector3(d[0], d[1], d[2]);
+      if (light->Attribute("name"))
+        world.sun_name = light->Attribute("name");
     }
     else if (type == "point" || type == "spot")
       world.lights.push_back(readLocalLight(light, type == "spot", world));

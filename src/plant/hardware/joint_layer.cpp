@@ -106,8 +106,10 @@ void passiveDynamics(std::vector<MovableJoint>& joints, btMultiBody& mb, double 
       else
         torque -= j.spring_stiffness * stretch;
     }
-    if (j.dry_friction)
-      j.dry_friction->drive(0.0, kInf, j.friction * dt);
+    if (j.dry_friction && j.friction > 0)
+      j.dry_friction->drive(j.friction_velocity, kInf, j.friction * dt);
+    else if (j.dry_friction)
+      j.dry_friction->disable();
     if (j.limits.has_position)
       limitRows(j, q, qd, dt);
     if (torque != 0.0)

@@ -32,6 +32,9 @@ struct MovableJoint
   double spring_stiffness = 0.0, spring_reference = 0.0;
   std::unique_ptr<JointDrive> spring;          // the spring where an explicit effort would not do (robot_builder.cpp)
   std::unique_ptr<JointDrive> dry_friction;    // URDF <dynamics friction>
+  // ODE's joint motor, which Gazebo's <dynamics friction> is (dParamFMax with dParamVel 0): at most
+  // `friction` towards this velocity (set_joint_properties' vel; 0: dry friction).
+  double friction_velocity = 0.0;
   std::unique_ptr<JointDrive> lower_limit, upper_limit;  // rows only while the joint is at a limit
   double axis_inertia = 0.0;                   // the child body's inertia about the joint axis
   double explicit_effort = 0.0;                // actuator torque applied explicitly this step

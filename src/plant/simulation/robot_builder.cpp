@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <sstream>
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/params.h"
@@ -209,55 +210,70 @@ void warnOfMassRatio(Robot::Internals& r)
   r.world->log.warn(text.str());
 }
 
+// A body's links' inertials together: their mass, centre of mass and inertia about it, in the body's
+// URDF frame.
+struct BodyMass
+{
+  double mass = 0.0;
+  btVector3 com{0, 0, 0};
+  btMatrix3x3 inertia{0, 0, 0, 0, 0, 0, 0, 0, 0};
+};
+
+BodyMass sumBodyMass(const Robot::Internals& r, const LinkPlacement& placement, size_t bi)
+{
+  const urdf::ModelInterface& model = *r.description.model;
+  BodyMass sum;
+  btVector3 weighted(0, 0, 0);
+  for (const auto& kv : placement)
+  {
+    urdf::LinkConstSharedPtr link = model.getLink(kv.first);
+    if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
+      continue;
+    sum.mass += link->inertial->mass;
+    weighted += kv.second.second * toBullet(link->inertial->origin.position) * btScalar(link->inertial->mass);
+  }
+  // Below the minimum the body gets kMinimumMass at its frame: a mass of 1e-40 kg would divide
+  // by a single-precision zero.
+  sum.com = sum.mass >= kMinimumMass ? weighted / btScalar(sum.mass) : btVector3(0, 0, 0);
+  for (const auto& kv : placement)
+  {
+    urdf::LinkConstSharedPtr link = model.getLink(kv.first);
+    if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
+      continue;
+    const btTransform& in_body = kv.second.second;
+    btMatrix3x3 R = in_body.getBasis();
+    btMatrix3x3 own = R * inertiaInLink(*link->inertial) * R.transpose();
+    btVector3 d = in_body * toBullet(link->inertial->origin.position) - sum.com;
+    btScalar m = btScalar(link->inertial->mass);
+    btMatrix3x3 shift(d.dot(d) - d.x() * d.x(), -d.x() * d.y(), -d.x() * d.z(),
+                      -d.y() * d.x(), d.dot(d) - d.y() * d.y(), -d.y() * d.z(),
+                      -d.z() * d.x(), -d.z() * d.y(), d.dot(d) - d.z() * d.z());
+    for (int i = 0; i < 3; ++i)
+      sum.inertia[i] += own[i] + shift[i] * m;
+  }
+  return sum;
+}
+
 // 2. Mass properties of each body (its links' inertials together), then its principal frame.
 void massProperties(Robot::Internals& r, const LinkPlacement& placement, bool world_rooted)
 {
-  const urdf::ModelInterface& model = *r.description.model;
   for (size_t bi = 0; bi < r.multibody.bodies.size(); ++bi)
   {
     Body& body = r.multibody.bodies[bi];
-    double mass = 0.0;
-    btVector3 weighted(0, 0, 0);
-    for (const auto& kv : placement)
-    {
-      urdf::LinkConstSharedPtr link = model.getLink(kv.first);
-      if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
-        continue;
-      mass += link->inertial->mass;
-      weighted += kv.second.second * toBullet(link->inertial->origin.position) * btScalar(link->inertial->mass);
-    }
-    // Below the minimum the body gets kMinimumMass at its frame: a mass of 1e-40 kg would divide
-    // by a single-precision zero.
-    btVector3 com = mass >= kMinimumMass ? weighted / btScalar(mass) : btVector3(0, 0, 0);
-    btMatrix3x3 I(0, 0, 0, 0, 0, 0, 0, 0, 0);
-    for (const auto& kv : placement)
-    {
-      urdf::LinkConstSharedPtr link = model.getLink(kv.first);
-      if (kv.second.first != int(bi) || !link->inertial || link->inertial->mass <= 0)
-        continue;
-      const btTransform& in_body = kv.second.second;
-      btMatrix3x3 R = in_body.getBasis();
-      btMatrix3x3 own = R * inertiaInLink(*link->inertial) * R.transpose();
-      btVector3 d = in_body * toBullet(link->inertial->origin.position) - com;
-      btScalar m = btScalar(link->inertial->mass);
-      btMatrix3x3 shift(d.dot(d) - d.x() * d.x(), -d.x() * d.y(), -d.x() * d.z(),
-                        -d.y() * d.x(), d.dot(d) - d.y() * d.y(), -d.y() * d.z(),
-                        -d.z() * d.x(), -d.z() * d.y(), d.dot(d) - d.z() * d.z());
-      for (int i = 0; i < 3; ++i)
-        I[i] += own[i] + shift[i] * m;
-    }
-    if (mass < kMinimumMass && !(bi == 0 && world_rooted))
+    BodyMass sum = sumBodyMass(r, placement, bi);
+    if (sum.mass < kMinimumMass && !(bi == 0 && world_rooted))
     {
       r.world->log.warn("link '" + body.link + "' of '" + r.name + "' (with the links fixed to it) has no mass; "
                         "the plant gives it " + std::to_string(kMinimumMass) + " kg");
-      mass = kMinimumMass;
+      sum.mass = kMinimumMass;
     }
     btMatrix3x3 principal;
+    btMatrix3x3 I = sum.inertia;
     I.diagonalize(principal, btScalar(1e-12), 32);
-    body.mass = mass;
+    body.mass = sum.mass;
     for (int i = 0; i < 3; ++i)
       body.inertia_diagonal[i] = std::max(I[i][i], btScalar(kMinimumInertia));
-    body.urdf_from_com = btTransform(principal, com);
+    body.urdf_from_com = btTransform(principal, sum.com);
   }
   warnOfMassRatio(r);
 }
@@ -280,7 +296,10 @@ void partialGravity(Robot::Internals& r, const LinkPlacement& placement)
   for (const auto& kv : placement)
     any_off = any_off || !physicsOf(r, kv.first).gravity;
   if (!any_off)
+  {
+    r.multibody.partial_gravity.reset();
     return;
+  }
   const std::vector<Body>& bodies = r.multibody.bodies;
   auto partial = std::make_unique<PartialGravity>();
   partial->mass.assign(bodies.size(), 0);
@@ -660,25 +679,13 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
     mb->setJointPos(j.link, btScalar(j.initial_position));
 
     j.axis_inertia = axis_inertia[bi];
-    auto add = [&](std::unique_ptr<JointDrive>& drive) { drive.reset(new JointDrive(r.world->dynamics.get(), mb, j.link)); };
-    add(j.drive);
-    if (j.damping > 0 && !explicitDampingStable(j, r.world->step_s))
-      add(j.damper);
     auto spring = r.description.joint_springs.find(j.name);
     if (spring != r.description.joint_springs.end())
     {
       j.spring_stiffness = spring->second.stiffness;
       j.spring_reference = spring->second.reference;
-      if (j.spring_stiffness > 0 && !explicitSpringAccurate(j, r.world->step_s))
-        add(j.spring);
     }
-    if (j.friction > 0)
-      add(j.dry_friction);
-    if (j.limits.has_position)
-    {
-      add(j.lower_limit);
-      add(j.upper_limit);
-    }
+    updateJointRows(r, j);
     r.multibody.joint_index[j.name] = r.multibody.joints.size();
     r.multibody.joints.push_back(std::move(j));
   }
@@ -1000,6 +1007,120 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   for (const std::string& e : r.description.errors)
     r.world->log.error(r.name + ": " + e);
   r.recovery.last_good.save(r.multibody);
+}
+
+void updateJointRows(Robot::Internals& r, MovableJoint& j)
+{
+  btMultiBody* mb = r.multibody.bullet.get();
+  auto add = [&](std::unique_ptr<JointDrive>& drive) {
+    if (!drive)
+      drive.reset(new JointDrive(r.world->dynamics.get(), mb, j.link));
+  };
+  add(j.drive);
+  if (j.damping > 0 && !explicitDampingStable(j, r.world->step_s))
+    add(j.damper);
+  if (j.spring_stiffness > 0 && !explicitSpringAccurate(j, r.world->step_s))
+    add(j.spring);
+  if (j.friction > 0)
+    add(j.dry_friction);
+  if (j.limits.has_position)
+  {
+    add(j.lower_limit);
+    add(j.upper_limit);
+  }
+  else
+    for (JointDrive* limit : {j.lower_limit.get(), j.upper_limit.get()})
+      if (limit)
+        limit->disable();
+}
+
+namespace
+{
+// Each link's body and its frame in that body's URDF frame, as planBodies found them.
+LinkPlacement placementOf(const Robot::Internals& r)
+{
+  LinkPlacement placement;
+  for (const auto& kv : r.multibody.link_in_body)
+    placement[kv.first] = {kv.second.first,
+                           r.multibody.bodies[size_t(kv.second.first)].urdf_from_com * kv.second.second};
+  return placement;
+}
+}  // namespace
+
+void updateBodyMass(Robot::Internals& r, int body_index, std::string& note)
+{
+  Body& body = r.multibody.bodies[size_t(body_index)];
+  btMultiBody& mb = *r.multibody.bullet;
+  const LinkPlacement placement = placementOf(r);
+  BodyMass sum = sumBodyMass(r, placement, size_t(body_index));
+  const bool world_rooted = r.description.model->getRoot()->name == "world";
+  if (sum.mass < kMinimumMass && !(body_index == 0 && world_rooted))
+  {
+    note += " The body of link '" + body.link + "' would have no mass: the plant gives it " +
+            formatNumber(kMinimumMass) + " kg.";
+    sum.mass = kMinimumMass;
+  }
+  // Bullet's body frame is the centre of mass on its principal axes as built: moving it would move
+  // every collider, visual and sensor mount of the body. The inertia is taken about it, along it.
+  const btVector3 shift = sum.com - body.urdf_from_com.getOrigin();
+  if (shift.length() > btScalar(1e-6))
+  {
+    std::ostringstream text;
+    text << " The centre of mass of the body of link '" << body.link << "' would move " << shift.length()
+         << " m; the plant keeps it where it was built, the inertia taken about it.";
+    note += text.str();
+    const btVector3& d = shift;
+    const btScalar m = btScalar(sum.mass);
+    sum.inertia += btMatrix3x3(d.dot(d) - d.x() * d.x(), -d.x() * d.y(), -d.x() * d.z(),
+                               -d.y() * d.x(), d.dot(d) - d.y() * d.y(), -d.y() * d.z(),
+                               -d.z() * d.x(), -d.z() * d.y(), d.dot(d) - d.z() * d.z()) * m;
+  }
+  const btMatrix3x3 axes = body.urdf_from_com.getBasis();
+  const btMatrix3x3 local = axes.transpose() * sum.inertia * axes;
+  btScalar diagonal = 0, off = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      (i == k ? diagonal : off) = std::max(i == k ? diagonal : off, std::abs(local[i][k]));
+  if (off > btScalar(1e-6) * diagonal)
+    note += " The principal axes of the body of link '" + body.link + "' would turn; the plant keeps the axes it "
+            "was built with (the inertia's products about them are left out).";
+  body.mass = sum.mass;
+  for (int i = 0; i < 3; ++i)
+    body.inertia_diagonal[i] = std::max(local[i][i], btScalar(kMinimumInertia));
+  if (body_index == 0)
+  {
+    mb.setBaseMass(btScalar(body.mass));
+    mb.setBaseInertia(body.inertia_diagonal);
+  }
+  else
+  {
+    btMultibodyLink& link = mb.getLink(body_index - 1);
+    link.m_mass = btScalar(body.mass);
+    link.m_inertiaLocal = body.inertia_diagonal;
+    // The joint into the body: its inertia about the axis decides which rows it needs.
+    for (MovableJoint& j : r.multibody.joints)
+      if (j.link == body_index - 1)
+      {
+        const btVector3& pivot_to_com = link.m_dVector;
+        if (j.type == JointType::Prismatic)
+          j.axis_inertia = body.mass;
+        else
+        {
+          const btVector3 axis = link.getAxisTop(0);
+          const btVector3 lever = pivot_to_com - axis * axis.dot(pivot_to_com);
+          j.axis_inertia = axis.dot(body.inertia_diagonal * axis) + body.mass * lever.length2();
+        }
+        updateJointRows(r, j);
+      }
+  }
+  warnOfMassRatio(r);
+  updatePartialGravity(r);
+}
+
+void updatePartialGravity(Robot::Internals& r)
+{
+  partialGravity(r, placementOf(r));
+  r.multibody.bullet->setUserPointer(r.multibody.partial_gravity.get());
 }
 
 void detachFromPhysics(Robot::Internals& r)

@@ -27,6 +27,17 @@ ContactSurface contactSurface(const SurfaceDescription& surface, const btMatrix3
 
 void buildRobot(Robot::Internals& robot, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints);
 void removeRobot(Robot::Internals& robot);
+// A movable joint's constraint rows as its dynamics need them now: the drive, an implicit damper or
+// spring where an explicit one would be unstable, the dry friction motor, the limits (disabled when
+// it has none). At build, and after set_joint_properties or a mass change.
+void updateJointRows(Robot::Internals& robot, MovableJoint& joint);
+// After the URDF inertials of one of the body's links changed (set_link_properties): the body's mass
+// and inertia from its links', taken about the centre of mass and along the axes it was built with
+// (Bullet's body frame, which its colliders, visuals and sensor mounts hang from, stays; what that
+// leaves out is said in `note`, a sentence each), its joint's rows, and the gravity its links feel.
+void updateBodyMass(Robot::Internals& robot, int body, std::string& note);
+// After which links feel gravity changed (LinkPhysics::gravity): the multibody's partial gravity.
+void updatePartialGravity(Robot::Internals& robot);
 // Takes the robot's multibody, colliders and rows out of the dynamics world, leaving the rest (its
 // controller manager, handles, last state) in place; removeRobot may follow.
 void detachFromPhysics(Robot::Internals& robot);

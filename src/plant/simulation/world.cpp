@@ -264,6 +264,28 @@ int64_t World::timeStepNs() const { return in_->step_ns; }
 int World::solverIterations() const { return in_->dynamics->getSolverInfo().m_numIterations; }
 double World::solverRelaxation() const { return in_->dynamics->getSolverInfo().m_sor; }
 double World::contactSurfaceLayer() const { return in_->dynamics->getSolverInfo().m_linearSlop; }
+double World::contactMaxCorrectingVel() const { return in_->description.contact_max_correcting_vel; }
+
+void World::setSolverSettings(int iterations, double relaxation, double surface_layer, double max_correcting_vel)
+{
+  if (!(iterations >= 1 && iterations <= kMaxSolverIterations))
+    throw std::invalid_argument("sor_pgs_iters " + std::to_string(iterations) + " is not a number of solver passes "
+                                "from 1 to " + std::to_string(kMaxSolverIterations));
+  if (!(relaxation > 0 && relaxation < 2))
+    throw std::invalid_argument("sor_pgs_w " + formatNumber(relaxation) + " is outside (0, 2), where over-relaxation "
+                                "converges");
+  if (!(surface_layer >= 0 && surface_layer <= 1))
+    throw std::invalid_argument("contact_surface_layer " + formatNumber(surface_layer) + " is outside [0, 1] m");
+  if (!(max_correcting_vel >= 0 && std::isfinite(max_correcting_vel)))
+    throw std::invalid_argument("contact_max_correcting_vel " + formatNumber(max_correcting_vel) +
+                                " is not a finite speed >= 0 m/s");
+  btContactSolverInfo& info = in_->dynamics->getSolverInfo();
+  info.m_numIterations = iterations;
+  info.m_sor = btScalar(relaxation);
+  info.m_linearSlop = btScalar(surface_layer);
+  in_->description.contact_max_correcting_vel = max_correcting_vel;
+  in_->solver->setMaxCorrectingVelocity(btScalar(max_correcting_vel));
+}
 
 void World::setTimeStep(double seconds)
 {
@@ -592,7 +614,9 @@ void World::Internals::collectFrames()
 
 Lighting World::Internals::lighting() const
 {
-  return Lighting::of(description.light_direction, description.ambient, description.background, description.shadows,
+  // Without its sun (delete_light) a world is lit by the ambient light and its local lights alone.
+  return Lighting::of(sun.present ? description.light_direction : urdf::Vector3(0, 0, 0), description.ambient,
+                      description.background, description.shadows && sun.present && sun.cast_shadows,
                       description.lights);
 }
 
