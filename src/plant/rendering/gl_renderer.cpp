@@ -13,32 +13,31 @@ namespace bullet_plant
 {
 namespace
 {
-// The light is worked out per vertex: on a flat face every vertex has the face's normal and sees
-// the same side of it (n . (p - camera) is the same for every point p of the plane), so the face's
-// lit value is exact; on a curved surface's fine facets it is interpolated between the surface's
-// normals. The face the camera sees is lit by the directional light over the ambient term. The
-// depth along the optical axis and the shadow maps' coordinates are affine in the position, so
-// their perspective-correct interpolation is exact.
-// Point and spot lights are worked out per pixel (a lamp over a floor of two triangles lights a
-// patch no vertex sees), in the fragment shader, from the world position and the normal on the
-// side the camera sees.
+// The sun's diffuse share is worked out per vertex: on a flat face every vertex has the face's
+// normal and sees the same side of it (n . (p - camera) is the same for every point p of the plane),
+// so the face's value is exact; on a curved surface's fine facets it is interpolated between the
+// surface's normals. The depth along the optical axis and the shadow maps' coordinates are affine in
+// the position, so their perspective-correct interpolation is exact. The other lights, and every
+// light's specular share (it follows the direction to the camera), are worked out per pixel, as
+// OGRE's per-pixel lighting does them, from the world position and the normal on the side the
+// camera sees.
 // The camera program's shaders, after "#version 300 es" and the defines STATIC_SHADOWS,
-// MOVING_SHADOWS and LOCAL_LIGHTS (0 or 1): a frame without shadows or lamps pays nothing for them.
+// MOVING_SHADOWS, LIGHTS and SPECULAR (0 or 1): a frame (or a draw) without shadows, lamps or a
+// specular surface pays nothing for them.
 const char* const kVertexShader = R"(
+#define PER_PIXEL (LIGHTS || SPECULAR)
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
-layout(location = 2) in vec4 colour;
 layout(location = 3) in vec2 uv;
 uniform mat4 clip_from_body;
 uniform mat4 world_from_body;
 uniform vec3 camera_origin;
 uniform vec3 camera_forward;
-uniform vec3 towards_light;
-uniform float ambient;
-out float diffuse;
+uniform vec3 towards_sun;  // zero: no sun
+uniform vec3 sun_diffuse;
+out vec3 sun_light;        // the sun's diffuse light on the face the camera sees
 out float depth_along_axis;
 out vec2 texture_uv;
-flat out vec4 face_colour;
 #if STATIC_SHADOWS
 uniform mat4 static_shadow_from_world;
 out vec3 static_shadow_coordinates;
@@ -47,7 +46,7 @@ out vec3 static_shadow_coordinates;
 uniform mat4 moving_shadow_from_world;
 out vec3 moving_shadow_coordinates;
 #endif
-#if LOCAL_LIGHTS
+#if PER_PIXEL
 out vec3 world_position;
 out vec3 seen_normal;  // the world normal on the side the camera sees (zero for a degenerate one)
 #endif
@@ -58,7 +57,7 @@ void main()
   vec3 world_normal = mat3(world_from_body) * normal;
   float length_n = length(world_normal);
   float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
-  diffuse = (1.0 - ambient) * (length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_light) / length_n) : 0.0);
+  sun_light = sun_diffuse * (length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_sun) / length_n) : 0.0);
   depth_along_axis = dot(ray, camera_forward);
 #if STATIC_SHADOWS
   static_shadow_coordinates = (static_shadow_from_world * world).xyz;
@@ -66,30 +65,34 @@ void main()
 #if MOVING_SHADOWS
   moving_shadow_coordinates = (moving_shadow_from_world * world).xyz;
 #endif
-#if LOCAL_LIGHTS
+#if PER_PIXEL
   world_position = world.xyz;
   seen_normal = length_n > 0.0 ? facing * world_normal / length_n : vec3(0.0);
 #endif
   texture_uv = uv;
-  face_colour = colour;
   gl_Position = clip_from_body * vec4(position, 1.0);
 }
 )";
 
 // The colour rounded to bytes by the GL (the noise is added on the CPU), and the depth into a float
-// attachment, read back only when wanted. In a shadow the light's diffuse share is gone and the
-// ambient stays (Gazebo's shading); a shadow map's lookup is the 2 x 2 texels' comparisons,
-// filtered (hardware PCF, as Gazebo's), and what lies outside a map is not shadowed by it.
+// attachment, read back only when wanted. In the sun's shadow every light's diffuse and specular
+// share is gone and the ambient and emissive light stay (Gazebo's integrated PSSM shadows:
+// ambient + (lit - ambient) x shadow); a face turned away from the sun is in no shadow; a shadow
+// map's lookup is the 2 x 2 texels' comparisons, filtered (hardware PCF), and what lies outside a
+// map is not shadowed by it. The texture modulates
+// the ambient and diffuse light, the specular light is added after it (OGRE's colour_op modulate,
+// its RTSS adding the specular at the end).
 const char* const kFragmentShader = R"(
+#define PER_PIXEL (LIGHTS || SPECULAR)
 precision highp float;
 precision highp sampler2DShadow;
-in float diffuse;
+in vec3 sun_light;
 in float depth_along_axis;
 in vec2 texture_uv;
-flat in vec4 face_colour;
 uniform sampler2D image;
 uniform bool textured;
-uniform float ambient;
+uniform vec3 material_base;     // emissive + scene ambient x material ambient
+uniform vec4 material_diffuse;  // its alpha: the opacity
 #if STATIC_SHADOWS
 in vec3 static_shadow_coordinates;
 uniform sampler2DShadow static_shadow;
@@ -98,50 +101,25 @@ uniform sampler2DShadow static_shadow;
 in vec3 moving_shadow_coordinates;
 uniform sampler2DShadow moving_shadow;
 #endif
-#if LOCAL_LIGHTS
+#if PER_PIXEL
 in vec3 world_position;
 in vec3 seen_normal;
+uniform vec3 camera_origin;
+#endif
+#if SPECULAR
+uniform vec3 towards_sun;
+uniform vec3 sun_specular;
+uniform vec3 material_specular;
+uniform float shininess;
+#endif
+#if LIGHTS
 uniform int light_count;
-uniform vec3 light_position[8];
-uniform vec3 light_colour[8];
-uniform vec3 light_direction[8];    // a spot's axis; zero for a point light
+uniform vec4 light_position[8];     // x y z, kind: 0 directional, 1 point, 2 spot
+uniform vec3 light_direction[8];    // the way it shines
+uniform vec3 light_diffuse[8];
+uniform vec3 light_specular[8];
 uniform vec4 light_attenuation[8];  // range, constant, linear, quadratic
 uniform vec3 light_spot[8];         // cos(inner / 2), cos(outer / 2), falloff
-// OGRE's per-pixel point and spot light: diffuse * (n . l) / (constant + linear d + quadratic d^2)
-// within range, times a spot's ((rho - cos(outer/2)) / (cos(inner/2) - cos(outer/2)))^falloff.
-vec3 localLight()
-{
-  vec3 sum = vec3(0.0);
-  float length_n = length(seen_normal);
-  if (length_n == 0.0)
-    return sum;
-  vec3 n = seen_normal / length_n;
-  for (int i = 0; i < light_count; ++i)
-  {
-    vec3 to_light = light_position[i] - world_position;
-    float d = length(to_light);
-    vec4 a = light_attenuation[i];
-    if (d > a.x || d == 0.0)
-      continue;
-    vec3 l = to_light / d;
-    float lambert = max(0.0, dot(n, l));
-    float spot = 1.0;
-    if (dot(light_direction[i], light_direction[i]) > 0.0)
-    {
-      float rho = dot(-l, light_direction[i]);
-      float inner = light_spot[i].x, outer = light_spot[i].y;
-      if (rho < outer)
-        spot = 0.0;
-      else if (inner > outer)
-      {
-        spot = clamp((rho - outer) / (inner - outer), 0.0, 1.0);
-        spot = light_spot[i].z > 0.0 ? pow(spot, light_spot[i].z) : 1.0;
-      }
-    }
-    sum += light_colour[i] * (lambert * spot / (a.y + a.z * d + a.w * d * d));
-  }
-  return sum;
-}
 #endif
 layout(location = 0) out vec4 colour;
 layout(location = 1) out float depth;
@@ -153,9 +131,56 @@ float lightThrough(sampler2DShadow map, vec3 at)
 }
 void main()
 {
+  vec3 diffuse_light = sun_light;
+  vec3 specular_light = vec3(0.0);
+#if PER_PIXEL
+  float length_n = length(seen_normal);
+  vec3 n = length_n > 0.0 ? seen_normal / length_n : vec3(0.0);
+  vec3 to_eye = normalize(camera_origin - world_position);
+#endif
+#if SPECULAR
+  if (dot(n, towards_sun) > 0.0)
+    specular_light = sun_specular * pow(max(0.0, dot(n, normalize(towards_sun + to_eye))), shininess);
+#endif
+#if LIGHTS
+  // OGRE's per-pixel point, spot and directional lights
+  for (int i = 0; i < light_count; ++i)
+  {
+    vec4 a = light_attenuation[i];
+    vec3 l;
+    float share = 1.0;
+    if (light_position[i].w == 0.0)
+      l = -light_direction[i];
+    else
+    {
+      vec3 to_light = light_position[i].xyz - world_position;
+      float d = length(to_light);
+      l = to_light / max(d, 1e-20);
+      share = d <= a.x ? 1.0 / (a.y + a.z * d + a.w * d * d) : 0.0;
+      if (light_position[i].w == 2.0)
+      {
+        float rho = dot(-l, light_direction[i]);
+        float inner = light_spot[i].x, outer = light_spot[i].y;
+        float spot = rho < outer ? 0.0 : inner > outer ? clamp((rho - outer) / (inner - outer), 0.0, 1.0) : 1.0;
+        share *= light_spot[i].z > 0.0 ? pow(spot, light_spot[i].z) : step(outer, rho);
+      }
+    }
+    float n_l = dot(n, l);
+    if (n_l > 0.0)
+    {
+      diffuse_light += light_diffuse[i] * (n_l * share);
+#if SPECULAR
+      specular_light += light_specular[i] * (pow(max(0.0, dot(n, normalize(l + to_eye))), shininess) * share);
+#endif
+    }
+  }
+#endif
   float light = 1.0;
 #if STATIC_SHADOWS || MOVING_SHADOWS
-  if (diffuse > 0.0)
+  // only a face the sun shines on can lie in a shadow: Gazebo draws its casters' back faces into
+  // the maps (OGRE's shadow_caster_render_back_faces), so a face turned away from the sun is level
+  // with its own map depth, not behind it
+  if (any(greaterThan(sun_light, vec3(0.0))))
   {
 #if STATIC_SHADOWS
     light *= lightThrough(static_shadow, static_shadow_coordinates);
@@ -166,12 +191,12 @@ void main()
   }
 #endif
   // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
-  vec3 base = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)).rgb : face_colour.rgb;
-#if LOCAL_LIGHTS
-  colour = vec4(base * (ambient + diffuse * light + localLight()), 1.0);
-#else
-  colour = vec4(base * (ambient + diffuse * light), 1.0);
+  vec4 texel = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)) : vec4(1.0);
+  vec3 lit = (material_base + material_diffuse.rgb * diffuse_light * light) * texel.rgb;
+#if SPECULAR
+  lit += material_specular * specular_light * light;
 #endif
+  colour = vec4(lit, material_diffuse.a * texel.a);
   depth = depth_along_axis;
 }
 )";
@@ -320,7 +345,11 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
     primitive.frame.apply(in, at);
     out.xyz.insert(out.xyz.end(), {float(at[0]), float(at[1]), float(at[2])});
   };
-  auto colour = [&](const Rgba& c) { out.colour.insert(out.colour.end(), {c.r, c.g, c.b, c.a}); };
+  // a primitive's triangles are all of its one material (index 0)
+  bool primitive_textured = false;
+  if (primitive.kind != Shape::Kind::Mesh)
+    out.materials.push_back(primitive.surfaceMaterial(-1, primitive_textured));
+  auto colour = [&](int) { out.material.push_back(0); };
   if (primitive.kind == Shape::Kind::Box)
   {
     const double* h = primitive.half;
@@ -337,7 +366,7 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
       {
         for (int k : triangle)
           vertex(face[k][0] * h[0], face[k][1] * h[1], face[k][2] * h[2]);
-        colour(primitive.colour);
+        colour(0);
       }
   }
   else if (primitive.kind == Shape::Kind::Plane)
@@ -350,7 +379,7 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
       const float* v = &vertices[3 * size_t(indices[i])];
       vertex(v[0], v[1], v[2]);
       if (i % 3 == 2)
-        colour(primitive.colour);
+        colour(0);
     }
   }
   else if (primitive.kind == Shape::Kind::Sphere || primitive.kind == Shape::Kind::Cylinder ||
@@ -375,8 +404,8 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
                     const std::array<double, 6>& d) {
       for (const auto* v : {&a, &b, &c, &a, &c, &d})
         at((*v)[0], (*v)[1], (*v)[2], (*v)[3], (*v)[4], (*v)[5]);
-      colour(primitive.colour);
-      colour(primitive.colour);
+      colour(0);
+      colour(0);
     };
     if (primitive.kind != Shape::Kind::Cylinder)
     {
@@ -427,7 +456,7 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
           at(0, 0, z, 0, 0, up);
           at(a[0], a[1], z, 0, 0, up);
           at(b[0], b[1], z, 0, 0, up);
-          colour(primitive.colour);
+          colour(0);
         }
       }
     }
@@ -435,8 +464,16 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
   else if (primitive.kind == Shape::Kind::Mesh && primitive.mesh)
   {
     const MeshData& mesh = *primitive.mesh;
-    const bool any_textured = !mesh.uvs.empty() && std::any_of(mesh.submeshes.begin(), mesh.submeshes.end(),
-                                                               [](const MeshData::SubMesh& s) { return bool(s.image); });
+    // each sub-mesh's material (the visual's applied to the file's), one entry per sub-mesh
+    std::vector<bool> sub_textured(mesh.submeshes.size());
+    for (size_t k = 0; k < mesh.submeshes.size(); ++k)
+    {
+      bool textured = false;
+      out.materials.push_back(primitive.surfaceMaterial(mesh.submeshes[k].first_triangle, textured));
+      sub_textured[k] = textured;
+    }
+    const bool any_textured = std::find(sub_textured.begin(), sub_textured.end(), true) != sub_textured.end();
+    size_t sub_index = 0;
     for (int t = 0; t < mesh.triangleCount(); ++t)
     {
       for (int k = 0; k < 3; ++k)
@@ -444,9 +481,11 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
         const float* v = &mesh.vertices[3 * size_t(mesh.indices[3 * size_t(t) + size_t(k)])];
         vertex(v[0], v[1], v[2]);
       }
-      const MeshData::SubMesh& sub = mesh.subMeshOf(t);
-      colour(sub.has_colour ? sub.diffuse : primitive.colour);
-      const bool textured = sub.image && !mesh.uvs.empty();
+      while (sub_index + 1 < mesh.submeshes.size() && t >= mesh.submeshes[sub_index + 1].first_triangle)
+        ++sub_index;
+      const MeshData::SubMesh& sub = mesh.submeshes[sub_index];
+      out.material.push_back(uint32_t(sub_index));
+      const bool textured = sub_textured[sub_index];
       if (any_textured)
       {
         out.texture.push_back(textured ? sub.image : nullptr);
@@ -476,31 +515,7 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
   }
   try
   {
-    for (int variant = 0; variant < kCameraPrograms; ++variant)
-    {
-      CameraProgram& p = camera_programs_[variant];
-      const std::string defines = std::string("#version 300 es\n#define STATIC_SHADOWS ") + char('0' + (variant & 1)) +
-                                  "\n#define MOVING_SHADOWS " + char('0' + ((variant >> 1) & 1)) +
-                                  "\n#define LOCAL_LIGHTS " + char('0' + (variant >> 2)) + "\n";
-      p.program = link(defines + kVertexShader, defines + kFragmentShader);
-      for (const auto& u : {std::make_pair(&p.clip_from_body, "clip_from_body"),
-                            std::make_pair(&p.world_from_body, "world_from_body"),
-                            std::make_pair(&p.textured, "textured"), std::make_pair(&p.image, "image"),
-                            std::make_pair(&p.camera_origin, "camera_origin"),
-                            std::make_pair(&p.camera_forward, "camera_forward"),
-                            std::make_pair(&p.towards_light, "towards_light"), std::make_pair(&p.ambient, "ambient"),
-                            std::make_pair(&p.static_shadow_from_world, "static_shadow_from_world"),
-                            std::make_pair(&p.moving_shadow_from_world, "moving_shadow_from_world"),
-                            std::make_pair(&p.static_shadow, "static_shadow"),
-                            std::make_pair(&p.moving_shadow, "moving_shadow"),
-                            std::make_pair(&p.light_count, "light_count"),
-                            std::make_pair(&p.light_position, "light_position"),
-                            std::make_pair(&p.light_colour, "light_colour"),
-                            std::make_pair(&p.light_direction, "light_direction"),
-                            std::make_pair(&p.light_attenuation, "light_attenuation"),
-                            std::make_pair(&p.light_spot, "light_spot")})
-        *u.first = glGetUniformLocation(p.program, u.second);
-    }
+    cameraProgram(0);  // the plainest: a GL that cannot build it fails here, not in a frame
     shadow_program_ = link(kShadowVertexShader, kShadowFragmentShader);
   }
   catch (const std::runtime_error&)
@@ -512,6 +527,38 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
   static_shadow_.size = kStaticShadowMapSize;
   moving_shadow_.size = kMovingShadowMapSize;
   context_.release();
+}
+
+GlRenderer::CameraProgram& GlRenderer::cameraProgram(int variant)
+{
+  CameraProgram& p = camera_programs_[variant];
+  if (p.program)
+    return p;
+  auto bit = [&](int flag) { return char('0' + ((variant & flag) ? 1 : 0)); };
+  const std::string defines = std::string("#version 300 es\n#define STATIC_SHADOWS ") + bit(kStaticShadows) +
+                              "\n#define MOVING_SHADOWS " + bit(kMovingShadows) + "\n#define LIGHTS " + bit(kLights) +
+                              "\n#define SPECULAR " + bit(kSpecular) + "\n";
+  p.program = link(defines + kVertexShader, defines + kFragmentShader);
+  for (const auto& u : {std::make_pair(&p.clip_from_body, "clip_from_body"),
+                        std::make_pair(&p.world_from_body, "world_from_body"), std::make_pair(&p.textured, "textured"),
+                        std::make_pair(&p.image, "image"), std::make_pair(&p.camera_origin, "camera_origin"),
+                        std::make_pair(&p.camera_forward, "camera_forward"), std::make_pair(&p.towards_sun, "towards_sun"),
+                        std::make_pair(&p.sun_diffuse, "sun_diffuse"), std::make_pair(&p.sun_specular, "sun_specular"),
+                        std::make_pair(&p.material_base, "material_base"),
+                        std::make_pair(&p.material_diffuse, "material_diffuse"),
+                        std::make_pair(&p.material_specular, "material_specular"),
+                        std::make_pair(&p.shininess, "shininess"),
+                        std::make_pair(&p.static_shadow_from_world, "static_shadow_from_world"),
+                        std::make_pair(&p.moving_shadow_from_world, "moving_shadow_from_world"),
+                        std::make_pair(&p.static_shadow, "static_shadow"), std::make_pair(&p.moving_shadow, "moving_shadow"),
+                        std::make_pair(&p.light_count, "light_count"), std::make_pair(&p.light_position, "light_position"),
+                        std::make_pair(&p.light_direction, "light_direction"),
+                        std::make_pair(&p.light_diffuse, "light_diffuse"),
+                        std::make_pair(&p.light_specular, "light_specular"),
+                        std::make_pair(&p.light_attenuation, "light_attenuation"),
+                        std::make_pair(&p.light_spot, "light_spot")})
+    *u.first = glGetUniformLocation(p.program, u.second);
+  return p;
 }
 
 GlRenderer::~GlRenderer()
@@ -536,7 +583,8 @@ GlRenderer::~GlRenderer()
     glDeleteFramebuffers(1, &map->framebuffer);
   }
   for (const CameraProgram& p : camera_programs_)
-    glDeleteProgram(p.program);
+    if (p.program)
+      glDeleteProgram(p.program);
   glDeleteProgram(shadow_program_);
   context_.release();
 }
@@ -557,7 +605,8 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
       const float* normal = &normals[9 * t + 3 * size_t(v)];
       vertices.insert(vertices.end(), p + 3 * v, p + 3 * v + 3);
       vertices.insert(vertices.end(), normal, normal + 3);
-      vertices.insert(vertices.end(), &triangles.colour[4 * t], &triangles.colour[4 * t] + 4);
+      const Rgba& diffuse = triangles.materials[triangles.material[t]].diffuse;
+      vertices.insert(vertices.end(), {diffuse.r, diffuse.g, diffuse.b, diffuse.a});
       if (triangles.uv.empty())
         vertices.insert(vertices.end(), {0.0f, 0.0f});
       else
@@ -571,11 +620,17 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
     mesh.lo[k % 3] = std::min(mesh.lo[k % 3], double(triangles.xyz[k]));
     mesh.hi[k % 3] = std::max(mesh.hi[k % 3], double(triangles.xyz[k]));
   }
+  mesh.materials = triangles.materials;
   for (size_t t = 0; t < count; ++t)
   {
     const unsigned texture = triangles.texture.empty() ? 0 : textureOf(triangles.texture[t]);
-    if (mesh.runs.empty() || mesh.runs.back().texture != texture)
-      mesh.runs.push_back(Run{int(3 * t), 0, texture});
+    const int material = int(triangles.material[t]);
+    if (mesh.runs.empty() || mesh.runs.back().texture != texture || mesh.runs.back().material != material)
+    {
+      const bool transparent = mesh.materials[size_t(material)].transparent();
+      mesh.runs.push_back(Run{int(3 * t), 0, texture, material, transparent});
+      mesh.any_transparent = mesh.any_transparent || transparent;
+    }
     mesh.runs.back().count += 3;
   }
   glGenVertexArrays(1, &mesh.vertex_array);
@@ -850,6 +905,161 @@ const GlRenderer::Target& GlRenderer::target(int width, int height)
   return targets_.back();
 }
 
+namespace
+{
+// The scene ambient light times a material's ambient, plus its emissive: what OGRE's RTSS calls the
+// derived scene colour, the light a surface shows in the dark.
+void materialBase(const Lighting& lighting, const Material& m, float out[3])
+{
+  const float ambient[3] = {m.ambient.r, m.ambient.g, m.ambient.b}, emissive[3] = {m.emissive.r, m.emissive.g, m.emissive.b};
+  for (int i = 0; i < 3; ++i)
+    out[i] = lighting.ambient[i] * ambient[i] + emissive[i];
+}
+
+// A specular share below a level of the image: left out (its shader variant costs a frame more
+// than it shows).
+constexpr float kSpecularFloor = 1.0f / 255.0f;
+}  // namespace
+
+void GlRenderer::selectLights(const Draw& d)
+{
+  frame_.lights.clear();
+  const Lighting& lighting = *frame_.lighting;
+  float specular = lighting.has_sun ? std::max({lighting.sun.specular[0], lighting.sun.specular[1],
+                                                lighting.sun.specular[2]})
+                                    : 0.0f;
+  if (!lighting.lights.empty())
+  {
+    // the mesh's bounding sphere in the world
+    const Mesh& mesh = meshes_.at(size_t(d.mesh));
+    const double centre[3] = {(mesh.lo[0] + mesh.hi[0]) / 2, (mesh.lo[1] + mesh.hi[1]) / 2, (mesh.lo[2] + mesh.hi[2]) / 2};
+    const double radius = 0.5 * std::hypot(mesh.hi[0] - mesh.lo[0], mesh.hi[1] - mesh.lo[1], mesh.hi[2] - mesh.lo[2]);
+    double at[3];
+    d.world_from_body.apply(centre, at);
+    std::vector<std::pair<double, int>> reach;
+    for (size_t i = 0; i < lighting.lights.size(); ++i)
+    {
+      const Lighting::Light& l = lighting.lights[i];
+      double distance = 0;  // a directional light: first, as OGRE sorts them
+      if (l.kind != Lighting::Light::Directional)
+      {
+        distance = std::hypot(l.position[0] - at[0], l.position[1] - at[1], l.position[2] - at[2]);
+        if (!(distance - radius <= l.attenuation[0]))  // out of range (or a mesh with no bounds)
+          continue;
+      }
+      reach.emplace_back(distance, int(i));
+    }
+    std::stable_sort(reach.begin(), reach.end());
+    const size_t room = Lighting::kMaxLights - (lighting.has_sun ? 1 : 0);
+    for (size_t k = 0; k < reach.size() && k < room; ++k)
+    {
+      const Lighting::Light& l = lighting.lights[size_t(reach[k].second)];
+      frame_.lights.push_back(reach[k].second);
+      // a lamp's specular at its brightest, 1 / constant (its attenuation's largest value)
+      const float strongest = l.kind == Lighting::Light::Directional ? 1.0f : 1.0f / std::max(l.attenuation[1], 1e-3f);
+      specular = std::max(specular, strongest * std::max({l.specular[0], l.specular[1], l.specular[2]}));
+    }
+  }
+  frame_.draw = ++draws_made_;
+  // remembered for drawRuns: the largest specular colour a surface of this draw can meet
+  frame_.strongest_specular = specular;
+}
+
+void GlRenderer::drawRuns(const Draw& d, bool transparent)
+{
+  const Mesh& mesh = meshes_.at(size_t(d.mesh));
+  if (transparent ? !mesh.any_transparent
+                  : std::all_of(mesh.runs.begin(), mesh.runs.end(), [](const Run& r) { return r.transparent; }))
+    return;
+  selectLights(d);
+  const Lighting& lighting = *frame_.lighting;
+  const PinholeCamera& camera = *frame_.camera;
+  const Frame& pose = *frame_.pose;
+  glBindVertexArray(mesh.vertex_array);
+  for (const Run& run : mesh.runs)
+  {
+    if (run.transparent != transparent)
+      continue;
+    const Material& m = mesh.materials[size_t(run.material)];
+    const bool specular = m.hasSpecular() &&
+                          frame_.strongest_specular * std::max({m.specular.r, m.specular.g, m.specular.b}) >= kSpecularFloor;
+    const int variant = (frame_.static_shadows ? kStaticShadows : 0) | (frame_.moving_shadows ? kMovingShadows : 0) |
+                        (frame_.lights.empty() ? 0 : kLights) | (specular ? kSpecular : 0);
+    CameraProgram& program = cameraProgram(variant);
+    if (frame_.program != variant)
+    {
+      glUseProgram(program.program);
+      frame_.program = variant;
+    }
+    if (program.frame != frame_.frame)  // the frame's uniforms
+    {
+      program.frame = frame_.frame;
+      program.lights.assign(1, -1);  // none given yet
+      const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
+      glUniform3f(program.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
+      glUniform3fv(program.camera_forward, 1, forward);
+      const float towards[3] = {float(lighting.towards_light[0]), float(lighting.towards_light[1]),
+                                float(lighting.towards_light[2])};
+      const float none[3] = {0, 0, 0};
+      glUniform3fv(program.towards_sun, 1, lighting.has_sun ? towards : none);
+      glUniform3fv(program.sun_diffuse, 1, lighting.has_sun ? lighting.sun.diffuse : none);
+      glUniform3fv(program.sun_specular, 1, lighting.has_sun ? lighting.sun.specular : none);
+      glUniform1i(program.image, 0);
+      if (frame_.static_shadows)
+      {
+        glUniform1i(program.static_shadow, 1);
+        glUniformMatrix4fv(program.static_shadow_from_world, 1, GL_FALSE, static_shadow_.texture_from_world);
+      }
+      if (frame_.moving_shadows)
+      {
+        glUniform1i(program.moving_shadow, 2);
+        glUniformMatrix4fv(program.moving_shadow_from_world, 1, GL_FALSE, moving_shadow_.texture_from_world);
+      }
+    }
+    if (program.draw != frame_.draw)  // the draw's
+    {
+      program.draw = frame_.draw;
+      glUniformMatrix4fv(program.clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, camera).m);
+      glUniformMatrix4fv(program.world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
+      if ((variant & kLights) && program.lights != frame_.lights)
+      {
+        program.lights = frame_.lights;
+        std::vector<float> position, direction, diffuse, specular_colour, attenuation, spot;
+        for (int i : frame_.lights)
+        {
+          const Lighting::Light& l = lighting.lights[size_t(i)];
+          position.insert(position.end(), {l.position[0], l.position[1], l.position[2], float(l.kind)});
+          direction.insert(direction.end(), l.direction, l.direction + 3);
+          diffuse.insert(diffuse.end(), l.diffuse, l.diffuse + 3);
+          specular_colour.insert(specular_colour.end(), l.specular, l.specular + 3);
+          attenuation.insert(attenuation.end(), l.attenuation, l.attenuation + 4);
+          spot.insert(spot.end(), l.spot, l.spot + 3);
+        }
+        const GLsizei n = GLsizei(frame_.lights.size());
+        glUniform1i(program.light_count, n);
+        glUniform4fv(program.light_position, n, position.data());
+        glUniform3fv(program.light_direction, n, direction.data());
+        glUniform3fv(program.light_diffuse, n, diffuse.data());
+        glUniform3fv(program.light_specular, n, specular_colour.data());
+        glUniform4fv(program.light_attenuation, n, attenuation.data());
+        glUniform3fv(program.light_spot, n, spot.data());
+      }
+    }
+    float base[3];
+    materialBase(lighting, m, base);
+    glUniform3fv(program.material_base, 1, base);
+    glUniform4f(program.material_diffuse, m.diffuse.r, m.diffuse.g, m.diffuse.b, m.diffuse.a);
+    if (specular)
+    {
+      glUniform3f(program.material_specular, m.specular.r, m.specular.g, m.specular.b);
+      glUniform1f(program.shininess, float(m.shininess));
+    }
+    glUniform1i(program.textured, run.texture != 0);
+    glBindTexture(GL_TEXTURE_2D, run.texture);
+    glDrawArrays(GL_TRIANGLES, run.first, run.count);
+  }
+}
+
 void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, const PinholeCamera& camera,
                         const Lighting& lighting, PinholeImage& out)
 {
@@ -883,67 +1093,62 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
     glClearBufferfv(GL_COLOR, 1, no_depth);
   const float farthest = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farthest);
-  const bool static_shadows = lighting.shadows && static_shadow_.used;
-  const bool moving_shadows = lighting.shadows && moving_shadow_.used;
-  const bool local_lights = !lighting.local.empty();
-  const CameraProgram& program = camera_programs_[int(static_shadows) + 2 * int(moving_shadows) + 4 * int(local_lights)];
-  glUseProgram(program.program);
-  if (local_lights)
+  frame_ = FrameState();
+  frame_.lighting = &lighting;
+  frame_.pose = &pose;
+  frame_.camera = &camera;
+  frame_.static_shadows = lighting.shadows && static_shadow_.used;
+  frame_.moving_shadows = lighting.shadows && moving_shadow_.used;
+  frame_.frame = ++frames_drawn_;
+  if (frame_.static_shadows)
   {
-    const GLsizei n = GLsizei(std::min(lighting.local.size(), Lighting::kMaxLocalLights));
-    std::vector<float> position, colour, direction, attenuation, spot;
-    for (GLsizei i = 0; i < n; ++i)
-    {
-      const Lighting::LocalLight& light = lighting.local[size_t(i)];
-      position.insert(position.end(), light.position, light.position + 3);
-      colour.insert(colour.end(), light.colour, light.colour + 3);
-      direction.insert(direction.end(), light.direction, light.direction + 3);
-      attenuation.insert(attenuation.end(), light.attenuation, light.attenuation + 4);
-      spot.insert(spot.end(), light.spot, light.spot + 3);
-    }
-    glUniform1i(program.light_count, n);
-    glUniform3fv(program.light_position, n, position.data());
-    glUniform3fv(program.light_colour, n, colour.data());
-    glUniform3fv(program.light_direction, n, direction.data());
-    glUniform4fv(program.light_attenuation, n, attenuation.data());
-    glUniform3fv(program.light_spot, n, spot.data());
-  }
-  const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
-  glUniform3f(program.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
-  glUniform3fv(program.camera_forward, 1, forward);
-  glUniform3f(program.towards_light, float(lighting.towards_light[0]), float(lighting.towards_light[1]),
-              float(lighting.towards_light[2]));
-  glUniform1f(program.ambient, float(lighting.ambient));
-  glUniform1i(program.image, 0);
-  if (static_shadows)
-  {
-    glUniform1i(program.static_shadow, 1);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, static_shadow_.texture);
-    glUniformMatrix4fv(program.static_shadow_from_world, 1, GL_FALSE, static_shadow_.texture_from_world);
   }
-  if (moving_shadows)
+  if (frame_.moving_shadows)
   {
-    glUniform1i(program.moving_shadow, 2);
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, moving_shadow_.texture);
-    glUniformMatrix4fv(program.moving_shadow_from_world, 1, GL_FALSE, moving_shadow_.texture_from_world);
   }
   glActiveTexture(GL_TEXTURE0);
+  bool any_transparent = false;
   for (const Draw& d : draws)
   {
     const Mesh& mesh = meshes_.at(size_t(d.mesh));
-    glUniformMatrix4fv(program.clip_from_body, 1, GL_FALSE, clipFromBody(pose, d.world_from_body, camera).m);
-    glUniformMatrix4fv(program.world_from_body, 1, GL_FALSE, fromFrame(d.world_from_body).m);
-    glBindVertexArray(mesh.vertex_array);
-    for (const Run& run : mesh.runs)
+    any_transparent = any_transparent || mesh.any_transparent;
+    drawRuns(d, false);
+  }
+  if (any_transparent)
+  {
+    // OGRE's transparent_alpha blending: after the opaque surfaces, farthest first (by the mesh's
+    // centre), writing no depth; the depth image keeps what lies behind.
+    std::vector<std::pair<double, const Draw*>> order;
+    for (const Draw& d : draws)
     {
-      glUniform1i(program.textured, run.texture != 0);
-      glBindTexture(GL_TEXTURE_2D, run.texture);
-      glDrawArrays(GL_TRIANGLES, run.first, run.count);
+      const Mesh& mesh = meshes_.at(size_t(d.mesh));
+      if (!mesh.any_transparent)
+        continue;
+      const double centre[3] = {(mesh.lo[0] + mesh.hi[0]) / 2, (mesh.lo[1] + mesh.hi[1]) / 2, (mesh.lo[2] + mesh.hi[2]) / 2};
+      double at[3];
+      d.world_from_body.apply(centre, at);
+      order.emplace_back(-std::hypot(at[0] - pose.t[0], at[1] - pose.t[1], at[2] - pose.t[2]), &d);
     }
+    std::stable_sort(order.begin(), order.end(),
+                     [](const std::pair<double, const Draw*>& a, const std::pair<double, const Draw*>& b) {
+                       return a.first < b.first;
+                     });
+    const GLenum colour_only[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+    glDrawBuffers(2, colour_only);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    for (const auto& o : order)
+      drawRuns(*o.second, true);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
   }
   glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0);
   // Read back: the rows come in the image's order (clipFromBody).
   const size_t pixels = size_t(camera.width) * size_t(camera.height);
   colour_pixels_.resize(pixels * 4);
