@@ -124,7 +124,7 @@ POST_URDF = """<robot name="post"><link name="post_link">
 POST_SDF = f"""<model name="post"><static>true</static><pose>{POST_X} 0 0.5 0 0 0</pose><link name="link">
   <collision name="collision"><geometry><box><size>0.1 0.1 1</size></box></geometry></collision>
   <visual name="visual"><geometry><box><size>0.5 0.5 1</size></box></geometry>
-    <material><diffuse>0 0 1 1</diffuse></material></visual></link></model>"""
+    <material><ambient>0 0 1 1</ambient><diffuse>0 0 1 1</diffuse></material></visual></link></model>"""
 
 
 @pytest.mark.parametrize('post_of', ['robot', 'world'])
@@ -295,7 +295,7 @@ def test_a_deleted_robot_leaves_the_frames_and_frees_what_cameras_drew_of_it(con
     while the steps go on (a frame in flight meets the deletion): once deleted it is in no frame, and
     the process's memory stays flat, its bodies' meshes freed from the GL with it (each cycle kept
     about 350 KB of vertex buffers before)."""
-    world = make_world(control_config, sdf_world())
+    world = make_world(control_config, sdf_world('<include><uri>model://sun</uri></include>'))
     watcher = world.spawn(urdf_xml, 'watcher')
     watcher.enable_sensor('camera')
     world.frames_ahead = True

@@ -146,11 +146,15 @@ void main() {
 `;
 
 const vector3 = (c) => new THREE.Vector3(c[0], c[1], c[2]);
+// The world's lights as buildScene found them: the largest specular light a surface can meet (a
+// specular share below a level is left out, as the cameras leave it), and whether all are directional.
+const worldLights = { strongestSpecular: 0, allDirectional: true, list: [] };
 
 // A material of the scene's JSON ({ambient, diffuse, specular, emissive: [r g b a], shininess}), a
 // texture's image over its ambient and diffuse light where `map` is given.
 function material(m, map = null) {
-  const specular = m.shininess > 0 && (m.specular[0] > 0 || m.specular[1] > 0 || m.specular[2] > 0);
+  const specular = m.shininess > 0 && Math.max(m.specular[0], m.specular[1], m.specular[2]) *
+    worldLights.strongestSpecular >= 1 / 255;
   const opacity = m.diffuse[3];
   return new THREE.ShaderMaterial({
     uniforms: {
@@ -163,6 +167,7 @@ function material(m, map = null) {
       image: { value: map },
     },
     defines: { TEXTURED: map ? 1 : 0, SPECULAR: specular ? 1 : 0 },
+    userData: { plant: m, map },
     vertexShader: VERTEX_SHADER,
     fragmentShader: FRAGMENT_SHADER,
     side: THREE.DoubleSide,
@@ -178,6 +183,46 @@ function meshMaterial(visual, loaded) {
   const own = (visual.mesh_materials || []).find((m) => m.name === loaded.name);
   if (own) return material(own.material, own.textured && loaded.map ? loaded.map : null);
   return material(visual.material);
+}
+
+// The world's visuals never move: where every light is directional and a surface has no specular
+// share, its light at each vertex is all there is to it (exact on flat faces: n . l is the same
+// over a face; Gouraud on curved ones), worked out once into vertex colours of an unlit material
+// (SwiftShader, a browser without a GPU, draws the mesh race track about a third faster so). A face
+// seen from behind keeps its front's shade.
+function bakeLighting(object) {
+  if (!worldLights.allDirectional) return;
+  object.updateWorldMatrix(true, true);
+  object.traverse((child) => {
+    if (!child.isMesh || child.userData.baked) return;
+    const materials = Array.isArray(child.material) ? child.material : [child.material];
+    if (materials.some((m) => !m.isShaderMaterial || m.defines.SPECULAR) || materials.length > 1) return;
+    const { plant: m, map } = materials[0].userData;
+    const geometry = child.geometry.clone();  // a loader may share one geometry between meshes
+    if (!geometry.getAttribute('normal')) geometry.computeVertexNormals();
+    const normals = geometry.getAttribute('normal');
+    const toWorld = new THREE.Matrix3().getNormalMatrix(child.matrixWorld);
+    const n = new THREE.Vector3(), shades = new Float32Array(normals.count * 3);
+    const ambient = lighting.sceneAmbient.value;
+    const base = [m.emissive[0] + ambient.x * m.ambient[0], m.emissive[1] + ambient.y * m.ambient[1],
+                  m.emissive[2] + ambient.z * m.ambient[2]];
+    for (let k = 0; k < normals.count; k++) {
+      n.fromBufferAttribute(normals, k).applyMatrix3(toWorld).normalize();
+      const light = [0, 0, 0];
+      for (const l of worldLights.list) {
+        const nl = -(n.x * l.direction[0] + n.y * l.direction[1] + n.z * l.direction[2]);
+        if (nl > 0) for (let c = 0; c < 3; c++) light[c] += l.diffuse[c] * nl;
+      }
+      for (let c = 0; c < 3; c++) shades[3 * k + c] = Math.min(1, base[c] + m.diffuse[c] * light[c]);
+    }
+    geometry.setAttribute('color', new THREE.BufferAttribute(shades, 3));
+    child.geometry = geometry;
+    child.material = new THREE.MeshBasicMaterial({
+      map, vertexColors: true, side: THREE.DoubleSide, transparent: m.diffuse[3] < 1, opacity: m.diffuse[3],
+      depthWrite: m.diffuse[3] >= 1,
+    });
+    child.userData.baked = true;
+  });
 }
 
 function fileUrl(path) {
@@ -205,6 +250,7 @@ function loadMesh(visual, into) {
     scaled.scale.set(scale[0], scale[1], scale[2]);
     scaled.add(object);
     into.add(scaled);
+    if (into.parent === world) bakeLighting(into);
     pendingMeshes -= 1;
   };
   const failed = (error) => {
@@ -297,6 +343,10 @@ function buildScene(description) {
   const lights = description.lights.slice(0, MAX_LIGHTS);
   lighting.lightCount.value = lights.length;
   const kinds = { directional: 0, point: 1, spot: 2 };
+  worldLights.list = lights;
+  worldLights.allDirectional = lights.every((light) => light.type === 'directional');
+  worldLights.strongestSpecular = Math.max(0, ...lights.map((light) => Math.max(...light.specular) *
+    (light.type === 'directional' ? 1 : 1 / Math.max(light.attenuation[1], 1e-3))));
   lights.forEach((light, k) => {
     lighting.lightPosition.value[k].set(...light.position, kinds[light.type]);
     lighting.lightDirection.value[k].set(...light.direction);
@@ -315,6 +365,7 @@ function buildScene(description) {
     }
     if (visual.model === '') {
       world.add(holder);
+      bakeLighting(holder);
     } else {
       if (!links.has(visual.link)) {
         const link = new THREE.Group();

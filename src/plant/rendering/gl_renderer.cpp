@@ -22,22 +22,34 @@ namespace
 // OGRE's per-pixel lighting does them, from the world position and the normal on the side the
 // camera sees.
 // The camera program's shaders, after "#version 300 es" and the defines STATIC_SHADOWS,
-// MOVING_SHADOWS, LIGHTS and SPECULAR (0 or 1): a frame (or a draw) without shadows, lamps or a
-// specular surface pays nothing for them.
+// MOVING_SHADOWS, LIGHTS, SPECULAR and TEXTURED (0 or 1): a frame (or a draw, or a run of one
+// material) without shadows, lamps, a specular surface or a texture pays nothing for them.
 const char* const kVertexShader = R"(
 #define PER_PIXEL (LIGHTS || SPECULAR)
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
+layout(location = 2) in vec4 diffuse;   // the material's diffuse colour, its alpha the opacity
 layout(location = 3) in vec2 uv;
+layout(location = 4) in vec3 ambient;   // the material's ambient colour
+layout(location = 5) in vec3 emissive;
+layout(location = 6) in vec4 specular;  // the material's specular colour, its shininess
 uniform mat4 clip_from_body;
 uniform mat4 world_from_body;
 uniform vec3 camera_origin;
 uniform vec3 camera_forward;
 uniform vec3 towards_sun;  // zero: no sun
 uniform vec3 sun_diffuse;
-out vec3 sun_light;        // the sun's diffuse light on the face the camera sees
+uniform vec3 scene_ambient;
+out float sun_cos;         // n . l of the sun on the face the camera sees, at least 0
 out float depth_along_axis;
+flat out vec3 material_base;  // emissive + scene ambient x material ambient
+flat out vec4 material_diffuse;
+#if SPECULAR
+flat out vec4 material_specular;
+#endif
+#if TEXTURED
 out vec2 texture_uv;
+#endif
 #if STATIC_SHADOWS
 uniform mat4 static_shadow_from_world;
 out vec3 static_shadow_coordinates;
@@ -57,8 +69,13 @@ void main()
   vec3 world_normal = mat3(world_from_body) * normal;
   float length_n = length(world_normal);
   float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
-  sun_light = sun_diffuse * (length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_sun) / length_n) : 0.0);
+  sun_cos = length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_sun) / length_n) : 0.0;
   depth_along_axis = dot(ray, camera_forward);
+  material_base = emissive + scene_ambient * ambient;
+  material_diffuse = diffuse;
+#if SPECULAR
+  material_specular = specular;
+#endif
 #if STATIC_SHADOWS
   static_shadow_coordinates = (static_shadow_from_world * world).xyz;
 #endif
@@ -69,7 +86,9 @@ void main()
   world_position = world.xyz;
   seen_normal = length_n > 0.0 ? facing * world_normal / length_n : vec3(0.0);
 #endif
+#if TEXTURED
   texture_uv = uv;
+#endif
   gl_Position = clip_from_body * vec4(position, 1.0);
 }
 )";
@@ -79,20 +98,23 @@ void main()
 // share is gone and the ambient and emissive light stay (Gazebo's integrated PSSM shadows:
 // ambient + (lit - ambient) x shadow); a face turned away from the sun is in no shadow; a shadow
 // map's lookup is the 2 x 2 texels' comparisons, filtered (hardware PCF), and what lies outside a
-// map is not shadowed by it. The texture modulates
-// the ambient and diffuse light, the specular light is added after it (OGRE's colour_op modulate,
-// its RTSS adding the specular at the end).
+// map is not shadowed by it. The texture modulates the ambient and diffuse light, the specular light
+// is added after it (OGRE's colour_op modulate, its RTSS adding the specular at the end).
+// The lamps' loops have no branch a pixel could take apart from its neighbours (llvmpipe runs both
+// sides of one).
 const char* const kFragmentShader = R"(
 #define PER_PIXEL (LIGHTS || SPECULAR)
 precision highp float;
 precision highp sampler2DShadow;
-in vec3 sun_light;
+in float sun_cos;
 in float depth_along_axis;
+flat in vec3 material_base;     // emissive + scene ambient x material ambient
+flat in vec4 material_diffuse;  // its alpha: the opacity
+uniform vec3 sun_diffuse;
+#if TEXTURED
 in vec2 texture_uv;
 uniform sampler2D image;
-uniform bool textured;
-uniform vec3 material_base;     // emissive + scene ambient x material ambient
-uniform vec4 material_diffuse;  // its alpha: the opacity
+#endif
 #if STATIC_SHADOWS
 in vec3 static_shadow_coordinates;
 uniform sampler2DShadow static_shadow;
@@ -107,19 +129,29 @@ in vec3 seen_normal;
 uniform vec3 camera_origin;
 #endif
 #if SPECULAR
+flat in vec4 material_specular;  // its shininess in w
 uniform vec3 towards_sun;
 uniform vec3 sun_specular;
-uniform vec3 material_specular;
-uniform float shininess;
 #endif
 #if LIGHTS
-uniform int light_count;
-uniform vec4 light_position[8];     // x y z, kind: 0 directional, 1 point, 2 spot
-uniform vec3 light_direction[8];    // the way it shines
+// the lights: [0, directional_count) directional, then point lights up to point_count, then spots
+uniform int light_count, directional_count, point_count;
+uniform vec3 light_position[8];
+uniform vec3 light_direction[8];    // the way it shines: a directional light's, a spot's axis
 uniform vec3 light_diffuse[8];
 uniform vec3 light_specular[8];
 uniform vec4 light_attenuation[8];  // range, constant, linear, quadratic
 uniform vec3 light_spot[8];         // cos(inner / 2), cos(outer / 2), falloff
+// light i's share at a pixel, towards l (unit) with attenuation x spot `share`
+void shine(int i, vec3 l, float share, vec3 n, vec3 to_eye, inout vec3 diffuse_light, inout vec3 specular_light)
+{
+  float n_l = dot(n, l);
+  diffuse_light += light_diffuse[i] * (max(n_l, 0.0) * share);
+#if SPECULAR
+  specular_light += light_specular[i] * (step(0.0, n_l) * share *
+                                         pow(max(0.0, dot(n, normalize(l + to_eye))), material_specular.w));
+#endif
+}
 #endif
 layout(location = 0) out vec4 colour;
 layout(location = 1) out float depth;
@@ -131,48 +163,44 @@ float lightThrough(sampler2DShadow map, vec3 at)
 }
 void main()
 {
-  vec3 diffuse_light = sun_light;
-  vec3 specular_light = vec3(0.0);
 #if PER_PIXEL
   float length_n = length(seen_normal);
   vec3 n = length_n > 0.0 ? seen_normal / length_n : vec3(0.0);
   vec3 to_eye = normalize(camera_origin - world_position);
+#else
+  vec3 n = vec3(0.0), to_eye = vec3(0.0);
 #endif
+  vec3 specular_light = vec3(0.0);
 #if SPECULAR
-  if (dot(n, towards_sun) > 0.0)
+  float shininess = material_specular.w;
+  if (sun_cos > 0.0)
     specular_light = sun_specular * pow(max(0.0, dot(n, normalize(towards_sun + to_eye))), shininess);
 #endif
 #if LIGHTS
-  // OGRE's per-pixel point, spot and directional lights
-  for (int i = 0; i < light_count; ++i)
+  // OGRE's per-pixel lights: diffuse x n . l x attenuation (x a spot's factor) within range; the
+  // directional lights, the point lights and the spots each in a loop of their own (a loop with a
+  // light of each kind in it would pay for the spot's cone at every light)
+  vec3 diffuse_light = vec3(0.0);
+  for (int i = 0; i < directional_count; ++i)
+    shine(i, -light_direction[i], 1.0, n, to_eye, diffuse_light, specular_light);
+  for (int i = directional_count; i < point_count; ++i)
   {
+    vec3 to_light = light_position[i] - world_position;
+    float dd = dot(to_light, to_light), inverse = inversesqrt(dd), d = dd * inverse;
     vec4 a = light_attenuation[i];
-    vec3 l;
-    float share = 1.0;
-    if (light_position[i].w == 0.0)
-      l = -light_direction[i];
-    else
-    {
-      vec3 to_light = light_position[i].xyz - world_position;
-      float d = length(to_light);
-      l = to_light / max(d, 1e-20);
-      share = d <= a.x ? 1.0 / (a.y + a.z * d + a.w * d * d) : 0.0;
-      if (light_position[i].w == 2.0)
-      {
-        float rho = dot(-l, light_direction[i]);
-        float inner = light_spot[i].x, outer = light_spot[i].y;
-        float spot = rho < outer ? 0.0 : inner > outer ? clamp((rho - outer) / (inner - outer), 0.0, 1.0) : 1.0;
-        share *= light_spot[i].z > 0.0 ? pow(spot, light_spot[i].z) : step(outer, rho);
-      }
-    }
-    float n_l = dot(n, l);
-    if (n_l > 0.0)
-    {
-      diffuse_light += light_diffuse[i] * (n_l * share);
-#if SPECULAR
-      specular_light += light_specular[i] * (pow(max(0.0, dot(n, normalize(l + to_eye))), shininess) * share);
-#endif
-    }
+    shine(i, to_light * inverse, step(d, a.x) / (a.y + d * (a.z + a.w * d)), n, to_eye, diffuse_light, specular_light);
+  }
+  for (int i = point_count; i < light_count; ++i)
+  {
+    vec3 to_light = light_position[i] - world_position;
+    float dd = dot(to_light, to_light), inverse = inversesqrt(dd), d = dd * inverse;
+    vec3 l = to_light * inverse;
+    vec4 a = light_attenuation[i];
+    float rho = dot(-l, light_direction[i]);
+    float inner = light_spot[i].x, outer = light_spot[i].y;
+    float spot = inner > outer ? clamp((rho - outer) / (inner - outer), 0.0, 1.0) : 1.0;
+    spot = step(outer, rho) * (light_spot[i].z > 0.0 ? pow(spot, light_spot[i].z) : 1.0);
+    shine(i, l, spot * step(d, a.x) / (a.y + d * (a.z + a.w * d)), n, to_eye, diffuse_light, specular_light);
   }
 #endif
   float light = 1.0;
@@ -180,7 +208,7 @@ void main()
   // only a face the sun shines on can lie in a shadow: Gazebo draws its casters' back faces into
   // the maps (OGRE's shadow_caster_render_back_faces), so a face turned away from the sun is level
   // with its own map depth, not behind it
-  if (any(greaterThan(sun_light, vec3(0.0))))
+  if (sun_cos > 0.0)
   {
 #if STATIC_SHADOWS
     light *= lightThrough(static_shadow, static_shadow_coordinates);
@@ -190,13 +218,23 @@ void main()
 #endif
   }
 #endif
-  // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
-  vec4 texel = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)) : vec4(1.0);
-  vec3 lit = (material_base + material_diffuse.rgb * diffuse_light * light) * texel.rgb;
-#if SPECULAR
-  lit += material_specular * specular_light * light;
+  // (the sun's diffuse x material diffuse is not a varying of its own: with one more flat varying,
+  // llvmpipe (Mesa 22.3) at 128 bits corrupts its heap building the lamps-and-specular variant)
+  vec3 lit = material_base + material_diffuse.rgb * sun_diffuse * (sun_cos * light);
+#if LIGHTS
+  lit += material_diffuse.rgb * diffuse_light * light;
 #endif
-  colour = vec4(lit, material_diffuse.a * texel.a);
+  float alpha = material_diffuse.a;
+#if TEXTURED
+  // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
+  vec4 texel = texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y));
+  lit *= texel.rgb;
+  alpha *= texel.a;
+#endif
+#if SPECULAR
+  lit += material_specular.rgb * specular_light * light;
+#endif
+  colour = vec4(lit, alpha);
   depth = depth_along_axis;
 }
 )";
@@ -537,21 +575,20 @@ GlRenderer::CameraProgram& GlRenderer::cameraProgram(int variant)
   auto bit = [&](int flag) { return char('0' + ((variant & flag) ? 1 : 0)); };
   const std::string defines = std::string("#version 300 es\n#define STATIC_SHADOWS ") + bit(kStaticShadows) +
                               "\n#define MOVING_SHADOWS " + bit(kMovingShadows) + "\n#define LIGHTS " + bit(kLights) +
-                              "\n#define SPECULAR " + bit(kSpecular) + "\n";
+                              "\n#define SPECULAR " + bit(kSpecular) + "\n#define TEXTURED " + bit(kTextured) + "\n";
   p.program = link(defines + kVertexShader, defines + kFragmentShader);
   for (const auto& u : {std::make_pair(&p.clip_from_body, "clip_from_body"),
-                        std::make_pair(&p.world_from_body, "world_from_body"), std::make_pair(&p.textured, "textured"),
+                        std::make_pair(&p.world_from_body, "world_from_body"),
+                        std::make_pair(&p.scene_ambient, "scene_ambient"),
                         std::make_pair(&p.image, "image"), std::make_pair(&p.camera_origin, "camera_origin"),
                         std::make_pair(&p.camera_forward, "camera_forward"), std::make_pair(&p.towards_sun, "towards_sun"),
                         std::make_pair(&p.sun_diffuse, "sun_diffuse"), std::make_pair(&p.sun_specular, "sun_specular"),
-                        std::make_pair(&p.material_base, "material_base"),
-                        std::make_pair(&p.material_diffuse, "material_diffuse"),
-                        std::make_pair(&p.material_specular, "material_specular"),
-                        std::make_pair(&p.shininess, "shininess"),
                         std::make_pair(&p.static_shadow_from_world, "static_shadow_from_world"),
                         std::make_pair(&p.moving_shadow_from_world, "moving_shadow_from_world"),
                         std::make_pair(&p.static_shadow, "static_shadow"), std::make_pair(&p.moving_shadow, "moving_shadow"),
-                        std::make_pair(&p.light_count, "light_count"), std::make_pair(&p.light_position, "light_position"),
+                        std::make_pair(&p.light_count, "light_count"), std::make_pair(&p.point_count, "point_count"),
+                        std::make_pair(&p.directional_count, "directional_count"),
+                        std::make_pair(&p.light_position, "light_position"),
                         std::make_pair(&p.light_direction, "light_direction"),
                         std::make_pair(&p.light_diffuse, "light_diffuse"),
                         std::make_pair(&p.light_specular, "light_specular"),
@@ -568,6 +605,7 @@ GlRenderer::~GlRenderer()
   {
     glDeleteVertexArrays(1, &m.vertex_array);
     glDeleteBuffers(1, &m.buffer);
+    glDeleteBuffers(1, &m.material_buffer);
   }
   for (auto& uploaded : textures_)
     glDeleteTextures(1, &uploaded.second);
@@ -620,18 +658,33 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
     mesh.lo[k % 3] = std::min(mesh.lo[k % 3], double(triangles.xyz[k]));
     mesh.hi[k % 3] = std::max(mesh.hi[k % 3], double(triangles.xyz[k]));
   }
-  mesh.materials = triangles.materials;
+  // Runs of one texture, one kind (opaque or transparent) and with specular or without: a run's
+  // materials are its vertices' (below), so a mesh of many colours is still a few draws.
   for (size_t t = 0; t < count; ++t)
   {
     const unsigned texture = triangles.texture.empty() ? 0 : textureOf(triangles.texture[t]);
-    const int material = int(triangles.material[t]);
-    if (mesh.runs.empty() || mesh.runs.back().texture != texture || mesh.runs.back().material != material)
+    const Material& m = triangles.materials[triangles.material[t]];
+    const bool transparent = m.transparent(), specular = m.hasSpecular();
+    if (mesh.runs.empty() || mesh.runs.back().texture != texture || mesh.runs.back().transparent != transparent ||
+        mesh.runs.back().specular != specular)
     {
-      const bool transparent = mesh.materials[size_t(material)].transparent();
-      mesh.runs.push_back(Run{int(3 * t), 0, texture, material, transparent});
+      mesh.runs.push_back(Run{int(3 * t), 0, texture, transparent, specular, 0.0f});
       mesh.any_transparent = mesh.any_transparent || transparent;
     }
     mesh.runs.back().count += 3;
+    if (specular)
+      mesh.runs.back().max_specular = std::max({mesh.runs.back().max_specular, m.specular.r, m.specular.g, m.specular.b});
+  }
+  // each vertex's material besides its diffuse colour (the colour attribute): ambient, emissive,
+  // specular and shininess, ten floats, in a buffer of their own
+  std::vector<float> materials;
+  materials.reserve(count * 30);
+  for (size_t t = 0; t < count; ++t)
+  {
+    const Material& m = triangles.materials[triangles.material[t]];
+    for (int v = 0; v < 3; ++v)
+      materials.insert(materials.end(), {m.ambient.r, m.ambient.g, m.ambient.b, m.emissive.r, m.emissive.g, m.emissive.b,
+                                         m.specular.r, m.specular.g, m.specular.b, float(m.shininess)});
   }
   glGenVertexArrays(1, &mesh.vertex_array);
   glGenBuffers(1, &mesh.buffer);
@@ -647,6 +700,16 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
   glEnableVertexAttribArray(3);
   glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(10 * sizeof(float)));
+  glGenBuffers(1, &mesh.material_buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh.material_buffer);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(materials.size() * sizeof(float)), materials.data(), GL_STATIC_DRAW);
+  const GLsizei material_stride = 10 * sizeof(float);
+  for (int k = 0; k < 3; ++k)
+  {
+    glEnableVertexAttribArray(GLuint(4 + k));
+    glVertexAttribPointer(GLuint(4 + k), k == 2 ? 4 : 3, GL_FLOAT, GL_FALSE, material_stride,
+                          reinterpret_cast<void*>(size_t(3 * k) * sizeof(float)));
+  }
   glBindVertexArray(0);
   // A freed slot is taken again (a world that spawns and deletes models all day keeps its size).
   auto slot = std::find_if(meshes_.begin(), meshes_.end(), [](const Mesh& m) { return !m.vertex_array; });
@@ -669,6 +732,7 @@ void GlRenderer::removeMesh(int mesh)
   context_.makeCurrent();
   glDeleteVertexArrays(1, &m.vertex_array);
   glDeleteBuffers(1, &m.buffer);
+  glDeleteBuffers(1, &m.material_buffer);
   context_.release();
   const unsigned generation = m.generation;
   m = Mesh();
@@ -907,15 +971,6 @@ const GlRenderer::Target& GlRenderer::target(int width, int height)
 
 namespace
 {
-// The scene ambient light times a material's ambient, plus its emissive: what OGRE's RTSS calls the
-// derived scene colour, the light a surface shows in the dark.
-void materialBase(const Lighting& lighting, const Material& m, float out[3])
-{
-  const float ambient[3] = {m.ambient.r, m.ambient.g, m.ambient.b}, emissive[3] = {m.emissive.r, m.emissive.g, m.emissive.b};
-  for (int i = 0; i < 3; ++i)
-    out[i] = lighting.ambient[i] * ambient[i] + emissive[i];
-}
-
 // A specular share below a level of the image: left out (its shader variant costs a frame more
 // than it shows).
 constexpr float kSpecularFloor = 1.0f / 255.0f;
@@ -951,10 +1006,15 @@ void GlRenderer::selectLights(const Draw& d)
     }
     std::stable_sort(reach.begin(), reach.end());
     const size_t room = Lighting::kMaxLights - (lighting.has_sun ? 1 : 0);
-    for (size_t k = 0; k < reach.size() && k < room; ++k)
+    reach.resize(std::min(reach.size(), room));
+    // the shader's order: directional lights, point lights, spots (nearest first in each)
+    std::stable_sort(reach.begin(), reach.end(), [&](const std::pair<double, int>& a, const std::pair<double, int>& b) {
+      return lighting.lights[size_t(a.second)].kind < lighting.lights[size_t(b.second)].kind;
+    });
+    for (const auto& r : reach)
     {
-      const Lighting::Light& l = lighting.lights[size_t(reach[k].second)];
-      frame_.lights.push_back(reach[k].second);
+      const Lighting::Light& l = lighting.lights[size_t(r.second)];
+      frame_.lights.push_back(r.second);
       // a lamp's specular at its brightest, 1 / constant (its attenuation's largest value)
       const float strongest = l.kind == Lighting::Light::Directional ? 1.0f : 1.0f / std::max(l.attenuation[1], 1e-3f);
       specular = std::max(specular, strongest * std::max({l.specular[0], l.specular[1], l.specular[2]}));
@@ -980,11 +1040,10 @@ void GlRenderer::drawRuns(const Draw& d, bool transparent)
   {
     if (run.transparent != transparent)
       continue;
-    const Material& m = mesh.materials[size_t(run.material)];
-    const bool specular = m.hasSpecular() &&
-                          frame_.strongest_specular * std::max({m.specular.r, m.specular.g, m.specular.b}) >= kSpecularFloor;
+    const bool specular = run.specular && frame_.strongest_specular * run.max_specular >= kSpecularFloor;
     const int variant = (frame_.static_shadows ? kStaticShadows : 0) | (frame_.moving_shadows ? kMovingShadows : 0) |
-                        (frame_.lights.empty() ? 0 : kLights) | (specular ? kSpecular : 0);
+                        (frame_.lights.empty() ? 0 : kLights) | (specular ? kSpecular : 0) |
+                        (run.texture ? kTextured : 0);
     CameraProgram& program = cameraProgram(variant);
     if (frame_.program != variant)
     {
@@ -1004,6 +1063,7 @@ void GlRenderer::drawRuns(const Draw& d, bool transparent)
       glUniform3fv(program.towards_sun, 1, lighting.has_sun ? towards : none);
       glUniform3fv(program.sun_diffuse, 1, lighting.has_sun ? lighting.sun.diffuse : none);
       glUniform3fv(program.sun_specular, 1, lighting.has_sun ? lighting.sun.specular : none);
+      glUniform3fv(program.scene_ambient, 1, lighting.ambient);
       glUniform1i(program.image, 0);
       if (frame_.static_shadows)
       {
@@ -1025,10 +1085,13 @@ void GlRenderer::drawRuns(const Draw& d, bool transparent)
       {
         program.lights = frame_.lights;
         std::vector<float> position, direction, diffuse, specular_colour, attenuation, spot;
+        GLint directional = 0, points = 0;
         for (int i : frame_.lights)
         {
           const Lighting::Light& l = lighting.lights[size_t(i)];
-          position.insert(position.end(), {l.position[0], l.position[1], l.position[2], float(l.kind)});
+          directional += l.kind == Lighting::Light::Directional;
+          points += l.kind != Lighting::Light::Spot;
+          position.insert(position.end(), l.position, l.position + 3);
           direction.insert(direction.end(), l.direction, l.direction + 3);
           diffuse.insert(diffuse.end(), l.diffuse, l.diffuse + 3);
           specular_colour.insert(specular_colour.end(), l.specular, l.specular + 3);
@@ -1037,7 +1100,9 @@ void GlRenderer::drawRuns(const Draw& d, bool transparent)
         }
         const GLsizei n = GLsizei(frame_.lights.size());
         glUniform1i(program.light_count, n);
-        glUniform4fv(program.light_position, n, position.data());
+        glUniform1i(program.directional_count, directional);
+        glUniform1i(program.point_count, points);
+        glUniform3fv(program.light_position, n, position.data());
         glUniform3fv(program.light_direction, n, direction.data());
         glUniform3fv(program.light_diffuse, n, diffuse.data());
         glUniform3fv(program.light_specular, n, specular_colour.data());
@@ -1045,17 +1110,8 @@ void GlRenderer::drawRuns(const Draw& d, bool transparent)
         glUniform3fv(program.light_spot, n, spot.data());
       }
     }
-    float base[3];
-    materialBase(lighting, m, base);
-    glUniform3fv(program.material_base, 1, base);
-    glUniform4f(program.material_diffuse, m.diffuse.r, m.diffuse.g, m.diffuse.b, m.diffuse.a);
-    if (specular)
-    {
-      glUniform3f(program.material_specular, m.specular.r, m.specular.g, m.specular.b);
-      glUniform1f(program.shininess, float(m.shininess));
-    }
-    glUniform1i(program.textured, run.texture != 0);
-    glBindTexture(GL_TEXTURE_2D, run.texture);
+    if (run.texture)
+      glBindTexture(GL_TEXTURE_2D, run.texture);
     glDrawArrays(GL_TRIANGLES, run.first, run.count);
   }
 }

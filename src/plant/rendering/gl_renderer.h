@@ -80,19 +80,19 @@ public:
               PinholeImage& out);
 
 private:
-  struct Run  // consecutive vertices drawn with one texture (0: none) and one material
+  struct Run  // consecutive vertices drawn with one texture (0: none), their materials their own
   {
     int first = 0, count = 0;
     unsigned texture = 0;
-    int material = 0;  // in the mesh's materials
-    bool transparent = false;
+    bool transparent = false;  // its materials are
+    bool specular = false;     // its materials have specular, at most this strong
+    float max_specular = 0;
   };
   struct Mesh
   {
-    unsigned vertex_array = 0, buffer = 0;
+    unsigned vertex_array = 0, buffer = 0, material_buffer = 0;
     int vertex_count = 0;
     std::vector<Run> runs;
-    std::vector<Material> materials;
     bool any_transparent = false;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};  // bounds, body frame
     unsigned generation = 0;  // how many meshes this slot has held: a draw of an earlier one is stale
@@ -126,18 +126,19 @@ private:
   struct CameraProgram  // a variant of the camera's program and its uniforms' locations
   {
     unsigned program = 0;
-    int clip_from_body, world_from_body, textured, image, camera_origin, camera_forward, towards_sun, sun_diffuse;
-    int sun_specular, material_base, material_diffuse, material_specular, shininess;
+    int clip_from_body, world_from_body, scene_ambient, image, camera_origin, camera_forward, towards_sun, sun_diffuse;
+    int sun_specular;
     int static_shadow_from_world, moving_shadow_from_world, static_shadow, moving_shadow;  // -1: not in it
-    int light_count, light_position, light_direction, light_diffuse, light_specular, light_attenuation, light_spot;
+    int light_count, directional_count, point_count, light_position, light_direction, light_diffuse, light_specular, light_attenuation,
+        light_spot;
     // what of this frame it has been given: the frame's uniforms, the draw's, the lights it holds
     unsigned frame = 0, draw = 0;
     std::vector<int> lights;
   };
   // Variants of the program, compiled when first used: a frame without shadows, lamps or specular
   // pays nothing for them.
-  enum Variant { kStaticShadows = 1, kMovingShadows = 2, kLights = 4, kSpecular = 8 };
-  static constexpr int kCameraPrograms = 16;
+  enum Variant { kStaticShadows = 1, kMovingShadows = 2, kLights = 4, kSpecular = 8, kTextured = 16 };
+  static constexpr int kCameraPrograms = 32;
   CameraProgram camera_programs_[kCameraPrograms];
   CameraProgram& cameraProgram(int variant);
   // What a frame's draws share while it is drawn (render).

@@ -17,7 +17,7 @@ GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes, Planes
     }
   // One list of the materials, each once; the triangles in the order they are drawn in: the opaque
   // ones, then the transparent ones (drawn after all opaque surfaces), each kind grouped by texture
-  // and material so that a mesh is drawn in as few runs as it has surfaces.
+  // and by whether it has specular, so that a mesh is drawn in as few runs as that takes.
   GlTriangles joined;
   for (const GlTriangles& t : each)
   {
@@ -64,10 +64,13 @@ GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes, Planes
     }
     return size_t(found - first_seen.begin()) + 1;
   };
-  std::vector<std::array<size_t, 3>> key(count);
+  std::vector<std::array<size_t, 4>> key(count);
   for (size_t k = 0; k < count; ++k)
-    key[k] = {joined.materials[joined.material[k]].transparent() ? size_t(1) : size_t(0), textureRank(k),
+  {
+    const Material& m = joined.materials[joined.material[k]];
+    key[k] = {m.transparent() ? size_t(1) : size_t(0), textureRank(k), m.hasSpecular() ? size_t(1) : size_t(0),
               joined.material[k]};
+  }
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key[a] < key[b]; });
   GlTriangles all;
   all.materials = joined.materials;
