@@ -238,6 +238,10 @@ def test_a_light_that_lights_nothing_is_named_and_left_out():
 </world></sdf>""")
     world.echo = False
     assert [m for level, m in world.messages() if level == 'WARN' and "light 'dud'" in m and 'left dark' in m]
+    # a direction that is none: said, and the light shines straight down
+    seen, _, said = render(light_sdf(dict(SUN_DOWN, direction=[0, 0, 0])))
+    assert [m for m in said if "light 'sun'" in m and 'not a direction' in m], said
+    expect_pixels(seen, expected_floor([SUN_DOWN]))
 
 
 # ---------------------------------------------------------------------------------------- materials

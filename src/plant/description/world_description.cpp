@@ -261,7 +261,9 @@ LightDescription readLight(const tinyxml2::XMLElement* light, const urdf::Pose& 
   if (norm > 0 && std::isfinite(norm))
     out.direction = scaled(direction, 1.0 / norm);
   else
-    throw DescriptionError(where + " in " + source.describe() + ": <direction> must be a finite vector that is not zero");
+    world.warnings.push_back(where + " in " + source.describe() + ": <direction> " +
+                             xml::trimmed(xml::childText(light, "direction", "")) +
+                             " is not a direction (zero or not finite); it shines straight down");
   for (const auto& c : {std::make_pair("diffuse", &out.diffuse), std::make_pair("specular", &out.specular)})
   {
     const std::string text = xml::childText(light, c.first, "");
