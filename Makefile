@@ -19,7 +19,7 @@ PYTEST_ARGS ?=
 # make sim: the browser viewer in gzclient's place (the tutorial's default), or false for headless.
 GUI ?= true
 
-.PHONY: help setup build test test-quick sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes figures step-cost soak clean
+.PHONY: help setup build test test-quick sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes bench-lights figures step-cost soak clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation; open the address it prints first (GUI=false: headless)"
@@ -36,6 +36,7 @@ help:
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
 	@echo "make step-cost  build, count instructions per physics step (callgrind) and print a trajectory digest"
 	@echo "make bench-meshes  build, the cost of a race track made of meshes (instructions per step, lidar rays/s)"
+	@echo "make bench-lights  build, instructions a 640 x 480 camera frame costs lit by six lamps, and by the sun alone"
 	@echo "make soak   build, drive SOAK_MINUTES (default 10) at full speed with every sensor on: RSS growth, non-finite states"
 	@echo "make clean  remove $(WS)/"
 
@@ -112,6 +113,10 @@ step-cost: build
 bench-meshes: build
 	@command -v valgrind >/dev/null || { echo "bench-meshes: installing valgrind"; $$([ "$$(id -u)" -eq 0 ] || echo sudo) apt-get install -y -qq valgrind; }
 	@$(ROS_ENV) $(PYTHON) bench/mesh_cost.py
+
+bench-lights: build
+	@command -v valgrind >/dev/null || { echo "bench-lights: installing valgrind"; $$([ "$$(id -u)" -eq 0 ] || echo sudo) apt-get install -y -qq valgrind; }
+	@$(ROS_ENV) $(PYTHON) bench/light_cost.py
 
 # Not part of `make test`: minutes long by design.
 soak: build

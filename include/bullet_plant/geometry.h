@@ -29,6 +29,50 @@ struct Rgba
   float r = 0.7f, g = 0.7f, b = 0.7f, a = 1.0f;
 };
 
+// What a surface is made of, as Gazebo's renderer (OGRE, per-pixel lighting) lights it: emissive
+// plus the scene's ambient times `ambient`, plus each light's diffuse times `diffuse` times n . l (a
+// texture modulating these), plus each light's specular times `specular` times (n . h)^shininess
+// where shininess > 0 and `specular` is not black (OGRE has no specular term otherwise). The
+// diffuse alpha is the surface's opacity. The defaults are an OGRE pass's own: what a visual whose
+// <material> gives some colours has for the others.
+struct Material
+{
+  Rgba ambient{1, 1, 1, 1}, diffuse{1, 1, 1, 1}, specular{0, 0, 0, 1}, emissive{0, 0, 0, 1};
+  double shininess = 0.0;
+  bool operator==(const Material& o) const;
+  bool operator!=(const Material& o) const { return !(*this == o); }
+  bool transparent() const { return diffuse.a < 1.0f; }
+  bool hasSpecular() const { return shininess > 0 && (specular.r > 0 || specular.g > 0 || specular.b > 0); }
+  // One colour as both ambient and diffuse, no specular: a URDF <material><color> (the plant's rule
+  // for robots' colours; see docs/sdf.md).
+  static Material ofColour(const Rgba& colour);
+  // What Gazebo draws a visual without <material> with (a mesh's sub-mesh without a material of
+  // its own too): gazebo.material's Gazebo/White, ambient and diffuse white, specular 0.1 at 128.
+  static Material gazeboWhite();
+};
+
+// A visual's material as its description gives it, applied to each of its surfaces (a mesh's
+// sub-meshes, each with the material its file gives, or gazeboWhite) as Gazebo's Visual::Load does:
+// `replace` (a known Gazebo/* <script>, or a URDF colour) replaces the surface's material and
+// texture; else an <ambient>, <diffuse> or <specular> replaces them with a fresh OGRE pass (Material's
+// defaults, no texture: Visual::SetAmbient, SetDiffuse and SetSpecular make one); then each colour
+// given overrides, <specular> bringing <shininess> with it (0 without one, so no specular); an
+// <emissive> alone keeps the surface's own material and texture. <transparency> (or else the
+// <diffuse> alpha) is every surface's opacity.
+struct VisualMaterial
+{
+  bool has_replace = false, has_ambient = false, has_diffuse = false, has_specular = false, has_emissive = false;
+  Material replace;
+  Rgba ambient, diffuse, specular, emissive;
+  double shininess = 0.0;
+  double transparency = -1.0;  // <visual><transparency>; < 0: not given
+  bool operator==(const VisualMaterial& o) const;
+  // The material of a surface whose own is `own`, and whether its own texture stays on it.
+  Material resolve(const Material& own, bool& keep_texture) const;
+  // One colour as ambient and diffuse (Material::ofColour), in place of every surface's own.
+  static VisualMaterial colour(const Rgba& colour);
+};
+
 // x y z roll pitch yaw (URDF/SDF convention: fixed axes, R = Rz(yaw) Ry(pitch) Rx(roll)).
 urdf::Pose poseFromXyzRpy(double x, double y, double z, double roll, double pitch, double yaw);
 urdf::Pose compose(const urdf::Pose& a, const urdf::Pose& b);  // a * b

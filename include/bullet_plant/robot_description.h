@@ -242,6 +242,9 @@ struct RobotDescription
   std::map<std::string, LinkPhysics> link_physics;
   // SDF's <model><allow_auto_disable> (false in the model or a nested one): the model never sleeps.
   bool allow_auto_disable = true;
+  // From SDF: each link's visuals' <material> and <transparency>, in the order of its visual_array
+  // (visualMaterial).
+  std::map<std::string, std::vector<VisualMaterial>> visual_materials;
   // From SDF: ball joints, which URDF has no type for: their URDF joints are FLOATING; the child turns
   // freely about the joint frame's origin (three rotations, no translation).
   std::set<std::string> ball_joints;
@@ -262,6 +265,12 @@ struct RobotDescription
   std::vector<std::string> errors;                     // things refused (logged as errors at spawn)
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)
 };
+
+// What cameras see on the index-th visual of `link`: its SDF <material> where the model is SDF;
+// a URDF visual's <material><color> as its ambient and diffuse colour (VisualMaterial::colour; the
+// plant's rule, docs/sdf.md); Gazebo's white (Material::gazeboWhite) without either.
+VisualMaterial visualMaterial(const RobotDescription& robot, const std::string& link, size_t index,
+                              const urdf::Visual& visual);
 
 // The heaviest link the plant takes, kg: heavier, its contacts (single precision) lose it.
 constexpr double kMaxLinkMass = 1e6;

@@ -27,15 +27,15 @@ struct Contact
   double depth = 0;
 };
 
-// One of the world's lights as gazebo_ros's light services reach it (World::light, setLight): the
-// sun, its directional light (`directional`: cameras are lit by its direction, in white, with its
-// shadows where the scene has them; its colour and attenuation are kept and reported back, model://sun's
-// until set), or a point or spot light, which cameras render as world_description.h says.
+// One of the world's lights as gazebo_ros's light services reach it (World::light, setLight): a
+// directional light (a sun), a point or a spot light, which cameras render as world_description.h
+// says (a directional light is not attenuated; only the first directional light that casts shadows
+// draws them).
 struct WorldLight
 {
   bool directional = false;
-  LightDescription light;     // name, colour, attenuation; position and direction (spot, sun) in the world
-  bool cast_shadows = true;   // the sun's; point and spot lights cast none
+  LightDescription light;     // name, colours, attenuation; position and direction in the world
+  bool cast_shadows = false;  // light.cast_shadows, as gazebo_msgs/Light has it
 };
 
 class World
@@ -122,13 +122,13 @@ public:
   void resetWorld();       // robots to their spawn poses; time goes on
 
   // The lights by name, gazebo_ros's get_light_properties, set_light_properties and delete_light:
-  // the sun first (if there still is one), then the point and spot lights in file order. A change
+  // the world's lights in file order (model://sun's where the world includes it). A change
   // shows in every camera frame rendered from then on. light: false for no such light. setLight
   // sets the light named light.light.name (its kind stays; a zero direction leaves the direction
   // as it was): false for no such light; throws std::invalid_argument naming a value that is not
   // finite or an attenuation that lights nothing (negative, or all three 0). removeLight: false
-  // for no such light; without the sun, cameras are lit by the scene's ambient light and the
-  // point and spot lights alone.
+  // for no such light; without a directional light, cameras are lit by the scene's ambient light and
+  // the point and spot lights alone.
   std::vector<std::string> lightNames() const;
   bool light(const std::string& name, WorldLight& out) const;
   bool setLight(const WorldLight& light);

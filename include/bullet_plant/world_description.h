@@ -1,4 +1,4 @@
-// An SDF world as the plant reads it: <physics>, <gravity>, the sun's direction, <scene>; static
+// An SDF world as the plant reads it: <physics>, <gravity>, its <light>s, <scene>; static
 // models (box/cylinder/sphere/plane/mesh collisions, nested models, <include>d models found by
 // model://, resource_uri.h) as scenery that never moves; every other model as a model the world
 // simulates (sdf_model.h). The plant's own ground_plane and sun stand in for Gazebo's models of those
@@ -30,23 +30,30 @@ struct StaticVisual
   std::string name;   // model::link::visual
   Shape shape;
   urdf::Pose pose;    // in the world
-  Rgba colour;        // <material><diffuse> (or <ambient>)
+  VisualMaterial material;  // its <material> and <transparency>
 };
 
-// A <light> of type point or spot: what cameras are lit by besides the sun (the world's directional
-// light, light_direction below), as Gazebo's renderer (OGRE) lights them: diffuse colour times the
-// cosine of the incidence, times 1 / (constant + linear d + quadratic d^2) within `range` metres,
-// times a spot's cone factor.
+// A <light> as Gazebo's renderer (OGRE) lights cameras with it (pinhole.h's Lighting): a
+// directional light's diffuse and specular colours from `direction` everywhere; a point light's from
+// `position`, times 1 / (constant + linear d + quadratic d^2) within `range` metres (Gazebo clamps
+// constant and linear to [0, 1], rendering/Light.cc); a spot light's also times its cone's factor.
+// SDF's defaults.
 struct LightDescription
 {
+  enum class Kind { Directional, Point, Spot };
   std::string name;
-  bool spot = false;
+  Kind kind = Kind::Point;
   urdf::Vector3 position{0, 0, 0};    // in the world
-  urdf::Vector3 direction{0, 0, -1};  // a spot's axis, in the world (unit)
+  urdf::Vector3 direction{0, 0, -1};  // the way it shines, in the world (unit): directional and spot
   Rgba diffuse{1.0f, 1.0f, 1.0f, 1.0f};
-  // SDF's defaults (<attenuation>, <spot>)
-  double range = 10.0, constant = 1.0, linear = 1.0, quadratic = 0.0;
-  double inner_angle = 0.0, outer_angle = 0.0, falloff = 0.0;  // rad, full cone angles
+  Rgba specular{0.1f, 0.1f, 0.1f, 1.0f};
+  double range = 10.0, constant = 1.0, linear = 1.0, quadratic = 0.0;  // <attenuation>
+  double inner_angle = 0.0, outer_angle = 0.0, falloff = 0.0;          // <spot>: rad, full cone angles
+  bool cast_shadows = false;  // only a directional light's are drawn, as in Gazebo
+  bool lights() const { return kind == Kind::Directional || range > 0; }  // false: left dark (warned)
+  // Gazebo's sun (its model://sun): directional, diffuse 0.8, specular 0.2, from -0.5 0.1 -0.9,
+  // casting shadows.
+  static LightDescription sun();
 };
 
 // The physics step's range: below a nanosecond the step rounds to zero simulated nanoseconds and
@@ -78,14 +85,13 @@ struct WorldDescription
   urdf::Vector3 gravity{0, 0, -9.8};
   // <magnetic_field> (tesla, world frame): SDF's default, Gazebo's for its magnetometer sensors.
   urdf::Vector3 magnetic_field{5.5645e-6, 22.8758e-6, -42.3884e-6};
-  urdf::Vector3 light_direction{-0.5, 0.1, -0.9};  // Gazebo's sun
-  std::string sun_name = "sun";  // the directional <light>'s name (model://sun's: sun), as gazebo_ros names it
-  // <scene>: what cameras see where nothing is hit, and the share of light a surface facing away
-  // from the sun still gets (the mean of <ambient>'s red, green and blue).
+  // <scene>: what cameras see where nothing is hit, and the ambient light (SDF's default 0.4 grey).
   Rgba background{0.70f, 0.80f, 0.95f, 1.0f};
-  double ambient = 0.35;
-  bool shadows = true;  // <scene><shadows>: the sun's shadows in camera images (SDF's default)
-  std::vector<LightDescription> lights;  // point and spot lights, in file order
+  Rgba ambient{0.4f, 0.4f, 0.4f, 1.0f};
+  bool shadows = true;  // <scene><shadows>: a directional light's shadows in camera images (SDF's default)
+  // The world's lights as its file gives them, in file order (an <include>d model://sun among them);
+  // a world without any is lit by its ambient light alone.
+  std::vector<LightDescription> lights;
   std::vector<StaticCollision> collisions;
   std::vector<StaticVisual> visuals;
   // The models that move (SDF's default; not <static>), in file order: the world spawns each as
@@ -112,7 +118,7 @@ class WorldFileNotFound : public DescriptionError
 public:
   using DescriptionError::DescriptionError;
 };
-// The empty world: default physics and a ground plane.
+// The empty world, as Gazebo's worlds/empty.world: default physics, its sun and a ground plane.
 WorldDescription emptyWorldDescription();
 
 }  // namespace bullet_plant

@@ -953,6 +953,7 @@ bool GazeboRosApiPlugin::setLightProperties(gazebo_msgs::SetLightProperties::Req
   // Upstream's: every field of the request replaces the light's (its message to the renderer).
   light.cast_shadows = req.cast_shadows;
   light.light.diffuse = {float(req.diffuse.r), float(req.diffuse.g), float(req.diffuse.b), float(req.diffuse.a)};
+  light.light.specular = {float(req.specular.r), float(req.specular.g), float(req.specular.b), float(req.specular.a)};
   light.light.constant = req.attenuation_constant;
   light.light.linear = req.attenuation_linear;
   light.light.quadratic = req.attenuation_quadratic;
@@ -975,10 +976,9 @@ bool GazeboRosApiPlugin::setLightProperties(gazebo_msgs::SetLightProperties::Req
     res.status_message = std::string("setLightProperties: ") + e.what();
     return true;
   }
-  if (req.specular.r != 0 || req.specular.g != 0 || req.specular.b != 0)
-    sayNotHonoured("set_light_properties' specular", "the cameras render no specular light");
   if (!light.directional && req.cast_shadows)
-    sayNotHonoured("set_light_properties' cast_shadows for a point or spot light", "only the sun casts shadows here");
+    sayNotHonoured("set_light_properties' cast_shadows for a point or spot light",
+                   "only a directional light casts shadows, as in Gazebo");
   publishScene();
   res.success = true;
   return true;

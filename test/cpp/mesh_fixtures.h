@@ -48,6 +48,46 @@ inline std::string binaryBoxStl(const std::string& dir, const std::string& name,
   return write(dir, name, bytes);
 }
 
+// One triangle in a Collada file with the given <unit meter> and <up_axis>, its material's effect
+// the given technique (its shading element and what it holds), and texture coordinates.
+inline std::string colladaTriangleOf(const std::string& dir, const std::string& name, const std::string& meter,
+                                     const std::string& up_axis, const std::string& positions,
+                                     const std::string& technique, const std::string& images = "")
+{
+  return write(dir, name,
+               "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
+               "<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" version=\"1.4.1\">\n"
+               "  <asset><unit name=\"u\" meter=\"" + meter + "\"/><up_axis>" + up_axis + "</up_axis></asset>\n"
+               "  <library_images>" + images + "</library_images>\n"
+               "  <library_effects><effect id=\"fx\"><profile_COMMON>"
+               "<newparam sid=\"surface\"><surface type=\"2D\"><init_from>picture</init_from></surface></newparam>"
+               "<newparam sid=\"sampler\"><sampler2D><source>surface</source></sampler2D></newparam>"
+               "<technique sid=\"common\">" + technique + "</technique></profile_COMMON></effect>"
+               "</library_effects>\n"
+               "  <library_materials><material id=\"paint-id\" name=\"paint\"><instance_effect url=\"#fx\"/></material>"
+               "</library_materials>\n"
+               "  <library_geometries><geometry id=\"tri\" name=\"tri\"><mesh>\n"
+               "    <source id=\"pos\"><float_array id=\"pos-array\" count=\"9\">" + positions + "</float_array>\n"
+               "      <technique_common><accessor source=\"#pos-array\" count=\"3\" stride=\"3\">"
+               "<param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param name=\"Z\" type=\"float\"/>"
+               "</accessor></technique_common></source>\n"
+               "    <source id=\"uv\"><float_array id=\"uv-array\" count=\"6\">0 0 1 0 0 1</float_array>\n"
+               "      <technique_common><accessor source=\"#uv-array\" count=\"3\" stride=\"2\">"
+               "<param name=\"S\" type=\"float\"/><param name=\"T\" type=\"float\"/>"
+               "</accessor></technique_common></source>\n"
+               "    <vertices id=\"vtx\"><input semantic=\"POSITION\" source=\"#pos\"/></vertices>\n"
+               "    <triangles material=\"mat\" count=\"1\"><input semantic=\"VERTEX\" source=\"#vtx\" offset=\"0\"/>"
+               "<input semantic=\"TEXCOORD\" source=\"#uv\" offset=\"0\" set=\"0\"/><p>0 1 2</p></triangles>\n"
+               "  </mesh></geometry></library_geometries>\n"
+               "  <library_visual_scenes><visual_scene id=\"scene\"><node id=\"n\" name=\"n\">"
+               "<instance_geometry url=\"#tri\"><bind_material><technique_common>"
+               "<instance_material symbol=\"mat\" target=\"#paint-id\"><bind_vertex_input semantic=\"UVMap\" "
+               "input_semantic=\"TEXCOORD\" input_set=\"0\"/></instance_material></technique_common></bind_material>"
+               "</instance_geometry></node></visual_scene></library_visual_scenes>\n"
+               "  <scene><instance_visual_scene url=\"#scene\"/></scene>\n"
+               "</COLLADA>\n");
+}
+
 // One triangle in a Collada file with the given <unit meter> and <up_axis>, coloured by a lambert
 // material with the given diffuse colour.
 inline std::string colladaTriangle(const std::string& dir, const std::string& name, const std::string& meter,

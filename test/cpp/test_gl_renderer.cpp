@@ -2,9 +2,10 @@
 // window): a context on Mesa's llvmpipe when the CPU is asked for, TIANRACER_GL_DEVICE read as
 // documented, and frames that look as the same boxes (or spheres, cylinders and a plane, or a
 // textured mesh) seen by rays through each pixel centre (castFrame below: RayScene::castHit, exact
-// for boxes, planes, meshes, spheres and cylinders, and RayPrimitive::surfaceColour) under the same
-// light: colours within 3/255 and depths within 1 mm away from silhouette edges; bit for bit the
-// same on every run; the camera's noise as pinhole.h says.
+// for boxes, planes, meshes, spheres and cylinders, RayPrimitive::surfaceMaterial, and pinhole.h's
+// lighting worked out again here, in double precision, per ray) under the same lights (a sun, and
+// point and spot lamps with specular surfaces): colours within 3/255 and depths within 1 mm away
+// from silhouette edges; bit for bit the same on every run; the camera's noise as pinhole.h says.
 // GL_DUMP=/tmp/x writes each compared pair as /tmp/x_gl.png and /tmp/x_rays.png, to look at.
 #include <gtest/gtest.h>
 
@@ -44,8 +45,17 @@ RayPrimitive box(double sx, double sy, double sz, const urdf::Pose& pose, Rgba c
   s.kind = Shape::Kind::Box;
   s.box_size = {{sx, sy, sz}};
   RayPrimitive p = RayPrimitive::fromShape(s, pose, nullptr);
-  p.colour = colour;
+  p.material = VisualMaterial::colour(colour);
   return p;
+}
+
+// The lights the frames are compared under: the sun from (0.5, -0.1, 0.9), 0.65 of it over an
+// ambient 0.35 (every surface one colour as its ambient and diffuse: colour x (0.35 + 0.65 n . l)),
+// its shadows drawn.
+Lighting sunLight()
+{
+  const double towards[3] = {0.5, -0.1, 0.9};
+  return Lighting::sunOnly(towards, 0.65f, 0.35f, true);
 }
 
 // A floor, three coloured boxes (one turned) and a wall, seen from a camera looking down at them.
@@ -65,7 +75,7 @@ RayPrimitive curved(Shape::Kind kind, double radius, double length, const urdf::
   s.radius = radius;
   s.length = length;
   RayPrimitive p = RayPrimitive::fromShape(s, pose, nullptr);
-  p.colour = colour;
+  p.material = VisualMaterial::colour(colour);
   return p;
 }
 
@@ -75,7 +85,7 @@ std::vector<RayPrimitive> curvedScene()
   Shape ground;
   ground.kind = Shape::Kind::Plane;
   RayPrimitive plane = RayPrimitive::fromShape(ground, urdf::Pose(), nullptr);
-  plane.colour = Rgba{0.5f, 0.55f, 0.5f, 1};
+  plane.material = VisualMaterial::colour(Rgba{0.5f, 0.55f, 0.5f, 1});
   return {plane,
           curved(Shape::Kind::Sphere, 0.4, 0, poseFromXyzRpy(1.5, 0.5, 0.4, 0, 0, 0), Rgba{0.9f, 0.3f, 0.2f, 1}),
           curved(Shape::Kind::Sphere, 0.05, 0, poseFromXyzRpy(0.6, -0.2, 0.3, 0, 0, 0), Rgba{0.9f, 0.9f, 0.2f, 1}),
@@ -129,16 +139,65 @@ bool bilinearTexel(const RayHit& hit, Rgba& out)
   return true;
 }
 
-// A ray-cast frame, and whether each pixel's surface sees the light (1) or lies in a shadow (0).
 struct RayFrame : PinholeImage
 {
   std::vector<uint8_t> light;
 };
 
-// What the camera at `pose` sees by a ray through each pixel centre, one castHit each: the lit
-// colour of the face the ray hits (lambert over the ambient term; with lighting.shadows, the
-// ambient alone where a second ray from the surface towards the light meets a visual), rounded
-// half up, and the depth along the optical axis (+inf: nothing within the clip range). No noise.
+// One light's diffuse and specular share at a point p with unit normal n, seen from `eye`
+// (pinhole.h: OGRE's per-pixel lighting), in double precision.
+void addLight(const Lighting::Light& light, double shininess, const double p[3], const double n[3],
+              const double to_eye[3], double diffuse[3], double specular[3])
+{
+  double l[3], share = 1.0;
+  if (light.kind == Lighting::Light::Directional)
+    for (int i = 0; i < 3; ++i)
+      l[i] = -light.direction[i];
+  else
+  {
+    double d = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      l[i] = light.position[i] - p[i];
+      d += l[i] * l[i];
+    }
+    d = std::sqrt(d);
+    for (double& x : l)
+      x /= d;
+    const float* a = light.attenuation;
+    share = d <= a[0] ? 1.0 / (a[1] + a[2] * d + a[3] * d * d) : 0.0;
+    if (light.kind == Lighting::Light::Spot)
+    {
+      const double rho = -(l[0] * light.direction[0] + l[1] * light.direction[1] + l[2] * light.direction[2]);
+      const double inner = light.spot[0], outer = light.spot[1];
+      double spot = rho < outer ? 0.0 : inner > outer ? std::min(1.0, std::max(0.0, (rho - outer) / (inner - outer))) : 1.0;
+      share *= light.spot[2] > 0 ? std::pow(spot, double(light.spot[2])) : (rho < outer ? 0.0 : 1.0);
+    }
+  }
+  const double n_l = n[0] * l[0] + n[1] * l[1] + n[2] * l[2];
+  if (n_l <= 0)
+    return;
+  double h[3], length = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    h[i] = l[i] + to_eye[i];
+    length += h[i] * h[i];
+  }
+  length = std::sqrt(length);
+  const double n_h = std::max(0.0, (n[0] * h[0] + n[1] * h[1] + n[2] * h[2]) / length);
+  for (int i = 0; i < 3; ++i)
+  {
+    diffuse[i] += light.diffuse[i] * n_l * share;
+    if (shininess > 0)
+      specular[i] += light.specular[i] * std::pow(n_h, shininess) * share;
+  }
+}
+
+// A ray-cast frame, and whether each pixel's surface sees the sun (1) or lies in its shadow (0).
+// What the camera at `pose` sees by a ray through each pixel centre, one castHit each: the colour
+// of the face the ray hits under `lighting` (pinhole.h), in the sun's shadow where a second ray from
+// the surface towards the sun meets a visual (with lighting.shadows), rounded half up, and the depth
+// along the optical axis (+inf: nothing within the clip range). No noise.
 RayFrame castFrame(const RayScene& scene, const Frame& pose, const PinholeCamera& camera, const Lighting& lighting)
 {
   RayFrame out;
@@ -159,29 +218,51 @@ RayFrame castFrame(const RayScene& scene, const Frame& pose, const PinholeCamera
       // the clip distances are along the optical axis, the ray's along itself
       const RayHit hit = scene.castHit(origin, dir, camera.near * length, camera.far * length, kSeenByCameras);
       const size_t pixel = size_t(v) * camera.width + u;
-      float rgb[3] = {lighting.background[0], lighting.background[1], lighting.background[2]};
+      double rgb[3] = {lighting.background[0], lighting.background[1], lighting.background[2]};
       out.depth[pixel] = std::numeric_limits<float>::infinity();
       if (std::isfinite(hit.distance))
       {
         out.depth[pixel] = float(hit.distance / length);
-        double towards_light = 0;
+        double at[3], to_eye[3];
         for (int r = 0; r < 3; ++r)
-          towards_light += hit.normal[r] * lighting.towards_light[r];
-        if (lighting.shadows && towards_light > 0)
         {
-          double from[3];
-          for (int r = 0; r < 3; ++r)  // just off the surface, on the lit side
-            from[r] = origin[r] + dir[r] * hit.distance + hit.normal[r] * 1e-4;
-          out.light[pixel] = !std::isfinite(scene.castHit(from, lighting.towards_light, 0, 1e4, kSeenByCameras).distance);
+          at[r] = origin[r] + dir[r] * hit.distance;
+          to_eye[r] = -dir[r];
         }
-        const float lit = float(lighting.ambient + (1 - lighting.ambient) * std::max(0.0, towards_light) * out.light[pixel]);
-        Rgba c;
-        if (!bilinearTexel(hit, c))
+        bool textured = false;
+        const Material m = hit.primitive->surfaceMaterial(hit.triangle, textured);
+        const double shininess = m.hasSpecular() ? m.shininess : 0.0;
+        double diffuse[3] = {0, 0, 0}, specular[3] = {0, 0, 0};
+        if (lighting.has_sun)
+        {
+          double towards_sun = 0;
+          for (int r = 0; r < 3; ++r)
+            towards_sun += hit.normal[r] * lighting.towards_light[r];
+          if (lighting.shadows && towards_sun > 0)
+          {
+            double from[3];
+            for (int r = 0; r < 3; ++r)  // just off the surface, on the lit side
+              from[r] = at[r] + hit.normal[r] * 1e-4;
+            out.light[pixel] = !std::isfinite(scene.castHit(from, lighting.towards_light, 0, 1e4, kSeenByCameras).distance);
+          }
+          addLight(lighting.sun, shininess, at, hit.normal, to_eye, diffuse, specular);
+        }
+        for (const Lighting::Light& light : lighting.lights)
+          addLight(light, shininess, at, hit.normal, to_eye, diffuse, specular);
+        Rgba c{1, 1, 1, 1};
+        if (textured && !bilinearTexel(hit, c))
           c = hit.primitive->surfaceColour(hit.triangle, hit.u, hit.v);
-        rgb[0] = c.r * lit, rgb[1] = c.g * lit, rgb[2] = c.b * lit;
+        const double shadow = out.light[pixel];
+        const double base[3] = {lighting.ambient[0] * m.ambient.r + m.emissive.r,
+                                lighting.ambient[1] * m.ambient.g + m.emissive.g,
+                                lighting.ambient[2] * m.ambient.b + m.emissive.b};
+        const double kd[3] = {m.diffuse.r, m.diffuse.g, m.diffuse.b}, ks[3] = {m.specular.r, m.specular.g, m.specular.b};
+        const double texel[3] = {c.r, c.g, c.b};
+        for (int k = 0; k < 3; ++k)
+          rgb[k] = (base[k] + kd[k] * diffuse[k] * shadow) * texel[k] + ks[k] * specular[k] * shadow;
       }
       for (int k = 0; k < 3; ++k)
-        out.rgb8[3 * pixel + size_t(k)] = uint8_t(int(std::max(0.0f, std::min(1.0f, rgb[k])) * 255.0f + 0.5f));
+        out.rgb8[3 * pixel + size_t(k)] = uint8_t(int(std::max(0.0, std::min(1.0, rgb[k])) * 255.0 + 0.5));
     }
   return out;
 }
@@ -286,13 +367,12 @@ std::vector<GlRenderer::Draw> worldDraws(GlRenderer& renderer, const std::vector
 
 // Renders `shapes` (the world's) both ways from kCamera.
 void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* scene_name,
-                           const PinholeCamera& camera = pinhole())
+                           const PinholeCamera& camera = pinhole(), const Lighting& lighting = sunLight())
 {
   std::unique_ptr<GlContext> gl = llvmpipe();
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
   const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, shapes);
-  const Lighting lighting;
   PinholeImage rasterized;
   renderer.render(draws, kCamera, camera, lighting, rasterized);
   RayScene rays(shapes);
@@ -302,6 +382,82 @@ void expectTheRayCastFrame(const std::vector<RayPrimitive>& shapes, const char* 
 }
 
 TEST(GlRenderer, BoxesLookAsRaysThroughThePixelsSeeThem) { expectTheRayCastFrame(scene(), "boxes"); }
+
+// A material given outright (its ambient, diffuse, specular, emissive and shininess).
+VisualMaterial made(Rgba ambient, Rgba diffuse, Rgba specular, double shininess, Rgba emissive = {0, 0, 0, 1})
+{
+  VisualMaterial v;
+  v.has_replace = true;
+  v.replace.ambient = ambient;
+  v.replace.diffuse = diffuse;
+  v.replace.specular = specular;
+  v.replace.shininess = shininess;
+  v.replace.emissive = emissive;
+  return v;
+}
+
+// The boxes and curved shapes of specular materials (one emissive) under a coloured ambient light,
+// a sun with a specular colour, a point lamp, a spot lamp and a second directional light: each
+// pixel as the rays work OGRE's lighting out.
+TEST(GlRenderer, LampsAndSpecularSurfacesLookAsRaysThroughThePixelsSeeThem)
+{
+  std::vector<RayPrimitive> shapes = scene();
+  shapes[0].material = made({0.3f, 0.3f, 0.3f, 1}, {0.6f, 0.6f, 0.55f, 1}, {0.5f, 0.5f, 0.5f, 1}, 12);
+  shapes[1].material = made({0.9f, 0.2f, 0.1f, 1}, {0.9f, 0.2f, 0.1f, 1}, {0.8f, 0.8f, 0.8f, 1}, 40);
+  shapes[2].material = made({0.05f, 0.2f, 0.05f, 1}, {0.1f, 0.7f, 0.2f, 1}, {0, 0, 0, 1}, 0, {0.1f, 0.15f, 0.0f, 1});
+  const std::vector<RayPrimitive> curved = curvedScene();
+  shapes.push_back(curved[1]);  // the large sphere
+  shapes.back().material = made({0.5f, 0.2f, 0.2f, 1}, {0.9f, 0.3f, 0.2f, 1}, {0.6f, 0.6f, 0.6f, 1}, 25);
+  Lighting lighting = sunLight();
+  for (int i = 0; i < 3; ++i)
+  {
+    lighting.ambient[i] = 0.15f + 0.05f * float(i);
+    lighting.sun.diffuse[i] = 0.4f;
+    lighting.sun.specular[i] = 0.3f;
+  }
+  Lighting::Light point;
+  point.kind = Lighting::Light::Point;
+  const float point_at[3] = {1.4f, -0.6f, 1.2f}, point_colour[3] = {0.6f, 0.5f, 0.4f};
+  std::copy(point_at, point_at + 3, point.position);
+  std::copy(point_colour, point_colour + 3, point.diffuse);
+  std::fill(point.specular, point.specular + 3, 0.7f);
+  const float point_attenuation[4] = {8, 0.5f, 0.2f, 0.1f};
+  std::copy(point_attenuation, point_attenuation + 4, point.attenuation);
+  Lighting::Light spot = point;
+  spot.kind = Lighting::Light::Spot;
+  const float spot_at[3] = {2.6f, 0.6f, 2.5f}, spot_axis[3] = {0.0f, -0.6f, -0.8f};
+  std::copy(spot_at, spot_at + 3, spot.position);
+  std::copy(spot_axis, spot_axis + 3, spot.direction);
+  std::fill(spot.diffuse, spot.diffuse + 3, 0.5f);
+  const float spot_attenuation[4] = {20, 1, 0, 0.05f};
+  std::copy(spot_attenuation, spot_attenuation + 4, spot.attenuation);
+  spot.spot[0] = float(std::cos(0.5 / 2));
+  spot.spot[1] = float(std::cos(1.2 / 2));
+  spot.spot[2] = 1.5f;
+  Lighting::Light second;
+  second.kind = Lighting::Light::Directional;
+  const float second_axis[3] = {0.6f, 0.8f, 0.0f};
+  std::copy(second_axis, second_axis + 3, second.direction);
+  std::fill(second.diffuse, second.diffuse + 3, 0.15f);
+  std::fill(second.specular, second.specular + 3, 0.0f);
+  lighting.lights = {point, spot, second};
+  expectTheRayCastFrame(shapes, "lamps and specular surfaces", pinhole(), lighting);
+}
+
+// Without a sun (a world whose file gives no directional light): the ambient light and a lamp alone.
+TEST(GlRenderer, AWorldWithoutASunIsLitByItsAmbientLightAndLampsAlone)
+{
+  Lighting lighting;
+  Lighting::Light lamp;
+  const float lamp_at[3] = {1.0f, 0.0f, 1.5f};
+  std::copy(lamp_at, lamp_at + 3, lamp.position);
+  const float lamp_attenuation[4] = {20, 0.32f, 0.01f, 0.03f};
+  std::copy(lamp_attenuation, lamp_attenuation + 4, lamp.attenuation);
+  std::fill(lamp.diffuse, lamp.diffuse + 3, 0.5f);
+  lighting.lights = {lamp};
+  ASSERT_FALSE(lighting.has_sun);
+  expectTheRayCastFrame(scene(), "no sun, a lamp", pinhole(), lighting);
+}
 
 TEST(GlRenderer, SpheresCylindersAndAPlaneLookAsRaysThroughThePixelsSeeThem)
 {
@@ -403,13 +559,13 @@ TEST(GlRenderer, CameraNoiseIsTheSamplesFromTheFramesOffset)
   const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, scene());
   PinholeCamera camera = pinhole();
   PinholeImage clean, noisy, again, other;
-  renderer.render(draws, kCamera, camera, Lighting(), clean);
+  renderer.render(draws, kCamera, camera, sunLight(), clean);
   camera.noise = noise.data();
   camera.noise_offset = 1234;
-  renderer.render(draws, kCamera, camera, Lighting(), noisy);
-  renderer.render(draws, kCamera, camera, Lighting(), again);
+  renderer.render(draws, kCamera, camera, sunLight(), noisy);
+  renderer.render(draws, kCamera, camera, sunLight(), again);
   camera.noise_offset = PinholeCamera::kNoiseOffsets - 1;
-  renderer.render(draws, kCamera, camera, Lighting(), other);
+  renderer.render(draws, kCamera, camera, sunLight(), other);
   EXPECT_EQ(noisy.rgb8, again.rgb8);
   EXPECT_NE(noisy.rgb8, other.rgb8);
   for (size_t k = 0; k < clean.rgb8.size(); ++k)
@@ -484,11 +640,12 @@ TEST(GlRenderer, MinifiedTexturesShowTheirMipmapsMean)
   GlRenderer renderer(*gl);
   const std::vector<GlRenderer::Draw> draws = {
       {renderer.addMesh(glTrianglesOf(RayPrimitive::fromMesh(floor, urdf::Pose(), nullptr))), Frame(), false, false}};
-  const Lighting lighting;
+  const Lighting lighting = sunLight();
   PinholeImage image;
   // 20 m up looking straight down: a pixel spans 0.17 m, 43 texels of 3.9 mm
   renderer.render(draws, Frame::fromPose(poseFromXyzRpy(0, 0, 20, 0, M_PI / 2, 0)), pinhole(), lighting, image);
-  const double lit = lighting.ambient + (1 - lighting.ambient) * lighting.towards_light[2];
+  // floor.mtl gives Kd 1 and no Ka (0): the checker's mean grey in the sun's diffuse light alone
+  const double lit = lighting.sun.diffuse[0] * lighting.towards_light[2];
   const double grey = 0.5 * lit * 255;
   double worst = 0;
   for (uint8_t value : image.rgb8)
@@ -515,7 +672,7 @@ TEST(GlScene, BodiesAreWhereRaySceneHasThem)
   RayScene ray_scene(world);
   const int gl_body = gl_scene.addBody(&robot, body), ray_body = ray_scene.addBody(&robot, body);
   const PinholeCamera camera = pinhole();
-  const Lighting lighting;
+  const Lighting lighting = sunLight();
   PinholeImage rasterized;
   for (const Frame& pose : {Frame::fromPose(poseFromXyzRpy(1.0, -0.3, 0.2, 0, 0, 0.5)),
                             Frame::fromPose(poseFromXyzRpy(2.5, 0.6, 0.6, 0.2, 0.1, -0.8))})
@@ -546,7 +703,7 @@ TEST(GlRenderer, ACameraPoseThatIsNotFiniteShowsNothing)
   ASSERT_TRUE(gl);
   GlRenderer renderer(*gl);
   const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, scene());
-  const Lighting lighting;
+  const Lighting lighting = sunLight();
   PinholeImage nothing;  // the background alone, as the GL rounds it
   renderer.render({}, kCamera, pinhole(), lighting, nothing);
   for (double bad : {std::nan(""), 1e300, std::numeric_limits<double>::infinity()})
@@ -569,8 +726,8 @@ TEST(GlRenderer, TheSameInputsGiveTheSameFrameBitForBit)
   GlRenderer renderer(*gl);
   const std::vector<GlRenderer::Draw> draws = worldDraws(renderer, scene());
   PinholeImage first, second;
-  renderer.render(draws, kCamera, pinhole(), Lighting(), first);
-  renderer.render(draws, kCamera, pinhole(), Lighting(), second);
+  renderer.render(draws, kCamera, pinhole(), sunLight(), first);
+  renderer.render(draws, kCamera, pinhole(), sunLight(), second);
   EXPECT_EQ(first.rgb8, second.rgb8);
   EXPECT_EQ(0, std::memcmp(first.depth.data(), second.depth.data(), first.depth.size() * sizeof(float)));
 }

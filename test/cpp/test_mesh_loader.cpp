@@ -2,6 +2,8 @@
 // with the sub-meshes' colours, cached per (file, scale), and failures with their reasons.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <cmath>
 #include <string>
 
@@ -51,7 +53,7 @@ TEST(LoadMesh, ReadsAnAsciiStl)
   EXPECT_EQ(mesh->vertexCount(), 4) << "shared corners are joined";
   expectBounds(*mesh, 0, 0, 0, 2, 3, 1);
   ASSERT_EQ(mesh->submeshes.size(), 1u);
-  EXPECT_FALSE(mesh->submeshes[0].has_colour) << "an STL has no colour of its own";
+  EXPECT_FALSE(mesh->submeshes[0].has_material) << "an STL has no material of its own";
 }
 
 TEST(LoadMesh, ReadsABinaryStlAtAScale)
@@ -101,8 +103,8 @@ TEST(LoadMesh, KeepsEachSubMeshsDiffuseColourAndTexture)
   auto dae = load(colladaTriangle(dir, "green.dae", "1", "Z_UP", "0 0 0 1 0 0 0 1 0", "0.1 0.8 0.2 1"));
   ASSERT_TRUE(dae);
   ASSERT_EQ(dae->submeshes.size(), 1u);
-  EXPECT_TRUE(dae->submeshes[0].has_colour);
-  EXPECT_NEAR(dae->submeshes[0].diffuse.g, 0.8f, 1e-6);
+  EXPECT_TRUE(dae->submeshes[0].has_material);
+  EXPECT_NEAR(dae->submeshes[0].material.diffuse.g, 0.8f, 1e-6);
 
   write(dir, "paint.mtl",
         "newmtl red\nKd 1 0 0\n"
@@ -118,18 +120,91 @@ TEST(LoadMesh, KeepsEachSubMeshsDiffuseColourAndTexture)
   const MeshData::SubMesh& red = obj->subMeshOf(obj->submeshes[0].first_triangle);
   const MeshData::SubMesh& blue = obj->subMeshOf(obj->submeshes[1].first_triangle + 1);
   EXPECT_EQ(red.triangle_count + blue.triangle_count, 3);
-  EXPECT_TRUE(red.has_colour && blue.has_colour);
+  EXPECT_TRUE(red.has_material && blue.has_material);
   // The order of the sub-meshes is Assimp's; the colours go with their own triangles.
-  const bool red_first = red.diffuse.r > 0.5f;
+  const bool red_first = red.material.diffuse.r > 0.5f;
   const MeshData::SubMesh& one = red_first ? red : blue;
   const MeshData::SubMesh& two = red_first ? blue : red;
   EXPECT_EQ(one.triangle_count, 1);
-  EXPECT_FLOAT_EQ(one.diffuse.r, 1.0f);
+  EXPECT_FLOAT_EQ(one.material.diffuse.r, 1.0f);
   EXPECT_EQ(two.triangle_count, 2);
-  EXPECT_FLOAT_EQ(two.diffuse.b, 1.0f);
+  EXPECT_FLOAT_EQ(two.material.diffuse.b, 1.0f);
   EXPECT_EQ(two.texture, "stripes.png");
   EXPECT_FALSE(two.image) << "stripes.png does not exist";
   EXPECT_FALSE(two.texture_problem.empty());
+}
+
+// A Collada effect's colours as Gazebo 11's ColladaLoader takes them (common::Material's defaults
+// where it gives none: ambient 0.4, diffuse 0.5, no specular), its opacity as the Collada
+// specification reads <transparent> and <transparency>; an OBJ's Ka Kd Ks Ke Ns d.
+TEST(LoadMesh, ReadsEachSubMeshsMaterialAsGazeboDoes)
+{
+  const std::string dir = tempDir();
+  const std::string corners = "0 0 0 1 0 0 0 1 0";
+  auto phong = load(colladaTriangleOf(dir, "phong.dae", "1", "Z_UP", corners,
+                                      "<phong><emission><color>0.1 0.2 0.3 1</color></emission>"
+                                      "<ambient><color>0.2 0.25 0.3 1</color></ambient>"
+                                      "<diffuse><color>0.5 0.6 0.7 1</color></diffuse>"
+                                      "<specular><color>0.4 0.45 0.5 1</color></specular>"
+                                      "<shininess><float>30</float></shininess>"
+                                      "<transparent opaque=\"A_ONE\"><color>1 1 1 0.25</color></transparent>"
+                                      "<transparency><float>1</float></transparency></phong>"));
+  ASSERT_TRUE(phong);
+  const Material& p = phong->submeshes.at(0).material;
+  EXPECT_TRUE(phong->submeshes[0].has_material);
+  EXPECT_EQ(phong->submeshes[0].name, "paint");
+  EXPECT_FLOAT_EQ(p.emissive.b, 0.3f);
+  EXPECT_FLOAT_EQ(p.ambient.g, 0.25f);
+  EXPECT_FLOAT_EQ(p.diffuse.b, 0.7f);
+  EXPECT_FLOAT_EQ(p.specular.g, 0.45f);
+  EXPECT_DOUBLE_EQ(p.shininess, 30);
+  EXPECT_FLOAT_EQ(p.diffuse.a, 0.25f) << "A_ONE: opacity = the transparent colour's alpha x <transparency>";
+  EXPECT_TRUE(p.hasSpecular() && p.transparent());
+
+  auto lambert = load(colladaTriangleOf(dir, "lambert.dae", "1", "Z_UP", corners,
+                                        "<lambert><diffuse><color>0.3 0.3 0.3 1</color></diffuse>"
+                                        "<specular><color>1 1 1 1</color></specular></lambert>"));
+  ASSERT_TRUE(lambert);
+  const Material& l = lambert->submeshes.at(0).material;
+  EXPECT_FLOAT_EQ(l.ambient.r, 0.4f) << "no <ambient>: common::Material's 0.4";
+  EXPECT_FLOAT_EQ(l.specular.r, 0.0f) << "a lambert's <specular> is not read";
+  EXPECT_FALSE(l.hasSpecular());
+  EXPECT_FALSE(l.transparent());
+
+  // a diffuse <texture> leaves the diffuse colour at common::Material's 0.5; the image is not beside
+  // the file but in ../materials/textures/, where Gazebo looks next
+  std::filesystem::create_directories(dir + "/model/meshes");
+  std::filesystem::create_directories(dir + "/model/materials/textures");
+  const uint8_t pixels[3] = {10, 200, 30};
+  ASSERT_TRUE(stbi_write_png((dir + "/model/materials/textures/leaf.png").c_str(), 1, 1, 3, pixels, 3));
+  auto textured = load(colladaTriangleOf(dir + "/model/meshes", "textured.dae", "1", "Z_UP", corners,
+                                         "<phong><diffuse><texture texture=\"sampler\" texcoord=\"UVMap\"/></diffuse></phong>",
+                                         "<image id=\"picture\" name=\"picture\"><init_from>leaf.png</init_from></image>"));
+  ASSERT_TRUE(textured);
+  const MeshData::SubMesh& t = textured->submeshes.at(0);
+  EXPECT_FLOAT_EQ(t.material.diffuse.r, 0.5f);
+  EXPECT_FLOAT_EQ(t.material.ambient.r, 0.4f);
+  ASSERT_TRUE(t.image) << t.texture_problem;
+  EXPECT_EQ(t.image->rgb[1], 200);
+
+  // an image that is nowhere: said, naming the file
+  auto missing = load(colladaTriangleOf(dir, "missing.dae", "1", "Z_UP", corners,
+                                        "<phong><diffuse><texture texture=\"sampler\" texcoord=\"UVMap\"/></diffuse></phong>",
+                                        "<image id=\"picture\" name=\"picture\"><init_from>nowhere.png</init_from></image>"));
+  ASSERT_TRUE(missing);
+  ASSERT_EQ(textureProblems(*missing).size(), 1u);
+  EXPECT_NE(textureProblems(*missing)[0].find("nowhere.png"), std::string::npos) << textureProblems(*missing)[0];
+
+  write(dir, "full.mtl", "newmtl full\nKa 0.1 0.2 0.3\nKd 0.4 0.5 0.6\nKs 0.7 0.7 0.7\nKe 0.05 0 0\nNs 25\nd 0.5\n");
+  auto obj = load(write(dir, "full.obj", "mtllib full.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl full\nf 1 2 3\n"));
+  ASSERT_TRUE(obj);
+  const Material& o = obj->submeshes.at(0).material;
+  EXPECT_FLOAT_EQ(o.ambient.b, 0.3f);
+  EXPECT_FLOAT_EQ(o.diffuse.g, 0.5f);
+  EXPECT_FLOAT_EQ(o.specular.r, 0.7f);
+  EXPECT_FLOAT_EQ(o.emissive.r, 0.05f);
+  EXPECT_DOUBLE_EQ(o.shininess, 25);
+  EXPECT_FLOAT_EQ(o.diffuse.a, 0.5f);
 }
 
 TEST(LoadMesh, KeepsTextureCoordinatesAndReadsTheTextureBesideTheMesh)

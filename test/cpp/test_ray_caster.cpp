@@ -98,7 +98,6 @@ TEST(MeshRays, SeeEachSubMeshsColour)
                          "usemtl blue\nf 2 5 6\nf 2 6 3\n"));
   ASSERT_TRUE(mesh);
   std::vector<RayPrimitive> shapes{RayPrimitive::fromMesh(mesh, poseFromXyzRpy(1, 0, 0, 0, 0, 0), nullptr)};
-  shapes[0].colour = {0.5f, 0.5f, 0.5f, 1.0f};
   RayScene scene(shapes);
   scene.commit(nullptr);
   const double dir_x[3] = {1, 0, 0};
@@ -109,7 +108,19 @@ TEST(MeshRays, SeeEachSubMeshsColour)
   EXPECT_NEAR(blue.distance, 1.0, kFloatTolerance);
   EXPECT_FLOAT_EQ(blue.primitive->surfaceColour(blue.triangle, blue.u, blue.v).b, 1.0f);
   EXPECT_FLOAT_EQ(red.primitive->surfaceColour(red.triangle, red.u, red.v).r, 1.0f);
-  EXPECT_FLOAT_EQ(red.primitive->surfaceColour(-1, 0, 0).g, 0.5f) << "no triangle: the primitive's own colour";
+  EXPECT_FLOAT_EQ(red.primitive->surfaceColour(-1, 0, 0).g, 1.0f) << "no triangle: Gazebo's white";
+  // a visual's colour (a URDF <material><color>) in place of the file's, as Gazebo sets it
+  RayPrimitive grey = shapes[0];
+  grey.material = VisualMaterial::colour({0.5f, 0.5f, 0.5f, 1.0f});
+  EXPECT_FLOAT_EQ(grey.surfaceColour(red.triangle, red.u, red.v).r, 0.5f);
+  // an SDF <emissive> alone keeps the file's colours
+  RayPrimitive glowing = shapes[0];
+  glowing.material.has_emissive = true;
+  glowing.material.emissive = {0.2f, 0.0f, 0.0f, 1.0f};
+  bool textured = false;
+  const Material m = glowing.surfaceMaterial(blue.triangle, textured);
+  EXPECT_FLOAT_EQ(m.diffuse.b, 1.0f);
+  EXPECT_FLOAT_EQ(m.emissive.r, 0.2f);
 }
 
 TEST(MeshRays, ALidarInARoomOfMeshWallsMeasuresTheWalls)

@@ -10,7 +10,9 @@ edges (a pixel whose neighbours' reference depths lie within 5 % of its own) at 
 colour pixels within 3/255 (3 x 3 means: the two frames' noise is drawn by different rules) with
 the same spread of noise (on the mesh race track its walls: its floor's texture is filtered now, as
 Gazebo filters, where the references took the nearest texel), and depths within 1 mm where both see
-a surface (2.5 mm on the mesh race track, see below). Each scene renders at both of llvmpipe's vector widths
+a surface (2.5 mm on the mesh race track, see below). The worlds are written under the light the references
+were recorded in (REFERENCE_LIGHTS: the cameras now light as Gazebo does, a world's own lights and
+materials). Each scene renders at both of llvmpipe's vector widths
 (LP_NATIVE_VECTOR_WIDTH 128: SSE, 256: AVX2), in a process of its own (llvmpipe reads it once)."""
 import json
 import os
@@ -35,24 +37,54 @@ SCENES = [('race_track.world', (0.0, 0.0, 0.05, 0, 0, 0.0), 'start'),
           (MESH_RACE_TRACK, (-4.4, 2.2, 0.05, 0, 0, -1.9), 'bend')]
 
 
+# The light the references were recorded under: every surface one colour, lit by
+# colour x (a + (1 - a) n . l) from the sun's direction, no specular, a the mean of the world's
+# <scene><ambient> (0.35 without one). The cameras light as Gazebo does now (pinhole.h), so the
+# test writes each world under the lights and materials that make that light: a grey scene ambient
+# a, a sun of diffuse 1 - a without specular from Gazebo's sun direction, each visual's one colour as
+# its ambient and diffuse (the ground plane's the plant's old 0.7 grey, the walls' <diffuse>; the
+# mesh floor's Kd 1 as its Ka too).
+REFERENCE_LIGHTS = """<light name="reference_sun" type="directional"><diffuse>%g %g %g 1</diffuse>
+<specular>0 0 0 1</specular><direction>-0.5 0.1 -0.9</direction></light>"""
+REFERENCE_GROUND = """<model name="ground_plane"><static>true</static><link name="link">
+<collision name="collision"><geometry><plane><normal>0 0 1</normal></plane></geometry></collision>
+<visual name="visual"><geometry><plane><normal>0 0 1</normal></plane></geometry>
+<material><ambient>0.7 0.7 0.7 1</ambient><diffuse>0.7 0.7 0.7 1</diffuse></material></visual></link></model>"""
+
+
 def world_file(world, directory):
-    """`world` (one of worlds/, or the mesh race track) written into `directory` with its shadows off:
-    the ray caster that recorded the references drew none."""
+    """`world` (one of worlds/, or the mesh race track) written into `directory` with its shadows off
+    (the ray caster that recorded the references drew none) and under the references' light
+    (REFERENCE_LIGHTS)."""
     if world == MESH_RACE_TRACK:
         sys.path.insert(0, os.path.join(REPOSITORY, 'bench'))
         from sensor_bench import write_mesh_track
         source = write_mesh_track(directory)[0]
+        with open(os.path.join(directory, 'floor.mtl'), 'a') as f:
+            f.write('Ka 1 1 1\n')
     else:
         source = os.path.join(REPOSITORY, 'worlds', world)
     tree = ET.parse(source)
-    scene = tree.getroot().find('world/scene')
+    root = tree.getroot().find('world')
+    scene = root.find('scene')
     if scene is None:
-        scene = ET.SubElement(tree.getroot().find('world'), 'scene')
-    shadows = scene.find('shadows')
-    if shadows is None:
-        shadows = ET.SubElement(scene, 'shadows')
-    shadows.text = 'false'
-    path = os.path.join(directory, 'without_shadows_' + world)
+        scene = ET.SubElement(root, 'scene')
+    ambient = np.mean([float(x) for x in scene.findtext('ambient').split()[:3]]) if scene.find('ambient') is not None \
+        else 0.35
+    for tag, text in (('shadows', 'false'), ('ambient', '%g %g %g 1' % (ambient, ambient, ambient))):
+        element = scene.find(tag)
+        if element is None:
+            element = ET.SubElement(scene, tag)
+        element.text = text
+    for include in root.findall('include'):
+        if include.findtext('uri').rstrip('/') in ('model://sun', 'model://ground_plane'):
+            root.remove(include)
+    root.append(ET.fromstring(REFERENCE_LIGHTS % ((1 - ambient,) * 3)))
+    root.append(ET.fromstring(REFERENCE_GROUND))
+    for material in root.iter('material'):
+        if material.find('diffuse') is not None and material.find('ambient') is None:
+            ET.SubElement(material, 'ambient').text = material.findtext('diffuse')
+    path = os.path.join(directory, 'reference_light_' + world)
     tree.write(path)
     return path
 

@@ -29,7 +29,7 @@ def scene(embree_isa, urdf_xml, control_config):
       <link name="link">
         <collision name="collision"><geometry><box><size>{' '.join(map(str, BOX_SIZE))}</size></box></geometry></collision>
         <visual name="visual"><geometry><box><size>{' '.join(map(str, BOX_SIZE))}</size></box></geometry>
-          <material><diffuse>{' '.join(map(str, RED))} 1</diffuse></material></visual>
+          <material><ambient>{' '.join(map(str, RED))} 1</ambient><diffuse>{' '.join(map(str, RED))} 1</diffuse></material></visual>
       </link></model>
       <light name="sun" type="directional"><direction>{' '.join(map(str, LIGHT))}</direction></light>"""
     world = make_world(control_config, sdf_world(box))
@@ -74,9 +74,10 @@ def test_colour_camera_sees_the_box_where_the_pinhole_model_puts_it(scene):
     for a, b in ((rows.min(), seen_rows.min()), (rows.max(), seen_rows.max()),
                  (cols.min(), seen_cols.min()), (cols.max(), seen_cols.max())):
         assert abs(int(a) - int(b)) <= 1, 'box bounds within 1 px of the pinhole model'
-    # its colour: red, lit by the sun on the face (ambient 0.35 + 0.65 * cos), noise stddev 0.007
+    # its colour: red, in SDF's default ambient light (0.4) and lit on the face by the sun of SDF's
+    # default diffuse colour (1): 0.4 + cos (pinhole.h), noise stddev 0.007
     light = -np.array(LIGHT) / np.linalg.norm(LIGHT)
-    shade = 0.35 + 0.65 * max(0.0, np.dot([-1, 0, 0], light))
+    shade = 0.4 + 1.0 * max(0.0, np.dot([-1, 0, 0], light))
     inside = expected & seen
     assert np.mean(rgb[inside][:, 0]) == pytest.approx(255 * shade, abs=2)
     assert np.mean(rgb[inside][:, 1]) < 3 and np.mean(rgb[inside][:, 2]) < 3
@@ -123,7 +124,7 @@ POST_URDF = """<robot name="post"><link name="post_link">
 POST_SDF = f"""<model name="post"><static>true</static><pose>{POST_X} 0 0.5 0 0 0</pose><link name="link">
   <collision name="collision"><geometry><box><size>0.1 0.1 1</size></box></geometry></collision>
   <visual name="visual"><geometry><box><size>0.5 0.5 1</size></box></geometry>
-    <material><diffuse>0 0 1 1</diffuse></material></visual></link></model>"""
+    <material><ambient>0 0 1 1</ambient><diffuse>0 0 1 1</diffuse></material></visual></link></model>"""
 
 
 @pytest.mark.parametrize('post_of', ['robot', 'world'])
@@ -179,7 +180,7 @@ def camera_frame_with(**environment):
     cameras."""
     box = (f"<model name='box'><static>true</static><pose>{' '.join(map(str, BOX_CENTRE))} 0 0 0</pose><link name='link'>"
            f"<visual name='visual'><geometry><box><size>{' '.join(map(str, BOX_SIZE))}</size></box></geometry>"
-           "<material><diffuse>1 0 0 1</diffuse></material></visual></link></model>")
+           "<material><ambient>1 0 0 1</ambient><diffuse>1 0 0 1</diffuse></material></visual></link></model>")
     env = dict(os.environ, **environment)
     run = subprocess.run([sys.executable, '-c', RENDER_SCRIPT % (HELPERS, box)], capture_output=True, text=True, env=env,
                          timeout=120)
@@ -215,10 +216,11 @@ def test_without_opengl_cameras_are_off_and_say_why_and_the_lidar_still_scans(en
 
 
 def shadow_scene_frame(control_config, urdf_xml, shadows):
-    """The car's camera frame before a 1 m post 1 m ahead in the sun of Gazebo's default (shining
+    """The car's camera frame before a 1 m post 1 m ahead in Gazebo's sun (model://sun, shining
     towards -x, so the post's shadow falls on the floor before it, 0.6 m long), with <scene><shadows>
     as given."""
-    box = ("<model name='post'><static>true</static><pose>1.0 0.1 0.5 0 0 0</pose>"
+    box = ("<include><uri>model://sun</uri></include>"
+           "<model name='post'><static>true</static><pose>1.0 0.1 0.5 0 0 0</pose>"
            "<link name='link'><visual name='visual'><geometry><box><size>0.2 0.4 1.0</size>"
            "</box></geometry></visual></link></model>"
            f"<scene><shadows>{str(shadows).lower()}</shadows></scene>")
@@ -237,9 +239,10 @@ def test_the_sun_casts_shadows_unless_the_scene_turns_them_off(control_config, u
     assert darker.mean() > 0.01, 'the box\'s shadow on the floor'
     assert rows.min() > lit.shape[0] // 2, 'below the horizon: on the floor before the box'
     assert ((shaded - lit).mean(axis=2) < 8).all(), 'a shadow only takes light away'
-    # in the shadow the floor keeps its ambient share: ambient / (ambient + (1 - ambient) cos)
+    # in the shadow the floor (the ground plane's Gazebo/Grey: ambient 0.3, diffuse 0.7) keeps its
+    # ambient share: 0.4 x 0.3 / (0.4 x 0.3 + 0.8 x 0.7 cos) under the sun's diffuse 0.8
     towards = -np.array([-0.5, 0.1, -0.9]) / np.linalg.norm([-0.5, 0.1, -0.9])
-    share = 0.35 / (0.35 + 0.65 * towards[2])
+    share = 0.4 * 0.3 / (0.4 * 0.3 + 0.8 * 0.7 * towards[2])
     assert shaded[darker].mean() / lit[darker].mean() == pytest.approx(share, rel=0.03)
 
 
@@ -313,7 +316,7 @@ def test_a_deleted_robot_leaves_the_frames_and_frees_what_cameras_drew_of_it(con
     while the steps go on (a frame in flight meets the deletion): once deleted it is in no frame, and
     the process's memory stays flat, its bodies' meshes freed from the GL with it (each cycle kept
     about 350 KB of vertex buffers before)."""
-    world = make_world(control_config, sdf_world())
+    world = make_world(control_config, sdf_world('<include><uri>model://sun</uri></include>'))
     watcher = world.spawn(urdf_xml, 'watcher')
     watcher.enable_sensor('camera')
     world.frames_ahead = True

@@ -1,7 +1,8 @@
 // The browser view of the plant's world, as gzclient shows it: the scene the node publishes on
-// /gazebo/scene (every visual of the world and of each robot's links, the sun, the ambient light and
-// the background), its links posed live from /gazebo/link_states, orbit / pan / zoom. The viewer node
-// (scripts/viewer) sends both over one WebSocket and serves the meshes' files.
+// /gazebo/scene (every visual of the world and of each robot's links with its material, the world's
+// lights, the ambient light and the background), lit as the plant's cameras light it, its links
+// posed live from /gazebo/link_states, orbit / pan / zoom. The viewer node (scripts/viewer) sends
+// both over one WebSocket and serves the meshes' files.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { STLLoader } from 'three/examples/jsm/loaders/STLLoader.js';
@@ -28,9 +29,6 @@ const controls = new OrbitControls(camera, canvas);
 controls.target.set(0, 0, 0);
 controls.update();
 
-const ambientLight = new THREE.AmbientLight(0xffffff, 0.35);
-const sun = new THREE.DirectionalLight(0xffffff, 0.65);
-scene.add(ambientLight, sun, sun.target);
 
 // World visuals (posed once) and robot links (posed by link_states), by link name.
 const world = new THREE.Group();
@@ -56,43 +54,173 @@ function setPose(object, pose) {
   object.quaternion.set(pose[3], pose[4], pose[5], pose[6]);
 }
 
-function material(colour) {
-  return new THREE.MeshLambertMaterial({
-    color: new THREE.Color(colour[0], colour[1], colour[2]), side: THREE.DoubleSide,
-    transparent: colour[3] < 1, opacity: colour[3],
+// The plant's cameras' lighting (pinhole.h: OGRE's per-pixel lighting as Gazebo 11 draws it), per
+// pixel on the face the view sees: emissive + scene ambient x material ambient + each light's diffuse
+// x material diffuse x n . l (times the texture) + its specular x material specular x (n . h)^shininess
+// where the material has specular, a point or spot light attenuated by 1 / (constant + linear d +
+// quadratic d^2) within its range, a spot by its cone. The first 8 lights of the world (OGRE's limit
+// on one object; the cameras take each object's 8 nearest); no shadows.
+const MAX_LIGHTS = 8;
+const lighting = {
+  sceneAmbient: { value: new THREE.Vector3(0.4, 0.4, 0.4) },
+  lightCount: { value: 0 },
+  lightPosition: { value: Array.from({ length: MAX_LIGHTS }, () => new THREE.Vector4()) },  // w: 0 directional, 1 point, 2 spot
+  lightDirection: { value: Array.from({ length: MAX_LIGHTS }, () => new THREE.Vector3()) },
+  lightDiffuse: { value: Array.from({ length: MAX_LIGHTS }, () => new THREE.Vector3()) },
+  lightSpecular: { value: Array.from({ length: MAX_LIGHTS }, () => new THREE.Vector3()) },
+  lightAttenuation: { value: Array.from({ length: MAX_LIGHTS }, () => new THREE.Vector4()) },
+  lightSpot: { value: Array.from({ length: MAX_LIGHTS }, () => new THREE.Vector3()) },
+};
+
+const VERTEX_SHADER = `
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+varying vec2 textureUv;
+void main() {
+  vec4 world = modelMatrix * vec4(position, 1.0);
+  worldPosition = world.xyz;
+  worldNormal = transpose(inverse(mat3(modelMatrix))) * normal;
+  textureUv = uv;
+  gl_Position = projectionMatrix * viewMatrix * world;
+}
+`;
+
+const FRAGMENT_SHADER = `
+uniform vec3 sceneAmbient;
+uniform int lightCount;
+uniform vec4 lightPosition[${MAX_LIGHTS}];
+uniform vec3 lightDirection[${MAX_LIGHTS}];
+uniform vec3 lightDiffuse[${MAX_LIGHTS}];
+uniform vec3 lightSpecular[${MAX_LIGHTS}];
+uniform vec4 lightAttenuation[${MAX_LIGHTS}];
+uniform vec3 lightSpot[${MAX_LIGHTS}];
+uniform vec3 materialAmbient;
+uniform vec4 materialDiffuse;
+uniform vec3 materialSpecular;
+uniform vec3 materialEmissive;
+uniform float shininess;
+uniform sampler2D image;
+varying vec3 worldPosition;
+varying vec3 worldNormal;
+varying vec2 textureUv;
+void main() {
+  vec3 n = normalize(worldNormal) * (gl_FrontFacing ? 1.0 : -1.0);
+  vec3 toEye = normalize(cameraPosition - worldPosition);
+  vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+  for (int i = 0; i < ${MAX_LIGHTS}; ++i) {
+    if (i >= lightCount) break;
+    vec3 l;
+    float share = 1.0;
+    if (lightPosition[i].w == 0.0) {
+      l = -lightDirection[i];
+    } else {
+      vec3 toLight = lightPosition[i].xyz - worldPosition;
+      float d = length(toLight);
+      l = toLight / max(d, 1e-20);
+      vec4 a = lightAttenuation[i];
+      share = d <= a.x ? 1.0 / (a.y + a.z * d + a.w * d * d) : 0.0;
+      if (lightPosition[i].w == 2.0) {
+        float rho = dot(-l, lightDirection[i]);
+        float inner = lightSpot[i].x, outer = lightSpot[i].y;
+        float spot = rho < outer ? 0.0 : inner > outer ? clamp((rho - outer) / (inner - outer), 0.0, 1.0) : 1.0;
+        share *= lightSpot[i].z > 0.0 ? pow(spot, lightSpot[i].z) : step(outer, rho);
+      }
+    }
+    float nl = dot(n, l);
+    if (nl > 0.0) {
+      diffuse += lightDiffuse[i] * nl * share;
+#if SPECULAR
+      specular += lightSpecular[i] * pow(max(0.0, dot(n, normalize(l + toEye))), shininess) * share;
+#endif
+    }
+  }
+#if TEXTURED
+  vec4 texel = texture2D(image, textureUv);
+#else
+  vec4 texel = vec4(1.0);
+#endif
+  vec3 lit = (materialEmissive + sceneAmbient * materialAmbient + materialDiffuse.rgb * diffuse) * texel.rgb +
+             materialSpecular * specular;
+  gl_FragColor = vec4(clamp(lit, 0.0, 1.0), materialDiffuse.a * texel.a);
+}
+`;
+
+const vector3 = (c) => new THREE.Vector3(c[0], c[1], c[2]);
+// The world's lights as buildScene found them: the largest specular light a surface can meet (a
+// specular share below a level is left out, as the cameras leave it), and whether all are directional.
+const worldLights = { strongestSpecular: 0, allDirectional: true, list: [] };
+
+// A material of the scene's JSON ({ambient, diffuse, specular, emissive: [r g b a], shininess}), a
+// texture's image over its ambient and diffuse light where `map` is given.
+function material(m, map = null) {
+  const specular = m.shininess > 0 && Math.max(m.specular[0], m.specular[1], m.specular[2]) *
+    worldLights.strongestSpecular >= 1 / 255;
+  const opacity = m.diffuse[3];
+  return new THREE.ShaderMaterial({
+    uniforms: {
+      ...lighting,
+      materialAmbient: { value: vector3(m.ambient) },
+      materialDiffuse: { value: new THREE.Vector4(m.diffuse[0], m.diffuse[1], m.diffuse[2], opacity) },
+      materialSpecular: { value: vector3(m.specular) },
+      materialEmissive: { value: vector3(m.emissive) },
+      shininess: { value: m.shininess },
+      image: { value: map },
+    },
+    defines: { TEXTURED: map ? 1 : 0, SPECULAR: specular ? 1 : 0 },
+    userData: { plant: m, map },
+    vertexShader: VERTEX_SHADER,
+    fragmentShader: FRAGMENT_SHADER,
+    side: THREE.DoubleSide,
+    transparent: opacity < 1,
+    depthWrite: opacity >= 1,
   });
 }
 
-// The world's visuals never move and its sun is fixed, so their Lambert shading (colour x (ambient +
-// (1 - ambient) n . l), as the robots' materials and the plant's cameras shade) is the same every
-// frame: it is worked out once per vertex into vertex colours of an unlit material. SwiftShader (a
-// browser without a GPU) then draws the mesh race track about a third faster. Exact for flat faces
-// (boxes, planes, the tracks' meshes), Gouraud for curved ones; a face seen from behind keeps its
-// front's shade.
-const worldLight = { ambient: 0.35, toSun: new THREE.Vector3(0, 0, 1) };
+// What the plant's cameras see on a mesh file's sub-mesh: its own material (by name) as the plant
+// applied the visual's to it, with the loader's texture where the plant draws one; the visual's
+// material (on Gazebo's white) where the file names none the plant knows.
+function meshMaterial(visual, loaded) {
+  const own = (visual.mesh_materials || []).find((m) => m.name === loaded.name);
+  if (own) return material(own.material, own.textured && loaded.map ? loaded.map : null);
+  return material(visual.material);
+}
 
+// The world's visuals never move: where every light is directional and a surface has no specular
+// share, its light at each vertex is all there is to it (exact on flat faces: n . l is the same
+// over a face; Gouraud on curved ones), worked out once into vertex colours of an unlit material
+// (SwiftShader, a browser without a GPU, draws the mesh race track about a third faster so). A face
+// seen from behind keeps its front's shade.
 function bakeLighting(object) {
+  if (!worldLights.allDirectional) return;
   object.updateWorldMatrix(true, true);
   object.traverse((child) => {
     if (!child.isMesh || child.userData.baked) return;
+    const materials = Array.isArray(child.material) ? child.material : [child.material];
+    if (materials.some((m) => !m.isShaderMaterial || m.defines.SPECULAR) || materials.length > 1) return;
+    const { plant: m, map } = materials[0].userData;
     const geometry = child.geometry.clone();  // a loader may share one geometry between meshes
     if (!geometry.getAttribute('normal')) geometry.computeVertexNormals();
     const normals = geometry.getAttribute('normal');
-    const given = geometry.getAttribute('color');
     const toWorld = new THREE.Matrix3().getNormalMatrix(child.matrixWorld);
     const n = new THREE.Vector3(), shades = new Float32Array(normals.count * 3);
+    const ambient = lighting.sceneAmbient.value;
+    const base = [m.emissive[0] + ambient.x * m.ambient[0], m.emissive[1] + ambient.y * m.ambient[1],
+                  m.emissive[2] + ambient.z * m.ambient[2]];
     for (let k = 0; k < normals.count; k++) {
       n.fromBufferAttribute(normals, k).applyMatrix3(toWorld).normalize();
-      const shade = worldLight.ambient + (1 - worldLight.ambient) * Math.max(0, n.dot(worldLight.toSun));
-      for (let c = 0; c < 3; c++) shades[3 * k + c] = shade * (given ? given.getComponent(k, c) : 1);
+      const light = [0, 0, 0];
+      for (const l of worldLights.list) {
+        const nl = -(n.x * l.direction[0] + n.y * l.direction[1] + n.z * l.direction[2]);
+        if (nl > 0) for (let c = 0; c < 3; c++) light[c] += l.diffuse[c] * nl;
+      }
+      for (let c = 0; c < 3; c++) shades[3 * k + c] = Math.min(1, base[c] + m.diffuse[c] * light[c]);
     }
     geometry.setAttribute('color', new THREE.BufferAttribute(shades, 3));
     child.geometry = geometry;
-    const unlit = (m) => new THREE.MeshBasicMaterial({
-      color: m.color, map: m.map || null, vertexColors: true, side: m.side, transparent: m.transparent,
-      opacity: m.opacity, alphaTest: m.alphaTest,
+    child.material = new THREE.MeshBasicMaterial({
+      map, vertexColors: true, side: THREE.DoubleSide, transparent: m.diffuse[3] < 1, opacity: m.diffuse[3],
+      depthWrite: m.diffuse[3] >= 1,
     });
-    child.material = Array.isArray(child.material) ? child.material.map(unlit) : unlit(child.material);
     child.userData.baked = true;
   });
 }
@@ -107,11 +235,16 @@ function loadMesh(visual, into) {
   const extension = visual.mesh.split('.').pop().toLowerCase();
   const scale = visual.scale || [1, 1, 1];
   const done = (object) => {
-    // As the plant's cameras draw them: both sides lit, normals from the faces where a file has none.
+    // As the plant's cameras draw them: both sides lit, normals from the faces where a file has none,
+    // each sub-mesh in the material the plant gives it.
     object.traverse((child) => {
       if (!child.isMesh) return;
       if (!child.geometry.getAttribute('normal')) child.geometry.computeVertexNormals();
-      for (const m of Array.isArray(child.material) ? child.material : [child.material]) m.side = THREE.DoubleSide;
+      if (!child.geometry.getAttribute('uv')) {
+        child.geometry.setAttribute('uv', new THREE.BufferAttribute(new Float32Array(2 * child.geometry.getAttribute('position').count), 2));
+      }
+      child.material = Array.isArray(child.material) ? child.material.map((m) => meshMaterial(visual, m))
+        : meshMaterial(visual, child.material);
     });
     const scaled = new THREE.Group();
     scaled.scale.set(scale[0], scale[1], scale[2]);
@@ -128,7 +261,7 @@ function loadMesh(visual, into) {
   if (extension === 'stl') {
     new STLLoader().load(url, (geometry) => {
       geometry.computeVertexNormals();
-      done(new THREE.Mesh(geometry, material(visual.colour)));
+      done(new THREE.Mesh(geometry, material(visual.material)));
     }, undefined, failed);
   } else if (extension === 'dae') {
     new ColladaLoader().load(url, (collada) => {
@@ -149,11 +282,7 @@ function loadMesh(visual, into) {
           materials.preload();
           loader.setMaterials(materials);
         }
-        const object = loader.parse(text);
-        object.traverse((child) => {
-          if (child.isMesh && !materials) child.material = material(visual.colour);
-        });
-        done(object);
+        done(loader.parse(text));
       };
       if (library) {
         new MTLLoader().setPath(directory).load(library[1].trim(), withMaterials, undefined, () => withMaterials(null));
@@ -169,14 +298,14 @@ function loadMesh(visual, into) {
 function shapeOf(visual) {
   if (visual.kind === 'box') {
     const s = visual.size;
-    return new THREE.Mesh(new THREE.BoxGeometry(s[0], s[1], s[2]), material(visual.colour));
+    return new THREE.Mesh(new THREE.BoxGeometry(s[0], s[1], s[2]), material(visual.material));
   }
   if (visual.kind === 'sphere') {
-    return new THREE.Mesh(new THREE.SphereGeometry(visual.radius, 32, 16), material(visual.colour));
+    return new THREE.Mesh(new THREE.SphereGeometry(visual.radius, 32, 16), material(visual.material));
   }
   if (visual.kind === 'cylinder') {
     const mesh = new THREE.Mesh(new THREE.CylinderGeometry(visual.radius, visual.radius, visual.length, 32),
-                                material(visual.colour));
+                                material(visual.material));
     mesh.rotation.x = Math.PI / 2;  // three.js's cylinders lie along y, URDF's and SDF's along z
     const holder = new THREE.Group();
     holder.add(mesh);
@@ -184,19 +313,19 @@ function shapeOf(visual) {
   }
   if (visual.kind === 'capsule') {
     const mesh = new THREE.Mesh(new THREE.CapsuleGeometry(visual.radius, visual.length, 8, 32),
-                                material(visual.colour));
+                                material(visual.material));
     mesh.rotation.x = Math.PI / 2;  // along y in three.js, along z in SDF
     const holder = new THREE.Group();
     holder.add(mesh);
     return holder;
   }
   if (visual.kind === 'ellipsoid') {
-    const mesh = new THREE.Mesh(new THREE.SphereGeometry(1, 32, 16), material(visual.colour));
+    const mesh = new THREE.Mesh(new THREE.SphereGeometry(1, 32, 16), material(visual.material));
     mesh.scale.set(visual.radii[0], visual.radii[1], visual.radii[2]);
     return mesh;
   }
   if (visual.kind === 'plane') {
-    const mesh = new THREE.Mesh(new THREE.PlaneGeometry(GROUND_SIZE, GROUND_SIZE), material(visual.colour));
+    const mesh = new THREE.Mesh(new THREE.PlaneGeometry(GROUND_SIZE, GROUND_SIZE), material(visual.material));
     const n = visual.normal;
     mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), new THREE.Vector3(n[0], n[1], n[2]).normalize());
     return mesh;
@@ -210,15 +339,22 @@ function buildScene(description) {
   links.clear();
   const background = description.background;
   scene.background = new THREE.Color(background[0], background[1], background[2]);
-  // three.js's lambert divides by pi: these intensities give colour x (ambient + (1 - ambient) n . l),
-  // the plant's cameras' shading
-  ambientLight.intensity = Math.PI * description.ambient;
-  sun.intensity = Math.PI * (1 - description.ambient);
-  const d = description.light_direction;
-  sun.position.set(-d[0] * 100, -d[1] * 100, -d[2] * 100);
-  worldLight.ambient = description.ambient;
-  worldLight.toSun.set(-d[0], -d[1], -d[2]).normalize();
-  sun.target.position.set(0, 0, 0);
+  lighting.sceneAmbient.value.set(...description.ambient);
+  const lights = description.lights.slice(0, MAX_LIGHTS);
+  lighting.lightCount.value = lights.length;
+  const kinds = { directional: 0, point: 1, spot: 2 };
+  worldLights.list = lights;
+  worldLights.allDirectional = lights.every((light) => light.type === 'directional');
+  worldLights.strongestSpecular = Math.max(0, ...lights.map((light) => Math.max(...light.specular) *
+    (light.type === 'directional' ? 1 : 1 / Math.max(light.attenuation[1], 1e-3))));
+  lights.forEach((light, k) => {
+    lighting.lightPosition.value[k].set(...light.position, kinds[light.type]);
+    lighting.lightDirection.value[k].set(...light.direction);
+    lighting.lightDiffuse.value[k].set(...light.diffuse);
+    lighting.lightSpecular.value[k].set(...light.specular);
+    lighting.lightAttenuation.value[k].set(...light.attenuation);
+    lighting.lightSpot.value[k].set(Math.cos(light.spot[0] / 2), Math.cos(light.spot[1] / 2), light.spot[2]);
+  });
   for (const visual of description.visuals) {
     const holder = new THREE.Group();
     setPose(holder, visual.pose);

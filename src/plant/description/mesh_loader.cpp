@@ -13,6 +13,11 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <stb/stb_image.h>
+#include <tinyxml2.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
 
 namespace bullet_plant
 {
@@ -27,20 +32,122 @@ bool isCollada(const std::string& file)
   return ext == ".dae";
 }
 
-MeshData::SubMesh subMeshFor(const aiMaterial* material)
+// A Collada <effect>'s colours, as Gazebo 11's ColladaLoader::LoadMaterial reads them.
+const tinyxml2::XMLElement* childNamed(const tinyxml2::XMLElement* e, const char* name)
+{
+  return e ? e->FirstChildElement(name) : nullptr;
+}
+
+// "r g b a" of a <color>, or false.
+bool readColour(const tinyxml2::XMLElement* slot, Rgba& out)
+{
+  const tinyxml2::XMLElement* colour = childNamed(slot, "color");
+  if (!colour || !colour->GetText())
+    return false;
+  std::istringstream words(colour->GetText());
+  float c[4] = {0, 0, 0, 1};
+  int n = 0;
+  while (n < 4 && words >> c[n])
+    ++n;
+  if (n < 3)
+    return false;
+  out = {c[0], c[1], c[2], c[3]};
+  return true;
+}
+
+// The file's <material> elements by name (and id), each with its effect's colours: Assimp names a
+// Collada material by its name attribute, else its id.
+std::map<std::string, Material> colladaMaterials(const std::string& file)
+{
+  std::map<std::string, Material> out;
+  tinyxml2::XMLDocument doc;
+  if (doc.LoadFile(file.c_str()) != tinyxml2::XML_SUCCESS)
+    return out;
+  const tinyxml2::XMLElement* root = doc.FirstChildElement("COLLADA");
+  std::map<std::string, const tinyxml2::XMLElement*> effects;
+  for (auto* library = childNamed(root, "library_effects"); library;
+       library = library->NextSiblingElement("library_effects"))
+    for (auto* effect = library->FirstChildElement("effect"); effect; effect = effect->NextSiblingElement("effect"))
+      if (effect->Attribute("id"))
+        effects[effect->Attribute("id")] = effect;
+  for (auto* library = childNamed(root, "library_materials"); library;
+       library = library->NextSiblingElement("library_materials"))
+    for (auto* material = library->FirstChildElement("material"); material;
+         material = material->NextSiblingElement("material"))
+    {
+      const tinyxml2::XMLElement* instance = material->FirstChildElement("instance_effect");
+      std::string url = instance && instance->Attribute("url") ? instance->Attribute("url") : "";
+      if (!url.empty() && url[0] == '#')
+        url = url.substr(1);
+      const auto effect = effects.find(url);
+      if (effect == effects.end())
+        continue;
+      // common::Material's defaults (gazebo/common/Material.cc)
+      Material m;
+      m.ambient = {0.4f, 0.4f, 0.4f, 1.0f};
+      m.diffuse = {0.5f, 0.5f, 0.5f, 1.0f};
+      const tinyxml2::XMLElement* technique = childNamed(childNamed(effect->second, "profile_COMMON"), "technique");
+      const tinyxml2::XMLElement* lambert = childNamed(technique, "lambert");
+      const tinyxml2::XMLElement* shaded = lambert ? lambert : childNamed(technique, "phong");
+      if (!shaded)
+        shaded = childNamed(technique, "blinn");
+      if (shaded)
+      {
+        readColour(shaded->FirstChildElement("ambient"), m.ambient);
+        readColour(shaded->FirstChildElement("emission"), m.emissive);
+        readColour(shaded->FirstChildElement("diffuse"), m.diffuse);
+        if (!lambert)
+        {
+          readColour(shaded->FirstChildElement("specular"), m.specular);
+          const tinyxml2::XMLElement* shininess = childNamed(shaded->FirstChildElement("shininess"), "float");
+          if (shininess && shininess->GetText())
+            m.shininess = std::max(0.0, std::atof(shininess->GetText()));
+        }
+      }
+      m.ambient.a = m.specular.a = m.emissive.a = 1.0f;
+      m.diffuse.a = 1.0f;  // the opacity is Assimp's (subMeshFor)
+      if (material->Attribute("id"))
+        out[material->Attribute("id")] = m;
+      if (material->Attribute("name"))
+        out[material->Attribute("name")] = m;
+    }
+  return out;
+}
+
+MeshData::SubMesh subMeshFor(const aiMaterial* material, const std::map<std::string, Material>* collada)
 {
   MeshData::SubMesh s;
   if (!material)
     return s;
   aiString name;
   material->Get(AI_MATKEY_NAME, name);
-  aiColor4D colour;
+  s.name = name.C_Str();
   // Assimp gives files without materials (STL, OBJ without .mtl) its default material.
-  if (std::string(name.C_Str()) != AI_DEFAULT_MATERIAL_NAME &&
-      material->Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+  if (std::string(name.C_Str()) != AI_DEFAULT_MATERIAL_NAME)
   {
-    s.has_colour = true;
-    s.diffuse = {colour.r, colour.g, colour.b, colour.a};
+    auto colour = [&](const char* key, unsigned type, unsigned index, Rgba& out) {
+      aiColor4D c;
+      if (material->Get(key, type, index, c) == AI_SUCCESS)
+        out = {c.r, c.g, c.b, 1.0f};
+    };
+    const auto found = collada ? collada->find(name.C_Str()) : std::map<std::string, Material>::const_iterator();
+    if (collada && found != collada->end())
+      s.material = found->second;
+    else
+    {
+      s.material.ambient = {0, 0, 0, 1};
+      colour(AI_MATKEY_COLOR_AMBIENT, s.material.ambient);
+      colour(AI_MATKEY_COLOR_DIFFUSE, s.material.diffuse);
+      colour(AI_MATKEY_COLOR_SPECULAR, s.material.specular);
+      colour(AI_MATKEY_COLOR_EMISSIVE, s.material.emissive);
+      float shininess = 0;
+      if (material->Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS)
+        s.material.shininess = std::max(0.0f, shininess);
+    }
+    float opacity = 1;
+    if (material->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS)
+      s.material.diffuse.a = std::max(0.0f, std::min(1.0f, opacity));
+    s.has_material = true;
   }
   aiString texture;
   if (material->GetTexture(aiTextureType_DIFFUSE, 0, &texture) == AI_SUCCESS)
@@ -48,7 +155,8 @@ MeshData::SubMesh subMeshFor(const aiMaterial* material)
   return s;
 }
 
-// A texture file name as a mesh file writes it, resolved against the mesh file's directory.
+// A texture file name as a mesh file writes it, resolved as Gazebo's common::Material::SetTextureImage
+// does: against the mesh file's directory, else its ../materials/textures/.
 std::string texturePath(const std::string& mesh_file, std::string name)
 {
   if (name.compare(0, 7, "file://") == 0)
@@ -56,11 +164,16 @@ std::string texturePath(const std::string& mesh_file, std::string name)
   if (!name.empty() && name[0] == '/')
     return name;
   const size_t slash = mesh_file.rfind('/');
-  return slash == std::string::npos ? name : mesh_file.substr(0, slash + 1) + name;
+  const std::string dir = slash == std::string::npos ? "" : mesh_file.substr(0, slash + 1);
+  std::error_code ec;
+  if (std::filesystem::exists(dir + name, ec) || !std::filesystem::exists(dir + "../materials/textures/" + name, ec))
+    return dir + name;
+  return dir + "../materials/textures/" + name;
 }
 
 // Every mesh instance of the node tree, in the scene's frame, appended to `out`.
-void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, MeshData& out)
+void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
+                const std::map<std::string, Material>* collada, MeshData& out)
 {
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned k = 0; k < node.mNumMeshes; ++k)
@@ -74,11 +187,11 @@ void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& par
       const aiVector3D uv = mesh.HasTextureCoords(0) ? mesh.mTextureCoords[0][v] : aiVector3D(0, 0, 0);
       out.uvs.insert(out.uvs.end(), {uv.x, uv.y});
     }
-    MeshData::SubMesh sub = subMeshFor(scene.mMaterials ? scene.mMaterials[mesh.mMaterialIndex] : nullptr);
+    MeshData::SubMesh sub = subMeshFor(scene.mMaterials ? scene.mMaterials[mesh.mMaterialIndex] : nullptr, collada);
     if (!sub.texture.empty() && mesh.HasTextureCoords(0))
       sub.image = loadTexture(texturePath(out.file, sub.texture), sub.texture_problem);
     else if (!sub.texture.empty())
-      sub.texture_problem = "the mesh has no texture coordinates";
+      sub.texture_problem = "texture '" + sub.texture + "' is not drawn: the mesh has no texture coordinates";
     sub.first_triangle = out.triangleCount();
     for (unsigned f = 0; f < mesh.mNumFaces; ++f)
     {
@@ -93,7 +206,7 @@ void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& par
       out.submeshes.push_back(sub);
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c)
-    appendNode(scene, *node.mChildren[c], transform, out);
+    appendNode(scene, *node.mChildren[c], transform, collada, out);
 }
 
 // One vertex per position and texture coordinate: Assimp keeps a corner once per normal (an STL
@@ -134,7 +247,9 @@ std::shared_ptr<MeshData> readMesh(const std::string& file, const urdf::Vector3&
   }
   auto mesh = std::make_shared<MeshData>();
   mesh->file = file;
-  appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), *mesh);
+  const std::map<std::string, Material> collada =
+      isCollada(file) ? colladaMaterials(file) : std::map<std::string, Material>();
+  appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), isCollada(file) ? &collada : nullptr, *mesh);
   if (mesh->indices.empty())
   {
     reason = "has no triangles";
@@ -163,6 +278,15 @@ std::shared_ptr<MeshData> readMesh(const std::string& file, const urdf::Vector3&
   return mesh;
 }
 }  // namespace
+
+std::vector<std::string> textureProblems(const MeshData& mesh)
+{
+  std::vector<std::string> out;
+  for (const MeshData::SubMesh& s : mesh.submeshes)
+    if (!s.texture_problem.empty() && std::find(out.begin(), out.end(), s.texture_problem) == out.end())
+      out.push_back(s.texture_problem);
+  return out;
+}
 
 const MeshData::SubMesh& MeshData::subMeshOf(int triangle) const
 {

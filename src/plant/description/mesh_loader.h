@@ -1,7 +1,8 @@
 // Mesh files as the plant simulates them: STL (ASCII and binary), Collada (.dae) and OBJ read
-// through Assimp into one triangle list at a given scale, with each sub-mesh's diffuse colour and
-// texture for the cameras. Collada files come out z up in metres, as Gazebo reads them: the file's
-// <unit> is applied and a Y_UP (or X_UP) file is turned so its up axis is z.
+// through Assimp into one triangle list at a given scale, with each sub-mesh's material and
+// texture for the cameras, as Gazebo 11 reads them (common/ColladaLoader.cc, OBJLoader.cc). Collada
+// files come out z up in metres, as Gazebo reads them: the file's <unit> is applied and a Y_UP (or
+// X_UP) file is turned so its up axis is z.
 #pragma once
 
 #include <cmath>
@@ -56,10 +57,20 @@ struct MeshData
   struct SubMesh
   {
     int first_triangle = 0, triangle_count = 0;
-    bool has_colour = false;  // false: the file gives no diffuse colour (STL); use the visual's
-    Rgba diffuse;
+    // The file's material for these triangles; false: it gives none (an STL, an OBJ without a
+    // .mtl), and Gazebo draws them in Material::gazeboWhite. A Collada effect's colours as
+    // Gazebo's ColladaLoader takes them: its common::Material's ambient 0.4, diffuse 0.5 (a diffuse
+    // <texture> leaves it so), specular and emissive 0, shininess 0 where the effect gives none,
+    // <specular> and <shininess> only from phong and blinn, a constant effect's colours not at all;
+    // its opacity from <transparent> and <transparency> as the Collada specification reads them
+    // (Assimp's). An OBJ's Ka, Kd, Ks, Ke, Ns and d (Assimp's defaults where absent).
+    bool has_material = false;
+    Material material;
+    std::string name;         // the material's name in the file (Assimp's: a Collada material's name, an OBJ's newmtl)
     std::string texture;      // the diffuse texture's file name as the file writes it, or ""
-    std::shared_ptr<const Texture> image;  // that texture (relative to the mesh file), null if none or unreadable
+    // That texture: beside the mesh file, else in ../materials/textures/ (where Gazebo looks next),
+    // null if none or unreadable.
+    std::shared_ptr<const Texture> image;
     std::string texture_problem;           // why a named texture is not used, or ""
   };
   std::string file;
@@ -74,6 +85,10 @@ struct MeshData
   // The sub-mesh a triangle belongs to.
   const SubMesh& subMeshOf(int triangle) const;
 };
+
+// Why the textures a mesh's sub-meshes name are not drawn (not found, unreadable, no texture
+// coordinates), each once: what a world's or robot's loader warns about, naming the visual.
+std::vector<std::string> textureProblems(const MeshData& mesh);
 
 // The mesh in `file` (a resolved path) scaled by `scale`, loaded once per (file, scale) while any
 // copy is alive. Null with `reason` saying why (unreadable or unknown format, no triangles, a zero

@@ -305,4 +305,16 @@ RobotDescription parseRobotDescription(const std::string& urdf_xml, const std::s
   return out;
 }
 
+VisualMaterial visualMaterial(const RobotDescription& robot, const std::string& link, size_t index,
+                              const urdf::Visual& visual)
+{
+  const auto sdf = robot.visual_materials.find(link);
+  if (sdf != robot.visual_materials.end() && index < sdf->second.size())
+    return sdf->second[index];
+  if (visual.material)
+    return VisualMaterial::colour({float(visual.material->color.r), float(visual.material->color.g),
+                                   float(visual.material->color.b), float(visual.material->color.a)});
+  return VisualMaterial();
+}
+
 }  // namespace bullet_plant

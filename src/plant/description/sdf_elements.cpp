@@ -152,17 +152,109 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
   return true;
 }
 
-Rgba readColour(const tinyxml2::XMLElement* visual)
+namespace
 {
-  Rgba colour;
-  const tinyxml2::XMLElement* material = visual ? visual->FirstChildElement("material") : nullptr;
+// gazebo.material's materials that are colours alone (no texture, no shader), as each draws: a
+// pass's `ambient`, `diffuse`, `specular r g b [a] shininess` and `emissive`; where a material has
+// two passes the second draws over the first (Gazebo/White: OGRE's default white ambient, diffuse
+// 1, specular 0.1 at 128). The *Transparent ones' alpha comes from their texture unit's alpha_op;
+// RedTransparent is unlit (lighting off): its red is drawn as is.
+struct GazeboMaterial
+{
+  const char* name;
+  float ambient[3], diffuse[4], specular[3], shininess, emissive[3];
+};
+const GazeboMaterial kGazeboMaterials[] = {
+    {"Gazebo/Grey", {.3f, .3f, .3f}, {.7f, .7f, .7f, 1}, {.01f, .01f, .01f}, 1.5f, {0, 0, 0}},
+    {"Gazebo/DarkGrey", {.175f, .175f, .175f}, {.175f, .175f, .175f, 1}, {.175f, .175f, .175f}, 1.5f, {0, 0, 0}},
+    {"Gazebo/White", {1, 1, 1}, {1, 1, 1, 1}, {.1f, .1f, .1f}, 128, {0, 0, 0}},
+    {"Gazebo/FlatBlack", {.1f, .1f, .1f}, {.1f, .1f, .1f, 1}, {.01f, .01f, .01f}, 1, {0, 0, 0}},
+    {"Gazebo/Black", {0, 0, 0}, {0, 0, 0, 1}, {.1f, .1f, .1f}, 5, {0, 0, 0}},
+    {"Gazebo/Red", {1, 0, 0}, {1, 0, 0, 1}, {.1f, .1f, .1f}, 1, {0, 0, 0}},
+    {"Gazebo/RedBright", {.87f, .26f, .07f}, {.87f, .26f, .07f, 1}, {.87f, .26f, .07f}, 1, {0, 0, 0}},
+    {"Gazebo/Green", {0, 1, 0}, {0, 1, 0, 1}, {.1f, .1f, .1f}, 1, {0, 0, 0}},
+    {"Gazebo/Blue", {0, 0, 1}, {0, 0, 1, 1}, {.1f, .1f, .1f}, 1, {0, 0, 0}},
+    {"Gazebo/SkyBlue", {.13f, .44f, .70f}, {0, 0, 1, 1}, {.1f, .1f, .1f}, 1, {0, 0, 0}},
+    {"Gazebo/Yellow", {1, 1, 0}, {1, 1, 0, 1}, {0, 0, 0}, 0, {0, 0, 0}},
+    {"Gazebo/ZincYellow", {.9725f, .9529f, .2078f}, {.9725f, .9529f, .2078f, 1}, {.9725f, .9529f, .2078f}, 1, {0, 0, 0}},
+    {"Gazebo/Purple", {1, 0, 1}, {1, 0, 1, 1}, {.1f, .1f, .1f}, 1, {0, 0, 0}},
+    {"Gazebo/Turquoise", {0, 1, 1}, {0, 1, 1, 1}, {.1f, .1f, .1f}, 1, {0, 0, 0}},
+    {"Gazebo/Orange", {1, .5088f, .0468f}, {1, .5088f, .0468f, 1}, {.5f, .5f, .5f}, 128, {0, 0, 0}},
+    {"Gazebo/Gold", {.4f, .24869f, .020759f}, {.8f, .64869f, .120759f, 1}, {.4f, .4f, .4f}, 12.5f, {0, 0, 0}},
+    {"Gazebo/Pioneer2Body", {.481193f, .000123f, .000123f}, {.681193f, .000923f, .000923f, 1}, {.5f, .5f, .5f},
+     12.5f, {0, 0, 0}},
+    {"Gazebo/GreyTransparent", {.5f, .5f, .5f}, {.5f, .5f, .5f, .5f}, {0, 0, 0}, 0, {0, 0, 0}},
+    {"Gazebo/GreenTransparent", {0, 1, 0}, {0, 1, 0, .5f}, {0, 0, 0}, 0, {0, 0, 0}},
+    {"Gazebo/BlueTransparent", {0, 0, 1}, {0, 0, 1, .5f}, {0, 0, 0}, 0, {0, 0, 0}},
+    {"Gazebo/YellowTransparent", {1, 1, 0}, {1, 1, 0, .5f}, {0, 0, 0}, 0, {0, 0, 0}},
+    {"Gazebo/DarkMagentaTransparent", {.6f, 0, .6f}, {.6f, 0, .6f, .5f}, {0, 0, 0}, 0, {0, 0, 0}},
+    {"Gazebo/OrangeTransparent", {1, .44f, 0}, {1, .44f, 0, .4f}, {0, 0, 0}, 0, {0, 0, 0}},
+    {"Gazebo/RedTransparent", {0, 0, 0}, {0, 0, 0, .5f}, {0, 0, 0}, 0, {1, 0, 0}},
+};
+
+Rgba colourOf(const tinyxml2::XMLElement* material, const char* tag, const std::string& where)
+{
+  const std::string text = xml::childText(material, tag, "");
+  std::istringstream words(text);
+  size_t count = 0;
+  for (std::string word; words >> word;)
+    ++count;
+  const std::vector<double> c = xml::numbers(text, count == 3 ? 3 : 4, where + " <material><" + tag + ">");
+  return {float(c[0]), float(c[1]), float(c[2]), c.size() == 4 ? float(c[3]) : 1.0f};
+}
+}  // namespace
+
+bool gazeboMaterial(const std::string& name, Material& out)
+{
+  for (const GazeboMaterial& g : kGazeboMaterials)
+    if (name == g.name)
+    {
+      out.ambient = {g.ambient[0], g.ambient[1], g.ambient[2], 1};
+      out.diffuse = {g.diffuse[0], g.diffuse[1], g.diffuse[2], g.diffuse[3]};
+      out.specular = {g.specular[0], g.specular[1], g.specular[2], 1};
+      out.emissive = {g.emissive[0], g.emissive[1], g.emissive[2], 1};
+      out.shininess = g.shininess;
+      return true;
+    }
+  return false;
+}
+
+VisualMaterial readMaterial(const tinyxml2::XMLElement* visual, const std::string& where,
+                            std::vector<std::string>& warnings)
+{
+  VisualMaterial out;
+  if (!visual)
+    return out;
+  if (visual->FirstChildElement("transparency"))
+    out.transparency = std::max(0.0, std::min(1.0, xml::childDouble(visual, "transparency", 0.0)));
+  const tinyxml2::XMLElement* material = visual->FirstChildElement("material");
   if (!material)
-    return colour;
-  std::string text = xml::childText(material, "diffuse", xml::childText(material, "ambient", ""));
-  if (text.empty())
-    return colour;
-  std::vector<double> c = xml::numbers(text, 4, "<material><diffuse>");
-  return {float(c[0]), float(c[1]), float(c[2]), float(c[3])};
+    return out;
+  const std::string script = xml::trimmed(xml::childText(material, "script/name", ""));
+  if (!script.empty())
+  {
+    out.has_replace = gazeboMaterial(script, out.replace);
+    if (!out.has_replace)
+      warnings.push_back(where + ": <material><script> '" + script + "' is not one of gazebo.material's plain "
+                         "colours the plant knows (a material script's textures and shaders are not read); the "
+                         "visual keeps its own colours");
+  }
+  struct Given
+  {
+    const char* tag;
+    bool* has;
+    Rgba* colour;
+  };
+  for (const Given& g : {Given{"ambient", &out.has_ambient, &out.ambient}, Given{"diffuse", &out.has_diffuse, &out.diffuse},
+                         Given{"specular", &out.has_specular, &out.specular},
+                         Given{"emissive", &out.has_emissive, &out.emissive}})
+    if (material->FirstChildElement(g.tag))
+    {
+      *g.has = true;
+      *g.colour = colourOf(material, g.tag, where);
+    }
+  out.shininess = std::max(0.0, xml::childDouble(material, "shininess", 0.0));
+  return out;
 }
 
 SurfaceDescription readSurface(const tinyxml2::XMLElement* collision, const std::string& where)

@@ -1,5 +1,5 @@
 // The SDF elements a world's static scenery and a simulated model both read, in one place: where an
-// element came from, <geometry>, <material> colours, <surface>, 1.7's <pose relative_to>, and
+// element came from, <geometry>, <material>s (and gazebo.material's plain colours), <surface>, 1.7's <pose relative_to>, and
 // finding the file of an <include>d model. Private to the plant.
 #pragma once
 
@@ -46,8 +46,15 @@ bool readFlag(const tinyxml2::XMLElement* parent, const char* tag, bool fallback
 bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,
                   std::vector<std::string>& warnings, const std::string& left_out = "collision left out");
 
-// A <visual>'s <material><diffuse> (else <ambient>) colour; the plant's grey without one.
-Rgba readColour(const tinyxml2::XMLElement* visual);
+// A <visual>'s <material> and <transparency> (VisualMaterial): its colours, <shininess>, and a
+// <script> naming one of gazebo.material's plain materials (gazeboMaterial). A script the plant does
+// not know (its own file's, or a textured Gazebo/* one) is said in `warnings` and left out. Throws
+// DescriptionError naming `where` for a colour that is not three or four numbers.
+VisualMaterial readMaterial(const tinyxml2::XMLElement* visual, const std::string& where,
+                            std::vector<std::string>& warnings);
+// The material of a Gazebo/* script (media/materials/scripts/gazebo.material) that is colours
+// alone: false for a name that is not one of them.
+bool gazeboMaterial(const std::string& name, Material& out);
 
 // A <collision>'s <surface>: friction (ode mu, mu2, fdir1), bounce and contact (ode kp, kd, max_vel,
 // min_depth), SDF's defaults where absent (the contact's: negative, not given). Throws

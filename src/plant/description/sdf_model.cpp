@@ -424,7 +424,11 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
     visual->name = name;
     visual->origin = xml::parseSdfPose(xml::childText(v, "pose", ""));
     visual->geometry = toUrdfGeometry(shape);
-    const Rgba colour = sdf::readColour(v);
+    const VisualMaterial material = sdf::readMaterial(v, in_link + " visual '" + name + "'", out.warnings);
+    out.visual_materials[part.name].push_back(material);
+    // the colour a URDF consumer (rviz's markers) shows: the one cameras see where no texture is
+    bool textured = false;
+    const Rgba colour = material.resolve(Material::gazeboWhite(), textured).diffuse;
     visual->material = std::make_shared<urdf::Material>();
     visual->material->color.init(std::to_string(colour.r) + " " + std::to_string(colour.g) + " " +
                                  std::to_string(colour.b) + " " + std::to_string(colour.a));

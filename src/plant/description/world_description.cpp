@@ -41,14 +41,14 @@ StaticCollision groundPlane(const std::string& model_name, const urdf::Pose& pos
   return ground;
 }
 
-// What cameras see of the ground plane: the plane itself, grey.
+// What cameras see of the ground plane: the plane itself in its model's Gazebo/Grey.
 StaticVisual groundPlaneVisual(const StaticCollision& ground)
 {
   StaticVisual visual;
   visual.name = ground.name.substr(0, ground.name.rfind("::")) + "::visual";
   visual.shape = ground.shape;
   visual.pose = ground.pose;
-  visual.colour = {0.7f, 0.7f, 0.7f, 1.0f};
+  visual.material.has_replace = sdf::gazeboMaterial("Gazebo/Grey", visual.material.replace);
   return visual;
 }
 
@@ -70,6 +70,8 @@ std::vector<double> colourNumbers(const std::string& text, const std::string& wh
 
 void readInclude(const tinyxml2::XMLElement* include, const Source& source, const std::string& scope,
                  const urdf::Pose& parent, int depth, WorldDescription& world);
+LightDescription readLight(const tinyxml2::XMLElement* light, const urdf::Pose& parent, const Source& source,
+                           WorldDescription& world);
 
 void readLink(const tinyxml2::XMLElement* link, const Source& source, const Placement& model, WorldDescription& world)
 {
@@ -111,9 +113,13 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
                            "cameras do not see it"))
       continue;
     visual.pose = compose(link_pose, xml::parseSdfPose(xml::childText(v, "pose", "")));
-    visual.colour = sdf::readColour(v);
+    visual.material = sdf::readMaterial(v, "visual '" + visual.name + "' in " + source.describe(), world.warnings);
     world.visuals.push_back(visual);
   }
+  if (link->FirstChildElement("light"))
+    world.warnings.push_back("the <light>s of link '" + model.name + "::" + link_name + "' in " + source.describe() +
+                             " are not lit: the plant lights cameras with a world's own <light>s and included "
+                             "light files (model://sun)");
 }
 
 // A <model>: its links, nested models and includes. `placement` is where the enclosing element
@@ -234,11 +240,28 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
     return;
   }
   if (uri == "model://sun" || uri == "model://sun/")
-    return;  // the default light direction is the sun's
+  {
+    // Gazebo's sun model is a light file, its light in the world (the include's pose moves it).
+    LightDescription sun = LightDescription::sun();
+    if (!name_override.empty())
+      sun.name = name_override;
+    sun.position = compose(pose, poseFromXyzRpy(0, 0, 10, 0, 0, 0)).position;
+    sun.direction = rotate(pose.rotation, sun.direction);
+    world.lights.push_back(sun);
+    return;
+  }
   tinyxml2::XMLDocument doc;
   Source model_source;
   std::string why;
   const tinyxml2::XMLElement* model = sdf::readIncludedModel(uri, source, depth, doc, model_source, why);
+  const tinyxml2::XMLElement* root = doc.FirstChildElement("sdf");
+  if (!model && root && root->FirstChildElement("light"))
+  {
+    // a light file (as model://sun is): its lights, where the include puts them
+    for (auto* light = root->FirstChildElement("light"); light; light = light->NextSiblingElement("light"))
+      world.lights.push_back(readLight(light, pose, model_source, world));
+    return;
+  }
   if (!model)
   {
     world.warnings.push_back("<include> of '" + uri + "' in " + source.describe() + ": " + why + "; skipped");
@@ -256,27 +279,40 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
     readModel(model, model_source, placement, depth, world);
 }
 
-// A point or spot <light>: its pose in the world, SDF's defaults where absent. A value that is not
-// a number stops the load (xml::numbers); one that lights nothing (a negative range) is warned about.
-LightDescription readLocalLight(const tinyxml2::XMLElement* light, bool spot, WorldDescription& world)
+// A <light> in the world (`parent`: where the element that holds it puts it), SDF's defaults where
+// absent. A value that is not a number stops the load (xml::numbers); a point or spot light that
+// lights nothing (a range or factors that cannot light) is warned about and left dark. Gazebo's
+// Light::SetAttenuation clamps the constant and linear factors to [0, 1]: so are they here.
+LightDescription readLight(const tinyxml2::XMLElement* light, const urdf::Pose& parent, const Source& source,
+                           WorldDescription& world)
 {
   LightDescription out;
   out.name = light->Attribute("name") ? light->Attribute("name") : "";
-  out.spot = spot;
+  const std::string type = light->Attribute("type") ? light->Attribute("type") : "point";
+  out.kind = type == "directional" ? LightDescription::Kind::Directional
+             : type == "spot"      ? LightDescription::Kind::Spot
+                                   : LightDescription::Kind::Point;
   const std::string where = "light '" + out.name + "'";
-  const urdf::Pose pose = xml::parseSdfPose(xml::childText(light, "pose", ""));
+  const urdf::Pose pose = compose(parent, xml::parseSdfPose(xml::childText(light, "pose", "")));
   out.position = pose.position;
   const std::vector<double> d = xml::numbers(xml::childText(light, "direction", "0 0 -1"), 3, where + " <direction>");
   const urdf::Vector3 direction = rotate(pose.rotation, urdf::Vector3(d[0], d[1], d[2]));
   const double norm = std::sqrt(direction.x * direction.x + direction.y * direction.y + direction.z * direction.z);
   if (norm > 0 && std::isfinite(norm))
     out.direction = scaled(direction, 1.0 / norm);
-  const std::string diffuse = xml::childText(light, "diffuse", "");
-  if (!diffuse.empty())
+  else
+    world.warnings.push_back(where + " in " + source.describe() + ": <direction> " +
+                             xml::trimmed(xml::childText(light, "direction", "")) +
+                             " is not a direction (zero or not finite); it shines straight down");
+  for (const auto& c : {std::make_pair("diffuse", &out.diffuse), std::make_pair("specular", &out.specular)})
   {
-    const std::vector<double> c = colourNumbers(diffuse, where + " <diffuse>");
-    out.diffuse = {float(c[0]), float(c[1]), float(c[2]), 1.0f};
+    const std::string text = xml::childText(light, c.first, "");
+    if (text.empty())
+      continue;
+    const std::vector<double> v = colourNumbers(text, where + " <" + c.first + ">");
+    *c.second = {float(v[0]), float(v[1]), float(v[2]), 1.0f};
   }
+  out.cast_shadows = sdf::readFlag(light, "cast_shadows", false, where);
   out.range = xml::childDouble(light, "attenuation/range", out.range);
   out.constant = xml::childDouble(light, "attenuation/constant", out.constant);
   out.linear = xml::childDouble(light, "attenuation/linear", out.linear);
@@ -288,15 +324,19 @@ LightDescription readLocalLight(const tinyxml2::XMLElement* light, bool spot, Wo
                    out.inner_angle, out.outer_angle, out.falloff})
     if (!std::isfinite(v))
       throw DescriptionError(where + ": its pose, <attenuation> and <spot> must be finite numbers");
+  if (out.kind == LightDescription::Kind::Directional)
+    return out;
+  out.constant = std::min(1.0, out.constant);
+  out.linear = std::min(1.0, out.linear);
   if (out.range <= 0 || out.constant < 0 || out.linear < 0 || out.quadratic < 0 ||
       out.constant + out.linear + out.quadratic <= 0)
+  {
     world.warnings.push_back(where + ": <attenuation> range " + formatNumber(out.range) + ", constant " +
                              formatNumber(out.constant) + ", linear " + formatNumber(out.linear) + ", quadratic " +
                              formatNumber(out.quadratic) + " lights nothing (give a positive range and factors >= 0, "
                              "not all 0); left dark");
-  if (out.range <= 0 || out.constant < 0 || out.linear < 0 || out.quadratic < 0 ||
-      out.constant + out.linear + out.quadratic <= 0)
     out.range = 0;  // cameras leave it out
+  }
   return out;
 }
 
@@ -460,23 +500,16 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
                                "(tesla, world frame)");
     world.magnetic_field = urdf::Vector3(b[0], b[1], b[2]);
   }
-  for (auto* light = w->FirstChildElement("light"); light; light = light->NextSiblingElement("light"))
-  {
+  // The lights in file order, the world's own and its includes' (model://sun) as they come.
+  auto addLight = [&](const tinyxml2::XMLElement* light) {
     const std::string type = light->Attribute("type") ? light->Attribute("type") : "point";
-    if (type == "directional")
-    {
-      std::vector<double> d = xml::numbers(xml::childText(light, "direction", "-0.5 0.1 -0.9"), 3, "<light><direction>");
-      world.light_direction = urdf::Vector3(d[0], d[1], d[2]);
-      if (light->Attribute("name"))
-        world.sun_name = light->Attribute("name");
-    }
-    else if (type == "point" || type == "spot")
-      world.lights.push_back(readLocalLight(light, type == "spot", world));
+    if (type == "directional" || type == "point" || type == "spot")
+      world.lights.push_back(readLight(light, urdf::Pose(), source, world));
     else
       world.warnings.push_back("light '" + std::string(light->Attribute("name") ? light->Attribute("name") : "") +
                                "' in " + source.describe() + " is of type '" + type +
                                "' (point, spot, directional are); left out");
-  }
+  };
   if (const tinyxml2::XMLElement* scene = w->FirstChildElement("scene"))
   {
     const std::string background = xml::childText(scene, "background", "");
@@ -489,7 +522,7 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     if (!ambient.empty())
     {
       std::vector<double> c = colourNumbers(ambient, "<scene><ambient>");
-      world.ambient = std::max(0.0, std::min(1.0, (c[0] + c[1] + c[2]) / 3.0));
+      world.ambient = {float(c[0]), float(c[1]), float(c[2]), 1.0f};
     }
     world.shadows = sdf::isTrue(xml::childText(scene, "shadows", "true"));
   }
@@ -511,6 +544,8 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
     }
     else if (tag == "include")
       readInclude(e, source, "", urdf::Pose(), 0, world);
+    else if (tag == "light")
+      addLight(e);
     else if (isUnsupportedWorldElement(tag))
       world.warnings.push_back("<" + tag + "> in " + source.describe() + " is not supported; skipped");
   }
@@ -526,8 +561,28 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
 WorldDescription emptyWorldDescription()
 {
   WorldDescription world;
+  world.lights.push_back(LightDescription::sun());
   addGroundPlane("ground_plane", urdf::Pose(), world);
   return world;
+}
+
+LightDescription LightDescription::sun()
+{
+  // gazebo's models/sun/model.sdf
+  LightDescription sun;
+  sun.name = "sun";
+  sun.kind = Kind::Directional;
+  sun.position = urdf::Vector3(0, 0, 10);
+  const double n = std::sqrt(0.5 * 0.5 + 0.1 * 0.1 + 0.9 * 0.9);
+  sun.direction = urdf::Vector3(-0.5 / n, 0.1 / n, -0.9 / n);
+  sun.diffuse = {0.8f, 0.8f, 0.8f, 1.0f};
+  sun.specular = {0.2f, 0.2f, 0.2f, 1.0f};
+  sun.range = 1000;
+  sun.constant = 0.9;
+  sun.linear = 0.01;
+  sun.quadratic = 0.001;
+  sun.cast_shadows = true;
+  return sun;
 }
 
 WorldDescription parseWorldDescription(const std::string& sdf_xml, const std::string& base_dir)

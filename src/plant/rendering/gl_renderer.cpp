@@ -14,32 +14,43 @@ namespace bullet_plant
 {
 namespace
 {
-// The light is worked out per vertex: on a flat face every vertex has the face's normal and sees
-// the same side of it (n . (p - camera) is the same for every point p of the plane), so the face's
-// lit value is exact; on a curved surface's fine facets it is interpolated between the surface's
-// normals. The face the camera sees is lit by the directional light over the ambient term. The
-// depth along the optical axis and the shadow maps' coordinates are affine in the position, so
-// their perspective-correct interpolation is exact.
-// Point and spot lights are worked out per pixel (a lamp over a floor of two triangles lights a
-// patch no vertex sees), in the fragment shader, from the world position and the normal on the
-// side the camera sees.
+// The sun's diffuse share is worked out per vertex: on a flat face every vertex has the face's
+// normal and sees the same side of it (n . (p - camera) is the same for every point p of the plane),
+// so the face's value is exact; on a curved surface's fine facets it is interpolated between the
+// surface's normals. The depth along the optical axis and the shadow maps' coordinates are affine in
+// the position, so their perspective-correct interpolation is exact. The other lights, and every
+// light's specular share (it follows the direction to the camera), are worked out per pixel, as
+// OGRE's per-pixel lighting does them, from the world position and the normal on the side the
+// camera sees.
 // The camera program's shaders, after "#version 300 es" and the defines STATIC_SHADOWS,
-// MOVING_SHADOWS and LOCAL_LIGHTS (0 or 1): a frame without shadows or lamps pays nothing for them.
+// MOVING_SHADOWS, LIGHTS, SPECULAR and TEXTURED (0 or 1): a frame (or a draw, or a run of one
+// material) without shadows, lamps, a specular surface or a texture pays nothing for them.
 const char* const kVertexShader = R"(
+#define PER_PIXEL (LIGHTS || SPECULAR)
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
-layout(location = 2) in vec4 colour;
+layout(location = 2) in vec4 diffuse;   // the material's diffuse colour, its alpha the opacity
 layout(location = 3) in vec2 uv;
+layout(location = 4) in vec3 ambient;   // the material's ambient colour
+layout(location = 5) in vec3 emissive;
+layout(location = 6) in vec4 specular;  // the material's specular colour, its shininess
 uniform mat4 clip_from_body;
 uniform mat4 world_from_body;
 uniform vec3 camera_origin;
 uniform vec3 camera_forward;
-uniform vec3 towards_light;
-uniform float ambient;
-out float diffuse;
+uniform vec3 towards_sun;  // zero: no sun
+uniform vec3 sun_diffuse;
+uniform vec3 scene_ambient;
+out float sun_cos;         // n . l of the sun on the face the camera sees, at least 0
 out float depth_along_axis;
+flat out vec3 material_base;  // emissive + scene ambient x material ambient
+flat out vec4 material_diffuse;
+#if SPECULAR
+flat out vec4 material_specular;
+#endif
+#if TEXTURED
 out vec2 texture_uv;
-flat out vec4 face_colour;
+#endif
 invariant gl_Position;
 #if STATIC_SHADOWS
 uniform mat4 static_shadow_from_world;
@@ -49,7 +60,7 @@ out vec3 static_shadow_coordinates;
 uniform mat4 moving_shadow_from_world;
 out vec3 moving_shadow_coordinates;
 #endif
-#if LOCAL_LIGHTS
+#if PER_PIXEL
 out vec3 world_position;
 out vec3 seen_normal;  // the world normal on the side the camera sees (zero for a degenerate one)
 #endif
@@ -60,38 +71,52 @@ void main()
   vec3 world_normal = mat3(world_from_body) * normal;
   float length_n = length(world_normal);
   float facing = dot(world_normal, ray) > 0.0 ? -1.0 : 1.0;
-  diffuse = (1.0 - ambient) * (length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_light) / length_n) : 0.0);
+  sun_cos = length_n > 0.0 ? max(0.0, facing * dot(world_normal, towards_sun) / length_n) : 0.0;
   depth_along_axis = dot(ray, camera_forward);
+  material_base = emissive + scene_ambient * ambient;
+  material_diffuse = diffuse;
+#if SPECULAR
+  material_specular = specular;
+#endif
 #if STATIC_SHADOWS
   static_shadow_coordinates = (static_shadow_from_world * world).xyz;
 #endif
 #if MOVING_SHADOWS
   moving_shadow_coordinates = (moving_shadow_from_world * world).xyz;
 #endif
-#if LOCAL_LIGHTS
+#if PER_PIXEL
   world_position = world.xyz;
   seen_normal = length_n > 0.0 ? facing * world_normal / length_n : vec3(0.0);
 #endif
+#if TEXTURED
   texture_uv = uv;
-  face_colour = colour;
+#endif
   gl_Position = clip_from_body * vec4(position, 1.0);
 }
 )";
 
 // The colour rounded to bytes by the GL (the noise is added on the CPU), and the depth into a float
-// attachment, read back only when wanted. In a shadow the light's diffuse share is gone and the
-// ambient stays (Gazebo's shading); a shadow map's lookup is the 2 x 2 texels' comparisons,
-// filtered (hardware PCF, as Gazebo's), and what lies outside a map is not shadowed by it.
+// attachment, read back only when wanted. In the sun's shadow every light's diffuse and specular
+// share is gone and the ambient and emissive light stay (Gazebo's integrated PSSM shadows:
+// ambient + (lit - ambient) x shadow); a face turned away from the sun is in no shadow; a shadow
+// map's lookup is the 2 x 2 texels' comparisons, filtered (hardware PCF), and what lies outside a
+// map is not shadowed by it. The texture modulates the ambient and diffuse light, the specular light
+// is added after it (OGRE's colour_op modulate, its RTSS adding the specular at the end).
+// The lamps' loops have no branch a pixel could take apart from its neighbours (llvmpipe runs both
+// sides of one).
 const char* const kFragmentShader = R"(
+#define PER_PIXEL (LIGHTS || SPECULAR)
 precision highp float;
 precision highp sampler2DShadow;
-in float diffuse;
+in float sun_cos;
 in float depth_along_axis;
+flat in vec3 material_base;     // emissive + scene ambient x material ambient
+flat in vec4 material_diffuse;  // its alpha: the opacity
+uniform vec3 sun_diffuse;
+#if TEXTURED
 in vec2 texture_uv;
-flat in vec4 face_colour;
 uniform sampler2D image;
-uniform bool textured;
-uniform float ambient;
+#endif
 #if STATIC_SHADOWS
 in vec3 static_shadow_coordinates;
 uniform sampler2DShadow static_shadow;
@@ -100,49 +125,34 @@ uniform sampler2DShadow static_shadow;
 in vec3 moving_shadow_coordinates;
 uniform sampler2DShadow moving_shadow;
 #endif
-#if LOCAL_LIGHTS
+#if PER_PIXEL
 in vec3 world_position;
 in vec3 seen_normal;
-uniform int light_count;
+uniform vec3 camera_origin;
+#endif
+#if SPECULAR
+flat in vec4 material_specular;  // its shininess in w
+uniform vec3 towards_sun;
+uniform vec3 sun_specular;
+#endif
+#if LIGHTS
+// the lights: [0, directional_count) directional, then point lights up to point_count, then spots
+uniform int light_count, directional_count, point_count;
 uniform vec3 light_position[8];
-uniform vec3 light_colour[8];
-uniform vec3 light_direction[8];    // a spot's axis; zero for a point light
+uniform vec3 light_direction[8];    // the way it shines: a directional light's, a spot's axis
+uniform vec3 light_diffuse[8];
+uniform vec3 light_specular[8];
 uniform vec4 light_attenuation[8];  // range, constant, linear, quadratic
 uniform vec3 light_spot[8];         // cos(inner / 2), cos(outer / 2), falloff
-// OGRE's per-pixel point and spot light: diffuse * (n . l) / (constant + linear d + quadratic d^2)
-// within range, times a spot's ((rho - cos(outer/2)) / (cos(inner/2) - cos(outer/2)))^falloff.
-vec3 localLight()
+// light i's share at a pixel, towards l (unit) with attenuation x spot `share`
+void shine(int i, vec3 l, float share, vec3 n, vec3 to_eye, inout vec3 diffuse_light, inout vec3 specular_light)
 {
-  vec3 sum = vec3(0.0);
-  float length_n = length(seen_normal);
-  if (length_n == 0.0)
-    return sum;
-  vec3 n = seen_normal / length_n;
-  for (int i = 0; i < light_count; ++i)
-  {
-    vec3 to_light = light_position[i] - world_position;
-    float d = length(to_light);
-    vec4 a = light_attenuation[i];
-    if (d > a.x || d == 0.0)
-      continue;
-    vec3 l = to_light / d;
-    float lambert = max(0.0, dot(n, l));
-    float spot = 1.0;
-    if (dot(light_direction[i], light_direction[i]) > 0.0)
-    {
-      float rho = dot(-l, light_direction[i]);
-      float inner = light_spot[i].x, outer = light_spot[i].y;
-      if (rho < outer)
-        spot = 0.0;
-      else if (inner > outer)
-      {
-        spot = clamp((rho - outer) / (inner - outer), 0.0, 1.0);
-        spot = light_spot[i].z > 0.0 ? pow(spot, light_spot[i].z) : 1.0;
-      }
-    }
-    sum += light_colour[i] * (lambert * spot / (a.y + a.z * d + a.w * d * d));
-  }
-  return sum;
+  float n_l = dot(n, l);
+  diffuse_light += light_diffuse[i] * (max(n_l, 0.0) * share);
+#if SPECULAR
+  specular_light += light_specular[i] * (step(0.0, n_l) * share *
+                                         pow(max(0.0, dot(n, normalize(l + to_eye))), material_specular.w));
+#endif
 }
 #endif
 layout(location = 0) out vec4 colour;
@@ -155,9 +165,52 @@ float lightThrough(sampler2DShadow map, vec3 at)
 }
 void main()
 {
+#if PER_PIXEL
+  float length_n = length(seen_normal);
+  vec3 n = length_n > 0.0 ? seen_normal / length_n : vec3(0.0);
+  vec3 to_eye = normalize(camera_origin - world_position);
+#else
+  vec3 n = vec3(0.0), to_eye = vec3(0.0);
+#endif
+  vec3 specular_light = vec3(0.0);
+#if SPECULAR
+  float shininess = material_specular.w;
+  if (sun_cos > 0.0)
+    specular_light = sun_specular * pow(max(0.0, dot(n, normalize(towards_sun + to_eye))), shininess);
+#endif
+#if LIGHTS
+  // OGRE's per-pixel lights: diffuse x n . l x attenuation (x a spot's factor) within range; the
+  // directional lights, the point lights and the spots each in a loop of their own (a loop with a
+  // light of each kind in it would pay for the spot's cone at every light)
+  vec3 diffuse_light = vec3(0.0);
+  for (int i = 0; i < directional_count; ++i)
+    shine(i, -light_direction[i], 1.0, n, to_eye, diffuse_light, specular_light);
+  for (int i = directional_count; i < point_count; ++i)
+  {
+    vec3 to_light = light_position[i] - world_position;
+    float dd = dot(to_light, to_light), inverse = inversesqrt(dd), d = dd * inverse;
+    vec4 a = light_attenuation[i];
+    shine(i, to_light * inverse, step(d, a.x) / (a.y + d * (a.z + a.w * d)), n, to_eye, diffuse_light, specular_light);
+  }
+  for (int i = point_count; i < light_count; ++i)
+  {
+    vec3 to_light = light_position[i] - world_position;
+    float dd = dot(to_light, to_light), inverse = inversesqrt(dd), d = dd * inverse;
+    vec3 l = to_light * inverse;
+    vec4 a = light_attenuation[i];
+    float rho = dot(-l, light_direction[i]);
+    float inner = light_spot[i].x, outer = light_spot[i].y;
+    float spot = inner > outer ? clamp((rho - outer) / (inner - outer), 0.0, 1.0) : 1.0;
+    spot = step(outer, rho) * (light_spot[i].z > 0.0 ? pow(spot, light_spot[i].z) : 1.0);
+    shine(i, l, spot * step(d, a.x) / (a.y + d * (a.z + a.w * d)), n, to_eye, diffuse_light, specular_light);
+  }
+#endif
   float light = 1.0;
 #if STATIC_SHADOWS || MOVING_SHADOWS
-  if (diffuse > 0.0)
+  // only a face the sun shines on can lie in a shadow: Gazebo draws its casters' back faces into
+  // the maps (OGRE's shadow_caster_render_back_faces), so a face turned away from the sun is level
+  // with its own map depth, not behind it
+  if (sun_cos > 0.0)
   {
 #if STATIC_SHADOWS
     light *= lightThrough(static_shadow, static_shadow_coordinates);
@@ -167,13 +220,23 @@ void main()
 #endif
   }
 #endif
-  // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
-  vec3 base = textured ? texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y)).rgb : face_colour.rgb;
-#if LOCAL_LIGHTS
-  colour = vec4(base * (ambient + diffuse * light + localLight()), 1.0);
-#else
-  colour = vec4(base * (ambient + diffuse * light), 1.0);
+  // (the sun's diffuse x material diffuse is not a varying of its own: with one more flat varying,
+  // llvmpipe (Mesa 22.3) at 128 bits corrupts its heap building the lamps-and-specular variant)
+  vec3 lit = material_base + material_diffuse.rgb * sun_diffuse * (sun_cos * light);
+#if LIGHTS
+  lit += material_diffuse.rgb * diffuse_light * light;
 #endif
+  float alpha = material_diffuse.a;
+#if TEXTURED
+  // the texture's rows from the top, its t up from the bottom (mesh_loader.h's Texture::at)
+  vec4 texel = texture(image, vec2(texture_uv.x, 1.0 - texture_uv.y));
+  lit *= texel.rgb;
+  alpha *= texel.a;
+#endif
+#if SPECULAR
+  lit += material_specular.rgb * specular_light * light;
+#endif
+  colour = vec4(lit, alpha);
   depth = depth_along_axis;
 }
 )";
@@ -323,7 +386,11 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
     primitive.frame.apply(in, at);
     out.xyz.insert(out.xyz.end(), {float(at[0]), float(at[1]), float(at[2])});
   };
-  auto colour = [&](const Rgba& c) { out.colour.insert(out.colour.end(), {c.r, c.g, c.b, c.a}); };
+  // a primitive's triangles are all of its one material (index 0)
+  bool primitive_textured = false;
+  if (primitive.kind != Shape::Kind::Mesh)
+    out.materials.push_back(primitive.surfaceMaterial(-1, primitive_textured));
+  auto colour = [&](int) { out.material.push_back(0); };
   if (primitive.kind == Shape::Kind::Box)
   {
     const double* h = primitive.half;
@@ -340,7 +407,7 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
       {
         for (int k : triangle)
           vertex(face[k][0] * h[0], face[k][1] * h[1], face[k][2] * h[2]);
-        colour(primitive.colour);
+        colour(0);
       }
   }
   else if (primitive.kind == Shape::Kind::Plane)
@@ -353,7 +420,7 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
       const float* v = &vertices[3 * size_t(indices[i])];
       vertex(v[0], v[1], v[2]);
       if (i % 3 == 2)
-        colour(primitive.colour);
+        colour(0);
     }
   }
   else if (primitive.kind == Shape::Kind::Sphere || primitive.kind == Shape::Kind::Cylinder ||
@@ -378,8 +445,8 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
                     const std::array<double, 6>& d) {
       for (const auto* v : {&a, &b, &c, &a, &c, &d})
         at((*v)[0], (*v)[1], (*v)[2], (*v)[3], (*v)[4], (*v)[5]);
-      colour(primitive.colour);
-      colour(primitive.colour);
+      colour(0);
+      colour(0);
     };
     if (primitive.kind != Shape::Kind::Cylinder)
     {
@@ -430,7 +497,7 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
           at(0, 0, z, 0, 0, up);
           at(a[0], a[1], z, 0, 0, up);
           at(b[0], b[1], z, 0, 0, up);
-          colour(primitive.colour);
+          colour(0);
         }
       }
     }
@@ -438,8 +505,16 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
   else if (primitive.kind == Shape::Kind::Mesh && primitive.mesh)
   {
     const MeshData& mesh = *primitive.mesh;
-    const bool any_textured = !mesh.uvs.empty() && std::any_of(mesh.submeshes.begin(), mesh.submeshes.end(),
-                                                               [](const MeshData::SubMesh& s) { return bool(s.image); });
+    // each sub-mesh's material (the visual's applied to the file's), one entry per sub-mesh
+    std::vector<bool> sub_textured(mesh.submeshes.size());
+    for (size_t k = 0; k < mesh.submeshes.size(); ++k)
+    {
+      bool textured = false;
+      out.materials.push_back(primitive.surfaceMaterial(mesh.submeshes[k].first_triangle, textured));
+      sub_textured[k] = textured;
+    }
+    const bool any_textured = std::find(sub_textured.begin(), sub_textured.end(), true) != sub_textured.end();
+    size_t sub_index = 0;
     for (int t = 0; t < mesh.triangleCount(); ++t)
     {
       for (int k = 0; k < 3; ++k)
@@ -447,9 +522,11 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
         const float* v = &mesh.vertices[3 * size_t(mesh.indices[3 * size_t(t) + size_t(k)])];
         vertex(v[0], v[1], v[2]);
       }
-      const MeshData::SubMesh& sub = mesh.subMeshOf(t);
-      colour(sub.has_colour ? sub.diffuse : primitive.colour);
-      const bool textured = sub.image && !mesh.uvs.empty();
+      while (sub_index + 1 < mesh.submeshes.size() && t >= mesh.submeshes[sub_index + 1].first_triangle)
+        ++sub_index;
+      const MeshData::SubMesh& sub = mesh.submeshes[sub_index];
+      out.material.push_back(uint32_t(sub_index));
+      const bool textured = sub_textured[sub_index];
       if (any_textured)
       {
         out.texture.push_back(textured ? sub.image : nullptr);
@@ -479,31 +556,7 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
   }
   try
   {
-    for (int variant = 0; variant < kCameraPrograms; ++variant)
-    {
-      CameraProgram& p = camera_programs_[variant];
-      const std::string defines = std::string("#version 300 es\n#define STATIC_SHADOWS ") + char('0' + (variant & 1)) +
-                                  "\n#define MOVING_SHADOWS " + char('0' + ((variant >> 1) & 1)) +
-                                  "\n#define LOCAL_LIGHTS " + char('0' + (variant >> 2)) + "\n";
-      p.program = link(defines + kVertexShader, defines + kFragmentShader);
-      for (const auto& u : {std::make_pair(&p.clip_from_body, "clip_from_body"),
-                            std::make_pair(&p.world_from_body, "world_from_body"),
-                            std::make_pair(&p.textured, "textured"), std::make_pair(&p.image, "image"),
-                            std::make_pair(&p.camera_origin, "camera_origin"),
-                            std::make_pair(&p.camera_forward, "camera_forward"),
-                            std::make_pair(&p.towards_light, "towards_light"), std::make_pair(&p.ambient, "ambient"),
-                            std::make_pair(&p.static_shadow_from_world, "static_shadow_from_world"),
-                            std::make_pair(&p.moving_shadow_from_world, "moving_shadow_from_world"),
-                            std::make_pair(&p.static_shadow, "static_shadow"),
-                            std::make_pair(&p.moving_shadow, "moving_shadow"),
-                            std::make_pair(&p.light_count, "light_count"),
-                            std::make_pair(&p.light_position, "light_position"),
-                            std::make_pair(&p.light_colour, "light_colour"),
-                            std::make_pair(&p.light_direction, "light_direction"),
-                            std::make_pair(&p.light_attenuation, "light_attenuation"),
-                            std::make_pair(&p.light_spot, "light_spot")})
-        *u.first = glGetUniformLocation(p.program, u.second);
-    }
+    cameraProgram(0);  // the plainest: a GL that cannot build it fails here, not in a frame
     shadow_program_ = link(kShadowVertexShader, kShadowFragmentShader);
   }
   catch (const std::runtime_error&)
@@ -517,6 +570,37 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
   context_.release();
 }
 
+GlRenderer::CameraProgram& GlRenderer::cameraProgram(int variant)
+{
+  CameraProgram& p = camera_programs_[variant];
+  if (p.program)
+    return p;
+  auto bit = [&](int flag) { return char('0' + ((variant & flag) ? 1 : 0)); };
+  const std::string defines = std::string("#version 300 es\n#define STATIC_SHADOWS ") + bit(kStaticShadows) +
+                              "\n#define MOVING_SHADOWS " + bit(kMovingShadows) + "\n#define LIGHTS " + bit(kLights) +
+                              "\n#define SPECULAR " + bit(kSpecular) + "\n#define TEXTURED " + bit(kTextured) + "\n";
+  p.program = link(defines + kVertexShader, defines + kFragmentShader);
+  for (const auto& u : {std::make_pair(&p.clip_from_body, "clip_from_body"),
+                        std::make_pair(&p.world_from_body, "world_from_body"),
+                        std::make_pair(&p.scene_ambient, "scene_ambient"),
+                        std::make_pair(&p.image, "image"), std::make_pair(&p.camera_origin, "camera_origin"),
+                        std::make_pair(&p.camera_forward, "camera_forward"), std::make_pair(&p.towards_sun, "towards_sun"),
+                        std::make_pair(&p.sun_diffuse, "sun_diffuse"), std::make_pair(&p.sun_specular, "sun_specular"),
+                        std::make_pair(&p.static_shadow_from_world, "static_shadow_from_world"),
+                        std::make_pair(&p.moving_shadow_from_world, "moving_shadow_from_world"),
+                        std::make_pair(&p.static_shadow, "static_shadow"), std::make_pair(&p.moving_shadow, "moving_shadow"),
+                        std::make_pair(&p.light_count, "light_count"), std::make_pair(&p.point_count, "point_count"),
+                        std::make_pair(&p.directional_count, "directional_count"),
+                        std::make_pair(&p.light_position, "light_position"),
+                        std::make_pair(&p.light_direction, "light_direction"),
+                        std::make_pair(&p.light_diffuse, "light_diffuse"),
+                        std::make_pair(&p.light_specular, "light_specular"),
+                        std::make_pair(&p.light_attenuation, "light_attenuation"),
+                        std::make_pair(&p.light_spot, "light_spot")})
+    *u.first = glGetUniformLocation(p.program, u.second);
+  return p;
+}
+
 GlRenderer::~GlRenderer()
 {
   context_.makeCurrent();
@@ -524,6 +608,7 @@ GlRenderer::~GlRenderer()
   {
     glDeleteVertexArrays(1, &m.vertex_array);
     glDeleteBuffers(1, &m.buffer);
+    glDeleteBuffers(1, &m.material_buffer);
   }
   for (auto& uploaded : textures_)
     glDeleteTextures(1, &uploaded.second);
@@ -539,7 +624,8 @@ GlRenderer::~GlRenderer()
     glDeleteFramebuffers(1, &map->framebuffer);
   }
   for (const CameraProgram& p : camera_programs_)
-    glDeleteProgram(p.program);
+    if (p.program)
+      glDeleteProgram(p.program);
   glDeleteProgram(shadow_program_);
   context_.release();
 }
@@ -547,41 +633,50 @@ GlRenderer::~GlRenderer()
 namespace
 {
 constexpr size_t kVertexFloats = 12;  // position, normal, colour, texture coordinates
+constexpr size_t kMaterialFloats = 10;  // ambient, emissive, specular, shininess: the material buffer's
+constexpr size_t kCornerFloats = kVertexFloats + kMaterialFloats;
 // Runs smaller than this are drawn as they are: a level of detail would save less than its draw.
 constexpr int kLevelOfDetailMinTriangles = 64;
 
-// The levels of detail of `count` vertices from `first` in `vertices` (kVertexFloats each), appended
-// to it: meshoptimizer's simplifier halves the triangles level by level while it can, keeping the
+// The levels of detail of `count` vertices from `first` in `vertices` (kVertexFloats each) and
+// `materials` (kMaterialFloats each), appended to them: meshoptimizer's simplifier halves the triangles level by level while it can, keeping the
 // topology and the seams where the colour, the texture coordinates or a smooth normal change (the
 // corners are welded on those; a flat face's normal is worked out again for each new triangle).
-std::vector<LevelOfDetail> appendLevelsOfDetail(std::vector<float>& vertices, int first, int count)
+std::vector<LevelOfDetail> appendLevelsOfDetail(std::vector<float>& vertices, std::vector<float>& materials, int first,
+                                               int count)
 {
   std::vector<LevelOfDetail> levels;
   if (count < 3 * kLevelOfDetailMinTriangles)
     return levels;
-  std::vector<float> corners(vertices.begin() + std::ptrdiff_t(first * kVertexFloats),
-                             vertices.begin() + std::ptrdiff_t((first + count) * kVertexFloats));
+  // each corner's vertex and material, side by side, so the welding keeps materials apart too
+  std::vector<float> corners;
+  corners.reserve(size_t(count) * kCornerFloats);
+  for (size_t c = size_t(first); c < size_t(first + count); ++c)
+  {
+    corners.insert(corners.end(), &vertices[c * kVertexFloats], &vertices[c * kVertexFloats] + kVertexFloats);
+    corners.insert(corners.end(), &materials[c * kMaterialFloats], &materials[c * kMaterialFloats] + kMaterialFloats);
+  }
   // Smooth: some corner's normal is not its face's (a curved surface's, or a mesh file's own).
   bool smooth = false;
   for (size_t t = 0; t < size_t(count) / 3 && !smooth; ++t)
   {
-    const float* c = &corners[3 * t * kVertexFloats];
-    const std::vector<float> face = flatNormals({c[0], c[1], c[2], c[kVertexFloats], c[kVertexFloats + 1],
-                                                 c[kVertexFloats + 2], c[2 * kVertexFloats], c[2 * kVertexFloats + 1],
-                                                 c[2 * kVertexFloats + 2]});
+    const float* c = &corners[3 * t * kCornerFloats];
+    const std::vector<float> face = flatNormals({c[0], c[1], c[2], c[kCornerFloats], c[kCornerFloats + 1],
+                                                 c[kCornerFloats + 2], c[2 * kCornerFloats], c[2 * kCornerFloats + 1],
+                                                 c[2 * kCornerFloats + 2]});
     for (int k = 0; k < 3 && !smooth; ++k)
       for (int i = 0; i < 3; ++i)
-        smooth = smooth || std::fabs(c[k * kVertexFloats + 3 + size_t(i)] - face[size_t(i)]) > 1e-5f;
+        smooth = smooth || std::fabs(c[k * kCornerFloats + 3 + size_t(i)] - face[size_t(i)]) > 1e-5f;
   }
   if (!smooth)
     for (size_t c = 0; c < size_t(count); ++c)
-      std::fill_n(&corners[c * kVertexFloats + 3], 3, 0.0f);  // flat normals are not the surface's
+      std::fill_n(&corners[c * kCornerFloats + 3], 3, 0.0f);  // flat normals are not the surface's
   std::vector<unsigned> indices(static_cast<size_t>(count));
+  const size_t stride = kCornerFloats * sizeof(float);
   const size_t unique = meshopt_generateVertexRemap(indices.data(), nullptr, size_t(count), corners.data(), size_t(count),
-                                                    kVertexFloats * sizeof(float));
-  std::vector<float> welded(unique * kVertexFloats);
-  meshopt_remapVertexBuffer(welded.data(), corners.data(), size_t(count), kVertexFloats * sizeof(float), indices.data());
-  const size_t stride = kVertexFloats * sizeof(float);
+                                                    stride);
+  std::vector<float> welded(unique * kCornerFloats);
+  meshopt_remapVertexBuffer(welded.data(), corners.data(), size_t(count), stride, indices.data());
   const float scale = meshopt_simplifyScale(welded.data(), unique, stride);
   std::vector<unsigned> simplified(indices.size());
   size_t previous = indices.size();
@@ -595,8 +690,8 @@ std::vector<LevelOfDetail> appendLevelsOfDetail(std::vector<float>& vertices, in
     LevelOfDetail level{int(vertices.size() / kVertexFloats), int(kept), error * scale};
     for (size_t i = 0; i < kept; i += 3)
     {
-      const float* corner[3] = {&welded[simplified[i] * kVertexFloats], &welded[simplified[i + 1] * kVertexFloats],
-                                &welded[simplified[i + 2] * kVertexFloats]};
+      const float* corner[3] = {&welded[simplified[i] * kCornerFloats], &welded[simplified[i + 1] * kCornerFloats],
+                                &welded[simplified[i + 2] * kCornerFloats]};
       float normal[3] = {0, 0, 0};
       if (!smooth)
       {
@@ -612,6 +707,7 @@ std::vector<LevelOfDetail> appendLevelsOfDetail(std::vector<float>& vertices, in
       for (const float* c : corner)
       {
         vertices.insert(vertices.end(), c, c + kVertexFloats);
+        materials.insert(materials.end(), c + kVertexFloats, c + kCornerFloats);
         if (!smooth)
           std::copy(normal, normal + 3, vertices.end() - std::ptrdiff_t(kVertexFloats) + 3);
       }
@@ -639,7 +735,8 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
       const float* normal = &normals[9 * t + 3 * size_t(v)];
       vertices.insert(vertices.end(), p + 3 * v, p + 3 * v + 3);
       vertices.insert(vertices.end(), normal, normal + 3);
-      vertices.insert(vertices.end(), &triangles.colour[4 * t], &triangles.colour[4 * t] + 4);
+      const Rgba& diffuse = triangles.materials[triangles.material[t]].diffuse;
+      vertices.insert(vertices.end(), {diffuse.r, diffuse.g, diffuse.b, diffuse.a});
       if (triangles.uv.empty())
         vertices.insert(vertices.end(), {0.0f, 0.0f});
       else
@@ -653,25 +750,52 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
     mesh.lo[k % 3] = std::min(mesh.lo[k % 3], double(triangles.xyz[k]));
     mesh.hi[k % 3] = std::max(mesh.hi[k % 3], double(triangles.xyz[k]));
   }
+  // Runs of one texture, one kind (opaque or transparent) and with specular or without: a run's
+  // materials are its vertices' (below), so a mesh of many colours is still a few draws.
+  // and of one part (GlTriangles::part_ends), each with its bounds: a frame culls them one by one.
   size_t part = 0;  // the part triangle t is in
   for (size_t t = 0; t < count; ++t)
   {
     const unsigned texture = triangles.texture.empty() ? 0 : textureOf(triangles.texture[t]);
+    const Material& m = triangles.materials[triangles.material[t]];
+    const bool transparent = m.transparent(), specular = m.hasSpecular();
     bool part_begins = t == 0;
     for (; part < triangles.part_ends.size() && triangles.part_ends[part] <= t; ++part)
       part_begins = true;
-    if (part_begins || mesh.runs.back().texture != texture)
-      mesh.runs.push_back(Run{int(3 * t), 0, texture});
+    if (part_begins || mesh.runs.back().texture != texture || mesh.runs.back().transparent != transparent ||
+        mesh.runs.back().specular != specular)
+    {
+      Run run;
+      run.first = int(3 * t);
+      run.texture = texture;
+      run.transparent = transparent;
+      run.specular = specular;
+      mesh.runs.push_back(run);
+      mesh.any_transparent = mesh.any_transparent || transparent;
+    }
     Run& run = mesh.runs.back();
     run.count += 3;
+    if (specular)
+      run.max_specular = std::max({run.max_specular, m.specular.r, m.specular.g, m.specular.b});
     for (size_t k = 9 * t; k < 9 * t + 9; ++k)
     {
       run.lo[k % 3] = std::min(run.lo[k % 3], triangles.xyz[k]);
       run.hi[k % 3] = std::max(run.hi[k % 3], triangles.xyz[k]);
     }
   }
+  // each vertex's material besides its diffuse colour (the colour attribute): ambient, emissive,
+  // specular and shininess, ten floats, in a buffer of their own
+  std::vector<float> materials;
+  materials.reserve(count * 30);
+  for (size_t t = 0; t < count; ++t)
+  {
+    const Material& m = triangles.materials[triangles.material[t]];
+    for (int v = 0; v < 3; ++v)
+      materials.insert(materials.end(), {m.ambient.r, m.ambient.g, m.ambient.b, m.emissive.r, m.emissive.g, m.emissive.b,
+                                         m.specular.r, m.specular.g, m.specular.b, float(m.shininess)});
+  }
   for (Run& run : mesh.runs)
-    run.levels = appendLevelsOfDetail(vertices, run.first, run.count);
+    run.levels = appendLevelsOfDetail(vertices, materials, run.first, run.count);
   glGenVertexArrays(1, &mesh.vertex_array);
   glGenBuffers(1, &mesh.buffer);
   glBindVertexArray(mesh.vertex_array);
@@ -686,6 +810,16 @@ int GlRenderer::addMesh(const GlTriangles& triangles)
   glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(6 * sizeof(float)));
   glEnableVertexAttribArray(3);
   glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(10 * sizeof(float)));
+  glGenBuffers(1, &mesh.material_buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, mesh.material_buffer);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(materials.size() * sizeof(float)), materials.data(), GL_STATIC_DRAW);
+  const GLsizei material_stride = 10 * sizeof(float);
+  for (int k = 0; k < 3; ++k)
+  {
+    glEnableVertexAttribArray(GLuint(4 + k));
+    glVertexAttribPointer(GLuint(4 + k), k == 2 ? 4 : 3, GL_FLOAT, GL_FALSE, material_stride,
+                          reinterpret_cast<void*>(size_t(3 * k) * sizeof(float)));
+  }
   glBindVertexArray(0);
   // A freed slot is taken again (a world that spawns and deletes models all day keeps its size).
   auto slot = std::find_if(meshes_.begin(), meshes_.end(), [](const Mesh& m) { return !m.vertex_array; });
@@ -708,6 +842,7 @@ void GlRenderer::removeMesh(int mesh)
   context_.makeCurrent();
   glDeleteVertexArrays(1, &m.vertex_array);
   glDeleteBuffers(1, &m.buffer);
+  glDeleteBuffers(1, &m.material_buffer);
   context_.release();
   const unsigned generation = m.generation;
   m = Mesh();
@@ -1003,27 +1138,169 @@ std::vector<GlRenderer::VisibleRun> GlRenderer::visibleRuns(const std::vector<Dr
   return visible;
 }
 
-void GlRenderer::drawRuns(const std::vector<VisibleRun>& runs, int clip_from_body, int world_from_body, int textured)
+void GlRenderer::drawDepths(const std::vector<VisibleRun>& runs)
 {
   size_t bound = size_t(-1);
   for (const VisibleRun& v : runs)
   {
+    if (v.run->transparent)
+      continue;
     if (v.draw != bound)
     {
       bound = v.draw;
-      glUniformMatrix4fv(clip_from_body, 1, GL_FALSE, draw_matrices_[v.draw].clip_from_body);
-      if (world_from_body >= 0)
-        glUniformMatrix4fv(world_from_body, 1, GL_FALSE, draw_matrices_[v.draw].world_from_body);
+      glUniformMatrix4fv(light_clip_from_body_, 1, GL_FALSE, draw_matrices_[v.draw].clip_from_body);
       glBindVertexArray(v.mesh->vertex_array);
-    }
-    if (textured >= 0)
-    {
-      glUniform1i(textured, v.run->texture != 0);
-      glBindTexture(GL_TEXTURE_2D, v.run->texture);
     }
     glDrawArrays(GL_TRIANGLES, v.first, v.count);
   }
   glBindVertexArray(0);
+}
+
+namespace
+{
+// A specular share below a level of the image: left out (its shader variant costs a frame more
+// than it shows).
+constexpr float kSpecularFloor = 1.0f / 255.0f;
+}  // namespace
+
+void GlRenderer::selectLights(const Draw& d)
+{
+  frame_.lights.clear();
+  const Lighting& lighting = *frame_.lighting;
+  float specular = lighting.has_sun ? std::max({lighting.sun.specular[0], lighting.sun.specular[1],
+                                                lighting.sun.specular[2]})
+                                    : 0.0f;
+  if (!lighting.lights.empty())
+  {
+    // the mesh's bounding sphere in the world
+    const Mesh& mesh = meshes_.at(size_t(d.mesh));
+    const double centre[3] = {(mesh.lo[0] + mesh.hi[0]) / 2, (mesh.lo[1] + mesh.hi[1]) / 2, (mesh.lo[2] + mesh.hi[2]) / 2};
+    const double radius = 0.5 * std::hypot(mesh.hi[0] - mesh.lo[0], mesh.hi[1] - mesh.lo[1], mesh.hi[2] - mesh.lo[2]);
+    double at[3];
+    d.world_from_body.apply(centre, at);
+    std::vector<std::pair<double, int>> reach;
+    for (size_t i = 0; i < lighting.lights.size(); ++i)
+    {
+      const Lighting::Light& l = lighting.lights[i];
+      double distance = 0;  // a directional light: first, as OGRE sorts them
+      if (l.kind != Lighting::Light::Directional)
+      {
+        distance = std::hypot(l.position[0] - at[0], l.position[1] - at[1], l.position[2] - at[2]);
+        if (!(distance - radius <= l.attenuation[0]))  // out of range (or a mesh with no bounds)
+          continue;
+      }
+      reach.emplace_back(distance, int(i));
+    }
+    std::stable_sort(reach.begin(), reach.end());
+    const size_t room = Lighting::kMaxLights - (lighting.has_sun ? 1 : 0);
+    reach.resize(std::min(reach.size(), room));
+    // the shader's order: directional lights, point lights, spots (nearest first in each)
+    std::stable_sort(reach.begin(), reach.end(), [&](const std::pair<double, int>& a, const std::pair<double, int>& b) {
+      return lighting.lights[size_t(a.second)].kind < lighting.lights[size_t(b.second)].kind;
+    });
+    for (const auto& r : reach)
+    {
+      const Lighting::Light& l = lighting.lights[size_t(r.second)];
+      frame_.lights.push_back(r.second);
+      // a lamp's specular at its brightest, 1 / constant (its attenuation's largest value)
+      const float strongest = l.kind == Lighting::Light::Directional ? 1.0f : 1.0f / std::max(l.attenuation[1], 1e-3f);
+      specular = std::max(specular, strongest * std::max({l.specular[0], l.specular[1], l.specular[2]}));
+    }
+  }
+  frame_.draw = ++draws_made_;
+  // remembered for drawRuns: the largest specular colour a surface of this draw can meet
+  frame_.strongest_specular = specular;
+}
+
+void GlRenderer::drawRuns(const Draw& d, const std::vector<const VisibleRun*>& visible, bool transparent)
+{
+  const Mesh& mesh = meshes_.at(size_t(d.mesh));
+  if (std::none_of(visible.begin(), visible.end(), [&](const VisibleRun* v) { return v->run->transparent == transparent; }))
+    return;
+  selectLights(d);
+  const Lighting& lighting = *frame_.lighting;
+  const PinholeCamera& camera = *frame_.camera;
+  const Frame& pose = *frame_.pose;
+  glBindVertexArray(mesh.vertex_array);
+  for (const VisibleRun* v : visible)
+  {
+    const Run& run = *v->run;
+    if (run.transparent != transparent)
+      continue;
+    const bool specular = run.specular && frame_.strongest_specular * run.max_specular >= kSpecularFloor;
+    const int variant = (frame_.static_shadows ? kStaticShadows : 0) | (frame_.moving_shadows ? kMovingShadows : 0) |
+                        (frame_.lights.empty() ? 0 : kLights) | (specular ? kSpecular : 0) |
+                        (run.texture ? kTextured : 0);
+    CameraProgram& program = cameraProgram(variant);
+    if (frame_.program != variant)
+    {
+      glUseProgram(program.program);
+      frame_.program = variant;
+    }
+    if (program.frame != frame_.frame)  // the frame's uniforms
+    {
+      program.frame = frame_.frame;
+      program.lights.assign(1, -1);  // none given yet
+      const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
+      glUniform3f(program.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
+      glUniform3fv(program.camera_forward, 1, forward);
+      const float towards[3] = {float(lighting.towards_light[0]), float(lighting.towards_light[1]),
+                                float(lighting.towards_light[2])};
+      const float none[3] = {0, 0, 0};
+      glUniform3fv(program.towards_sun, 1, lighting.has_sun ? towards : none);
+      glUniform3fv(program.sun_diffuse, 1, lighting.has_sun ? lighting.sun.diffuse : none);
+      glUniform3fv(program.sun_specular, 1, lighting.has_sun ? lighting.sun.specular : none);
+      glUniform3fv(program.scene_ambient, 1, lighting.ambient);
+      glUniform1i(program.image, 0);
+      if (frame_.static_shadows)
+      {
+        glUniform1i(program.static_shadow, 1);
+        glUniformMatrix4fv(program.static_shadow_from_world, 1, GL_FALSE, static_shadow_.texture_from_world);
+      }
+      if (frame_.moving_shadows)
+      {
+        glUniform1i(program.moving_shadow, 2);
+        glUniformMatrix4fv(program.moving_shadow_from_world, 1, GL_FALSE, moving_shadow_.texture_from_world);
+      }
+    }
+    if (program.draw != frame_.draw)  // the draw's
+    {
+      program.draw = frame_.draw;
+      glUniformMatrix4fv(program.clip_from_body, 1, GL_FALSE, draw_matrices_[v->draw].clip_from_body);
+      glUniformMatrix4fv(program.world_from_body, 1, GL_FALSE, draw_matrices_[v->draw].world_from_body);
+      if ((variant & kLights) && program.lights != frame_.lights)
+      {
+        program.lights = frame_.lights;
+        std::vector<float> position, direction, diffuse, specular_colour, attenuation, spot;
+        GLint directional = 0, points = 0;
+        for (int i : frame_.lights)
+        {
+          const Lighting::Light& l = lighting.lights[size_t(i)];
+          directional += l.kind == Lighting::Light::Directional;
+          points += l.kind != Lighting::Light::Spot;
+          position.insert(position.end(), l.position, l.position + 3);
+          direction.insert(direction.end(), l.direction, l.direction + 3);
+          diffuse.insert(diffuse.end(), l.diffuse, l.diffuse + 3);
+          specular_colour.insert(specular_colour.end(), l.specular, l.specular + 3);
+          attenuation.insert(attenuation.end(), l.attenuation, l.attenuation + 4);
+          spot.insert(spot.end(), l.spot, l.spot + 3);
+        }
+        const GLsizei n = GLsizei(frame_.lights.size());
+        glUniform1i(program.light_count, n);
+        glUniform1i(program.directional_count, directional);
+        glUniform1i(program.point_count, points);
+        glUniform3fv(program.light_position, n, position.data());
+        glUniform3fv(program.light_direction, n, direction.data());
+        glUniform3fv(program.light_diffuse, n, diffuse.data());
+        glUniform3fv(program.light_specular, n, specular_colour.data());
+        glUniform4fv(program.light_attenuation, n, attenuation.data());
+        glUniform3fv(program.light_spot, n, spot.data());
+      }
+    }
+    if (run.texture)
+      glBindTexture(GL_TEXTURE_2D, run.texture);
+    glDrawArrays(GL_TRIANGLES, v->first, v->count);
+  }
 }
 
 void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, const PinholeCamera& camera,
@@ -1064,72 +1341,90 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
     glClearBufferfv(GL_COLOR, 1, no_depth);
   const float farthest = 1.0f;
   glClearBufferfv(GL_DEPTH, 0, &farthest);
-  const bool static_shadows = lighting.shadows && static_shadow_.used;
-  const bool moving_shadows = lighting.shadows && moving_shadow_.used;
-  const bool local_lights = !lighting.local.empty();
-  const CameraProgram& program = camera_programs_[int(static_shadows) + 2 * int(moving_shadows) + 4 * int(local_lights)];
-  glUseProgram(program.program);
-  if (local_lights)
+  frame_ = FrameState();
+  frame_.lighting = &lighting;
+  frame_.pose = &pose;
+  frame_.camera = &camera;
+  frame_.static_shadows = lighting.shadows && static_shadow_.used;
+  frame_.moving_shadows = lighting.shadows && moving_shadow_.used;
+  frame_.frame = ++frames_drawn_;
+  if (frame_.static_shadows)
   {
-    const GLsizei n = GLsizei(std::min(lighting.local.size(), Lighting::kMaxLocalLights));
-    std::vector<float> position, colour, direction, attenuation, spot;
-    for (GLsizei i = 0; i < n; ++i)
-    {
-      const Lighting::LocalLight& light = lighting.local[size_t(i)];
-      position.insert(position.end(), light.position, light.position + 3);
-      colour.insert(colour.end(), light.colour, light.colour + 3);
-      direction.insert(direction.end(), light.direction, light.direction + 3);
-      attenuation.insert(attenuation.end(), light.attenuation, light.attenuation + 4);
-      spot.insert(spot.end(), light.spot, light.spot + 3);
-    }
-    glUniform1i(program.light_count, n);
-    glUniform3fv(program.light_position, n, position.data());
-    glUniform3fv(program.light_colour, n, colour.data());
-    glUniform3fv(program.light_direction, n, direction.data());
-    glUniform4fv(program.light_attenuation, n, attenuation.data());
-    glUniform3fv(program.light_spot, n, spot.data());
-  }
-  const float forward[3] = {float(pose.R[0]), float(pose.R[3]), float(pose.R[6])};
-  glUniform3f(program.camera_origin, float(pose.t[0]), float(pose.t[1]), float(pose.t[2]));
-  glUniform3fv(program.camera_forward, 1, forward);
-  glUniform3f(program.towards_light, float(lighting.towards_light[0]), float(lighting.towards_light[1]),
-              float(lighting.towards_light[2]));
-  glUniform1f(program.ambient, float(lighting.ambient));
-  glUniform1i(program.image, 0);
-  if (static_shadows)
-  {
-    glUniform1i(program.static_shadow, 1);
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, static_shadow_.texture);
-    glUniformMatrix4fv(program.static_shadow_from_world, 1, GL_FALSE, static_shadow_.texture_from_world);
   }
-  if (moving_shadows)
+  if (frame_.moving_shadows)
   {
-    glUniform1i(program.moving_shadow, 2);
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, moving_shadow_.texture);
-    glUniformMatrix4fv(program.moving_shadow_from_world, 1, GL_FALSE, moving_shadow_.texture_from_world);
   }
   glActiveTexture(GL_TEXTURE0);
   // What the camera may see, nearest first: the depth test then spares the shading of what lies
-  // behind (a shelf's books behind its front). With lamps, whose per-pixel sum is a frame's main
-  // cost, the depths are drawn first and each pixel is shaded once.
-  // A level of detail lies within its error of the surface the shadow maps hold: with shadows, no
-  // further than half their bias, or it would shadow itself.
+  // behind (a shelf's books behind its front). A level of detail lies within its error of the
+  // surface the shadow maps hold: with shadows, no further than half their bias, or it would shadow
+  // itself. With lamps, whose per-pixel sum is a frame's main cost, the depths are drawn first and
+  // each pixel is shaded once.
   const std::vector<VisibleRun> visible =
-      visibleRuns(draws, pose, camera, static_shadows || moving_shadows ? kShadowBias / 2 : HUGE_VAL);
-  if (local_lights)
+      visibleRuns(draws, pose, camera, frame_.static_shadows || frame_.moving_shadows ? kShadowBias / 2 : HUGE_VAL);
+  std::vector<std::vector<const VisibleRun*>> by_draw(draws.size());
+  for (const VisibleRun& v : visible)
+    by_draw[v.draw].push_back(&v);
+  const bool lamps = std::any_of(lighting.lights.begin(), lighting.lights.end(),
+                                 [](const Lighting::Light& l) { return l.kind != Lighting::Light::Directional; });
+  if (lamps)
   {
     glUseProgram(shadow_program_);  // depth only
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    drawRuns(visible, light_clip_from_body_, -1, -1);
+    drawDepths(visible);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthFunc(GL_LEQUAL);  // the same depths again: invariant gl_Position in both programs
     glDepthMask(GL_FALSE);
-    glUseProgram(program.program);
   }
-  drawRuns(visible, program.clip_from_body, program.world_from_body, program.textured);
+  bool any_transparent = false;
+  for (size_t d = 0; d < draws.size(); ++d)
+  {
+    const Mesh& mesh = meshes_.at(size_t(draws[d].mesh));
+    any_transparent = any_transparent || mesh.any_transparent;
+    drawRuns(draws[d], by_draw[d], false);
+  }
   glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
+  if (any_transparent)
+  {
+    // OGRE's transparent_alpha blending: after the opaque surfaces, farthest first (by the mesh's
+    // centre), writing no depth; the depth image keeps what lies behind.
+    std::vector<std::pair<double, size_t>> order;
+    for (size_t k = 0; k < draws.size(); ++k)
+    {
+      const Draw& d = draws[k];
+      const Mesh& mesh = meshes_.at(size_t(d.mesh));
+      if (!mesh.any_transparent)
+        continue;
+      const double centre[3] = {(mesh.lo[0] + mesh.hi[0]) / 2, (mesh.lo[1] + mesh.hi[1]) / 2, (mesh.lo[2] + mesh.hi[2]) / 2};
+      double at[3];
+      d.world_from_body.apply(centre, at);
+      order.emplace_back(-std::hypot(at[0] - pose.t[0], at[1] - pose.t[1], at[2] - pose.t[2]), k);
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [](const std::pair<double, size_t>& a, const std::pair<double, size_t>& b) {
+                       return a.first < b.first;
+                     });
+    const GLenum colour_only[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+    glDrawBuffers(2, colour_only);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    for (const auto& o : order)
+    {
+      // farthest first within the draw too
+      std::vector<const VisibleRun*> back_to_front(by_draw[o.second].rbegin(), by_draw[o.second].rend());
+      drawRuns(draws[o.second], back_to_front, true);
+    }
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0);
   // Read back: the rows come in the image's order (clipFromBody).
   const size_t pixels = size_t(camera.width) * size_t(camera.height);
   colour_pixels_.resize(pixels * 4);

@@ -1,10 +1,11 @@
 // Pinhole frames (pinhole.h) by OpenGL ES 3 rasterization on a GlContext (gl_context.h), into an
 // off-screen framebuffer: cameras rendered the way Gazebo renders them. Triangles are uploaded once
-// per mesh and drawn with a pose per frame. Shading: ambient + (1 - ambient) * max(0, n . towards_light)
-// on the face the camera sees, plus the point and spot lights' share per pixel (pinhole.h's
-// Lighting::LocalLight), times the colour (flat on flat faces, the surface's normal on curved ones);
-// depth is the distance along the optical axis, written by the fragment shader into a float
-// attachment (exact where a depth buffer is not), +inf where nothing is drawn within the clip range.
+// per mesh and drawn with a pose per frame. Shading: OGRE's per-pixel lighting of each surface's
+// Material under the world's lights (pinhole.h's Lighting), on the face the camera sees (flat on flat
+// faces, the surface's normal on curved ones); transparent surfaces blended over the opaque ones,
+// back to front by mesh; depth is the distance along the optical axis, written by the fragment shader
+// into a float attachment (exact where a depth buffer is not), +inf where nothing opaque is drawn
+// within the clip range.
 #pragma once
 
 #include <cmath>
@@ -21,13 +22,14 @@
 
 namespace bullet_plant
 {
-// Triangles in their body's frame: three vertices each (x y z), each triangle with its colour
-// (r g b a, 0..1) and, for a curved surface, each vertex's normal.
+// Triangles in their body's frame: three vertices each (x y z), each triangle with its material
+// and, for a curved surface, each vertex's normal.
 struct GlTriangles
 {
-  std::vector<float> xyz;     // 9 per triangle
-  std::vector<float> colour;  // 4 per triangle
-  std::vector<float> normal;  // 9 per triangle: the surface's at each vertex (empty: each triangle's own)
+  std::vector<float> xyz;            // 9 per triangle
+  std::vector<Material> materials;   // the surfaces' materials (geometry.h)
+  std::vector<uint32_t> material;    // 1 per triangle: its index in materials
+  std::vector<float> normal;         // 9 per triangle: the surface's at each vertex (empty: each triangle's own)
   // A textured triangle's image (in place of its colour) and its texture coordinates (s, t) at each
   // vertex; both empty when no triangle is textured.
   std::vector<std::shared_ptr<const Texture>> texture;  // 1 per triangle, null: its colour
@@ -37,9 +39,8 @@ struct GlTriangles
   std::vector<size_t> part_ends;
 };
 
-// A primitive's triangles in the frame it is placed in (its frame applied), each in what cameras
-// see on it (as RayPrimitive::surfaceColour says): a mesh's sub-mesh texture or diffuse colour where
-// the file gives one, else the primitive's. Boxes and meshes exactly, each triangle with its own
+// A primitive's triangles in the frame it is placed in (its frame applied), each with the material
+// and texture cameras see on it (RayPrimitive::surfaceMaterial). Boxes and meshes exactly, each triangle with its own
 // normal; a plane as the lidars' square (planeTriangles); spheres and cylinders tessellated finely
 // enough that no facet lies more than kCurvedTolerance from the surface, with the surface's
 // normals at the vertices.
@@ -101,18 +102,24 @@ public:
   const FrameStats& lastFrame() const { return last_frame_; }
 
 private:
-  struct Run  // consecutive vertices of one part (GlTriangles::part_ends) drawn with one texture (0: none)
+  // Consecutive vertices of one part (GlTriangles::part_ends) drawn with one texture (0: none), one
+  // kind (opaque or transparent) and with specular or without, their materials their own.
+  struct Run
   {
     int first = 0, count = 0;
     unsigned texture = 0;
+    bool transparent = false;  // its materials are
+    bool specular = false;     // its materials have specular, at most this strong
+    float max_specular = 0;
     float lo[3] = {HUGE_VALF, HUGE_VALF, HUGE_VALF}, hi[3] = {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF};  // bounds, body frame
     std::vector<LevelOfDetail> levels;  // coarser and coarser
   };
   struct Mesh
   {
-    unsigned vertex_array = 0, buffer = 0;
-    int vertex_count = 0;  // the triangles as given (the levels of detail follow them in the buffer)
+    unsigned vertex_array = 0, buffer = 0, material_buffer = 0;
+    int vertex_count = 0;  // the triangles as given (the levels of detail follow them in the buffers)
     std::vector<Run> runs;
+    bool any_transparent = false;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};  // bounds, body frame
     unsigned generation = 0;  // how many meshes this slot has held: a draw of an earlier one is stale
   };
@@ -156,8 +163,8 @@ private:
   // `max_error` (m) and spans at most kLevelOfDetailPixels; fills draw_matrices_.
   std::vector<VisibleRun> visibleRuns(const std::vector<Draw>& draws, const Frame& pose, const PinholeCamera& camera,
                                       double max_error);
-  // Draws `runs` with the bound program, whose uniforms' locations are given (-1: not in it).
-  void drawRuns(const std::vector<VisibleRun>& runs, int clip_from_body, int world_from_body, int textured);
+  // The opaque runs' depths alone, with the shadow program bound (the depth pre-pass).
+  void drawDepths(const std::vector<VisibleRun>& runs);
   unsigned textureOf(const std::shared_ptr<const Texture>& image);
   const Target& target(int width, int height);
 
@@ -165,12 +172,41 @@ private:
   struct CameraProgram  // a variant of the camera's program and its uniforms' locations
   {
     unsigned program = 0;
-    int clip_from_body, world_from_body, textured, image, camera_origin, camera_forward, towards_light, ambient;
+    int clip_from_body, world_from_body, scene_ambient, image, camera_origin, camera_forward, towards_sun, sun_diffuse;
+    int sun_specular;
     int static_shadow_from_world, moving_shadow_from_world, static_shadow, moving_shadow;  // -1: not in it
-    int light_count, light_position, light_colour, light_direction, light_attenuation, light_spot;
+    int light_count, directional_count, point_count, light_position, light_direction, light_diffuse, light_specular, light_attenuation,
+        light_spot;
+    // what of this frame it has been given: the frame's uniforms, the draw's, the lights it holds
+    unsigned frame = 0, draw = 0;
+    std::vector<int> lights;
   };
-  static constexpr int kCameraPrograms = 8;
-  CameraProgram camera_programs_[kCameraPrograms];  // [static shadows + 2 * moving shadows + 4 * local lights]
+  // Variants of the program, compiled when first used: a frame without shadows, lamps or specular
+  // pays nothing for them.
+  enum Variant { kStaticShadows = 1, kMovingShadows = 2, kLights = 4, kSpecular = 8, kTextured = 16 };
+  static constexpr int kCameraPrograms = 32;
+  CameraProgram camera_programs_[kCameraPrograms];
+  CameraProgram& cameraProgram(int variant);
+  // What a frame's draws share while it is drawn (render).
+  struct FrameState
+  {
+    const Lighting* lighting = nullptr;
+    const Frame* pose = nullptr;
+    const PinholeCamera* camera = nullptr;
+    bool static_shadows = false, moving_shadows = false;
+    unsigned frame = 0, draw = 0;
+    std::vector<int> lights;        // the draw's: indices in lighting->lights
+    float strongest_specular = 0;   // the largest specular light the draw's surfaces can meet
+    int program = -1;               // the variant in use
+  };
+  FrameState frame_;
+  unsigned frames_drawn_ = 0, draws_made_ = 0;
+  // The lights that reach a draw (its mesh's bounds in the world), nearest first, at most
+  // Lighting::kMaxLights with the sun.
+  void selectLights(const Draw& d);
+  // Draws a draw's visible opaque runs (or its transparent ones), each with its material and the
+  // program variant it needs.
+  void drawRuns(const Draw& d, const std::vector<const VisibleRun*>& visible, bool transparent);
   unsigned shadow_program_ = 0;
   int light_clip_from_body_ = -1;  // the shadow program's
   ShadowMap static_shadow_, moving_shadow_;

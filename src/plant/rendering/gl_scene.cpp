@@ -1,6 +1,7 @@
 #include "rendering/gl_scene.h"
 
 #include <algorithm>
+#include <array>
 
 namespace bullet_plant
 {
@@ -14,28 +15,87 @@ GlTriangles GlScene::camerasView(const std::vector<RayPrimitive>& shapes, Planes
       each.push_back(glTrianglesOf(p));
       any_textured = any_textured || !each.back().texture.empty();
     }
-  GlTriangles all;
+  // One list of the materials, each once; the triangles in the order they are drawn in: the opaque
+  // ones, then the transparent ones (drawn after all opaque surfaces), each kind grouped by texture
+  // and by whether it has specular, so that a mesh is drawn in as few runs as that takes.
+  GlTriangles joined;
+  std::vector<size_t> part_of;  // each triangle's part: the shape it came from
   for (const GlTriangles& t : each)
   {
+    std::vector<uint32_t> remap(t.materials.size());
+    for (size_t k = 0; k < t.materials.size(); ++k)
+    {
+      const auto found = std::find(joined.materials.begin(), joined.materials.end(), t.materials[k]);
+      remap[k] = uint32_t(found - joined.materials.begin());
+      if (found == joined.materials.end())
+        joined.materials.push_back(t.materials[k]);
+    }
+    const size_t n = t.material.size();
+    for (size_t k = 0; k < n; ++k)
+      joined.material.push_back(remap[t.material[k]]);
+    part_of.insert(part_of.end(), n, &t - each.data());
+    joined.xyz.insert(joined.xyz.end(), t.xyz.begin(), t.xyz.end());
+    joined.normal.insert(joined.normal.end(), t.normal.begin(), t.normal.end());
     if (any_textured)
     {
-      const size_t n = t.colour.size() / 4;
       if (t.texture.empty())
       {
-        all.texture.insert(all.texture.end(), n, nullptr);
-        all.uv.insert(all.uv.end(), 6 * n, 0.0f);
+        joined.texture.insert(joined.texture.end(), n, nullptr);
+        joined.uv.insert(joined.uv.end(), 6 * n, 0.0f);
       }
       else
       {
-        all.texture.insert(all.texture.end(), t.texture.begin(), t.texture.end());
-        all.uv.insert(all.uv.end(), t.uv.begin(), t.uv.end());
+        joined.texture.insert(joined.texture.end(), t.texture.begin(), t.texture.end());
+        joined.uv.insert(joined.uv.end(), t.uv.begin(), t.uv.end());
       }
     }
-    all.xyz.insert(all.xyz.end(), t.xyz.begin(), t.xyz.end());
-    all.part_ends.push_back(all.xyz.size() / 9);
-    all.colour.insert(all.colour.end(), t.colour.begin(), t.colour.end());
-    all.normal.insert(all.normal.end(), t.normal.begin(), t.normal.end());
   }
+  const size_t count = joined.material.size();
+  std::vector<size_t> order(count);
+  for (size_t k = 0; k < count; ++k)
+    order[k] = k;
+  std::vector<const Texture*> first_seen;  // textures in the order they come, for a stable key
+  auto textureRank = [&](size_t t) -> size_t {
+    if (joined.texture.empty() || !joined.texture[t])
+      return 0;
+    const auto found = std::find(first_seen.begin(), first_seen.end(), joined.texture[t].get());
+    if (found == first_seen.end())
+    {
+      first_seen.push_back(joined.texture[t].get());
+      return first_seen.size();
+    }
+    return size_t(found - first_seen.begin()) + 1;
+  };
+  // Each part (a primitive) stays whole, in its place: a frame culls and orders the parts one by one.
+  std::vector<std::array<size_t, 5>> key(count);
+  for (size_t k = 0; k < count; ++k)
+  {
+    const Material& m = joined.materials[joined.material[k]];
+    key[k] = {part_of[k], m.transparent() ? size_t(1) : size_t(0), textureRank(k),
+              m.hasSpecular() ? size_t(1) : size_t(0), joined.material[k]};
+  }
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return key[a] < key[b]; });
+  GlTriangles all;
+  all.materials = joined.materials;
+  all.material.reserve(count);
+  all.xyz.reserve(joined.xyz.size());
+  all.normal.reserve(joined.normal.size());
+  for (size_t t : order)
+  {
+    if (all.material.size() > 0 && part_of[t] != part_of[order[all.material.size() - 1]])
+      all.part_ends.push_back(all.material.size());
+    all.material.push_back(joined.material[t]);
+    all.xyz.insert(all.xyz.end(), joined.xyz.begin() + long(9 * t), joined.xyz.begin() + long(9 * t + 9));
+    if (!joined.normal.empty())
+      all.normal.insert(all.normal.end(), joined.normal.begin() + long(9 * t), joined.normal.begin() + long(9 * t + 9));
+    if (any_textured)
+    {
+      all.texture.push_back(joined.texture[t]);
+      all.uv.insert(all.uv.end(), joined.uv.begin() + long(6 * t), joined.uv.begin() + long(6 * t + 6));
+    }
+  }
+  if (!all.material.empty())
+    all.part_ends.push_back(all.material.size());
   return all;
 }
 

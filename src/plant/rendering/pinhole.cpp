@@ -8,41 +8,78 @@
 
 namespace bullet_plant
 {
-Lighting Lighting::of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows,
-                      const std::vector<LightDescription>& lights)
+Lighting::Light Lighting::Light::of(const LightDescription& light)
+{
+  Light l;
+  l.kind = light.kind == LightDescription::Kind::Directional ? Directional
+           : light.kind == LightDescription::Kind::Spot      ? Spot
+                                                             : Point;
+  const double position[3] = {light.position.x, light.position.y, light.position.z};
+  const double direction[3] = {light.direction.x, light.direction.y, light.direction.z};
+  const double n = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  const float diffuse[3] = {light.diffuse.r, light.diffuse.g, light.diffuse.b};
+  const float specular[3] = {light.specular.r, light.specular.g, light.specular.b};
+  for (int i = 0; i < 3; ++i)
+  {
+    l.position[i] = float(position[i]);
+    l.direction[i] = n > 0 ? float(direction[i] / n) : 0.0f;
+    l.diffuse[i] = diffuse[i];
+    l.specular[i] = specular[i];
+  }
+  const double attenuation[4] = {light.range, light.constant, light.linear, light.quadratic};
+  for (int i = 0; i < 4; ++i)
+    l.attenuation[i] = float(attenuation[i]);
+  l.spot[0] = float(std::cos(light.inner_angle / 2));
+  l.spot[1] = float(std::cos(light.outer_angle / 2));
+  l.spot[2] = float(light.falloff);
+  return l;
+}
+
+Lighting Lighting::of(const std::vector<LightDescription>& lights, const Rgba& ambient, const Rgba& background,
+                      bool shadows)
 {
   Lighting l;
+  const LightDescription* sun = nullptr;
+  for (const LightDescription& light : lights)
+    if (light.kind == LightDescription::Kind::Directional && (!sun || (light.cast_shadows && !sun->cast_shadows)))
+      sun = &light;
   for (const LightDescription& light : lights)
   {
-    if (light.range <= 0 || l.local.size() == kMaxLocalLights)
-      continue;
-    LocalLight local;
-    const double position[3] = {light.position.x, light.position.y, light.position.z};
-    const double direction[3] = {light.direction.x, light.direction.y, light.direction.z};
-    const float colour[3] = {light.diffuse.r, light.diffuse.g, light.diffuse.b};
-    for (int i = 0; i < 3; ++i)
+    if (&light == sun)
     {
-      local.position[i] = float(position[i]);
-      local.colour[i] = colour[i];
-      local.direction[i] = light.spot ? float(direction[i]) : 0.0f;
+      l.has_sun = true;
+      l.sun = Light::of(light);
+      for (int i = 0; i < 3; ++i)
+        l.towards_light[i] = -l.sun.direction[i];
     }
-    const double attenuation[4] = {light.range, light.constant, light.linear, light.quadratic};
-    for (int i = 0; i < 4; ++i)
-      local.attenuation[i] = float(attenuation[i]);
-    local.spot[0] = float(std::cos(light.inner_angle / 2));
-    local.spot[1] = float(std::cos(light.outer_angle / 2));
-    local.spot[2] = float(light.falloff);
-    l.local.push_back(local);
+    else if (light.lights())
+      l.lights.push_back(Light::of(light));
   }
-  l.shadows = shadows;
-  const double towards[3] = {-light_direction.x, -light_direction.y, -light_direction.z};
+  l.shadows = shadows && sun && sun->cast_shadows;
+  l.ambient[0] = ambient.r;
+  l.ambient[1] = ambient.g;
+  l.ambient[2] = ambient.b;
+  l.background[0] = background.r;
+  l.background[1] = background.g;
+  l.background[2] = background.b;
+  return l;
+}
+
+Lighting Lighting::sunOnly(const double towards[3], float diffuse, float ambient, bool shadows)
+{
+  Lighting l;
+  l.has_sun = true;
   const double n = std::sqrt(towards[0] * towards[0] + towards[1] * towards[1] + towards[2] * towards[2]);
   for (int i = 0; i < 3; ++i)
-    l.towards_light[i] = n > 0 ? towards[i] / n : 0.0;
-  l.ambient = ambient;
-  l.background[0] = float(background.r);
-  l.background[1] = float(background.g);
-  l.background[2] = float(background.b);
+  {
+    l.towards_light[i] = towards[i] / n;
+    l.sun.direction[i] = float(-towards[i] / n);
+    l.sun.diffuse[i] = diffuse;
+    l.sun.specular[i] = 0.0f;
+    l.ambient[i] = ambient;
+  }
+  l.sun.kind = Light::Directional;
+  l.shadows = shadows;
   return l;
 }
 

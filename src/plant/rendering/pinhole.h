@@ -1,5 +1,5 @@
 // What a camera renders, whoever renders it: a pinhole (image size, focal lengths and centre,
-// clip range), one directional light and point and spot lights over an ambient term, the frame it gives (colour bytes and
+// clip range), the world's lights over its ambient light, the frame it gives (colour bytes and
 // depths), and the camera's noise on the colour.
 #pragma once
 
@@ -15,28 +15,52 @@
 
 namespace bullet_plant
 {
-// How cameras light what they see: lambert shading by one directional light over an ambient term,
-// the background colour where nothing is seen.
+// How cameras light what they see, as Gazebo 11 does (OGRE's per-pixel lighting, RTShaderSystem):
+// a surface of Material m (geometry.h) shows
+//   emissive + ambient x m.ambient + shadow x sum over lights of attenuation x spot x
+//     (diffuse x m.diffuse x max(0, n . l)), times its texture, + shadow x sum of
+//     attenuation x spot x specular x m.specular x max(0, n . h)^m.shininess (where m has specular),
+// clamped to [0, 1] per channel; n is the normal on the side the camera sees, h halfway between
+// the directions to the light and to the camera, `shadow` 0 in the sun's shadow, 1 out of it (as
+// Gazebo's integrated PSSM shadows darken all but the ambient and emissive light). A point or spot
+// light's attenuation is 1 / (constant + linear d + quadratic d^2) within its range, nothing beyond;
+// a spot's factor is ((rho - cos(outer / 2)) / (cos(inner / 2) - cos(outer / 2)))^falloff clamped
+// to [0, 1] inside its outer cone, 0 outside; a directional light is not attenuated.
 struct Lighting
 {
-  double towards_light[3] = {0.5, -0.1, 0.9};  // unit
-  double ambient = 0.35;
-  float background[3] = {0.70f, 0.80f, 0.95f};
-  bool shadows = true;  // the light's shadows (<scene><shadows>, true by default as in Gazebo)
-  // Point and spot lights (world_description.h's LightDescription), lit per pixel; they cast no shadows.
-  struct LocalLight
+  struct Light
   {
-    float position[3];
-    float colour[3];
-    float direction[3];    // a spot's axis (unit); zero for a point light
-    float attenuation[4];  // range, constant, linear, quadratic
-    float spot[3];         // cos(inner / 2), cos(outer / 2), falloff
+    enum Kind : int { Directional = 0, Point = 1, Spot = 2 };
+    int kind = Point;
+    float position[3] = {0, 0, 0};
+    float direction[3] = {0, 0, -1};  // the way it shines (unit): directional and spot lights
+    float diffuse[3] = {1, 1, 1}, specular[3] = {0.1f, 0.1f, 0.1f};
+    float attenuation[4] = {10, 1, 1, 0};  // range, constant, linear, quadratic (not a directional light's)
+    float spot[3] = {1, 1, 0};             // cos(inner / 2), cos(outer / 2), falloff
+    bool hasSpecular() const { return specular[0] > 0 || specular[1] > 0 || specular[2] > 0; }
+    static Light of(const LightDescription& light);
   };
-  // OGRE's default limit of lights on one object, as Gazebo renders: the first ones in the file.
-  static constexpr size_t kMaxLocalLights = 8;
-  std::vector<LocalLight> local;
-  static Lighting of(const urdf::Vector3& light_direction, double ambient, const Rgba& background, bool shadows,
-                     const std::vector<LightDescription>& lights = {});
+  float ambient[3] = {0.4f, 0.4f, 0.4f};  // <scene><ambient>
+  float background[3] = {0.70f, 0.80f, 0.95f};
+  // The sun: the directional light that casts the shadows, the first whose <cast_shadows> is true
+  // (Gazebo draws one directional light's: its shadow camera setup takes three textures, all it
+  // has), else the first directional light; its diffuse share is worked out per vertex (exact on
+  // flat faces). None: a world without a directional light.
+  bool has_sun = false;
+  Light sun;
+  double towards_light[3] = {0.5, -0.1, 0.9};  // unit: -sun.direction, for the shadow maps
+  bool shadows = false;  // <scene><shadows> and a sun that casts them
+  // Every other light, per pixel. Each draw is lit by those whose range reaches its bounds, the
+  // nearest first, at most kMaxLights with the sun (OGRE's default of 8 lights on one object, the
+  // sun and other directional lights first, as its SceneManager sorts them).
+  std::vector<Light> lights;
+  static constexpr size_t kMaxLights = 8;
+  // The world's lights (world_description.h), in file order.
+  static Lighting of(const std::vector<LightDescription>& lights, const Rgba& ambient, const Rgba& background,
+                     bool shadows);
+  // A frame lit by one directional light (towards `towards`, diffuse `diffuse`, no specular) over a
+  // grey `ambient`: what the cameras' tests draw.
+  static Lighting sunOnly(const double towards[3], float diffuse, float ambient, bool shadows);
 };
 
 // A pinhole camera's frame: its pixels (centres at integer coordinates u right, v down from the

@@ -409,13 +409,29 @@ RayPrimitive RayPrimitive::fromShape(const Shape& s, const urdf::Pose& pose, con
   return p;
 }
 
+Material RayPrimitive::surfaceMaterial(int triangle, bool& textured) const
+{
+  textured = false;
+  if (!mesh || triangle < 0)
+  {
+    const Material m = material.resolve(Material::gazeboWhite(), textured);
+    textured = false;  // a primitive has no texture
+    return m;
+  }
+  const MeshData::SubMesh& sub = mesh->subMeshOf(triangle);
+  bool keep = false;
+  const Material m = material.resolve(sub.has_material ? sub.material : Material::gazeboWhite(), keep);
+  textured = keep && sub.image && !mesh->uvs.empty();
+  return m;
+}
+
 Rgba RayPrimitive::surfaceColour(int triangle, float u, float v) const
 {
-  if (!mesh || triangle < 0)
-    return colour;
-  const MeshData::SubMesh& sub = mesh->subMeshOf(triangle);
-  if (sub.image && !mesh->uvs.empty())
+  bool textured = false;
+  const Material m = surfaceMaterial(triangle, textured);
+  if (textured)
   {
+    const MeshData::SubMesh& sub = mesh->subMeshOf(triangle);
     const int* corner = &mesh->indices[3 * triangle];
     const float w0 = 1.0f - u - v;
     const float s = w0 * mesh->uvs[2 * corner[0]] + u * mesh->uvs[2 * corner[1]] + v * mesh->uvs[2 * corner[2]];
@@ -423,7 +439,7 @@ Rgba RayPrimitive::surfaceColour(int triangle, float u, float v) const
         w0 * mesh->uvs[2 * corner[0] + 1] + u * mesh->uvs[2 * corner[1] + 1] + v * mesh->uvs[2 * corner[2] + 1];
     return sub.image->at(s, t);
   }
-  return sub.has_colour ? sub.diffuse : colour;
+  return m.diffuse;
 }
 
 // ------------------------------------------------------------------------------------ shape sets
@@ -497,7 +513,7 @@ bool sameShape(const RayPrimitive& a, const RayPrimitive& b)
   return a.kind == b.kind && sameDoubles(a.half, b.half, 3) && a.radius == b.radius &&
          a.half_length == b.half_length && sameDoubles(a.normal, b.normal, 3) && sameDoubles(a.frame.R, b.frame.R, 9) &&
          sameDoubles(a.frame.t, b.frame.t, 3) && a.owner == b.owner && a.seen_by == b.seen_by && a.mesh == b.mesh &&
-         a.colour.r == b.colour.r && a.colour.g == b.colour.g && a.colour.b == b.colour.b && a.colour.a == b.colour.a;
+         a.material == b.material;
 }
 
 }  // namespace

@@ -51,13 +51,18 @@ struct RayPrimitive
   const void* owner = nullptr; // the robot it belongs to (null: the world)
   unsigned seen_by = kSeenByAll;
   std::shared_ptr<const MeshData> mesh;  // mesh
-  Rgba colour;                 // what cameras see (for a mesh: where its sub-mesh has no colour or texture)
+  // What cameras see: the visual's material, applied to each surface's own (VisualMaterial::resolve;
+  // a primitive's own and a sub-mesh's without a material of its file are Material::gazeboWhite).
+  VisualMaterial material;
 
   // Not for meshes (fromMesh).
   static RayPrimitive fromShape(const Shape& s, const urdf::Pose& pose, const void* owner);
   static RayPrimitive fromMesh(const std::shared_ptr<const MeshData>& mesh, const urdf::Pose& pose, const void* owner);
-  // The colour cameras see at a hit: a mesh triangle's texture at its (u, v) barycentric point,
-  // else its sub-mesh's diffuse colour, else the primitive's own colour.
+  // The material cameras see on a mesh's triangle (or the primitive's, triangle < 0), and whether
+  // its sub-mesh's texture shows there.
+  Material surfaceMaterial(int triangle, bool& textured) const;
+  // The colour under the light at a hit: the triangle's texture at its (u, v) barycentric point
+  // where it shows, else its material's diffuse colour.
   Rgba surfaceColour(int triangle, float u, float v) const;
 };
 

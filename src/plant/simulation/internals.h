@@ -93,16 +93,6 @@ struct World::Internals
   uint64_t steps = 0;
   bool paused = false;
   bool physics_enabled = true;  // World::SetPhysicsEnabled (gazebo_ros_joint_pose_trajectory)
-  // The sun as the light services left it (world_lights.cpp): its direction is the description's
-  // light_direction; whether it is still there, its shadows, and the colour and attenuation it
-  // reports (model://sun's until set; cameras light by its direction alone).
-  struct Sun
-  {
-    bool present = true;
-    bool cast_shadows = true;
-    Rgba diffuse{0.8f, 0.8f, 0.8f, 1.0f};
-    double constant = 0.9, linear = 0.01, quadratic = 0.001;
-  } sun;
 
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;

@@ -503,8 +503,9 @@ void visualShapes(Robot::Internals& r, const LinkPlacement& placement)
     urdf::LinkConstSharedPtr link = model.getLink(kv.first);
     Body& body = r.multibody.bodies[kv.second.first];
     const btTransform com_from_link = body.urdf_from_com.inverse() * kv.second.second;
-    for (const urdf::VisualSharedPtr& v : link->visual_array)
+    for (size_t index = 0; index < link->visual_array.size(); ++index)
     {
+      const urdf::VisualSharedPtr& v = link->visual_array[index];
       if (!v || !v->geometry)
         continue;
       Shape shape;
@@ -516,9 +517,11 @@ void visualShapes(Robot::Internals& r, const LinkPlacement& placement)
         const urdf::Pose in_com = fromBullet(com_from_link * toBullet(v->origin));
         RayPrimitive p = mesh ? RayPrimitive::fromMesh(mesh, in_com, &r) : RayPrimitive::fromShape(shape, in_com, &r);
         p.seen_by = kSeenByCameras;
-        if (v->material)
-          p.colour = {float(v->material->color.r), float(v->material->color.g), float(v->material->color.b),
-                      float(v->material->color.a)};
+        p.material = visualMaterial(r.description, link->name, index, *v);
+        if (mesh)
+          for (const std::string& problem : textureProblems(*mesh))
+            r.world->log.warn("link '" + link->name + "' of '" + r.name + "': mesh '" + shape.mesh_uri + "': " +
+                              problem + "; cameras see it without that texture");
         body.ray_shapes.push_back(std::move(p));
         continue;
       }

@@ -225,15 +225,20 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
     w.static_ray_shapes.push_back(mesh ? RayPrimitive::fromMesh(mesh, v.pose, nullptr)
                                        : RayPrimitive::fromShape(v.shape, v.pose, nullptr));
     w.static_ray_shapes.back().seen_by = kSeenByCameras;
-    w.static_ray_shapes.back().colour = v.colour;
+    w.static_ray_shapes.back().material = v.material;
+    if (mesh)
+      for (const std::string& problem : textureProblems(*mesh))
+        w.log.warn("world: visual '" + v.name + "': mesh '" + v.shape.mesh_uri + "': " + problem +
+                   "; cameras see it without that texture");
   }
   for (const std::string& warning : description.warnings)
     w.log.warn("world: " + warning);
   for (const std::string& error : description.errors)
     w.log.error("world: " + error);
-  if (description.lights.size() > Lighting::kMaxLocalLights)
-    w.log.warn("world: " + std::to_string(description.lights.size()) + " point and spot lights; cameras are lit by the "
-               "first " + std::to_string(Lighting::kMaxLocalLights) + " (OGRE's limit on one object, which Gazebo renders with)");
+  if (description.lights.size() > Lighting::kMaxLights)
+    w.log.warn("world: " + std::to_string(description.lights.size()) + " lights; each thing cameras see is lit by the " +
+               std::to_string(Lighting::kMaxLights) + " nearest that reach it (OGRE's limit on one object, which "
+               "Gazebo renders with)");
   // The models that move, as spawn_model would add them; one the plant refuses leaves the rest.
   for (const ModelDescription& model : description.models)
     try
@@ -614,10 +619,7 @@ void World::Internals::collectFrames()
 
 Lighting World::Internals::lighting() const
 {
-  // Without its sun (delete_light) a world is lit by the ambient light and its local lights alone.
-  return Lighting::of(sun.present ? description.light_direction : urdf::Vector3(0, 0, 0), description.ambient,
-                      description.background, description.shadows && sun.present && sun.cast_shadows,
-                      description.lights);
+  return Lighting::of(description.lights, description.ambient, description.background, description.shadows);
 }
 
 std::vector<Contact> World::contacts() const
