@@ -123,11 +123,23 @@ def test_sigint_to_the_spawner_stops_and_unloads_its_controllers(ros, plant):
 def test_non_finite_commands_leave_the_state_finite(ros, plant):
     spawner(ros, *TUTORIAL_CONTROLLERS)
     wait_for_running(ros, TUTORIAL_CONTROLLERS)
-    for value in ('.nan', '.inf', '-.inf'):
-        ros.run(['rostopic', 'pub', '-1', NS + '/rear_left_velocity_controller/command', 'std_msgs/Float64',
-                 'data: ' + value])
-        ros.run(['rostopic', 'pub', '-1', NS + '/front_left_steering_position_controller/command', 'std_msgs/Float64',
-                 'data: ' + value])
+    # one rospy program for the six messages (`rostopic pub -1` takes seconds a message)
+    topics = [NS + '/rear_left_velocity_controller/command', NS + '/front_left_steering_position_controller/command']
+    assert ros.python(f'''
+import json, time, rospy
+from std_msgs.msg import Float64
+rospy.init_node('non_finite_commands', anonymous=True)
+publishers = [rospy.Publisher(topic, Float64, queue_size=10) for topic in {topics!r}]
+deadline = time.time() + 20
+while any(p.get_num_connections() == 0 for p in publishers) and time.time() < deadline:
+    time.sleep(0.05)
+for value in (float('nan'), float('inf'), float('-inf')):
+    for p in publishers:
+        p.publish(Float64(value))
+        time.sleep(0.05)
+time.sleep(0.5)
+print(json.dumps(all(p.get_num_connections() > 0 for p in publishers)))
+''', timeout=60)
     state = echo(ros, NS + '/joint_states')[0]
     odom = echo(ros, NS + '/odom')[0]
     numbers = state['position'] + state['velocity'] + state['effort'] + list(odom['pose']['pose']['position'].values())
