@@ -1,6 +1,6 @@
 """The node's ROS graph is gazebo_ros's (Noetic) and nothing more, as upstream's own API test lists it
-(gazebo_ros/test/ros_network/gazebo_network_api.yaml and no_gazebo_network_api.yaml, which
-test/gazebo_ros_pkgs_tests runs against the build in ../shared/conformance): empty_world.launch's
+(gazebo_ros_pkgs noetic-devel's gazebo_ros/test/ros_network/gazebo_network_api.yaml and
+no_gazebo_network_api.yaml): empty_world.launch's
 services and topics with their types and publishers; with `enable_ros_network:=false` only /clock
 and roscpp's logger services of /gazebo, as Gazebo leaves them. The plant's viewer topics
 (/gazebo/scene, scene_link_states, scene_contacts, step_physics) come once a node asks for one."""
