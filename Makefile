@@ -16,10 +16,14 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 # Everything ROS runs on loopback only.
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
+# catkin_make's arguments, the same for every target so that none reconfigures the build; the
+# install space is $(WS)/install unless PREFIX names another (make install PREFIX=/opt/tianracer).
+PREFIX ?=
+CATKIN_ARGS = -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release $(if $(PREFIX),-DCMAKE_INSTALL_PREFIX=$(abspath $(PREFIX)))
 # make sim: the browser viewer in gzclient's place (the tutorial's default), or false for headless.
 GUI ?= true
 
-.PHONY: help setup build test test-quick sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes bench-lights figures step-cost soak clean
+.PHONY: help setup build install test test-quick sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes bench-lights figures step-cost soak clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation; open the address it prints first (GUI=false: headless)"
@@ -38,6 +42,7 @@ help:
 	@echo "make bench-meshes  build, the cost of a race track made of meshes (instructions per step, lidar rays/s)"
 	@echo "make bench-lights  build, instructions a 640 x 480 camera frame costs lit by six lamps, and by the sun alone"
 	@echo "make soak   build, drive SOAK_MINUTES (default 10) at full speed with every sensor on: RSS growth, non-finite states"
+	@echo "make install  build, install every package (this one and compat/'s) into $(WS)/install (PREFIX=...: elsewhere)"
 	@echo "make clean  remove $(WS)/"
 
 setup:
@@ -48,10 +53,12 @@ build: setup
 	@# folder would make a loop that rosrun's `find -L` walks into.
 	@[ ! -L $(WS)/src/tianracer_description ] || rm $(WS)/src/tianracer_description
 	@mkdir -p $(WS)/src/tianracer_description
-	@for item in $(PACKAGE_ITEMS); do ln -sfn ../../../$$item $(WS)/src/tianracer_description/$$item; done
+	@for item in $(filter-out package.xml,$(PACKAGE_ITEMS)); do ln -sfn ../../../$$item $(WS)/src/tianracer_description/$$item; done
+	@# package.xml is a copy: catkin installs it as it finds it, and a link would be installed as a link.
+	@rm -f $(WS)/src/tianracer_description/package.xml && cp package.xml $(WS)/src/tianracer_description/
 	@for pkg in $(COMPAT_PACKAGES); do ln -sfn ../../compat/$$pkg $(WS)/src/$$pkg; done
 	@find $(WS)/src $(WS)/src/tianracer_description -maxdepth 1 -xtype l -delete
-	@cd $(WS) && catkin_make -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release all tests \
+	@cd $(WS) && catkin_make $(CATKIN_ARGS) all tests \
 		> build.log 2>&1 || { tail -n 60 build.log; echo "make build: catkin_make failed; full log in $(WS)/build.log"; exit 1; }
 	@# The browser viewer's page: three.js from the npm registry (web/package-lock.json), bundled by
 	@# esbuild into web/dist/viewer.js; the modules stay in $(WS)/web, out of the package's tree.
@@ -63,6 +70,12 @@ build: setup
 	@NODE_PATH=$(WS)/web/node_modules $(WS)/web/node_modules/.bin/esbuild web/src/viewer.js --bundle --minify \
 		--format=iife --outfile=web/dist/viewer.js --log-level=warning
 	@echo "built $(WS): source $(WS)/devel/setup.bash"
+
+# The install space a user's workspace extends (README, "Your robot on the plant").
+install: build
+	@cd $(WS) && catkin_make $(CATKIN_ARGS) install > install.log 2>&1 || { tail -n 40 install.log; \
+		echo "make install: catkin_make install failed; full log in $(WS)/install.log"; exit 1; }
+	@echo "installed: source $$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' $(WS)/build/CMakeCache.txt)/setup.bash"
 
 test: build
 	@# /usr/bin first: rostest's own nodes (hztest) start with `/usr/bin/env python3`.

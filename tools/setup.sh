@@ -6,6 +6,8 @@ set -euo pipefail
 APT_PACKAGES=(
   # build
   g++ make cmake catkin python3-catkin-pkg python3-setuptools
+  # catkin_tools (`catkin build`): users build their own workspaces on the install space with it too
+  catkin-tools
   ros-message-generation ros-message-runtime python3-genmsg python3-genpy python3-gencpp
   # ROS 1 core: client libraries and the command-line tools the tutorial uses
   libroscpp-dev python3-rospy python3-rospkg rospack-tools rosbash

@@ -100,13 +100,16 @@ class Process:
 class RosSystem:
     """A ROS master of its own and the processes started against it."""
 
-    def __init__(self, workdir):
+    def __init__(self, workdir, base_env=None):
+        """base_env: the environment the processes start from (default this one's: the suite's
+        sourced workspace); a user's own workspace, sourced apart, for the tests of that."""
+        base_env = os.environ if base_env is None else base_env
         self.workdir = workdir
         self.port = free_port()
-        self.env = dict(os.environ, ROS_MASTER_URI='http://127.0.0.1:%d' % self.port, ROS_IP='127.0.0.1',
+        self.env = dict(base_env, ROS_MASTER_URI='http://127.0.0.1:%d' % self.port, ROS_IP='127.0.0.1',
                         ROS_HOME=os.path.join(workdir, 'ros_home'), PYTHONUNBUFFERED='1')
         self.env.pop('ROS_HOSTNAME', None)
-        self.env['PYTHONPATH'] = os.pathsep.join(filter(None, [HELPERS, os.environ.get('PYTHONPATH')]))
+        self.env['PYTHONPATH'] = os.pathsep.join(filter(None, [HELPERS, base_env.get('PYTHONPATH')]))
         self.processes = []
         self.master = self.start(['roscore', '-p', str(self.port)], 'roscore')
         self.wait_until(lambda: self.run(['rosparam', 'list'], timeout=5).returncode == 0, 15, 'the ROS master')

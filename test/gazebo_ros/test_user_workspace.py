@@ -1,0 +1,110 @@
+"""A Gazebo user's own robot package on the plant, as README's "Your robot on the plant" walks it: the
+plant's install space (`make install`), sourced as /opt/ros is; the user's own workspace built on it with
+catkin_make and with catkin_tools' `catkin build`; the robot's own gazebo launch file run unchanged
+(test/fixtures/rover_description: gazebo_ros's empty_world.launch, xacro, spawn_model, gazebo_plugins'
+diff drive). Each step runs in a clean environment that sources only what a user would, so nothing
+of the source tree or its devel space can stand in for the install. And a clone of this repository
+in a workspace's src/ is refused with what to do."""
+import os
+import shutil
+import subprocess
+
+import pytest
+
+from ros_harness import RosSystem
+from suite_paths import FIXTURES, REPOSITORY
+
+pytestmark = pytest.mark.ros
+
+ROVER = os.path.join(FIXTURES, 'rover_description')
+# A user's shell: nothing of ROS sourced, Debian's interpreter first (catkin and rostest run
+# `/usr/bin/env python3`).
+CLEAN_ENV = {'HOME': os.environ.get('HOME', '/root'), 'PATH': '/usr/bin:/bin', 'LANG': 'C.UTF-8'}
+
+
+def run(command, cwd, timeout=300):
+    """A shell command line in the clean environment: returns (exit status, output)."""
+    done = subprocess.run(['bash', '-c', command], cwd=cwd, env=CLEAN_ENV, capture_output=True, text=True,
+                          timeout=timeout)
+    return done.returncode, done.stdout + done.stderr
+
+
+def sourced(setup_bash):
+    """The environment after `source SETUP_BASH` in a clean shell."""
+    status, output = run('source %s && env -0' % setup_bash, cwd='/')
+    assert status == 0, output
+    return dict(entry.split('=', 1) for entry in output.split('\0') if '=' in entry)
+
+
+@pytest.fixture(scope='module')
+def install_space():
+    """`make install`, as the README says, once for the module: the install space's folder."""
+    status, output = run('make install', cwd=REPOSITORY, timeout=900)
+    assert status == 0, output
+    prefix = output.strip().splitlines()[-1].split('source ', 1)[1].rsplit('/setup.bash', 1)[0]
+    assert os.path.isfile(os.path.join(prefix, 'setup.bash')), output
+    return prefix
+
+
+def user_workspace(tmp_path):
+    workspace = tmp_path / 'rover_ws'
+    shutil.copytree(ROVER, workspace / 'src' / 'rover_description')
+    return workspace
+
+
+def test_a_robot_package_built_with_catkin_make_on_the_install_space_runs_its_gazebo_launch_file(
+        install_space, tmp_path):
+    workspace = user_workspace(tmp_path)
+    status, output = run('source %s/setup.bash && catkin_make' % install_space, cwd=workspace)
+    assert status == 0, output
+    env = sourced(workspace / 'devel' / 'setup.bash')
+    # The plant's packages come from the install space, the rover from the user's workspace.
+    for package, where in (('gazebo_ros', install_space), ('tianracer_description', install_space),
+                           ('xacro', install_space), ('rover_description', str(workspace / 'src'))):
+        found = subprocess.run(['rospack', 'find', package], env=env, capture_output=True, text=True)
+        assert found.stdout.startswith(where), (package, found.stdout, found.stderr)
+
+    ros = RosSystem(str(tmp_path), base_env=env)
+    try:
+        launch = ros.start(['roslaunch', 'rover_description', 'gazebo.launch', 'gui:=false'], 'roslaunch')
+        ros.wait_until(lambda: launch.popen.poll() is not None or 'rover' in ros.run(
+            ['rosservice', 'call', '/gazebo/get_world_properties'], timeout=10).stdout, 60, 'the rover spawned')
+        assert launch.popen.poll() is None, launch.log()
+        start = ros.probe('gazebo_ros/probes/model_poses.py', 'rover')['rover']
+        drive = ros.start(['rostopic', 'pub', '-r', '10', '/cmd_vel', 'geometry_msgs/Twist',
+                           '{linear: {x: 0.3}}'], 'cmd_vel')
+        ros.wait_until(lambda: ros.probe('gazebo_ros/probes/model_poses.py', 'rover')['rover'][0] > start[0] + 0.2,
+                       30, 'the rover to drive 0.2 m forward on cmd_vel (gazebo_plugins\' diff drive)')
+        drive.stop()
+        assert 'ERROR' not in launch.log(), launch.log()
+    finally:
+        ros.close()
+
+
+def test_a_robot_package_builds_with_catkin_tools_on_the_install_space(install_space, tmp_path):
+    workspace = user_workspace(tmp_path)
+    status, output = run('catkin init && catkin config --extend %s && catkin build --no-status --no-notify'
+                         % install_space, cwd=workspace)
+    assert status == 0, output
+    env = sourced(workspace / 'devel' / 'setup.bash')
+    # roslaunch resolves the launch file whole: gazebo_ros's empty_world.launch, the plant's node, and
+    # the xacro command through the install space's xacro.
+    params = subprocess.run(['roslaunch', '--dump-params', 'rover_description', 'gazebo.launch'], env=env,
+                            capture_output=True, text=True, timeout=60)
+    assert params.returncode == 0, params.stderr
+    assert 'libgazebo_ros_diff_drive.so' in params.stdout and '/gazebo/world_name: worlds/empty.world' in params.stdout
+    nodes = subprocess.run(['roslaunch', '--nodes', 'rover_description', 'gazebo.launch', 'gui:=false'], env=env,
+                           capture_output=True, text=True, timeout=60)
+    assert nodes.stdout.split() == ['/gazebo', '/spawn_rover'], nodes.stdout + nodes.stderr
+
+
+def test_this_repository_cloned_into_a_workspace_is_refused_with_what_to_do(tmp_path):
+    workspace = tmp_path / 'clone_ws'
+    (workspace / 'src').mkdir(parents=True)
+    os.symlink(REPOSITORY, workspace / 'src' / 'tianracer_description')
+    status, output = run('catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3', cwd=workspace)
+    assert status != 0
+    message = ' '.join(output.split())  # CMake folds a message's lines
+    assert "catkin does not look for packages inside a package" in message, output
+    assert 'tianracer_description/compat/* src/' in message, output  # link the packages beside it
+    assert 'make install' in message, output  # or extend the install space
