@@ -115,6 +115,11 @@ public:
   // frames are said in the log once a minute.
   void setLockstep(bool lockstep);
   bool lockstep() const;
+  // Builds the cameras' scene now where a robot has a camera (the OpenGL context, the visuals'
+  // meshes and their levels of detail), as Gazebo loads its rendering scene with the world: the first
+  // frame asked for then costs a frame, not the scene's build (a second for a world of fine curved
+  // shapes on llvmpipe). Without it the scene is built when the first frame is due.
+  void prepareCameras();
   // Paused: the node stops stepping; controller switches then apply at once.
   void setPaused(bool paused);
   bool paused() const;

@@ -191,6 +191,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   private_nh_.param("lockstep", lockstep, false);
   world_->setLockstep(lockstep);
   loadWorldModels();
+  world_->prepareCameras();
   real_time_factor_ = readRealTimeFactor(private_nh_, description.pace());
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.
   double clock_rate = 100.0;

@@ -678,16 +678,22 @@ std::vector<LevelOfDetail> appendLevelsOfDetail(std::vector<float>& vertices, st
   std::vector<float> welded(unique * kCornerFloats);
   meshopt_remapVertexBuffer(welded.data(), corners.data(), size_t(count), stride, indices.data());
   const float scale = meshopt_simplifyScale(welded.data(), unique, stride);
+  // Each level is simplified from the one before, not from the whole: the work halves level by level
+  // (from the whole, a 250k-triangle sphere's ten levels took a second and a half). Its error is the
+  // sum of the steps' errors, each measured against the level it came from: no less than its
+  // distance from the original surface.
   std::vector<unsigned> simplified(indices.size());
   size_t previous = indices.size();
+  float error_so_far = 0;
   for (size_t target = previous / 6 * 3; target >= 3 * size_t(kLevelOfDetailMinTriangles) / 2; target = previous / 6 * 3)
   {
     float error = 0;
-    const size_t kept = meshopt_simplify(simplified.data(), indices.data(), indices.size(), welded.data(), unique, stride,
+    const size_t kept = meshopt_simplify(simplified.data(), indices.data(), previous, welded.data(), unique, stride,
                                          target, 1.0f, 0, &error);
     if (kept == 0 || kept > previous * 3 / 4)
       break;  // it keeps what it cannot take away without tearing
-    LevelOfDetail level{int(vertices.size() / kVertexFloats), int(kept), error * scale};
+    error_so_far += error * scale;
+    LevelOfDetail level{int(vertices.size() / kVertexFloats), int(kept), error_so_far};
     for (size_t i = 0; i < kept; i += 3)
     {
       const float* corner[3] = {&welded[simplified[i] * kCornerFloats], &welded[simplified[i + 1] * kCornerFloats],
@@ -713,6 +719,7 @@ std::vector<LevelOfDetail> appendLevelsOfDetail(std::vector<float>& vertices, st
       }
     }
     levels.push_back(level);
+    std::copy_n(simplified.begin(), kept, indices.begin());
     previous = kept;
   }
   return levels;

@@ -477,6 +477,17 @@ bool World::lockstep() const { return in_->lockstep; }
 
 void World::setLockstep(bool lockstep) { in_->lockstep = lockstep; }
 
+void World::prepareCameras()
+{
+  for (auto& r : in_->robots)
+    for (auto& sensor : r->in_->sensors)
+      if (dynamic_cast<const Camera*>(sensor.get()))
+      {
+        in_->glScene();
+        return;
+      }
+}
+
 void World::Internals::reportSkippedFrames()
 {
   constexpr auto kReportPeriod = std::chrono::seconds(60);
