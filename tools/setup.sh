@@ -48,6 +48,8 @@ APT_PACKAGES=(
   googletest libgtest-dev
   # rostests (rostest, hztest) and recording simulations
   python3-rostest librostest-dev python3-rosbag
+  # gdb: gazebo_ros's debug script runs gzserver under it (test_world_launch_files.py runs it)
+  gdb
 )
 # The browser viewer: its server (aiohttp), and headless chromium driven by selenium for its tests.
 APT_PACKAGES+=(python3-aiohttp chromium chromium-driver python3-selenium)
