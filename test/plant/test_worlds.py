@@ -196,7 +196,7 @@ def test_a_missing_mesh_is_one_warning_and_the_rest_runs(tmp_path, model_path):
     world.step(10)
 
 
-def test_unsupported_geometry_and_unknown_includes_are_one_warning_each(tmp_path, model_path):
+def test_unsupported_geometry_unknown_includes_and_world_plugins_are_one_warning_each(tmp_path, model_path):
     world = load(write(tmp_path / 'w.world', world_sdf(f"""
 {include('model://no_such_model', pose='1 0 0 0 0 0')}
 <model name="terrain"><static>true</static><link name="link">
@@ -204,9 +204,10 @@ def test_unsupported_geometry_and_unknown_includes_are_one_warning_each(tmp_path
   <collision name="curb"><geometry><polyline><point>0 0</point><height>1</height></polyline></geometry></collision>
   {wall(pose='3 0 0 0 0 0')}
 </link></model>
-<actor name="walker"/>""")))
+<actor name="walker"/>
+<plugin name="rubble" filename="libRubblePlugin.so"/>""")))
     found = logged(world, 'WARN')
-    for what in ('no_such_model', 'terrain::link::hills', 'terrain::link::curb', '<actor>'):
+    for what in ('no_such_model', 'terrain::link::hills', 'terrain::link::curb', '<actor>', 'libRubblePlugin.so'):
         about_it = [w for w in found if what in w]
         assert len(about_it) == 1, (what, found)
         assert 'w.world' in about_it[0]

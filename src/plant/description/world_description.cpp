@@ -546,6 +546,10 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
       readInclude(e, source, "", urdf::Pose(), 0, world);
     else if (tag == "light")
       addLight(e);
+    else if (tag == "plugin")  // a WorldPlugin (libRubblePlugin.so ...): Gazebo's own C++, not the plant's
+      world.warnings.push_back("world plugin '" + std::string(e->Attribute("name") ? e->Attribute("name") : "") + "' (" +
+                               (e->Attribute("filename") ? e->Attribute("filename") : "no filename") + ") in " +
+                               source.describe() + " is not run: the plant runs no world plugins; skipped");
     else if (isUnsupportedWorldElement(tag))
       world.warnings.push_back("<" + tag + "> in " + source.describe() + " is not supported; skipped");
   }
