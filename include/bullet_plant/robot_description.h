@@ -32,6 +32,15 @@ struct Noise
   double stddev = 0.0;
 };
 
+// A camera's <distortion> (SDF 1.5+): Brown's radial k1 k2 k3 and tangential p1 p2 about <center>,
+// a point of the image in 0..1 (SDF's defaults: 0 and 0.5 0.5).
+struct CameraDistortion
+{
+  bool given = false;  // the <camera> has a <distortion>
+  double k1 = 0, k2 = 0, k3 = 0, p1 = 0, p2 = 0;
+  double center_x = 0.5, center_y = 0.5;
+};
+
 struct SensorDescription;
 
 // What the description makes of a gazebo_ros plugin file. Every file the plant simulates registers
@@ -121,6 +130,9 @@ struct SensorDescription
   int image_width = 0, image_height = 0;
   std::string image_format;
   double clip_near = 0.0, clip_far = 0.0;
+  CameraDistortion distortion;
+  // What was wrong in its elements and what the plant took instead, for one warning each at spawn.
+  std::vector<std::string> description_problems;
   // contact: the <contact><collision> names, SDF collisions of the sensor's link (after lumping)
   std::vector<std::string> contact_collisions;
   Noise noise;

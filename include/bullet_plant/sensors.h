@@ -120,6 +120,11 @@ public:
   const CameraFrame& latest() const { return frame_; }
   // Pinhole intrinsics from the horizontal field of view and the image size (square pixels).
   void intrinsics(double& fx, double& fy, double& cx, double& cy) const;
+  // Whether a barrel <distortion> (k1 < 0) is cropped to hide its black border: Gazebo's default,
+  // which gazebo_ros_camera_utils overrides with <borderCrop> (Distortion::SetCrop). The frames
+  // after the call follow it.
+  void setDistortionCrop(bool crop) { distortion_crop_ = crop; }
+  bool distortionCrop() const { return distortion_crop_; }
 
 private:
   friend struct detail::SensorRendering;
@@ -127,6 +132,7 @@ private:
   struct Rendering;  // the frame being rendered (sensor_rendering.h)
   std::unique_ptr<Rendering> rendering_;
   std::vector<int16_t> noise_table_;   // the image noise's samples in levels of 1/255 (noiseSamples), drawn at the first frame
+  bool distortion_crop_ = false;
 };
 
 // One touching point of a contact sensor's collision, as Gazebo's ContactSensor reports it: the

@@ -1,4 +1,4 @@
-// A camera frame's sensor_msgs/Image (rgb8, 32FC1 depth) and sensor_msgs/PointCloud2 as roscpp
+// A camera frame's sensor_msgs/Image (rgb8 or the <image><format>'s encoding, 32FC1 depth) and sensor_msgs/PointCloud2 as roscpp
 // publishes them, serialized straight from the frame into roscpp's buffer: a subscriber receives
 // the same bytes, md5 and type as from a message built first, without the copy (a point cloud is
 // 4.9 MB at 640 x 480). Publish one of these views on a publisher advertised with the message type.
@@ -13,6 +13,7 @@
 #include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/Header.h>
 
+#include "bullet_plant/image_encoding.h"
 #include "bullet_plant/sensors.h"
 #include "ros_time.h"
 
@@ -31,6 +32,12 @@ struct RgbImageOf  // sensor_msgs/Image, rgb8
   const CameraFrame& frame;
   const std_msgs::Header& header;
 };
+struct EncodedImageOf  // sensor_msgs/Image in the camera's <image><format> (image_encoding.h)
+{
+  const CameraFrame& frame;
+  const std_msgs::Header& header;
+  const ImageEncoding& encoding;
+};
 struct DepthImageOf  // sensor_msgs/Image, 32FC1 metres, NaN outside the cutoff
 {
   const CameraFrame& frame;
@@ -43,6 +50,9 @@ struct PointCloudOf  // sensor_msgs/PointCloud2: x y z float32 (NaN outside the 
   const std_msgs::Header& header;
   DepthCutoff cutoff;
   bool organized = true;  // height x width as the image; else one row of every pixel
+  // The image's encoding, whose bytes colour the points as upstream's FillPointCloudHelper takes
+  // them (null: rgb8)
+  const ImageEncoding* encoding = nullptr;
 };
 
 // The header the frame's messages carry (seq is filled in by roscpp as it publishes); the frame id
@@ -108,6 +118,32 @@ inline uint32_t imageLength(const std_msgs::Header& header, const std::string& e
 inline const std::string& rgb8() { static const std::string s = "rgb8"; return s; }
 inline const std::string& depth32FC1() { static const std::string s = "32FC1"; return s; }
 
+// A point's colour packed as the cloud's rgb field (r << 16 | g << 8 | b) from the image pixel's
+// bytes, as upstream's FillPointCloudHelper reads the published image: three bytes a pixel give
+// their three in order, one byte (mono8, bayer) a grey of it, anything else (16-bit) black.
+inline uint32_t cloudColour(const ImageEncoding* e, const uint8_t* rgb, size_t pixel, int width)
+{
+  using Layout = ImageEncoding::Layout;
+  const uint8_t* c = rgb + 3 * pixel;
+  if (!e || e->layout == Layout::Rgb8)
+    return (uint32_t(c[0]) << 16) | (uint32_t(c[1]) << 8) | c[2];
+  switch (e->layout)
+  {
+    case Layout::Bgr8:
+      return (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0];
+    case Layout::Mono8:
+      return (uint32_t(c[0]) << 16) | (uint32_t(c[0]) << 8) | c[0];
+    case Layout::Bayer:
+    {
+      const int u = int(pixel % size_t(width)), v = int(pixel / size_t(width));
+      const uint32_t g = c[e->bayer[(v % 2) * 2 + u % 2]];
+      return (g << 16) | (g << 8) | g;
+    }
+    default:
+      return 0;
+  }
+}
+
 inline void writeCutDepth(uint8_t* out, float depth, DepthCutoff cutoff)
 {
   const float value = cutoff.within(depth) ? depth : std::numeric_limits<float>::quiet_NaN();
@@ -125,6 +161,10 @@ template <> struct MD5Sum<bullet_plant::RgbImageOf> : Of<MD5Sum<sensor_msgs::Ima
 template <> struct DataType<bullet_plant::RgbImageOf> : Of<DataType<sensor_msgs::Image>> {};
 template <> struct Definition<bullet_plant::RgbImageOf> : Of<Definition<sensor_msgs::Image>> {};
 template <> struct HasHeader<bullet_plant::RgbImageOf> : TrueType {};
+template <> struct MD5Sum<bullet_plant::EncodedImageOf> : Of<MD5Sum<sensor_msgs::Image>> {};
+template <> struct DataType<bullet_plant::EncodedImageOf> : Of<DataType<sensor_msgs::Image>> {};
+template <> struct Definition<bullet_plant::EncodedImageOf> : Of<Definition<sensor_msgs::Image>> {};
+template <> struct HasHeader<bullet_plant::EncodedImageOf> : TrueType {};
 template <> struct MD5Sum<bullet_plant::DepthImageOf> : Of<MD5Sum<sensor_msgs::Image>> {};
 template <> struct DataType<bullet_plant::DepthImageOf> : Of<DataType<sensor_msgs::Image>> {};
 template <> struct Definition<bullet_plant::DepthImageOf> : Of<Definition<sensor_msgs::Image>> {};
@@ -150,6 +190,27 @@ struct Serializer<bullet_plant::RgbImageOf>
   static uint32_t serializedLength(const bullet_plant::RgbImageOf& m)
   {
     return bullet_plant::frame_messages::imageLength(m.header, bullet_plant::frame_messages::rgb8(), m.frame.rgb.size());
+  }
+};
+
+template <>
+struct Serializer<bullet_plant::EncodedImageOf>
+{
+  template <typename Stream>
+  static void write(Stream& s, const bullet_plant::EncodedImageOf& m)
+  {
+    namespace fm = bullet_plant::frame_messages;
+    const bullet_plant::CameraFrame& f = m.frame;
+    fm::writeImage(s, m.header, f, m.encoding.encoding, m.encoding.bytes_per_pixel, length(m),
+                   [&](uint8_t* out) { bullet_plant::encodeImage(m.encoding, f.rgb.data(), f.width, f.height, out); });
+  }
+  static uint32_t serializedLength(const bullet_plant::EncodedImageOf& m)
+  {
+    return bullet_plant::frame_messages::imageLength(m.header, m.encoding.encoding, length(m));
+  }
+  static uint32_t length(const bullet_plant::EncodedImageOf& m)
+  {
+    return uint32_t(m.frame.width) * uint32_t(m.frame.height) * m.encoding.bytes_per_pixel;
   }
 };
 
@@ -195,7 +256,7 @@ struct Serializer<bullet_plant::PointCloudOf>
     for (size_t p = 0; p < pixels; ++p, out += bullet_plant::kPointStep)
     {
       std::memcpy(out, m.cutoff.within(f.depth[p]) ? &f.points[3 * p] : kNaN, 12);
-      const uint32_t rgb = (uint32_t(f.rgb[3 * p]) << 16) | (uint32_t(f.rgb[3 * p + 1]) << 8) | f.rgb[3 * p + 2];
+      const uint32_t rgb = bullet_plant::frame_messages::cloudColour(m.encoding, f.rgb.data(), p, f.width);
       std::memcpy(out + 12, &rgb, 4);
     }
     s.next(uint8_t(0));  // is_dense: NaN points

@@ -3,7 +3,8 @@
 // whether the <camera>'s name contains "left" or "right"; one frameName for both, as upstream. The
 // left camera's hackBaseline is 0 whatever is given, the right's <hackBaseline> (a stereo pair's
 // P[3] = -fx * baseline). A camera named neither is not published, as upstream loads nothing for
-// it (docs/interfaces.md section 11).
+// it (docs/interfaces.md section 11). Each camera is gazebo_ros_camera_utils of its own <camera>
+// (its format, size, field of view, lens) with the plugin block's parameters, as upstream's.
 #include "gazebo_ros_camera.h"
 
 namespace bullet_plant
@@ -20,9 +21,8 @@ public:
                "camera '%s' publishes nothing", sensor.name().c_str(), sensor.description().multicamera_camera.c_str());
       return;
     }
+    zero_baseline_ = side == "left";
     GazeboRosCamera::Load(sensor);
-    if (side == "left")
-      hack_baseline_ = 0.0;
   }
 
   bool subscribed() const override { return camera_ && GazeboRosCamera::subscribed(); }

@@ -1,7 +1,9 @@
 // gazebo_ros_openni_kinect: the camera's image and info, plus a 32FC1 depth image with its
 // CameraInfo and an organized PointCloud2, NaN outside (pointCloudCutoff, pointCloudCutoffMax);
 // gazebo_ros_depth_camera: the same with no far cutoff and the cloud as one row (Noetic's, whose
-// PointCloud2Modifier::resize flattens it) (docs/interfaces.md section 11).
+// PointCloud2Modifier::resize flattens it) (docs/interfaces.md section 11). The depth image's
+// CameraInfo is the image's (upstream publishes camera_info_manager's one info on both); the
+// points' colours are the image's bytes as upstream reads them (frame_messages.h cloudColour).
 #include <limits>
 
 #include "gazebo_ros_camera.h"
@@ -48,7 +50,7 @@ private:
       return;
     depth_pub_.publish(DepthImageOf{frame, header, cutoff_});
     depth_info_pub_.publish(cameraInfo(frame, header));
-    points_pub_.publish(PointCloudOf{frame, header, cutoff_, organized_cloud_});
+    points_pub_.publish(PointCloudOf{frame, header, cutoff_, organized_cloud_, &encoding_});
   }
 
   ros::Publisher depth_pub_, depth_info_pub_, points_pub_;

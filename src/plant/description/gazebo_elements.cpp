@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "bullet_plant/geometry.h"
 #include "description/xml_util.h"
@@ -99,7 +100,37 @@ int countOf(double written)
   return int(std::max(double(std::numeric_limits<int>::min()), std::min(written, double(std::numeric_limits<int>::max()))));
 }
 
-// A <camera>: its field of view, image, clip and noise.
+// A <camera>'s <distortion>. A coefficient or centre that is not a finite number is 0 (0.5 for
+// the centre), named in `problems`: Gazebo would warp the frame into nothing.
+void readDistortion(const tinyxml2::XMLElement* cam, CameraDistortion& out, std::vector<std::string>& problems)
+{
+  auto* d = cam->FirstChildElement("distortion");
+  if (!d)
+    return;
+  out.given = true;
+  const char* names[] = {"k1", "k2", "k3", "p1", "p2"};
+  double* values[] = {&out.k1, &out.k2, &out.k3, &out.p1, &out.p2};
+  for (int i = 0; i < 5; ++i)
+  {
+    *values[i] = xml::childDouble(d, names[i], 0.0);
+    if (!std::isfinite(*values[i]))
+    {
+      problems.push_back(std::string("<distortion><") + names[i] + "> is not a finite number; it is taken as 0");
+      *values[i] = 0.0;
+    }
+  }
+  std::istringstream center(xml::childText(d, "center", "0.5 0.5"));
+  double x = 0.5, y = 0.5;
+  if (!(center >> x >> y) || !std::isfinite(x) || !std::isfinite(y))
+  {
+    problems.push_back("<distortion><center> is not two finite numbers; it is taken as 0.5 0.5");
+    x = y = 0.5;
+  }
+  out.center_x = x;
+  out.center_y = y;
+}
+
+// A <camera>: its field of view, image, clip, noise and distortion.
 void readCamera(const tinyxml2::XMLElement* cam, SensorDescription& d)
 {
   d.horizontal_fov = xml::childDouble(cam, "horizontal_fov", 1.047);
@@ -115,6 +146,7 @@ void readCamera(const tinyxml2::XMLElement* cam, SensorDescription& d)
     d.clip_far = xml::childDouble(clip, "far", 100.0);
   }
   readNoise(cam, d.noise);
+  readDistortion(cam, d.distortion, d.description_problems);
 }
 
 SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& link)
@@ -172,6 +204,8 @@ std::vector<SensorDescription> readMulticamera(const tinyxml2::XMLElement* s, co
     d.clip_near = defaults.clip_near;
     d.clip_far = defaults.clip_far;
     d.noise = defaults.noise;
+    d.distortion = defaults.distortion;
+    d.description_problems = defaults.description_problems;
     readCamera(cam, d);
     d.multicamera_camera = cam->Attribute("name") ? cam->Attribute("name") : "";
     d.name += "::" + d.multicamera_camera;
@@ -198,6 +232,8 @@ void readSensors(const tinyxml2::XMLElement* parent, const std::string& link, Ro
   {
     out.sensors.push_back(std::move(sensor));
     SensorDescription& d = out.sensors.back();
+    for (const std::string& problem : d.description_problems)
+      out.warnings.push_back("sensor '" + d.name + "': " + problem);
     if (d.plugin_given && (!d.plugin_file || d.plugin_file->role != PluginRole::Sensor))
     {
       out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));

@@ -7,6 +7,7 @@
 #include "bullet_plant/sensors.h"
 #include "rendering/frame_worker.h"
 #include "rendering/gl_scene.h"
+#include "rendering/lens_distortion.h"
 #include "rendering/ray_caster.h"
 
 namespace bullet_plant
@@ -37,6 +38,11 @@ struct Camera::Rendering
   int64_t stamp_ns = 0;
   PinholeImage image;  // kept from frame to frame
   std::string error;   // what the renderer threw, rethrown by collect
+  // The <distortion>'s remap, worked out at the first frame (and again when the crop changes);
+  // empty without distortion. The job reads it, so it changes only while no frame renders.
+  DistortionRemap distortion;
+  bool distortion_ready = false, distortion_cropped = false;
+  std::vector<uint8_t> undistorted;  // the rendered colours before the remap, kept from frame to frame
 };
 
 }  // namespace bullet_plant

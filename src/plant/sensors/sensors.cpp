@@ -87,7 +87,8 @@ Camera::~Camera()
     rendering_->worker->wait(rendering_->ticket);  // its job writes into this camera
 }
 
-Camera::Camera(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed), rendering_(new Rendering)
+Camera::Camera(const SensorDescription& d, uint32_t noise_seed)
+  : Sensor(d, noise_seed), rendering_(new Rendering), distortion_crop_(d.distortion.k1 < 0)  // Distortion::Load
 {
   // The plugin's <updateRate> throttles what the sensor renders (0: the sensor's rate).
   gate_.setPeriodNs(std::max(gate_.periodNs(), periodNsOfRate(d.pluginNumber("updateRate", 0.0))));
@@ -179,6 +180,13 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, FrameWorker
     pinhole.noise_offset = size_t(camera.noise_() % PinholeCamera::kNoiseOffsets);
   }
   Camera::Rendering& r = *camera.rendering_;
+  if (!r.distortion_ready || r.distortion_cropped != camera.distortion_crop_)
+  {
+    // No frame renders now (update collected the last): the job may read the remap from here on.
+    r.distortion = distortionRemap(d.distortion, w, h, d.horizontal_fov, camera.distortion_crop_);
+    r.distortion_ready = true;
+    r.distortion_cropped = camera.distortion_crop_;
+  }
   r.stamp_ns = time_ns;
   r.pending = true;
   r.worker = worker;
@@ -187,6 +195,13 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, FrameWorker
     try
     {
       scene.render(draws, pose, pinhole, lighting, r.image);
+      // The lens after the render, as Gazebo's compositor warps the rendered texture.
+      if (!r.distortion.empty())
+      {
+        r.undistorted.swap(r.image.rgb8);
+        r.image.rgb8.resize(r.undistorted.size());
+        remapRgb8(r.distortion, r.undistorted.data(), r.image.rgb8.data());
+      }
     }
     catch (const std::exception& e)
     {
