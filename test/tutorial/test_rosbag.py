@@ -10,16 +10,18 @@ pytestmark = pytest.mark.ros
 TOPICS = ['/tianracer/odom', '/scan', '/tf']
 
 COUNT_PLAYBACK = """
-    import json, time, rospy
+    import json, os, sys, time, rospy
     from nav_msgs.msg import Odometry
     from sensor_msgs.msg import LaserScan
     rospy.init_node('playback_probe', anonymous=True)
     counts = {'odom': 0, 'scan': 0}
     rospy.Subscriber('/tianracer/odom', Odometry, lambda m: counts.__setitem__('odom', counts['odom'] + 1))
     rospy.Subscriber('/scan', LaserScan, lambda m: counts.__setitem__('scan', counts['scan'] + 1))
-    end = time.time() + %f
-    while time.time() < end:
+    # until the test says the player has exited (its file), then what is still in flight, at most 20 s
+    played, end = sys.argv[1], time.time() + 20
+    while time.time() < end and not os.path.exists(played):
         time.sleep(0.05)
+    time.sleep(1.0)
     print(json.dumps(counts))
 """
 
@@ -47,12 +49,14 @@ def test_a_recorded_drive_plays_back_with_its_message_counts(ros, tmp_path):
     (tmp_path / 'playback').mkdir()
     player_system = RosSystem(str(tmp_path / 'playback'))
     try:
-        probe = player_system.start(['/usr/bin/python3', '-c', __import__('textwrap').dedent(COUNT_PLAYBACK % 12.0)],
+        played = tmp_path / 'played'
+        probe = player_system.start(['/usr/bin/python3', '-c', __import__('textwrap').dedent(COUNT_PLAYBACK), str(played)],
                                     'probe')
         # the two counted topics, once the probe subscribes to them: none of their messages goes unheard
         play = player_system.run(['rosbag', 'play', '--clock', '--wait-for-subscribers', bag,
                                   '--topics', '/tianracer/odom', '/scan'], timeout=60)
         assert play.returncode == 0, play.stderr
+        played.touch()
         assert probe.wait(20) == 0
         counts = yaml.safe_load(probe.log().strip().splitlines()[-1])
     finally:
