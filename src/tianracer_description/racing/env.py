@@ -12,6 +12,10 @@ yaw)} puts the car there instead.
 Every reset makes the world anew (a few milliseconds), so an episode depends on nothing before it: the
 same seed and actions give the same observations, bit for bit. render_mode "rgb_array": the frames of
 a chase camera behind the car (the plant's OpenGL cameras).
+The track: world_file (an SDF world, its centre line beside it or centerline=), or map= (a map of
+f1tenth's: map_server's YAML and image, its centre line and race line CSVs beside it or centerline=
+and raceline=; walls wall_height high; see f1tenth_map.py). RaceVectorEnv and RaceParallelEnv take
+the same.
 """
 import gymnasium
 import numpy as np
