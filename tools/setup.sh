@@ -44,6 +44,8 @@ APT_PACKAGES=(
   rviz ros-visualization-msgs python3-visualization-msgs xvfb x11-apps
   # Python for nodes and tests
   python3-numpy python3-yaml python3-pytest python3-pip python3-matplotlib
+  # f1tenth's maps saved as PNG (racing/f1tenth_map.py reads PGM itself, the rest through Pillow)
+  python3-pil
   # C++ unit tests (catkin_add_gtest builds googletest from its sources)
   googletest libgtest-dev
   # rostests (rostest, hztest) and recording simulations

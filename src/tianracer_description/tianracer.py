@@ -23,6 +23,8 @@ CONFIG_YAML = os.path.join(PACKAGE, 'config', 'smart_control_config.yaml')
 MODEL_XACRO = os.path.join(PACKAGE, 'urdf', 'tianracer_description.xacro')
 RACE_TRACK_WORLD = os.path.join(PACKAGE, 'worlds', 'race_track.world')
 RACE_CIRCUIT_WORLD = os.path.join(PACKAGE, 'worlds', 'race_circuit.world')
+# Our track in f1tenth's format (a map_server map, centre line and race line; tools/make_map_track.py).
+PEANUT_MAP = os.path.join(PACKAGE, 'worlds', 'peanut_map.yaml')
 
 # What the tutorial's control.launch hands the spawner, in its order.
 TUTORIAL_CONTROLLERS = ('joint_state_controller', 'rear_right_velocity_controller', 'rear_left_velocity_controller',

@@ -14,6 +14,7 @@ from gymnasium import spaces
 
 from tianracer_description import bullet_plant
 from tianracer_description.racing.car import CarModel, new_world
+from tianracer_description.racing.f1tenth_map import WALL_HEIGHT, MapTrack
 from tianracer_description.racing.track import Centerline, centerline_file
 
 STATE = {name: k for k, name in enumerate(bullet_plant.CarBatch.STATE)}
@@ -71,9 +72,28 @@ def steps_per_action(control_period, time_step):
 
 
 class RaceTrack:
-    """A world file and its centre line, and the spawn poses around its start."""
+    """A world file and its centre line, and the spawn poses around its start; or a map of f1tenth's
+    (map_server's YAML and image, f1tenth_map.py) made into a world, with its centre line and race
+    line found beside it. raceline: the points a waypoint follower drives (the centre line's where
+    the track has no race line); raceline_speeds: their speeds (m/s), or None."""
 
-    def __init__(self, world_file, centerline=None):
+    def __init__(self, world_file=None, centerline=None, map=None, raceline=None, wall_height=WALL_HEIGHT):
+        self.raceline_speeds = None
+        if map is not None:
+            if world_file is not None:
+                raise ValueError('pass world_file= or map=, not both (got %s and %s)' % (world_file, map))
+            explicit = centerline if isinstance(centerline, Centerline) else None
+            track = MapTrack(map, None if explicit is not None else centerline, raceline, wall_height)
+            world_file, self.map = track.world_file, track.spec
+            centerline = explicit if explicit is not None else Centerline(track.centerline.points)
+            self.raceline, self.raceline_speeds = track.raceline.points, track.raceline.vxs
+        elif world_file is None:
+            raise ValueError('pass world_file= (an SDF world with its centre line) or map= (a map_server YAML of '
+                             'f1tenth\'s)')
+        else:
+            self.map = None
+            if raceline is not None:
+                raise ValueError('raceline= goes with map=; a world file\'s track drives its centre line')
         self.world_file = world_file
         if centerline is None:
             centerline = Centerline.from_file(centerline_file(world_file))
@@ -82,6 +102,8 @@ class RaceTrack:
         elif not isinstance(centerline, Centerline):
             centerline = Centerline(centerline)
         self.centerline = centerline
+        if map is None:
+            self.raceline = np.asarray(centerline.points, np.float64)
 
     def start_pose(self, rng, along=0.0, offset=0.0, spread=1.0):
         """A start `along` the centre line from the start line and `offset` to its left, moved by up to
@@ -92,9 +114,11 @@ class RaceTrack:
         return x, y, yaw + spread * rng.uniform(-START_SPREAD['yaw'], START_SPREAD['yaw'])
 
 
-def race_parts(world_file, centerline, urdf, controllers, max_speed):
+def race_parts(world_file, centerline, urdf, controllers, max_speed, map=None, raceline=None,
+               wall_height=WALL_HEIGHT):
     """(track, car model, lidar): what every environment starts from, from its arguments."""
-    track, model = RaceTrack(world_file, centerline), CarModel(urdf, controllers, max_speed)
+    track = RaceTrack(world_file, centerline, map, raceline, wall_height)
+    model = CarModel(urdf, controllers, max_speed)
     return track, model, LidarDescription(model)
 
 

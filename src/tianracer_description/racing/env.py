@@ -12,6 +12,10 @@ yaw)} puts the car there instead.
 Every reset makes the world anew (a few milliseconds), so an episode depends on nothing before it: the
 same seed and actions give the same observations, bit for bit. render_mode "rgb_array": the frames of
 a chase camera behind the car (the plant's OpenGL cameras).
+The track: world_file (an SDF world, its centre line beside it or centerline=), or map= (a map of
+f1tenth's: map_server's YAML and image, its centre line and race line CSVs beside it or centerline=
+and raceline=; walls wall_height high; see f1tenth_map.py). RaceVectorEnv and RaceParallelEnv take
+the same.
 """
 import gymnasium
 import numpy as np
@@ -19,6 +23,7 @@ import numpy as np
 from tianracer_description.racing.car import CHASE_CAMERA, CHASE_CAMERA_SIZE
 from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
                                                row, steps_per_action)
+from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 
 
 class RaceEnv(gymnasium.Env):
@@ -26,11 +31,13 @@ class RaceEnv(gymnasium.Env):
 
     metadata = {'render_modes': ['rgb_array'], 'render_fps': 30}
 
-    def __init__(self, world_file, centerline=None, urdf=None, controllers=None, max_speed=2.0,
-                 control_period=0.01, observe_pose=False, render_mode=None):
+    def __init__(self, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
+                 control_period=0.01, observe_pose=False, render_mode=None, map=None, raceline=None,
+                 wall_height=WALL_HEIGHT):
         if render_mode not in (None, 'rgb_array'):
             raise ValueError("render_mode is None or 'rgb_array'; got %r" % (render_mode,))
-        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed)
+        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
+                                                        map, raceline, wall_height)
         self.render_mode = render_mode
         self.control_period = control_period
         self.observation_space = observation_space(self.lidar, observe_pose)

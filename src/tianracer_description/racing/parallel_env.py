@@ -23,6 +23,7 @@ from tianracer_description.racing import MAX_EPISODE_STEPS
 from tianracer_description.racing.car import new_world
 from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
                                                row, steps_per_action)
+from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 
 GRID_SPACING = 0.6  # m between a car and the one behind it, along the centre line
 GRID_OFFSET = 0.25  # m either side of the centre line: the two columns
@@ -32,11 +33,13 @@ GRID_SPREAD = 0.25  # of RaceEnv's start spread, each car's own
 class RaceParallelEnv(ParallelEnv):
     metadata = {'name': 'tianracer_race_v0', 'render_modes': []}
 
-    def __init__(self, world_file, cars=2, centerline=None, urdf=None, controllers=None, max_speed=2.0,
-                 control_period=0.01, observe_pose=False, max_cycles=MAX_EPISODE_STEPS):
+    def __init__(self, world_file=None, cars=2, centerline=None, urdf=None, controllers=None, max_speed=2.0,
+                 control_period=0.01, observe_pose=False, max_cycles=MAX_EPISODE_STEPS, map=None, raceline=None,
+                 wall_height=WALL_HEIGHT):
         if cars < 1:
             raise ValueError('a race has 1 car or more; got %r' % (cars,))
-        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed)
+        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
+                                                        map, raceline, wall_height)
         self.control_period, self.observe_pose, self.max_cycles = control_period, observe_pose, max_cycles
         self.possible_agents = ['car_%d' % i for i in range(cars)]
         self.agents = []

@@ -16,17 +16,20 @@ from gymnasium.vector.utils import batch_space
 
 from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
                                                row, steps_per_action)
+from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 
 
 class RaceVectorEnv(VectorEnv):
     metadata = {'autoreset_mode': AutoresetMode.SAME_STEP, 'render_modes': []}
 
-    def __init__(self, num_envs, world_file, centerline=None, urdf=None, controllers=None, max_speed=2.0,
-                 control_period=0.01, observe_pose=False, max_episode_steps=None, threads=0):
+    def __init__(self, num_envs, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
+                 control_period=0.01, observe_pose=False, max_episode_steps=None, threads=0, map=None,
+                 raceline=None, wall_height=WALL_HEIGHT):
         if num_envs < 1:
             raise ValueError('num_envs is 1 or more; got %r' % (num_envs,))
         self.num_envs = num_envs
-        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed)
+        self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
+                                                        map, raceline, wall_height)
         self.control_period = control_period
         self.max_episode_steps = max_episode_steps
         self.single_observation_space = observation_space(self.lidar, observe_pose)
