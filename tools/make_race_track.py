@@ -11,6 +11,8 @@ Run it again after changing the numbers below; the world file is committed.
 import math
 import os
 
+from tianracer_description.racing.track import track_world_sdf
+
 STRAIGHT = 6.0        # m, length of each straight
 RADIUS = 1.5          # m, centre line radius of the bends
 LANE = 1.2            # m, wall to wall
@@ -105,26 +107,9 @@ def centerline():
 
 
 def world_text(name, comment, parts):
-    """An SDF world of the ground plane, the sun, 1 ms physics and `parts`."""
-    return f"""<?xml version="1.0"?>
-<!-- {comment} -->
-<sdf version="1.6">
-  <world name="{name}">
-    <include>
-      <uri>model://ground_plane</uri>
-    </include>
-    <include>
-      <uri>model://sun</uri>
-    </include>
-    <physics type="ode">
-      <max_step_size>0.001</max_step_size>
-      <real_time_factor>1</real_time_factor>
-      <real_time_update_rate>1000</real_time_update_rate>
-    </physics>
-    <gravity>0 0 -9.8</gravity>
-{''.join(parts)}  </world>
-</sdf>
-"""
+    """An SDF world of the ground plane, the sun, 1 ms physics and `parts` (the package's frame for
+    track worlds)."""
+    return track_world_sdf(name, comment, parts)
 
 
 def write_track(name, text, centre_line, tool):

@@ -25,6 +25,8 @@ import tempfile
 import numpy as np
 import yaml
 
+from tianracer_description.racing.track import track_world_sdf
+
 WALL_HEIGHT = 0.3  # m: above the lidar (about 9 cm up on the Tianracer) and the car's body
 WALL_RGBA = '0.8 0.1 0.1 1'  # the race tracks' red
 CONVERTER_VERSION = 1  # part of a converted world's cache key: bump when the world written changes
@@ -213,31 +215,11 @@ def map_world_sdf(spec, wall_height=WALL_HEIGHT):
           <material><ambient>{WALL_RGBA}</ambient><diffuse>{WALL_RGBA}</diffuse></material>
         </visual>
 """)
-    text = f"""<?xml version="1.0"?>
-<!-- Made from the map {spec.path} by tianracer_description.racing.f1tenth_map: its occupied cells
-     as {len(rectangles)} static boxes {wall_height} m high. -->
-<sdf version="1.6">
-  <world name="{spec.name}">
-    <include>
-      <uri>model://ground_plane</uri>
-    </include>
-    <include>
-      <uri>model://sun</uri>
-    </include>
-    <physics type="ode">
-      <max_step_size>0.001</max_step_size>
-      <real_time_factor>1</real_time_factor>
-      <real_time_update_rate>1000</real_time_update_rate>
-    </physics>
-    <gravity>0 0 -9.8</gravity>
-    <model name="walls">
-      <static>true</static>
-      <link name="link">
-{''.join(parts)}      </link>
-    </model>
-  </world>
-</sdf>
-"""
+    walls = ('    <model name="walls">\n      <static>true</static>\n      <link name="link">\n' + ''.join(parts) +
+             '      </link>\n    </model>\n')
+    comment = ('Made from the map %s by tianracer_description.racing.f1tenth_map: its occupied cells\n     as %d '
+               'static boxes %s m high.' % (spec.path, len(rectangles), wall_height))
+    text = track_world_sdf(spec.name, comment, [walls])
     return text, len(rectangles)
 
 

@@ -28,3 +28,28 @@ class Centerline(bullet_plant.Centerline):
             raise FileNotFoundError("no centre line at %s: write one (x y per line, in the direction of racing) "
                                     "or pass centerline= as points" % path)
         return cls(np.loadtxt(path, comments='#', ndmin=2))
+
+
+def track_world_sdf(name, comment, parts):
+    """An SDF world of the ground plane, the sun, 1 ms physics at real time and `parts` (SDF text of
+    its models): the frame of every track world of ours, written by tools/make_race_track.py,
+    tools/make_race_circuit.py and f1tenth_map.py."""
+    return f"""<?xml version="1.0"?>
+<!-- {comment} -->
+<sdf version="1.6">
+  <world name="{name}">
+    <include>
+      <uri>model://ground_plane</uri>
+    </include>
+    <include>
+      <uri>model://sun</uri>
+    </include>
+    <physics type="ode">
+      <max_step_size>0.001</max_step_size>
+      <real_time_factor>1</real_time_factor>
+      <real_time_update_rate>1000</real_time_update_rate>
+    </physics>
+    <gravity>0 0 -9.8</gravity>
+{''.join(parts)}  </world>
+</sdf>
+"""
