@@ -428,8 +428,11 @@ GlTriangles glTrianglesOf(const RayPrimitive& primitive)
   {
     const bool ellipsoid = primitive.kind == Shape::Kind::Ellipsoid;
     const double r = ellipsoid ? std::max({primitive.half[0], primitive.half[1], primitive.half[2]}) : primitive.radius;
-    // segments around: the chord's sagitta r (1 - cos(pi / n)) within the tolerance
-    const int n = std::min(1024, std::max(8, int(std::ceil(M_PI / std::acos(std::max(-1.0, 1.0 - kCurvedTolerance / r))))));
+    // segments around: the chord's sagitta r (1 - cos(pi / n)) within the tolerance, and at most
+    // kMaxCurvedSegments, where the sagitta is 75 ppm of the radius: a 2 m sphere would otherwise
+    // be 490k triangles and half a gigabyte of vertex buffers.
+    const int n = std::min(kMaxCurvedSegments,
+                           std::max(8, int(std::ceil(M_PI / std::acos(std::max(-1.0, 1.0 - kCurvedTolerance / r))))));
     auto normal = [&](double x, double y, double z) {
       const double in[3] = {x, y, z};
       double n_world[3];

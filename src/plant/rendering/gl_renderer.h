@@ -42,9 +42,10 @@ struct GlTriangles
 // A primitive's triangles in the frame it is placed in (its frame applied), each with the material
 // and texture cameras see on it (RayPrimitive::surfaceMaterial). Boxes and meshes exactly, each triangle with its own
 // normal; a plane as the lidars' square (planeTriangles); spheres and cylinders tessellated finely
-// enough that no facet lies more than kCurvedTolerance from the surface, with the surface's
-// normals at the vertices.
+// enough that no facet lies more than kCurvedTolerance from the surface (with at most
+// kMaxCurvedSegments around), with the surface's normals at the vertices.
 constexpr double kCurvedTolerance = 2e-5;  // m: 1 mm in depth even where a ray grazes the surface
+constexpr int kMaxCurvedSegments = 256;     // around a curved shape at the most (radii above 0.27 m)
 GlTriangles glTrianglesOf(const RayPrimitive& primitive);
 
 // A coarser version of some triangles (meshoptimizer's simplifier): its vertices in the mesh's
