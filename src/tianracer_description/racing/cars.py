@@ -276,6 +276,7 @@ class RaceCars:
         count = len(self.names)
         self.worlds, self.robots = [None] * count, [None] * count
         self.params = [model.default_params() for _ in range(count)]
+        self._param_columns = {name: np.array([p[name] for p in self.params]) for name in CAR_PARAMS}  # the infos'
         self._largest = np.tile(model.largest, (count, 1))  # each car's max_steering, max_speed
         self._still = self.model.commands(np.zeros((count, 2)))
         self.laps = LapTimer(count, track.centerline.length)
@@ -303,6 +304,8 @@ class RaceCars:
     def set_params(self, i, params):
         """Car i's parameters (a dict of CAR_PARAMS, complete: model.params'), from its next placing on."""
         self.params[i] = dict(params)
+        for name in CAR_PARAMS:
+            self._param_columns[name][i] = params[name]
         self._largest[i] = (params['max_steering'], params['max_speed'])
 
     def place(self, i, pose, world=None, noise_seed=0):
@@ -361,7 +364,7 @@ class RaceCars:
                 'laps': state[:, STATE['centerline_travelled']] / self.track.centerline.length,
                 **self.laps.infos(cars),
                 'time': state[:, STATE['time']], 'crashed': self.crashed(state),
-                'car_params': {name: np.array([self.params[c][name] for c in cars]) for name in CAR_PARAMS}}
+                'car_params': {name: column[cars] for name, column in self._param_columns.items()}}
 
     def crashed(self, state):
         return state[:, STATE['crashed']] > 0
