@@ -2,12 +2,15 @@
 into a world of the plant with the tutorial's YAML, and an action turned into their commands through
 the converter's Ackermann conversion (ackermann.py, as cmdvel2gazebo.py does it).
 
-The default car is the tutorial's Tianracer with its IMU (xacro imu:=true). For render_mode
+The default car is the tutorial's Tianracer with its IMU (xacro imu:=true). Its parameters (CAR_PARAMS)
+may differ car by car, for domain randomisation: its mass and its tyres' friction are written into the
+URDF it is spawned from, its largest speed and steering are what an action of 1 asks for. For render_mode
 "rgb_array" a chase camera is added to the car's URDF: a camera sensor like the car's own, on a link
 fixed behind and above its root link, looking at it.
 """
 import functools
 import math
+import xml.etree.ElementTree as ET
 
 import numpy as np
 import yaml
@@ -16,13 +19,19 @@ from tianracer_description import bullet_plant
 from tianracer_description.ackermann import max_ideal_steering, wheel_command_rows
 from tianracer_description.tianracer import (CONFIG_YAML, MODEL_XACRO, REAR_WHEEL_CONTROLLERS, STEERING_CONTROLLERS,
                                              STEERING_JOINTS, TUTORIAL_CONTROLLERS, run_xacro)
-from tianracer_description.urdf_geometry import UrdfModel, ackermann_geometry
+from tianracer_description.urdf_geometry import DEFAULT_JOINTS, UrdfModel, ackermann_geometry
 
 # The commands' columns: the rear wheels' speeds (rad/s), then the steering hinges' angles (rad).
 COMMAND_CONTROLLERS = REAR_WHEEL_CONTROLLERS + STEERING_CONTROLLERS
 LIDAR, IMU, CHASE_CAMERA = 'lidar', 'imu', 'chase_camera'
 CHASE_CAMERA_RATE = 30.0  # Hz
 CHASE_CAMERA_SIZE = (320, 240)  # width, height
+# A car's parameters, which reset(options={'car_params': ...}) may set car by car: the car's total mass
+# (kg), its tyres' friction coefficient, and the speed (m/s) and steering angle (rad) an action of 1
+# asks for.
+CAR_PARAMS = ('mass', 'mu', 'max_speed', 'max_steering')
+TYRE_JOINTS = ('left_rear_wheel', 'right_rear_wheel', 'left_front_wheel', 'right_front_wheel')  # DEFAULT_JOINTS' roles
+GAZEBO_DEFAULT_MU = 1.0  # a surface's friction where its <gazebo> gives none
 
 
 @functools.lru_cache(maxsize=None)
@@ -66,9 +75,58 @@ def with_chase_camera(urdf):
     return urdf[:end] + camera + urdf[end + len('</robot>'):]
 
 
+def urdf_mass(urdf):
+    """The total of a URDF's links' masses (kg)."""
+    return sum(float(mass.get('value')) for mass in ET.fromstring(urdf).iter('mass'))
+
+
+def tyre_links(urdf):
+    """The links of the four wheels, the children of DEFAULT_JOINTS' wheel joints."""
+    model = UrdfModel(urdf)
+    return [model.joint(DEFAULT_JOINTS[role]).find('child').get('link') for role in TYRE_JOINTS]
+
+
+def urdf_tyre_mu(urdf):
+    """The friction coefficient of the tyres as the URDF gives it (the smallest of their <mu1> and
+    <mu2>; Gazebo's 1 where it gives none)."""
+    root, tyres = ET.fromstring(urdf), set(tyre_links(urdf))
+    mus = [float(element.text) for gazebo in root.findall('gazebo') if gazebo.get('reference') in tyres
+           for element in gazebo if element.tag in ('mu1', 'mu2')]
+    return min(mus) if mus else GAZEBO_DEFAULT_MU
+
+
+def urdf_with_mass_and_mu(urdf, mass, mu):
+    """The URDF with every link's mass and inertia scaled so that the car weighs `mass` (kg; its centre
+    of mass and its inertia's shape stay), and its tyres' <mu1> and <mu2> set to `mu`."""
+    root, tyres = ET.fromstring(urdf), set(tyre_links(urdf))
+    scale = mass / urdf_mass(urdf)
+    for inertial in root.iter('inertial'):
+        for element in inertial:
+            if element.tag == 'mass':
+                element.set('value', repr(float(element.get('value')) * scale))
+            elif element.tag == 'inertia':
+                for key, value in element.attrib.items():
+                    element.set(key, repr(float(value) * scale))
+    found = set()
+    for gazebo in root.findall('gazebo'):
+        if gazebo.get('reference') in tyres:
+            found.add(gazebo.get('reference'))
+            for tag in ('mu1', 'mu2'):
+                element = gazebo.find(tag)
+                if element is None:
+                    element = ET.SubElement(gazebo, tag)
+                element.text = repr(float(mu))
+    for link in tyres - found:
+        gazebo = ET.SubElement(root, 'gazebo', reference=link)
+        for tag in ('mu1', 'mu2'):
+            ET.SubElement(gazebo, tag).text = repr(float(mu))
+    return ET.tostring(root, encoding='unicode')
+
+
 class CarModel:
     """What the environments know of a car: its URDF, its controllers' YAML, its Ackermann geometry
-    measured from the URDF, its sensors' names, and the largest speed an action asks for."""
+    measured from the URDF, its sensors' names, and the largest speed an action asks for; and its
+    parameters (CAR_PARAMS), the defaults and the ranges a car's may take."""
 
     def __init__(self, urdf=None, controllers=None, max_speed=2.0, lidar=LIDAR, imu=IMU):
         self.urdf = urdf or tianracer_with_imu()
@@ -79,25 +137,66 @@ class CarModel:
         if not (math.isfinite(max_speed) and max_speed > 0):
             raise ValueError('max_speed is a speed in m/s above 0; got %r' % (max_speed,))
         self.max_speed = float(max_speed)
-        self._largest = np.array([self.max_steering, self.max_speed])  # what an action of 1 asks for
+        self.largest = np.array([self.max_steering, self.max_speed])  # what an action of 1 asks for
         self.lidar, self.imu = lidar, imu
+        self.mass, self.mu = urdf_mass(self.urdf), urdf_tyre_mu(self.urdf)
+        self._urdfs = {}  # (mass, mu, chase_camera): the URDF spawned
 
-    def commands(self, actions):
-        """Actions (a row of steering, speed per car, each in [-1, 1] of the car's largest) as the four
-        controllers' commands, a row per car in COMMAND_CONTROLLERS' order: the converter's
-        wheel_commands (as rows)."""
+    def default_params(self):
+        """The car's parameters as its URDF and max_speed give them (a dict of CAR_PARAMS)."""
+        return {'mass': self.mass, 'mu': self.mu, 'max_speed': self.max_speed, 'max_steering': self.max_steering}
+
+    def params(self, given, ground_mu=math.inf):
+        """The car's parameters: `given` (a dict of some of CAR_PARAMS, or None), the defaults for the
+        rest. ValueError names a parameter that is not one, or one out of its range: mass (kg) and
+        max_speed (m/s) above 0, mu in (0, ground_mu] (a contact takes the smaller of the two surfaces'
+        friction, so more than the ground's changes nothing), max_steering in (0, the car's largest]."""
+        given = dict(given or {})
+        unknown = sorted(set(given) - set(CAR_PARAMS))
+        if unknown:
+            raise ValueError('car_params has no %s; a car\'s parameters are %s' % (', '.join(unknown), ', '.join(CAR_PARAMS)))
+        ranges = {'mass': (0.0, math.inf, 'kg'), 'mu': (0.0, ground_mu, ''), 'max_speed': (0.0, math.inf, 'm/s'),
+                  'max_steering': (0.0, self.max_steering, 'rad')}
+        params = self.default_params()
+        for name, value in given.items():
+            low, high, unit = ranges[name]
+            try:
+                value = float(value)
+            except (TypeError, ValueError):
+                raise ValueError('car_params %s is a number; got %r' % (name, value)) from None
+            if not (low < value <= high and math.isfinite(value)):
+                raise ValueError('car_params %s is in (%g, %g]%s; got %r' % (name, low, high, ' ' + unit if unit else '',
+                                                                            value))
+            params[name] = value
+        return params
+
+    def commands(self, actions, largest=None):
+        """Actions (a row of steering, speed per car, each in [-1, 1] of the car's largest: `largest`, a
+        row of max_steering, max_speed per car, or the model's) as the four controllers' commands, a row
+        per car in COMMAND_CONTROLLERS' order: the converter's wheel_commands (as rows)."""
+        largest = self.largest if largest is None else largest
         # wheel_command_rows holds the steering within [-max_steering, max_steering]; the speed is held here
-        scaled = np.asarray(actions, np.float64).reshape(-1, 2) * self._largest
-        speed = np.minimum(np.maximum(scaled[:, 1], -self.max_speed), self.max_speed)
+        scaled = np.asarray(actions, np.float64).reshape(-1, 2) * largest
+        max_steering, max_speed = (largest[..., 0], largest[..., 1])
+        speed = np.minimum(np.maximum(scaled[:, 1], -max_speed), max_speed)
         g = self.geometry
         return wheel_command_rows(speed, scaled[:, 0], g.wheelbase, g.rear_track, g.front_track, g.wheel_radius,
-                                  self.max_steering)
+                                  max_steering)
 
-    def spawn(self, world, name, pose, chase_camera=False):
-        """The car in `world` at pose (x, y, yaw) with its controllers running (the spawner's)."""
+    def spawn_urdf(self, params=None, chase_camera=False):
+        """The URDF a car of these parameters (None: the defaults) is spawned from, made once."""
+        mass, mu = (self.mass, self.mu) if params is None else (params['mass'], params['mu'])
+        key = (mass, mu, chase_camera)
+        if key not in self._urdfs:
+            urdf = self.urdf if (mass, mu) == (self.mass, self.mu) else urdf_with_mass_and_mu(self.urdf, mass, mu)
+            self._urdfs[key] = with_chase_camera(urdf) if chase_camera else urdf
+        return self._urdfs[key]
+
+    def spawn(self, world, name, pose, chase_camera=False, params=None):
+        """The car in `world` at pose (x, y, yaw) with its controllers running (the spawner's), its mass
+        and tyres' friction `params`' (None: the URDF's)."""
         x, y, yaw = pose
-        robot = world.spawn(with_chase_camera(self.urdf) if chase_camera else self.urdf, name,
-                            pose=(x, y, 0.0, 0.0, 0.0, yaw))
+        robot = world.spawn(self.spawn_urdf(params, chase_camera), name, pose=(x, y, 0.0, 0.0, 0.0, yaw))
         loaded, ok = robot.controller_manager.spawn(list(TUTORIAL_CONTROLLERS))
         if not ok:
             raise RuntimeError('the controllers did not start for %s: %s' % (name, world.messages()[-5:]))

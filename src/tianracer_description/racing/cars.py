@@ -7,13 +7,26 @@ Observation (a dict): "scan", the lidar's ranges (m; no return reads as its rang
 own rate (the Tianracer's 40 Hz: between scans the last one stays); "speed", the forward speed (m/s);
 "steering", the mean of the two steering joints' angles (rad); "imu", the IMU's angular velocity
 (rad/s) and linear acceleration (m/s^2) in its frame (zeros for a car without one); with
-observe_pose, "pose": x, y, yaw in the world.
+observe_pose, "pose": x, y, yaw in the world; with observe_frenet, "frenet": s (m along the line from
+the start line), ey (m, left of the line positive), epsi (the heading less the line's, rad in [-pi,
+pi]); with curvature_ahead (distances, m), "curvature_ahead": the line's curvature (1/m, left turns
+positive) that far ahead of s. The line of these two: frenet_line, 'centerline' (the default) or
+'raceline' (the track's race line; the centre line where it has none).
+
+Info: progress, laps (track lengths travelled since the start), lap_count, last_lap_time,
+best_lap_time (see LapTimer), time, crashed, car_params (the car's parameters, CAR_PARAMS).
+
+Starts (reset's options={'start': ...}): None, the environment's default; 'grid', the staggered grid
+behind the start line (one car alone: the pole); 'random', a uniformly random point of the centre line
+(several cars: the grid there), drawn from the environment's generator.
 """
+import math
+
 import numpy as np
 from gymnasium import spaces
 
 from tianracer_description import bullet_plant
-from tianracer_description.racing.car import CarModel, new_world
+from tianracer_description.racing.car import CAR_PARAMS, CarModel, new_world
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT, MapTrack
 from tianracer_description.racing.track import Centerline, centerline_file
 
@@ -28,6 +41,12 @@ def draw_noise_seed(rng):
 
 # Where a seeded start lands around the track's start (s = 0 on the centre line): uniform within these.
 START_SPREAD = {'along': 0.2, 'offset': 0.1, 'yaw': 0.1}  # m, m, rad
+# The grid: two staggered columns behind the start line, f1tenth-style.
+GRID_SPACING = 0.6  # m between a car and the one behind it, along the centre line
+GRID_OFFSET = 0.25  # m either side of the centre line: the two columns
+GRID_SPREAD = 0.25  # of the start spread, each car's own
+STARTS = (None, 'grid', 'random')
+FRENET_LINES = ('centerline', 'raceline')
 
 
 class LidarDescription:
@@ -45,7 +64,8 @@ class LidarDescription:
         self.angle_min, self.angle_increment = float(scan['angle_min']), float(scan['angle_increment'])
 
 
-def observation_space(lidar, observe_pose):
+def observation_space(lidar, observe_pose, frenet=None):
+    """The observation's Dict space; frenet: a FrenetObserver, or None."""
     parts = {
         'scan': spaces.Box(0.0, lidar.range_max, (lidar.rays,), np.float32),
         'speed': spaces.Box(-np.inf, np.inf, (1,), np.float32),
@@ -54,7 +74,99 @@ def observation_space(lidar, observe_pose):
     }
     if observe_pose:
         parts['pose'] = spaces.Box(-np.inf, np.inf, (3,), np.float32)
+    if frenet is not None:
+        parts.update(frenet.spaces())
     return spaces.Dict(parts)
+
+
+class FrenetObserver:
+    """What observe_frenet and curvature_ahead add to an observation: the cars' Frenet coordinates on a
+    line of the track (the centre line: as CarBatch measured them; the race line: projected here) and
+    its curvature ahead of them (track.py's Centerline does the arithmetic)."""
+
+    def __init__(self, track, observe_frenet=False, curvature_ahead=(), frenet_line='centerline'):
+        if frenet_line not in FRENET_LINES:
+            raise ValueError('frenet_line is one of %s; got %r' % (', '.join(FRENET_LINES), frenet_line))
+        self.ahead = np.asarray(curvature_ahead if curvature_ahead is not None else (), np.float64).reshape(-1)
+        if not np.all(np.isfinite(self.ahead)):
+            raise ValueError('curvature_ahead is distances ahead along the line (m); got %r' % (curvature_ahead,))
+        self.observe_frenet = bool(observe_frenet)
+        self.on_centerline = frenet_line == 'centerline' or track.map is None  # a world's race line is its centre line
+        self.line = track.centerline if self.on_centerline else Centerline(track.raceline)
+
+    def __bool__(self):
+        return self.observe_frenet or len(self.ahead) > 0
+
+    def spaces(self):
+        parts = {}
+        if self.observe_frenet:
+            parts['frenet'] = spaces.Box(np.array([0.0, -np.inf, -np.pi], np.float32),
+                                         np.array([self.line.length, np.inf, np.pi], np.float32), dtype=np.float32)
+        if len(self.ahead):
+            parts['curvature_ahead'] = spaces.Box(-np.inf, np.inf, (len(self.ahead),), np.float32)
+        return parts
+
+    def observations(self, state):
+        """The observations' frenet and curvature_ahead entries, a row per car of `state`."""
+        x, y, yaw = state[:, STATE['x']], state[:, STATE['y']], state[:, STATE['yaw']]
+        if self.on_centerline:
+            s, ey = state[:, STATE['centerline_s']], state[:, STATE['centerline_offset']]
+            frenet = [self.line.frenet(*pose, s=si, offset=oi) for *pose, si, oi in zip(x, y, yaw, s, ey)]
+        else:
+            frenet = [self.line.frenet(*pose) for pose in zip(x, y, yaw)]
+        frenet = np.array(frenet, np.float64).reshape(-1, 3)
+        parts = {}
+        if self.observe_frenet:
+            parts['frenet'] = frenet.astype(np.float32)
+        if len(self.ahead):
+            parts['curvature_ahead'] = self.line.curvature_at(frenet[:, :1] + self.ahead).astype(np.float32)
+        return parts
+
+
+class LapTimer:
+    """Each car's laps and lap times. Where a car is along the track: u, metres from the start line (s =
+    0) in the direction of racing, from its start (counted from the nearest crossing of the line: in
+    (-length/2, length/2]) plus what it has travelled along the centre line since. A lap is done when u
+    first reaches a whole number of track lengths (1, 2, ...): a car that goes back over the line and
+    forward again counts it once. It is timed from the crossing before it, found between two reads by
+    interpolation (a car covers less than a lap a read); the first lap from the start when the car
+    started on or behind the line (a grid start: as a race times its first lap, from the lights), and
+    not at all when it started past it (short of a whole lap). Times are simulated seconds; inf until a
+    lap is timed (NaN would make two equal infos unequal: Gymnasium's check_env compares them)."""
+
+    def __init__(self, count, length):
+        self.length = length
+        self.start = np.zeros(count)  # u at the start (m)
+        self.count = np.zeros(count, np.int64)
+        self.clock = np.full(count, np.nan)  # when the lap under way started (s); NaN: it is not timed
+        self.last, self.best = np.full(count, np.inf), np.full(count, np.inf)
+        self.u, self.time = np.zeros(count), np.zeros(count)  # at the last read
+
+    def restart(self, i, start, time):
+        """Car i starts at u = `start` (m) at `time` (s)."""
+        self.start[i], self.count[i], self.u[i], self.time[i] = start, 0, start, time
+        self.clock[i] = time if start <= 0.0 else np.nan
+        self.last[i] = self.best[i] = np.inf
+
+    def read(self, cars, travelled, time):
+        """The cars (indices) have travelled this far along the centre line since their start (m), at `time` (s)."""
+        u = self.start[cars] + travelled
+        reached = np.floor(u / self.length).astype(np.int64)
+        for row in np.flatnonzero(reached > self.count[cars]):
+            i = cars[row]
+            before, after = self.u[i], u[row]
+            share = min(max((reached[row] * self.length - before) / (after - before), 0.0), 1.0) if after > before else 1.0
+            crossed = self.time[i] + share * (time[row] - self.time[i])
+            lap = crossed - self.clock[i]
+            if math.isfinite(lap):
+                self.last[i] = lap
+                self.best[i] = min(self.best[i], lap)
+            self.clock[i], self.count[i] = crossed, reached[row]
+        self.u[cars], self.time[cars] = u, time
+
+    def infos(self, cars):
+        return {'lap_count': self.count[cars].copy(), 'last_lap_time': self.last[cars].copy(),
+                'best_lap_time': self.best[cars].copy()}
 
 
 def action_space():
@@ -113,6 +225,37 @@ class RaceTrack:
         x, y, yaw = self.centerline.pose_at(s, offset)
         return x, y, yaw + spread * rng.uniform(-START_SPREAD['yaw'], START_SPREAD['yaw'])
 
+    def grid_pose(self, rng, index, at=0.0):
+        """Where car `index` of a grid whose pole is `at` (m along the centre line) starts: behind it,
+        the left and right columns by turns, each moved by GRID_SPREAD of the start spread."""
+        offset = GRID_OFFSET if index % 2 == 0 else -GRID_OFFSET
+        return self.start_pose(rng, along=at - GRID_SPACING * index, offset=offset, spread=GRID_SPREAD)
+
+    def start_poses(self, rng, start, given, default):
+        """The cars' poses for reset's options['start'] (one of STARTS), drawn from `rng` in the cars'
+        order: `given` holds a pose or None for each car, and only those with none are drawn; a start of
+        None draws `default`(rng, index)."""
+        if start not in STARTS:
+            raise ValueError("options['start'] is one of %s; got %r" % (', '.join(map(repr, STARTS)), start))
+        if start is None:
+            draw = default
+        elif start == 'grid':
+            draw = self.grid_pose
+        else:  # random: a point of the centre line and its heading; several cars, the grid there
+            at = rng.uniform(0.0, self.centerline.length)
+            draw = ((lambda rng, index: self.centerline.pose_at(at)) if len(given) == 1
+                    else (lambda rng, index: self.grid_pose(rng, index, at)))
+        return [pose if pose is not None else draw(rng, index) for index, pose in enumerate(given)]
+
+    @property
+    def ground_mu(self):
+        """The ground's friction coefficient: the smallest of the world's planes' (inf: no plane)."""
+        if not hasattr(self, '_ground_mu'):
+            planes = [c['mu'] for c in bullet_plant.World.from_file(self.world_file).static_collisions()
+                      if c['kind'] == 'plane']
+            self._ground_mu = min(planes) if planes else math.inf
+        return self._ground_mu
+
 
 def race_parts(world_file, centerline, urdf, controllers, max_speed, map=None, raceline=None,
                wall_height=WALL_HEIGHT):
@@ -125,37 +268,81 @@ def race_parts(world_file, centerline, urdf, controllers, max_speed, map=None, r
 class RaceCars:
     """N cars on a track, the N cars of one CarBatch (see the module's text)."""
 
-    def __init__(self, track, model, lidar, names, observe_pose=False, threads=1, chase_camera=False):
+    def __init__(self, track, model, lidar, names, observe_pose=False, threads=1, chase_camera=False, frenet=None):
         self.track, self.model, self.lidar, self.names = track, model, lidar, list(names)
         self.observe_pose, self.chase_camera = observe_pose, chase_camera
+        self.frenet = frenet if frenet else None  # a FrenetObserver that observes something, or None
         self.batch = bullet_plant.CarBatch(len(self.names), threads)
         count = len(self.names)
         self.worlds, self.robots = [None] * count, [None] * count
+        self.params = [model.default_params() for _ in range(count)]
+        self._param_columns = {name: np.array([p[name] for p in self.params]) for name in CAR_PARAMS}  # the infos'
+        self._largest = np.tile(model.largest, (count, 1))  # each car's max_steering, max_speed
         self._still = self.model.commands(np.zeros((count, 2)))
+        self.laps = LapTimer(count, track.centerline.length)
+
+    def car_params(self, given, keys):
+        """Each car's parameters from reset's options['car_params'] (`given`): None (the defaults), one
+        dict of CAR_PARAMS for every car, or one per car, a list (or tuple) in the cars' order or a dict
+        by `keys` (the agents' names; a car left out gets the defaults). ValueError names what is wrong."""
+        count = len(self.names)
+        if given is None:
+            per_car = [None] * count
+        elif isinstance(given, (list, tuple)):
+            if len(given) != count:
+                raise ValueError("options['car_params'] as a list has a dict for each of the %d cars; got %d"
+                                 % (count, len(given)))
+            per_car = list(given)
+        elif isinstance(given, dict) and keys is not None and given and set(given) <= set(keys):
+            per_car = [given.get(key) for key in keys]
+        elif isinstance(given, dict):
+            per_car = [given] * count
+        else:
+            raise ValueError("options['car_params'] is a dict of %s, or one per car; got %r" % (', '.join(CAR_PARAMS), given))
+        return [self.model.params(params, self.track.ground_mu) for params in per_car]
+
+    def set_params(self, i, params):
+        """Car i's parameters (a dict of CAR_PARAMS, complete: model.params'), from its next placing on."""
+        self.params[i] = dict(params)
+        for name in CAR_PARAMS:
+            self._param_columns[name][i] = params[name]
+        self._largest[i] = (params['max_steering'], params['max_speed'])
 
     def place(self, i, pose, world=None, noise_seed=0):
         """Car i spawned at pose (x, y, yaw) into `world` (shared with other cars), or into a new world
-        of the track whose sensors' noise is seeded by `noise_seed`; its progress starts there."""
+        of the track whose sensors' noise is seeded by `noise_seed`, with its parameters; its progress
+        and laps start there."""
         pose = tuple(float(v) for v in pose)
         world = world or new_world(self.track.world_file, self.model.controllers, noise_seed)
-        self.worlds[i], self.robots[i] = world, self.model.spawn(world, self.names[i], pose, self.chase_camera)
+        self.worlds[i] = world
+        self.robots[i] = self.model.spawn(world, self.names[i], pose, self.chase_camera, self.params[i])
         self.model.bind(self.batch, i, world, self.robots[i], self.track.centerline)
+        line = self.track.centerline
+        self.laps.restart(i, line.progress(0.0, line.project(pose[0], pose[1])[0]), world.time)
 
     def settle(self, i=None):
         """(scans, state) after one physics step with the cars held still (their first scan, their
         controllers' first update): all cars, or car i alone (its world stepped; the others' are not)."""
         if i is None:
-            return self.batch.step(self._still, 1)
-        return self.batch.step(self._still[i:i + 1], 1, [i])
+            scans, state = self.batch.step(self._still, 1)
+        else:
+            scans, state = self.batch.step(self._still[i:i + 1], 1, [i])
+        self._read_laps(state, i)
+        return scans, state
 
     def step(self, actions, steps, still=None):
         """(scans, state, rewards) after every car's action held for `steps` physics steps; cars where
         `still` is True are held still. The rewards: metres gained along the centre line."""
-        commands = self.model.commands(actions)
+        commands = self.model.commands(actions, self._largest)
         if still is not None:
             commands[still] = self._still[still]
         scans, state = self.batch.step(commands, steps)
+        self._read_laps(state)
         return scans, state, state[:, STATE['centerline_gained']]
+
+    def _read_laps(self, state, i=None):
+        cars = np.arange(len(self.names)) if i is None else np.array([i])
+        self.laps.read(cars, state[:, STATE['centerline_travelled']], state[:, STATE['time']])
 
     def observations(self, scans, state):
         """The cars' observations, a dict of arrays with a row per car."""
@@ -163,19 +350,26 @@ class RaceCars:
         observations = {'scan': scans, 'speed': observed[:, 0:1], 'steering': observed[:, 1:2], 'imu': observed[:, 2:]}
         if self.observe_pose:
             observations['pose'] = state[:, [STATE['x'], STATE['y'], STATE['yaw']]].astype(np.float32)
+        if self.frenet is not None:
+            observations.update(self.frenet.observations(state))
         return observations
 
-    def infos(self, state):
-        """The infos of the cars whose rows `state` holds, a dict of arrays: progress (m along the centre
-        line), laps (since the car was placed), time (s, simulated), crashed."""
+    def infos(self, state, i=None):
+        """The infos of the cars whose rows `state` holds (all, or car i alone), a dict of arrays:
+        progress (m along the centre line), laps (track lengths travelled since the car was placed),
+        lap_count, last_lap_time and best_lap_time (LapTimer's), time (s, simulated), crashed, and
+        car_params (a dict of arrays: the cars' parameters)."""
+        cars = np.arange(len(self.names)) if i is None else np.array([i])
         return {'progress': state[:, STATE['centerline_s']],
                 'laps': state[:, STATE['centerline_travelled']] / self.track.centerline.length,
-                'time': state[:, STATE['time']], 'crashed': self.crashed(state)}
+                **self.laps.infos(cars),
+                'time': state[:, STATE['time']], 'crashed': self.crashed(state),
+                'car_params': {name: column[cars] for name, column in self._param_columns.items()}}
 
     def crashed(self, state):
         return state[:, STATE['crashed']] > 0
 
 
 def row(arrays, i):
-    """Car i's entry of a dict of arrays (an observation or an info)."""
-    return {key: value[i] for key, value in arrays.items()}
+    """Car i's entry of a dict of arrays (an observation or an info; a dict in it, its own entry)."""
+    return {key: row(value, i) if isinstance(value, dict) else value[i] for key, value in arrays.items()}

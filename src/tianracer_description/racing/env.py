@@ -8,7 +8,12 @@ control_period seconds of simulated time. Reward: metres gained along the centre
 the car touches anything but the ground (a wall, a cone, another car); truncated by the time limit
 (max_episode_steps, registered). reset(seed=...) seeds the env's own generator (self.np_random), which
 places the start near the track's start line and seeds the sensors' noise; options={"pose": (x, y,
-yaw)} puts the car there instead.
+yaw)} puts the car there instead, options={"start": "grid"} on the grid's pole behind the start line
+and {"start": "random"} on a random point of the centre line (cars.py); options={"car_params": {...}}
+gives the car other parameters for the episode (mass, mu, max_speed, max_steering: car.py), recorded in
+info["car_params"]; a reset without them gives it the defaults again. observe_frenet=True,
+curvature_ahead=(metres, ...) and frenet_line= add the car's Frenet coordinates and the line's curvature
+ahead to the observation; the info holds lap_count, last_lap_time and best_lap_time (cars.py).
 Every reset makes the world anew (a few milliseconds), so an episode depends on nothing before it: the
 same seed and actions give the same observations, bit for bit. render_mode "rgb_array": the frames of
 a chase camera behind the car (the plant's OpenGL cameras).
@@ -21,8 +26,8 @@ import gymnasium
 import numpy as np
 
 from tianracer_description.racing.car import CHASE_CAMERA, CHASE_CAMERA_SIZE
-from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
-                                               row, steps_per_action)
+from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
+                                               observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 
 
@@ -33,22 +38,28 @@ class RaceEnv(gymnasium.Env):
 
     def __init__(self, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, render_mode=None, map=None, raceline=None,
-                 wall_height=WALL_HEIGHT):
+                 wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline'):
         if render_mode not in (None, 'rgb_array'):
             raise ValueError("render_mode is None or 'rgb_array'; got %r" % (render_mode,))
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
                                                         map, raceline, wall_height)
         self.render_mode = render_mode
         self.control_period = control_period
-        self.observation_space = observation_space(self.lidar, observe_pose)
+        frenet = FrenetObserver(self.track, observe_frenet, curvature_ahead, frenet_line)
+        self.observation_space = observation_space(self.lidar, observe_pose, frenet)
         self.action_space = action_space()
         self._cars = RaceCars(self.track, self.model, self.lidar, ['car'], observe_pose,
-                              chase_camera=render_mode == 'rgb_array')
+                              chase_camera=render_mode == 'rgb_array', frenet=frenet)
         self._steps = None
 
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
-        pose = (options or {}).get('pose') or self.track.start_pose(self.np_random)
+        options = options or {}
+        if options.get('pose') is not None and options.get('start') is not None:
+            raise ValueError("options: 'pose' or 'start', not both")
+        self._cars.set_params(0, self._cars.car_params(options.get('car_params'), None)[0])
+        pose, = self.track.start_poses(self.np_random, options.get('start'), [options.get('pose')],
+                                       lambda rng, index: self.track.start_pose(rng))
         self._cars.place(0, pose, noise_seed=draw_noise_seed(self.np_random))
         self._steps = steps_per_action(self.control_period, self._cars.worlds[0].time_step)
         scans, state = self._cars.settle()

@@ -10,7 +10,9 @@ env.py). They start on a grid behind the start line, in two staggered columns, a
 so they see each other in their lidars and collide: a car that touches anything but the ground (a
 wall, a cone, another car) is terminated, stops, and stays where it is, an obstacle for the others.
 All are truncated after max_cycles steps. reset(options={"poses": {agent: (x, y, yaw)}}) puts cars
-elsewhere than on the grid. One CarBatch steps the world once per step and reads every car. The same
+elsewhere than on the grid; options={"start": "random"} puts the grid at a random point of the centre
+line ("grid": the grid, the default); options={"car_params": ...} gives every car other parameters (one
+dict) or each its own ({agent: dict}; one left out gets the defaults), see car.py and cars.py. One CarBatch steps the world once per step and reads every car. The same
 seed and actions give the same observations, bit for bit.
 """
 import functools
@@ -21,13 +23,9 @@ from pettingzoo import ParallelEnv
 
 from tianracer_description.racing import MAX_EPISODE_STEPS
 from tianracer_description.racing.car import new_world
-from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
-                                               row, steps_per_action)
+from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
+                                               observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
-
-GRID_SPACING = 0.6  # m between a car and the one behind it, along the centre line
-GRID_OFFSET = 0.25  # m either side of the centre line: the two columns
-GRID_SPREAD = 0.25  # of RaceEnv's start spread, each car's own
 
 
 class RaceParallelEnv(ParallelEnv):
@@ -35,7 +33,7 @@ class RaceParallelEnv(ParallelEnv):
 
     def __init__(self, world_file=None, cars=2, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, max_cycles=MAX_EPISODE_STEPS, map=None, raceline=None,
-                 wall_height=WALL_HEIGHT):
+                 wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline'):
         if cars < 1:
             raise ValueError('a race has 1 car or more; got %r' % (cars,))
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
@@ -43,9 +41,10 @@ class RaceParallelEnv(ParallelEnv):
         self.control_period, self.observe_pose, self.max_cycles = control_period, observe_pose, max_cycles
         self.possible_agents = ['car_%d' % i for i in range(cars)]
         self.agents = []
-        self._observation_space = observation_space(self.lidar, observe_pose)
+        frenet = FrenetObserver(self.track, observe_frenet, curvature_ahead, frenet_line)
+        self._observation_space = observation_space(self.lidar, observe_pose, frenet)
         self._action_spaces = {agent: action_space() for agent in self.possible_agents}
-        self._cars = RaceCars(self.track, self.model, self.lidar, self.possible_agents, observe_pose)
+        self._cars = RaceCars(self.track, self.model, self.lidar, self.possible_agents, observe_pose, frenet=frenet)
         self._rng = seeding.np_random()[0]
         self._cycles = 0
         self._stopped = np.zeros(cars, bool)
@@ -58,18 +57,18 @@ class RaceParallelEnv(ParallelEnv):
     def action_space(self, agent):
         return self._action_spaces[agent]
 
-    def grid_pose(self, index):
-        """Where car `index` starts: behind the start line, the left and right columns by turns."""
-        offset = GRID_OFFSET if index % 2 == 0 else -GRID_OFFSET
-        return self.track.start_pose(self._rng, along=-GRID_SPACING * index, offset=offset, spread=GRID_SPREAD)
-
     def reset(self, seed=None, options=None):
         if seed is not None:
             self._rng = seeding.np_random(seed)[0]
+        options = options or {}
+        for index, params in enumerate(self._cars.car_params(options.get('car_params'), self.possible_agents)):
+            self._cars.set_params(index, params)
         world = new_world(self.track.world_file, self.model.controllers, draw_noise_seed(self._rng))
-        poses = (options or {}).get('poses') or {}
-        for index, agent in enumerate(self.possible_agents):
-            self._cars.place(index, poses.get(agent) or self.grid_pose(index), world)
+        given = options.get('poses') or {}
+        poses = self.track.start_poses(self._rng, options.get('start'), [given.get(agent) for agent in self.possible_agents],
+                                       self.track.grid_pose)
+        for index, pose in enumerate(poses):
+            self._cars.place(index, pose, world)
         self.agents = list(self.possible_agents)
         self._steps = steps_per_action(self.control_period, world.time_step)
         self._cycles = 0

@@ -8,14 +8,19 @@ Autoreset is SAME_STEP (declared in metadata): a car whose episode ends is reset
 step; the step returns its first observation of the next episode, and infos carry "final_obs" and
 "final_info" (with the "_final_obs" / "_final_info" masks) of the one that ended. Each car has a
 generator of its own, seeded from reset(seed=) as seed, seed + 1, ...
+
+reset(options=) takes "poses" (a pose or None for each car), "start" (None, "grid": each car, alone in
+its world, on the grid's pole; "random"), which the autoresets keep until the next reset(), and
+"car_params" (one dict for every car or a list of one per car, None: the defaults), which each car
+keeps through its autoresets. The info's "car_params" is a dict of arrays, one per parameter.
 """
 import numpy as np
 from gymnasium.utils import seeding
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from tianracer_description.racing.cars import (RaceCars, action_space, draw_noise_seed, observation_space, race_parts,
-                                               row, steps_per_action)
+from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
+                                               observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 
 
@@ -24,7 +29,8 @@ class RaceVectorEnv(VectorEnv):
 
     def __init__(self, num_envs, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, max_episode_steps=None, threads=0, map=None,
-                 raceline=None, wall_height=WALL_HEIGHT):
+                 raceline=None, wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(),
+                 frenet_line='centerline'):
         if num_envs < 1:
             raise ValueError('num_envs is 1 or more; got %r' % (num_envs,))
         self.num_envs = num_envs
@@ -32,34 +38,48 @@ class RaceVectorEnv(VectorEnv):
                                                         map, raceline, wall_height)
         self.control_period = control_period
         self.max_episode_steps = max_episode_steps
-        self.single_observation_space = observation_space(self.lidar, observe_pose)
+        frenet = FrenetObserver(self.track, observe_frenet, curvature_ahead, frenet_line)
+        self.single_observation_space = observation_space(self.lidar, observe_pose, frenet)
         self.single_action_space = action_space()
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         self.action_space = batch_space(self.single_action_space, num_envs)
-        self._cars = RaceCars(self.track, self.model, self.lidar, ['car'] * num_envs, observe_pose, threads)
+        self._cars = RaceCars(self.track, self.model, self.lidar, ['car'] * num_envs, observe_pose, threads, frenet=frenet)
         self._rngs = [seeding.np_random()[0] for _ in range(num_envs)]
         self._elapsed = np.zeros(num_envs, np.int64)
         self._everyone = np.ones(num_envs, bool)  # the infos' masks: every car has every key
         self._everyone.flags.writeable = False
         self._steps = None
+        self._start = None  # reset's options['start'], which the autoresets keep
 
     def reset(self, *, seed=None, options=None):
         super().reset(seed=seed)
         if seed is not None:
             seeds = [seed + i for i in range(self.num_envs)] if isinstance(seed, int) else list(seed)
             self._rngs = [seeding.np_random(s)[0] for s in seeds]
-        poses = (options or {}).get('poses') or [None] * self.num_envs
+        options = options or {}
+        poses = options.get('poses') or [None] * self.num_envs
+        if len(poses) != self.num_envs:
+            raise ValueError("options['poses'] has a pose (or None) for each of the %d cars; got %d"
+                             % (self.num_envs, len(poses)))
+        for i, params in enumerate(self._cars.car_params(options.get('car_params'), None)):
+            self._cars.set_params(i, params)
+        self._start = options.get('start')
         for i in range(self.num_envs):
-            pose = poses[i] or self.track.start_pose(self._rngs[i])
-            self._cars.place(i, pose, noise_seed=draw_noise_seed(self._rngs[i]))
+            self._cars.place(i, self._start_pose(i, poses[i]), noise_seed=draw_noise_seed(self._rngs[i]))
         self._elapsed[:] = 0
         self._steps = steps_per_action(self.control_period, self._cars.worlds[0].time_step)
         scans, state = self._cars.settle()
         return self._cars.observations(scans, state), self._with_masks(self._cars.infos(state))
 
+    def _start_pose(self, i, pose=None):
+        """Car i's start: `pose`, or one its generator draws for the start reset() was given."""
+        return self.track.start_poses(self._rngs[i], self._start, [pose], lambda rng, index: self.track.start_pose(rng))[0]
+
     def _with_masks(self, infos):
-        """Gymnasium's vector infos: each key's array, and "_key", which cars it is for (all of them)."""
-        return {**infos, **{'_' + key: self._everyone for key in infos}}
+        """Gymnasium's vector infos: each key's array, and "_key", which cars it is for (all of them);
+        a dict of arrays within, the same."""
+        return {**{key: self._with_masks(value) if isinstance(value, dict) else value for key, value in infos.items()},
+                **{'_' + key: self._everyone for key in infos}}
 
     def step(self, actions):
         if self._steps is None:
@@ -77,14 +97,21 @@ class RaceVectorEnv(VectorEnv):
         for i in (np.flatnonzero(ended) if ended.any() else ()):
             infos = self._add_info(infos, {'final_obs': row(observations, i), 'final_info': row(car_infos, i)}, i)
             observations = {key: value.copy() for key, value in observations.items()}  # final_obs keeps its own
-            self._cars.place(i, self.track.start_pose(self._rngs[i]), noise_seed=draw_noise_seed(self._rngs[i]))
+            self._cars.place(i, self._start_pose(i), noise_seed=draw_noise_seed(self._rngs[i]))
             self._elapsed[i] = 0
             first_scans, first_state = self._cars.settle(i)  # its world alone; the others wait for the next step
             for key, value in self._cars.observations(first_scans, first_state).items():
                 observations[key][i] = value[0]
-            for key, value in self._cars.infos(first_state).items():
-                infos[key][i] = value[0]
+            self._set_row(infos, self._cars.infos(first_state, i), i)
         return observations, rewards, terminated, truncated, infos
+
+    def _set_row(self, infos, car_infos, i):
+        """Car i's entries of the infos from `car_infos` (its row alone)."""
+        for key, value in car_infos.items():
+            if isinstance(value, dict):
+                self._set_row(infos[key], value, i)
+            else:
+                infos[key][i] = value[0]
 
     def close_extras(self, **kwargs):
         self._cars.worlds = [None] * self.num_envs
