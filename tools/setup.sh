@@ -44,6 +44,8 @@ APT_PACKAGES=(
   rviz ros-visualization-msgs python3-visualization-msgs xvfb x11-apps
   # Python for nodes and tests
   python3-numpy python3-yaml python3-pytest python3-pip python3-matplotlib
+  # the racing environments' render_mode "human": a Tk window (tkinter)
+  python3-tk
   # f1tenth's maps saved as PNG (racing/f1tenth_map.py reads PGM itself, the rest through Pillow)
   python3-pil
   # C++ unit tests (catkin_add_gtest builds googletest from its sources)
@@ -63,6 +65,9 @@ PIP_PACKAGES=(xacro==2.1.1)
 # Racing for learning (tianracer_description.racing, .sweep): Gymnasium, PettingZoo, Ray for sweeps,
 # stable-baselines3 for the PPO example with PyTorch's CPU build; pandas below 3 (3 needs numpy 2).
 PIP_PACKAGES+=(gymnasium==1.4.0 pettingzoo==1.27.0 ray==2.60.0 stable-baselines3==2.9.2 pandas==2.3.3 tqdm==4.70.1)
+# Videos of episodes: Gymnasium's RecordVideo writes them with MoviePy (its imageio-ffmpeg brings ffmpeg);
+# 1.0.3, as MoviePy 2 needs numpy 1.25 and Debian's is 1.24.
+PIP_PACKAGES+=(moviepy==1.0.3)
 PY=/usr/bin/python3
 # PyTorch's CPU build where pip finds it (a wheel of a local find-links, as on the project's
 # machines); else PyPI's, whose default build carries CUDA (several GB) and runs on the CPU as well.

@@ -80,12 +80,26 @@ void init_world(py::module_& m)
           d["mesh_uri"] = c.shape.mesh_uri;
           d["mesh_file"] = c.shape.mesh_file;
           d["scale"] = std::vector<double>{c.shape.scale.x, c.shape.scale.y, c.shape.scale.z};
+          // the shape's own dimensions, each kind's (scene_json's keys): what a map of the walls draws
+          switch (c.shape.kind)
+          {
+            case Shape::Kind::Box: d["size"] = c.shape.box_size; break;
+            case Shape::Kind::Cylinder:
+            case Shape::Kind::Capsule: d["length"] = c.shape.length; [[fallthrough]];
+            case Shape::Kind::Sphere: d["radius"] = c.shape.radius; break;
+            case Shape::Kind::Ellipsoid: d["radii"] = c.shape.radii; break;
+            case Shape::Kind::Plane:
+              d["normal"] = std::vector<double>{c.shape.normal.x, c.shape.normal.y, c.shape.normal.z};
+              break;
+            case Shape::Kind::Mesh: break;
+          }
           d["mu"] = c.mu;
           out.append(d);
         }
         return out;
       }, "the world's static collisions as described: name (model::link::collision), kind, pose (x y z qx qy qz qw), "
-         "mesh_uri and mesh_file (as written, as resolved), scale, mu")
+         "mesh_uri and mesh_file (as written, as resolved), scale, the kind's dimensions (box: size, full lengths; "
+         "cylinder and capsule: radius, length; sphere: radius; ellipsoid: radii; plane: normal), mu")
       .def("scene_json", [](PyWorld& w) { return sceneJson(sceneOf(*w.world)); },
            "what a viewer draws: the world's static visuals and each robot's link visuals, the sun, ambient "
            "and background, as JSON (bullet_plant/scene.h; the node publishes it on /gazebo/scene)")

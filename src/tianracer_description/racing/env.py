@@ -15,41 +15,47 @@ info["car_params"]; a reset without them gives it the defaults again. observe_fr
 curvature_ahead=(metres, ...) and frenet_line= add the car's Frenet coordinates and the line's curvature
 ahead to the observation; the info holds lap_count, last_lap_time and best_lap_time (cars.py).
 Every reset makes the world anew (a few milliseconds), so an episode depends on nothing before it: the
-same seed and actions give the same observations, bit for bit. render_mode "rgb_array": the frames of
-a chase camera behind the car (the plant's OpenGL cameras).
+same seed and actions give the same observations, bit for bit.
+Rendering (views.py): render_mode "rgb_array" returns a frame, "human" shows each step's in a window;
+view= says what: "chase" (the default), a chase camera behind the car (the plant's OpenGL cameras),
+or "top_down", the track from above with the car, its lidar's hits and the centre line (numpy,
+top_down_scale m a pixel). metadata["render_fps"] is a frame a step (1 / control_period), so that a
+video of the frames (gymnasium.wrappers.RecordVideo) plays in simulated time.
 The track: world_file (an SDF world, its centre line beside it or centerline=), or map= (a map of
 f1tenth's: map_server's YAML and image, its centre line and race line CSVs beside it or centerline=
 and raceline=; walls wall_height high; see f1tenth_map.py). RaceVectorEnv and RaceParallelEnv take
 the same.
 """
 import gymnasium
-import numpy as np
 
-from tianracer_description.racing.car import CHASE_CAMERA, CHASE_CAMERA_SIZE
 from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
                                                observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
+from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second
 
 
 class RaceEnv(gymnasium.Env):
     """One car racing on a track (see the module's text)."""
 
-    metadata = {'render_modes': ['rgb_array'], 'render_fps': 30}
+    metadata = {'render_modes': RENDER_MODES, 'render_fps': 100}  # render_fps: 1 / control_period, set per env
 
     def __init__(self, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, render_mode=None, map=None, raceline=None,
-                 wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline'):
-        if render_mode not in (None, 'rgb_array'):
-            raise ValueError("render_mode is None or 'rgb_array'; got %r" % (render_mode,))
+                 wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline',
+                 view='chase', top_down_scale=None):
+        check_render(render_mode, view)
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
                                                         map, raceline, wall_height)
-        self.render_mode = render_mode
+        self.render_mode, self.view = render_mode, view
+        self.metadata = dict(self.metadata, render_fps=frames_per_second(control_period))
         self.control_period = control_period
         frenet = FrenetObserver(self.track, observe_frenet, curvature_ahead, frenet_line)
         self.observation_space = observation_space(self.lidar, observe_pose, frenet)
         self.action_space = action_space()
         self._cars = RaceCars(self.track, self.model, self.lidar, ['car'], observe_pose,
-                              chase_camera=render_mode == 'rgb_array', frenet=frenet)
+                              chase_camera=render_mode is not None and view == 'chase', frenet=frenet)
+        self._views = RaceViews(self._cars, render_mode, view, top_down_scale, 'Tianracer',
+                                self.metadata['render_fps'])
         self._steps = None
 
     def reset(self, *, seed=None, options=None):
@@ -63,6 +69,8 @@ class RaceEnv(gymnasium.Env):
         self._cars.place(0, pose, noise_seed=draw_noise_seed(self.np_random))
         self._steps = steps_per_action(self.control_period, self._cars.worlds[0].time_step)
         scans, state = self._cars.settle()
+        if self.render_mode == 'human':
+            self.render()
         return row(self._cars.observations(scans, state), 0), row(self._cars.infos(state), 0)
 
     def step(self, action):
@@ -70,15 +78,17 @@ class RaceEnv(gymnasium.Env):
             raise RuntimeError('call reset() before step()')
         scans, state, rewards = self._cars.step(action, self._steps)
         info = row(self._cars.infos(state), 0)
+        if self.render_mode == 'human':
+            self.render()
         return row(self._cars.observations(scans, state), 0), float(rewards[0]), bool(info['crashed']), False, info
 
     def render(self):
-        robot = self._cars.robots[0]
-        if self.render_mode != 'rgb_array' or robot is None:
+        """The view's frame (H x W x 3, uint8) for "rgb_array"; None for "human" (shown in the window),
+        without a render_mode, and before the first reset."""
+        if self.render_mode is None:
             return None
-        frame = robot.image(CHASE_CAMERA)
-        width, height = CHASE_CAMERA_SIZE
-        return np.zeros((height, width, 3), np.uint8) if frame is None else np.array(frame['rgb'])  # none yet
+        return self._views.show(self._views.frame(0))
 
     def close(self):
+        self._views.close()
         self._cars.worlds[0] = self._cars.robots[0] = None

@@ -14,6 +14,10 @@ elsewhere than on the grid; options={"start": "random"} puts the grid at a rando
 line ("grid": the grid, the default); options={"car_params": ...} gives every car other parameters (one
 dict) or each its own ({agent: dict}; one left out gets the defaults), see car.py and cars.py. One CarBatch steps the world once per step and reads every car. The same
 seed and actions give the same observations, bit for bit.
+
+Rendering (RaceEnv's render_mode, views.py): render() draws the race; view="top_down" (the default)
+all the cars in one image of the track from above, view="chase" each car's chase camera, tiled.
+render_mode "human" shows that in a window after every step.
 """
 import functools
 
@@ -26,25 +30,33 @@ from tianracer_description.racing.car import new_world
 from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
                                                observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
+from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second, tile
 
 
 class RaceParallelEnv(ParallelEnv):
-    metadata = {'name': 'tianracer_race_v0', 'render_modes': []}
+    metadata = {'name': 'tianracer_race_v0', 'render_modes': RENDER_MODES, 'render_fps': 100}
 
     def __init__(self, world_file=None, cars=2, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, max_cycles=MAX_EPISODE_STEPS, map=None, raceline=None,
-                 wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline'):
+                 wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline',
+                 render_mode=None, view='top_down', top_down_scale=None):
         if cars < 1:
             raise ValueError('a race has 1 car or more; got %r' % (cars,))
+        check_render(render_mode, view)
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
                                                         map, raceline, wall_height)
         self.control_period, self.observe_pose, self.max_cycles = control_period, observe_pose, max_cycles
+        self.render_mode, self.view = render_mode, view
+        self.metadata = dict(self.metadata, render_fps=frames_per_second(control_period))
         self.possible_agents = ['car_%d' % i for i in range(cars)]
         self.agents = []
         frenet = FrenetObserver(self.track, observe_frenet, curvature_ahead, frenet_line)
         self._observation_space = observation_space(self.lidar, observe_pose, frenet)
         self._action_spaces = {agent: action_space() for agent in self.possible_agents}
-        self._cars = RaceCars(self.track, self.model, self.lidar, self.possible_agents, observe_pose, frenet=frenet)
+        self._cars = RaceCars(self.track, self.model, self.lidar, self.possible_agents, observe_pose, frenet=frenet,
+                              chase_camera=render_mode is not None and view == 'chase')
+        self._views = RaceViews(self._cars, render_mode, view, top_down_scale, 'Tianracer race',
+                                self.metadata['render_fps'])
         self._rng = seeding.np_random()[0]
         self._cycles = 0
         self._stopped = np.zeros(cars, bool)
@@ -75,6 +87,8 @@ class RaceParallelEnv(ParallelEnv):
         self._stopped[:] = False
         scans, state = self._cars.settle()
         observations, infos = self._cars.observations(scans, state), self._cars.infos(state)
+        if self.render_mode == 'human':
+            self.render()
         return ({agent: row(observations, i) for i, agent in enumerate(self.possible_agents)},
                 {agent: row(infos, i) for i, agent in enumerate(self.possible_agents)})
 
@@ -98,8 +112,24 @@ class RaceParallelEnv(ParallelEnv):
             self._stopped[i] |= terminated
         _, _, terminations, truncations, _ = results
         self.agents = [a for a in self.agents if not (terminations[a] or truncations[a])]
+        if self.render_mode == 'human':
+            self.render()
         return results
 
+    def render(self):
+        """The race's frame (H x W x 3, uint8: every car on the track from above, or their chase cameras
+        tiled) for "rgb_array"; None for "human" (shown in the window), without a render_mode, and
+        before the first reset."""
+        if self.render_mode is None or self._cars.robots[0] is None:
+            return None
+        everyone = range(len(self.possible_agents))
+        if self.view == 'top_down':
+            frame = self._views.top_down_frame(everyone)
+        else:
+            frame = tile([self._views.chase_frame(i) for i in everyone])
+        return self._views.show(frame)
+
     def close(self):
+        self._views.close()
         self._cars.worlds = [None] * len(self.possible_agents)
         self._cars.robots = [None] * len(self.possible_agents)

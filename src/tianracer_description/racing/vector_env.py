@@ -13,6 +13,10 @@ reset(options=) takes "poses" (a pose or None for each car), "start" (None, "gri
 its world, on the grid's pole; "random"), which the autoresets keep until the next reset(), and
 "car_params" (one dict for every car or a list of one per car, None: the defaults), which each car
 keeps through its autoresets. The info's "car_params" is a dict of arrays, one per parameter.
+
+Rendering (RaceEnv's render_mode and view=, views.py): render() returns a tuple of the cars' frames,
+one per env, as Gymnasium's vector environments do (gymnasium.wrappers.vector.RecordVideo tiles
+them); render_mode "human" shows them tiled in one window after every step.
 """
 import numpy as np
 from gymnasium.utils import seeding
@@ -22,28 +26,35 @@ from gymnasium.vector.utils import batch_space
 from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
                                                observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
+from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second, tile
 
 
 class RaceVectorEnv(VectorEnv):
-    metadata = {'autoreset_mode': AutoresetMode.SAME_STEP, 'render_modes': []}
+    metadata = {'autoreset_mode': AutoresetMode.SAME_STEP, 'render_modes': RENDER_MODES, 'render_fps': 100}
 
     def __init__(self, num_envs, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, max_episode_steps=None, threads=0, map=None,
                  raceline=None, wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(),
-                 frenet_line='centerline'):
+                 frenet_line='centerline', render_mode=None, view='chase', top_down_scale=None):
         if num_envs < 1:
             raise ValueError('num_envs is 1 or more; got %r' % (num_envs,))
+        check_render(render_mode, view)
         self.num_envs = num_envs
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
                                                         map, raceline, wall_height)
         self.control_period = control_period
+        self.render_mode, self.view = render_mode, view
+        self.metadata = dict(self.metadata, render_fps=frames_per_second(control_period))
         self.max_episode_steps = max_episode_steps
         frenet = FrenetObserver(self.track, observe_frenet, curvature_ahead, frenet_line)
         self.single_observation_space = observation_space(self.lidar, observe_pose, frenet)
         self.single_action_space = action_space()
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         self.action_space = batch_space(self.single_action_space, num_envs)
-        self._cars = RaceCars(self.track, self.model, self.lidar, ['car'] * num_envs, observe_pose, threads, frenet=frenet)
+        self._cars = RaceCars(self.track, self.model, self.lidar, ['car'] * num_envs, observe_pose, threads, frenet=frenet,
+                              chase_camera=render_mode is not None and view == 'chase')
+        self._views = RaceViews(self._cars, render_mode, view, top_down_scale, 'Tianracer x %d' % num_envs,
+                                self.metadata['render_fps'])
         self._rngs = [seeding.np_random()[0] for _ in range(num_envs)]
         self._elapsed = np.zeros(num_envs, np.int64)
         self._everyone = np.ones(num_envs, bool)  # the infos' masks: every car has every key
@@ -69,6 +80,8 @@ class RaceVectorEnv(VectorEnv):
         self._elapsed[:] = 0
         self._steps = steps_per_action(self.control_period, self._cars.worlds[0].time_step)
         scans, state = self._cars.settle()
+        if self.render_mode == 'human':
+            self.render()
         return self._cars.observations(scans, state), self._with_masks(self._cars.infos(state))
 
     def _start_pose(self, i, pose=None):
@@ -103,6 +116,8 @@ class RaceVectorEnv(VectorEnv):
             for key, value in self._cars.observations(first_scans, first_state).items():
                 observations[key][i] = value[0]
             self._set_row(infos, self._cars.infos(first_state, i), i)
+        if self.render_mode == 'human':
+            self.render()
         return observations, rewards, terminated, truncated, infos
 
     def _set_row(self, infos, car_infos, i):
@@ -113,6 +128,17 @@ class RaceVectorEnv(VectorEnv):
             else:
                 infos[key][i] = value[0]
 
+    def render(self):
+        """A tuple of the envs' frames (H x W x 3, uint8, one per env) for "rgb_array"; None for "human"
+        (shown tiled in the window), without a render_mode, and before the first reset."""
+        if self.render_mode is None or self._cars.robots[0] is None:
+            return None
+        frames = tuple(self._views.frame(i) for i in range(self.num_envs))
+        if self.render_mode == 'human':
+            return self._views.show(tile(frames))
+        return frames
+
     def close_extras(self, **kwargs):
+        self._views.close()
         self._cars.worlds = [None] * self.num_envs
         self._cars.robots = [None] * self.num_envs
