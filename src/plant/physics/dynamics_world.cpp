@@ -172,6 +172,34 @@ void DynamicsWorld::removeCollisionObject(btCollisionObject* object)
   if (auto* solver = dynamic_cast<DenseRowSolver*>(m_multiBodyConstraintSolver))
     solver->forget(object);
   btMultiBodyDynamicsWorld::removeCollisionObject(object);
+  may_move_stale_ = true;
+}
+
+const std::vector<btCollisionObject*>& DynamicsWorld::mayMove()
+{
+  if (may_move_stale_)
+  {
+    may_move_.clear();
+    for (int i = 0; i < m_collisionObjects.size(); ++i)
+      if (!neverMoves(*m_collisionObjects[i]))
+        may_move_.push_back(m_collisionObjects[i]);
+    may_move_stale_ = false;
+  }
+  return may_move_;
+}
+
+void DynamicsWorld::saveKinematicState(btScalar timeStep)
+{
+  // btDiscreteDynamicsWorld's rigid bodies, then btMultiBodyDynamicsWorld's kinematic bases
+  for (btCollisionObject* object : mayMove())
+  {
+    btRigidBody* body = btRigidBody::upcast(object);
+    if (body && body->getActivationState() != ISLAND_SLEEPING && body->isKinematicObject())
+      body->saveKinematicState(timeStep);
+  }
+  for (int i = 0; i < m_multiBodies.size(); ++i)
+    if (m_multiBodies[i]->isBaseKinematic())
+      m_multiBodies[i]->saveKinematicState(timeStep);
 }
 
 void wakeUp(btMultiBody& body)
@@ -230,6 +258,7 @@ const MultibodyState* DynamicsWorld::stateOf(btMultiBody& body)
 void DynamicsWorld::addCollisionObject(btCollisionObject* object, int group, int mask)
 {
   btMultiBodyDynamicsWorld::addCollisionObject(object, group, mask);
+  may_move_stale_ = true;
   if (neverMoves(*object))
   {
     updateSingleAabb(object);
@@ -280,10 +309,9 @@ btScalar DynamicsWorld::reachOf(const btCollisionObject& object) const
 void DynamicsWorld::updateAabbs()
 {
   measureReach();
-  for (int i = 0; i < m_collisionObjects.size(); ++i)
+  for (btCollisionObject* object : mayMove())
   {
-    btCollisionObject* object = m_collisionObjects[i];
-    if (neverMoves(*object) || object->getActivationState() == ISLAND_SLEEPING)
+    if (object->getActivationState() == ISLAND_SLEEPING)
       continue;
     updateSingleAabb(object);
     // Bullet's box is the shape's grown by the breaking threshold; one that may move further in a
