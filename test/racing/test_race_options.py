@@ -61,7 +61,7 @@ def test_the_lap_timer_counts_a_lap_once_and_times_it_from_crossing_to_crossing(
     timer = LapTimer(2, length=10.0)
     timer.restart(0, -1.0, 0.0)  # behind the line: lap 1 timed from the start
     timer.restart(1, 2.0, 0.0)   # past it: lap 1 counted, not timed
-    cars = np.arange(2)
+    cars = slice(None)  # all the cars, as RaceCars reads them
     for time, travelled in [(1.0, (5.0, 5.0)), (2.0, (10.0, 7.0)), (3.0, (12.0, 9.0)), (4.0, (10.5, 10.0)),
                             (5.0, (11.5, 12.0)), (6.0, (20.0, 18.0)), (7.0, (22.0, 20.0))]:
         timer.read(cars, np.array(travelled), np.full(2, time))

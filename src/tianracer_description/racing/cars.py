@@ -149,11 +149,18 @@ class LapTimer:
         self.last[i] = self.best[i] = np.inf
 
     def read(self, cars, travelled, time):
-        """The cars (indices) have travelled this far along the centre line since their start (m), at `time` (s)."""
+        """The cars (a slice of them: all, or one) have travelled this far along the centre line since
+        their start (m), at `time` (s). Once a step for every car: the step where no car completes a
+        lap (nearly all of them) is a few array operations on views."""
         u = self.start[cars] + travelled
-        reached = np.floor(u / self.length).astype(np.int64)
-        for row in np.flatnonzero(reached > self.count[cars]):
-            i = cars[row]
+        reached = np.floor(u / self.length)
+        counted = self.count[cars]
+        if not (reached > counted).any():
+            self.u[cars], self.time[cars] = u, time
+            return
+        first = cars.start or 0
+        for row in np.flatnonzero(reached > counted):
+            i = first + int(row)
             before, after = self.u[i], u[row]
             share = min(max((reached[row] * self.length - before) / (after - before), 0.0), 1.0) if after > before else 1.0
             crossed = self.time[i] + share * (time[row] - self.time[i])
@@ -161,7 +168,7 @@ class LapTimer:
             if math.isfinite(lap):
                 self.last[i] = lap
                 self.best[i] = min(self.best[i], lap)
-            self.clock[i], self.count[i] = crossed, reached[row]
+            self.clock[i], self.count[i] = crossed, int(reached[row])
         self.u[cars], self.time[cars] = u, time
 
     def infos(self, cars):
@@ -276,7 +283,7 @@ class RaceCars:
         count = len(self.names)
         self.worlds, self.robots = [None] * count, [None] * count
         self.params = [model.default_params() for _ in range(count)]
-        self._param_columns = {name: np.array([p[name] for p in self.params]) for name in CAR_PARAMS}  # the infos'
+        self._set_param_columns()
         self._largest = np.tile(model.largest, (count, 1))  # each car's max_steering, max_speed
         self._still = self.model.commands(np.zeros((count, 2)))
         self.laps = LapTimer(count, track.centerline.length)
@@ -304,9 +311,16 @@ class RaceCars:
     def set_params(self, i, params):
         """Car i's parameters (a dict of CAR_PARAMS, complete: model.params'), from its next placing on."""
         self.params[i] = dict(params)
-        for name in CAR_PARAMS:
-            self._param_columns[name][i] = params[name]
+        self._set_param_columns()
         self._largest[i] = (params['max_steering'], params['max_speed'])
+
+    def _set_param_columns(self):
+        """The infos' car_params, a column per parameter, made when a parameter changes."""
+        self._param_columns = {name: np.array([p[name] for p in self.params]) for name in CAR_PARAMS}
+
+    def _cars(self, i):
+        """All the cars (i None) or car i, as a slice: views of the per-car arrays, not copies."""
+        return slice(None) if i is None else slice(i, i + 1)
 
     def place(self, i, pose, world=None, noise_seed=0):
         """Car i spawned at pose (x, y, yaw) into `world` (shared with other cars), or into a new world
@@ -341,8 +355,7 @@ class RaceCars:
         return scans, state, state[:, STATE['centerline_gained']]
 
     def _read_laps(self, state, i=None):
-        cars = np.arange(len(self.names)) if i is None else np.array([i])
-        self.laps.read(cars, state[:, STATE['centerline_travelled']], state[:, STATE['time']])
+        self.laps.read(self._cars(i), state[:, STATE['centerline_travelled']], state[:, STATE['time']])
 
     def observations(self, scans, state):
         """The cars' observations, a dict of arrays with a row per car."""
@@ -359,12 +372,12 @@ class RaceCars:
         progress (m along the centre line), laps (track lengths travelled since the car was placed),
         lap_count, last_lap_time and best_lap_time (LapTimer's), time (s, simulated), crashed, and
         car_params (a dict of arrays: the cars' parameters)."""
-        cars = np.arange(len(self.names)) if i is None else np.array([i])
+        cars = self._cars(i)
         return {'progress': state[:, STATE['centerline_s']],
                 'laps': state[:, STATE['centerline_travelled']] / self.track.centerline.length,
                 **self.laps.infos(cars),
                 'time': state[:, STATE['time']], 'crashed': self.crashed(state),
-                'car_params': {name: column[cars] for name, column in self._param_columns.items()}}
+                'car_params': {name: column[cars].copy() for name, column in self._param_columns.items()}}
 
     def crashed(self, state):
         return state[:, STATE['crashed']] > 0
