@@ -17,6 +17,7 @@
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include "bullet_plant/ackermann_wheels.h"
 #include "bullet_plant/controller_manager.h"
 
 namespace bullet_plant
@@ -345,8 +346,38 @@ private:
 };
 }  // namespace
 
+namespace
+{
+// An argument of wheel_command_rows: one value for every row, or one a row.
+double rowValue(const py::array_t<double, py::array::c_style | py::array::forcecast>& a, py::ssize_t row)
+{
+  return a.size() == 1 ? a.data()[0] : a.data()[row];
+}
+}  // namespace
+
 void init_car_batch(py::module_& m)
 {
+  m.def(
+      "wheel_command_rows",
+      [](py::array_t<double, py::array::c_style | py::array::forcecast> speed,
+         py::array_t<double, py::array::c_style | py::array::forcecast> steering, double wheelbase, double rear_track,
+         double front_track, double wheel_radius, py::array_t<double, py::array::c_style | py::array::forcecast> max_steering) {
+        const py::ssize_t n = std::max({speed.size(), steering.size(), max_steering.size()});
+        for (const auto* a : {&speed, &steering, &max_steering})
+          if (a->size() != 1 && a->size() != n)
+            throw py::value_error("wheel_command_rows: speed, steering and max_steering have one value or " +
+                                  std::to_string(n) + " each; got " + std::to_string(a->size()));
+        const AckermannGeometry g{wheelbase, rear_track, front_track, wheel_radius};
+        py::array_t<double> rows({n, py::ssize_t(4)});
+        double* out = rows.mutable_data();
+        for (py::ssize_t i = 0; i < n; ++i)
+          ackermannWheelCommands(rowValue(speed, i), rowValue(steering, i), rowValue(max_steering, i), g, out + 4 * i);
+        return rows;
+      },
+      "Rows of rear left, rear right (rad/s), steer left, steer right (rad) for ground speeds (m/s) and ideal "
+      "steering angles (rad), the steering held within max_steering (bullet_plant/ackermann_wheels.h); each of "
+      "speed, steering and max_steering one value or one a row");
+
   py::class_<CarBatch>(m, "CarBatch",
                        "N cars, each in its own world, stepped in one call on `threads` threads (0: every core) "
                        "with the GIL released: commands in, the lidar's ranges and the car's state out. Between "

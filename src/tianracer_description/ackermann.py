@@ -9,6 +9,8 @@ from collections import namedtuple
 
 import numpy as np
 
+from tianracer_description import bullet_plant
+
 # rad/s for the rear wheels, rad for the steering hinges
 WheelCommands = namedtuple('WheelCommands', 'rear_left rear_right steer_left steer_right')
 
@@ -34,10 +36,6 @@ def ideal_steering(linear_x, angular_z, mode, wheelbase):
     raise ValueError("angular mode '%s' is neither '%s' nor '%s'" % (mode, STEERING_ANGLE, YAW_RATE))
 
 
-# Each wheel's side: +1 the left wheel (d = +track / 2 from the middle), -1 the right.
-SIDES = np.array([1.0, -1.0])
-
-
 def wheel_commands(speed, steering, wheelbase, rear_track, front_track, wheel_radius, max_steering):
     """Rear wheel speeds (rad/s) and steering angles (rad) for a ground speed (m/s) and an ideal
     steering angle (rad), clamped so that the inside wheel stays within its limit: wheel_command_rows'
@@ -48,15 +46,9 @@ def wheel_commands(speed, steering, wheelbase, rear_track, front_track, wheel_ra
 
 def wheel_command_rows(speed, steering, wheelbase, rear_track, front_track, wheel_radius, max_steering):
     """The four commands as the last axis of one array, in WheelCommands' order, for each element of
-    speed and steering (numbers: one row of four; the racing environments' cars: a row each).
-
-    With t = tan(steering) the turn's curvature is t / wheelbase, and a wheel d to the left of the
-    middle runs on a circle (1 - d t / wheelbase) times the middle's: each rear wheel turns that much
-    faster or slower, and each front wheel points at the turn's centre, atan2(wheelbase t,
-    wheelbase - d t). Straight ahead (t = 0) is the same formula, with no special case."""
-    wheel_rate = np.divide(speed, wheel_radius)[..., None]
-    t = np.tan(np.minimum(np.maximum(steering, -max_steering), max_steering))[..., None]  # np.clip: +5 us
-    side_t = SIDES * t  # d t / (track / 2), left and right
-    rear = wheel_rate * (1.0 - rear_track / (2.0 * wheelbase) * side_t)
-    steer = np.arctan2(wheelbase * t, wheelbase - front_track / 2.0 * side_t)
-    return np.concatenate([rear, steer], axis=-1)
+    speed and steering (numbers: one row of four; the racing environments' cars: a row each). The
+    geometry is the plant's (include/bullet_plant/ackermann_wheels.h: the converter script and the
+    racing environments share it, in C++ for the environments' every step)."""
+    rows = bullet_plant.wheel_command_rows(speed, steering, wheelbase, rear_track, front_track, wheel_radius,
+                                           max_steering)
+    return rows[0] if np.ndim(speed) == 0 and np.ndim(steering) == 0 and np.ndim(max_steering) == 0 else rows
