@@ -10,8 +10,10 @@
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -176,29 +178,36 @@ private:
     int clip_from_body, world_from_body, scene_ambient, image, camera_origin, camera_forward, towards_sun, sun_diffuse;
     int sun_specular;
     int static_shadow_from_world, moving_shadow_from_world, static_shadow, moving_shadow;  // -1: not in it
-    int light_count, directional_count, point_count, light_position, light_direction, light_diffuse, light_specular, light_attenuation,
-        light_spot;
+    int light_position, light_direction, light_diffuse, light_specular, light_attenuation, light_spot;
     // what of this frame it has been given: the frame's uniforms, the draw's, the lights it holds
     unsigned frame = 0, draw = 0;
     std::vector<int> lights;
   };
   // Variants of the program, compiled when first used: a frame without shadows, lamps or specular
-  // pays nothing for them.
+  // pays nothing for them, and the lights a draw sums are counted by kind in the program itself.
   enum Variant { kStaticShadows = 1, kMovingShadows = 2, kLights = 4, kSpecular = 8, kTextured = 16 };
-  static constexpr int kCameraPrograms = 32;
-  CameraProgram camera_programs_[kCameraPrograms];
-  CameraProgram& cameraProgram(int variant);
+  struct ProgramKey
+  {
+    int variant = 0;                        // Variant flags
+    int directional = 0, point = 0, spot = 0;  // lights of each kind
+    bool operator<(const ProgramKey& o) const
+    {
+      return std::tie(variant, directional, point, spot) < std::tie(o.variant, o.directional, o.point, o.spot);
+    }
+  };
+  std::map<ProgramKey, CameraProgram> camera_programs_;
+  CameraProgram& cameraProgram(const ProgramKey& key);
   // What a frame's draws share while it is drawn (render).
   struct FrameState
   {
     const Lighting* lighting = nullptr;
     const Frame* pose = nullptr;
-    const PinholeCamera* camera = nullptr;
     bool static_shadows = false, moving_shadows = false;
     unsigned frame = 0, draw = 0;
     std::vector<int> lights;        // the draw's: indices in lighting->lights
+    int lights_of_kind[3] = {0, 0, 0};  // how many of them are of each Lighting::Light::Kind
     float strongest_specular = 0;   // the largest specular light the draw's surfaces can meet
-    int program = -1;               // the variant in use
+    const CameraProgram* program = nullptr;  // the program in use
   };
   FrameState frame_;
   unsigned frames_drawn_ = 0, draws_made_ = 0;
