@@ -83,14 +83,32 @@ Lighting Lighting::sunOnly(const double towards[3], float diffuse, float ambient
   return l;
 }
 
+namespace
+{
+// A colour value with its pixel's noise sample, clamped to a byte: the noise's one rule.
+inline uint8_t noisy(uint8_t value, int16_t sample)
+{
+  const int v = value + sample;
+  return uint8_t(v < 0 ? 0 : v > 255 ? 255 : v);
+}
+}  // namespace
+
 void detail::noisyRgbFromRgbaEach(const int16_t* samples, const uint8_t* rgba, uint8_t* rgb8, size_t pixels)
 {
   for (size_t k = 0; k < pixels; ++k, rgb8 += 3, rgba += 4)
     for (int c = 0; c < 3; ++c)
-    {
-      const int value = rgba[c] + samples[k];
-      rgb8[c] = uint8_t(value < 0 ? 0 : value > 255 ? 255 : value);
-    }
+      rgb8[c] = noisy(rgba[c], samples[k]);
+}
+
+void addNoise(const PinholeCamera& camera, uint8_t* rgb8)
+{
+  if (!camera.noise)
+    return;
+  const int16_t* samples = camera.noise + camera.noise_offset;
+  const size_t pixels = size_t(camera.width) * size_t(camera.height);
+  for (size_t k = 0; k < pixels; ++k, rgb8 += 3)
+    for (int c = 0; c < 3; ++c)
+      rgb8[c] = noisy(rgb8[c], samples[k]);
 }
 
 #if defined(__SSE2__)

@@ -98,6 +98,10 @@ std::vector<int16_t> noiseSamples(size_t pixels, Draw draw);
 // (after the GL's rounding to bytes, as Gazebo adds its noise to the 8-bit frame).
 void noisyRgbFromRgba(const PinholeCamera& camera, const uint8_t* rgba, uint8_t* rgb8);
 
+// The camera's noise added to a frame of colours in place, by noisyRgbFromRgba's rule: for a frame
+// that goes through the lens first (Gazebo's noise compositor comes after its distortion's).
+void addNoise(const PinholeCamera& camera, uint8_t* rgb8);
+
 namespace detail
 {
 // noisyRgbFromRgba's two ways, for its test: a pixel at a time (the rule, any CPU), and four at a

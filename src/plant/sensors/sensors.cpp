@@ -194,13 +194,19 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, FrameWorker
   auto job = [&scene, &r, draws = scene.snapshot(), pose, pinhole, lighting] {
     try
     {
-      scene.render(draws, pose, pinhole, lighting, r.image);
-      // The lens after the render, as Gazebo's compositor warps the rendered texture.
-      if (!r.distortion.empty())
+      if (r.distortion.empty())
+        scene.render(draws, pose, pinhole, lighting, r.image);
+      else
       {
+        // The lens after the render, as Gazebo's compositor warps the rendered texture, and the
+        // noise after the lens, as Gazebo's noise compositor follows the distortion's.
+        PinholeCamera clean = pinhole;
+        clean.noise = nullptr;
+        scene.render(draws, pose, clean, lighting, r.image);
         r.undistorted.swap(r.image.rgb8);
         r.image.rgb8.resize(r.undistorted.size());
         remapRgb8(r.distortion, r.undistorted.data(), r.image.rgb8.data());
+        addNoise(pinhole, r.image.rgb8.data());
       }
     }
     catch (const std::exception& e)
