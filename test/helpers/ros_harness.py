@@ -156,8 +156,11 @@ class RosSystem:
         raise AssertionError('timed out after %g s waiting for %s' % (timeout, what))
 
     def close(self):
+        # A test's teardown: nothing is checked after it, so a process not gone 3 s after its SIGINT
+        # is killed. roslaunch (roscore too) interrupted while it is still starting its processes can
+        # ignore SIGINT for good: a teardown then waited the 10 s of stop()'s default for nothing.
         for process in reversed(self.processes):
-            process.stop()
+            process.stop(timeout=3.0)
 
 
 def start_plant(ros, world=None, paused=False):
