@@ -3,6 +3,7 @@ driven by selenium through chromedriver, opens the page the node serves against 
 race track and the car, as a user opens it over SSH. What it draws is checked in the screenshot,
 against the world file's layout; the car's drawn pose against /gazebo/model_states as it drives.
 """
+import concurrent.futures
 import contextlib
 import io
 import math
@@ -83,12 +84,18 @@ def opened(ros, world, urdf_file=None):
     """The plant on `world` (with the car and the tutorial's YAML when `urdf_file`), the viewer on a
     free port, and a chromium page on it with the scene drawn: (plant, viewer process, driver, url)."""
     from ros_harness import free_port, start_plant, tianracer_plant
-    plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
-    port = free_port()
-    viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=%d' % port], 'viewer')
-    url = 'http://127.0.0.1:%d/' % port
-    ros.wait_until(lambda: ('viewer: open ' + url) in viewer.log(), 30, 'the viewer to serve')
-    driver = browser()
+    # chromium starts (about a second) while the plant and the viewer do
+    starting = concurrent.futures.ThreadPoolExecutor(1).submit(browser)
+    try:
+        plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
+        port = free_port()
+        viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=%d' % port], 'viewer')
+        url = 'http://127.0.0.1:%d/' % port
+        ros.wait_until(lambda: ('viewer: open ' + url) in viewer.log(), 30, 'the viewer to serve')
+    except BaseException:
+        starting.result().quit()
+        raise
+    driver = starting.result()
     try:
         driver.get(url)
         wait_for(driver, '!!(window.viewer && viewer.ready())', 30, 'the scene to be drawn')
