@@ -50,6 +50,25 @@ def connected_publisher(topic, message_class, timeout=30.0, **options):
     return publisher
 
 
+def descendants(pid):
+    """The pids of the processes below `pid` (its children, theirs, ...), from /proc."""
+    children = {}
+    for entry in os.listdir('/proc'):
+        if entry.isdigit():
+            try:
+                with open('/proc/%s/stat' % entry) as stat:
+                    parent = int(stat.read().rsplit(')', 1)[1].split()[1])
+            except (OSError, IndexError, ValueError):
+                continue
+            children.setdefault(parent, []).append(int(entry))
+    found, todo = [], [pid]
+    while todo:
+        for child in children.get(todo.pop(), []):
+            found.append(child)
+            todo.append(child)
+    return found
+
+
 def free_port():
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
         s.bind(('127.0.0.1', 0))
@@ -87,7 +106,15 @@ class Process:
         if self.popen.poll() is None:
             self.interrupt()
             if self.wait(timeout) is None:
+                # roslaunch starts each of its processes in a process group of its own (roscore's
+                # rosmaster too): killing the group alone would leave them running, orphaned
+                tree = descendants(self.popen.pid)
                 os.killpg(self.popen.pid, signal.SIGKILL)
+                for pid in tree:
+                    try:
+                        os.kill(pid, signal.SIGKILL)
+                    except ProcessLookupError:
+                        pass
                 self.popen.wait(5)
         self._log.close()
 
