@@ -188,8 +188,8 @@ private:
   enum Variant { kStaticShadows = 1, kMovingShadows = 2, kLights = 4, kSpecular = 8, kTextured = 16 };
   struct ProgramKey
   {
-    int variant = 0;                        // Variant flags
-    int directional = 0, point = 0, spot = 0;  // lights of each kind
+    int variant = 0;                           // Variant flags
+    int directional = 0, point = 0, spot = 0;  // the draw's lights of each kind
     bool operator<(const ProgramKey& o) const
     {
       return std::tie(variant, directional, point, spot) < std::tie(o.variant, o.directional, o.point, o.spot);
@@ -204,9 +204,9 @@ private:
     const Frame* pose = nullptr;
     bool static_shadows = false, moving_shadows = false;
     unsigned frame = 0, draw = 0;
-    std::vector<int> lights;        // the draw's: indices in lighting->lights
-    int lights_of_kind[3] = {0, 0, 0};  // how many of them are of each Lighting::Light::Kind
-    float strongest_specular = 0;   // the largest specular light the draw's surfaces can meet
+    std::vector<int> lights;                 // the draw's: indices in lighting->lights
+    int lights_of_kind[3] = {0, 0, 0};       // how many of them are of each Lighting::Light::Kind
+    float strongest_specular = 0;            // the largest specular light the draw's surfaces can meet
     const CameraProgram* program = nullptr;  // the program in use
   };
   FrameState frame_;
