@@ -24,6 +24,25 @@ struct Shape
   urdf::Vector3 scale{1, 1, 1};                 // mesh: <scale>
 };
 
+// A shape's own dimensions, each by its name (the keys of the viewer's scene and of
+// World.static_collisions alike): a box's "size" (full lengths); a cylinder's and a capsule's "length"
+// and "radius"; a sphere's "radius"; an ellipsoid's "radii"; a plane's "normal". A mesh has none here
+// (its file and scale are its own). put(name, value) takes a double or three of them.
+template <class Put>
+void putShapeDimensions(const Shape& s, Put&& put)
+{
+  switch (s.kind)
+  {
+    case Shape::Kind::Box: put("size", s.box_size); break;
+    case Shape::Kind::Cylinder:
+    case Shape::Kind::Capsule: put("length", s.length); [[fallthrough]];
+    case Shape::Kind::Sphere: put("radius", s.radius); break;
+    case Shape::Kind::Ellipsoid: put("radii", s.radii); break;
+    case Shape::Kind::Plane: put("normal", std::array<double, 3>{{s.normal.x, s.normal.y, s.normal.z}}); break;
+    case Shape::Kind::Mesh: break;
+  }
+}
+
 struct Rgba
 {
   float r = 0.7f, g = 0.7f, b = 0.7f, a = 1.0f;

@@ -80,19 +80,8 @@ void init_world(py::module_& m)
           d["mesh_uri"] = c.shape.mesh_uri;
           d["mesh_file"] = c.shape.mesh_file;
           d["scale"] = std::vector<double>{c.shape.scale.x, c.shape.scale.y, c.shape.scale.z};
-          // the shape's own dimensions, each kind's (scene_json's keys): what a map of the walls draws
-          switch (c.shape.kind)
-          {
-            case Shape::Kind::Box: d["size"] = c.shape.box_size; break;
-            case Shape::Kind::Cylinder:
-            case Shape::Kind::Capsule: d["length"] = c.shape.length; [[fallthrough]];
-            case Shape::Kind::Sphere: d["radius"] = c.shape.radius; break;
-            case Shape::Kind::Ellipsoid: d["radii"] = c.shape.radii; break;
-            case Shape::Kind::Plane:
-              d["normal"] = std::vector<double>{c.shape.normal.x, c.shape.normal.y, c.shape.normal.z};
-              break;
-            case Shape::Kind::Mesh: break;
-          }
+          // the shape's own dimensions (scene_json's keys): what a map of the walls draws
+          putShapeDimensions(c.shape, [&](const char* key, const auto& value) { d[key] = value; });
           d["mu"] = c.mu;
           out.append(d);
         }

@@ -101,24 +101,15 @@ std::string sceneJson(const Scene& scene)
                                     v.pose.rotation.y, v.pose.rotation.z, v.pose.rotation.w}},
                           {"colour", rgba(v.material.diffuse)},
                           {"material", materialJson(v.material)}};
-    switch (s.kind)
+    putShapeDimensions(s, [&](const char* key, const auto& value) { out[key] = value; });
+    if (s.kind == Shape::Kind::Mesh)
     {
-      case Shape::Kind::Box: out["size"] = s.box_size; break;
-      case Shape::Kind::Cylinder:
-      case Shape::Kind::Capsule: out["length"] = s.length; [[fallthrough]];
-      case Shape::Kind::Sphere: out["radius"] = s.radius; break;
-      case Shape::Kind::Ellipsoid: out["radii"] = s.radii; break;
-      case Shape::Kind::Plane: out["normal"] = xyz(s.normal); break;
-      case Shape::Kind::Mesh:
-      {
-        out["mesh"] = s.mesh_file;
-        out["scale"] = xyz(s.scale);
-        nlohmann::json materials = nlohmann::json::array();
-        for (const SceneVisual::MeshMaterial& m : v.mesh_materials)
-          materials.push_back({{"name", m.name}, {"material", materialJson(m.material)}, {"textured", m.textured}});
-        out["mesh_materials"] = std::move(materials);
-        break;
-      }
+      out["mesh"] = s.mesh_file;
+      out["scale"] = xyz(s.scale);
+      nlohmann::json materials = nlohmann::json::array();
+      for (const SceneVisual::MeshMaterial& m : v.mesh_materials)
+        materials.push_back({{"name", m.name}, {"material", materialJson(m.material)}, {"textured", m.textured}});
+      out["mesh_materials"] = std::move(materials);
     }
     visuals.push_back(std::move(out));
   }
