@@ -179,3 +179,15 @@ def test_car_params_per_car_in_the_vector_and_parallel_envs():
     from pettingzoo.test import parallel_api_test
     parallel_api_test(RaceParallelEnv(RACE_TRACK_WORLD, cars=2, observe_frenet=True, curvature_ahead=(1.0,)),
                       num_cycles=20)
+
+
+def test_randomised_car_params_keep_a_bounded_number_of_urdfs():
+    """Domain randomisation draws a new mass and mu at every reset: the URDFs made for them are kept
+    for the newest SPAWN_URDFS_KEPT only, and the defaults' is made again byte for byte."""
+    from tianracer_description.racing.car import SPAWN_URDFS_KEPT, CarModel
+    model = CarModel()
+    default = model.spawn_urdf(None)
+    for k in range(3 * SPAWN_URDFS_KEPT):
+        model.spawn_urdf({'mass': 3.0 + 0.01 * k, 'mu': 0.8}, False)
+    assert len(model._urdfs) == SPAWN_URDFS_KEPT
+    assert model.spawn_urdf(None) == default

@@ -8,6 +8,7 @@ URDF it is spawned from, its largest speed and steering are what an action of 1 
 "rgb_array" a chase camera is added to the car's URDF: a camera sensor like the car's own, on a link
 fixed behind and above its root link, looking at it.
 """
+import collections
 import functools
 import math
 import xml.etree.ElementTree as ET
@@ -32,6 +33,7 @@ CHASE_CAMERA_SIZE = (320, 240)  # width, height
 CAR_PARAMS = ('mass', 'mu', 'max_speed', 'max_steering')
 TYRE_JOINTS = ('left_rear_wheel', 'right_rear_wheel', 'left_front_wheel', 'right_front_wheel')  # DEFAULT_JOINTS' roles
 GAZEBO_DEFAULT_MU = 1.0  # a surface's friction where its <gazebo> gives none
+SPAWN_URDFS_KEPT = 16  # the URDFs of the last parameters spawned, kept for the next reset
 
 
 @functools.lru_cache(maxsize=None)
@@ -140,7 +142,9 @@ class CarModel:
         self.largest = np.array([self.max_steering, self.max_speed])  # what an action of 1 asks for
         self.lidar, self.imu = lidar, imu
         self.mass, self.mu = urdf_mass(self.urdf), urdf_tyre_mu(self.urdf)
-        self._urdfs = {}  # (mass, mu, chase_camera): the URDF spawned
+        # (mass, mu, chase_camera): the URDF spawned, the newest SPAWN_URDFS_KEPT (domain randomisation
+        # draws a new mass and mu at every reset: kept all, they would grow without end)
+        self._urdfs = collections.OrderedDict()
 
     def default_params(self):
         """The car's parameters as its URDF and max_speed give them (a dict of CAR_PARAMS)."""
@@ -187,9 +191,13 @@ class CarModel:
         """The URDF a car of these parameters (None: the defaults) is spawned from, made once."""
         mass, mu = (self.mass, self.mu) if params is None else (params['mass'], params['mu'])
         key = (mass, mu, chase_camera)
-        if key not in self._urdfs:
+        if key in self._urdfs:
+            self._urdfs.move_to_end(key)
+        else:
             urdf = self.urdf if (mass, mu) == (self.mass, self.mu) else urdf_with_mass_and_mu(self.urdf, mass, mu)
             self._urdfs[key] = with_chase_camera(urdf) if chase_camera else urdf
+            if len(self._urdfs) > SPAWN_URDFS_KEPT:
+                self._urdfs.popitem(last=False)
         return self._urdfs[key]
 
     def spawn(self, world, name, pose, chase_camera=False, params=None):
