@@ -140,10 +140,16 @@ def pixels_at(driver, image, points):
 def tick_overlay(driver, topic, what):
     """Ticks `topic` in the page's sensor list once the viewer offers it, and waits for two of its
     messages drawn; the checkbox's selector."""
+    from selenium.common.exceptions import StaleElementReferenceException
     from selenium.webdriver.common.by import By
     box = '#overlay_topics input[data-topic="%s"]' % topic
     wait_for(driver, "!!document.querySelector('%s')" % box, 30, what + ' to be offered')
-    driver.find_element(By.CSS_SELECTOR, box).click()
+    for _ in range(10):
+        try:  # the page makes the list again when another sensor's topic comes: click the one shown now
+            driver.find_element(By.CSS_SELECTOR, box).click()
+            break
+        except StaleElementReferenceException:
+            time.sleep(0.1)
     wait_for(driver, "viewer.overlayFrames('%s') >= 2" % topic, 30, what + ' drawn in the page')
     return box
 
@@ -435,6 +441,24 @@ def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
                 all(abs(math.hypot(p[0] - c[0], p[1] - c[1]) - r) > 0.03 for c, r in cones))
     off = [p for p in points if off_everything(p)]
     assert not off, '%d of %d points off the walls and cones, e.g. %s' % (len(off), len(points), off[:3])
+
+
+@pytest.mark.slow
+def test_a_ticked_sensor_stays_ticked_when_another_robots_sensor_comes(page):
+    """The page makes its sensor list again when a topic comes: the car's lidar, ticked before a
+    second robot with a lidar is spawned, stays ticked and drawn."""
+    from plant_helpers import DIFF_BOT
+    ros, _, driver, _ = page
+    tick_overlay(driver, '/scan', 'the lidar')
+    ros.run(['rosparam', 'set', '/bot_description', '--textfile', DIFF_BOT])
+    spawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'bot_description', '-model', 'bot',
+                     '-robot_namespace', 'bot', '-x', '1.5'], timeout=60)
+    assert spawn.returncode == 0, spawn.stdout + spawn.stderr
+    wait_for(driver, "!!document.querySelector('#overlay_topics input[data-topic=\"/bot/scan\"]')", 30,
+             "the second robot's lidar to be offered")
+    assert driver.execute_script("return document.querySelector('#overlay_topics input[data-topic=\"/scan\"]').checked")
+    drawn = driver.execute_script("return viewer.overlayFrames('/scan')")
+    wait_for(driver, "viewer.overlayFrames('/scan') >= %d" % (drawn + 2), 30, "the car's lidar still drawn")
 
 
 @pytest.mark.slow

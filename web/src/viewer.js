@@ -517,12 +517,16 @@ function showOverlayTopics(topics) {
   const names = Object.keys(topics).sort();
   if (list.dataset.topics === JSON.stringify(names)) return;
   list.dataset.topics = JSON.stringify(names);
+  // the list is made again when a topic comes or goes: the ones ticked stay ticked (the viewer still
+  // sends them, and a frame is drawn only while its box is ticked)
+  const ticked = new Set(Array.from(list.querySelectorAll('input:checked'), (box) => box.dataset.topic));
   list.innerHTML = names.length ? '' : 'none';
   for (const topic of names) {
     const label = document.createElement('label');
     const box = document.createElement('input');
     box.type = 'checkbox';
     box.dataset.topic = topic;
+    box.checked = ticked.has(topic);
     box.onchange = () => {
       if (socket && socket.readyState === WebSocket.OPEN) {
         socket.send(JSON.stringify({ type: 'overlay', topic, on: box.checked }));
