@@ -7,8 +7,8 @@
 // converts the rendered colour: a luminance format (PF_L8, PF_L16) keeps the red channel alone
 // (OgrePixelFormat.cpp's descriptor: rbits 8 or 16, no green or blue bits; packColour writes red),
 // not a weighted luminance. 16-bit formats are rendered at 16 bits (OGRE's GL picks a 16-bit target,
-// PF_SHORT_RGB or its RGBA alternative); the plant renders at 8 bits and publishes 257 x the 8-bit
-// value (0..255 onto 0..65535), within half an 8-bit level of Gazebo's. Bayer formats render
+// PF_SHORT_RGB or its RGBA alternative), and so does the plant (a 16-bit normalized target,
+// GL_EXT_texture_norm16; on a GL without it, 257 x the 8-bit value). Bayer formats render
 // PF_BYTE_RGB and Camera::ConvertRGBToBAYER samples it, its GBRG8 and GRBG8 patterns swapped as
 // Gazebo 11 has them (GBRG8 gives G R / B G rows, GRBG8 G B / R G). A format Gazebo does not know
 // renders PF_R8G8B8, which is B G R bytes in memory, and the plugin labels it bgr8.
@@ -29,6 +29,7 @@ struct ImageEncoding
   // (row % 2) * 2 + column % 2.
   int bayer[4] = {0, 1, 1, 2};
   bool known = true;  // false: upstream's "Unsupported Gazebo ImageFormat", bgr8
+  bool sixteenBit() const { return layout == Layout::Mono16 || layout == Layout::Rgb16; }
 };
 
 // The encoding of an SDF <image><format>, as gazebo_ros_camera_utils' Init maps it: L8 / L_INT8
@@ -36,8 +37,10 @@ struct ImageEncoding
 // rgb16, BAYER_RGGB8 / BGGR8 / GBRG8 / GRBG8 bayer_*8; anything else bgr8, not known.
 ImageEncoding imageEncodingOf(const std::string& format);
 
-// The message's data for `pixels` pixels of rgb8 colours (3 bytes a pixel, rows from the top, the
-// image `width` wide): pixels x bytes_per_pixel bytes into `out`, 16-bit values little-endian.
-void encodeImage(const ImageEncoding& encoding, const uint8_t* rgb8, int width, int height, uint8_t* out);
+// The message's data for the frame's pixels (3 values a pixel, rows from the top, the image `width`
+// wide): pixels x bytes_per_pixel bytes into `out`, 16-bit values little-endian. A 16-bit encoding
+// takes the frame's 16-bit colours `rgb16` (null: 257 x the 8-bit ones), the others `rgb8`.
+void encodeImage(const ImageEncoding& encoding, const uint8_t* rgb8, const uint16_t* rgb16, int width, int height,
+                 uint8_t* out);
 
 }  // namespace bullet_plant

@@ -89,14 +89,16 @@ private:
   std::vector<double> directions_;  // its rays in its frame, computed at the first scan
 };
 
-// A camera frame: sensor_msgs/Image (rgb8) and, for depth cameras, a 32FC1 depth image and the
-// points of a PointCloud2, all in the optical frame (z forward, x right, y down).
+// A camera frame: sensor_msgs/Image (rgb8; rgb16 too for a 16-bit <format>) and, for depth
+// cameras, a 32FC1 depth image and the points of a PointCloud2, all in the optical frame (z
+// forward, x right, y down).
 struct CameraFrame
 {
   int64_t stamp_ns = 0;
   int width = 0, height = 0;
   double fx = 0, fy = 0, cx = 0, cy = 0;  // pinhole: u = cx + fx * x / z, v = cy + fy * y / z
   std::vector<uint8_t> rgb;               // height * width * 3
+  std::vector<uint16_t> rgb16;            // 16-bit formats (L16, R16G16B16 ...): the frame at 16 bits, rgb it rounded
   std::vector<float> depth;               // depth cameras: metres along z, NaN where nothing is hit
   std::vector<float> points;              // depth cameras: x y z per pixel, NaN where nothing is hit
 };
@@ -112,6 +114,8 @@ public:
   bool update(SensorContext& context, int64_t time_ns) override;
   void collect(bool wait) override;
   bool depthSensor() const { return description_.type == "depth"; }
+  // Whether its <image><format> is a 16-bit one (L16, R16G16B16 ...): its frames render at 16 bits.
+  bool sixteenBit() const;
   // gazebo_ros_openni_kinect publishes depths and points only within (pointCloudCutoff,
   // pointCloudCutoffMax), NaN elsewhere (defaults 0.4 and 5.0 m).
   double pointCloudCutoff() const;
@@ -132,6 +136,7 @@ private:
   struct Rendering;  // the frame being rendered (sensor_rendering.h)
   std::unique_ptr<Rendering> rendering_;
   std::vector<int16_t> noise_table_;   // the image noise's samples in levels of 1/255 (noiseSamples), drawn at the first frame
+  std::vector<int32_t> noise16_table_;  // a 16-bit camera's, in levels of 1/65535 (noiseSamples16)
   bool distortion_crop_ = false;
 };
 

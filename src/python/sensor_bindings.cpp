@@ -124,13 +124,16 @@ void init_sensors(py::class_<RobotRef>& robot)
         d["height"] = f.height;
         d["K"] = std::vector<double>{f.fx, 0, f.cx, 0, f.fy, f.cy, 0, 0, 1};
         d["rgb"] = py::array_t<uint8_t>({f.height, f.width, 3}, f.rgb.data());
+        if (!f.rgb16.empty())
+          d["rgb16"] = py::array_t<uint16_t>({f.height, f.width, 3}, f.rgb16.data());
         if (camera.depthSensor())
         {
           d["depth"] = py::array_t<float>({f.height, f.width}, f.depth.data());
           d["points"] = py::array_t<float>({f.height, f.width, 3}, f.points.data());
         }
         return std::move(d);
-      }), "the latest camera frame: rgb (H x W x 3 uint8), for depth cameras depth (H x W, m, NaN: no hit) and "
+      }), "the latest camera frame: rgb (H x W x 3 uint8), for a 16-bit <format> rgb16 (H x W x 3 uint16) as well, "
+         "for depth cameras depth (H x W, m, NaN: no hit) and "
          "points (H x W x 3, optical frame); K the pinhole matrix; None before the first");
 }
 

@@ -110,7 +110,7 @@ TEST(LensDistortion, RemapCopiesTheColoursItSamples)
   // A remap that leaves every pixel where it is (a tiny k1): colours survive the blend.
   const DistortionRemap remap = distortionRemap(radial(-1e-9), 8, 8, 1.0, false);
   std::vector<uint8_t> in(3 * 64, 200), out(3 * 64, 0);
-  remapRgb8(remap, in.data(), out.data());
+  remapRgb(remap, in.data(), out.data());
   for (uint8_t v : out)
     EXPECT_EQ(v, 200);
 }
@@ -146,7 +146,7 @@ TEST(ImageEncoding, OgresBytes)
   auto encoded = [&](const char* format) {
     const ImageEncoding e = imageEncodingOf(format);
     std::vector<uint8_t> out(4 * e.bytes_per_pixel);
-    encodeImage(e, rgb, 2, 2, out.data());
+    encodeImage(e, rgb, nullptr, 2, 2, out.data());
     return out;
   };
   EXPECT_EQ(encoded("L8"), (std::vector<uint8_t>{200, 30, 50, 128}));  // the red channel
@@ -156,6 +156,17 @@ TEST(ImageEncoding, OgresBytes)
   const std::vector<uint8_t> rgb16 = encoded("R16G16B16");
   ASSERT_EQ(rgb16.size(), 24u);
   EXPECT_EQ(rgb16[2] | rgb16[3] << 8, 10 * 257);
+  // a 16-bit frame's own values, not the 8-bit ones spread
+  const uint16_t deep[] = {51400, 2570, 5140, 7710, 46260, 10280, 12850, 15420, 43690, 32896, 32897, 32898};
+  const ImageEncoding mono16 = imageEncodingOf("L16");
+  std::vector<uint8_t> out(8);
+  encodeImage(mono16, rgb, deep, 2, 2, out.data());
+  EXPECT_EQ(out, (std::vector<uint8_t>{0xC8, 0xC8, 0x1E, 0x1E, 0x32, 0x32, 0x80, 0x80}));  // the red values
+  const uint16_t odd[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 65535, 0, 256};
+  out.resize(24);
+  encodeImage(imageEncodingOf("R16G16B16"), rgb, odd, 2, 2, out.data());
+  for (int k = 0; k < 12; ++k)
+    EXPECT_EQ(out[2 * k] | out[2 * k + 1] << 8, odd[k]) << k;
   // Bayer: top-left, top-right / bottom-left, bottom-right as Camera::ConvertRGBToBAYER fills them
   EXPECT_EQ(encoded("BAYER_RGGB8"), (std::vector<uint8_t>{200, 180, 60, 128}));
   EXPECT_EQ(encoded("BAYER_BGGR8"), (std::vector<uint8_t>{20, 180, 60, 128}));

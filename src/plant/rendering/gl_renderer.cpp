@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include <GLES3/gl3.h>
+#include <GLES2/gl2ext.h>  // GL_RGBA16_EXT (GL_EXT_texture_norm16)
 #include <meshoptimizer.h>
 
 namespace bullet_plant
@@ -560,6 +561,7 @@ GlRenderer::GlRenderer(const GlContext& context) : context_(context)
     throw std::runtime_error("the GL (" + context.renderer() +
                              ") cannot render into float colour buffers (GL_EXT_color_buffer_float): no depth images");
   }
+  norm16_ = std::strstr(extensions, "GL_EXT_texture_norm16") != nullptr;
   try
   {
     cameraProgram(ProgramKey());  // the plainest: a GL that cannot build it fails here, not in a frame
@@ -1061,21 +1063,22 @@ void GlRenderer::drawShadowMaps(const std::vector<Draw>& draws, const Lighting& 
   }
 }
 
-const GlRenderer::Target& GlRenderer::target(int width, int height)
+const GlRenderer::Target& GlRenderer::target(int width, int height, bool sixteen_bit)
 {
   for (const Target& t : targets_)
-    if (t.width == width && t.height == height)
+    if (t.width == width && t.height == height && t.sixteen_bit == sixteen_bit)
       return t;
   Target t;
   t.width = width;
   t.height = height;
+  t.sixteen_bit = sixteen_bit;
   unsigned buffers[3];
   glGenRenderbuffers(3, buffers);
   t.colour = buffers[0];
   t.depth = buffers[1];
   t.depth_buffer = buffers[2];
   glBindRenderbuffer(GL_RENDERBUFFER, t.colour);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+  glRenderbufferStorage(GL_RENDERBUFFER, sixteen_bit ? GL_RGBA16_EXT : GL_RGBA8, width, height);
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_R32F, width, height);
   glBindRenderbuffer(GL_RENDERBUFFER, t.depth_buffer);
@@ -1331,7 +1334,7 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
   context_.makeCurrent();
   if (lighting.shadows)
     drawShadowMaps(draws, lighting);
-  const Target& frame = target(camera.width, camera.height);
+  const Target& frame = target(camera.width, camera.height, camera.bits == 16 && norm16_);
   glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
   glViewport(0, 0, camera.width, camera.height);
   glEnable(GL_DEPTH_TEST);
@@ -1438,9 +1441,17 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
   glActiveTexture(GL_TEXTURE0);
   // Read back: the rows come in the image's order (clipFromBody).
   const size_t pixels = size_t(camera.width) * size_t(camera.height);
-  colour_pixels_.resize(pixels * 4);
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, camera.width, camera.height, GL_RGBA, GL_UNSIGNED_BYTE, colour_pixels_.data());
+  if (frame.sixteen_bit)
+  {
+    colour16_pixels_.resize(pixels * 4);
+    glReadPixels(0, 0, camera.width, camera.height, GL_RGBA, GL_UNSIGNED_SHORT, colour16_pixels_.data());
+  }
+  else
+  {
+    colour_pixels_.resize(pixels * 4);
+    glReadPixels(0, 0, camera.width, camera.height, GL_RGBA, GL_UNSIGNED_BYTE, colour_pixels_.data());
+  }
   out.depth.resize(camera.depth ? pixels : 0);
   if (camera.depth)
   {
@@ -1461,7 +1472,21 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   context_.release();
   out.rgb8.resize(pixels * 3);
-  noisyRgbFromRgba(camera, colour_pixels_.data(), out.rgb8.data());
+  if (camera.bits != 16)
+  {
+    out.rgb16.clear();
+    noisyRgbFromRgba(camera, colour_pixels_.data(), out.rgb8.data());
+    return;
+  }
+  if (!frame.sixteen_bit)  // a GL without 16-bit targets: the 8-bit levels spread over 16 bits
+  {
+    colour16_pixels_.resize(pixels * 4);
+    for (size_t k = 0; k < pixels * 4; ++k)
+      colour16_pixels_[k] = uint16_t(colour_pixels_[k] * 257u);
+  }
+  out.rgb16.resize(pixels * 3);
+  noisyRgb16FromRgba16(camera, colour16_pixels_.data(), out.rgb16.data());
+  rgb8FromRgb16(out.rgb16.data(), out.rgb8.data(), pixels * 3);
 }
 
 }  // namespace bullet_plant

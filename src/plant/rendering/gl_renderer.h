@@ -89,7 +89,9 @@ public:
     unsigned generation = 0;   // the mesh's (meshGeneration) when the draw was made
   };
   // The frame of `camera` at `pose` (x forward, y left, z up; the optical frame is z forward, x
-  // right, y down): rgb8 rounded by the GL, then the camera's noise (noisyRgbFromRgba); depth in
+  // right, y down): rgb8 rounded by the GL, then the camera's noise (noisyRgbFromRgba), or for a
+  // 16-bit camera rgb16 so (noisyRgb16FromRgba16) and rgb8 from it (on a GL without 16-bit
+  // colour targets, rgb16 is the 8-bit frame's levels times 257); depth in
   // metres when camera.depth, else none. With lighting.shadows, the draws that cast shadows do so
   // from the directional light: two shadow maps, the static draws' (drawn again only when they or
   // the light change) and the moving ones' (every frame, fitted to them).
@@ -146,6 +148,7 @@ private:
   struct Target
   {
     int width = 0, height = 0;
+    bool sixteen_bit = false;  // colours in 16 bits a channel (GL_EXT_texture_norm16), else 8
     unsigned framebuffer = 0, colour = 0, depth = 0, depth_buffer = 0;
   };
   // A run the camera may see (its bounds within the view frustum), and its draw's matrices.
@@ -169,7 +172,7 @@ private:
   // The opaque runs' depths alone, with the shadow program bound (the depth pre-pass).
   void drawDepths(const std::vector<VisibleRun>& runs);
   unsigned textureOf(const std::shared_ptr<const Texture>& image);
-  const Target& target(int width, int height);
+  const Target& target(int width, int height, bool sixteen_bit);
 
   const GlContext& context_;
   struct CameraProgram  // a variant of the camera's program and its uniforms' locations
@@ -226,6 +229,8 @@ private:
   std::vector<DrawMatrices> draw_matrices_;  // a frame's, one per draw
   FrameStats last_frame_;
   std::vector<uint8_t> colour_pixels_;  // read back: r g b a per pixel
+  std::vector<uint16_t> colour16_pixels_;  // a 16-bit target's, read back
+  bool norm16_ = false;  // the GL renders into 16-bit colours (GL_EXT_texture_norm16)
   std::vector<float> depth_pixels_;     // read back as RGBA where the driver reads no single float channel
 };
 

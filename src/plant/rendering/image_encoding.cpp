@@ -1,6 +1,7 @@
 #include "bullet_plant/image_encoding.h"
 
 #include <cstring>
+#include <vector>
 
 namespace bullet_plant
 {
@@ -47,19 +48,27 @@ ImageEncoding imageEncodingOf(const std::string& format)
 
 namespace
 {
-// An 8-bit level as a 16-bit one: 0..255 spread over 0..65535 (x 257), little-endian.
-inline void put16(uint8_t* out, uint8_t level)
+// A 16-bit value, little-endian.
+inline void put16(uint8_t* out, uint16_t value)
 {
-  const uint16_t value = uint16_t(level * 257u);
   out[0] = uint8_t(value & 0xFF);
   out[1] = uint8_t(value >> 8);
 }
 }  // namespace
 
-void encodeImage(const ImageEncoding& e, const uint8_t* rgb, int width, int height, uint8_t* out)
+void encodeImage(const ImageEncoding& e, const uint8_t* rgb, const uint16_t* rgb16, int width, int height,
+                 uint8_t* out)
 {
   using Layout = ImageEncoding::Layout;
   const size_t pixels = size_t(width) * size_t(height);
+  std::vector<uint16_t> spread;
+  if (e.sixteenBit() && !rgb16)  // 0..255 spread over 0..65535
+  {
+    spread.resize(3 * pixels);
+    for (size_t k = 0; k < spread.size(); ++k)
+      spread[k] = uint16_t(rgb[k] * 257u);
+    rgb16 = spread.data();
+  }
   switch (e.layout)
   {
     case Layout::Rgb8:
@@ -74,12 +83,12 @@ void encodeImage(const ImageEncoding& e, const uint8_t* rgb, int width, int heig
         *out++ = rgb[0];
       return;
     case Layout::Mono16:
-      for (size_t k = 0; k < pixels; ++k, rgb += 3, out += 2)
-        put16(out, rgb[0]);
+      for (size_t k = 0; k < pixels; ++k, rgb16 += 3, out += 2)
+        put16(out, rgb16[0]);
       return;
     case Layout::Rgb16:
-      for (size_t k = 0; k < pixels; ++k, rgb += 3, out += 6)
-        put16(out, rgb[0]), put16(out + 2, rgb[1]), put16(out + 4, rgb[2]);
+      for (size_t k = 0; k < pixels; ++k, rgb16 += 3, out += 6)
+        put16(out, rgb16[0]), put16(out + 2, rgb16[1]), put16(out + 4, rgb16[2]);
       return;
     case Layout::Bayer:
       for (int v = 0; v < height; ++v)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace bullet_plant
 {
@@ -192,8 +193,12 @@ DistortionRemap distortionRemap(const CameraDistortion& d, int width, int height
   return remap;
 }
 
-void remapRgb8(const DistortionRemap& remap, const uint8_t* in, uint8_t* out)
+namespace
 {
+template <class Value>
+void remapValues(const DistortionRemap& remap, const Value* in, Value* out)
+{
+  constexpr float kMax = float(std::numeric_limits<Value>::max());
   const size_t pixels = size_t(remap.width) * remap.height;
   for (size_t k = 0; k < pixels; ++k, out += 3)
   {
@@ -208,9 +213,20 @@ void remapRgb8(const DistortionRemap& remap, const uint8_t* in, uint8_t* out)
     {
       const float value = w[0] * in[3 * taps[0] + c] + w[1] * in[3 * taps[1] + c] + w[2] * in[3 * taps[2] + c] +
                           w[3] * in[3 * taps[3] + c];
-      out[c] = uint8_t(std::min(255.0f, value + 0.5f));
+      out[c] = Value(std::min(kMax, value + 0.5f));
     }
   }
+}
+}  // namespace
+
+void remapRgb(const DistortionRemap& remap, const uint8_t* in, uint8_t* out)
+{
+  remapValues(remap, in, out);
+}
+
+void remapRgb(const DistortionRemap& remap, const uint16_t* in, uint16_t* out)
+{
+  remapValues(remap, in, out);
 }
 
 }  // namespace bullet_plant

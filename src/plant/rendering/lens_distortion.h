@@ -52,7 +52,8 @@ bool distorts(const CameraDistortion& d);
 // the undistorted point there sampled bilinearly from the rendered frame, clamped at its edges.
 DistortionRemap distortionRemap(const CameraDistortion& d, int width, int height, double hfov, bool crop);
 
-// out = the frame `in` (3 bytes a pixel, rows from the top) through the remap.
-void remapRgb8(const DistortionRemap& remap, const uint8_t* in, uint8_t* out);
+// out = the frame `in` (3 values a pixel, rows from the top; 8 or 16 bits) through the remap.
+void remapRgb(const DistortionRemap& remap, const uint8_t* in, uint8_t* out);
+void remapRgb(const DistortionRemap& remap, const uint16_t* in, uint16_t* out);
 
 }  // namespace bullet_plant

@@ -91,6 +91,11 @@ inline uint8_t noisy(uint8_t value, int16_t sample)
   const int v = value + sample;
   return uint8_t(v < 0 ? 0 : v > 255 ? 255 : v);
 }
+inline uint16_t noisy(uint16_t value, int32_t sample)
+{
+  const int32_t v = value + sample;
+  return uint16_t(v < 0 ? 0 : v > 65535 ? 65535 : v);
+}
 }  // namespace
 
 void detail::noisyRgbFromRgbaEach(const int16_t* samples, const uint8_t* rgba, uint8_t* rgb8, size_t pixels)
@@ -109,6 +114,32 @@ void addNoise(const PinholeCamera& camera, uint8_t* rgb8)
   for (size_t k = 0; k < pixels; ++k, rgb8 += 3)
     for (int c = 0; c < 3; ++c)
       rgb8[c] = noisy(rgb8[c], samples[k]);
+}
+
+void noisyRgb16FromRgba16(const PinholeCamera& camera, const uint16_t* rgba16, uint16_t* rgb16)
+{
+  const size_t pixels = size_t(camera.width) * size_t(camera.height);
+  const int32_t* samples = camera.noise16 ? camera.noise16 + camera.noise_offset : nullptr;
+  for (size_t k = 0; k < pixels; ++k, rgb16 += 3, rgba16 += 4)
+    for (int c = 0; c < 3; ++c)
+      rgb16[c] = samples ? noisy(rgba16[c], samples[k]) : rgba16[c];
+}
+
+void addNoise(const PinholeCamera& camera, uint16_t* rgb16)
+{
+  if (!camera.noise16)
+    return;
+  const int32_t* samples = camera.noise16 + camera.noise_offset;
+  const size_t pixels = size_t(camera.width) * size_t(camera.height);
+  for (size_t k = 0; k < pixels; ++k, rgb16 += 3)
+    for (int c = 0; c < 3; ++c)
+      rgb16[c] = noisy(rgb16[c], samples[k]);
+}
+
+void rgb8FromRgb16(const uint16_t* rgb16, uint8_t* rgb8, size_t values)
+{
+  for (size_t k = 0; k < values; ++k)
+    rgb8[k] = uint8_t((uint32_t(rgb16[k]) * 255u + 32767u) / 65535u);
 }
 
 #if defined(__SSE2__)

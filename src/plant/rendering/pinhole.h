@@ -78,6 +78,11 @@ struct PinholeCamera
   static constexpr size_t kNoiseOffsets = 4096;
   const int16_t* noise = nullptr;  // noise_offset + width * height samples at least
   size_t noise_offset = 0;
+  // Bits a colour channel: 8, or 16 for Gazebo's 16-bit image formats (L16, R16G16B16 ...), which
+  // OGRE renders into a 16-bit target (PF_L16, PF_SHORT_RGB). A 16-bit frame's noise is noise16,
+  // in levels of 1/65535, read as `noise` is.
+  int bits = 8;
+  const int32_t* noise16 = nullptr;
   // Whether the frame's depths are wanted (a colour camera's are not): a renderer may skip them.
   bool depth = true;
 };
@@ -86,12 +91,18 @@ struct PinholeImage
 {
   std::vector<uint8_t> rgb8;  // lit colour per pixel (plus noise), 0..255, rows from the top; the background where nothing is seen
   std::vector<float> depth;   // along the optical axis, +inf where nothing is seen within the clip range
+  // A 16-bit camera's frame (PinholeCamera::bits 16): its colours at 16 bits, 0..65535, the noise
+  // added at that depth; rgb8 then holds them rounded to bytes. Empty for an 8-bit camera.
+  std::vector<uint16_t> rgb16;
 };
 
 // The samples a camera's noise takes its values from: enough for any offset of a frame of
 // `pixels`, each round(255 * draw()) levels, clamped to +-256 (beyond that any value saturates).
 template <class Draw>
 std::vector<int16_t> noiseSamples(size_t pixels, Draw draw);
+// The same for a 16-bit camera: round(65535 * draw()) levels, clamped to +-65536.
+template <class Draw>
+std::vector<int32_t> noiseSamples16(size_t pixels, Draw draw);
 
 // The camera's frame of colours (three bytes a pixel, rows from the top) from its RGBA pixels (as a
 // GL reads them back), the noise added: each value v becomes clamp(v + its pixel's sample, 0, 255)
@@ -101,6 +112,15 @@ void noisyRgbFromRgba(const PinholeCamera& camera, const uint8_t* rgba, uint8_t*
 // The camera's noise added to a frame of colours in place, by noisyRgbFromRgba's rule: for a frame
 // that goes through the lens first (Gazebo's noise compositor comes after its distortion's).
 void addNoise(const PinholeCamera& camera, uint8_t* rgb8);
+
+// A 16-bit camera's frame (three values a pixel) from its RGBA pixels at 16 bits, its noise16
+// added by the same rule (clamped to 0..65535); and that noise added in place, after a lens.
+void noisyRgb16FromRgba16(const PinholeCamera& camera, const uint16_t* rgba16, uint16_t* rgb16);
+void addNoise(const PinholeCamera& camera, uint16_t* rgb16);
+
+// 16-bit values rounded to bytes (v * 255 / 65535 to the nearest): what an 8-bit reader of a
+// 16-bit camera (the viewer, a Python observation) gets.
+void rgb8FromRgb16(const uint16_t* rgb16, uint8_t* rgb8, size_t values);
 
 namespace detail
 {
@@ -113,16 +133,33 @@ void noisyRgbFromRgbaSse2(const int16_t* samples, const uint8_t* rgba, uint8_t* 
 #endif
 }  // namespace detail
 
+namespace detail
+{
+// Samples in levels of 1/full_scale, clamped to +-(full_scale + 1) (beyond that any value saturates).
+template <class Sample, class Draw>
+std::vector<Sample> noiseLevels(size_t pixels, double full_scale, Draw draw)
+{
+  std::vector<Sample> samples(pixels + PinholeCamera::kNoiseOffsets);
+  const double limit = full_scale + 1;
+  for (Sample& s : samples)
+  {
+    const double level = full_scale * draw();
+    s = Sample(level > limit ? limit : level < -limit ? -limit : level == level ? std::lround(level) : 0);
+  }
+  return samples;
+}
+}  // namespace detail
+
 template <class Draw>
 std::vector<int16_t> noiseSamples(size_t pixels, Draw draw)
 {
-  std::vector<int16_t> samples(pixels + PinholeCamera::kNoiseOffsets);
-  for (int16_t& s : samples)
-  {
-    const double level = 255.0 * draw();
-    s = int16_t(level > 256 ? 256 : level < -256 ? -256 : level == level ? std::lround(level) : 0);
-  }
-  return samples;
+  return detail::noiseLevels<int16_t>(pixels, 255.0, draw);
+}
+
+template <class Draw>
+std::vector<int32_t> noiseSamples16(size_t pixels, Draw draw)
+{
+  return detail::noiseLevels<int32_t>(pixels, 65535.0, draw);
 }
 
 }  // namespace bullet_plant

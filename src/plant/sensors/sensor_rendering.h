@@ -43,6 +43,7 @@ struct Camera::Rendering
   DistortionRemap distortion;
   bool distortion_ready = false, distortion_cropped = false;
   std::vector<uint8_t> undistorted;  // the rendered colours before the remap, kept from frame to frame
+  std::vector<uint16_t> undistorted16;  // the same for a 16-bit camera
 };
 
 }  // namespace bullet_plant

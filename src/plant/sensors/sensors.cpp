@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "bullet_plant/image_encoding.h"
 #include "sensors/sensor_context.h"
 #include "sensors/sensor_rendering.h"
 
@@ -94,6 +95,8 @@ Camera::Camera(const SensorDescription& d, uint32_t noise_seed)
   gate_.setPeriodNs(std::max(gate_.periodNs(), periodNsOfRate(d.pluginNumber("updateRate", 0.0))));
 }
 
+bool Camera::sixteenBit() const { return imageEncodingOf(description_.image_format).sixteenBit(); }
+
 double Camera::pointCloudCutoff() const { return description_.pluginNumber("pointCloudCutoff", 0.4); }
 double Camera::pointCloudCutoffMax() const { return description_.pluginNumber("pointCloudCutoffMax", 5.0); }
 
@@ -169,14 +172,24 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, FrameWorker
   pinhole.depth = camera.depthSensor();
   pinhole.near = d.clip_near > 0 ? d.clip_near : 0.0;
   pinhole.far = d.clip_far > 0 ? d.clip_far : 100.0;
+  pinhole.bits = camera.sixteenBit() ? 16 : 8;
   if (d.noise.gaussian && d.noise.stddev > 0)
   {
-    if (camera.noise_table_.empty())
+    // drawn once: the table stays where it is while a job reads it
+    std::normal_distribution<double> noise(d.noise.mean, d.noise.stddev);
+    auto draw = [&] { return noise(camera.noise_); };
+    if (pinhole.bits == 16)
     {
-      std::normal_distribution<double> noise(d.noise.mean, d.noise.stddev);
-      camera.noise_table_ = noiseSamples(size_t(w) * size_t(h), [&] { return noise(camera.noise_); });
+      if (camera.noise16_table_.empty())
+        camera.noise16_table_ = noiseSamples16(size_t(w) * size_t(h), draw);
+      pinhole.noise16 = camera.noise16_table_.data();
     }
-    pinhole.noise = camera.noise_table_.data();  // drawn once: it stays where it is while a job reads it
+    else
+    {
+      if (camera.noise_table_.empty())
+        camera.noise_table_ = noiseSamples(size_t(w) * size_t(h), draw);
+      pinhole.noise = camera.noise_table_.data();
+    }
     pinhole.noise_offset = size_t(camera.noise_() % PinholeCamera::kNoiseOffsets);
   }
   Camera::Rendering& r = *camera.rendering_;
@@ -202,11 +215,23 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, FrameWorker
         // noise after the lens, as Gazebo's noise compositor follows the distortion's.
         PinholeCamera clean = pinhole;
         clean.noise = nullptr;
+        clean.noise16 = nullptr;
         scene.render(draws, pose, clean, lighting, r.image);
-        r.undistorted.swap(r.image.rgb8);
-        r.image.rgb8.resize(r.undistorted.size());
-        remapRgb8(r.distortion, r.undistorted.data(), r.image.rgb8.data());
-        addNoise(pinhole, r.image.rgb8.data());
+        if (pinhole.bits == 16)
+        {
+          r.undistorted16.swap(r.image.rgb16);
+          r.image.rgb16.resize(r.undistorted16.size());
+          remapRgb(r.distortion, r.undistorted16.data(), r.image.rgb16.data());
+          addNoise(pinhole, r.image.rgb16.data());
+          rgb8FromRgb16(r.image.rgb16.data(), r.image.rgb8.data(), r.image.rgb8.size());
+        }
+        else
+        {
+          r.undistorted.swap(r.image.rgb8);
+          r.image.rgb8.resize(r.undistorted.size());
+          remapRgb(r.distortion, r.undistorted.data(), r.image.rgb8.data());
+          addNoise(pinhole, r.image.rgb8.data());
+        }
       }
     }
     catch (const std::exception& e)
@@ -232,6 +257,7 @@ void detail::SensorRendering::finish(Camera& camera)
   out.width = w;
   out.height = h;
   out.rgb.swap(r.image.rgb8);  // the previous frame's buffer goes back to the renderer
+  out.rgb16.swap(r.image.rgb16);
 
   const size_t pixels = size_t(w) * h;
   // Every pixel written once: its depth and point, or NaN where nothing is within the clip range.
