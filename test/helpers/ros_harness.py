@@ -254,3 +254,34 @@ def running_controllers(namespace, count, timeout=60.0):
             pass
         time.sleep(0.05)
     return running
+
+
+class TopicRates:
+    """From inside a rospy node (the rostest nodes): rostest's hztest for several topics at once, in one
+    launch (rostest starts the whole launch file again for each <test>). Each topic is heard from its
+    first message on; its rate is hztest's, (messages - 1) / (last arrival - first), the arrivals in
+    ROS time (simulated time under /use_sim_time)."""
+
+    def __init__(self, topics):
+        import rospy
+        self._arrivals = {topic: [] for topic in topics}
+        self._subscribers = [rospy.Subscriber(topic, rospy.AnyMsg, lambda _, topic=topic: self._arrivals[topic].append(
+            rospy.get_time())) for topic in topics]
+
+    def measure(self, duration, wait_time=60.0):
+        """{topic: Hz} over `duration` s of ROS time after every topic's first message (None for a topic with
+        fewer than two messages); waits at most `wait_time` s of wall clock for the first messages, as hztest."""
+        import rospy
+        end = time.monotonic() + wait_time
+        while not all(self._arrivals.values()) and time.monotonic() < end and not rospy.is_shutdown():
+            time.sleep(0.05)
+        stop = rospy.get_time() + duration
+        while rospy.get_time() < stop and not rospy.is_shutdown():
+            time.sleep(0.05)
+        for subscriber in self._subscribers:
+            subscriber.unregister()
+        rates = {}
+        for topic, arrivals in self._arrivals.items():
+            span = arrivals[-1] - arrivals[0] if len(arrivals) > 1 else 0.0
+            rates[topic] = (len(arrivals) - 1) / span if span > 0 else None
+        return rates

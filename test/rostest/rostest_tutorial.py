@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""The tutorial's checks as a rostest node (test/tutorial.test): the five controllers run, the
-tutorial's Twist drives the circle of the car's geometry, and the dead man's switch stops the car."""
+"""The tutorial's checks as a rostest node (test/tutorial.test): the sensors, the state and the clock
+publish at their rates (hztest's rule, in simulated time), the five controllers run, the tutorial's
+Twist drives the circle of the car's geometry, and the dead man's switch stops the car."""
 import math
 import os
 import sys
@@ -18,7 +19,12 @@ from tianracer_description.tianracer import TUTORIAL_CONTROLLERS
 from tianracer_description.urdf_geometry import ackermann_geometry
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, 'helpers'))
-from ros_harness import running_controllers  # noqa: E402  (the test harness, test/helpers)
+from ros_harness import TopicRates, running_controllers  # noqa: E402  (the test harness, test/helpers)
+
+
+# topic: (Hz, allowed error), as the tutorial's world and YAML set them
+RATES = {'/scan': (40.0, 2.0), '/tianracer/joint_states': (50.0, 2.5), '/tianracer/odom': (50.0, 2.5),
+         '/clock': (100.0, 5.0), '/camera/image_raw': (30.0, 3.0)}
 
 
 def sim_now():
@@ -41,7 +47,14 @@ class Tutorial(unittest.TestCase):
         rospy.Subscriber('/tianracer/rear_left_velocity_controller/command', Float64,
                          lambda m: cls.wheel.append((sim_now(), m.data)))
         cls.cmd_vel = rospy.Publisher('/tianracer/cmd_vel', Twist, queue_size=1)
+        cls.rates = TopicRates(RATES)
         cls.running = running_controllers('/tianracer', len(TUTORIAL_CONTROLLERS))
+
+    def test_0_the_topics_publish_at_their_rates(self):
+        rates = self.rates.measure(3.0)
+        for topic, (hz, error) in RATES.items():
+            self.assertIsNotNone(rates[topic], topic + ': fewer than two messages')
+            self.assertLessEqual(abs(rates[topic] - hz), error, '%s at %.2f Hz, not %g +- %g' % (topic, rates[topic], hz, error))
 
     def test_1_the_five_controllers_run(self):
         self.assertEqual(sorted(self.running), sorted(TUTORIAL_CONTROLLERS))

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Two cars in one world (test/two_robots.test): each runs the tutorial's five controllers in its own
-namespace, and commanding one car's wheels moves that car only."""
+"""Two cars in one world (test/two_robots.test): each publishes its joint states at 50 Hz (hztest's rule,
+in simulated time) and runs the tutorial's five controllers in its own namespace, and commanding one
+car's wheels moves that car only."""
 import math
 import os
 import sys
@@ -15,7 +16,7 @@ from std_msgs.msg import Float64
 from tianracer_description.tianracer import REAR_WHEEL_CONTROLLERS, TUTORIAL_CONTROLLERS
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)), os.pardir, 'helpers'))
-from ros_harness import connected_publisher, running_controllers  # noqa: E402  (the test harness, test/helpers)
+from ros_harness import TopicRates, connected_publisher, running_controllers  # noqa: E402  (the test harness, test/helpers)
 
 CARS = ('/car1/tianracer', '/car2/tianracer')
 
@@ -28,6 +29,12 @@ class TwoRobots(unittest.TestCase):
         for car in CARS:
             rospy.Subscriber(car + '/odom', Odometry, lambda m, car=car: cls.position.__setitem__(
                 car, (m.pose.pose.position.x, m.pose.pose.position.y)))
+        cls.rates = TopicRates([car + '/joint_states' for car in CARS])
+
+    def test_0_each_car_publishes_its_joint_states_at_50_hz(self):
+        for topic, rate in self.rates.measure(3.0).items():
+            self.assertIsNotNone(rate, topic + ': fewer than two messages')
+            self.assertLessEqual(abs(rate - 50.0), 2.5, '%s at %.2f Hz' % (topic, rate))
 
     def test_1_each_car_runs_the_five_controllers_in_its_namespace(self):
         for car in CARS:

@@ -1,6 +1,6 @@
 """The rostest files (test/*.test) run the ROS way, `rostest tianracer_description FILE`, each with its
 own ROS master: every <test> in them passes, or this fails with rostest's summary. Debian's python3 is
-put first on PATH, since rostest's own nodes (hztest) start with `/usr/bin/env python3`."""
+put first on PATH, since rostest's own nodes (hztest, a user's) start with `/usr/bin/env python3`."""
 import glob
 import os
 import subprocess
