@@ -10,6 +10,7 @@ f1tenth_gym is not on a registry, and its maps download at run time.
     F1/venv/bin/pip install --no-deps -e F1
     mkdir -p F1/maps/peanut && cp worlds/peanut_* F1/maps/peanut/
     python3 bench/f1tenth_side_by_side.py --f1tenth-python F1/venv/bin/python [--rounds 3 --steps 1500 --runs 2]
+        [--physics-dt 0.005]   # ours with a larger physics step (RaceEnv's physics_dt; default: the world's 1 ms)
 
 Each run starts both, one after the other, each in a process of its own; prints each one's median
 of ROUNDS rounds and ours over f1tenth's."""
@@ -67,11 +68,11 @@ def f1tenth(rounds, steps):
                                     0.6, wheelbase), rounds, steps)
 
 
-def ours(rounds, steps):
+def ours(rounds, steps, physics_dt=None):
     import gymnasium
     import tianracer_description.racing  # noqa: F401  (registers the environments)
     from tianracer_description.racing.pure_pursuit import PurePursuit
-    env = gymnasium.make('Tianracer-Map-v0', observe_pose=True)
+    env = gymnasium.make('Tianracer-Map-v0', observe_pose=True, physics_dt=physics_dt)
     return timed(env, lambda: env.reset(seed=0, options={'pose': (0.0, 0.0, 0.0)})[0], lambda a: a,
                  PurePursuit.for_env(env), rounds, steps)
 
@@ -82,21 +83,26 @@ def main():
     parser.add_argument('--rounds', type=int, default=3)
     parser.add_argument('--steps', type=int, default=1500)
     parser.add_argument('--runs', type=int, default=2)
+    parser.add_argument('--physics-dt', type=float, help="ours: RaceEnv's physics_dt (s; default: the world's)")
     parser.add_argument('--child', choices=['f1tenth', 'ours'], help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
-        print(statistics.median((f1tenth if args.child == 'f1tenth' else ours)(args.rounds, args.steps)))
+        rates = (f1tenth(args.rounds, args.steps) if args.child == 'f1tenth'
+                 else ours(args.rounds, args.steps, args.physics_dt))
+        print(statistics.median(rates))
         return
     if not args.f1tenth_python:
         parser.error('--f1tenth-python: the python of a venv with f1tenth_gym v1.0.0 (see this file\'s text)')
     for run in range(args.runs):
         rates = {}
         for name, python in (('f1tenth', args.f1tenth_python), ('ours', sys.executable)):
+            physics_dt = ['--physics-dt', str(args.physics_dt)] if args.physics_dt and name == 'ours' else []
             out = subprocess.run([python, os.path.abspath(__file__), '--child', name, '--rounds', str(args.rounds),
-                                  '--steps', str(args.steps)], capture_output=True, text=True, check=True)
+                                  '--steps', str(args.steps), *physics_dt], capture_output=True, text=True, check=True)
             rates[name] = float(out.stdout.split()[-1])
-        print('run %d: f1tenth_gym %.0f, ours %.0f env steps per CPU second: ours / f1tenth %.2f'
-              % (run + 1, rates['f1tenth'], rates['ours'], rates['ours'] / rates['f1tenth']), flush=True)
+        print('run %d: f1tenth_gym %.0f, ours%s %.0f env steps per CPU second: ours / f1tenth %.2f'
+              % (run + 1, rates['f1tenth'], ' (physics_dt %g s)' % args.physics_dt if args.physics_dt else '',
+                 rates['ours'], rates['ours'] / rates['f1tenth']), flush=True)
 
 
 if __name__ == '__main__':

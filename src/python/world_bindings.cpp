@@ -148,7 +148,9 @@ void init_world(py::module_& m)
           default: return py::str(p->describe());
         }
       })
-      .def_property_readonly("time_step", [](PyWorld& w) { return w.world->timeStep(); })
+      .def_property("time_step", [](PyWorld& w) { return w.world->timeStep(); },
+                    [](PyWorld& w, double seconds) { w.world->setTimeStep(seconds); },
+                    "s, a physics step (the SDF's <max_step_size>); ValueError outside the plant's range")
       .def_property_readonly("real_time_factor", [](PyWorld& w) { return w.world->description().real_time_factor; })
       .def_property_readonly("pace", [](PyWorld& w) { return w.world->description().pace(); },
                              "simulated seconds per wall second Gazebo keeps this world at: <real_time_update_rate> x "

@@ -185,9 +185,20 @@ def action_space():
 def steps_per_action(control_period, time_step):
     steps = int(round(control_period / time_step))
     if steps < 1 or abs(steps * time_step - control_period) > 1e-9:
-        raise ValueError('control_period %g s is not a whole number of the world\'s %g s steps'
+        raise ValueError('control_period %g s is not a whole number of the world\'s %g s steps (physics_dt)'
                          % (control_period, time_step))
     return steps
+
+
+def check_physics_dt(physics_dt, control_period):
+    """physics_dt None (the world file's step) or a step that divides control_period; ValueError names
+    what is wrong."""
+    if physics_dt is not None:
+        if not physics_dt > 0:
+            raise ValueError('physics_dt is a physics step in seconds (> 0), or None for the world file\'s; got %r'
+                             % (physics_dt,))
+        steps_per_action(control_period, physics_dt)
+    return physics_dt
 
 
 class RaceTrack:
@@ -275,8 +286,10 @@ def race_parts(world_file, centerline, urdf, controllers, max_speed, map=None, r
 class RaceCars:
     """N cars on a track, the N cars of one CarBatch (see the module's text)."""
 
-    def __init__(self, track, model, lidar, names, observe_pose=False, threads=1, chase_camera=False, frenet=None):
+    def __init__(self, track, model, lidar, names, observe_pose=False, threads=1, chase_camera=False, frenet=None,
+                 physics_dt=None):
         self.track, self.model, self.lidar, self.names = track, model, lidar, list(names)
+        self.physics_dt = physics_dt  # the worlds' physics step (None: the world file's)
         self.observe_pose, self.chase_camera = observe_pose, chase_camera
         self.frenet = frenet if frenet else None  # a FrenetObserver that observes something, or None
         self.batch = bullet_plant.CarBatch(len(self.names), threads)
@@ -322,12 +335,16 @@ class RaceCars:
         """All the cars (i None) or car i, as a slice: views of the per-car arrays, not copies."""
         return slice(None) if i is None else slice(i, i + 1)
 
+    def new_world(self, noise_seed):
+        """A world of the track for the cars, its sensors' noise seeded by `noise_seed`."""
+        return new_world(self.track.world_file, self.model.controllers, noise_seed, self.physics_dt)
+
     def place(self, i, pose, world=None, noise_seed=0):
         """Car i spawned at pose (x, y, yaw) into `world` (shared with other cars), or into a new world
         of the track whose sensors' noise is seeded by `noise_seed`, with its parameters; its progress
         and laps start there."""
         pose = tuple(float(v) for v in pose)
-        world = world or new_world(self.track.world_file, self.model.controllers, noise_seed)
+        world = world or self.new_world(noise_seed)
         self.worlds[i] = world
         self.robots[i] = self.model.spawn(world, self.names[i], pose, self.chase_camera, self.params[i])
         self.model.bind(self.batch, i, world, self.robots[i], self.track.centerline)

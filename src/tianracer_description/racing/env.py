@@ -16,6 +16,10 @@ curvature_ahead=(metres, ...) and frenet_line= add the car's Frenet coordinates 
 ahead to the observation; the info holds lap_count, last_lap_time and best_lap_time (cars.py).
 Every reset makes the world anew (a few milliseconds), so an episode depends on nothing before it: the
 same seed and actions give the same observations, bit for bit.
+physics_dt= (s) steps the physics with that step instead of the world file's <max_step_size> (1 ms on
+our tracks), for learning: fewer steps an action (it divides control_period). Closed loop its laps stay
+those of 1 ms within the tolerances of docs/racing.md (measured up to 5 ms); the trajectory of a replayed
+action sequence does not (docs/design.md).
 Rendering (views.py): render_mode "rgb_array" returns a frame, "human" shows each step's in a window;
 view= says what: "chase" (the default), a chase camera behind the car (the plant's OpenGL cameras),
 or "top_down", the track from above with the car, its lidar's hits and the centre line (numpy,
@@ -28,7 +32,7 @@ the same.
 """
 import gymnasium
 
-from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
+from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, check_physics_dt, draw_noise_seed,
                                                observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second
@@ -42,8 +46,9 @@ class RaceEnv(gymnasium.Env):
     def __init__(self, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, render_mode=None, map=None, raceline=None,
                  wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline',
-                 view='chase', top_down_scale=None):
+                 view='chase', top_down_scale=None, physics_dt=None):
         check_render(render_mode, view)
+        check_physics_dt(physics_dt, control_period)
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
                                                         map, raceline, wall_height)
         self.render_mode, self.view = render_mode, view
@@ -53,7 +58,8 @@ class RaceEnv(gymnasium.Env):
         self.observation_space = observation_space(self.lidar, observe_pose, frenet)
         self.action_space = action_space()
         self._cars = RaceCars(self.track, self.model, self.lidar, ['car'], observe_pose,
-                              chase_camera=render_mode is not None and view == 'chase', frenet=frenet)
+                              chase_camera=render_mode is not None and view == 'chase', frenet=frenet,
+                              physics_dt=physics_dt)
         self._views = RaceViews(self._cars, render_mode, view, top_down_scale, 'Tianracer',
                                 self.metadata['render_fps'])
         self._steps = None

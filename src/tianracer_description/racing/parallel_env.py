@@ -26,8 +26,7 @@ from gymnasium.utils import seeding
 from pettingzoo import ParallelEnv
 
 from tianracer_description.racing import MAX_EPISODE_STEPS
-from tianracer_description.racing.car import new_world
-from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
+from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, check_physics_dt, draw_noise_seed,
                                                observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second, tile
@@ -39,10 +38,11 @@ class RaceParallelEnv(ParallelEnv):
     def __init__(self, world_file=None, cars=2, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, max_cycles=MAX_EPISODE_STEPS, map=None, raceline=None,
                  wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(), frenet_line='centerline',
-                 render_mode=None, view='top_down', top_down_scale=None):
+                 render_mode=None, view='top_down', top_down_scale=None, physics_dt=None):
         if cars < 1:
             raise ValueError('a race has 1 car or more; got %r' % (cars,))
         check_render(render_mode, view)
+        check_physics_dt(physics_dt, control_period)
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
                                                         map, raceline, wall_height)
         self.control_period, self.observe_pose, self.max_cycles = control_period, observe_pose, max_cycles
@@ -54,7 +54,7 @@ class RaceParallelEnv(ParallelEnv):
         self._observation_space = observation_space(self.lidar, observe_pose, frenet)
         self._action_spaces = {agent: action_space() for agent in self.possible_agents}
         self._cars = RaceCars(self.track, self.model, self.lidar, self.possible_agents, observe_pose, frenet=frenet,
-                              chase_camera=render_mode is not None and view == 'chase')
+                              chase_camera=render_mode is not None and view == 'chase', physics_dt=physics_dt)
         self._views = RaceViews(self._cars, render_mode, view, top_down_scale, 'Tianracer race',
                                 self.metadata['render_fps'])
         self._rng = seeding.np_random()[0]
@@ -75,7 +75,7 @@ class RaceParallelEnv(ParallelEnv):
         options = options or {}
         for index, params in enumerate(self._cars.car_params(options.get('car_params'), self.possible_agents)):
             self._cars.set_params(index, params)
-        world = new_world(self.track.world_file, self.model.controllers, draw_noise_seed(self._rng))
+        world = self._cars.new_world(draw_noise_seed(self._rng))
         given = options.get('poses') or {}
         poses = self.track.start_poses(self._rng, options.get('start'), [given.get(agent) for agent in self.possible_agents],
                                        self.track.grid_pose)

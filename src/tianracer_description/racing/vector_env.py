@@ -23,7 +23,7 @@ from gymnasium.utils import seeding
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, draw_noise_seed,
+from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, check_physics_dt, draw_noise_seed,
                                                observation_space, race_parts, row, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second, tile
@@ -35,10 +35,12 @@ class RaceVectorEnv(VectorEnv):
     def __init__(self, num_envs, world_file=None, centerline=None, urdf=None, controllers=None, max_speed=2.0,
                  control_period=0.01, observe_pose=False, max_episode_steps=None, threads=0, map=None,
                  raceline=None, wall_height=WALL_HEIGHT, observe_frenet=False, curvature_ahead=(),
-                 frenet_line='centerline', render_mode=None, view='chase', top_down_scale=None):
+                 frenet_line='centerline', render_mode=None, view='chase', top_down_scale=None,
+                 physics_dt=None):
         if num_envs < 1:
             raise ValueError('num_envs is 1 or more; got %r' % (num_envs,))
         check_render(render_mode, view)
+        check_physics_dt(physics_dt, control_period)
         self.num_envs = num_envs
         self.track, self.model, self.lidar = race_parts(world_file, centerline, urdf, controllers, max_speed,
                                                         map, raceline, wall_height)
@@ -52,7 +54,7 @@ class RaceVectorEnv(VectorEnv):
         self.observation_space = batch_space(self.single_observation_space, num_envs)
         self.action_space = batch_space(self.single_action_space, num_envs)
         self._cars = RaceCars(self.track, self.model, self.lidar, ['car'] * num_envs, observe_pose, threads, frenet=frenet,
-                              chase_camera=render_mode is not None and view == 'chase')
+                              chase_camera=render_mode is not None and view == 'chase', physics_dt=physics_dt)
         self._views = RaceViews(self._cars, render_mode, view, top_down_scale, 'Tianracer x %d' % num_envs,
                                 self.metadata['render_fps'])
         self._rngs = [seeding.np_random()[0] for _ in range(num_envs)]
