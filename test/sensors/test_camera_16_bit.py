@@ -2,7 +2,10 @@
 into a 16-bit OGRE target: a smooth shade takes levels between the 8-bit ones (not 257 x a byte),
 each within half an 8-bit level of the same view from an 8-bit camera; its noise is drawn at 16
 bits (a stddev of 0.001 is 65.5 levels of 1/65535, a quarter of one 8-bit level) and comes after the
-lens, as the 8-bit camera's does. Forced onto llvmpipe's 128-bit path too (LP_NATIVE_VECTOR_WIDTH)."""
+lens, as the 8-bit camera's does. Forced onto llvmpipe's 128-bit path too (LP_NATIVE_VECTOR_WIDTH), and
+onto a GL without 16-bit colour targets (Mesa's MESA_EXTENSION_OVERRIDE), which gives 257 x the 8-bit
+frame."""
+import io
 import os
 import subprocess
 import sys
@@ -86,15 +89,27 @@ def test_a_16_bit_cameras_noise_is_drawn_at_16_bits(distortion):
     assert abs(right) < 0.15, right
 
 
-def test_llvmpipes_128_bit_path_renders_16_bits_alike():
-    """The module in a child process with llvmpipe's vectors at 128 bits gives the same frame."""
+def frame_in_a_child(**environment):
+    """An L16 camera's rgb16 and an R8G8B8 one's rgb, rendered in a child process with `environment` set."""
     script = ("import numpy as np, sys; sys.path[:0] = %r; import test_camera_16_bit as t; "
-              "np.save(sys.stdout.buffer, t.frames([t.camera('deep', 'L16')])['deep']['rgb16'])") % [
+              "f = t.frames([t.camera('deep', 'L16'), t.camera('byte', 'R8G8B8')]); "
+              "np.save(sys.stdout.buffer, f['deep']['rgb16']); np.save(sys.stdout.buffer, f['byte']['rgb'])") % [
                   os.path.dirname(__file__)]
-    env = dict(os.environ, LP_NATIVE_VECTOR_WIDTH='128')
-    out = subprocess.run([sys.executable, '-c', script], env=env, capture_output=True, check=True).stdout
-    import io
-    narrow = np.load(io.BytesIO(out)).astype(int)
+    out = subprocess.run([sys.executable, '-c', script], env=dict(os.environ, **environment), capture_output=True,
+                         check=True).stdout
+    stream = io.BytesIO(out)
+    return np.load(stream).astype(int), np.load(stream).astype(int)
+
+
+def test_llvmpipes_128_bit_path_renders_16_bits_alike():
+    narrow, _ = frame_in_a_child(LP_NATIVE_VECTOR_WIDTH='128')
     wide = frames([camera('deep', 'L16')])['deep']['rgb16'].astype(int)
     assert (narrow[..., 0] % 257 != 0).mean() > 0.3
     assert np.abs(narrow - wide).max() <= 2
+
+
+def test_a_gl_without_16_bit_targets_gives_257_times_the_8_bit_frame():
+    """Mesa told to hide GL_EXT_texture_norm16 (MESA_EXTENSION_OVERRIDE): the 8-bit render spread."""
+    deep, byte = frame_in_a_child(MESA_EXTENSION_OVERRIDE='-GL_EXT_texture_norm16')
+    assert (deep[..., 0] > 0).mean() > 0.3
+    assert np.array_equal(deep[..., 0], 257 * byte[..., 0])
