@@ -143,8 +143,9 @@ private:
   // Draws the casters of `draws` that move (or not) into `map`; false when there are none.
   bool drawShadowMap(ShadowMap& map, const std::vector<Draw>& draws, bool moving, const Lighting& lighting);
   void drawShadowMaps(const std::vector<Draw>& draws, const Lighting& lighting);
-  // An off-screen framebuffer of one size: a world's cameras of different sizes each draw into
-  // their own, made once (renderbuffer storage is allocated and cleared by the driver).
+  // An off-screen framebuffer of one size and colour depth: a world's cameras of different sizes (or
+  // 8- and 16-bit ones) each draw into their own, made once (renderbuffer storage is allocated and
+  // cleared by the driver).
   struct Target
   {
     int width = 0, height = 0;
