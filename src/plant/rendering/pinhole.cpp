@@ -105,35 +105,38 @@ void detail::noisyRgbFromRgbaEach(const int16_t* samples, const uint8_t* rgba, u
       rgb8[c] = noisy(rgba[c], samples[k]);
 }
 
+namespace
+{
+// Each pixel's sample added to its three values in place (samples null: none).
+template <class Value, class Sample>
+void addNoiseInPlace(const PinholeCamera& camera, const Sample* noise, Value* rgb)
+{
+  if (!noise)
+    return;
+  const Sample* samples = noise + camera.noise_offset;
+  const size_t pixels = size_t(camera.width) * size_t(camera.height);
+  for (size_t k = 0; k < pixels; ++k, rgb += 3)
+    for (int c = 0; c < 3; ++c)
+      rgb[c] = noisy(rgb[c], samples[k]);
+}
+}  // namespace
+
 void addNoise(const PinholeCamera& camera, uint8_t* rgb8)
 {
-  if (!camera.noise)
-    return;
-  const int16_t* samples = camera.noise + camera.noise_offset;
-  const size_t pixels = size_t(camera.width) * size_t(camera.height);
-  for (size_t k = 0; k < pixels; ++k, rgb8 += 3)
-    for (int c = 0; c < 3; ++c)
-      rgb8[c] = noisy(rgb8[c], samples[k]);
+  addNoiseInPlace(camera, camera.noise, rgb8);
 }
 
 void noisyRgb16FromRgba16(const PinholeCamera& camera, const uint16_t* rgba16, uint16_t* rgb16)
 {
   const size_t pixels = size_t(camera.width) * size_t(camera.height);
-  const int32_t* samples = camera.noise16 ? camera.noise16 + camera.noise_offset : nullptr;
   for (size_t k = 0; k < pixels; ++k, rgb16 += 3, rgba16 += 4)
-    for (int c = 0; c < 3; ++c)
-      rgb16[c] = samples ? noisy(rgba16[c], samples[k]) : rgba16[c];
+    rgb16[0] = rgba16[0], rgb16[1] = rgba16[1], rgb16[2] = rgba16[2];
+  addNoiseInPlace(camera, camera.noise16, rgb16 - 3 * pixels);
 }
 
 void addNoise(const PinholeCamera& camera, uint16_t* rgb16)
 {
-  if (!camera.noise16)
-    return;
-  const int32_t* samples = camera.noise16 + camera.noise_offset;
-  const size_t pixels = size_t(camera.width) * size_t(camera.height);
-  for (size_t k = 0; k < pixels; ++k, rgb16 += 3)
-    for (int c = 0; c < 3; ++c)
-      rgb16[c] = noisy(rgb16[c], samples[k]);
+  addNoiseInPlace(camera, camera.noise16, rgb16);
 }
 
 void rgb8FromRgb16(const uint16_t* rgb16, uint8_t* rgb8, size_t values)
