@@ -6,7 +6,8 @@ worlds/race_track.world (boxes) and on the mesh race track of bench/sensor_bench
 as one OBJ, a textured OBJ floor; the same centre line), driven by follow the gap at the default
 10 ms control period (ten 1 ms physics steps an env step). Per round, in turn:
 - physics: the car on its controllers with no sensor enabled, physics steps per CPU second;
-- single: RaceEnv, env steps per CPU second (one core's worth) and per wall second;
+- single: RaceEnv, env steps per CPU second (one core's worth) and per wall second; and per CPU
+  second with physics_dt 5 ms (docs/racing.md, "A larger physics step for learning");
 - vector: RaceVectorEnv with 4, 8 and 16 cars (VECTOR_ENVS) on one thread and on two, env steps per
   wall second (all cars), and the two threads' gain over one. The two envs are stepped in turn, in
   blocks of VECTOR_BLOCK env steps, so that the machine's moments fall on both alike. What a vector step
@@ -50,6 +51,7 @@ from tianracer_description.tianracer import RACE_CIRCUIT_WORLD, RACE_TRACK_WORLD
 
 ROUNDS = 5
 ENV_STEPS = 3000  # a measurement: this many env steps (single) or vector steps x cars
+COARSE_PHYSICS_DT = 0.005  # the single env again with this physics_dt (s)
 VECTOR_ENVS = (4, 8, 16)
 VECTOR_BLOCK = 500  # env steps (vector steps x cars) on one env before the other's turn
 CONTROL_PERIOD = 0.01  # s
@@ -77,9 +79,9 @@ def walls_over_empty_world():
     return physics(None, 2.0, 5000) / physics(RACE_CIRCUIT_WORLD, 2.0, 5000)
 
 
-def single(world_file, centerline):
+def single(world_file, centerline, physics_dt=None):
     """RaceEnv's env steps per CPU second and per wall second (its calls only)."""
-    env = RaceEnv(world_file, centerline=centerline)
+    env = RaceEnv(world_file, centerline=centerline, physics_dt=physics_dt)
     policy = FollowTheGap.for_env(env)
     cpu = wall = 0.0
     observation, _ = env.reset(seed=0)
@@ -184,7 +186,7 @@ def main():
     tracks = {'race track (boxes)': RACE_TRACK_WORLD, 'mesh race track': mesh_world}
     print('CPU: %s, %d cores; %d rounds, medians; the 1081-ray lidar at 40 Hz, 10 ms control'
           % (cpu_name(), os.cpu_count(), ROUNDS), flush=True)
-    results = {name: {'physics': [], 'single_cpu': [], 'single_wall': [], 'two_processes': [],
+    results = {name: {'physics': [], 'single_cpu': [], 'single_wall': [], 'single_5ms': [], 'two_processes': [],
                       **{(cars, threads): [] for cars in VECTOR_ENVS for threads in (1, 2)}}
                for name in tracks}
     walls_over_empty = []
@@ -196,6 +198,7 @@ def main():
             cpu, wall = single(world_file, centerline)
             r['single_cpu'].append(cpu)
             r['single_wall'].append(wall)
+            r['single_5ms'].append(single(world_file, centerline, COARSE_PHYSICS_DT)[0])
             r['two_processes'].append(two_processes(world_file, centerline))
             for cars in VECTOR_ENVS:
                 for threads, rate in vector(world_file, centerline, cars).items():
@@ -203,14 +206,14 @@ def main():
         print('round %d of %d done' % (round_ + 1, ROUNDS), flush=True)
     print()
     vector_titles = ['%d cars x%d' % (cars, threads) for cars in VECTOR_ENVS for threads in (1, 2)]
-    print('%-20s %14s %13s %14s' % ('', 'physics/CPU-s', 'single/CPU-s', 'single/wall-s')
+    print('%-20s %14s %13s %14s %13s' % ('', 'physics/CPU-s', 'single/CPU-s', 'single/wall-s', '5 ms/CPU-s')
           + ''.join(' %12s' % t for t in vector_titles) + ''.join(' %9s' % ('%d: x2/x1' % c) for c in VECTOR_ENVS)
           + ' %9s' % 'machine')
     for name, r in results.items():
         m = {k: statistics.median(v) for k, v in r.items()}
         gains = [statistics.median(b / a for a, b in zip(r[(cars, 1)], r[(cars, 2)])) for cars in VECTOR_ENVS]
         machine = statistics.median(two / one for one, two in zip(r['single_wall'], r['two_processes']))
-        print('%-20s %14.0f %13.0f %14.0f' % (name, m['physics'], m['single_cpu'], m['single_wall'])
+        print('%-20s %14.0f %13.0f %14.0f %13.0f' % (name, m['physics'], m['single_cpu'], m['single_wall'], m['single_5ms'])
               + ''.join(' %12.0f' % m[(cars, threads)] for cars in VECTOR_ENVS for threads in (1, 2))
               + ''.join(' %9.2f' % g for g in gains) + ' %9.2f' % machine)
     print()
@@ -228,7 +231,8 @@ def main():
     print('physics on the race circuit (258 walls) over an empty world: %.3f (median; rounds %s)'
           % (statistics.median(walls_over_empty), ', '.join('%.3f' % r for r in walls_over_empty)))
     print('targets: single env >= 4000 env steps per CPU second; vector env on 2 threads >= 1.8x one; '
-          'the race circuit\'s physics at most 1.10 x the empty world\'s')
+          'the race circuit\'s physics at most 1.10 x the empty world\'s; issue 42: 2x f1tenth_gym\'s single env on '
+          'the same map (bench/f1tenth_side_by_side.py runs both, by hand)')
 
 
 if __name__ == '__main__':
