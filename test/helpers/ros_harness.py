@@ -151,7 +151,7 @@ class RosSystem:
         try:
             code, _, _ = xmlrpc.client.ServerProxy(self.env['ROS_MASTER_URI']).getParamNames('/ros_harness')
             return code == 1
-        except OSError:
+        except (OSError, xmlrpc.client.Error):  # not listening yet, or not answering XML-RPC yet
             return False
 
     def start(self, args, name):
