@@ -201,9 +201,10 @@ struct Serializer<bullet_plant::EncodedImageOf>
   {
     namespace fm = bullet_plant::frame_messages;
     const bullet_plant::CameraFrame& f = m.frame;
-    fm::writeImage(s, m.header, f, m.encoding.encoding, m.encoding.bytes_per_pixel, length(m),
-                   [&](uint8_t* out) { bullet_plant::encodeImage(m.encoding, f.rgb.data(), f.rgb16.empty() ? nullptr : f.rgb16.data(), f.width,
-                                                           f.height, out); });
+    const uint16_t* rgb16 = f.rgb16.empty() ? nullptr : f.rgb16.data();
+    fm::writeImage(s, m.header, f, m.encoding.encoding, m.encoding.bytes_per_pixel, length(m), [&](uint8_t* out) {
+      bullet_plant::encodeImage(m.encoding, f.rgb.data(), rgb16, f.width, f.height, out);
+    });
   }
   static uint32_t serializedLength(const bullet_plant::EncodedImageOf& m)
   {

@@ -129,9 +129,10 @@ void addNoise(const PinholeCamera& camera, uint8_t* rgb8)
 void noisyRgb16FromRgba16(const PinholeCamera& camera, const uint16_t* rgba16, uint16_t* rgb16)
 {
   const size_t pixels = size_t(camera.width) * size_t(camera.height);
-  for (size_t k = 0; k < pixels; ++k, rgb16 += 3, rgba16 += 4)
-    rgb16[0] = rgba16[0], rgb16[1] = rgba16[1], rgb16[2] = rgba16[2];
-  addNoiseInPlace(camera, camera.noise16, rgb16 - 3 * pixels);
+  for (size_t k = 0; k < pixels; ++k)
+    for (int c = 0; c < 3; ++c)
+      rgb16[3 * k + c] = rgba16[4 * k + c];
+  addNoiseInPlace(camera, camera.noise16, rgb16);
 }
 
 void addNoise(const PinholeCamera& camera, uint16_t* rgb16)

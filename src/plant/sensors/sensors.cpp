@@ -160,6 +160,21 @@ void detail::SensorRendering::scan(Lidar& lidar, const RayScene& scene, const Fr
   }
 }
 
+namespace
+{
+// A clean frame (8 or 16 bits) through the lens, then the camera's noise; `undistorted` keeps the
+// frame as rendered (its buffer kept from frame to frame).
+template <class Value>
+void throughTheLens(const DistortionRemap& remap, const PinholeCamera& camera, std::vector<Value>& frame,
+                    std::vector<Value>& undistorted)
+{
+  undistorted.swap(frame);
+  frame.resize(undistorted.size());
+  remapRgb(remap, undistorted.data(), frame.data());
+  addNoise(camera, frame.data());
+}
+}  // namespace
+
 // A pinhole camera's frame by GL rasterization (lit colours with noise, and depths); the noise
 // comes from a table of gaussian samples drawn once from the camera's own generator and a
 // per-frame offset from it, drawn here in the simulation's order, so frames are the same on every
@@ -223,19 +238,11 @@ void detail::SensorRendering::render(Camera& camera, GlScene& scene, FrameWorker
         scene.render(draws, pose, clean, lighting, r.image);
         if (pinhole.bits == 16)
         {
-          r.undistorted16.swap(r.image.rgb16);
-          r.image.rgb16.resize(r.undistorted16.size());
-          remapRgb(r.distortion, r.undistorted16.data(), r.image.rgb16.data());
-          addNoise(pinhole, r.image.rgb16.data());
+          throughTheLens(r.distortion, pinhole, r.image.rgb16, r.undistorted16);
           rgb8FromRgb16(r.image.rgb16.data(), r.image.rgb8.data(), r.image.rgb8.size());
         }
         else
-        {
-          r.undistorted.swap(r.image.rgb8);
-          r.image.rgb8.resize(r.undistorted.size());
-          remapRgb(r.distortion, r.undistorted.data(), r.image.rgb8.data());
-          addNoise(pinhole, r.image.rgb8.data());
-        }
+          throughTheLens(r.distortion, pinhole, r.image.rgb8, r.undistorted);
       }
     }
     catch (const std::exception& e)
