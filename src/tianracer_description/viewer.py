@@ -486,8 +486,8 @@ class Viewer:
         await runner.setup()
         site = web.TCPSite(runner, self.host, self.port)
         await site.start()
-        if started:
-            started('http://%s:%d/' % (self.host, self.port))
+        if started:  # the port bound: the one asked for, or the system's pick for port 0
+            started('http://%s:%d/' % (self.host, runner.addresses[0][1]))
         status, drive = asyncio.ensure_future(self._status()), asyncio.ensure_future(self._drive())
         try:
             while not rospy.is_shutdown():

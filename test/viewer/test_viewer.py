@@ -8,6 +8,7 @@ import contextlib
 import io
 import math
 import os
+import re
 import time
 import xml.etree.ElementTree as ET
 
@@ -83,15 +84,17 @@ def at_rest(read_xy, timeout=20.0, still=0.02):
 def opened(ros, world, urdf_file=None):
     """The plant on `world` (with the car and the tutorial's YAML when `urdf_file`), the viewer on a
     free port, and a chromium page on it with the scene drawn: (plant, viewer process, driver, url)."""
-    from ros_harness import free_port, start_plant, tianracer_plant
+    from ros_harness import start_plant, tianracer_plant
     # chromium starts (about a second) while the plant and the viewer do
     starting = concurrent.futures.ThreadPoolExecutor(1).submit(browser)
     try:
         plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
-        port = free_port()
-        viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=%d' % port], 'viewer')
-        url = 'http://127.0.0.1:%d/' % port
-        ros.wait_until(lambda: ('viewer: open ' + url) in viewer.log(), 30, 'the viewer to serve')
+        # port 0: the viewer binds a port the system picks and prints it. A port found free here first
+        # could be taken before the viewer bound it: chromium, starting beside it, took one in CI.
+        viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=0'], 'viewer')
+        opened_at = re.compile(r'viewer: open (http://127\.0\.0\.1:\d+/)')
+        ros.wait_until(lambda: opened_at.search(viewer.log()), 30, 'the viewer to serve')
+        url = opened_at.search(viewer.log()).group(1)
     except BaseException:
         starting.result().quit()
         raise
