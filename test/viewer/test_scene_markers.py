@@ -2,6 +2,7 @@
 cones and floor as markers where the world file puts them, the mesh track's meshes by file, planes of
 any normal with their top face on the plane; and the node's latched MarkerArray from the plant's
 /gazebo/scene, which rviz.launch starts beside rviz."""
+import glob
 import json
 import math
 import os
@@ -136,7 +137,18 @@ def test_rviz_started_with_rviz_true_draws_the_race_tracks_walls(ros, tmp_path):
         time.sleep(1.0)
     from PIL import Image
     Image.fromarray(np.ascontiguousarray(red_share.rgb)).save(str(tmp_path / 'rviz.png'))
-    assert red_share() >= 0.02, 'no red walls in rviz (screenshot: %s)' % (tmp_path / 'rviz.png')
+    assert red_share() >= 0.02, 'no red walls in rviz (screenshot: %s)\n%s' % (tmp_path / 'rviz.png', rviz_state(ros))
+
+
+def rviz_state(ros):
+    """What a failure needs said (its screenshot is gone with CI's machine): whether rviz subscribes to
+    the markers, its own log, and the end of the launch's."""
+    topic = ros.run(['rostopic', 'info', '/gazebo/scene_markers'], timeout=15)
+    rviz_logs = glob.glob(os.path.join(ros.env['ROS_HOME'], 'log', '*', 'rviz-*-stdout.log'))
+    rviz_log = ''.join(open(path, errors='replace').read()[-3000:] for path in rviz_logs)
+    launch_log = ''.join(p.log() for p in ros.processes if p.log_path.endswith('launch.log'))[-3000:]
+    return '--- rostopic info /gazebo/scene_markers:\n%s%s\n--- rviz\'s log:\n%s\n--- the launch\'s log, its end:\n%s' % (
+        topic.stdout, topic.stderr, rviz_log or '(none)', launch_log)
 
 
 def test_rviz_launch_starts_scene_markers_beside_rviz_with_a_display_for_them():
