@@ -167,12 +167,23 @@ RTCGeometry triangleGeometry(RTCDevice device, const Frame& frame, const std::ve
   return g;
 }
 
-void boxTriangles(const double half[3], std::vector<float>& vertices, std::vector<int>& indices)
+RTCGeometry quadGeometry(RTCDevice device, const Frame& frame, const std::vector<float>& vertices,
+                         const std::vector<int>& indices)
+{
+  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
+  transformedVertices(frame, vertices.data(), int(vertices.size() / 3), g);
+  unsigned* out = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+                                                                 4 * sizeof(unsigned), indices.size() / 4));
+  std::copy(indices.begin(), indices.end(), out);
+  return g;
+}
+
+void boxQuads(const double half[3], std::vector<float>& vertices, std::vector<int>& indices)
 {
   for (int c = 0; c < 8; ++c)
     for (int i = 0; i < 3; ++i)
       vertices.push_back(float((c >> (2 - i)) & 1 ? half[i] : -half[i]));
-  indices = {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+  indices = {0, 1, 3, 2, 4, 6, 7, 5, 0, 4, 5, 1, 2, 3, 7, 6, 0, 2, 6, 4, 1, 5, 7, 3};
 }
 
 
@@ -467,8 +478,8 @@ struct RayScene::ShapeSet
       switch (p.kind)
       {
         case Shape::Kind::Box:
-          boxTriangles(p.half, vertices, indices);
-          g = triangleGeometry(device, p.frame, vertices, indices);
+          boxQuads(p.half, vertices, indices);
+          g = quadGeometry(device, p.frame, vertices, indices);
           break;
         case Shape::Kind::Plane:
           planeTriangles(p.normal, vertices, indices);
