@@ -840,6 +840,7 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
   parallelTasks((packets + kPacketsPerTask - 1) / kPacketsPerTask, [&](int task) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     Packet packet;
     for (int k = task * kPacketsPerTask; k < std::min(packets, (task + 1) * kPacketsPerTask); ++k)
     {
