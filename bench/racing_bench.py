@@ -155,20 +155,19 @@ def schedule_ceiling(world_file, centerline, cars, phases_apart):
         race.place(i, track.start_pose(rng))
     scans, state = race.settle()
     if phases_apart:
-        still = model.commands(np.zeros((1, 2)))
         for i in range(cars):
             ahead = int(rng.integers(0, 25))
             if ahead:
-                race.batch.step(still, ahead, [i])
+                race.batch.drive(np.zeros((1, 2)), ahead, [i])
     policy = FollowTheGap(lidar.angle_min, lidar.angle_increment, model.max_steering)
     steps = steps_per_action(CONTROL_PERIOD, race.worlds[0].time_step)
     total = makespan = 0.0
     for k in range(ENV_STEPS // cars):
-        commands = model.commands(np.array([policy({'scan': scans[i]}) for i in range(cars)]))
+        actions = np.array([policy({'scan': scans[i]}) for i in range(cars)], np.float64)
         costs, scanned = np.empty(cars), np.empty(cars, bool)
         for i in range(cars):
             w0 = time.perf_counter()
-            scan, _ = race.batch.step(commands[i:i + 1], steps, [i])
+            scan, _ = race.batch.drive(actions[i:i + 1], steps, [i])
             costs[i] = time.perf_counter() - w0
             scanned[i] = not np.array_equal(scan[0], scans[i])  # (the noise makes every new scan differ)
             scans[i] = scan[0]

@@ -1,8 +1,10 @@
 // bullet_plant.CarBatch: N cars stepped together in one call: their controllers commanded, their
 // worlds (one each, or several cars sharing one) stepped side by side on a TBB arena with the GIL
 // released, and what a driving policy observes read back into arrays, with no Python between the
-// cars: the lidar's ranges, the car's motion and, on a track, where it is along the centre line.
-// What the Gymnasium and PettingZoo environments (tianracer_description.racing) step on.
+// cars: the lidar's ranges, the car's motion and, on a track, where it is along the centre line and
+// its laps. Cars given a drive (set_drive) take actions, steering and speed shares, through the
+// converter's Ackermann geometry (bullet_plant/ackermann_wheels.h). What the Gymnasium and
+// PettingZoo environments (tianracer_description.racing) step on.
 #include "bindings.h"
 #include "centerline.h"
 
@@ -37,8 +39,10 @@ const std::vector<std::string> kStateColumns = {
     "crashed",  // 1 when the car touches something other than the ground (a contact normal under 45 deg)
     "time",     // its world's simulated time (s)
     // On a centre line (NaN without one): Centerline.project of (x, y); the metres gained along the
-    // line since the car was last read (Centerline.progress), and since it was set (their sum).
+    // line since the car was last read (Centerline.progress), and since it was set (their sum); its
+    // laps since it was set (LapTimer: laps done, the last and the best lap's time, s, inf until timed).
     "centerline_s", "centerline_offset", "centerline_gained", "centerline_travelled",
+    "lap_count", "last_lap_time", "best_lap_time",
 };
 const double kGroundNormalZ = std::sqrt(0.5);
 
@@ -62,7 +66,21 @@ struct CarSlot
   std::ptrdiff_t segment = -1;  // of the centre line, the car's nearest when last read
   double s = 0;                 // and its arc length there
   double travelled = 0;         // along the line since set
+  LapTimer laps;
+  // set_drive's: an action's steering and speed shares are of these, through this geometry
+  std::optional<AckermannGeometry> drive;
+  double max_steering = 0, max_speed = 0;  // rad, m/s
 };
+
+// The drive's four controllers' commands (rear left, rear right, steer left, steer right) for an
+// action: steering and speed, each a share of the car's largest; the speed held within max_speed
+// (ackermannWheelCommands holds the steering; a NaN stays NaN, which the controllers refuse).
+void driveCommands(const CarSlot& car, double steering_share, double speed_share, double out[4])
+{
+  const double speed = speed_share * car.max_speed;
+  const double held = speed > car.max_speed ? car.max_speed : speed < -car.max_speed ? -car.max_speed : speed;
+  ackermannWheelCommands(held, steering_share * car.max_steering, car.max_steering, *car.drive, out);
+}
 
 void spinPause()
 {
@@ -187,8 +205,26 @@ public:
       const Centerline::Projection along = slot.centerline->project(pose.position.x, pose.position.y);
       slot.segment = along.segment;
       slot.s = along.s;
+      slot.laps = LapTimer(slot.centerline->length());
+      slot.laps.restart(slot.centerline->progress(0.0, along.s), slot.world->time());
     }
     slots_[i] = std::move(slot);
+  }
+
+  void setDrive(size_t i, double wheelbase, double rear_track, double front_track, double wheel_radius,
+                double max_steering, double max_speed)
+  {
+    CarSlot& car = slotOf(i);
+    if (car.commands.size() != 4)
+      throw py::value_error("car " + std::to_string(i) + " has " + std::to_string(car.commands.size()) +
+                            " controllers; a drive commands four: rear left, rear right, steer left, steer right");
+    for (const double v : {wheelbase, rear_track, front_track, wheel_radius, max_steering, max_speed})
+      if (!(v > 0 && std::isfinite(v)))
+        throw py::value_error("set_drive: the geometry, max_steering and max_speed are above 0; got " +
+                              std::to_string(v));
+    car.drive = AckermannGeometry{wheelbase, rear_track, front_track, wheel_radius};
+    car.max_steering = max_steering;
+    car.max_speed = max_speed;
   }
 
   // commands: a row per car stepped (all, or those listed in `cars`), its controllers' commands;
@@ -196,33 +232,78 @@ public:
   py::tuple step(py::array_t<double, py::array::c_style | py::array::forcecast> commands, int steps,
                  std::optional<std::vector<size_t>> cars)
   {
-    std::vector<size_t> stepped = cars ? *cars : everyCar();
-    const size_t n = stepped.size();
-    for (size_t i : stepped)
-    {
-      if (i >= slots_.size())
-        throw py::index_error("car " + std::to_string(i) + " of a batch of " + std::to_string(slots_.size()));
-      if (!slots_[i].world)
-        throw py::value_error("car " + std::to_string(i) + " of the batch was never set (CarBatch.set)");
-      slots_[i].robot.get();  // RobotRemovedError here, not on a worker thread
-    }
-    if (n == 0)
-      throw py::value_error("no car to step: `cars` is empty");
+    const std::vector<size_t> stepped = steppedCars(cars, steps);
     const size_t per_car = slots_[stepped[0]].commands.size();
-    if (commands.ndim() != 2 || size_t(commands.shape(0)) != n || size_t(commands.shape(1)) != per_car)
-      throw py::value_error("commands are " + std::to_string(n) + " x " + std::to_string(per_car) + " numbers");
+    checkRows(commands, stepped.size(), per_car, "commands");
+    const double* in = commands.data();
+    for (size_t row = 0; row < stepped.size(); ++row)
+      for (size_t c = 0; c < per_car; ++c)
+        slots_[stepped[row]].commands[c]->deliver(in[row * per_car + c]);  // refused when not finite: the last one stays
+    return run(stepped, steps);
+  }
+
+  // step with actions: a row of (steering, speed) shares per car, each given a drive (set_drive).
+  py::tuple drive(py::array_t<double, py::array::c_style | py::array::forcecast> actions, int steps,
+                  std::optional<std::vector<size_t>> cars)
+  {
+    const std::vector<size_t> stepped = steppedCars(cars, steps);
+    for (size_t i : stepped)
+      if (!slots_[i].drive)
+        throw py::value_error("car " + std::to_string(i) + " has no drive (CarBatch.set_drive)");
+    checkRows(actions, stepped.size(), 2, "actions");
+    const double* in = actions.data();
+    for (size_t row = 0; row < stepped.size(); ++row)
+    {
+      CarSlot& car = slots_[stepped[row]];
+      double commands[4];
+      driveCommands(car, in[2 * row], in[2 * row + 1], commands);
+      for (size_t c = 0; c < 4; ++c)
+        car.commands[c]->deliver(commands[c]);  // refused when not finite: the last one stays
+    }
+    return run(stepped, steps);
+  }
+
+private:
+  CarSlot& slotOf(size_t i)
+  {
+    if (i >= slots_.size())
+      throw py::index_error("car " + std::to_string(i) + " of a batch of " + std::to_string(slots_.size()));
+    if (!slots_[i].world)
+      throw py::value_error("car " + std::to_string(i) + " of the batch was never set (CarBatch.set)");
+    return slots_[i];
+  }
+
+  // The cars a step steps (all, or those listed), checked before anything is delivered.
+  std::vector<size_t> steppedCars(const std::optional<std::vector<size_t>>& cars, int steps)
+  {
+    std::vector<size_t> stepped = cars ? *cars : everyCar();
+    for (size_t i : stepped)
+      slotOf(i).robot.get();  // RobotRemovedError here, not on a worker thread
+    if (stepped.empty())
+      throw py::value_error("no car to step: `cars` is empty");
     if (steps < 1)
       throw py::value_error("steps must be at least 1; got " + std::to_string(steps));
+    return stepped;
+  }
+
+  static void checkRows(const py::array_t<double, py::array::c_style | py::array::forcecast>& rows, size_t n,
+                        size_t columns, const char* what)
+  {
+    if (rows.ndim() != 2 || size_t(rows.shape(0)) != n || size_t(rows.shape(1)) != columns)
+      throw py::value_error(std::string(what) + " are " + std::to_string(n) + " x " + std::to_string(columns) +
+                            " numbers");
+  }
+
+  // The stepped cars' worlds stepped `steps` times side by side, their cars read.
+  py::tuple run(const std::vector<size_t>& stepped, int steps)
+  {
+    const size_t n = stepped.size();
     const SensorDescription& lidar = slots_[stepped[0]].lidar->description();
     const size_t rays = size_t(lidar.horizontal_samples) * size_t(lidar.vertical_samples);
     py::array_t<float> scans({n, rays});
     py::array_t<double> state({n, kStateColumns.size()});
-    const double* in = commands.data();
     float* scan_out = scans.mutable_data();
     double* state_out = state.mutable_data();
-    for (size_t row = 0; row < n; ++row)
-      for (size_t c = 0; c < per_car; ++c)
-        slots_[stepped[row]].commands[c]->deliver(in[row * per_car + c]);  // refused when not finite: the last one stays
     // Each world once, with the rows of the cars it holds: one task steps it, then reads them.
     std::vector<WorldRows> worlds;
     for (size_t row = 0; row < n; ++row)
@@ -271,7 +352,6 @@ public:
     return py::make_tuple(scans, state);
   }
 
-private:
   static void readCar(CarSlot& car, size_t rays, float* scan, double* state)
   {
     Robot& robot = car.robot.get();
@@ -326,9 +406,13 @@ private:
       state[k++] = car.travelled;
       car.segment = along.segment;
       car.s = along.s;
+      car.laps.read(car.travelled, car.world->time());
+      state[k++] = double(car.laps.count());
+      state[k++] = car.laps.last();
+      state[k++] = car.laps.best();
     }
     else
-      for (int column = 0; column < 4; ++column)
+      for (int column = 0; column < 7; ++column)
         state[k++] = std::numeric_limits<double>::quiet_NaN();
   }
 
@@ -389,6 +473,15 @@ void init_car_batch(py::module_& m)
            "car `index` is `robot` in `world`: commanded through these controllers' Float64 commands (their "
            "order is the commands' columns), its lidar and IMU (\"\": none) enabled and read, the "
            "steering joints' positions read and, with a Centerline, where it is along it")
+      .def("set_drive", &CarBatch::setDrive, py::arg("index"), py::arg("wheelbase"), py::arg("rear_track"),
+           py::arg("front_track"), py::arg("wheel_radius"), py::arg("max_steering"), py::arg("max_speed"),
+           "car `index` (set, its controllers rear left, rear right, steer left, steer right) is driven by "
+           "drive's actions: steering and speed, each a share of max_steering (rad, the ideal middle front "
+           "wheel's) and max_speed (m/s), through this Ackermann geometry (m) as wheel_command_rows converts "
+           "them, the speed held within max_speed")
+      .def("drive", &CarBatch::drive, py::arg("actions"), py::arg("steps"), py::arg("cars") = py::none(),
+           "step, with a row of (steering, speed) shares for each car stepped (every car's, or those listed in "
+           "`cars`) converted to its controllers' commands by its drive (set_drive)")
       .def("step", &CarBatch::step, py::arg("commands"), py::arg("steps"), py::arg("cars") = py::none(),
            "each car's commands delivered, its world stepped `steps` times, all worlds side by side: every "
            "car's, or only those of the cars listed in `cars` (commands and results then a row each, in that "

@@ -76,6 +76,36 @@ double Centerline::progress(double s_from, double s_to) const
   return (ahead < 0 ? ahead + length_ : ahead) - half;
 }
 
+void LapTimer::restart(double start, double time)
+{
+  start_ = u_ = start;
+  time_ = time;
+  count_ = 0;
+  clock_ = start <= 0.0 ? time : std::numeric_limits<double>::quiet_NaN();
+  last_ = best_ = kNotTimed;
+}
+
+void LapTimer::read(double travelled, double time)
+{
+  const double u = start_ + travelled;
+  const double reached = std::floor(u / length_);
+  if (reached > double(count_))
+  {
+    const double share = u > u_ ? std::min(std::max((reached * length_ - u_) / (u - u_), 0.0), 1.0) : 1.0;
+    const double crossed = time_ + share * (time - time_);
+    const double lap = crossed - clock_;
+    if (std::isfinite(lap))
+    {
+      last_ = lap;
+      best_ = std::min(best_, lap);
+    }
+    clock_ = crossed;
+    count_ = long(reached);
+  }
+  u_ = u;
+  time_ = time;
+}
+
 void init_centerline(py::module_& m)
 {
   py::class_<Centerline, std::shared_ptr<Centerline>>(
@@ -120,6 +150,24 @@ void init_centerline(py::module_& m)
       .def("progress", &Centerline::progress, py::arg("s_from"), py::arg("s_to"),
            "how far s_to is ahead of s_from along the lap (negative: behind), across the start line too")
       .def_readonly_static("NEAR_SEGMENTS", &Centerline::kNearSegments);
+
+  py::class_<LapTimer>(m, "LapTimer",
+                       "a car's laps and lap times along a centre line of `length` (m), as CarBatch counts them "
+                       "(centerline.h): a lap is done when the car's way from the start line first reaches a "
+                       "whole number of lengths; times in simulated seconds, inf until a lap is timed")
+      .def(py::init([](double length) {
+             if (!(length > 0 && std::isfinite(length)))
+               throw py::value_error("LapTimer: a lap's length is a distance above 0 (m); got " + std::to_string(length));
+             return LapTimer(length);
+           }),
+           py::arg("length"))
+      .def("restart", &LapTimer::restart, py::arg("start"), py::arg("time"),
+           "the car starts `start` m from the start line (in (-length/2, length/2]) at `time` (s)")
+      .def("read", &LapTimer::read, py::arg("travelled"), py::arg("time"),
+           "the car has travelled this far along the centre line since its start (m), at `time` (s)")
+      .def_property_readonly("count", &LapTimer::count, "laps done")
+      .def_property_readonly("last", &LapTimer::last, "the last lap's time (s), inf before one is timed")
+      .def_property_readonly("best", &LapTimer::best, "the best lap's time (s), inf before one is timed");
 }
 
 }  // namespace python

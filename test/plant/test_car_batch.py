@@ -1,15 +1,16 @@
 """bullet_plant.CarBatch and bullet_plant.Centerline (src/python/car_batch_bindings.cpp,
 centerline_bindings.cpp): the centre line's nearest point against a brute-force search, its progress
 and errors; a batch's state rows against what the worlds and robots say themselves, progress along
-the line summed over steps, a subset of cars stepped alone, no return read as range_max, and errors
-that name the offending thing."""
+the line summed over steps, a subset of cars stepped alone, no return read as range_max, actions
+driven as the converter's Ackermann commands, and errors that name the offending thing."""
 import math
 
 import numpy as np
 import pytest
 
 from tianracer_description import bullet_plant
-from tianracer_description.racing.car import CarModel, new_world
+from tianracer_description.ackermann import wheel_command_rows
+from tianracer_description.racing.car import COMMAND_CONTROLLERS, CarModel, new_world
 from tianracer_description.racing.track import Centerline, centerline_file
 from tianracer_description.tianracer import RACE_TRACK_WORLD, STEERING_JOINTS
 
@@ -82,8 +83,9 @@ def batch_of(model, worlds, line=None, threads=1):
     return batch
 
 
-def commands(model, count, steering=0.0, speed=0.5):
-    return model.commands(np.tile([steering, speed], (count, 1)))
+def actions(count, steering=0.0, speed=0.5):
+    """Every car's action: steering and speed shares of its largest (of the model's 2 m/s: 1 m/s)."""
+    return np.tile([steering, speed], (count, 1))
 
 
 def test_state_rows_say_what_the_world_and_robot_say_and_progress_sums_along_the_line(model, track_line):
@@ -93,7 +95,7 @@ def test_state_rows_say_what_the_world_and_robot_say_and_progress_sums_along_the
     start = robot.base_pose()  # where the batch was set: the spawn pose as the plant placed it
     gained = 0.0
     for _ in range(60):
-        scans, state = batch.step(commands(model, 1, steering=0.2), 10)
+        scans, state = batch.drive(actions(1, steering=0.2), 10)
         gained += state[0, STATE['centerline_gained']]
     row = state[0]
     pose = robot.base_pose()
@@ -114,12 +116,12 @@ def test_state_rows_say_what_the_world_and_robot_say_and_progress_sums_along_the
 def test_listed_cars_step_alone_and_no_return_reads_as_range_max(model):
     worlds = [new_world(None, model.controllers) for _ in range(3)]  # empty: every ray misses
     batch = batch_of(model, worlds, threads=2)
-    scans, state = batch.step(commands(model, 3), 30)
+    scans, state = batch.drive(actions(3), 30)
     assert [w.time for w in worlds] == [pytest.approx(0.03)] * 3
     range_max = model_range_max(worlds[0])
     assert np.all(scans == np.float32(range_max))
     assert np.all(np.isnan(state[:, STATE['centerline_s']])), 'no centre line given'
-    scans, state = batch.step(commands(model, 1), 20, [2])
+    scans, state = batch.drive(actions(1), 20, [2])
     assert state.shape == (1, len(STATE)) and state[0, STATE['time']] == worlds[2].time
     assert [w.time for w in worlds] == [pytest.approx(0.03), pytest.approx(0.03), pytest.approx(0.05)]
 
@@ -133,16 +135,51 @@ def test_bad_calls_name_the_car_and_what_to_give(model):
     world = new_world(None, model.controllers)
     batch = bullet_plant.CarBatch(2, 1)
     with pytest.raises(ValueError, match='car 0 of the batch was never set'):
-        batch.step(commands(model, 2), 1)
+        batch.step(np.zeros((2, 4)), 1)
+    with pytest.raises(ValueError, match='car 0 of the batch was never set'):
+        batch.set_drive(0, 0.26, 0.16, 0.16, 0.03, 0.5, 2.0)
     model.bind(batch, 0, world, model.spawn(world, 'car', (0.0, 0.0, 0.0)))
     with pytest.raises(IndexError, match='car 5 of a batch of 2'):
-        batch.step(commands(model, 1), 1, [5])
+        batch.step(np.zeros((1, 4)), 1, [5])
     with pytest.raises(ValueError, match='commands are 1 x 4 numbers'):
-        batch.step(commands(model, 2), 1, [0])
+        batch.step(np.zeros((2, 4)), 1, [0])
+    with pytest.raises(ValueError, match='actions are 1 x 2 numbers'):
+        batch.drive(np.zeros((1, 4)), 1, [0])
     with pytest.raises(ValueError, match='no car to step'):
         batch.step(np.zeros((0, 4)), 1, [])
     with pytest.raises(ValueError, match='steps must be at least 1'):
-        batch.step(commands(model, 1), 0, [0])
+        batch.drive(actions(1), 0, [0])
+    with pytest.raises(ValueError, match='above 0'):
+        batch.set_drive(0, 0.26, 0.16, 0.16, 0.03, -0.5, 2.0)
+    other = new_world(None, model.controllers)
+    batch.set(1, other, model.spawn(other, 'car', (0.0, 0.0, 0.0)), list(COMMAND_CONTROLLERS[:2]), model.lidar, '',
+              list(STEERING_JOINTS))
+    with pytest.raises(ValueError, match='car 1 has no drive'):
+        batch.drive(actions(1), 1, [1])
+    with pytest.raises(ValueError, match='car 1 has 2 controllers; a drive commands four'):
+        batch.set_drive(1, 0.26, 0.16, 0.16, 0.03, 0.5, 2.0)
+
+
+def test_an_action_drives_the_car_as_the_converters_commands_of_its_shares_do(model):
+    """drive's (steering, speed) shares of max_steering and max_speed are wheel_command_rows' commands
+    for them, the speed held within max_speed: the same trajectory, bit for bit, as step with those."""
+    g = model.geometry
+    max_steering, max_speed = 0.3, 1.5  # within the car's: as car_params set them
+    driven, stepped = (new_world(RACE_TRACK_WORLD, model.controllers) for _ in range(2))
+    by_action, by_commands = bullet_plant.CarBatch(1, 1), bullet_plant.CarBatch(1, 1)
+    for batch, world in ((by_action, driven), (by_commands, stepped)):
+        model.bind(batch, 0, world, model.spawn(world, 'car', (0.0, 0.0, 0.0)),
+                   params={'max_steering': max_steering, 'max_speed': max_speed})
+    for k in range(40):
+        steering, speed = 1.4 * math.sin(0.3 * k), (1.7 if k < 20 else -0.6)  # beyond +-1 too: held
+        a = by_action.drive(np.array([[steering, speed]]), 10)
+        commands = wheel_command_rows(np.clip(speed * max_speed, -max_speed, max_speed), steering * max_steering,
+                                      g.wheelbase, g.rear_track, g.front_track, g.wheel_radius, max_steering)
+        b = by_commands.step(commands.reshape(1, 4), 10)
+        assert all(np.array_equal(x, y, equal_nan=True) for x, y in zip(a, b)), k  # (NaN: no centre line)
+    pose = driven.robot('car').base_pose()
+    assert np.array_equal(pose, stepped.robot('car').base_pose())
+    assert pose[0] > 0.1, 'it drove: 0.2 s forwards at 1.5 m/s, 0.2 s back at 0.9 (the car accelerating)'
 
 
 def test_helper_threads_spin_only_between_close_steps_and_never_change_results(model):
@@ -152,11 +189,11 @@ def test_helper_threads_spin_only_between_close_steps_and_never_change_results(m
     for threads, gap in ((1, 0.0), (2, 0.0003), (2, 0.02)):
         worlds = [new_world(RACE_TRACK_WORLD, model.controllers) for _ in range(3)]
         batch = batch_of(model, worlds, threads=threads)
-        batch.step(commands(model, 1), 13, [1])  # its lidar scans in other steps than the others'
+        batch.drive(actions(1), 13, [1])  # its lidar scans in other steps than the others'
         trace = []
         for k in range(15):
             time.sleep(gap)
-            trace.append(batch.step(commands(model, 3, steering=0.1 * math.sin(k)), 10))
+            trace.append(batch.drive(actions(3, steering=0.1 * math.sin(k)), 10))
         start = time.process_time()
         time.sleep(0.2)
         cpu_after[(threads, gap)] = time.process_time() - start

@@ -11,7 +11,8 @@ import pytest
 from gymnasium.utils.env_checker import check_env
 
 from suite_paths import REPOSITORY
-from tianracer_description.racing.cars import GRID_OFFSET, GRID_SPACING, LapTimer
+from tianracer_description import bullet_plant
+from tianracer_description.racing.cars import GRID_OFFSET, GRID_SPACING
 from tianracer_description.racing.env import RaceEnv
 from tianracer_description.racing.parallel_env import RaceParallelEnv
 from tianracer_description.racing.pure_pursuit import PurePursuit
@@ -58,20 +59,22 @@ def test_a_car_going_back_over_the_line_and_forward_again_counts_no_lap():
 
 
 def test_the_lap_timer_counts_a_lap_once_and_times_it_from_crossing_to_crossing():
-    timer = LapTimer(2, length=10.0)
-    timer.restart(0, -1.0, 0.0)  # behind the line: lap 1 timed from the start
-    timer.restart(1, 2.0, 0.0)   # past it: lap 1 counted, not timed
-    cars = slice(None)  # all the cars, as RaceCars reads them
+    behind, past = bullet_plant.LapTimer(10.0), bullet_plant.LapTimer(10.0)
+    behind.restart(-1.0, 0.0)  # behind the line: lap 1 timed from the start
+    past.restart(2.0, 0.0)     # past it: lap 1 counted, not timed
+    assert (behind.count, behind.last, behind.best) == (0, math.inf, math.inf)
     for time, travelled in [(1.0, (5.0, 5.0)), (2.0, (10.0, 7.0)), (3.0, (12.0, 9.0)), (4.0, (10.5, 10.0)),
                             (5.0, (11.5, 12.0)), (6.0, (20.0, 18.0)), (7.0, (22.0, 20.0))]:
-        timer.read(cars, np.array(travelled), np.full(2, time))
-    infos = timer.infos(cars)
-    assert list(infos['lap_count']) == [2, 2], 'car 0 went back over the line at 4 s and forward again: once'
+        behind.read(travelled[0], time)
+        past.read(travelled[1], time)
+    assert (behind.count, past.count) == (2, 2), 'car 0 went back over the line at 4 s and forward again: once'
     # car 0 crossed u = 10 m at 2.5 s (from 9 to 11 m in 2-3 s) and u = 20 m at 6.5 s
     # (lap 1 from the start)
-    assert infos['last_lap_time'][0] == pytest.approx(4.0) and infos['best_lap_time'][0] == pytest.approx(2.5)
+    assert behind.last == pytest.approx(4.0) and behind.best == pytest.approx(2.5)
     # car 1 crossed u = 10 m at 2.5 s (from 9 to 11 m in 2-3 s; untimed) and u = 20 m at 6.0 s
-    assert infos['last_lap_time'][1] == pytest.approx(3.5) and infos['best_lap_time'][1] == pytest.approx(3.5)
+    assert past.last == pytest.approx(3.5) and past.best == pytest.approx(3.5)
+    with pytest.raises(ValueError, match='above 0'):
+        bullet_plant.LapTimer(0.0)
 
 
 def test_frenet_coordinates_and_curvature_ahead_of_a_known_pose():

@@ -1,6 +1,7 @@
 """The car an environment races: any URDF car driven by the tutorial's four joint controllers, spawned
 into a world of the plant with the tutorial's YAML, and an action turned into their commands through
-the converter's Ackermann conversion (ackermann.py, as cmdvel2gazebo.py does it).
+the converter's Ackermann conversion (in bullet_plant.CarBatch.drive, the C++ that cmdvel2gazebo.py's
+conversion calls too: ackermann.py).
 
 The default car is the tutorial's Tianracer with its IMU (xacro imu:=true). Its parameters (CAR_PARAMS)
 may differ car by car, for domain randomisation: its mass and its tyres' friction are written into the
@@ -13,11 +14,10 @@ import functools
 import math
 import xml.etree.ElementTree as ET
 
-import numpy as np
 import yaml
 
 from tianracer_description import bullet_plant
-from tianracer_description.ackermann import max_ideal_steering, wheel_command_rows
+from tianracer_description.ackermann import max_ideal_steering
 from tianracer_description.tianracer import (CONFIG_YAML, MODEL_XACRO, REAR_WHEEL_CONTROLLERS, STEERING_CONTROLLERS,
                                              STEERING_JOINTS, TUTORIAL_CONTROLLERS, run_xacro)
 from tianracer_description.urdf_geometry import DEFAULT_JOINTS, UrdfModel, ackermann_geometry
@@ -139,7 +139,6 @@ class CarModel:
         if not (math.isfinite(max_speed) and max_speed > 0):
             raise ValueError('max_speed is a speed in m/s above 0; got %r' % (max_speed,))
         self.max_speed = float(max_speed)
-        self.largest = np.array([self.max_steering, self.max_speed])  # what an action of 1 asks for
         self.lidar, self.imu = lidar, imu
         self.mass, self.mu = urdf_mass(self.urdf), urdf_tyre_mu(self.urdf)
         # (mass, mu, chase_camera): the URDF spawned, the newest SPAWN_URDFS_KEPT (domain randomisation
@@ -174,19 +173,6 @@ class CarModel:
             params[name] = value
         return params
 
-    def commands(self, actions, largest=None):
-        """Actions (a row of steering, speed per car, each in [-1, 1] of the car's largest: `largest`, a
-        row of max_steering, max_speed per car, or the model's) as the four controllers' commands, a row
-        per car in COMMAND_CONTROLLERS' order: the converter's wheel_commands (as rows)."""
-        largest = self.largest if largest is None else largest
-        # wheel_command_rows holds the steering within [-max_steering, max_steering]; the speed is held here
-        scaled = np.asarray(actions, np.float64).reshape(-1, 2) * largest
-        max_steering, max_speed = (largest[..., 0], largest[..., 1])
-        speed = np.minimum(np.maximum(scaled[:, 1], -max_speed), max_speed)
-        g = self.geometry
-        return wheel_command_rows(speed, scaled[:, 0], g.wheelbase, g.rear_track, g.front_track, g.wheel_radius,
-                                  max_steering)
-
     def spawn_urdf(self, params=None, chase_camera=False):
         """The URDF a car of these parameters (None: the defaults) is spawned from, made once."""
         mass, mu = (self.mass, self.mu) if params is None else (params['mass'], params['mu'])
@@ -212,11 +198,17 @@ class CarModel:
             robot.enable_sensor(CHASE_CAMERA)
         return robot
 
-    def bind(self, batch, index, world, robot, centerline=None):
+    def bind(self, batch, index, world, robot, centerline=None, params=None):
         """Car `index` of a bullet_plant.CarBatch is this car, `robot` in `world`, measured along
-        `centerline` (a Centerline, or None)."""
+        `centerline` (a Centerline, or None), driven by actions (CarBatch.drive: steering and speed, each
+        a share of the car's largest, through its Ackermann geometry) within `params`' max_steering and
+        max_speed (None: the model's)."""
         batch.set(index, world, robot, list(COMMAND_CONTROLLERS), self.lidar, self.imu or '', list(STEERING_JOINTS),
                   centerline)
+        params = params or self.default_params()
+        g = self.geometry
+        batch.set_drive(index, g.wheelbase, g.rear_track, g.front_track, g.wheel_radius, params['max_steering'],
+                        params['max_speed'])
 
 
 def new_world(world_file, controllers, noise_seed=0, time_step=None):

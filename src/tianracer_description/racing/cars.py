@@ -14,7 +14,8 @@ positive) that far ahead of s. The line of these two: frenet_line, 'centerline' 
 'raceline' (the track's race line; the centre line where it has none).
 
 Info: progress, laps (track lengths travelled since the start), lap_count, last_lap_time,
-best_lap_time (see LapTimer), time, crashed, car_params (the car's parameters, CAR_PARAMS).
+best_lap_time (bullet_plant.LapTimer's, counted by the CarBatch), time, crashed, car_params (the car's
+parameters, CAR_PARAMS).
 
 Starts (reset's options={'start': ...}): None, the environment's default; 'grid', the staggered grid
 behind the start line (one car alone: the pole); 'random', a uniformly random point of the centre line
@@ -121,59 +122,6 @@ class FrenetObserver:
         if len(self.ahead):
             parts['curvature_ahead'] = self.line.curvature_at(frenet[:, :1] + self.ahead).astype(np.float32)
         return parts
-
-
-class LapTimer:
-    """Each car's laps and lap times. Where a car is along the track: u, metres from the start line (s =
-    0) in the direction of racing, from its start (counted from the nearest crossing of the line: in
-    (-length/2, length/2]) plus what it has travelled along the centre line since. A lap is done when u
-    first reaches a whole number of track lengths (1, 2, ...): a car that goes back over the line and
-    forward again counts it once. It is timed from the crossing before it, found between two reads by
-    interpolation (a car covers less than a lap a read); the first lap from the start when the car
-    started on or behind the line (a grid start: as a race times its first lap, from the lights), and
-    not at all when it started past it (short of a whole lap). Times are simulated seconds; inf until a
-    lap is timed (NaN would make two equal infos unequal: Gymnasium's check_env compares them)."""
-
-    def __init__(self, count, length):
-        self.length = length
-        self.start = np.zeros(count)  # u at the start (m)
-        self.count = np.zeros(count, np.int64)
-        self.clock = np.full(count, np.nan)  # when the lap under way started (s); NaN: it is not timed
-        self.last, self.best = np.full(count, np.inf), np.full(count, np.inf)
-        self.u, self.time = np.zeros(count), np.zeros(count)  # at the last read
-
-    def restart(self, i, start, time):
-        """Car i starts at u = `start` (m) at `time` (s)."""
-        self.start[i], self.count[i], self.u[i], self.time[i] = start, 0, start, time
-        self.clock[i] = time if start <= 0.0 else np.nan
-        self.last[i] = self.best[i] = np.inf
-
-    def read(self, cars, travelled, time):
-        """The cars (a slice of them: all, or one) have travelled this far along the centre line since
-        their start (m), at `time` (s). Once a step for every car: the step where no car completes a
-        lap (nearly all of them) is a few array operations on views."""
-        u = self.start[cars] + travelled
-        reached = np.floor(u / self.length)
-        counted = self.count[cars]
-        if not (reached > counted).any():
-            self.u[cars], self.time[cars] = u, time
-            return
-        first = cars.start or 0
-        for row in np.flatnonzero(reached > counted):
-            i = first + int(row)
-            before, after = self.u[i], u[row]
-            share = min(max((reached[row] * self.length - before) / (after - before), 0.0), 1.0) if after > before else 1.0
-            crossed = self.time[i] + share * (time[row] - self.time[i])
-            lap = crossed - self.clock[i]
-            if math.isfinite(lap):
-                self.last[i] = lap
-                self.best[i] = min(self.best[i], lap)
-            self.clock[i], self.count[i] = crossed, int(reached[row])
-        self.u[cars], self.time[cars] = u, time
-
-    def infos(self, cars):
-        return {'lap_count': self.count[cars].copy(), 'last_lap_time': self.last[cars].copy(),
-                'best_lap_time': self.best[cars].copy()}
 
 
 def action_space():
@@ -297,9 +245,7 @@ class RaceCars:
         self.worlds, self.robots = [None] * count, [None] * count
         self.params = [model.default_params() for _ in range(count)]
         self._set_param_columns()
-        self._largest = np.tile(model.largest, (count, 1))  # each car's max_steering, max_speed
-        self._still = self.model.commands(np.zeros((count, 2)))
-        self.laps = LapTimer(count, track.centerline.length)
+        self._still = np.zeros((count, 2))  # the actions that hold the cars still
 
     def car_params(self, given, keys):
         """Each car's parameters from reset's options['car_params'] (`given`): None (the defaults), one
@@ -325,7 +271,6 @@ class RaceCars:
         """Car i's parameters (a dict of CAR_PARAMS, complete: model.params'), from its next placing on."""
         self.params[i] = dict(params)
         self._set_param_columns()
-        self._largest[i] = (params['max_steering'], params['max_speed'])
 
     def _set_param_columns(self):
         """The infos' car_params, a column per parameter, made when a parameter changes."""
@@ -347,32 +292,23 @@ class RaceCars:
         world = world or self.new_world(noise_seed)
         self.worlds[i] = world
         self.robots[i] = self.model.spawn(world, self.names[i], pose, self.chase_camera, self.params[i])
-        self.model.bind(self.batch, i, world, self.robots[i], self.track.centerline)
-        line = self.track.centerline
-        self.laps.restart(i, line.progress(0.0, line.project(pose[0], pose[1])[0]), world.time)
+        self.model.bind(self.batch, i, world, self.robots[i], self.track.centerline, self.params[i])
 
     def settle(self, i=None):
         """(scans, state) after one physics step with the cars held still (their first scan, their
         controllers' first update): all cars, or car i alone (its world stepped; the others' are not)."""
         if i is None:
-            scans, state = self.batch.step(self._still, 1)
-        else:
-            scans, state = self.batch.step(self._still[i:i + 1], 1, [i])
-        self._read_laps(state, i)
-        return scans, state
+            return self.batch.drive(self._still, 1)
+        return self.batch.drive(self._still[i:i + 1], 1, [i])
 
     def step(self, actions, steps, still=None):
         """(scans, state, rewards) after every car's action held for `steps` physics steps; cars where
         `still` is True are held still. The rewards: metres gained along the centre line."""
-        commands = self.model.commands(actions, self._largest)
         if still is not None:
-            commands[still] = self._still[still]
-        scans, state = self.batch.step(commands, steps)
-        self._read_laps(state)
+            actions = np.array(actions, np.float64).reshape(-1, 2)
+            actions[still] = 0.0
+        scans, state = self.batch.drive(np.asarray(actions, np.float64).reshape(-1, 2), steps)
         return scans, state, state[:, STATE['centerline_gained']]
-
-    def _read_laps(self, state, i=None):
-        self.laps.read(self._cars(i), state[:, STATE['centerline_travelled']], state[:, STATE['time']])
 
     def observations(self, scans, state):
         """The cars' observations, a dict of arrays with a row per car."""
@@ -387,12 +323,13 @@ class RaceCars:
     def infos(self, state, i=None):
         """The infos of the cars whose rows `state` holds (all, or car i alone), a dict of arrays:
         progress (m along the centre line), laps (track lengths travelled since the car was placed),
-        lap_count, last_lap_time and best_lap_time (LapTimer's), time (s, simulated), crashed, and
-        car_params (a dict of arrays: the cars' parameters)."""
+        lap_count, last_lap_time and best_lap_time (bullet_plant.LapTimer's), time (s, simulated),
+        crashed, and car_params (a dict of arrays: the cars' parameters)."""
         cars = self._cars(i)
         return {'progress': state[:, STATE['centerline_s']],
                 'laps': state[:, STATE['centerline_travelled']] / self.track.centerline.length,
-                **self.laps.infos(cars),
+                'lap_count': state[:, STATE['lap_count']].astype(np.int64),
+                'last_lap_time': state[:, STATE['last_lap_time']], 'best_lap_time': state[:, STATE['best_lap_time']],
                 'time': state[:, STATE['time']], 'crashed': self.crashed(state),
                 'car_params': {name: column[cars].copy() for name, column in self._param_columns.items()}}
 
