@@ -310,6 +310,31 @@ def test_lidar_sees_past_what_is_nearer_than_its_minimum_range_and_sees_other_ro
     assert 0.5 < ahead < other_lidar - robot.link_pose('laser_link')[0], 'the other car is in front of the wall'
 
 
+def test_a_robot_alone_scans_the_world_and_one_that_comes_goes_and_comes_back_is_seen_where_it_is(
+        urdf_xml, control_config):
+    # Alone, a robot's rays are cast at the static shapes only (its own bodies hidden): the level that
+    # holds the robots' bodies is not committed then, and must be when another robot comes, with every
+    # body where it is by then, and left again when it goes.
+    world, robot = lidar_world(urdf_xml, control_config)
+    robot.enable_sensor('lidar')
+
+    def ahead():
+        world.step(25)
+        scan = robot.scan('lidar')
+        return scan['ranges'][np.argmin(np.abs(scan_angles(scan)))]
+    lidar_x = robot.link_pose('laser_link')[0]
+    wall = ahead()
+    assert wall == pytest.approx(WALL_X - lidar_x, abs=0.02), 'alone: the wall'
+    for x in (1.2, 0.8):
+        other = world.spawn(urdf_xml, 'other', pose=(x, 0.0, 0.0, 0, 0, math.pi))
+        world.step(50)
+        seen = ahead()
+        assert 0.2 < seen < x - lidar_x, 'the other car at x = %g, in front of the wall' % x
+        world.remove('other')
+        assert ahead() == pytest.approx(wall, abs=0.02), 'gone: the wall again'
+        assert robot.link_pose('laser_link')[0] == pytest.approx(lidar_x, abs=1e-3), 'the robot held still'
+
+
 def test_lidar_works_only_while_enabled_at_its_rate_in_sim_time(urdf_xml, control_config):
     world, robot = lidar_world(urdf_xml, control_config)
     world.step(1000)

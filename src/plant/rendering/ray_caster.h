@@ -144,12 +144,16 @@ private:
   // allows from any number of threads.
   static std::shared_ptr<ShapeSet> staticSet(RTCDevice device, const std::vector<RayPrimitive>& shapes, bool robust);
   void attach(Instance& instance);
+  // A new instance of `instance`'s set at its pose in `level`; its geometry id there.
+  unsigned attachInstance(RTCScene level, const Instance& instance) const;
   // The primitive, triangle and world normal (facing the ray) of an Embree hit.
   void resolve(const RTCRayHit& hit, RayHit& out) const;
 
   const EmbreeIsa isa_;
   const RTCDevice device_;
   RTCScene top_ = nullptr;
+  RTCScene statics_top_ = nullptr;  // instances_[0] and [1] alone, committed once
+  RTCScene cast_scene_ = nullptr;   // the level rays are cast into, as the last commit chose
   // [0]: the world's static shapes but planes, [1] its planes (robust traversal); the rest robots'
   // bodies (null set: removed)
   std::vector<Instance> instances_;
