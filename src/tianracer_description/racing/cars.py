@@ -32,8 +32,9 @@ from tianracer_description.racing.f1tenth_map import WALL_HEIGHT, MapTrack
 from tianracer_description.racing.track import Centerline, centerline_file
 
 STATE = {name: k for k, name in enumerate(bullet_plant.CarBatch.STATE)}
-# The state's columns an observation holds, in this order: speed, steering, the IMU's six.
+# The state's columns an observation holds, in this order: speed, steering, the IMU's six; and observe_pose's.
 OBSERVED = [STATE['speed']] + list(range(STATE['steering'], STATE['linear_acceleration_z'] + 1))
+POSE = [STATE['x'], STATE['y'], STATE['yaw']]
 def draw_noise_seed(rng):
     """A seed for a new world's sensor noise, drawn from an environment's generator (never 0, the
     plant's unseeded default)."""
@@ -108,7 +109,10 @@ class FrenetObserver:
         return parts
 
     def observations(self, state):
-        """The observations' frenet and curvature_ahead entries, a row per car of `state`."""
+        """The observations' frenet and curvature_ahead entries, a row per car of `state` (one car's
+        row, 1-D: that car's)."""
+        if state.ndim == 1:
+            return {key: value[0] for key, value in self.observations(state[np.newaxis]).items()}
         x, y, yaw = state[:, STATE['x']], state[:, STATE['y']], state[:, STATE['yaw']]
         if self.on_centerline:
             s, ey = state[:, STATE['centerline_s']], state[:, STATE['centerline_offset']]
@@ -311,11 +315,13 @@ class RaceCars:
         return scans, state, state[:, STATE['centerline_gained']]
 
     def observations(self, scans, state):
-        """The cars' observations, a dict of arrays with a row per car."""
-        observed = state[:, OBSERVED].astype(np.float32)
-        observations = {'scan': scans, 'speed': observed[:, 0:1], 'steering': observed[:, 1:2], 'imu': observed[:, 2:]}
+        """The cars' observations, a dict of arrays with a row per car; for one car's scan and state
+        rows (1-D), its observation."""
+        observed = state[..., OBSERVED].astype(np.float32)
+        observations = {'scan': scans, 'speed': observed[..., 0:1], 'steering': observed[..., 1:2],
+                        'imu': observed[..., 2:]}
         if self.observe_pose:
-            observations['pose'] = state[:, [STATE['x'], STATE['y'], STATE['yaw']]].astype(np.float32)
+            observations['pose'] = state[..., POSE].astype(np.float32)
         if self.frenet is not None:
             observations.update(self.frenet.observations(state))
         return observations
@@ -324,17 +330,21 @@ class RaceCars:
         """The infos of the cars whose rows `state` holds (all, or car i alone), a dict of arrays:
         progress (m along the centre line), laps (track lengths travelled since the car was placed),
         lap_count, last_lap_time and best_lap_time (bullet_plant.LapTimer's), time (s, simulated),
-        crashed, and car_params (a dict of arrays: the cars' parameters)."""
-        cars = self._cars(i)
-        return {'progress': state[:, STATE['centerline_s']],
-                'laps': state[:, STATE['centerline_travelled']] / self.track.centerline.length,
-                'lap_count': state[:, STATE['lap_count']].astype(np.int64),
-                'last_lap_time': state[:, STATE['last_lap_time']], 'best_lap_time': state[:, STATE['best_lap_time']],
-                'time': state[:, STATE['time']], 'crashed': self.crashed(state),
-                'car_params': {name: column[cars].copy() for name, column in self._param_columns.items()}}
+        crashed, and car_params (a dict of arrays: the cars' parameters). For car i's state row alone
+        (1-D), its info, a dict of numbers."""
+        if state.ndim == 1:
+            params = {name: column[i] for name, column in self._param_columns.items()}
+        else:
+            cars = self._cars(i)
+            params = {name: column[cars].copy() for name, column in self._param_columns.items()}
+        return {'progress': state[..., STATE['centerline_s']],
+                'laps': state[..., STATE['centerline_travelled']] / self.track.centerline.length,
+                'lap_count': np.int64(state[..., STATE['lap_count']]),
+                'last_lap_time': state[..., STATE['last_lap_time']], 'best_lap_time': state[..., STATE['best_lap_time']],
+                'time': state[..., STATE['time']], 'crashed': self.crashed(state), 'car_params': params}
 
     def crashed(self, state):
-        return state[:, STATE['crashed']] > 0
+        return state[..., STATE['crashed']] > 0
 
 
 def row(arrays, i):

@@ -33,7 +33,7 @@ the same.
 import gymnasium
 
 from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, check_physics_dt, draw_noise_seed,
-                                               observation_space, race_parts, row, steps_per_action)
+                                               observation_space, race_parts, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second
 
@@ -77,16 +77,16 @@ class RaceEnv(gymnasium.Env):
         scans, state = self._cars.settle()
         if self.render_mode == 'human':
             self.render()
-        return row(self._cars.observations(scans, state), 0), row(self._cars.infos(state), 0)
+        return self._cars.observations(scans[0], state[0]), self._cars.infos(state[0], 0)
 
     def step(self, action):
         if self._steps is None:
             raise RuntimeError('call reset() before step()')
         scans, state, rewards = self._cars.step(action, self._steps)
-        info = row(self._cars.infos(state), 0)
+        info = self._cars.infos(state[0], 0)
         if self.render_mode == 'human':
             self.render()
-        return row(self._cars.observations(scans, state), 0), float(rewards[0]), bool(info['crashed']), False, info
+        return self._cars.observations(scans[0], state[0]), float(rewards[0]), bool(info['crashed']), False, info
 
     def render(self):
         """The view's frame (H x W x 3, uint8) for "rgb_array"; None for "human" (shown in the window),
