@@ -68,7 +68,9 @@ protected:
 
   SensorDescription description_;
   uint32_t noise_seed_;
-  std::mt19937 noise_;
+  // 64 bits a draw: Boost's ziggurat (the lidar's noise) takes a normal sample from one draw of a
+  // 64-bit engine and from two of a 32-bit one
+  std::mt19937_64 noise_;
   bool active_ = false;
   uint64_t updates_ = 0;
   uint64_t skipped_ = 0;
