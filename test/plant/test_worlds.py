@@ -298,6 +298,34 @@ def test_shipped_worlds_read_by_file_as_by_text():
         assert math.isfinite(by_file.time_step)
 
 
+def test_worlds_made_from_one_parsed_description_are_the_world_file_each_time_and_apart(tmp_path, model_path):
+    # WorldDescription: a world file parsed once (a racing environment's every reset makes its
+    # world from it). Each world is the one from_file makes, warnings and <model>s included, and
+    # worlds made from one description share nothing that moves.
+    make_model(model_path, 'wall', BOX_COLLISION.format(name='c', pose='0 0 0.5 0 0 0', size='1 0.1 1'))
+    world_file = write(tmp_path / 'w.world', f"""<?xml version="1.0"?>
+<sdf version="1.6"><world name="described">
+  <include><uri>model://ground_plane</uri></include>
+  <include><uri>model://wall</uri><pose>2 0 0 0 0 0.3</pose></include>
+  <include><uri>model://nowhere</uri></include>
+  <model name="crate"><pose>0 0 1 0 0 0</pose><link name="l"><inertial><mass>1</mass></inertial>
+    <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision></link></model>
+</world></sdf>""")
+    description = bullet_plant.WorldDescription.from_file(str(world_file))
+    assert (description.name, description.file, description.max_step_size) == ('described', str(world_file), 0.001)
+    by_file = load(str(world_file))
+    made = [bullet_plant.World(description) for _ in range(2)]
+    for world in made:
+        world.echo = False
+        assert world.file == str(world_file)
+        assert repr(world.static_collisions()) == repr(by_file.static_collisions())
+        assert logged(world, 'WARN') == logged(by_file, 'WARN') and logged(world, 'WARN'), 'model://nowhere, once'
+    made[0].step(500)  # the crate falls in the first world only
+    by_file.step(500)
+    assert made[0].robot('crate').base_pose() == pytest.approx(by_file.robot('crate').base_pose(), abs=0.0)
+    assert made[0].robot('crate').base_pose()[2] < 0.2 and made[1].robot('crate').base_pose()[2] == 1.0
+
+
 @pytest.mark.ros
 def test_node_stops_on_a_malformed_world_naming_file_and_line(ros, tmp_path):
     bad = write(tmp_path / 'bad.world', '<sdf version="1.6">\n<world name="w">\n<model name="m">\n</world></sdf>\n')

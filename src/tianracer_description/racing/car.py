@@ -211,11 +211,15 @@ class CarModel:
                         params['max_speed'])
 
 
-def new_world(world_file, controllers, noise_seed=0, time_step=None):
-    """A world of the plant from a world file (None: an empty one), with the controllers' YAML loaded,
-    quiet, its sensors' noise seeded by `noise_seed` (0: by their names alone), its physics step
-    `time_step` s (None: the world file's <max_step_size>)."""
-    world = bullet_plant.World.from_file(world_file) if world_file else bullet_plant.World()
+def new_world(world, controllers, noise_seed=0, time_step=None):
+    """A world of the plant from a world file, or a bullet_plant.WorldDescription (a world file parsed
+    once), or None (an empty world), with the controllers' YAML loaded, quiet, its sensors' noise
+    seeded by `noise_seed` (0: by their names alone), its physics step `time_step` s (None: the world
+    file's <max_step_size>)."""
+    if isinstance(world, bullet_plant.WorldDescription):
+        world = bullet_plant.World(world)
+    else:
+        world = bullet_plant.World.from_file(world) if world else bullet_plant.World()
     if time_step is not None:
         world.time_step = time_step
     world.noise_seed = noise_seed

@@ -218,10 +218,18 @@ class RaceTrack:
         return [pose if pose is not None else draw(rng, index) for index, pose in enumerate(given)]
 
     @property
+    def description(self):
+        """The world file parsed (a bullet_plant.WorldDescription), once: every reset makes its world
+        from it without parsing the file again."""
+        if not hasattr(self, '_description'):
+            self._description = bullet_plant.WorldDescription.from_file(self.world_file)
+        return self._description
+
+    @property
     def ground_mu(self):
         """The ground's friction coefficient: the smallest of the world's planes' (inf: no plane)."""
         if not hasattr(self, '_ground_mu'):
-            planes = [c['mu'] for c in bullet_plant.World.from_file(self.world_file).static_collisions()
+            planes = [c['mu'] for c in bullet_plant.World(self.description).static_collisions()
                       if c['kind'] == 'plane']
             self._ground_mu = min(planes) if planes else math.inf
         return self._ground_mu
@@ -286,7 +294,7 @@ class RaceCars:
 
     def new_world(self, noise_seed):
         """A world of the track for the cars, its sensors' noise seeded by `noise_seed`."""
-        return new_world(self.track.world_file, self.model.controllers, noise_seed, self.physics_dt)
+        return new_world(self.track.description, self.model.controllers, noise_seed, self.physics_dt)
 
     def place(self, i, pose, world=None, noise_seed=0):
         """Car i spawned at pose (x, y, yaw) into `world` (shared with other cars), or into a new world
