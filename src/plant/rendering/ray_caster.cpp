@@ -156,24 +156,15 @@ void transformedVertices(const Frame& frame, const float* vertices, int count, R
   }
 }
 
-RTCGeometry triangleGeometry(RTCDevice device, const Frame& frame, const std::vector<float>& vertices,
-                             const std::vector<int>& indices)
-{
-  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  transformedVertices(frame, vertices.data(), int(vertices.size() / 3), g);
-  unsigned* out = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(unsigned), indices.size() / 3));
-  std::copy(indices.begin(), indices.end(), out);
-  return g;
-}
-
-RTCGeometry quadGeometry(RTCDevice device, const Frame& frame, const std::vector<float>& vertices,
+// Faces of `corners` vertices each (3: triangles, 4: quads), `indices` `corners` to a face.
+RTCGeometry faceGeometry(RTCDevice device, int corners, const Frame& frame, const std::vector<float>& vertices,
                          const std::vector<int>& indices)
 {
-  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_QUAD);
+  RTCGeometry g = rtcNewGeometry(device, corners == 4 ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
   transformedVertices(frame, vertices.data(), int(vertices.size() / 3), g);
-  unsigned* out = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
-                                                                 4 * sizeof(unsigned), indices.size() / 4));
+  unsigned* out = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      g, RTC_BUFFER_TYPE_INDEX, 0, corners == 4 ? RTC_FORMAT_UINT4 : RTC_FORMAT_UINT3, corners * sizeof(unsigned),
+      indices.size() / size_t(corners)));
   std::copy(indices.begin(), indices.end(), out);
   return g;
 }
@@ -479,14 +470,14 @@ struct RayScene::ShapeSet
       {
         case Shape::Kind::Box:
           boxQuads(p.half, vertices, indices);
-          g = quadGeometry(device, p.frame, vertices, indices);
+          g = faceGeometry(device, 4, p.frame, vertices, indices);
           break;
         case Shape::Kind::Plane:
           planeTriangles(p.normal, vertices, indices);
-          g = triangleGeometry(device, p.frame, vertices, indices);
+          g = faceGeometry(device, 3, p.frame, vertices, indices);
           break;
         case Shape::Kind::Mesh:
-          g = triangleGeometry(device, p.frame, p.mesh->vertices, p.mesh->indices);
+          g = faceGeometry(device, 3, p.frame, p.mesh->vertices, p.mesh->indices);
           break;
         case Shape::Kind::Sphere:
         case Shape::Kind::Cylinder:
