@@ -427,7 +427,9 @@ def test_a_camera_overlay_shows_the_cameras_frames_and_is_unsubscribed_when_turn
 @pytest.mark.slow
 def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
     """The car's lidar ticked: its hit points, drawn in its link as the page poses it, lie on the race
-    track's walls and cones (within 3 cm: the lidar's noise)."""
+    track's walls and cones (within 5 cm: five standard deviations of the lidar's 1 cm noise; at three,
+    a scan's 1081 draws pass it now and then: one point at 3.16 cm in the first scan of stop 50's
+    noise engine)."""
     from tianracer_description.tianracer import RACE_TRACK_WORLD
     _, _, driver, _ = page
     topic = '/scan'
@@ -440,8 +442,8 @@ def test_a_lidar_overlay_draws_the_scans_hits_on_the_walls(page):
     assert len(points) > 500
 
     def off_everything(p):
-        return (min(distance_to_box(p, w) for w in walls) > 0.03 and
-                all(abs(math.hypot(p[0] - c[0], p[1] - c[1]) - r) > 0.03 for c, r in cones))
+        return (min(distance_to_box(p, w) for w in walls) > 0.05 and
+                all(abs(math.hypot(p[0] - c[0], p[1] - c[1]) - r) > 0.05 for c, r in cones))
     off = [p for p in points if off_everything(p)]
     assert not off, '%d of %d points off the walls and cones, e.g. %s' % (len(off), len(points), off[:3])
 
