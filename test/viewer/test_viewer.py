@@ -54,7 +54,14 @@ def browser():
                      # WebGL on the CPU where there is no GPU (SwiftShader, chromium's own)
                      '--use-angle=swiftshader', '--enable-unsafe-swiftshader'):
         options.add_argument(argument)
-    return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+    from selenium.common.exceptions import WebDriverException
+    from urllib3.exceptions import MaxRetryError
+    try:
+        return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+    except (WebDriverException, MaxRetryError):
+        # Once in CI (stop 50) chromedriver answered on its port and then refused the session it was
+        # started for ("Connection refused" on POST /session); selenium stops it: a new one, once.
+        return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
 
 def wait_for(driver, script, timeout, what):
