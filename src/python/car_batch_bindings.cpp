@@ -67,19 +67,22 @@ struct CarSlot
   double s = 0;                 // and its arc length there
   double travelled = 0;         // along the line since set
   LapTimer laps;
-  // set_drive's: an action's steering and speed shares are of these, through this geometry
-  std::optional<AckermannGeometry> drive;
-  double max_steering = 0, max_speed = 0;  // rad, m/s
+  struct Drive  // set_drive's: an action's steering and speed shares are of these, through this geometry
+  {
+    AckermannGeometry geometry;
+    double max_steering, max_speed;  // rad, m/s
+  };
+  std::optional<Drive> drive;
 };
 
 // The drive's four controllers' commands (rear left, rear right, steer left, steer right) for an
 // action: steering and speed, each a share of the car's largest; the speed held within max_speed
 // (ackermannWheelCommands holds the steering; a NaN stays NaN, which the controllers refuse).
-void driveCommands(const CarSlot& car, double steering_share, double speed_share, double out[4])
+void driveCommands(const CarSlot::Drive& drive, double steering_share, double speed_share, double out[4])
 {
-  const double speed = speed_share * car.max_speed;
-  const double held = speed > car.max_speed ? car.max_speed : speed < -car.max_speed ? -car.max_speed : speed;
-  ackermannWheelCommands(held, steering_share * car.max_steering, car.max_steering, *car.drive, out);
+  const double speed = speed_share * drive.max_speed;
+  const double held = speed > drive.max_speed ? drive.max_speed : speed < -drive.max_speed ? -drive.max_speed : speed;
+  ackermannWheelCommands(held, steering_share * drive.max_steering, drive.max_steering, drive.geometry, out);
 }
 
 void spinPause()
@@ -222,9 +225,7 @@ public:
       if (!(v > 0 && std::isfinite(v)))
         throw py::value_error("set_drive: the geometry, max_steering and max_speed are above 0; got " +
                               std::to_string(v));
-    car.drive = AckermannGeometry{wheelbase, rear_track, front_track, wheel_radius};
-    car.max_steering = max_steering;
-    car.max_speed = max_speed;
+    car.drive = CarSlot::Drive{{wheelbase, rear_track, front_track, wheel_radius}, max_steering, max_speed};
   }
 
   // commands: a row per car stepped (all, or those listed in `cars`), its controllers' commands;
@@ -256,7 +257,7 @@ public:
     {
       CarSlot& car = slots_[stepped[row]];
       double commands[4];
-      driveCommands(car, in[2 * row], in[2 * row + 1], commands);
+      driveCommands(*car.drive, in[2 * row], in[2 * row + 1], commands);
       for (size_t c = 0; c < 4; ++c)
         car.commands[c]->deliver(commands[c]);  // refused when not finite: the last one stays
     }
