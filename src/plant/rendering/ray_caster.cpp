@@ -608,7 +608,7 @@ unsigned RayScene::attachInstance(RTCScene level, const Instance& instance) cons
   float m[12];
   frameToColumnMajor(instance.pose, m);
   rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
-  rtcSetGeometryMask(g, kSeenByAll);
+  rtcSetGeometryMask(g, instance.mask);
   rtcCommitGeometry(g);
   const unsigned id = rtcAttachGeometry(level, g);
   rtcReleaseGeometry(g);
@@ -628,6 +628,7 @@ int RayScene::addBody(const void* owner, std::vector<RayPrimitive> shapes)
   Instance instance;
   instance.set = std::make_shared<ShapeSet>(device_, std::move(shapes));
   instance.owner = owner;
+  instance.mask = takeRobotBit(owner);
   // A removed body's slot is taken again, so a world that spawns and deletes models all day keeps
   // its size (each slot left behind was some 130 bytes a body).
   auto slot = std::find_if(instances_.begin(), instances_.end(), [](const Instance& i) { return !i.set; });
@@ -636,8 +637,8 @@ int RayScene::addBody(const void* owner, std::vector<RayPrimitive> shapes)
   else
     *slot = std::move(instance);
   attach(*slot);
-  if (owner == hidden_)
-    hidden_ = nullptr;  // the next commit hides it too
+  if (owner == masked_out_)
+    masked_out_ = nullptr;  // the next commit masks this body out too
   changed_ = true;
   return int(slot - instances_.begin());
 }
@@ -652,9 +653,42 @@ void RayScene::removeOwner(const void* owner)
       instance.set.reset();
       instance.owner = nullptr;
     }
-  if (owner == hidden_)
-    hidden_ = nullptr;
+  robot_bits_.erase(std::remove_if(robot_bits_.begin(), robot_bits_.end(),
+                                   [&](const std::pair<const void*, unsigned>& b) { return b.first == owner; }),
+                    robot_bits_.end());
+  if (owner == masked_out_)
+    masked_out_ = nullptr;
   changed_ = true;
+}
+
+namespace
+{
+constexpr unsigned kFirstRobotBit = 1u << 2;  // bits 0 and 1 are SeenBy's
+constexpr unsigned kSharedRobotBit = 1u << 31;
+constexpr unsigned kRobotBits = ~unsigned(kSeenByAll);
+static_assert(kFirstRobotBit << (RayScene::kRobotMaskBits - 1) == kSharedRobotBit >> 1,
+              "the robots' own bits lie between SeenBy's and the shared one");
+}  // namespace
+
+unsigned RayScene::robotBit(const void* owner) const
+{
+  for (const auto& b : robot_bits_)
+    if (b.first == owner)
+      return b.second;
+  return 0;
+}
+
+unsigned RayScene::takeRobotBit(const void* owner)
+{
+  if (const unsigned bit = robotBit(owner))
+    return bit;
+  unsigned bit = kFirstRobotBit;
+  while (bit != kSharedRobotBit &&
+         std::any_of(robot_bits_.begin(), robot_bits_.end(),
+                     [&](const std::pair<const void*, unsigned>& b) { return b.second == bit; }))
+    bit <<= 1;
+  robot_bits_.emplace_back(owner, bit);
+  return bit;
 }
 
 bool RayScene::hasOwner(const void* owner) const
@@ -680,19 +714,25 @@ void RayScene::setPose(int body, const Frame& world_from_body)
 
 void RayScene::commit(const void* hidden)
 {
-  if (hidden != hidden_)
+  // The hidden robot's own bit is left out of the rays' masks; a robot of the shared bit has its
+  // instances masked out instead (and the one masked out before shown again), which needs a commit.
+  const unsigned hidden_bit = hidden ? robotBit(hidden) : 0u;
+  const void* masked_out = hidden_bit == kSharedRobotBit ? hidden : nullptr;
+  if (masked_out != masked_out_)
   {
     for (Instance& instance : instances_)
     {
-      if (!instance.set || instance.owner == nullptr || (instance.owner != hidden && instance.owner != hidden_))
+      if (!instance.set || instance.owner == nullptr ||
+          (instance.owner != masked_out && instance.owner != masked_out_))
         continue;
       RTCGeometry g = rtcGetGeometry(top_, instance.geometry_id);
-      rtcSetGeometryMask(g, instance.owner == hidden ? 0u : unsigned(kSeenByAll));
+      rtcSetGeometryMask(g, instance.owner == masked_out ? 0u : instance.mask);
       rtcCommitGeometry(g);
     }
-    hidden_ = hidden;
+    masked_out_ = masked_out;
     changed_ = true;
   }
+  rays_see_robots_ = kRobotBits & ~(hidden_bit == kSharedRobotBit ? 0u : hidden_bit);
   // Where every robot body is hidden (a robot's lidar in a world of no other robot: a racing
   // environment's car), the rays see the static shapes alone, whose level never changes: the top
   // level that moves with the robots is left uncommitted (it cost more than the rays, 14 us a scan
@@ -736,14 +776,22 @@ namespace
 {
 // Embree checks this (RayK::valid) with assertions, which Debian's build keeps: a ray outside it
 // aborts the process (builds without them return garbage). Such a ray (a NaN or 1e308 pose or range from
-// a user) is simply not cast: it hits nothing.
+// a user) is simply not cast: it hits nothing. Without branches, so that a scan's loop vectorizes.
+constexpr float kLargest = 1.844e18f;  // Embree's FLT_LARGE
+
+bool embreeAcceptsDirection(const float dir[3])
+{
+  return (std::fabs(dir[0]) <= kLargest) & (std::fabs(dir[1]) <= kLargest) & (std::fabs(dir[2]) <= kLargest);
+}
+
+bool embreeAcceptsOriginAndRange(const float origin[3], float near, float far)
+{
+  return embreeAcceptsDirection(origin) & (near >= 0) & !std::isnan(far);
+}
+
 bool embreeAcceptsRay(const float origin[3], const float dir[3], float near, float far)
 {
-  constexpr float kLargest = 1.844e18f;  // Embree's FLT_LARGE
-  for (int i = 0; i < 3; ++i)
-    if (!(std::fabs(origin[i]) <= kLargest && std::fabs(dir[i]) <= kLargest))
-      return false;
-  return near >= 0 && !std::isnan(far);
+  return embreeAcceptsOriginAndRange(origin, near, far) & embreeAcceptsDirection(dir);
 }
 }  // namespace
 
@@ -766,7 +814,7 @@ RayHit RayScene::castHit(const double origin[3], const double dir[3], double nea
   rh.ray.dir_z = dir_f[2];
   rh.ray.tnear = float(near);
   rh.ray.tfar = float(far);
-  rh.ray.mask = seen_by;
+  rh.ray.mask = seen_by | rays_see_robots_;
   rh.ray.time = 0;
   rh.ray.flags = 0;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -797,41 +845,29 @@ struct alignas(64) Packet
   RTCRayHit16 rh;
   int valid[kPacket];
 
-  void set(int lane, const float origin[3], const double dir[3], float near, float far, unsigned mask)
+  // The 16 rays from `first` on: `cast` -1 for a ray Embree accepts (embreeAcceptsRay), 0 for one
+  // not cast (or beyond the scan's last), directions by axis.
+  void fill(int first, const int* cast, const float* dx, const float* dy, const float* dz, const float origin[3],
+            float near, float far, unsigned mask)
   {
-    const float dir_f[3] = {float(dir[0]), float(dir[1]), float(dir[2])};
-    if (!embreeAcceptsRay(origin, dir_f, near, far))
-    {
-      skip(lane);
-      return;
-    }
-    valid[lane] = -1;
-    rh.ray.org_x[lane] = origin[0];
-    rh.ray.org_y[lane] = origin[1];
-    rh.ray.org_z[lane] = origin[2];
-    rh.ray.dir_x[lane] = dir_f[0];
-    rh.ray.dir_y[lane] = dir_f[1];
-    rh.ray.dir_z[lane] = dir_f[2];
-    rh.ray.tnear[lane] = near;
-    rh.ray.tfar[lane] = far;
-    rh.ray.mask[lane] = mask;
-    rh.ray.time[lane] = 0;
-    rh.ray.flags[lane] = 0;
-    rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-  }
-  // A lane no kernel casts.
-  void skip(int lane)
-  {
-    valid[lane] = 0;
-    rh.ray.tnear[lane] = std::numeric_limits<float>::infinity();
-    rh.ray.tfar[lane] = -std::numeric_limits<float>::infinity();
-    rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-  }
-  void skipAll()
-  {
+    // One field at a time: each loop is a few vector stores.
+    constexpr float kInfF = std::numeric_limits<float>::infinity();
+    std::copy_n(cast + first, kPacket, valid);
+    std::fill_n(rh.ray.org_x, kPacket, origin[0]);
+    std::fill_n(rh.ray.org_y, kPacket, origin[1]);
+    std::fill_n(rh.ray.org_z, kPacket, origin[2]);
+    std::copy_n(dx + first, kPacket, rh.ray.dir_x);
+    std::copy_n(dy + first, kPacket, rh.ray.dir_y);
+    std::copy_n(dz + first, kPacket, rh.ray.dir_z);
     for (int lane = 0; lane < kPacket; ++lane)
-      skip(lane);
+      rh.ray.tnear[lane] = valid[lane] ? near : kInfF;
+    for (int lane = 0; lane < kPacket; ++lane)
+      rh.ray.tfar[lane] = valid[lane] ? far : -kInfF;
+    std::fill_n(rh.ray.mask, kPacket, mask);
+    std::fill_n(rh.ray.time, kPacket, 0.0f);
+    std::fill_n(rh.ray.flags, kPacket, 0u);
+    std::fill_n(rh.hit.geomID, kPacket, RTC_INVALID_GEOMETRY_ID);
+    std::fill_n(rh.hit.instID[0], kPacket, RTC_INVALID_GEOMETRY_ID);
   }
   bool hit(int lane) const { return valid[lane] == -1 && rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID; }
 };
@@ -856,8 +892,34 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
   const int n = int(directions.size() / 3);
   out.assign(size_t(n), kInf);
   const float origin[3] = {float(sensor.t[0]), float(sensor.t[1]), float(sensor.t[2])};
-  constexpr int kPacketsPerTask = 128;  // 2048 rays: a planar scan stays on the calling thread, waking no worker
+  const float near_f = float(near), far_f = float(far);
+  // The fan turned into the world once a scan, in float and by axis as the packets take it, each ray
+  // checked there: filling a packet is then copies a vectorizing compiler turns into a few stores.
   const int packets = (n + kPacket - 1) / kPacket;
+  const size_t padded = size_t(packets) * kPacket;
+  // Kept by the calling thread from scan to scan (no allocation); the tasks read them through the
+  // pointers below, whichever thread runs them.
+  thread_local std::vector<float> world_dirs;
+  thread_local std::vector<int> cast_lane;
+  world_dirs.assign(3 * padded, 0.0f);
+  cast_lane.assign(padded, 0);
+  float* dir_x = world_dirs.data();
+  float* dir_y = dir_x + padded;
+  float* dir_z = dir_y + padded;
+  const bool origin_ok = embreeAcceptsOriginAndRange(origin, near_f, far_f);
+  int* cast = cast_lane.data();
+  for (int i = 0; i < n; ++i)
+  {
+    double dir[3];
+    sensor.rotate(&directions[3 * size_t(i)], dir);
+    const float dir_f[3] = {float(dir[0]), float(dir[1]), float(dir[2])};
+    dir_x[i] = dir_f[0];
+    dir_y[i] = dir_f[1];
+    dir_z[i] = dir_f[2];
+    cast[i] = -int(origin_ok & embreeAcceptsDirection(dir_f));
+  }
+  const unsigned mask = seen_by | rays_see_robots_;
+  constexpr int kPacketsPerTask = 128;  // 2048 rays: a planar scan stays on the calling thread, waking no worker
   parallelTasks((packets + kPacketsPerTask - 1) / kPacketsPerTask, [&](int task) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -865,17 +927,11 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
     Packet packet;
     for (int k = task * kPacketsPerTask; k < std::min(packets, (task + 1) * kPacketsPerTask); ++k)
     {
-      packet.skipAll();  // the last packet's lanes beyond n stay so
-      for (int lane = 0; lane < kPacket && k * kPacket + lane < n; ++lane)
-      {
-        double dir[3];
-        sensor.rotate(&directions[3 * size_t(k * kPacket + lane)], dir);
-        packet.set(lane, origin, dir, float(near), float(far), seen_by);
-      }
+      packet.fill(k * kPacket, cast, dir_x, dir_y, dir_z, origin, near_f, far_f, mask);
       rtcIntersect16(packet.valid, cast_scene_, &context, &packet.rh);
-      for (int lane = 0; lane < kPacket && k * kPacket + lane < n; ++lane)
-        if (packet.hit(lane))
-          out[size_t(k * kPacket + lane)] = packet.rh.ray.tfar[lane];
+      double* distances = out.data() + size_t(k) * kPacket;
+      for (int lane = 0; lane < std::min(kPacket, n - k * kPacket); ++lane)
+        distances[lane] = packet.hit(lane) ? double(packet.rh.ray.tfar[lane]) : kInf;
     }
   });
 }

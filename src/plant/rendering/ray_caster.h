@@ -109,8 +109,11 @@ public:
   void setPose(int body, const Frame& world_from_body);
   // Makes the bodies added or removed and the poses set so far take effect (the top level is
   // rebuilt only when something changed). `hidden`: a robot whose shapes every ray passes through
-  // until the next commit (a lidar does not see its own robot), or null.
+  // until the next commit (a lidar does not see its own robot), or null. Hiding another robot
+  // rebuilds nothing: each robot's instances carry an Embree mask bit of their own (kRobotMaskBits
+  // robots; those beyond share one bit, and hiding one of them masks its instances out, a rebuild).
   void commit(const void* hidden);
+  static constexpr int kRobotMaskBits = 29;
 
   // One ray (unit dir) from `near` to `far` against what `seen_by` sees.
   RayHit castHit(const double origin[3], const double dir[3], double near, double far, unsigned seen_by) const;
@@ -135,8 +138,13 @@ private:
     std::shared_ptr<ShapeSet> set;
     const void* owner = nullptr;
     unsigned geometry_id = RTC_INVALID_GEOMETRY_ID;
+    unsigned mask = kSeenByAll;  // Embree's instance mask while shown: a robot's, its robot's bit
     Frame pose;
   };
+  // The mask bit of `owner`'s instances: its own, taken when its first body comes and freed when
+  // it is removed, or the one the robots beyond kRobotMaskBits share. 0: no body of it here.
+  unsigned robotBit(const void* owner) const;
+  unsigned takeRobotBit(const void* owner);
   // A world's static shapes as one set, shared by every scene of the same shapes while any holds
   // it: the worlds of one world file (a racing environment makes one at every reset, a vector
   // environment N side by side) build its BVH once (RTC_BUILD_QUALITY_HIGH: milliseconds on a race
@@ -158,7 +166,9 @@ private:
   // bodies (null set: removed)
   std::vector<Instance> instances_;
   std::vector<int> instance_of_geometry_;  // top-level geometry id -> index in instances_
-  const void* hidden_ = nullptr;  // as the last commit hid it
+  std::vector<std::pair<const void*, unsigned>> robot_bits_;  // owner -> its instances' mask bit
+  unsigned rays_see_robots_ = ~0u;  // the robots' bits of every ray's mask: all but the hidden one's
+  const void* masked_out_ = nullptr;  // the robot of the shared bit whose instances the last commit masked out
   bool changed_ = true;                       // since the last commit: the top level needs one
 };
 
