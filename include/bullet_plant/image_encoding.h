@@ -14,6 +14,7 @@
 // renders PF_R8G8B8, which is B G R bytes in memory, and the plugin labels it bgr8.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -37,9 +38,13 @@ struct ImageEncoding
 // rgb16, BAYER_RGGB8 / BGGR8 / GBRG8 / GRBG8 bayer_*8; anything else bgr8, not known.
 ImageEncoding imageEncodingOf(const std::string& format);
 
+// 8-bit levels spread over 16 bits (x 257: 255 -> 65535), what a 16-bit camera gives where the GL has
+// no 16-bit colour targets.
+void spreadTo16Bits(const uint8_t* levels8, size_t count, uint16_t* levels16);
+
 // The message's data for the frame's pixels (3 values a pixel, rows from the top, the image `width`
 // wide): pixels x bytes_per_pixel bytes into `out`, 16-bit values little-endian. A 16-bit encoding
-// takes the frame's 16-bit colours `rgb16` (null: 257 x the 8-bit ones), the others `rgb8`.
+// takes the frame's 16-bit colours `rgb16` (null: spreadTo16Bits of the 8-bit ones), the others `rgb8`.
 void encodeImage(const ImageEncoding& encoding, const uint8_t* rgb8, const uint16_t* rgb16, int width, int height,
                  uint8_t* out);
 

@@ -11,6 +11,8 @@
 #include <GLES2/gl2ext.h>  // GL_RGBA16_EXT (GL_EXT_texture_norm16)
 #include <meshoptimizer.h>
 
+#include "bullet_plant/image_encoding.h"  // spreadTo16Bits
+
 namespace bullet_plant
 {
 namespace
@@ -1481,8 +1483,7 @@ void GlRenderer::render(const std::vector<Draw>& snapshot, const Frame& pose, co
   if (!frame.sixteen_bit)  // a GL without 16-bit targets: the 8-bit levels spread over 16 bits
   {
     colour16_pixels_.resize(pixels * 4);
-    for (size_t k = 0; k < pixels * 4; ++k)
-      colour16_pixels_[k] = uint16_t(colour_pixels_[k] * 257u);
+    spreadTo16Bits(colour_pixels_.data(), pixels * 4, colour16_pixels_.data());
   }
   out.rgb16.resize(pixels * 3);
   noisyRgb16FromRgba16(camera, colour16_pixels_.data(), out.rgb16.data());

@@ -56,17 +56,22 @@ inline void put16(uint8_t* out, uint16_t value)
 }
 }  // namespace
 
+void spreadTo16Bits(const uint8_t* levels8, size_t count, uint16_t* levels16)
+{
+  for (size_t k = 0; k < count; ++k)
+    levels16[k] = uint16_t(levels8[k] * 257u);
+}
+
 void encodeImage(const ImageEncoding& e, const uint8_t* rgb, const uint16_t* rgb16, int width, int height,
                  uint8_t* out)
 {
   using Layout = ImageEncoding::Layout;
   const size_t pixels = size_t(width) * size_t(height);
   std::vector<uint16_t> spread;
-  if (e.sixteenBit() && !rgb16)  // 0..255 spread over 0..65535
+  if (e.sixteenBit() && !rgb16)
   {
     spread.resize(3 * pixels);
-    for (size_t k = 0; k < spread.size(); ++k)
-      spread[k] = uint16_t(rgb[k] * 257u);
+    spreadTo16Bits(rgb, spread.size(), spread.data());
     rgb16 = spread.data();
   }
   switch (e.layout)

@@ -570,7 +570,10 @@ RayScene::RayScene(const std::vector<RayPrimitive>& world_shapes)
 {
   top_ = rtcNewScene(device_);
   rtcSetSceneFlags(top_, RTC_SCENE_FLAG_DYNAMIC);
-  rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_LOW);
+  // Rebuilt at every scan that follows a step: Embree's binned SAH builder (MEDIUM) takes 30 % fewer
+  // instructions over a few dozen instances than its Morton one (LOW), rays as fast (4 cars on
+  // peanut, callgrind).
+  rtcSetSceneBuildQuality(top_, RTC_BUILD_QUALITY_MEDIUM);
   statics_top_ = rtcNewScene(device_);
   std::vector<RayPrimitive> planes, others;
   for (const RayPrimitive& p : world_shapes)
