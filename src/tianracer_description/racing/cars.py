@@ -313,12 +313,9 @@ class RaceCars:
             return self.batch.drive(self._still, 1)
         return self.batch.drive(self._still[i:i + 1], 1, [i])
 
-    def step(self, actions, steps, still=None):
-        """(scans, state, rewards) after every car's action held for `steps` physics steps; cars where
-        `still` is True are held still. The rewards: metres gained along the centre line."""
-        if still is not None:
-            actions = np.array(actions, np.float64).reshape(-1, 2)
-            actions[still] = 0.0
+    def step(self, actions, steps):
+        """(scans, state, rewards) after every car's action held for `steps` physics steps (an action
+        (0, 0) holds a car still). The rewards: metres gained along the centre line."""
         scans, state = self.batch.drive(np.asarray(actions, np.float64).reshape(-1, 2), steps)
         return scans, state, state[:, STATE['centerline_gained']]
 
@@ -358,3 +355,13 @@ class RaceCars:
 def row(arrays, i):
     """Car i's entry of a dict of arrays (an observation or an info; a dict in it, its own entry)."""
     return {key: row(value, i) if isinstance(value, dict) else value[i] for key, value in arrays.items()}
+
+
+def rows(arrays, cars):
+    """Every car's entry of a dict of arrays with a row per car, as row() gives each: a list of `cars`
+    dicts, the arrays' rows taken by numpy's iteration (a PettingZoo step's observations and infos)."""
+    entries = [{} for _ in range(cars)]
+    for key, value in arrays.items():
+        for entry, item in zip(entries, rows(value, cars) if isinstance(value, dict) else value):
+            entry[key] = item
+    return entries

@@ -27,7 +27,7 @@ from pettingzoo import ParallelEnv
 
 from tianracer_description.racing import MAX_EPISODE_STEPS
 from tianracer_description.racing.cars import (FrenetObserver, RaceCars, action_space, check_physics_dt, draw_noise_seed,
-                                               observation_space, race_parts, row, steps_per_action)
+                                               observation_space, race_parts, rows, steps_per_action)
 from tianracer_description.racing.f1tenth_map import WALL_HEIGHT
 from tianracer_description.racing.views import RENDER_MODES, RaceViews, check_render, frames_per_second, tile
 
@@ -89,25 +89,29 @@ class RaceParallelEnv(ParallelEnv):
         observations, infos = self._cars.observations(scans, state), self._cars.infos(state)
         if self.render_mode == 'human':
             self.render()
-        return ({agent: row(observations, i) for i, agent in enumerate(self.possible_agents)},
-                {agent: row(infos, i) for i, agent in enumerate(self.possible_agents)})
+        cars = len(self.possible_agents)
+        return (dict(zip(self.possible_agents, rows(observations, cars))),
+                dict(zip(self.possible_agents, rows(infos, cars))))
 
     def step(self, actions):
         if not self.agents:
             raise RuntimeError('the race is over: call reset()')
-        racing = np.array([agent in actions and not self._stopped[i] for i, agent in enumerate(self.possible_agents)])
-        moves = np.array([actions[agent] if racing[i] else (0.0, 0.0) for i, agent in enumerate(self.possible_agents)])
-        scans, state, rewards = self._cars.step(moves, self._steps, still=~racing)
+        # A car without an action, or stopped, is held still: its action (0, 0).
+        moves = np.array([actions[agent] if agent in actions and not self._stopped[i] else (0.0, 0.0)
+                          for i, agent in enumerate(self.possible_agents)])
+        scans, state, rewards = self._cars.step(moves, self._steps)
         self._cycles += 1
         observations, infos = self._cars.observations(scans, state), self._cars.infos(state)
-        crashed = infos['crashed']
+        cars = len(self.possible_agents)
+        car_observations, car_infos = rows(observations, cars), rows(infos, cars)
+        crashed, rewards = infos['crashed'].tolist(), rewards.tolist()
         results = ({}, {}, {}, {}, {})
         for i, agent in enumerate(self.possible_agents):
             if agent not in self.agents:
                 continue
-            terminated = bool(crashed[i])
-            for out, value in zip(results, (row(observations, i), float(rewards[i]), terminated,
-                                            self._cycles >= self.max_cycles and not terminated, row(infos, i))):
+            terminated = crashed[i]
+            for out, value in zip(results, (car_observations[i], rewards[i], terminated,
+                                            self._cycles >= self.max_cycles and not terminated, car_infos[i])):
                 out[agent] = value
             self._stopped[i] |= terminated
         _, _, terminations, truncations, _ = results
