@@ -631,7 +631,8 @@ int RayScene::addBody(const void* owner, std::vector<RayPrimitive> shapes)
   Instance instance;
   instance.set = std::make_shared<ShapeSet>(device_, std::move(shapes));
   instance.owner = owner;
-  instance.mask = takeRobotBit(owner);
+  const unsigned bit = robotBit(owner);
+  instance.mask = bit ? bit : freeRobotBit();
   // A removed body's slot is taken again, so a world that spawns and deletes models all day keeps
   // its size (each slot left behind was some 130 bytes a body).
   auto slot = std::find_if(instances_.begin(), instances_.end(), [](const Instance& i) { return !i.set; });
@@ -656,9 +657,6 @@ void RayScene::removeOwner(const void* owner)
       instance.set.reset();
       instance.owner = nullptr;
     }
-  robot_bits_.erase(std::remove_if(robot_bits_.begin(), robot_bits_.end(),
-                                   [&](const std::pair<const void*, unsigned>& b) { return b.first == owner; }),
-                    robot_bits_.end());
   if (owner == masked_out_)
     masked_out_ = nullptr;
   changed_ = true;
@@ -675,22 +673,18 @@ static_assert(kFirstRobotBit << (RayScene::kRobotMaskBits - 1) == kSharedRobotBi
 
 unsigned RayScene::robotBit(const void* owner) const
 {
-  for (const auto& b : robot_bits_)
-    if (b.first == owner)
-      return b.second;
+  for (auto i = instances_.begin() + 2; i != instances_.end(); ++i)
+    if (i->set && i->owner == owner)
+      return i->mask;
   return 0;
 }
 
-unsigned RayScene::takeRobotBit(const void* owner)
+unsigned RayScene::freeRobotBit() const
 {
-  if (const unsigned bit = robotBit(owner))
-    return bit;
   unsigned bit = kFirstRobotBit;
-  while (bit != kSharedRobotBit &&
-         std::any_of(robot_bits_.begin(), robot_bits_.end(),
-                     [&](const std::pair<const void*, unsigned>& b) { return b.second == bit; }))
+  while (bit != kSharedRobotBit && std::any_of(instances_.begin() + 2, instances_.end(),
+                                               [&](const Instance& i) { return i.set && i.mask == bit; }))
     bit <<= 1;
-  robot_bits_.emplace_back(owner, bit);
   return bit;
 }
 
@@ -893,7 +887,7 @@ void RayScene::castRays(const Frame& sensor, const std::vector<double>& directio
                         unsigned seen_by, std::vector<double>& out) const
 {
   const int n = int(directions.size() / 3);
-  out.assign(size_t(n), kInf);
+  out.resize(size_t(n));  // every ray's distance is written below
   const float origin[3] = {float(sensor.t[0]), float(sensor.t[1]), float(sensor.t[2])};
   const float near_f = float(near), far_f = float(far);
   // The fan turned into the world once a scan, in float and by axis as the packets take it, each ray

@@ -141,10 +141,11 @@ private:
     unsigned mask = kSeenByAll;  // Embree's instance mask while shown: a robot's, its robot's bit
     Frame pose;
   };
-  // The mask bit of `owner`'s instances: its own, taken when its first body comes and freed when
-  // it is removed, or the one the robots beyond kRobotMaskBits share. 0: no body of it here.
+  // The mask bit of `owner`'s instances (0: no body of it here): its own, the first no robot's
+  // instance holds when its first body comes (freeRobotBit), or the one the robots beyond
+  // kRobotMaskBits share.
   unsigned robotBit(const void* owner) const;
-  unsigned takeRobotBit(const void* owner);
+  unsigned freeRobotBit() const;
   // A world's static shapes as one set, shared by every scene of the same shapes while any holds
   // it: the worlds of one world file (a racing environment makes one at every reset, a vector
   // environment N side by side) build its BVH once (RTC_BUILD_QUALITY_HIGH: milliseconds on a race
@@ -166,7 +167,6 @@ private:
   // bodies (null set: removed)
   std::vector<Instance> instances_;
   std::vector<int> instance_of_geometry_;  // top-level geometry id -> index in instances_
-  std::vector<std::pair<const void*, unsigned>> robot_bits_;  // owner -> its instances' mask bit
   unsigned rays_see_robots_ = ~0u;  // the robots' bits of every ray's mask: all but the hidden one's
   const void* masked_out_ = nullptr;  // the robot of the shared bit whose instances the last commit masked out
   bool changed_ = true;                       // since the last commit: the top level needs one
