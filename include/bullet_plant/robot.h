@@ -66,6 +66,9 @@ public:
   // Its gazebo_plugins model plugins that loaded (model_plugin.h), in URDF order.
   std::vector<ModelPlugin*> modelPlugins();
   const RobotDescription& description() const;
+  // The description of each of its trees, this one's first: an SDF model's links that no joint joins
+  // are trees of their own (RobotDescription::other_trees), each with its links' visuals.
+  std::vector<const RobotDescription*> treeDescriptions() const;
 
   // gazebo_ros_control's joint handles, in transmission order: what its controllers see (through
   // the JointHandles interface of the robot's joint layer).
@@ -86,7 +89,7 @@ public:
   urdf::Pose linkPose(const std::string& link) const;  // throws std::out_of_range for an unknown link
 
   // What gazebo_ros's model and link services see and set (docs/interfaces.md section 10). Links
-  // are the URDF's, by name; an unknown link or joint throws std::out_of_range naming it and the
+  // are the URDF's, by name, those of an SDF model's every tree (RobotDescription::other_trees); an unknown link or joint throws std::out_of_range naming it and the
   // robot, and nothing changes then.
   std::vector<std::string> linkNames() const;
   // The velocity of the link frame's origin and the link's angular velocity, world frame.
@@ -100,6 +103,10 @@ public:
   // their positions, at rest relative to each other. A plant multibody cannot pull one link away
   // from its joints, as Gazebo's set_link_state does.
   void setLinkState(const std::string& link, const urdf::Pose& pose, const Twist& twist);
+  // set_model_state: the model frame (basePose) at `pose`, moving with `twist` (of its origin, world
+  // frame), as setLinkState does for the root link; a model's trees that no joint joins (SDF's free
+  // links) move with it as one rigid body, keeping where they are relative to each other.
+  void setModelState(const urdf::Pose& pose, const Twist& twist);
   // The normals (world frame, pointing into this robot) of its touching contacts with anything
   // else, the world's shapes or another robot, at the end of the last step: what a check for a
   // collision needs (bullet_plant.CarBatch's "crashed"), without World::contacts' names.

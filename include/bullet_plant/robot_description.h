@@ -273,6 +273,13 @@ struct RobotDescription
     Sdf
   };
   Format format = Format::Urdf;
+  // From SDF: the links no joint joins to the tree of the model's canonical link (its first link),
+  // a tree each: Gazebo's free links, each moving on its own as a body of the same model (a race
+  // track's floor and walls, a pile of boxes in one <model>). Each is a description of its own (its
+  // links with their collisions, surfaces and sensors; its model frame the model's), which the world
+  // simulates as a part of this model (World::spawn); the model's plugins and gazebo_ros_control stay
+  // with the canonical link's tree, this one.
+  std::vector<RobotDescription> other_trees;
   std::vector<std::string> warnings;                   // things read but not fully supported
   std::vector<std::string> errors;                     // things refused (logged as errors at spawn)
   std::string base_dir;  // relative mesh URIs resolve against it ("" for URDF text: the working directory)

@@ -485,7 +485,7 @@ bool GazeboRosApiPlugin::updateModelState(const gazebo_msgs::ModelState& request
     message = "SetModelState: the state of '" + request.model_name + "' is not finite";
     return false;
   }
-  robot->setLinkState(robot->description().model->getRoot()->name, target.pose, target.twist);
+  robot->setModelState(target.pose, target.twist);
   publishScenePoses();
   message = "SetModelState: set model state done";
   return true;

@@ -18,6 +18,20 @@ JointHandle& handleOf(Robot& r, const std::string& joint)
   return *h;
 }
 
+// A state as set_link_state and set_model_state take it: x y z qx qy qz qw, and two velocities.
+void stateFrom(const char* method, const std::vector<double>& pose, const std::vector<double>& linear,
+               const std::vector<double>& angular, urdf::Pose& p, Twist& t)
+{
+  if (pose.size() != 7 || linear.size() != 3 || angular.size() != 3)
+    throw py::value_error(std::string(method) + " takes a pose of x y z qx qy qz qw (as link_pose gives) and linear and "
+                          "angular velocities of three numbers each");
+  p.position = urdf::Vector3(pose[0], pose[1], pose[2]);
+  p.rotation = urdf::Rotation(pose[3], pose[4], pose[5], pose[6]);
+  p.rotation.normalize();
+  std::copy(linear.begin(), linear.end(), t.linear.begin());
+  std::copy(angular.begin(), angular.end(), t.angular.begin());
+}
+
 }  // namespace
 
 py::class_<RobotRef> init_robot(py::module_& m)
@@ -77,6 +91,8 @@ py::class_<RobotRef> init_robot(py::module_& m)
           throw py::key_error("robot '" + r.name() + "' has no movable joint '" + joint + "'");
         return py::make_tuple(p, v, e);
       }), "(position, velocity, effort) of a movable joint; of an SDF ball joint (nan, 0, 0), as Gazebo 11's")
+      .def_property_readonly("link_names", onRobot([](Robot& r) { return r.linkNames(); }),
+                             "the model's links (every tree's, as gazebo_ros's get_model_properties lists them)")
       .def("base_pose", onRobot([](Robot& r) { return poseArray(r.basePose()); }),
            "root link pose in the world: x y z qx qy qz qw")
       .def("base_twist", onRobot([](Robot& r) {
@@ -95,16 +111,9 @@ py::class_<RobotRef> init_robot(py::module_& m)
       }))
       .def("set_link_state", onRobot([](Robot& r, const std::string& link, const std::vector<double>& pose,
                                         const std::vector<double>& linear, const std::vector<double>& angular) {
-        if (pose.size() != 7 || linear.size() != 3 || angular.size() != 3)
-          throw py::value_error("set_link_state takes a pose of x y z qx qy qz qw (as link_pose gives) and linear and "
-                                "angular velocities of three numbers each");
         urdf::Pose p;
-        p.position = urdf::Vector3(pose[0], pose[1], pose[2]);
-        p.rotation = urdf::Rotation(pose[3], pose[4], pose[5], pose[6]);
-        p.rotation.normalize();
         Twist t;
-        std::copy(linear.begin(), linear.end(), t.linear.begin());
-        std::copy(angular.begin(), angular.end(), t.angular.begin());
+        stateFrom("set_link_state", pose, linear, angular, p, t);
         try
         {
           r.setLinkState(link, p, t);
@@ -117,6 +126,16 @@ py::class_<RobotRef> init_robot(py::module_& m)
            py::arg("angular") = std::vector<double>{0, 0, 0},
            "gazebo_ros's set_link_state: the whole robot moved rigidly so that `link` is at `pose` (x y z qx qy qz "
            "qw, world), every body moving with (linear, angular) (of the link's origin, world frame)")
+      .def("set_model_state", onRobot([](Robot& r, const std::vector<double>& pose, const std::vector<double>& linear,
+                                         const std::vector<double>& angular) {
+        urdf::Pose p;
+        Twist t;
+        stateFrom("set_model_state", pose, linear, angular, p, t);
+        r.setModelState(p, t);
+      }), py::arg("pose"), py::arg("linear") = std::vector<double>{0, 0, 0},
+           py::arg("angular") = std::vector<double>{0, 0, 0},
+           "gazebo_ros's set_model_state: the model frame (base_pose) at `pose` (x y z qx qy qz qw, world), moving "
+           "with (linear, angular); a model's free links (trees no joint joins) move with it, rigidly")
       .def("apply_link_wrench", onRobot([](Robot& r, const std::string& link, const std::vector<double>& force,
                                            const std::vector<double>& torque, double start, double duration) {
         if (force.size() != 3 || torque.size() != 3)

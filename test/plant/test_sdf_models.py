@@ -425,6 +425,8 @@ BAD = {
                       + joint('j1', 'ground', 'crank') + joint('j2', 'crank', 'coupler')
                       + joint('j3', 'ground', 'rocker') + joint('j4', 'rocker', 'coupler'),
                       r"joint 'j4' closes a kinematic loop.*'coupler'.*'j2'"),
+    'a loop of two links beside a free one': (link('free') + link('a') + link('b') + joint('j1', 'a', 'b')
+                                              + joint('j2', 'b', 'a'), r"joints above link '[ab]' close a loop"),
 }
 
 

@@ -752,10 +752,32 @@ void coupleGears(const JointPart& gearbox, const std::map<std::string, const Lin
       {gearbox.name, gears[0].joint->name, gears[1].joint->name, -ratio * gears[0].sign * gears[1].sign, false});
 }
 
-// The model's links and joints as a URDF tree: links in their own frames, a joint frame apart from
+// Makes `root` the root of `tree` (the world, or a link: the model frame a frame link above it where
+// that is not the link's own frame) and links urdfdom's tree.
+void rootTree(urdf::ModelInterface& tree, const std::string& root, const std::map<std::string, const LinkPart*>& links,
+              RobotDescription& out)
+{
+  if (root != kWorld)
+  {
+    const urdf::Pose root_frame = links.at(root)->pose;
+    if (isIdentity(root_frame))
+      tree.root_link_ = tree.links_[root];
+    else
+    {
+      tree.links_[kModelFrame] = frameLink(kModelFrame, out);
+      tree.joints_[kModelFrame] = fixedJoint(kModelFrame, kModelFrame, root, root_frame);
+    }
+  }
+  std::map<std::string, std::string> parent_link_tree;
+  tree.initTree(parent_link_tree);
+  tree.initRoot(parent_link_tree);
+}
+
+// The model's links and joints as URDF trees: links in their own frames, a joint frame apart from
 // its child link's as a frame link between them, the model frame as a frame link at the root when
-// it is not the root link's.
-void buildTree(const ModelParts& parts, RobotDescription& out)
+// it is not the root link's. The canonical link's tree becomes out.model; each other tree (links no
+// joint joins to it) goes to `other_trees`.
+void buildTree(const ModelParts& parts, RobotDescription& out, std::vector<urdf::ModelInterfaceSharedPtr>& other_trees)
 {
   const std::string& model = parts.name;
   auto tree = std::make_shared<urdf::ModelInterface>();
@@ -856,32 +878,102 @@ void buildTree(const ModelParts& parts, RobotDescription& out)
   if (roots.empty() && !world_rooted)
     throw DescriptionError("model '" + model + "': every link hangs from a joint, so the joints close a loop; the "
                            "plant simulates a model's links as a tree");
-  // Free links beside another tree (or one fixed to the world): Gazebo lets each move on its own;
-  // the plant's model is one tree.
-  if (roots.size() > 1 || (world_rooted && !roots.empty()))
-  {
-    std::string names;
-    for (const std::string& root : roots)
-      names += (names.empty() ? "'" : ", '") + root + "'";
-    throw DescriptionError("model '" + model + "': links " + names + (world_rooted ? " are not joined to the world" : " are not joined by joints") +
-                           ": the plant simulates a model as one tree of links. Join them with a joint, or put each "
-                           "in a <model> of its own");
-  }
-  if (!world_rooted)
-  {
-    const urdf::Pose root_frame = links[roots[0]]->pose;
-    if (isIdentity(root_frame))
-      tree->root_link_ = tree->links_[roots[0]];
-    else
+  // Links no joint joins to the canonical link's tree (free links, or links beside a tree fixed to
+  // the world): Gazebo moves each such tree on its own. Each becomes a tree of its own, split off
+  // whole (its links, their joint frames and joints).
+  std::map<std::string, std::string> parent_link;  // child -> parent, over every joint of the tree
+  for (const auto& joint : tree->joints_)
+    parent_link[joint.second->child_link_name] = joint.second->parent_link_name;
+  auto rootOf = [&](const std::string& link) {
+    std::string up = link;
+    for (size_t hops = 0; parent_link.count(up); ++hops)
     {
-      tree->links_[kModelFrame] = frameLink(kModelFrame, out);
-      tree->joints_[kModelFrame] = fixedJoint(kModelFrame, kModelFrame, roots[0], root_frame);
+      if (hops > parent_link.size())
+        throw DescriptionError("model '" + model + "': the joints above link '" + link + "' close a loop; the plant "
+                               "simulates a model's links as trees");
+      up = parent_link[up];
     }
+    return up;
+  };
+  for (const auto& link : tree->links_)
+    rootOf(link.first);  // a loop of joints hangs from no root: refused
+  std::vector<std::string> tree_roots = roots;
+  if (world_rooted)
+    tree_roots.insert(tree_roots.begin(), kWorld);
+  const std::string canonical_root = rootOf(parts.links.front().name);
+  for (const std::string& root : tree_roots)
+  {
+    if (root == canonical_root)
+      continue;
+    auto other = std::make_shared<urdf::ModelInterface>();
+    other->name_ = model;
+    for (auto link = tree->links_.begin(); link != tree->links_.end();)
+      if (rootOf(link->first) == root)
+      {
+        other->links_.insert(*link);
+        link = tree->links_.erase(link);
+      }
+      else
+        ++link;
+    for (auto joint = tree->joints_.begin(); joint != tree->joints_.end();)
+      if (other->links_.count(joint->second->child_link_name))
+      {
+        other->joints_.insert(*joint);
+        joint = tree->joints_.erase(joint);
+      }
+      else
+        ++joint;
+    rootTree(*other, root, links, out);
+    other_trees.push_back(other);
   }
-  std::map<std::string, std::string> parent_link_tree;
-  tree->initTree(parent_link_tree);
-  tree->initRoot(parent_link_tree);
+  rootTree(*tree, canonical_root, links, out);
   out.model = tree;
+}
+
+// The description of one of the model's trees: what `whole` says of that tree's links and joints.
+// `canonical`: the canonical link's tree, which keeps the model's plugins and gazebo_ros_control.
+RobotDescription treeDescription(const RobotDescription& whole, const urdf::ModelInterfaceSharedPtr& tree,
+                                 bool canonical)
+{
+  RobotDescription out;
+  out.model = tree;
+  out.is_static = whole.is_static;
+  out.allow_auto_disable = whole.allow_auto_disable;
+  out.format = whole.format;
+  out.base_dir = whole.base_dir;
+  if (canonical)
+  {
+    out.control = whole.control;
+    out.transmissions = whole.transmissions;
+    out.model_plugins = whole.model_plugins;
+    out.warnings = whole.warnings;
+    out.errors = whole.errors;
+  }
+  auto keepLinks = [&](const auto& by_link, auto& kept) {
+    for (const auto& entry : by_link)
+      if (tree->links_.count(entry.first))
+        kept.insert(entry);
+  };
+  keepLinks(whole.surfaces, out.surfaces);
+  keepLinks(whole.collision_surfaces, out.collision_surfaces);
+  keepLinks(whole.link_physics, out.link_physics);
+  keepLinks(whole.visual_materials, out.visual_materials);
+  for (const auto& spring : whole.joint_springs)
+    if (tree->joints_.count(spring.first))
+      out.joint_springs.insert(spring);
+  for (const std::string& link : whole.frame_links)
+    if (tree->links_.count(link))
+      out.frame_links.insert(link);
+  for (const std::string& joint : whole.ball_joints)
+    if (tree->joints_.count(joint))
+      out.ball_joints.insert(joint);
+  for (const JointCouplingDescription& coupling : whole.joint_couplings)
+    if (tree->joints_.count(coupling.leader))
+      out.joint_couplings.push_back(coupling);
+  for (const SensorDescription& sensor : whole.sensors)
+    if (tree->links_.count(sensor.link))
+      out.sensors.push_back(sensor);
+  return out;
 }
 
 }  // namespace
@@ -908,9 +1000,17 @@ ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& sour
   {
     throw inContext("model '" + out.name + "'", e);
   }
-  buildTree(parts, out.robot);
+  std::vector<urdf::ModelInterfaceSharedPtr> other_trees;
+  buildTree(parts, out.robot, other_trees);
   for (const tinyxml2::XMLElement* plugin : parts.plugins)
     readModelPlugin(plugin, out.robot);
+  if (!other_trees.empty())
+  {
+    RobotDescription whole = std::move(out.robot);
+    out.robot = treeDescription(whole, whole.model, true);
+    for (const urdf::ModelInterfaceSharedPtr& tree : other_trees)
+      out.robot.other_trees.push_back(treeDescription(whole, tree, false));
+  }
   return out;
 }
 }  // namespace sdf

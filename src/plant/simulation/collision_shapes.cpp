@@ -11,6 +11,7 @@
 #include <BulletCollision/CollisionDispatch/btInternalEdgeUtility.h>
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
+#include <BulletCollision/Gimpact/btGImpactShape.h>
 #include <LinearMath/btConvexHullComputer.h>
 
 #include "bullet_plant/robot_description.h"
@@ -149,6 +150,33 @@ private:
   btTriangleInfoMap edges_;
 };
 
+// A moving body's mesh as its exact triangles: Bullet's GImpact (a BVH over the triangles, refitted
+// as the body moves), for a mesh that no convex shapes make up exactly (movingMeshShape).
+class MovingMeshShape : private MeshArrays, public btGImpactMeshShape
+{
+public:
+  explicit MovingMeshShape(const std::shared_ptr<const MeshData>& m) : MeshArrays(m), btGImpactMeshShape(&triangles)
+  {
+    setMargin(kCollisionMargin);
+    updateBound();
+  }
+};
+
+// The convex hulls of a mesh made of several convex pieces (a track's wall segments), which the
+// compound keeps alive.
+class HullCompound : public btCompoundShape
+{
+public:
+  void add(btConvexHullShape* hull)
+  {
+    hulls_.emplace_back(hull);
+    addChildShape(btTransform::getIdentity(), hull);
+  }
+
+private:
+  std::vector<std::unique_ptr<btConvexHullShape>> hulls_;
+};
+
 bool holdsStaticMesh(const btCollisionShape& shape)
 {
   if (shape.getShapeType() == TRIANGLE_MESH_SHAPE_PROXYTYPE)
@@ -247,15 +275,23 @@ bool correctInternalEdgeContact(btManifoldPoint& point, const btCollisionObjectW
 // The convex hull of the vertices, each face moved in by the margin (Bullet adds it back outside).
 // Where it has more than kMaxHullVertices vertices it keeps its support points in that many
 // directions spread evenly over the sphere (a Fibonacci lattice): the extremes in every direction.
-btConvexHullShape* makeHull(const MeshData& mesh)
+btConvexHullShape* makeHull(const float* vertices, int count)
 {
   btConvexHullComputer hull;
   float extent = 1e30f;
   for (int i = 0; i < 3; ++i)
-    extent = std::min(extent, mesh.max[i] - mesh.min[i]);
+  {
+    float low = 1e30f, high = -1e30f;
+    for (int v = 0; v < count; ++v)
+    {
+      low = std::min(low, vertices[3 * v + i]);
+      high = std::max(high, vertices[3 * v + i]);
+    }
+    extent = std::min(extent, high - low);
+  }
   // A flat mesh keeps its plane: shrinking it would turn it inside out.
   const btScalar shrink = extent > 4 * kCollisionMargin ? kCollisionMargin : btScalar(0);
-  hull.compute(mesh.vertices.data(), 3 * sizeof(float), mesh.vertexCount(), shrink, btScalar(0.25));
+  hull.compute(vertices, 3 * sizeof(float), count, shrink, btScalar(0.25));
   const int n = hull.vertices.size();
   std::vector<bool> keep(n, n <= kMaxHullVertices);
   if (n > kMaxHullVertices)
@@ -283,6 +319,92 @@ btConvexHullShape* makeHull(const MeshData& mesh)
 }
 }  // namespace
 
+// The mesh's pieces: its triangles joined where they share a corner (the same position), each a
+// list of its vertex positions, x y z.
+std::vector<std::vector<float>> connectedPieces(const MeshData& mesh)
+{
+  std::map<std::array<float, 3>, int> at;  // a position's first vertex
+  std::vector<int> same(size_t(mesh.vertexCount()));
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const float* p = &mesh.vertices[size_t(3 * v)];
+    same[size_t(v)] = at.emplace(std::array<float, 3>{{p[0], p[1], p[2]}}, v).first->second;
+  }
+  std::vector<int> parent(same.size());  // union-find over the vertices
+  for (size_t v = 0; v < parent.size(); ++v)
+    parent[v] = int(v);
+  const auto find = [&parent](int v) {
+    while (parent[size_t(v)] != v)
+      v = parent[size_t(v)] = parent[size_t(parent[size_t(v)])];
+    return v;
+  };
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    for (int k = 1; k < 3; ++k)
+      parent[size_t(find(same[size_t(mesh.indices[t + size_t(k)])]))] = find(same[size_t(mesh.indices[t])]);
+  std::map<int, std::vector<float>> pieces;
+  for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+  {
+    std::vector<float>& piece = pieces[find(same[size_t(mesh.indices[t])])];
+    for (size_t k = 0; k < 3; ++k)
+    {
+      const float* p = &mesh.vertices[size_t(3 * mesh.indices[t + k])];
+      piece.insert(piece.end(), p, p + 3);
+    }
+  }
+  std::vector<std::vector<float>> out;
+  for (auto& piece : pieces)
+    out.push_back(std::move(piece.second));
+  return out;
+}
+
+// Area and enclosed volume of triangles (three corners each, x y z), the volume by the divergence
+// theorem (meaningful for a closed surface).
+void areaAndVolume(const std::vector<btVector3>& corners, double& area, double& volume)
+{
+  area = volume = 0;
+  for (size_t t = 0; t + 2 < corners.size(); t += 3)
+  {
+    const btVector3 &a = corners[t], &b = corners[t + 1], &c = corners[t + 2];
+    area += 0.5 * double((b - a).cross(c - a).length());
+    volume += double(a.dot(b.cross(c))) / 6.0;
+  }
+  volume = std::abs(volume);
+}
+
+// Whether a piece's triangles are its convex hull's surface (a closed convex solid: the same area
+// and volume within 1 %), or a flat convex polygon (the same area as one side of its flat hull):
+// then the hull collides exactly where the triangles would.
+bool isConvexPiece(const std::vector<float>& piece)
+{
+  std::vector<btVector3> corners;
+  for (size_t i = 0; i + 2 < piece.size(); i += 3)
+    corners.emplace_back(piece[i], piece[i + 1], piece[i + 2]);
+  double area = 0, volume = 0;
+  areaAndVolume(corners, area, volume);
+  btConvexHullComputer hull;
+  hull.compute(piece.data(), 3 * sizeof(float), int(corners.size()), 0, 0);
+  std::vector<btVector3> hull_corners;  // its faces as fans of triangles
+  for (int f = 0; f < hull.faces.size(); ++f)
+  {
+    const btConvexHullComputer::Edge* first = &hull.edges[hull.faces[f]];
+    const btVector3& origin = hull.vertices[first->getSourceVertex()];
+    for (const btConvexHullComputer::Edge* e = first->getNextEdgeOfFace(); e->getTargetVertex() != first->getSourceVertex();
+         e = e->getNextEdgeOfFace())
+      hull_corners.insert(hull_corners.end(), {origin, hull.vertices[e->getSourceVertex()],
+                                               hull.vertices[e->getTargetVertex()]});
+  }
+  double hull_area = 0, hull_volume = 0;
+  areaAndVolume(hull_corners, hull_area, hull_volume);
+  constexpr double kTolerance = 0.01;
+  const auto near = [](double a, double b) { return std::abs(a - b) <= kTolerance * std::max(a, b); };
+  if (hull_area <= 0)
+    return false;
+  // Flat: its hull's volume is that of a slab thinner than a micrometre over its area.
+  if (hull_volume <= 1e-6 * hull_area)
+    return near(area, hull_area / 2);
+  return near(area, hull_area) && near(volume, hull_volume);
+}
+
 void correctInternalEdges(btCollisionObject& object)
 {
   if (!object.getCollisionShape() || !holdsStaticMesh(*object.getCollisionShape()))
@@ -292,11 +414,40 @@ void correctInternalEdges(btCollisionObject& object)
   object.setCollisionFlags(object.getCollisionFlags() | btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
 }
 
+namespace
+{
+// The shape of a mesh on a moving body (Mobility::Moving) and, in `note`, what it became.
+std::shared_ptr<btCollisionShape> movingMeshShape(const std::shared_ptr<const MeshData>& mesh, std::string& note)
+{
+  const std::string triangles = std::to_string(mesh->triangleCount()) + " triangles";
+  std::vector<std::vector<float>> pieces = connectedPieces(*mesh);
+  if (!std::all_of(pieces.begin(), pieces.end(), isConvexPiece))
+  {
+    note = "collides as its " + triangles + " (Bullet's GImpact: no convex shapes make it up exactly)";
+    return std::make_shared<MovingMeshShape>(mesh);
+  }
+  if (pieces.size() <= 1)
+  {
+    auto* hull = makeHull(mesh->vertices.data(), mesh->vertexCount());
+    note = "is convex: collides as its convex hull (" + triangles + ", " + std::to_string(hull->getNumPoints()) + " vertices)";
+    return std::shared_ptr<btCollisionShape>(hull);
+  }
+  auto compound = std::make_shared<HullCompound>();
+  for (const std::vector<float>& piece : pieces)
+    compound->add(makeHull(piece.data(), int(piece.size() / 3)));
+  note = "is " + std::to_string(pieces.size()) + " convex pieces: collides as their hulls (" + triangles + ")";
+  return compound;
+}
+}  // namespace
+
 std::shared_ptr<btCollisionShape> makeMeshCollisionShape(const std::shared_ptr<const MeshData>& mesh,
                                                          Mobility mobility)
 {
   if (mobility == Mobility::Moving)
-    return std::shared_ptr<btCollisionShape>(makeHull(*mesh));
+  {
+    std::string note;
+    return movingMeshShape(mesh, note);
+  }
   static std::mutex mutex;
   static std::map<const MeshData*, std::weak_ptr<btCollisionShape>> shared;
   const std::lock_guard<std::mutex> lock(mutex);
@@ -325,13 +476,9 @@ Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& p
   std::shared_ptr<const MeshData> mesh = loadMesh(shape.mesh_file, shape.scale, c.reason);
   if (!mesh)
     return c;
-  c.shape = makeMeshCollisionShape(mesh, mobility);
+  c.shape = mobility == Mobility::Moving ? movingMeshShape(mesh, c.note) : makeMeshCollisionShape(mesh, mobility);
   c.ray = RayPrimitive::fromMesh(mesh, pose, owner);
   c.mesh = mesh;
-  if (mobility == Mobility::Moving)
-    c.note = "collides as the convex hull of its " + std::to_string(mesh->triangleCount()) + " triangles (" +
-             std::to_string(static_cast<btConvexHullShape*>(c.shape.get())->getNumPoints()) +
-             " vertices); only static bodies collide with a mesh's exact triangles";
   return c;
 }
 

@@ -24,12 +24,15 @@ namespace bullet_plant
 // penetration solver (EPA), which doubled the cost of a step of the car on a mesh floor.
 constexpr btScalar kCollisionMargin = btScalar(0.0005);
 
-// A moving body's mesh is simplified to a convex hull of at most this many vertices: contact cost
-// grows with the vertices GJK walks.
+// A convex piece of a moving body's mesh collides as its hull of at most this many vertices:
+// contact cost grows with the vertices GJK walks.
 constexpr int kMaxHullVertices = 100;
 
-// Static bodies (world collisions, robots fixed in the world) take meshes as their triangles; moving
-// bodies as convex hulls (Bullet has no moving concave collision that is fast and robust).
+// Static bodies (world collisions, robots fixed in the world) take meshes as their triangles. Moving
+// bodies take them as exactly as Gazebo's ODE collides a trimesh, at the cost of the cheapest Bullet
+// shape that is exact: a convex mesh as its hull, a mesh of convex pieces (its triangles joined by
+// shared corners: a track's wall segments, a pile of blocks) as a compound of their hulls, any other
+// as its triangles (Bullet's GImpact, a BVH over them refitted as the body moves).
 enum class Mobility { Static, Moving };
 
 // The shape in its own frame (a cylinder and a capsule along its z axis; an ellipsoid by its exact
@@ -37,8 +40,8 @@ enum class Mobility { Static, Moving };
 btCollisionShape* makeCollisionShape(const Shape& shape);
 
 // A mesh as a static triangle mesh (Bullet's BVH over the loaded triangles, which the shape keeps
-// alive, with the angles between its faces for correctInternalEdges) or as a moving body's convex
-// hull. A static mesh's shape is shared by every body of that mesh while any holds it: the worlds of
+// alive, with the angles between its faces for correctInternalEdges) or as a moving body's shape
+// (Mobility). A static mesh's shape is shared by every body of that mesh while any holds it: the worlds of
 // one world file (a racing environment makes one at every reset, a vector environment N side by
 // side) build its BVH and edge angles once (2 ms for the mesh race track's walls and floor) and
 // collide through the same memory; Bullet only reads a triangle mesh's shape while it collides.
@@ -58,7 +61,7 @@ struct Collider
   RayPrimitive ray;
   std::shared_ptr<const MeshData> mesh;      // a mesh's triangles
   std::string reason;  // why the mesh could not be loaded ("cannot be read (...)", "has no triangles")
-  std::string note;    // for the log: what a mesh became on a moving body, or ""
+  std::string note;    // what a mesh became on a moving body (its hull, its pieces' hulls, GImpact), or ""
 };
 Collider makeCollider(const Shape& shape, Mobility mobility, const urdf::Pose& pose, const void* owner);
 

@@ -60,6 +60,14 @@ struct Robot::Internals
   JointWrenchWatches wrench_watches;      // ModelPluginContext::watchJointWrench
   std::vector<int> ray_bodies;            // each body's handle in the world's RayScene (-1: no shapes)
   std::vector<int> gl_bodies;             // the same in its GlScene
+  // A model of several trees (RobotDescription::other_trees): its canonical link's tree is the Robot
+  // the world lists, holding its other trees, each a Robot of its own in the world's step (named as
+  // the model, so its collisions are "model::link::collision"), `canonical` pointing back.
+  std::vector<Robot*> other_trees;
+  Robot::Internals* canonical = nullptr;
+  bool several_trees = false;  // a tree of a model of several, known as it is built
+  // The other tree of this model holding `link`, or null (this tree holds it, or none does).
+  Robot* otherTreeWithLink(const std::string& link) const;
   RobotSensorContext sensor_context{*this};              // what its sensors are handed
   RobotModelPluginContext model_plugin_context{*this};   // what its model plugins are handed
 
@@ -110,7 +118,14 @@ struct World::Internals
   std::unique_ptr<GlContext> gl_context;
   std::unique_ptr<GlScene> gl_scene;
 
+  // Every tree of every model (a model of several trees has a robot for each: Robot::Internals::
+  // other_trees), in the order they were added.
   std::vector<std::unique_ptr<Robot>> robots;
+  // Builds one tree of a model into the world and lists it (World::spawn): the canonical link's
+  // tree (canonical null) or another tree of that model.
+  Robot& addTree(RobotDescription description, const std::string& name, const urdf::Pose& pose,
+                 const std::string& robot_namespace, const std::map<std::string, double>& initial_joints,
+                 Robot::Internals* canonical, bool several_trees);
   // Renders camera frames while the simulation goes on (made with the GL scene). Declared after
   // the robots, so it stops, its jobs done, before their cameras go.
   std::unique_ptr<FrameWorker> frame_worker;

@@ -55,6 +55,16 @@ void Robot::Internals::resetToSpawn()
   settleAfterTeleport();
 }
 
+Robot* Robot::Internals::otherTreeWithLink(const std::string& link) const
+{
+  if (multibody.link_in_body.count(link))
+    return nullptr;
+  for (Robot* tree : other_trees)
+    if (tree->in_->multibody.link_in_body.count(link))
+      return tree;
+  return nullptr;
+}
+
 // ---------------------------------------------------------------------------------------- Robot
 
 Robot::Robot(std::unique_ptr<Internals> internals) : in_(std::move(internals)) { in_->self = this; }
@@ -73,11 +83,28 @@ std::vector<ModelPlugin*> Robot::modelPlugins()
   return out;
 }
 const RobotDescription& Robot::description() const { return in_->description; }
+std::vector<const RobotDescription*> Robot::treeDescriptions() const
+{
+  std::vector<const RobotDescription*> out{&in_->description};
+  for (const Robot* tree : in_->other_trees)
+    out.push_back(&tree->description());
+  return out;
+}
 std::vector<JointHandle>& Robot::handles() { return in_->joint_layer.handles(); }
 JointHandle* Robot::handle(const std::string& joint) { return in_->joint_layer.handle(joint); }
-long Robot::recoveries() const { return in_->recovery.recoveries; }
+long Robot::recoveries() const
+{
+  long recoveries = in_->recovery.recoveries;
+  for (const Robot* tree : in_->other_trees)
+    recoveries += tree->recoveries();
+  return recoveries;
+}
 bool Robot::disabled() const { return in_->disabled; }
-bool Robot::asleep() const { return in_->asleep(); }
+bool Robot::asleep() const
+{
+  return in_->asleep() &&
+         std::all_of(in_->other_trees.begin(), in_->other_trees.end(), [](const Robot* tree) { return tree->asleep(); });
+}
 void Robot::setEStop(bool on) { in_->joint_layer.setEStop(on); }
 bool Robot::eStop() const { return in_->joint_layer.eStop(); }
 
@@ -87,6 +114,9 @@ std::vector<std::string> Robot::jointNames() const
   for (const MovableJoint& j : in_->multibody.joints)
     if (!j.internal)
       names.push_back(j.name);
+  for (const Robot* tree : in_->other_trees)
+    for (const std::string& name : tree->jointNames())
+      names.push_back(name);
   return names;
 }
 
@@ -95,6 +125,9 @@ std::vector<std::string> Robot::ballJointNames() const
   std::vector<std::string> names;
   for (const BallJoint& b : in_->multibody.balls)
     names.push_back(b.name);
+  for (const Robot* tree : in_->other_trees)
+    for (const std::string& name : tree->ballJointNames())
+      names.push_back(name);
   return names;
 }
 
@@ -104,6 +137,9 @@ bool Robot::jointState(const std::string& joint, double& position, double& veloc
   auto it = mb.joint_index.find(joint);
   if (it == mb.joint_index.end())
   {
+    for (const Robot* tree : in_->other_trees)
+      if (tree->jointState(joint, position, velocity, effort))
+        return true;
     if (!mb.ball(joint))
       return false;
     // Gazebo 11's ODEBallJoint: no position (NaN), velocity 0, no effort.
@@ -135,6 +171,8 @@ Twist Robot::baseTwist() const { return twistOf(linkMotion(in_->description.mode
 
 urdf::Pose Robot::linkPose(const std::string& link) const
 {
+  if (const Robot* tree = in_->otherTreeWithLink(link))
+    return tree->linkPose(link);
   return fromBullet(in_->multibody.linkWorldTransform(link, in_->name));
 }
 
@@ -144,6 +182,9 @@ std::vector<std::string> Robot::linkNames() const
   for (const auto& kv : in_->multibody.link_in_body)
     if (!in_->description.frame_links.count(kv.first))  // SDF's frames are no links
       names.push_back(kv.first);
+  for (const Robot* tree : in_->other_trees)
+    for (const std::string& name : tree->linkNames())
+      names.push_back(name);
   return names;
 }
 
@@ -171,12 +212,16 @@ const MovableJoint& movableJoint(const RobotMultibody& multibody, const std::str
 
 Twist Robot::linkTwist(const std::string& link) const
 {
+  if (const Robot* tree = in_->otherTreeWithLink(link))
+    return tree->linkTwist(link);
   bodyOfLink(in_->multibody, link, in_->name);  // an unknown link: std::out_of_range naming it
   return twistOf(linkMotion(link));
 }
 
 LinkMotion Robot::linkMotion(const std::string& link, const urdf::Pose& offset) const
 {
+  if (const Robot* tree = in_->otherTreeWithLink(link))
+    return tree->linkMotion(link, offset);
   bodyOfLink(in_->multibody, link, in_->name);
   return in_->multibody.linkMotion(link, offset, in_->name);
 }
@@ -193,11 +238,16 @@ std::vector<urdf::Vector3> Robot::contactNormals() const
                     [&](const btManifoldPoint& point, bool ours_is_a, const btCollisionObject*) {
                       normals.push_back(fromBullet((ours_is_a ? 1 : -1) * point.m_normalWorldOnB));
                     });
+  for (const Robot* tree : in_->other_trees)
+    for (const urdf::Vector3& normal : tree->contactNormals())
+      normals.push_back(normal);
   return normals;
 }
 
 void Robot::setLinkState(const std::string& link, const urdf::Pose& pose, const Twist& twist)
 {
+  if (Robot* tree = in_->otherTreeWithLink(link))
+    return tree->setLinkState(link, pose, twist);
   RobotMultibody& multibody = in_->multibody;
   bodyOfLink(multibody, link, in_->name);
   const btTransform root = multibody.rootWorldTransform();
@@ -216,6 +266,22 @@ void Robot::setLinkState(const std::string& link, const urdf::Pose& pose, const 
   for (const BallJoint& b : multibody.balls)
     mb.setJointVelMultiDof(b.link, at_rest);
   in_->settleAfterTeleport();
+}
+
+void Robot::setModelState(const urdf::Pose& pose, const Twist& twist)
+{
+  const btTransform moved = toBullet(pose) * in_->multibody.rootWorldTransform().inverse();
+  const btVector3 omega = toBullet(urdf::Vector3(twist.angular[0], twist.angular[1], twist.angular[2]));
+  const btVector3 v = toBullet(urdf::Vector3(twist.linear[0], twist.linear[1], twist.linear[2]));
+  for (Robot* tree : in_->other_trees)
+  {
+    // Each other tree's root where the model's rigid motion takes it, with that motion's velocity there.
+    const btTransform root = moved * tree->in_->multibody.rootWorldTransform();
+    const btVector3 v_root = v + omega.cross(root.getOrigin() - toBullet(pose.position));
+    tree->setLinkState(tree->description().model->getRoot()->name, fromBullet(root),
+                       {{{v_root.x(), v_root.y(), v_root.z()}}, twist.angular});
+  }
+  setLinkState(in_->description.model->getRoot()->name, pose, twist);
 }
 
 void Robot::setJointPositions(const std::map<std::string, double>& positions)
@@ -254,11 +320,18 @@ void Robot::setJointPositions(const std::map<std::string, double>& positions)
 void Robot::applyLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque,
                             int64_t start_ns, int64_t duration_ns)
 {
+  if (Robot* tree = in_->otherTreeWithLink(link))
+    return tree->applyLinkWrench(link, force, torque, start_ns, duration_ns);
   const int body = bodyOfLink(in_->multibody, link, in_->name);
   in_->external_efforts.addLinkWrench(link, body, toBullet(force), toBullet(torque), start_ns, duration_ns);
 }
 
-void Robot::clearLinkWrenches(const std::string& link) { in_->external_efforts.clearLinkWrenches(link); }
+void Robot::clearLinkWrenches(const std::string& link)
+{
+  if (Robot* tree = in_->otherTreeWithLink(link))
+    return tree->clearLinkWrenches(link);
+  in_->external_efforts.clearLinkWrenches(link);
+}
 
 void Robot::applyJointEffort(const std::string& joint, double effort, int64_t start_ns, int64_t duration_ns)
 {
@@ -275,6 +348,9 @@ std::vector<Sensor*> Robot::sensors()
   std::vector<Sensor*> out;
   for (auto& s : in_->sensors)
     out.push_back(s.get());
+  for (Robot* tree : in_->other_trees)
+    for (Sensor* s : tree->sensors())
+      out.push_back(s);
   return out;
 }
 
@@ -283,6 +359,9 @@ Sensor* Robot::sensor(const std::string& name)
   for (auto& s : in_->sensors)
     if (s->name() == name)
       return s.get();
+  for (Robot* tree : in_->other_trees)
+    if (Sensor* s = tree->sensor(name))
+      return s;
   return nullptr;
 }
 

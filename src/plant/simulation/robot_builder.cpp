@@ -696,25 +696,29 @@ void createJoints(Robot::Internals& r, const std::vector<BodyPlan>& plans, const
   limitUnlimitedEfforts(r);
 }
 
-// A body's collider in a model whose links collide with each other (SDF's <self_collide>), as
-// Gazebo's ODE collides them: two bodies of the model touch where either self-collides (a
-// self-colliding link's collisions are in a space of their own, which ODE collides with the model's
-// space and every other space), never two joined by a joint (ODEPhysics::CollisionCallback's
-// dAreConnectedExcluding). A body's links fixed together are one body: it self-collides where any of
-// them does.
+// A body's collider in a model whose links collide with each other (SDF's <self_collide>) or that is
+// several trees (free links), as Gazebo's ODE collides a model's links: two bodies of the model
+// touch where either self-collides (a self-colliding link's collisions are in a space of their own,
+// which ODE collides with the model's space and every other space), never two joined by a joint
+// (ODEPhysics::CollisionCallback's dAreConnectedExcluding). A body's links fixed together are one
+// body: it self-collides where any of them does. The model it is of is its user pointer (its
+// canonical tree's robot), which every collider of the model's trees shares.
 class SelfCollidingCollider : public btMultiBodyLinkCollider
 {
 public:
-  SelfCollidingCollider(btMultiBody* multibody, int link, bool self_collide, int joined_to)
+  SelfCollidingCollider(btMultiBody* multibody, int link, bool self_collide, int joined_to, void* model)
     : btMultiBodyLinkCollider(multibody, link), self_collide_(self_collide), joined_to_(joined_to)
   {
+    setUserPointer(model);
   }
   bool checkCollideWithOverride(const btCollisionObject* object) const override
   {
     const btMultiBodyLinkCollider* other = btMultiBodyLinkCollider::upcast(object);
-    if (!other || other->m_multiBody != m_multiBody)
-      return true;
+    if (!other || other->getUserPointer() != getUserPointer())
+      return true;  // another model's
     const auto* ours = static_cast<const SelfCollidingCollider*>(other);  // every collider of the model is one
+    if (other->m_multiBody != m_multiBody)
+      return self_collide_ || ours->self_collide_;  // another tree of the model: no joint joins them
     return (self_collide_ || ours->self_collide_) && joined_to_ != other->m_link && ours->joined_to_ != m_link;
   }
 
@@ -749,19 +753,20 @@ void addColliders(Robot::Internals& r)
   std::vector<bool> self_collides;
   const bool self_colliding = selfColliding(r, self_collides);
   mb->setHasSelfCollision(self_colliding);
+  Robot::Internals* model = r.canonical ? r.canonical : &r;
   for (size_t bi = 0; bi < bodies.size(); ++bi)
   {
     Body& body = bodies[bi];
     if (!body.shape)
       continue;
-    if (self_colliding)
+    if (self_colliding || r.several_trees)
     {
       // The body its joint joins it to, past the frames between two axes of a universal joint.
       int joined = bi == 0 ? -1 : body.parent;
       while (joined > 0 && r.description.frame_links.count(bodies[size_t(joined)].link))
         joined = bodies[size_t(joined)].parent;
       r.multibody.colliders.emplace_back(
-          new SelfCollidingCollider(mb, int(bi) - 1, self_collides[bi], bi == 0 ? -2 : joined - 1));
+          new SelfCollidingCollider(mb, int(bi) - 1, self_collides[bi], bi == 0 ? -2 : joined - 1, model));
     }
     else
       r.multibody.colliders.emplace_back(new btMultiBodyLinkCollider(mb, int(bi) - 1));

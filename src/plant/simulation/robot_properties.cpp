@@ -65,6 +65,8 @@ void Robot::setJointProperties(const std::string& joint, const JointProperties& 
 
 LinkProperties Robot::linkProperties(const std::string& link) const
 {
+  if (const Robot* tree = in_->otherTreeWithLink(link))
+    return tree->linkProperties(link);
   if (!in_->multibody.link_in_body.count(link))
     throw std::out_of_range("robot '" + in_->name + "' has no link '" + link + "'");
   LinkProperties out;
@@ -88,6 +90,8 @@ LinkProperties Robot::linkProperties(const std::string& link) const
 
 std::string Robot::setLinkProperties(const std::string& link, const LinkProperties& p)
 {
+  if (Robot* tree = in_->otherTreeWithLink(link))
+    return tree->setLinkProperties(link, p);
   auto placed = in_->multibody.link_in_body.find(link);
   if (placed == in_->multibody.link_in_body.end())
     throw std::out_of_range("robot '" + in_->name + "' has no link '" + link + "'");

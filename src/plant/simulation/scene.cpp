@@ -58,19 +58,19 @@ Scene sceneOf(World& world)
   for (Robot* robot : world.robots())
   {
     scene.robots.push_back(robot->name());
-    const urdf::ModelInterface& model = *robot->description().model;
-    scene.root_links.push_back(robot->name() + "::" + model.getRoot()->name);
-    for (const auto& kv : model.links_)
-      for (size_t index = 0; index < kv.second->visual_array.size(); ++index)
-      {
-        const urdf::VisualSharedPtr& v = kv.second->visual_array[index];
-        Shape shape;
-        if (!v || !v->geometry || !shapeFromUrdf(*v->geometry, kv.first, quiet, shape) ||
-            (shape.kind == Shape::Kind::Mesh && shape.mesh_file.empty()))
-          continue;
-        scene.visuals.push_back(visualOf(robot->name(), robot->name() + "::" + kv.first, shape, v->origin,
-                                         visualMaterial(robot->description(), kv.first, index, *v)));
-      }
+    scene.root_links.push_back(robot->name() + "::" + robot->description().model->getRoot()->name);
+    for (const RobotDescription* tree : robot->treeDescriptions())
+      for (const auto& kv : tree->model->links_)
+        for (size_t index = 0; index < kv.second->visual_array.size(); ++index)
+        {
+          const urdf::VisualSharedPtr& v = kv.second->visual_array[index];
+          Shape shape;
+          if (!v || !v->geometry || !shapeFromUrdf(*v->geometry, kv.first, quiet, shape) ||
+              (shape.kind == Shape::Kind::Mesh && shape.mesh_file.empty()))
+            continue;
+          scene.visuals.push_back(visualOf(robot->name(), robot->name() + "::" + kv.first, shape, v->origin,
+                                           visualMaterial(*tree, kv.first, index, *v)));
+        }
   }
   return scene;
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
+#include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 #include "physics/bullet_conversions.h"
@@ -58,6 +59,9 @@ struct DeepestContact : btCollisionWorld::ContactResultCallback
     const btMultiBodyLinkCollider* mine_b = ownLink(b);
     if ((mine_a != nullptr) == (mine_b != nullptr))
       return 0;  // a link touching its own robot
+    if (!a->getCollisionObject()->checkCollideWith(b->getCollisionObject()) ||
+        !b->getCollisionObject()->checkCollideWith(a->getCollisionObject()))
+      return 0;  // two that never collide: another tree of its model that does not self-collide
     if (-point.getDistance() > depth)
     {
       depth = -point.getDistance();
@@ -137,6 +141,9 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
   pools.m_defaultMaxCollisionAlgorithmPoolSize = 1024;
   w.collision_config.reset(new btDefaultCollisionConfiguration(pools));
   w.dispatcher.reset(new btCollisionDispatcher(w.collision_config.get()));
+  // A moving mesh's triangles (collision_shapes.h) against everything, before the pairs below take
+  // theirs.
+  btGImpactCollisionAlgorithm::registerAlgorithm(w.dispatcher.get());
   // A convex shape meets a plane in up to four points at once, as ODE's box-plane test gives them.
   // Bullet's default finds one (the deepest vertex) per step: a box landing flat took its whole
   // impact on one corner, which tipped it over and threw it 14 cm back up from a 1 m drop. With
@@ -352,19 +359,56 @@ Robot& World::spawn(RobotDescription description, const std::string& name, const
     if (!std::isfinite(kv.second))
       throw DescriptionError("initial position of joint '" + kv.first + "' is not finite");
 
-  std::unique_ptr<Robot::Internals> internals(new Robot::Internals);
-  internals->world = in_.get();
-  internals->name = name;
-  internals->description = std::move(description);
+  // A model of several trees: each tree's joints, and the trees apart (the canonical link's first).
+  std::vector<RobotDescription> trees;
+  trees.push_back(std::move(description));
+  for (RobotDescription& other : trees.front().other_trees)
+    trees.push_back(std::move(other));
+  trees.front().other_trees.clear();
+  std::vector<std::map<std::string, double>> tree_joints(trees.size());
   for (const auto& kv : initial_joints)
-    if (!internals->description.model->getJoint(kv.first))
+  {
+    size_t t = 0;
+    while (t < trees.size() && !trees[t].model->getJoint(kv.first))
+      ++t;
+    if (t == trees.size())
       throw DescriptionError("initial position given for joint '" + kv.first + "', which '" + name + "' does not have");
+    tree_joints[t][kv.first] = kv.second;
+  }
+  const bool several_trees = trees.size() > 1;
+  Robot& model = in_->addTree(std::move(trees.front()), name, pose, robot_namespace, tree_joints.front(), nullptr,
+                              several_trees);
+  try
+  {
+    for (size_t t = 1; t < trees.size(); ++t)
+      internalsOf(model).other_trees.push_back(&in_->addTree(std::move(trees[t]), name, pose, robot_namespace,
+                                                             tree_joints[t], &internalsOf(model), several_trees));
+  }
+  catch (...)
+  {
+    remove(name);
+    throw;
+  }
+  return model;
+}
+
+Robot& World::Internals::addTree(RobotDescription description, const std::string& name, const urdf::Pose& pose,
+                                 const std::string& robot_namespace,
+                                 const std::map<std::string, double>& initial_joints, Robot::Internals* canonical,
+                                 bool several_trees)
+{
+  std::unique_ptr<Robot::Internals> internals(new Robot::Internals);
+  internals->world = this;
+  internals->name = name;
+  internals->canonical = canonical;
+  internals->several_trees = several_trees;
+  internals->description = std::move(description);
   const ControlPluginDescription& control = internals->description.control;
   internals->control_namespace = control.controlNamespace(robot_namespace);
   internals->spawn_namespace = robot_namespace;
 
   std::unique_ptr<Robot> robot(new Robot(std::move(internals)));
-  Robot::Internals& r = *robot->in_;
+  Robot::Internals& r = internalsOf(*robot);
   try
   {
     buildRobot(r, pose, initial_joints);
@@ -374,36 +418,43 @@ Robot& World::spawn(RobotDescription description, const std::string& name, const
     removeRobot(r);  // takes back whatever was added to the dynamics world
     throw;
   }
-  warnIfSpawnedInside(*in_, r);
-  in_->robots.push_back(std::move(robot));
-  return *in_->robots.back();
+  warnIfSpawnedInside(*this, r);
+  robots.push_back(std::move(robot));
+  return *robots.back();
 }
 
 bool World::remove(const std::string& name)
 {
-  for (auto it = in_->robots.begin(); it != in_->robots.end(); ++it)
-    if ((*it)->name() == name)
-    {
-      if (in_->ray_scene)
-        in_->ray_scene->removeOwner((*it)->in_.get());
-      if (in_->gl_scene)
-        in_->gl_scene->removeOwner((*it)->in_.get());
-      if (in_->frame_worker)
-        in_->frame_worker->waitAll();  // its cameras' frames in the making write into them
-      removeRobot(*(*it)->in_);
-      in_->robots.erase(it);
-      for (auto& r : in_->robots)  // what rested on it must fall
-        if (!r->in_->disabled)
-          wakeUp(*r->in_->multibody.bullet);
-      return true;
-    }
-  return false;
+  Robot* model = robot(name);
+  if (!model)
+    return false;
+  if (in_->frame_worker)
+    in_->frame_worker->waitAll();  // its cameras' frames in the making write into them
+  // The model's every tree (robots named as the model), its other trees first.
+  std::vector<Robot::Internals*> trees;
+  for (Robot* tree : model->in_->other_trees)
+    trees.push_back(tree->in_.get());
+  trees.push_back(model->in_.get());
+  for (Robot::Internals* tree : trees)
+  {
+    if (in_->ray_scene)
+      in_->ray_scene->removeOwner(tree);
+    if (in_->gl_scene)
+      in_->gl_scene->removeOwner(tree);
+    removeRobot(*tree);
+    in_->robots.erase(std::find_if(in_->robots.begin(), in_->robots.end(),
+                                   [tree](const std::unique_ptr<Robot>& r) { return r->in_.get() == tree; }));
+  }
+  for (auto& r : in_->robots)  // what rested on it must fall
+    if (!r->in_->disabled)
+      wakeUp(*r->in_->multibody.bullet);
+  return true;
 }
 
 Robot* World::robot(const std::string& name)
 {
   for (auto& r : in_->robots)
-    if (r->name() == name)
+    if (r->name() == name && !r->in_->canonical)
       return r.get();
   return nullptr;
 }
@@ -412,7 +463,8 @@ std::vector<Robot*> World::robots()
 {
   std::vector<Robot*> out;
   for (auto& r : in_->robots)
-    out.push_back(r.get());
+    if (!r->in_->canonical)  // a model's other trees are its own (Robot::linkNames ...)
+      out.push_back(r.get());
   return out;
 }
 

@@ -187,10 +187,11 @@ class CarModel:
         return self._urdfs[key]
 
     def spawn(self, world, name, pose, chase_camera=False, params=None):
-        """The car in `world` at pose (x, y, yaw) with its controllers running (the spawner's), its mass
-        and tyres' friction `params`' (None: the URDF's)."""
+        """The car in `world` at pose (x, y, yaw), on what is under it there (standing_height), with its
+        controllers running (the spawner's), its mass and tyres' friction `params`' (None: the URDF's)."""
         x, y, yaw = pose
-        robot = world.spawn(self.spawn_urdf(params, chase_camera), name, pose=(x, y, 0.0, 0.0, 0.0, yaw))
+        z = standing_height(world, x, y)
+        robot = world.spawn(self.spawn_urdf(params, chase_camera), name, pose=(x, y, z, 0.0, 0.0, yaw))
         loaded, ok = robot.controller_manager.spawn(list(TUTORIAL_CONTROLLERS))
         if not ok:
             raise RuntimeError('the controllers did not start for %s: %s' % (name, world.messages()[-5:]))
@@ -209,6 +210,17 @@ class CarModel:
         g = self.geometry
         batch.set_drive(index, g.wheelbase, g.rear_track, g.front_track, g.wheel_radius, params['max_steering'],
                         params['max_speed'])
+
+
+# How far above a start the car looks down for what it stands on, m.
+STANDING_PROBE = 1.0
+
+
+def standing_height(world, x, y):
+    """The height of the first surface under (x, y) within STANDING_PROBE m up or down (the ground plane at
+    0, a track's floor link or floor mesh above it); 0 where there is none."""
+    below = world.cast_ray((x, y, STANDING_PROBE), (0.0, 0.0, -1.0), 2 * STANDING_PROBE)
+    return STANDING_PROBE - below if math.isfinite(below) else 0.0
 
 
 def new_world(world, controllers, noise_seed=0, time_step=None):
