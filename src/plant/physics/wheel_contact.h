@@ -9,7 +9,8 @@
 
 namespace bullet_plant
 {
-// Registers the wheel contact for cylinder/plane pairs with a dispatcher (both orders).
+// Registers the wheel contact for cylinder/plane and cylinder/triangle pairs with a dispatcher (both
+// orders).
 void registerWheelContact(btCollisionDispatcher& dispatcher);
 
 }  // namespace bullet_plant

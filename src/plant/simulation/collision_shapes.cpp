@@ -371,10 +371,24 @@ void areaAndVolume(const std::vector<btVector3>& corners, double& area, double& 
   volume = std::abs(volume);
 }
 
-// Whether a piece's triangles are its convex hull's surface (a closed convex solid: the same area
-// and volume within 1 %), or a flat convex polygon (the same area as one side of its flat hull):
-// then the hull collides exactly where the triangles would.
-bool isConvexPiece(const std::vector<float>& piece)
+// A convex piece thinner than this share of its length (a track's floor slab, a long wall) collides as
+// its triangles: Bullet's convex contact (GJK, then EPA for the depth) loses precision on such a hull
+// and put a wheel rolling on a 12 x 6 x 0.02 m slab's top face in touch with the slab's far corner,
+// with a sideways normal (a crash where there was none), at 0.02 m thick and at 0.2 m alike.
+constexpr double kThinnestHull = 0.1;
+
+// What a moving mesh's piece (connectedPieces) collides as.
+enum class Piece
+{
+  CompactConvex,  // its triangles are its convex hull's surface, and the hull is not thin: the hull
+  ThinConvex,     // convex, thinner than kThinnestHull of its length (or flat): its triangles
+  Concave,        // its triangles
+};
+
+// A piece is convex where its triangles are its hull's surface: a closed convex solid (the same area
+// and volume within 1 %), or a flat convex polygon (the same area as one side of its flat hull).
+// Then the hull collides exactly where the triangles would.
+Piece classifyPiece(const std::vector<float>& piece)
 {
   std::vector<btVector3> corners;
   for (size_t i = 0; i + 2 < piece.size(); i += 3)
@@ -398,11 +412,35 @@ bool isConvexPiece(const std::vector<float>& piece)
   constexpr double kTolerance = 0.01;
   const auto near = [](double a, double b) { return std::abs(a - b) <= kTolerance * std::max(a, b); };
   if (hull_area <= 0)
-    return false;
+    return Piece::Concave;  // a line or a point: nothing to collide with
   // Flat: its hull's volume is that of a slab thinner than a micrometre over its area.
   if (hull_volume <= 1e-6 * hull_area)
-    return near(area, hull_area / 2);
-  return near(area, hull_area) && near(volume, hull_volume);
+    return near(area, hull_area / 2) ? Piece::ThinConvex : Piece::Concave;
+  if (!(near(area, hull_area) && near(volume, hull_volume)))
+    return Piece::Concave;
+  // Its thickness: the narrowest of its widths across its faces; its length: its box's diagonal.
+  btVector3 low(1e30f, 1e30f, 1e30f), high(-1e30f, -1e30f, -1e30f);
+  for (int v = 0; v < hull.vertices.size(); ++v)
+  {
+    low.setMin(hull.vertices[v]);
+    high.setMax(hull.vertices[v]);
+  }
+  double thickness = 1e30;
+  for (size_t t = 0; t + 2 < hull_corners.size(); t += 3)
+  {
+    const btVector3 normal = (hull_corners[t + 1] - hull_corners[t]).cross(hull_corners[t + 2] - hull_corners[t]);
+    if (normal.length2() <= 0)
+      continue;
+    double lowest = 1e30, highest = -1e30;
+    for (int v = 0; v < hull.vertices.size(); ++v)
+    {
+      const double along = double(normal.normalized().dot(hull.vertices[v]));
+      lowest = std::min(lowest, along);
+      highest = std::max(highest, along);
+    }
+    thickness = std::min(thickness, highest - lowest);
+  }
+  return thickness >= kThinnestHull * double((high - low).length()) ? Piece::CompactConvex : Piece::ThinConvex;
 }
 
 void correctInternalEdges(btCollisionObject& object)
@@ -421,9 +459,18 @@ std::shared_ptr<btCollisionShape> movingMeshShape(const std::shared_ptr<const Me
 {
   const std::string triangles = std::to_string(mesh->triangleCount()) + " triangles";
   std::vector<std::vector<float>> pieces = connectedPieces(*mesh);
-  if (!std::all_of(pieces.begin(), pieces.end(), isConvexPiece))
+  std::vector<Piece> kinds;
+  for (const std::vector<float>& piece : pieces)
+    kinds.push_back(classifyPiece(piece));
+  if (std::count(kinds.begin(), kinds.end(), Piece::Concave))
   {
     note = "collides as its " + triangles + " (Bullet's GImpact: no convex shapes make it up exactly)";
+    return std::make_shared<MovingMeshShape>(mesh);
+  }
+  if (std::count(kinds.begin(), kinds.end(), Piece::ThinConvex))
+  {
+    note = "collides as its " + triangles + " (Bullet's GImpact: a convex piece of it is too thin for an exact "
+           "contact with its hull)";
     return std::make_shared<MovingMeshShape>(mesh);
   }
   if (pieces.size() <= 1)
