@@ -10,7 +10,7 @@ edges (a pixel whose neighbours' reference depths lie within 5 % of its own) at 
 colour pixels within 3/255 (3 x 3 means: the two frames' noise is drawn by different rules) with
 the same spread of noise (on the mesh race track its walls: its floor's texture is filtered now, as
 Gazebo filters, where the references took the nearest texel), and depths within 1 mm where both see
-a surface (2.5 mm on the mesh race track, see below). The worlds are written under the light the references
+a surface (4 mm on the mesh race track, see below). The worlds are written under the light the references
 were recorded in (REFERENCE_LIGHTS: the cameras now light as Gazebo does, a world's own lights and
 materials). Each scene renders at both of llvmpipe's vector widths
 (LP_NATIVE_VECTOR_WIDTH 128: SSE, 256: AVX2), in a process of its own (llvmpipe reads it once)."""
@@ -184,8 +184,9 @@ def test_opengl_cameras_give_the_recorded_ray_cast_frames(world, pose, name, wid
     interior = away_from_edges(np.where(np.isnan(reference_depth), np.inf, reference_depth))
     both = interior & np.isfinite(reference_depth) & np.isfinite(depth)
     assert both.mean() > 0.25, 'the ground and walls: the rest is sky beyond the clip range'
-    # On the mesh race track the car put where the older physics had it is 0.3 mm into the floor: the
-    # floor's contacts tilt it by up to 1 mrad in the 1 ms before the frame (2 mm at the far walls).
-    tolerance = 2.5e-3 if world == MESH_RACE_TRACK else 1e-3
+    # On the mesh race track the car put where the older physics had it (0.06 mm lower than where a
+    # wheel's one point on a flat patch of the mesh rests it, and 0.2 mrad off level) is levelled by
+    # up to 0.4 mrad in the 1 ms before the frame: 3.3 mm at the far walls.
+    tolerance = 4e-3 if world == MESH_RACE_TRACK else 1e-3
     assert np.nanmax(np.abs(depth[both] - reference_depth[both])) < tolerance
     assert np.array_equal(np.isnan(depth[interior]), np.isnan(reference_depth[interior])), 'the same pixels see nothing'

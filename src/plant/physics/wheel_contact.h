@@ -9,8 +9,8 @@
 
 namespace bullet_plant
 {
-// Registers the wheel contact for cylinder/plane and cylinder/triangle pairs with a dispatcher (both
-// orders).
+// Registers the wheel contact for cylinder/plane and cylinder/mesh pairs (a static mesh, a moving
+// one's GImpact) with a dispatcher, both orders; after GImpact's own registration.
 void registerWheelContact(btCollisionDispatcher& dispatcher);
 
 }  // namespace bullet_plant
