@@ -52,6 +52,13 @@ SWIVEL = """<model name="swivel"><pose>-3 3 1 0 0 0</pose>
   <joint name="socket" type="ball"><parent>world</parent><child>bob</child><pose>-0.2 0 0.5 0 0 0</pose></joint>
 </model>"""
 
+# Two boxes of one model that no joint joins (Gazebo's free links), 1 m apart, dropped from 0.5 m.
+PAIR = """<model name="pair"><pose>3 3 0.5 0 0 0</pose>""" + "".join(f"""
+  <link name="{side}"><pose>{x} 0 0 0 0 0</pose>
+    <inertial><mass>1</mass><inertia><ixx>0.0067</ixx><iyy>0.0067</iyy><izz>0.0067</izz></inertia></inertial>
+    <collision name="shell"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+  </link>""" for side, x in (('left', 0), ('right', 1))) + "</model>"
+
 # A world model ROS cannot name a topic of: left out with an error naming it, the node goes on.
 BAD_TOPIC = """<model name="badly_named"><pose>-3 0 0.1 0 0 0</pose>
   <link name="body"><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
@@ -81,7 +88,7 @@ def sim(tmp_path_factory):
     (models / 'tiny_post' / 'model.sdf').write_text(sdf(box_sdf('tiny_post', size=0.1, static=True)))
     (work / 'box.sdf').write_text(sdf(box_sdf('from_file', pose='0.5 0 0.1 0 0 0')))
     world = work / 'falling.world'
-    world.write_text(sdf_world(box_sdf('crate', pose='0 -3 1 0 0 0') + PENDULUM + SWIVEL + BAD_TOPIC))
+    world.write_text(sdf_world(box_sdf('crate', pose='0 -3 1 0 0 0') + PENDULUM + SWIVEL + PAIR + BAD_TOPIC))
     system = RosSystem(str(work))
     system.env['GAZEBO_MODEL_PATH'] = str(models)
     try:
@@ -170,4 +177,13 @@ def test_world_file_models_are_gazebo_ros_models(sim):
     log = sim.plant.log()
     assert "world model 'crate' loaded" in log and "world model 'pendulum' loaded" in log, log
     assert 'badly_named' not in out['model_states']
+    # The free links: one model, each link in link_states, falling on its own, moved with the model.
+    assert out['model_states'].count('pair') == 1 and not any('left' in m or 'right' in m for m in out['model_states'])
+    assert {'pair::left', 'pair::right'} <= set(out['link_states']), out['link_states']
+    assert out['pair_props']['body_names'] == ['left', 'right'], out['pair_props']
+    assert out['pair_rested'][0][2] == pytest.approx(0.1, abs=0.005) and out['pair_rested'][1][2] == pytest.approx(0.1, abs=0.005)
+    assert out['pair_rested'][1][0] - out['pair_rested'][0][0] == pytest.approx(1.0, abs=0.01)
+    assert out['pair_moved'][0] == pytest.approx([-5.0, 5.0, 0.1], abs=0.01)
+    assert out['pair_moved'][1] == pytest.approx([-4.0, 5.0, 0.1], abs=0.01), 'the free link moved with its model'
+    assert 'pair' not in out['after_pair_delete'] and not out['pair_link_after_delete'], 'every link went with it'
     assert "world model 'badly_named' is left out: sensor 'lidar'" in log and "'bad topic' is not a valid ROS name" in log

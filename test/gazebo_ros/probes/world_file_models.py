@@ -23,6 +23,11 @@ def props(name):
             'joint_names': list(r.joint_names), 'is_static': bool(r.is_static)}
 
 
+def link_xyz(name):
+    p = link(name, '').link_state.pose.position
+    return [p.x, p.y, p.z]
+
+
 def bob():
     p = link('swivel::bob', '').link_state.pose.position
     return [p.x, p.y, p.z]
@@ -43,6 +48,8 @@ out['rested'] = [m.pose.position.x, m.pose.position.y, m.pose.position.z]
 out['rested_speed'] = m.twist.linear.z
 out['pendulum_swung'] = abs(pitch('pendulum::bar') - out['pendulum_start'])
 out['swivel_swung'] = math.dist(bob(), swivel_start)
+out['link_states'] = list(rospy.wait_for_message('/gazebo/link_states', LinkStates, timeout=30).name)
+out['pair_rested'] = [link_xyz('pair::left'), link_xyz('pair::right')]
 srv('pause_physics', Empty)()
 out['set'] = result(srv('set_model_state', SetModelState)(ModelState('crate', pose(1.0, -4.0, 0.5), Twist(), 'world')))
 out['moved'] = xyz('crate')
@@ -52,6 +59,13 @@ out['reset_pendulum'] = pitch('pendulum::bar')
 out['props'] = props('pendulum')
 out['crate_props'] = props('crate')
 out['swivel_props'] = props('swivel')
+out['pair_props'] = props('pair')
+# reset_world put the pair back in the air; its model frame is its left box's (the file's link pose).
+srv('set_model_state', SetModelState)(ModelState('pair', pose(-5.0, 5.0, 0.1), Twist(), 'world'))
+out['pair_moved'] = [link_xyz('pair::left'), link_xyz('pair::right')]
+srv('delete_model', DeleteModel)('pair')
+out['after_pair_delete'] = list(srv('get_world_properties', GetWorldProperties)().model_names)
+out['pair_link_after_delete'] = bool(link('pair::right', '').success)
 socket = srv('get_joint_properties', GetJointProperties)('socket')
 out['socket'] = [bool(socket.success), list(socket.position), list(socket.rate)]
 out['delete'] = result(srv('delete_model', DeleteModel)('crate'))
