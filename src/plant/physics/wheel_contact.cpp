@@ -21,6 +21,45 @@ namespace
 // Above this |cos| between the cylinder's axis and the plane normal the cylinder is not lying down.
 constexpr btScalar kLyingCosine = btScalar(0.2);
 
+// The lowest line of a lying cylinder's tread towards a face of normal `normal`: the radius away from
+// the axis, straight towards the face in the wheel's plane; its middle.
+btVector3 lowestTreadPoint(const btCylinderShape& cylinder, const btTransform& pose, const btVector3& axis,
+                           const btVector3& normal)
+{
+  btVector3 down = -(normal - axis * axis.dot(normal));
+  down.normalize();
+  const int up = cylinder.getUpAxis();
+  return pose.getOrigin() + down * cylinder.getHalfExtentsWithMargin()[(up + 1) % 3];
+}
+
+// The wheel's one point of a step in its own manifold, `distance` off the surface along `normal` at
+// `on_surface` (the manifold's second body's), carrying the previous step's point's impulses so the
+// solver starts warm; none beyond the manifold's breaking threshold.
+void placeTreadPoint(btPersistentManifold* manifold, btManifoldResult* result, const btVector3& normal,
+                     const btVector3& on_surface, btScalar distance)
+{
+  btScalar impulse = 0, lateral1 = 0, lateral2 = 0;
+  if (manifold->getNumContacts() > 0)
+  {
+    const btManifoldPoint& old = manifold->getContactPoint(0);
+    impulse = old.m_appliedImpulse;
+    lateral1 = old.m_appliedImpulseLateral1;
+    lateral2 = old.m_appliedImpulseLateral2;
+  }
+  manifold->clearManifold();
+  result->setPersistentManifold(manifold);
+  if (distance > manifold->getContactBreakingThreshold())
+    return;
+  result->addContactPoint(normal, on_surface, distance);
+  if (manifold->getNumContacts() > 0)
+  {
+    btManifoldPoint& point = manifold->getContactPoint(0);
+    point.m_appliedImpulse = impulse;
+    point.m_appliedImpulseLateral1 = lateral1;
+    point.m_appliedImpulseLateral2 = lateral2;
+  }
+}
+
 class WheelPlaneAlgorithm : public OwnManifoldPlaneAlgorithm
 {
 public:
@@ -46,51 +85,14 @@ public:
       general_->processCollision(body0, body1, info, result);
       return;
     }
-    // The lowest line of the tread is the radius away from the axis, straight down in the wheel's
-    // plane; its middle is the contact point.
-    btVector3 down = -(normal - axis * axis.dot(normal));
-    down.normalize();
-    const btScalar radius = cylinder->getHalfExtentsWithMargin()[(up + 1) % 3];
-    const btVector3 lowest = cylinder_pose.getOrigin() + down * radius;
-    const btScalar distance = plane.height(lowest);
-
-    // One fresh point per step, carrying the previous point's impulses so the solver starts warm.
-    btScalar impulse = 0, lateral1 = 0, lateral2 = 0;
-    if (manifold_->getNumContacts() > 0)
-    {
-      const btManifoldPoint& old = manifold_->getContactPoint(0);
-      impulse = old.m_appliedImpulse;
-      lateral1 = old.m_appliedImpulseLateral1;
-      lateral2 = old.m_appliedImpulseLateral2;
-    }
-    manifold_->clearManifold();
-    result->setPersistentManifold(manifold_);
-    if (distance > manifold_->getContactBreakingThreshold())
-      return;
-    result->addContactPoint(normal, lowest - normal * distance, distance);
-    if (manifold_->getNumContacts() > 0)
-    {
-      btManifoldPoint& point = manifold_->getContactPoint(0);
-      point.m_appliedImpulse = impulse;
-      point.m_appliedImpulseLateral1 = lateral1;
-      point.m_appliedImpulseLateral2 = lateral2;
-    }
+    // The middle of the tread's lowest line is the contact point.
+    const btVector3 lowest = lowestTreadPoint(*cylinder, cylinder_pose, axis, normal);
+    placeTreadPoint(manifold_, result, normal, lowest - normal * plane.height(lowest), plane.height(lowest));
   }
 
 private:
   std::unique_ptr<btConvexPlaneCollisionAlgorithm> general_;
 };
-
-// The lowest line of a lying cylinder's tread towards a face of normal `normal`: the radius away from
-// the axis, straight towards the face in the wheel's plane; its middle.
-btVector3 lowestTreadPoint(const btCylinderShape& cylinder, const btTransform& pose, const btVector3& axis,
-                           const btVector3& normal)
-{
-  btVector3 down = -(normal - axis * axis.dot(normal));
-  down.normalize();
-  const int up = cylinder.getUpAxis();
-  return pose.getOrigin() + down * cylinder.getHalfExtentsWithMargin()[(up + 1) % 3];
-}
 
 // How far a triangle's corner may be off a face's plane, and its normal off the face's, and still be
 // part of one flat patch with it (a flat floor's neighbouring triangles).
@@ -223,27 +225,7 @@ public:
     general_->getAllContactManifolds(manifolds_);
     for (int m = 0; m < manifolds_.size(); ++m)
       manifolds_[m]->clearManifold();
-    // One fresh point per step, carrying the previous point's impulses so the solver starts warm.
-    btScalar impulse = 0, lateral1 = 0, lateral2 = 0;
-    if (manifold_->getNumContacts() > 0)
-    {
-      const btManifoldPoint& old = manifold_->getContactPoint(0);
-      impulse = old.m_appliedImpulse;
-      lateral1 = old.m_appliedImpulseLateral1;
-      lateral2 = old.m_appliedImpulseLateral2;
-    }
-    manifold_->clearManifold();
-    result->setPersistentManifold(manifold_);
-    if (contact.distance > manifold_->getContactBreakingThreshold())
-      return;
-    result->addContactPoint(contact.normal, contact.on_face, contact.distance);  // the mesh is the manifold's B
-    if (manifold_->getNumContacts() > 0)
-    {
-      btManifoldPoint& point = manifold_->getContactPoint(0);
-      point.m_appliedImpulse = impulse;
-      point.m_appliedImpulseLateral1 = lateral1;
-      point.m_appliedImpulseLateral2 = lateral2;
-    }
+    placeTreadPoint(manifold_, result, contact.normal, contact.on_face, contact.distance);  // the mesh is B
   }
 
   btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
