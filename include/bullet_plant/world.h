@@ -95,9 +95,22 @@ public:
   Robot& spawn(RobotDescription description, const std::string& name, const urdf::Pose& pose,
                const std::string& robot_namespace = "",
                const std::map<std::string, double>& initial_joints = {});
+  // Takes out the model `name`: a robot, or one of the world's static models (its collisions, and what
+  // lidars and cameras see of it); false for no such model.
   bool remove(const std::string& name);
   Robot* robot(const std::string& name);
   std::vector<Robot*> robots();
+
+  // The world file's static models (Gazebo's models that never move: the ground plane, a building's
+  // walls, a goal marker) where they are now, in file order: models as gazebo_ros has them beside the
+  // robots (description().static_models; their links' poses follow the model's).
+  const std::vector<StaticModelDescription>& staticModels() const;
+  const StaticModelDescription* staticModel(const std::string& name) const;
+  // set_model_state on a static model: a teleport (Gazebo moves a static model so), its links,
+  // collisions and what sensors and the viewer see of it moved with its model frame to `pose`; what
+  // rests on it wakes. False for no such model; throws std::invalid_argument for a pose that is not
+  // finite.
+  bool moveStaticModel(const std::string& name, const urdf::Pose& pose);
 
   // n physics steps. Camera frames due on the way render on a thread of their own while the
   // following steps run (each from the bodies' poses at its own time); step returns once they are
@@ -123,8 +136,9 @@ public:
   // Paused: the node stops stepping; controller switches then apply at once.
   void setPaused(bool paused);
   bool paused() const;
-  void resetSimulation();  // time to 0, robots to their spawn poses and joint positions
-  void resetWorld();       // robots to their spawn poses; time goes on
+  // time to 0, robots to their spawn poses and joint positions, static models where the file put them
+  void resetSimulation();
+  void resetWorld();  // robots to their spawn poses, static models where the file put them; time goes on
 
   // The lights by name, gazebo_ros's get_light_properties, set_light_properties and delete_light:
   // the world's lights in file order (model://sun's where the world includes it). A change

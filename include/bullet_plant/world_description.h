@@ -1,7 +1,7 @@
 // An SDF world as the plant reads it: <physics>, <gravity>, its <light>s, <scene>; static
 // models (box/cylinder/sphere/plane/mesh collisions, nested models, <include>d models found by
-// model://, resource_uri.h) as scenery that never moves; every other model as a model the world
-// simulates (sdf_model.h). The plant's own ground_plane and sun stand in for Gazebo's models of those
+// model://, resource_uri.h) as models that never move, their shapes in the world's static scene;
+// every other model as a model the world simulates (sdf_model.h). The plant's own ground_plane and sun stand in for Gazebo's models of those
 // names.
 #pragma once
 
@@ -16,6 +16,7 @@ namespace bullet_plant
 struct StaticCollision
 {
   std::string name;   // model::link::collision, as Gazebo names them
+  std::string model;  // the static model it belongs to (StaticModelDescription::name)
   Shape shape;
   urdf::Pose pose;    // in the world
   double mu = 1.0;    // Gazebo's default friction
@@ -28,9 +29,25 @@ struct StaticCollision
 struct StaticVisual
 {
   std::string name;   // model::link::visual
+  std::string model;  // the static model it belongs to
   Shape shape;
   urdf::Pose pose;    // in the world
   VisualMaterial material;  // its <material> and <transparency>
+};
+
+// A model of the world that never moves (<static>, the ground plane, a building): a model as Gazebo
+// has it (gazebo_ros lists it, deletes it, teleports it), whose collisions and visuals are the
+// world's static ones (StaticCollision::model, StaticVisual::model names it).
+struct StaticModelDescription
+{
+  struct Link
+  {
+    std::string name;  // in the model, nested models' scoped ("inner::link")
+    urdf::Pose pose;   // in the world
+  };
+  std::string name;
+  urdf::Pose pose;     // its model frame in the world
+  std::vector<Link> links;
 };
 
 // A <light> as Gazebo's renderer (OGRE) lights cameras with it (pinhole.h's Lighting): a
@@ -92,6 +109,8 @@ struct WorldDescription
   // The world's lights as its file gives them, in file order (an <include>d model://sun among them);
   // a world without any is lit by its ambient light alone.
   std::vector<LightDescription> lights;
+  // The static models in file order, and their collisions and visuals.
+  std::vector<StaticModelDescription> static_models;
   std::vector<StaticCollision> collisions;
   std::vector<StaticVisual> visuals;
   // The models that move (SDF's default; not <static>), in file order: the world spawns each as

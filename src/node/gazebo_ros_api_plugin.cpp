@@ -30,12 +30,13 @@ namespace
 // gazebo_ros takes these reference frame names as the world.
 bool isWorldFrame(const std::string& frame) { return frame.empty() || frame == "world" || frame == "map" || frame == "/map"; }
 
-// A link by gazebo_ros's scoped name, model::link.
+// A link by gazebo_ros's scoped name, model::link: a robot's, or a static model's (at rest).
 struct LinkRef
 {
   Robot* robot = nullptr;
   std::string link;
-  explicit operator bool() const { return robot != nullptr; }
+  const StaticModelDescription::Link* static_link = nullptr;
+  explicit operator bool() const { return robot != nullptr || static_link != nullptr; }
 };
 
 LinkRef findLink(World& world, const std::string& scoped)
@@ -43,14 +44,26 @@ LinkRef findLink(World& world, const std::string& scoped)
   const size_t at = scoped.find("::");
   if (at == std::string::npos)
     return {};
-  Robot* robot = world.robot(scoped.substr(0, at));
-  const std::string link = scoped.substr(at + 2);
-  if (!robot)
-    return {};
-  for (const std::string& name : robot->linkNames())
-    if (name == link)
-      return {robot, link};
+  const std::string model = scoped.substr(0, at), link = scoped.substr(at + 2);
+  if (Robot* robot = world.robot(model))
+  {
+    for (const std::string& name : robot->linkNames())
+      if (name == link)
+        return {robot, link, nullptr};
+  }
+  else if (const StaticModelDescription* fixed = world.staticModel(model))
+    for (const StaticModelDescription::Link& l : fixed->links)
+      if (l.name == link)
+        return {nullptr, link, &l};
   return {};
+}
+
+// A robot's link by its scoped name: what the services that act on a link's dynamics reach (a static
+// model's links never move: Gazebo's static links take no state, wrench or mass).
+LinkRef findRobotLink(World& world, const std::string& scoped)
+{
+  const LinkRef link = findLink(world, scoped);
+  return link.robot ? link : LinkRef();
 }
 
 struct State
@@ -59,8 +72,25 @@ struct State
   Twist twist;
 };
 
-State linkState(const LinkRef& ref) { return {ref.robot->linkPose(ref.link), ref.robot->linkTwist(ref.link)}; }
+State linkState(const LinkRef& ref)
+{
+  if (ref.static_link)
+    return {ref.static_link->pose, Twist()};
+  return {ref.robot->linkPose(ref.link), ref.robot->linkTwist(ref.link)};
+}
 State modelState(Robot& robot) { return {robot.basePose(), robot.baseTwist()}; }
+
+// A model's state by name, a robot's or a static model's (at rest); false for no such model.
+bool modelStateOf(World& world, const std::string& name, State& state)
+{
+  if (Robot* robot = world.robot(name))
+    state = modelState(*robot);
+  else if (const StaticModelDescription* fixed = world.staticModel(name))
+    state = {fixed->pose, Twist()};
+  else
+    return false;
+  return true;
+}
 
 urdf::Vector3 vec(const std::array<double, 3>& a) { return urdf::Vector3(a[0], a[1], a[2]); }
 std::array<double, 3> arr(const urdf::Vector3& v) { return {{v.x, v.y, v.z}}; }
@@ -312,7 +342,7 @@ bool GazeboRosApiPlugin::spawnModel(gazebo_msgs::SpawnModel::Request& req, gazeb
       const LinkRef frame = findLink(world_, req.reference_frame);
       if (!frame)
         return Check::NoReferenceFrame;
-      pose = inWorld(State{pose, Twist()}, frame.robot->linkPose(frame.link)).pose;
+      pose = inWorld(State{pose, Twist()}, linkState(frame).pose).pose;
     }
     return world_.robot(req.model_name) ? Check::Exists : Check::Ok;
   });
@@ -383,15 +413,14 @@ bool GazeboRosApiPlugin::resetWorld(std_srvs::Empty::Request&, std_srvs::Empty::
 bool GazeboRosApiPlugin::getModelState(gazebo_msgs::GetModelState::Request& req,
                                        gazebo_msgs::GetModelState::Response& res)
 {
-  Robot* robot = world_.robot(req.model_name);
-  if (!robot)
+  State state;
+  if (!modelStateOf(world_, req.model_name, state))
   {
     ROS_ERROR("GetModelState: model [%s] does not exist", req.model_name.c_str());
     res.success = false;
     res.status_message = "GetModelState: model does not exist";
     return true;
   }
-  State state = modelState(*robot);
   if (!isWorldFrame(req.relative_entity_name))
   {
     const LinkRef frame = findLink(world_, req.relative_entity_name);
@@ -461,7 +490,7 @@ bool GazeboRosApiPlugin::setLinkState(gazebo_msgs::SetLinkState::Request& req, g
 bool GazeboRosApiPlugin::updateModelState(const gazebo_msgs::ModelState& request, std::string& message)
 {
   Robot* robot = world_.robot(request.model_name);
-  if (!robot)
+  if (!robot && !world_.staticModel(request.model_name))
   {
     ROS_ERROR("Updating ModelState: model [%s] does not exist", request.model_name.c_str());
     message = "SetModelState: model does not exist";
@@ -478,14 +507,20 @@ bool GazeboRosApiPlugin::updateModelState(const gazebo_msgs::ModelState& request
       message = "SetModelState: specified reference frame entity does not exist";
       return false;
     }
-    target = inWorld(target, frame.robot->linkPose(frame.link));
+    target = inWorld(target, linkState(frame).pose);
   }
   if (!finite(target))
   {
     message = "SetModelState: the state of '" + request.model_name + "' is not finite";
     return false;
   }
-  robot->setModelState(target.pose, target.twist);
+  if (robot)
+    robot->setModelState(target.pose, target.twist);
+  else
+  {
+    world_.moveStaticModel(request.model_name, target.pose);  // a teleport, as Gazebo moves a static model
+    publishScene();
+  }
   publishScenePoses();
   message = "SetModelState: set model state done";
   return true;
@@ -493,7 +528,7 @@ bool GazeboRosApiPlugin::updateModelState(const gazebo_msgs::ModelState& request
 
 bool GazeboRosApiPlugin::updateLinkState(const gazebo_msgs::LinkState& request, std::string& message)
 {
-  const LinkRef link = findLink(world_, request.link_name);
+  const LinkRef link = findRobotLink(world_, request.link_name);
   if (!link)
   {
     ROS_ERROR("Updating LinkState: link [%s] does not exist", request.link_name.c_str());
@@ -510,7 +545,7 @@ bool GazeboRosApiPlugin::updateLinkState(const gazebo_msgs::LinkState& request, 
       message = "SetLinkState: failed";
       return false;
     }
-    target = inWorld(target, frame.robot->linkPose(frame.link));
+    target = inWorld(target, linkState(frame).pose);
   }
   if (!finite(target))
   {
@@ -563,6 +598,8 @@ bool GazeboRosApiPlugin::getWorldProperties(gazebo_msgs::GetWorldProperties::Req
                                             gazebo_msgs::GetWorldProperties::Response& res)
 {
   res.sim_time = world_.time();
+  for (const StaticModelDescription& fixed : world_.staticModels())
+    res.model_names.push_back(fixed.name);
   for (Robot* robot : world_.robots())
     res.model_names.push_back(robot->name());
   res.rendering_enabled = true;
@@ -575,6 +612,20 @@ bool GazeboRosApiPlugin::getModelProperties(gazebo_msgs::GetModelProperties::Req
                                             gazebo_msgs::GetModelProperties::Response& res)
 {
   Robot* robot = world_.robot(req.model_name);
+  if (!robot)
+    if (const StaticModelDescription* fixed = world_.staticModel(req.model_name))
+    {
+      // A static model: its links, and its collisions by their SDF names, as Gazebo lists them.
+      for (const StaticModelDescription::Link& link : fixed->links)
+        res.body_names.push_back(link.name);
+      for (const StaticCollision& collision : world_.description().collisions)
+        if (collision.model == fixed->name)
+          res.geom_names.push_back(collision.name.substr(collision.name.rfind("::") + 2));
+      res.is_static = true;
+      res.success = true;
+      res.status_message = "GetModelProperties: got properties";
+      return true;
+    }
   if (!robot)
   {
     ROS_ERROR("GetModelProperties: model [%s] does not exist", req.model_name.c_str());
@@ -855,7 +906,7 @@ bool GazeboRosApiPlugin::setJointProperties(gazebo_msgs::SetJointProperties::Req
 bool GazeboRosApiPlugin::getLinkProperties(gazebo_msgs::GetLinkProperties::Request& req,
                                            gazebo_msgs::GetLinkProperties::Response& res)
 {
-  const LinkRef link = findLink(world_, req.link_name);
+  const LinkRef link = findRobotLink(world_, req.link_name);
   if (!link)
   {
     res.success = false;
@@ -883,7 +934,7 @@ bool GazeboRosApiPlugin::getLinkProperties(gazebo_msgs::GetLinkProperties::Reque
 bool GazeboRosApiPlugin::setLinkProperties(gazebo_msgs::SetLinkProperties::Request& req,
                                            gazebo_msgs::SetLinkProperties::Response& res)
 {
-  const LinkRef link = findLink(world_, req.link_name);
+  const LinkRef link = findRobotLink(world_, req.link_name);
   if (!link)
   {
     res.success = false;
@@ -1004,7 +1055,7 @@ bool GazeboRosApiPlugin::applyBodyWrench(gazebo_msgs::ApplyBodyWrench::Request& 
                                          gazebo_msgs::ApplyBodyWrench::Response& res)
 {
   res.success = false;
-  const LinkRef body = findLink(world_, req.body_name);
+  const LinkRef body = findRobotLink(world_, req.body_name);
   if (!body)
   {
     ROS_ERROR("ApplyBodyWrench: body [%s] does not exist", req.body_name.c_str());
@@ -1026,7 +1077,7 @@ bool GazeboRosApiPlugin::applyBodyWrench(gazebo_msgs::ApplyBodyWrench::Request& 
       res.status_message = "ApplyBodyWrench: reference_frame not found";
       return true;
     }
-    const urdf::Rotation axes = frame.robot->linkPose(frame.link).rotation;
+    const urdf::Rotation axes = linkState(frame).pose.rotation;
     force = axes * force;
     torque = axes * torque;
   }
@@ -1045,7 +1096,7 @@ bool GazeboRosApiPlugin::applyBodyWrench(gazebo_msgs::ApplyBodyWrench::Request& 
 
 bool GazeboRosApiPlugin::clearBodyWrenches(gazebo_msgs::BodyRequest::Request& req, gazebo_msgs::BodyRequest::Response&)
 {
-  if (const LinkRef body = findLink(world_, req.body_name))
+  if (const LinkRef body = findRobotLink(world_, req.body_name))
     body.robot->clearLinkWrenches(body.link);
   return true;
 }
@@ -1087,6 +1138,12 @@ void GazeboRosApiPlugin::publishModelStates()
   if (model_states_pub_.getNumSubscribers() == 0)
     return;
   gazebo_msgs::ModelStates states;
+  for (const StaticModelDescription& fixed : world_.staticModels())  // at rest where they are
+  {
+    states.name.push_back(fixed.name);
+    states.pose.push_back(toMsg(fixed.pose));
+    states.twist.push_back(toMsg(Twist()));
+  }
   for (Robot* robot : world_.robots())
   {
     states.name.push_back(robot->name());
@@ -1099,6 +1156,13 @@ void GazeboRosApiPlugin::publishModelStates()
 gazebo_msgs::LinkStates GazeboRosApiPlugin::linkStates()
 {
   gazebo_msgs::LinkStates states;
+  for (const StaticModelDescription& fixed : world_.staticModels())
+    for (const StaticModelDescription::Link& link : fixed.links)
+    {
+      states.name.push_back(fixed.name + "::" + link.name);
+      states.pose.push_back(toMsg(link.pose));
+      states.twist.push_back(toMsg(Twist()));
+    }
   for (Robot* robot : world_.robots())
     for (const std::string& link : robot->linkNames())
     {

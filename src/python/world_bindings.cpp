@@ -196,7 +196,32 @@ void init_world(py::module_& m)
          py::arg("joints") = std::map<std::string, double>(), py::keep_alive<0, 1>(),
          "add a model from URDF or SDF text; raises DescriptionError naming what is wrong")
       .def("remove", [](PyWorld& w, const std::string& name) { return w.remove(name); }, py::arg("name"),
-           "take a robot out; its handles then raise RobotRemovedError")
+           "take a model out (a robot, or one of the world file's static models); a robot's handles then raise "
+           "RobotRemovedError")
+      .def_property_readonly("static_models", [](PyWorld& w) {
+        py::list out;
+        for (const StaticModelDescription& model : w.world->staticModels())
+        {
+          py::dict links;
+          for (const StaticModelDescription::Link& link : model.links)
+            links[py::str(link.name)] = poseArray(link.pose);
+          out.append(py::dict(py::arg("name") = model.name, py::arg("pose") = poseArray(model.pose),
+                              py::arg("links") = links));
+        }
+        return out;
+      }, "the world file's static models where they are now, in file order: dicts of name, pose (x y z qx qy qz qw) "
+         "and links (name: pose in the world)")
+      .def("move_static_model", [](PyWorld& w, const std::string& name, const std::vector<double>& pose) {
+        if (pose.size() != 7)
+          throw py::value_error("move_static_model takes a pose of x y z qx qy qz qw");
+        urdf::Pose p;
+        p.position = urdf::Vector3(pose[0], pose[1], pose[2]);
+        p.rotation = urdf::Rotation(pose[3], pose[4], pose[5], pose[6]);
+        p.rotation.normalize();
+        if (!w.world->moveStaticModel(name, p))
+          throw py::key_error("no static model named '" + name + "'");
+      }, py::arg("name"), py::arg("pose"),
+         "gazebo_ros's set_model_state on a static model: a teleport, its collisions and what sensors see moved with it")
       .def("robot", [](PyWorld& w, const std::string& name) {
         Robot* r = w.world->robot(name);
         if (!r)

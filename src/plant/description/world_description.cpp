@@ -27,7 +27,32 @@ struct Placement
   std::string name;
   urdf::Pose pose;  // in the world
   bool is_static = false;
+  // Of a static model's part: the world's static model it belongs to (WorldDescription::static_models)
+  // and the scope its links' names take there ("" for the model's own, "inner::" for a nested one's).
+  std::string model, link_scope;
 };
+
+// A static model of the world (a top-level <model> or <include>), its links to come.
+Placement staticModel(const std::string& name, const urdf::Pose& pose, WorldDescription& world)
+{
+  world.static_models.push_back({name, pose, {}});
+  Placement placement;
+  placement.name = placement.model = name;
+  placement.pose = pose;
+  placement.is_static = true;
+  return placement;
+}
+
+// The link `name` (scoped in its model) of the static model `model`, at `pose` in the world.
+void addStaticLink(const std::string& model, const std::string& name, const urdf::Pose& pose, WorldDescription& world)
+{
+  for (auto it = world.static_models.rbegin(); it != world.static_models.rend(); ++it)
+    if (it->name == model)
+    {
+      it->links.push_back({name, pose});
+      return;
+    }
+}
 
 // The strongest <gravity> the plant takes, m/s^2 (100 g): beyond it the robots only diverge.
 constexpr double kMaxGravity = 1000.0;
@@ -36,6 +61,7 @@ StaticCollision groundPlane(const std::string& model_name, const urdf::Pose& pos
 {
   StaticCollision ground;
   ground.name = model_name + "::link::collision";
+  ground.model = model_name;
   ground.shape.kind = Shape::Kind::Plane;
   ground.pose = pose;
   return ground;
@@ -46,15 +72,23 @@ StaticVisual groundPlaneVisual(const StaticCollision& ground)
 {
   StaticVisual visual;
   visual.name = ground.name.substr(0, ground.name.rfind("::")) + "::visual";
+  visual.model = ground.model;
   visual.shape = ground.shape;
   visual.pose = ground.pose;
   visual.material.has_replace = sdf::gazeboMaterial("Gazebo/Grey", visual.material.replace);
   return visual;
 }
 
-void addGroundPlane(const std::string& model_name, const urdf::Pose& pose, WorldDescription& world)
+// Gazebo's ground_plane model: a static model of one link, or a part of the static model that
+// includes it (`within`, with its link scope).
+void addGroundPlane(const std::string& model_name, const urdf::Pose& pose, const Placement* within,
+                    WorldDescription& world)
 {
+  const Placement placement = within ? *within : staticModel(model_name, pose, world);
+  const std::string link = within ? placement.link_scope + model_name.substr(model_name.rfind("::") + 2) + "::link" : "link";
+  addStaticLink(placement.model, link, pose, world);
   world.collisions.push_back(groundPlane(model_name, pose));
+  world.collisions.back().model = placement.model;
   world.visuals.push_back(groundPlaneVisual(world.collisions.back()));
 }
 
@@ -69,7 +103,7 @@ std::vector<double> colourNumbers(const std::string& text, const std::string& wh
 }
 
 void readInclude(const tinyxml2::XMLElement* include, const Source& source, const std::string& scope,
-                 const urdf::Pose& parent, int depth, WorldDescription& world);
+                 const urdf::Pose& parent, int depth, WorldDescription& world, const Placement* within = nullptr);
 LightDescription readLight(const tinyxml2::XMLElement* light, const urdf::Pose& parent, const Source& source,
                            WorldDescription& world);
 
@@ -77,6 +111,7 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
 {
   std::string link_name = link->Attribute("name") ? link->Attribute("name") : "link";
   urdf::Pose link_pose = compose(model.pose, xml::parseSdfPose(xml::childText(link, "pose", "")));
+  addStaticLink(model.model, model.link_scope + link_name, link_pose, world);
   for (auto* c = link->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
   {
     StaticCollision collision;
@@ -101,6 +136,7 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
     collision.surface = sdf::readSurface(c, where + " in " + source.describe());
     collision.restitution = collision.surface.restitution;
     collision.restitution_threshold = collision.surface.restitution_threshold;
+    collision.model = model.model;
     world.collisions.push_back(collision);
   }
   for (auto* v = link->FirstChildElement("visual"); v; v = v->NextSiblingElement("visual"))
@@ -114,6 +150,7 @@ void readLink(const tinyxml2::XMLElement* link, const Source& source, const Plac
       continue;
     visual.pose = compose(link_pose, xml::parseSdfPose(xml::childText(v, "pose", "")));
     visual.material = sdf::readMaterial(v, "visual '" + visual.name + "' in " + source.describe(), world.warnings);
+    visual.model = model.model;
     world.visuals.push_back(visual);
   }
   if (link->FirstChildElement("light"))
@@ -138,10 +175,12 @@ void readModel(const tinyxml2::XMLElement* model, const Source& source, const Pl
       nested.name = placement.name + "::" + (e->Attribute("name") ? e->Attribute("name") : "model");
       nested.pose = compose(placement.pose, xml::parseSdfPose(xml::childText(e, "pose", "")));
       nested.is_static = placement.is_static;
+      nested.model = placement.model;
+      nested.link_scope = placement.link_scope + (e->Attribute("name") ? e->Attribute("name") : "model") + "::";
       readModel(e, source, nested, depth + 1, world);
     }
     else if (tag == "include")
-      readInclude(e, source, placement.name + "::", placement.pose, depth + 1, world);
+      readInclude(e, source, placement.name + "::", placement.pose, depth + 1, world, &placement);
   }
 }
 
@@ -227,7 +266,7 @@ void addMovingModel(const tinyxml2::XMLElement* model, const Source& source, con
 // <include>: the model's files are found, then it is read as if written here, with the include's
 // <name>, <pose> and <static> in place of the model's own.
 void readInclude(const tinyxml2::XMLElement* include, const Source& source, const std::string& scope,
-                 const urdf::Pose& parent, int depth, WorldDescription& world)
+                 const urdf::Pose& parent, int depth, WorldDescription& world, const Placement* within)
 {
   const std::string uri = xml::childText(include, "uri", "");
   const urdf::Pose pose = compose(parent, xml::parseSdfPose(xml::childText(include, "pose", "")));
@@ -236,7 +275,7 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
   // the same everywhere.
   if (uri == "model://ground_plane" || uri == "model://ground_plane/")
   {
-    addGroundPlane(scope + (name_override.empty() ? "ground_plane" : name_override), pose, world);
+    addGroundPlane(scope + (name_override.empty() ? "ground_plane" : name_override), pose, within, world);
     return;
   }
   if (uri == "model://sun" || uri == "model://sun/")
@@ -275,8 +314,14 @@ void readInclude(const tinyxml2::XMLElement* include, const Source& source, cons
   placement.is_static = sdf::isTrue(xml::childText(include, "static", xml::childText(model, "static", "false")));
   if (scope.empty() && (!placement.is_static || hasSensorOrPlugin(model)))
     addMovingModel(model, model_source, placement, depth, world);
+  else if (!within)
+    readModel(model, model_source, staticModel(placement.name, placement.pose, world), depth, world);
   else
+  {
+    placement.model = within->model;
+    placement.link_scope = within->link_scope + placement.name.substr(scope.size()) + "::";
     readModel(model, model_source, placement, depth, world);
+  }
 }
 
 // A <light> in the world (`parent`: where the element that holds it puts it), SDF's defaults where
@@ -535,10 +580,8 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
       placement.name = e->Attribute("name") ? e->Attribute("name") : "model";
       placement.is_static = sdf::isTrue(xml::childText(e, "static", "false")) || holdsOnlyStaticModels(e, source, 0);
       if (placement.is_static && !hasSensorOrPlugin(e))
-      {
-        placement.pose = xml::parseSdfPose(xml::childText(e, "pose", ""));
-        readModel(e, source, placement, 0, world);
-      }
+        readModel(e, source, staticModel(placement.name, xml::parseSdfPose(xml::childText(e, "pose", "")), world), 0,
+                  world);
       else
         addMovingModel(e, source, placement, 0, world, true);
     }
@@ -566,7 +609,7 @@ WorldDescription emptyWorldDescription()
 {
   WorldDescription world;
   world.lights.push_back(LightDescription::sun());
-  addGroundPlane("ground_plane", urdf::Pose(), world);
+  addGroundPlane("ground_plane", urdf::Pose(), nullptr, world);
   return world;
 }
 

@@ -110,6 +110,10 @@ struct World::Internals
   std::vector<std::shared_ptr<btCollisionShape>> static_shapes;  // a static mesh's may be shared (collision_shapes.h)
   std::vector<std::unique_ptr<btCollisionObject>> static_objects;
   std::vector<std::string> static_names;  // of static_objects, model::link::collision
+  std::vector<std::string> static_object_models;  // of static_objects, the static model each is of
+  // Where the world file put each static model (description.static_models holds where it is now):
+  // where reset_world puts it back.
+  std::map<std::string, urdf::Pose> static_file_poses;
   std::vector<RayPrimitive> static_ray_shapes;
   std::unique_ptr<RayScene> ray_scene;  // built when a sensor first needs it
   // The cameras' OpenGL: tried when a camera first renders; null (said once, in the log) where
@@ -143,6 +147,13 @@ struct World::Internals
   // "model::link::collision" of the collision Bullet reports as `child` of `object` (a compound's
   // child index), as Gazebo's contacts name it.
   std::string collisionNameOf(const btCollisionObject* object, int child) const;
+  // The static models (static_models.cpp): moved (World::moveStaticModel), removed (World::remove),
+  // back where the file put them (World::resetWorld); after a change, what sensors see of them made
+  // again from the description (once a change, not once a frame), the robots' bodies added anew.
+  bool moveStaticModel(const std::string& name, const urdf::Pose& pose);
+  bool removeStaticModel(const std::string& name);
+  void resetStaticModels();
+  void rebuildStaticScenes();
   // Everything sensors can see: the static scene and every robot's bodies where they are now
   // (a robot's bodies are built into it once). `hidden` as RayScene::commit.
   const RayScene& rayScene(const void* hidden);
@@ -152,6 +163,11 @@ struct World::Internals
   void collectFrames();
   Lighting lighting() const;
 };
+
+// What sensors see of a world's static models where its description has them now: each collision
+// (lidars) and visual (cameras). `log`: where a visual's mesh that cannot be read and its textures'
+// problems are said (the world's first build); null: said already.
+std::vector<RayPrimitive> staticRayShapes(const WorldDescription& description, Log* log);
 
 // The impulse the last step's solver gave a manifold's point on its body A, normal and friction
 // rows (Bullet's normal points from B into A; B took the opposite).

@@ -197,6 +197,7 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
     w.static_shapes.push_back(std::move(collider.shape));
     w.static_objects.emplace_back(new btCollisionObject());
     w.static_names.push_back(c.name);
+    w.static_object_models.push_back(c.model);
     btCollisionObject* object = w.static_objects.back().get();
     object->setCollisionShape(w.static_shapes.back().get());
     object->setWorldTransform(toBullet(c.pose));
@@ -215,29 +216,10 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
     correctInternalEdges(*object);
     w.dynamics->addCollisionObject(object, btBroadphaseProxy::StaticFilter,
                                    btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    w.static_ray_shapes.push_back(std::move(collider.ray));
-    w.static_ray_shapes.back().seen_by = kSeenByLidars;
   }
-  for (const StaticVisual& v : description.visuals)
-  {
-    std::string reason;
-    std::shared_ptr<const MeshData> mesh =
-        v.shape.kind == Shape::Kind::Mesh ? loadMesh(v.shape.mesh_file, v.shape.scale, reason) : nullptr;
-    if (v.shape.kind == Shape::Kind::Mesh && !mesh)
-    {
-      w.log.warn("world: visual '" + v.name + "': mesh '" + v.shape.mesh_uri + "' " + reason +
-                 "; cameras do not see it");
-      continue;
-    }
-    w.static_ray_shapes.push_back(mesh ? RayPrimitive::fromMesh(mesh, v.pose, nullptr)
-                                       : RayPrimitive::fromShape(v.shape, v.pose, nullptr));
-    w.static_ray_shapes.back().seen_by = kSeenByCameras;
-    w.static_ray_shapes.back().material = v.material;
-    if (mesh)
-      for (const std::string& problem : textureProblems(*mesh))
-        w.log.warn("world: visual '" + v.name + "': mesh '" + v.shape.mesh_uri + "': " + problem +
-                   "; cameras see it without that texture");
-  }
+  w.static_ray_shapes = staticRayShapes(description, &w.log);
+  for (const StaticModelDescription& model : description.static_models)
+    w.static_file_poses[model.name] = model.pose;
   for (const std::string& warning : description.warnings)
     w.log.warn("world: " + warning);
   for (const std::string& error : description.errors)
@@ -342,7 +324,7 @@ Robot& World::spawn(RobotDescription description, const std::string& name, const
 {
   if (name.empty())
     throw DescriptionError("a robot needs a name (spawn_model -model NAME)");
-  if (robot(name))
+  if (robot(name) || staticModel(name))
     throw DescriptionError("a model named '" + name + "' is already in the world; remove it or pick another -model name");
   for (double v : {pose.position.x, pose.position.y, pose.position.z, pose.rotation.x, pose.rotation.y,
                    pose.rotation.z, pose.rotation.w})
@@ -427,7 +409,7 @@ bool World::remove(const std::string& name)
 {
   Robot* model = robot(name);
   if (!model)
-    return false;
+    return in_->removeStaticModel(name);
   if (in_->frame_worker)
     in_->frame_worker->waitAll();  // its cameras' frames in the making write into them
   // The model's every tree (robots named as the model), its other trees first.
@@ -597,6 +579,7 @@ void World::resetWorld()
 {
   for (auto& r : in_->robots)
     r->in_->resetToSpawn();
+  in_->resetStaticModels();
 }
 
 namespace
