@@ -42,7 +42,7 @@ def paused_plant(ros, urdf_file):
 @pytest.mark.ros
 def test_queries_answer_with_gazebo_ros_flags_and_messages(ros, paused_plant):
     out = ros.probe('gazebo_ros/probes/queries_answer_with_gazebo_ros_flags_and_messages.py', timeout=90)
-    assert out['world'] == [['tianracer'], True, 'GetWorldProperties: got properties']
+    assert out['world'] == [['ground_plane', 'tianracer'], True, 'GetWorldProperties: got properties']
     assert out['props'] == [[True, 'GetModelProperties: got properties'], True, True]
     assert out['props_unknown'] == [False, 'GetModelProperties: model does not exist']
     assert out['model'][0] == [True, 'GetModelState: got properties'] and abs(out['model'][1]) < 0.05
@@ -130,7 +130,7 @@ def test_spawn_and_delete_with_gazebo_ros_messages(ros, paused_plant, urdf_file)
     assert out['sdf_takes_urdf'] == [True, 'SpawnModel: Successfully spawned entity']
     assert out['delete'] == [True, 'DeleteModel: successfully deleted model']
     assert out['delete_again'] == [False, 'DeleteModel: model does not exist']
-    assert sorted(out['names']) == ['car4', 'tianracer']
+    assert sorted(out['names']) == ['car4', 'ground_plane', 'tianracer']
 
 
 @pytest.mark.ros
@@ -138,9 +138,10 @@ def test_spawn_and_delete_with_gazebo_ros_messages(ros, paused_plant, urdf_file)
 def test_model_and_link_states_are_published_on_every_step_with_scoped_names(ros, paused_plant):
     out = ros.probe('gazebo_ros/probes/model_and_link_states_are_published_on_every_step_with_scoped_names.py',
                     timeout=90)
-    assert out['models'] == ['tianracer']
+    assert out['models'] == ['ground_plane', 'tianracer'], 'the static ground plane is a model, as in Gazebo'
     assert 'tianracer::base_link' in out['links'] and 'tianracer::left_rear_wheel' in out['links']
-    assert all(name.startswith('tianracer::') for name in out['links'])
+    assert all(name.startswith(('tianracer::', 'ground_plane::')) for name in out['links'])
+    assert 'ground_plane::link' in out['links'], "a static model's link, as Gazebo lists it"
     assert out['laser_z'][0] == pytest.approx(out['laser_z'][1], abs=1e-3)  # the car settles on its wheels
     assert out['while_paused'] == 0, 'published on world updates: none while paused, as gazebo_ros'
 

@@ -72,7 +72,7 @@ def test_elevator_world_launch_builds_upstreams_gzserver_command():
 def test_shapes_world_launch_rests_the_box_sphere_and_cylinder_on_the_ground(ros, tmp_path):
     plant = launch(ros, tmp_path, 'shapes_world.launch')
     out = states(ros, 1.0)
-    assert set(out['models']) == {'box', 'sphere', 'cylinder'}, out
+    assert set(out['models']) == {'ground_plane', 'box', 'sphere', 'cylinder'}, out
     for name, (x, y) in {'box': (0, 0), 'sphere': (0, 1.5), 'cylinder': (0, -1.5)}.items():
         px, py, pz, speed, spin = out['models'][name]
         # each rests at its half height (the cylinder on its side: its radius), where Gazebo's does
@@ -85,11 +85,13 @@ def test_shapes_world_launch_rests_the_box_sphere_and_cylinder_on_the_ground(ros
 def test_rubble_world_launch_drops_the_pile_between_its_walls_to_rest(ros, tmp_path):
     plant = launch(ros, tmp_path, 'rubble_world.launch')
     out = states(ros, 2.0)
-    assert set(out['models']) == {'rubble_%d' % i for i in range(100)}, sorted(out['models'])  # walls: scenery
-    for name, (x, y, z, speed, spin) in out['models'].items():
+    walls = {'ground_plane', 'right_wall', 'left_wall'}  # static models, listed as Gazebo lists them
+    assert set(out['models']) == walls | {'rubble_%d' % i for i in range(100)}, sorted(out['models'])
+    rubble = {name: state for name, state in out['models'].items() if name not in walls}
+    for name, (x, y, z, speed, spin) in rubble.items():
         # between the walls (inner faces at y -1 and 1), on the ground or the pile, none thrown out
         assert abs(x) < 2.5 and abs(y) < 1.0 and 0.0 < z < 1.2, (name, out['models'][name])
-    speeds = sorted(v[3] for v in out['models'].values())
+    speeds = sorted(v[3] for v in rubble.values())
     assert speeds[90] < 0.02 and speeds[-1] < 0.2, speeds  # fallen into place: at rest
     assert 'deep inside' not in plant.log(), 'no piece starts inside another'
 
@@ -100,7 +102,7 @@ def test_mud_world_launch_swings_its_pendulums_and_warns_of_the_mud_plugin(ros, 
     pendulums = ['pendulum_thick_mud', 'pendulum_thin_mud', 'pendulum_no_mud']
     out = states(ros, 2.0, *['%s::lower_link' % p for p in pendulums])
     # the pits are static models with a plugin: models, as in Gazebo
-    assert set(out['models']) == set(pendulums) | {'mud_pit_thin', 'mud_pit_thick'}, out['models']
+    assert set(out['models']) == set(pendulums) | {'ground_plane', 'mud_pit_thin', 'mud_pit_thick'}, out['models']
     for name in pendulums:
         base = out['models'][name]
         assert base[2] == pytest.approx(0.0, abs=0.02), (name, base)  # the base stands on the ground
@@ -117,7 +119,7 @@ def test_mud_world_launch_swings_its_pendulums_and_warns_of_the_mud_plugin(ros, 
 def test_willowgarage_world_launch_without_the_model_is_the_ground_and_the_sun_and_says_so(ros, tmp_path):
     plant = launch(ros, tmp_path, 'willowgarage_world.launch')
     out = states(ros, 0.5)
-    assert out['models'] == {}, out
+    assert list(out['models']) == ['ground_plane'], out
     log = plant.log()
     assert "<include> of 'model://willowgarage'" in log and 'skipped' in log, log
 
@@ -126,7 +128,8 @@ def test_willowgarage_world_launch_without_the_model_is_the_ground_and_the_sun_a
 def test_elevator_world_launch_runs_gazebos_elevator_world_with_its_cars_at_floor_0(ros, tmp_path):
     plant = launch(ros, tmp_path, 'elevator_world.launch', 'world_name:=worlds/elevator.world')
     out = states(ros, 1.0)
-    assert set(out['models']) == {'elevator1', 'elevator2'}, out
+    # each shaft is a static model named as its car (Gazebo's world names them so); the floors too
+    assert set(out['models']) == {'ground_plane', 'elevator1', 'elevator2', 'floor0', 'floor1', 'floor2', 'floor3'}, out
     for name, y in (('elevator1', -1.5), ('elevator2', 1.5)):
         # without libElevatorPlugin the car rests on its lift's lower limit, at floor 0
         assert out['models'][name][:3] == pytest.approx([0, y, 0.1], abs=0.01), out

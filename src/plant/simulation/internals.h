@@ -101,6 +101,7 @@ struct World::Internals
   uint64_t steps = 0;
   bool paused = false;
   bool physics_enabled = true;  // World::SetPhysicsEnabled (gazebo_ros_joint_pose_trajectory)
+  bool loading_file = false;    // spawning the world file's own models (World::spawn's name check)
 
   std::unique_ptr<btDefaultCollisionConfiguration> collision_config;
   std::unique_ptr<btCollisionDispatcher> dispatcher;

@@ -229,6 +229,7 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
                std::to_string(Lighting::kMaxLights) + " nearest that reach it (OGRE's limit on one object, which "
                "Gazebo renders with)");
   // The models that move, as spawn_model would add them; one the plant refuses leaves the rest.
+  w.loading_file = true;
   for (const ModelDescription& model : description.models)
     try
     {
@@ -238,6 +239,7 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
     {
       w.log.error("world: model '" + model.name + "' is left out: " + e.what());
     }
+  w.loading_file = false;
 }
 
 World::~World()
@@ -324,7 +326,9 @@ Robot& World::spawn(RobotDescription description, const std::string& name, const
 {
   if (name.empty())
     throw DescriptionError("a robot needs a name (spawn_model -model NAME)");
-  if (robot(name) || staticModel(name))
+  // A world file may name a static model and a moving one alike (Gazebo's elevator.world names each
+  // shaft as its car, and Gazebo loads both); a spawn afterwards may not take a name in use.
+  if (robot(name) || (!in_->loading_file && staticModel(name)))
     throw DescriptionError("a model named '" + name + "' is already in the world; remove it or pick another -model name");
   for (double v : {pose.position.x, pose.position.y, pose.position.z, pose.rotation.x, pose.rotation.y,
                    pose.rotation.z, pose.rotation.w})
