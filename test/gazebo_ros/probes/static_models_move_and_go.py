@@ -1,4 +1,4 @@
-"""The ROS side of test_static_models.py: the sign in model_states and get_model_properties, then what the
+"""The ROS side of test_static_world_models.py: the sign in model_states and get_model_properties, then what the
 post's lidar (its middle ray) and camera (its middle pixel) see where the file put the sign, after
 set_model_state moved it 3 m sideways, back, and after delete_model; it prints one JSON value on its last
 line."""
