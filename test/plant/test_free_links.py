@@ -172,3 +172,22 @@ def test_a_race_track_of_two_free_mesh_links_stays_put_and_follow_the_gap_laps_i
         moved = np.linalg.norm(np.array(track.link_pose(link))[:3] - start[link][:3])
         assert moved < 0.01, f'{link} moved {moved * 1000:.1f} mm in 60 s'
         assert track.link_pose(link)[:3] == pytest.approx((0, 0, 0), abs=0.01), 'where the file put it'
+
+
+def test_a_link_with_a_mesh_of_convex_pieces_names_their_contacts_by_its_collision(tmp_path):
+    # Two 0.2 m cubes 1 m apart in one STL (two convex pieces: a compound of two hulls) beside a
+    # handle box on top, in one link: each contact with the ground names the mesh's collision.
+    write_stl(tmp_path / 'feet.stl', box_triangles((-0.5, 0, 0.1), (0.2, 0.2, 0.2)) +
+              box_triangles((0.5, 0, 0.1), (0.2, 0.2, 0.2)))
+    tray = f"""<model name="tray"><pose>0 0 0.05 0 0 0</pose><link name="link">
+      <inertial><mass>2</mass><inertia><ixx>0.2</ixx><iyy>0.2</iyy><izz>0.2</izz></inertia></inertial>
+      <collision name="feet"><geometry><mesh><uri>{tmp_path / 'feet.stl'}</uri></mesh></geometry></collision>
+      <collision name="handle"><pose>0 0 0.3 0 0 0</pose><geometry><box><size>1.2 0.1 0.1</size></box></geometry></collision>
+    </link></model>"""
+    world = quiet(bullet_plant.World.from_sdf(sdf_world(tray)))
+    infos = [text for level, text in world.messages() if level == 'INFO']
+    assert any('feet.stl' in text and 'is 2 convex pieces' in text for text in infos), infos
+    world.step(500)
+    assert world.robot('tray').base_pose()[2] == pytest.approx(0.0, abs=2e-3), 'rests on its feet'
+    names = {c['collision1'] for c in world.contacts()} | {c['collision2'] for c in world.contacts()}
+    assert names == {'tray::link::feet', 'ground_plane::link::collision'}, names

@@ -432,18 +432,34 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
       if (!body.compound)
         body.compound.reset(new btCompoundShape(false, 4));
       body.child_shapes.push_back(std::move(collider.shape));
-      body.compound->addChildShape(in_com, body.child_shapes.back().get());
-      body.collision_names.push_back(sdf_names[{link->name, ci}]);
+      // A mesh of convex pieces (collision_shapes.h) goes in as its pieces, each a child of the body's
+      // compound under the collision's name and surface: Bullet names a contact by the innermost
+      // compound's child, which must be the body's.
+      btCollisionShape* added = body.child_shapes.back().get();
+      auto* pieces = added->isCompound() ? static_cast<btCompoundShape*>(added) : nullptr;
+      const int children = pieces ? pieces->getNumChildShapes() : 1;
+      const std::string& name = sdf_names[{link->name, ci}];
       // An SDF collision's own surface (a URDF's friction is the link's, below).
       auto surfaces = r.description.collision_surfaces.find(link->name);
-      if (surfaces != r.description.collision_surfaces.end() && ci < surfaces->second.size())
+      const bool has_surface = surfaces != r.description.collision_surfaces.end() && ci < surfaces->second.size();
+      ContactSurface surface;
+      if (has_surface)
       {
         bool plain = true;
-        body.surfaces.push_back(contactSurface(surfaces->second[ci], in_com.getBasis(),
-                                               "link '" + link->name + "' of '" + r.name + "' collision '" +
-                                                   body.collision_names.back() + "'",
-                                               r.world->log, plain));
+        surface = contactSurface(surfaces->second[ci], in_com.getBasis(),
+                                 "link '" + link->name + "' of '" + r.name + "' collision '" + name + "'",
+                                 r.world->log, plain);
         body.surfaces_plain = body.surfaces_plain && plain;
+      }
+      for (int k = 0; k < children; ++k)
+      {
+        if (pieces)
+          body.compound->addChildShape(in_com * pieces->getChildTransform(k), pieces->getChildShape(k));
+        else
+          body.compound->addChildShape(in_com, added);
+        body.collision_names.push_back(name);
+        if (has_surface)
+          body.surfaces.push_back(surface);
       }
       body.shape = body.compound.get();
       last_child[kv.second.first] = shape;
