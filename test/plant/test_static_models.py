@@ -2,6 +2,8 @@
 set_model_state as Gazebo moves a static model (a teleport: its collisions, what lidars and cameras see
 of it following), removed with everything of theirs, put back by reset_world; the world's static scene
 is made again once a change, and what rested on a static model that went falls."""
+import json
+
 import numpy as np
 import pytest
 
@@ -35,6 +37,22 @@ def test_static_models_are_listed_with_their_links(world):
     assert world.robots == ['crate'], 'the moving model is a robot; static ones are not'
     with pytest.raises(bullet_plant.DescriptionError, match="'wall' is already in the world"):
         world.spawn(CRATE.replace('crate', 'x'), 'wall', pose=(0, 5, 1, 0, 0, 0))
+
+
+def test_the_viewers_scene_draws_a_static_model_where_it_is_and_not_once_removed():
+    sign = MARKER.replace('</collision>', '</collision><visual name="look"><geometry><box><size>0.2 0.2 0.2</size>'
+                                          '</box></geometry></visual>')
+    world = bullet_plant.World.from_sdf(sdf_world(sign))
+    world.echo = False
+
+    def drawn():
+        return {v['link']: v['pose'][:3] for v in json.loads(world.scene_json())['visuals'] if v['link'].startswith('marker')}
+
+    assert drawn() == {'marker::link::look': pytest.approx([-2.0, 0.0, 0.1])}
+    world.move_static_model('marker', [4.0, 1.0, 0.1, 0, 0, 0, 1])
+    assert drawn() == {'marker::link::look': pytest.approx([4.0, 1.0, 0.1])}
+    world.remove('marker')
+    assert drawn() == {}
 
 
 def test_a_static_model_moved_is_where_rays_and_bodies_meet_it(world):
