@@ -155,6 +155,9 @@ struct World::Internals
   bool removeStaticModel(const std::string& name);
   void resetStaticModels();
   void rebuildStaticScenes();
+  // Every robot in the physics woken: after the world under them changed (a body removed or moved,
+  // gravity), what rested must not stay asleep.
+  void wakeRobots();
   // Everything sensors can see: the static scene and every robot's bodies where they are now
   // (a robot's bodies are built into it once). `hidden` as RayScene::commit.
   const RayScene& rayScene(const void* hidden);

@@ -41,13 +41,6 @@ void eraseItems(std::vector<Item>& items, const std::string& name)
               items.end());
 }
 
-// Everything that moves wakes: what rested on a static model that moved or went must fall.
-void wakeRobots(World::Internals& w)
-{
-  for (auto& r : w.robots)
-    if (!internalsOf(*r).disabled)
-      wakeUp(*internalsOf(*r).multibody.bullet);
-}
 }  // namespace
 
 // A collision whose mesh cannot be read was said by the physics (the world's constructor).
@@ -126,7 +119,7 @@ bool World::Internals::moveStaticModel(const std::string& name, const urdf::Pose
                                                                                   w.dispatcher.get());
     }
   w.rebuildStaticScenes();
-  wakeRobots(w);
+  w.wakeRobots();  // what rested on it must fall
   return true;
 }
 
@@ -149,7 +142,7 @@ bool World::Internals::removeStaticModel(const std::string& name)
       static_object_models.erase(static_object_models.begin() + long(i));
     }
   rebuildStaticScenes();
-  wakeRobots(*this);
+  wakeRobots();  // what rested on it must fall
   return true;
 }
 

@@ -304,9 +304,7 @@ void World::setGravity(const urdf::Vector3& g)
   if (!std::isfinite(g.x) || !std::isfinite(g.y) || !std::isfinite(g.z))
     throw std::invalid_argument("gravity must be finite");
   in_->dynamics->setGravity(toBullet(g));
-  for (auto& r : in_->robots)  // a body asleep at rest under the old gravity need not be under the new
-    if (!r->in_->disabled)
-      wakeUp(*r->in_->multibody.bullet);
+  in_->wakeRobots();  // a body asleep at rest under the old gravity need not be under the new
 }
 int64_t World::timeNs() const { return in_->time_ns; }
 double World::time() const { return in_->time_ns * 1e-9; }
@@ -431,10 +429,15 @@ bool World::remove(const std::string& name)
     in_->robots.erase(std::find_if(in_->robots.begin(), in_->robots.end(),
                                    [tree](const std::unique_ptr<Robot>& r) { return r->in_.get() == tree; }));
   }
-  for (auto& r : in_->robots)  // what rested on it must fall
+  in_->wakeRobots();  // what rested on it must fall
+  return true;
+}
+
+void World::Internals::wakeRobots()
+{
+  for (auto& r : robots)
     if (!r->in_->disabled)
       wakeUp(*r->in_->multibody.bullet);
-  return true;
 }
 
 Robot* World::robot(const std::string& name)
