@@ -149,14 +149,17 @@ GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private
   nh_.param("enable_ros_network", enable_ros_network_, true);
   if (enable_ros_network_)
   {
-    advertiseServices();
-    model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
-    link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
     // gazebo_ros's physics reconfigure: its first callback, from setCallback here, reads the physics
-    // (the simulation thread has not started yet).
+    // (the simulation thread has not started yet). It comes before the services: the Server's
+    // constructor publishes PhysicsConfig's defaults (max_update_rate 60, 20 solver passes) until that
+    // first callback replaces them, and a client that waits for /gazebo/get_physics_properties before
+    // reading the configuration must find the physics' own.
     physics_reconfigure_.reset(new dynamic_reconfigure::Server<tianracer_description::PhysicsConfig>(nh_));
     physics_reconfigure_->setCallback(
         [this](tianracer_description::PhysicsConfig& config, uint32_t level) { physicsReconfigure(config, level); });
+    advertiseServices();
+    model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
+    link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
   }
   else
     ROS_INFO("ROS gazebo topics/services are disabled (~enable_ros_network false)");
