@@ -16,10 +16,21 @@ PACKAGE_ITEMS := $(filter-out compat,$(wildcard *))
 # Everything ROS runs on loopback only.
 ROS_ENV := source $(WS)/devel/setup.bash && export ROS_IP=127.0.0.1 && unset ROS_HOSTNAME &&
 PYTEST_ARGS ?=
+# The suite runs on pytest-xdist's workers, one per core, a test module to a worker (its module-scoped
+# fixtures built once); the tests marked serial run alone after the rest (test/conftest.py).
+# PYTEST_WORKERS=0: one process, as plain pytest.
+PYTEST_WORKERS ?= auto
+PYTEST := $(PYTHON) -m pytest -n $(PYTEST_WORKERS) --dist loadscope
 # catkin_make's arguments, the same for every target so that none reconfigures the build; the
 # install space is $(WS)/install unless PREFIX names another (make install PREFIX=/opt/tianracer).
 PREFIX ?=
-CATKIN_ARGS = -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release $(if $(PREFIX),-DCMAKE_INSTALL_PREFIX=$(abspath $(PREFIX)))
+CATKIN_ARGS = -DPYTHON_EXECUTABLE=$(PYTHON) -DCMAKE_BUILD_TYPE=Release $(if $(PREFIX),-DCMAKE_INSTALL_PREFIX=$(abspath $(PREFIX))) \
+	-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache
+# ccache (tools/setup.sh installs it): a second clone, or a build after `make clean`, compiles only
+# what changed. Paths under the clone are taken relative to it (CCACHE_BASEDIR), so that clones in
+# other folders share the cache; the precompiled headers are cached too (the sloppiness they need).
+export CCACHE_BASEDIR := $(CURDIR)
+export CCACHE_SLOPPINESS := pch_defines,time_macros,include_file_mtime,include_file_ctime
 # make sim: the browser viewer in gzclient's place (the tutorial's default), or false for headless.
 GUI ?= true
 
@@ -79,11 +90,11 @@ install: build
 
 test: build
 	@# /usr/bin first: rostest's own nodes (hztest) start with `/usr/bin/env python3`.
-	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) -m pytest $(PYTEST_ARGS)
+	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTEST) $(PYTEST_ARGS)
 
 # The tests marked slow (pytest.ini) left out: the loop while working; `make test` before a commit.
 test-quick: build
-	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTHON) -m pytest -m "not slow" $(PYTEST_ARGS)
+	@$(ROS_ENV) export PATH=/usr/bin:$$PATH && $(PYTEST) -m "not slow" $(PYTEST_ARGS)
 
 sim: build
 	@$(ROS_ENV) GUI=$(GUI) bash tools/sim.sh

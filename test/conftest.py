@@ -3,6 +3,7 @@ sources it; run by hand, `source .ws/devel/setup.bash` first. The car's files, c
 and URDF come from tianracer_description.tianracer, the ROS processes from
 test/helpers/ros_harness.py (imported inside the fixtures: without a sourced workspace
 pytest_sessionstart says so instead of an import error)."""
+import fcntl
 import os
 import shutil
 import sys
@@ -18,6 +19,47 @@ def pytest_sessionstart(session):
     if shutil.which('rospack') is None or 'ROS_PACKAGE_PATH' not in os.environ:
         pytest.exit('The ROS workspace is not sourced: run the suite with `make test`, or '
                     '`source .ws/devel/setup.bash` first.', returncode=2)
+
+
+def pytest_collection_modifyitems(items):
+    """The order pytest-xdist hands the modules out in (that of their first test collected), module by
+    module, each module's tests in their own order: the modules with slow tests first, so that the run
+    does not end waiting for one long module started late; the modules whose tests are all marked
+    serial last, so that they start once the others are handed out."""
+    modules = {}
+    for item in items:
+        serial, slow = modules.get(item.nodeid.split('::')[0], (True, False))
+        modules[item.nodeid.split('::')[0]] = (serial and item.get_closest_marker('serial') is not None,
+                                               slow or item.get_closest_marker('slow') is not None)
+    rank = {module: (serial, not slow) for module, (serial, slow) in modules.items()}
+    items.sort(key=lambda item: rank[item.nodeid.split('::')[0]])  # stable: each module keeps its order
+
+
+def _run_lock(config):
+    """The file every worker of this run (pytest-xdist's -n) locks around each test, or None in a run
+    without workers. The workers' temporary folders are the run's own folder's gw0, gw1 ..."""
+    if not hasattr(config, 'workerinput'):
+        return None
+    if not hasattr(config, '_tianracer_run_lock'):
+        path = os.path.join(os.path.dirname(str(config.option.basetemp)), 'serial.lock')
+        config._tianracer_run_lock = open(path, 'a')
+    return config._tianracer_run_lock
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_protocol(item, nextitem):
+    """A test marked serial runs alone: it takes the run's lock for itself, the others share it (each
+    from its setup to its teardown), so it starts once the other workers' tests in progress end, and
+    theirs wait for it."""
+    lock = _run_lock(item.config)
+    if lock is None:
+        yield
+        return
+    fcntl.flock(lock, fcntl.LOCK_EX if item.get_closest_marker('serial') else fcntl.LOCK_SH)
+    try:
+        yield
+    finally:
+        fcntl.flock(lock, fcntl.LOCK_UN)
 
 
 def pytest_generate_tests(metafunc):

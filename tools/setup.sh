@@ -6,6 +6,8 @@ set -euo pipefail
 APT_PACKAGES=(
   # build
   g++ make cmake catkin python3-catkin-pkg python3-setuptools
+  # a compiler cache: a fresh clone on a machine that built before compiles only what changed
+  ccache
   # catkin_tools (`catkin build`): users build their own workspaces on the install space with it too
   catkin-tools
   ros-message-generation ros-message-runtime python3-genmsg python3-genpy python3-gencpp
@@ -44,6 +46,8 @@ APT_PACKAGES=(
   rviz ros-visualization-msgs python3-visualization-msgs xvfb x11-apps
   # Python for nodes and tests
   python3-numpy python3-yaml python3-pytest python3-pip python3-matplotlib
+  # the suite runs on every core (pytest-xdist: make test's -n auto)
+  python3-pytest-xdist
   # the racing environments' render_mode "human": a Tk window (tkinter)
   python3-tk
   # f1tenth's maps saved as PNG (racing/f1tenth_map.py reads PGM itself, the rest through Pillow)
@@ -68,24 +72,22 @@ PIP_PACKAGES+=(gymnasium==1.4.0 pettingzoo==1.27.0 ray==2.60.0 stable-baselines3
 # Videos of episodes: Gymnasium's RecordVideo writes them with MoviePy (its imageio-ffmpeg brings ffmpeg);
 # 1.0.3, as MoviePy 2 needs numpy 1.25 and Debian's is 1.24.
 PIP_PACKAGES+=(moviepy==1.0.3)
-PY=/usr/bin/python3
 # PyTorch's CPU build where pip finds it (a wheel of a local find-links, as on the project's
 # machines); else PyPI's, whose default build carries CUDA (several GB) and runs on the CPU as well.
-if $PY -c 'import importlib.metadata as m; assert m.version("torch").startswith("2.13.0")' 2>/dev/null; then
-  PIP_PACKAGES+=("torch==$($PY -c 'import importlib.metadata as m; print(m.version("torch"))')")
-elif $PY -m pip install -q --dry-run --no-deps --break-system-packages torch==2.13.0+cpu >/dev/null 2>&1; then
-  PIP_PACKAGES+=(torch==2.13.0+cpu)
-else
-  PIP_PACKAGES+=(torch==2.13.0)
-fi
-
+# An installed 2.13.0 of either build is taken as it is (the check below compares the version's start).
+TORCH=torch==2.13.0
+PY=/usr/bin/python3
 SUDO=
 [ "$(id -u)" -eq 0 ] || SUDO=sudo
 
+# One dpkg-query for every package: a package it does not know at all is missing too.
 missing=()
+declare -A installed_apt=()
+while read -r name status; do
+  [ "${status:0:2}" = "ii" ] && installed_apt[${name%%:*}]=1
+done < <(dpkg-query -W -f='${Package} ${db:Status-Abbrev}\n' "${APT_PACKAGES[@]}" 2>/dev/null || true)
 for pkg in "${APT_PACKAGES[@]}"; do
-  status=$(dpkg-query -W -f='${db:Status-Abbrev}' "$pkg" 2>/dev/null || true)
-  [ "${status:0:2}" = "ii" ] || missing+=("$pkg")
+  [ -n "${installed_apt[$pkg]:-}" ] || missing+=("$pkg")
 done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing from apt: ${missing[*]}"
@@ -93,14 +95,29 @@ if [ ${#missing[@]} -gt 0 ]; then
   $SUDO env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-missing=()
-for req in "${PIP_PACKAGES[@]}"; do
-  name=${req%%[=<>]*}
-  installed=$($PY -c "import importlib.metadata as m; print(m.version('$name'))" 2>/dev/null || true)
-  [ "$req" = "$name" ] && [ -n "$installed" ] && continue
-  [ "$req" = "$name==$installed" ] || missing+=("$req")
-done
+# One interpreter asks importlib.metadata for every requirement: those not installed at that version.
+mapfile -t missing < <($PY - "${PIP_PACKAGES[@]}" "$TORCH" <<'PYTHON'
+import importlib.metadata as metadata
+import sys
+for requirement in sys.argv[1:]:
+    name, _, version = requirement.partition('==')
+    try:
+        installed = metadata.version(name)
+    except metadata.PackageNotFoundError:
+        installed = None
+    # torch: 2.13.0 of any build (2.13.0+cpu is PyTorch's CPU build of it)
+    if installed != version and not (name == 'torch' and installed and installed.split('+')[0] == version):
+        print(requirement)
+PYTHON
+)
 if [ ${#missing[@]} -gt 0 ]; then
+  # torch: the CPU build where pip finds one (its dry run resolves without downloading the wheel)
+  for i in "${!missing[@]}"; do
+    if [ "${missing[$i]}" = "$TORCH" ] && \
+       $PY -m pip install -q --dry-run --no-deps --break-system-packages "$TORCH+cpu" >/dev/null 2>&1; then
+      missing[$i]="$TORCH+cpu"
+    fi
+  done
   echo "setup: installing from PyPI for $PY: ${missing[*]}"
   # Debian marks its Python as externally managed; these go to /usr/local, beside nothing of Debian's.
   # Debian's numpy stays: its scipy and matplotlib are built for it, and a numpy in /usr/local would

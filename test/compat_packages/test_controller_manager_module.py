@@ -13,7 +13,7 @@ import subprocess
 import pytest
 import rospkg
 
-from ros_harness import PYTHON, Process, tianracer_plant
+from ros_harness import PYTHON, Process, rosrun_resolved, tianracer_plant
 from tianracer_description.tianracer import PACKAGE
 
 COMPAT = rospkg.RosPack().get_path('controller_manager')  # the compat package
@@ -122,8 +122,8 @@ def with_pythonpath(env, first):
 
 
 def run(env, args, timeout=60, namespace=NS):
-    return subprocess.run(args, env=dict(env, ROS_NAMESPACE=namespace), capture_output=True, text=True,
-                          timeout=timeout)
+    return subprocess.run(rosrun_resolved(args, env), env=dict(env, ROS_NAMESPACE=namespace), capture_output=True,
+                          text=True, timeout=timeout)
 
 
 def listed(env, command):

@@ -28,6 +28,7 @@ def test_a_real_time_factor_too_small_or_not_a_number_is_refused(ros, value):
 
 
 @pytest.mark.ros
+@pytest.mark.serial  # wall-clock latencies, not to be shared with another worker's load
 def test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c(ros):
     # At 1e-3 one 1 ms step lasts a wall second; services and Ctrl-C must not wait for it.
     plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0.001'], 'plant')
