@@ -29,6 +29,16 @@ const controls = new OrbitControls(camera, canvas);
 controls.target.set(0, 0, 0);
 controls.update();
 
+// A frame is drawn when what it shows changed (the scene, poses, an overlay, a mesh loaded, the view
+// moved or resized), not at every animation frame: without a GPU the browser draws on the CPU
+// (SwiftShader), and a paused world then costs nothing to show. Poses come at the plant's
+// ~scene_rate (30 a simulated second), so a running world is drawn at that rate.
+let redrawWanted = true;
+function redraw() {
+  redrawWanted = true;
+}
+controls.addEventListener('change', redraw);
+
 
 // World visuals (posed once) and robot links (posed by link_states), by link name.
 const world = new THREE.Group();
@@ -46,6 +56,7 @@ function resize() {
     renderer.setSize(width, height, false);
     camera.aspect = width / height;
     camera.updateProjectionMatrix();
+    redraw();
   }
 }
 
@@ -252,6 +263,7 @@ function loadMesh(visual, into) {
     into.add(scaled);
     if (into.parent === world) bakeLighting(into);
     pendingMeshes -= 1;
+    redraw();
   };
   const failed = (error) => {
     console.error('viewer: mesh ' + visual.mesh + ': ' + error);
@@ -536,6 +548,7 @@ function showOverlayTopics(topics) {
       if (!box.checked && overlayObjects.has(topic)) {
         overlayObjects.get(topic).removeFromParent();
         overlayObjects.delete(topic);
+        redraw();
       }
     };
     label.append(box, ' ' + topic + ' ');
@@ -644,6 +657,7 @@ function connect() {
     else if (message.type === 'image') applyImage(message);
     else if (message.type === 'scan') applyScan(message);
     else if (message.type === 'contacts') applyContacts(message);
+    if (['scene', 'poses', 'scan', 'contacts'].includes(message.type)) redraw();
   };
   socket.onclose = () => {
     document.getElementById('status').textContent = 'disconnected; retrying';
@@ -655,10 +669,13 @@ function connect() {
 let framesDrawn = 0;
 
 function frame() {
-  framesDrawn += 1;
   resize();
   controls.update();
-  renderer.render(scene, camera);
+  if (redrawWanted) {
+    redrawWanted = false;
+    framesDrawn += 1;
+    renderer.render(scene, camera);
+  }
   requestAnimationFrame(frame);
 }
 
