@@ -155,6 +155,17 @@ class Process:
             return f.read()
 
 
+def rate_of_stamps(stamps):
+    """The rate (Hz) a publisher stamped its messages at: one over the median interval between the
+    stamps heard, which neither the reader's lag nor a message dropped on the way (roscpp drops a
+    slow subscriber's oldest beyond the publisher's queue) changes, where a count over the span does.
+    None with fewer than two stamps or a median interval of 0."""
+    intervals = sorted(b - a for a, b in zip(stamps, stamps[1:]))
+    if not intervals or intervals[len(intervals) // 2] <= 0:
+        return None
+    return 1.0 / intervals[len(intervals) // 2]
+
+
 @functools.lru_cache(maxsize=None)
 def core_parameters():
     """The parameters roscore sets from roscore.xml (/rosversion, /rosdistro), asked of rosversion once
@@ -403,9 +414,7 @@ class TopicRates:
             if len(arrivals) < 2:
                 rates[topic] = None
             elif topic in self._stamped:
-                intervals = sorted(b - a for a, b in zip(arrivals, arrivals[1:]))
-                median = intervals[len(intervals) // 2]
-                rates[topic] = 1.0 / median if median > 0 else None
+                rates[topic] = rate_of_stamps(arrivals)
             else:
                 span = arrivals[-1] - arrivals[0]
                 rates[topic] = (len(arrivals) - 1) / span if span > 0 else None

@@ -5,7 +5,7 @@ line."""
 import json, rospy
 from control_msgs.msg import JointTrajectoryControllerState
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
-from ros_harness import connected_publisher
+from ros_harness import connected_publisher, rate_of_stamps
 rospy.init_node('probe')
 states = []
 rospy.Subscriber('/arm/arm_controller/state', JointTrajectoryControllerState, states.append)
@@ -26,5 +26,5 @@ try:
 except rospy.ServiceException as e:
     early = 'failed'
 print(json.dumps({'names': list(last.joint_names), 'actual': list(last.actual.positions),
-                  'error': list(last.error.positions), 'period': (stamps[-1] - stamps[0]) / (len(stamps) - 1),
+                  'error': list(last.error.positions), 'period': 1.0 / rate_of_stamps(stamps),
                   'queried': [list(queried.name), list(queried.position), list(queried.velocity)], 'early': early}))
