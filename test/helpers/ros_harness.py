@@ -382,9 +382,15 @@ class TopicRates:
         import struct
         import rospy
         from roslib.message import get_message_class
-        if not isinstance(message, rospy.AnyMsg):  # the topic's typed subscriber in this node deserialized it
+        if not isinstance(message, rospy.AnyMsg):
+            # the topic's typed subscriber in this node deserialized it (rospy's own /clock subscriber
+            # under /use_sim_time hands this one a rosgraph_msgs/Clock: its first field is the time)
             header = getattr(message, 'header', None)
-            return header.stamp.to_sec() if header is not None and hasattr(header, 'stamp') else None
+            if header is not None and hasattr(header, 'stamp'):
+                return header.stamp.to_sec()
+            if message._slot_types and message._slot_types[0] == 'time':
+                return getattr(message, message.__slots__[0]).to_sec()
+            return None
         kind = message._connection_header['type']
         if kind not in self._time_at:
             message_class = get_message_class(kind)
