@@ -3,7 +3,6 @@ driven by selenium through chromedriver, opens the page the node serves against 
 race track and the car, as a user opens it over SSH. What it draws is checked in the screenshot,
 against the world file's layout; the car's drawn pose against /gazebo/model_states as it drives.
 """
-import concurrent.futures
 import contextlib
 import io
 import math
@@ -87,39 +86,43 @@ def at_rest(read_xy, timeout=20.0, still=0.02):
     raise AssertionError('still moving after %g s: %s' % (timeout, readings))
 
 
+@pytest.fixture(scope='module')
+def chromium():
+    """One chromium for the module's pages, as a user keeps one browser open: each test opens its own
+    viewer's page in it. A browser started for each test cost its GPU process the compiling of the
+    page's shaders again (SwiftShader, on the CPU), most of what a short test spent."""
+    driver = browser()
+    yield driver
+    driver.quit()
+
+
 @contextlib.contextmanager
-def opened(ros, world, urdf_file=None):
+def opened(ros, driver, world, urdf_file=None):
     """The plant on `world` (with the car and the tutorial's YAML when `urdf_file`), the viewer on a
-    free port, and a chromium page on it with the scene drawn: (plant, viewer process, driver, url)."""
+    free port, and the page on it in `driver` with the scene drawn: (plant, viewer process, url).
+    The browser leaves the page (about:blank) when the test ends, before its viewer stops."""
     from ros_harness import start_plant, tianracer_plant
-    # chromium starts (about a second) while the plant and the viewer do
-    starting = concurrent.futures.ThreadPoolExecutor(1).submit(browser)
-    try:
-        plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
-        # port 0: the viewer binds a port the system picks and prints it. A port found free here first
-        # could be taken before the viewer bound it: chromium, starting beside it, took one in CI.
-        viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=0'], 'viewer')
-        opened_at = re.compile(r'viewer: open (http://127\.0\.0\.1:\d+/)')
-        ros.wait_until(lambda: opened_at.search(viewer.log()), 30, 'the viewer to serve')
-        url = opened_at.search(viewer.log()).group(1)
-    except BaseException:
-        starting.result().quit()
-        raise
-    driver = starting.result()
+    plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
+    # port 0: the viewer binds a port the system picks and prints it. A port found free here first
+    # could be taken before the viewer bound it: chromium, starting beside it, took one in CI.
+    viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=0'], 'viewer')
+    opened_at = re.compile(r'viewer: open (http://127\.0\.0\.1:\d+/)')
+    ros.wait_until(lambda: opened_at.search(viewer.log()), 30, 'the viewer to serve')
+    url = opened_at.search(viewer.log()).group(1)
     try:
         driver.get(url)
         wait_for(driver, '!!(window.viewer && viewer.ready())', 30, 'the scene to be drawn')
-        yield plant, viewer, driver, url
+        yield plant, viewer, url
     finally:
-        driver.quit()
+        driver.get('about:blank')
 
 
 @pytest.fixture
-def page(ros, urdf_file):
+def page(ros, chromium, urdf_file):
     """The race track and the car, in a page: (ros, viewer process, driver, url)."""
     from tianracer_description.tianracer import RACE_TRACK_WORLD
-    with opened(ros, RACE_TRACK_WORLD, urdf_file) as (_, viewer, driver, url):
-        yield ros, viewer, driver, url
+    with opened(ros, chromium, RACE_TRACK_WORLD, urdf_file) as (_, viewer, url):
+        yield ros, viewer, chromium, url
 
 
 def look_from_above(driver, lo, hi):
@@ -249,7 +252,7 @@ def test_the_viewer_serves_only_the_scenes_files(page):
         assert len(bundle.read()) > 100000  # three.js bundled: nothing fetched from the internet
 
 
-def test_the_mesh_tracks_collada_floor_and_stl_walls_are_drawn_where_the_plant_has_them(ros, monkeypatch):
+def test_the_mesh_tracks_collada_floor_and_stl_walls_are_drawn_where_the_plant_has_them(ros, chromium, monkeypatch):
     """A Gazebo user's package (test/fixtures/gazebo_pkg): a Collada floor written in centimetres with
     z up and STL walls, included by model:// and lifted 0.5 m. Looked at from above, each point is
     drawn in the colour of what the plant's own ray from above hits there: the walls' red, the
@@ -260,7 +263,8 @@ def test_the_mesh_tracks_collada_floor_and_stl_walls_are_drawn_where_the_plant_h
     ros.env['ROS_PACKAGE_PATH'] = os.environ['ROS_PACKAGE_PATH']
     plant = bullet_plant.World.from_file(TRACK_WORLD)
     plant.echo = False
-    with opened(ros, TRACK_WORLD) as (_, _, driver, _):
+    driver = chromium
+    with opened(ros, driver, TRACK_WORLD):
         eye = look_from_above(driver, (-1.0, -2.5), (13.0, 2.5))
         image = screenshot(driver)
 
@@ -519,7 +523,7 @@ def test_a_followed_model_stays_where_it_is_drawn_as_it_moves(page):
 
 
 @pytest.mark.slow
-def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_cmd_vel(ros):
+def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_cmd_vel(ros, chromium):
     """The other world we ship (worlds/arena.world) and a turtlebot3-like robot (gazebo_plugins' diff
     drive on /cmd_vel, test/fixtures/urdf/diff_bot.urdf): its links drawn where link_states puts
     them, and holding i on its cmd_vel drives it ahead; letting go stops it (the diff drive plugin has
@@ -531,7 +535,8 @@ def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_
     from ros_harness import spawn_urdf
     from tianracer_description.tianracer import PACKAGE
     arena = os.path.join(PACKAGE, 'worlds', 'arena.world')
-    with opened(ros, arena) as (plant, _, driver, _):
+    driver = chromium
+    with opened(ros, driver, arena) as (plant, _, _):
         ros.run(['rosparam', 'set', '/robot_description', '--textfile', DIFF_BOT])
         spawn_urdf(ros, plant, '/robot_description', 'diff_bot')
         wait_for(driver, "!!viewer.linkPose('diff_bot::base_link') && "
