@@ -14,6 +14,12 @@ import yaml
 # The rooms (test/<subject>/) import the shared helpers (test/helpers/) by their names.
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'helpers'))
 
+# One BLAS thread a process, for the tests and every process they start (inherited). Each rospy
+# program imports numpy (genpy does), and OpenBLAS starts a thread a core there: 0.1 s of CPU more
+# per import, 0.3 s against 0.19, over the 600 or so ROS tools and probes a run starts; the workers
+# already run one to a core.
+os.environ.setdefault('OPENBLAS_NUM_THREADS', '1')
+
 
 def pytest_sessionstart(session):
     if shutil.which('rospack') is None or 'ROS_PACKAGE_PATH' not in os.environ:
