@@ -168,7 +168,8 @@ class Process:
         self._log.close()
 
     def log(self):
-        self._log.flush()
+        if not self._log.closed:
+            self._log.flush()
         with open(self.log_path, errors='replace') as f:
             return f.read()
 
@@ -199,6 +200,20 @@ def rosout_executable():
     return find_node('rosout', 'rosout')[0]
 
 
+class _TransportWithTimeout(xmlrpc.client.Transport):
+    """XML-RPC over HTTP giving up after `timeout` s: a port that another server holds (a node's
+    TCPROS server) accepts the connection and never answers."""
+
+    def __init__(self, timeout):
+        super().__init__()
+        self.timeout = timeout
+
+    def make_connection(self, host):
+        connection = super().make_connection(host)
+        connection.timeout = self.timeout
+        return connection
+
+
 class RosSystem:
     """A ROS master of its own and the processes started against it. The master is what roscore starts
     (rosmaster --core, rosout, /run_id, /rosversion and /rosdistro) without roscore's own roslaunch,
@@ -207,29 +222,59 @@ class RosSystem:
     def __init__(self, workdir, base_env=None):
         """base_env: the environment the processes start from (default this one's: the suite's
         sourced workspace); a user's own workspace, sourced apart, for the tests of that."""
-        base_env = os.environ if base_env is None else base_env
+        self.base_env = os.environ if base_env is None else base_env
         self.workdir = workdir
-        self.port = free_port()
-        self.env = dict(base_env, ROS_MASTER_URI='http://127.0.0.1:%d' % self.port, ROS_IP='127.0.0.1',
-                        ROS_HOME=os.path.join(workdir, 'ros_home'), PYTHONUNBUFFERED='1')
-        self.env.pop('ROS_HOSTNAME', None)
-        self.env['PYTHONPATH'] = os.pathsep.join(filter(None, [HELPERS, base_env.get('PYTHONPATH')]))
         self.processes = []
         self._service_caller = None
-        self.master = self.start(['rosmaster', '--core', '-p', str(self.port), '-w', '3'], 'rosmaster')
-        self.wait_until(self._master_answers, 15, 'the ROS master')
+        self.master = self._start_master()
         master = xmlrpc.client.ServerProxy(self.env['ROS_MASTER_URI'])
         for name, value in dict(core_parameters(), **{'/run_id': str(uuid.uuid1())}).items():
             master.setParam('/ros_harness', name, value)
         self.start([rosout_executable(), '__name:=rosout'], 'rosout')
 
-    def _master_answers(self):
-        """Whether the master answers its XML-RPC API (asked here: a `rosparam list` would start a Python)."""
-        try:
-            code, _, _ = xmlrpc.client.ServerProxy(self.env['ROS_MASTER_URI']).getParamNames('/ros_harness')
-            return code == 1
-        except (OSError, xmlrpc.client.Error):  # not listening yet, or not answering XML-RPC yet
-            return False
+    def _start_master(self, attempts=5):
+        """rosmaster on a port found free, and this system's environment for it. The port can be taken
+        between free_port() and rosmaster's bind (any process's ephemeral port: a connection, a node's
+        server, another test's master that found the same port): rosmaster then waits for ever, or
+        another master answers there. Each port is tried until its master answers with its own pid."""
+        for _ in range(attempts):
+            self.port = free_port()
+            self.env = dict(self.base_env, ROS_MASTER_URI='http://127.0.0.1:%d' % self.port, ROS_IP='127.0.0.1',
+                            ROS_HOME=os.path.join(self.workdir, 'ros_home'), PYTHONUNBUFFERED='1')
+            self.env.pop('ROS_HOSTNAME', None)
+            self.env['PYTHONPATH'] = os.pathsep.join(filter(None, [HELPERS, self.base_env.get('PYTHONPATH')]))
+            master = Process(['rosmaster', '--core', '-p', str(self.port), '-w', '3'], self.env,
+                             os.path.join(self.workdir, 'rosmaster.log'))
+            try:
+                answers = self._master_answers(master, timeout=15)
+            except AssertionError:
+                master.kill()  # nothing else stops it: the caller has no RosSystem to close
+                raise
+            if answers:
+                self.processes.append(master)
+                return master
+            master.kill()
+        raise AssertionError('rosmaster did not start on any of %d free ports; the last one said: %s'
+                             % (attempts, master.log()))
+
+    def _master_answers(self, master, timeout):
+        """Whether `master` (rosmaster's process) answers its XML-RPC API as itself (getPid, asked
+        here: a `rosparam` would start a Python) within `timeout` s; False as soon as it cannot (its
+        port taken); an AssertionError with its log when it says nothing in that time."""
+        proxy = xmlrpc.client.ServerProxy(self.env['ROS_MASTER_URI'], transport=_TransportWithTimeout(1.0))
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if master.popen.poll() is not None or 'Address already in use' in master.log():
+                return False
+            try:
+                code, _, pid = proxy.getPid('/ros_harness')
+                if code == 1:
+                    return pid == master.pid  # another master on the port: ours cannot bind it
+            except (OSError, xmlrpc.client.Error):  # not listening yet, or not answering XML-RPC yet
+                pass
+            time.sleep(0.05)
+        raise AssertionError('timed out after %g s waiting for the ROS master (rosmaster on port %d): %s'
+                             % (timeout, self.port, master.log()))
 
     def start(self, args, name):
         process = Process(args, self.env, os.path.join(self.workdir, name + '.log'))
