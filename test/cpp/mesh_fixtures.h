@@ -11,10 +11,15 @@
 
 namespace mesh_fixtures
 {
-inline std::string tempDir()
+// A fresh directory named prefix_XXXXXX under $TMPDIR (test_gtests.py gives each case its pytest
+// tmp_path, which pytest cleans up), else under /tmp.
+inline std::string tempDir(const std::string& prefix = "plant_meshes")
 {
-  char pattern[] = "/tmp/plant_meshes_XXXXXX";
-  const char* dir = mkdtemp(pattern);
+  const char* base = std::getenv("TMPDIR");
+  std::string pattern = std::string(base && *base ? base : "/tmp") + "/" + prefix + "_XXXXXX";
+  std::vector<char> buffer(pattern.begin(), pattern.end());
+  buffer.push_back('\0');
+  const char* dir = mkdtemp(buffer.data());
   return dir ? dir : "/tmp";
 }
 

@@ -22,6 +22,7 @@
 #include <random>
 #include <string>
 
+#include "mesh_fixtures.h"
 #include "rendering/gl_context.h"
 #include "rendering/gl_renderer.h"
 #include "rendering/gl_scene.h"
@@ -611,8 +612,7 @@ std::vector<RayPrimitive> texturedScene(const std::string& dir)
 // Close enough that every texel spans several pixels: the GL samples the image itself, bilinear.
 TEST(GlRenderer, MagnifiedTexturesShowTheTexelsARayThroughThePixelHitsBilinearly)
 {
-  char dir[] = "/tmp/gl_textures_XXXXXX";
-  ASSERT_TRUE(mkdtemp(dir));
+  const std::string dir = mesh_fixtures::tempDir("gl_textures");
   expectTheRayCastFrame(texturedScene(dir), "a textured wall");
 }
 
@@ -620,8 +620,7 @@ TEST(GlRenderer, MagnifiedTexturesShowTheTexelsARayThroughThePixelHitsBilinearly
 // mipmaps give their mean grey (nearest sampling would alias to black or white at random).
 TEST(GlRenderer, MinifiedTexturesShowTheirMipmapsMean)
 {
-  char dir[] = "/tmp/gl_mipmaps_XXXXXX";
-  ASSERT_TRUE(mkdtemp(dir));
+  const std::string dir = mesh_fixtures::tempDir("gl_mipmaps");
   std::vector<uint8_t> rgb;
   for (int r = 0; r < 64; ++r)
     for (int c = 0; c < 64; ++c)

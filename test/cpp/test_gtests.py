@@ -126,6 +126,7 @@ def test_gtest_case(stem, isa, executable, case, tmp_path):
     env = dict(os.environ)
     env.pop(ISA_VARIABLE, None)
     env.pop(LLVMPIPE_WIDTH, None)
+    env['TMPDIR'] = str(tmp_path)  # the files a case writes (mesh_fixtures::tempDir) are the test's
     if isa:
         env[isa[0]] = isa[1]
         if isa[0] == ISA_VARIABLE:

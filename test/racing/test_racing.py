@@ -247,9 +247,12 @@ def test_three_cars_racing_with_follow_the_gap_stay_off_the_walls_and_each_other
 
 
 @pytest.mark.slow
-def test_ppo_from_stable_baselines3_trains_on_the_vector_env():
+def test_ppo_from_stable_baselines3_trains_on_the_vector_env(tmp_path, monkeypatch):
     """docs/racing.md's example, short: a few thousand PPO steps on two cars of the vector env (PyTorch on
     the CPU), through Sb3VecEnv; the ended episodes' last observations reach SB3 as it expects."""
+    # SB3's logger makes a folder of its own (SB3_LOGDIR, or /tmp/SB3-<date> each time) even when it
+    # writes nothing: the test's, not /tmp
+    monkeypatch.setenv('SB3_LOGDIR', str(tmp_path / 'sb3'))
     sys.path.insert(0, os.path.join(REPOSITORY, 'examples', 'racing'))  # the example is a program, no package
     from train_ppo import Sb3VecEnv, evaluate, model_policy, train
     model = train(RACE_TRACK_WORLD, envs=2, timesteps=2048, n_steps=512)
