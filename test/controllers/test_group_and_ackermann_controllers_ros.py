@@ -63,9 +63,8 @@ def test_ackermann_launch_drives_the_car_from_a_twist(ros):
 @pytest.mark.slow
 def test_joint_group_velocity_controller_takes_a_float64_multi_array(ros, urdf_file):
     tianracer_plant(ros, urdf_file)
-    ros.run(['rosparam', 'set', NS + '/rear_wheels',
-             '{type: velocity_controllers/JointGroupVelocityController, '
-             'joints: [left_rear_wheel_joint, right_rear_wheel_joint]}'])
+    ros.set_param(NS + '/rear_wheels', {'type': 'velocity_controllers/JointGroupVelocityController',
+                                        'joints': ['left_rear_wheel_joint', 'right_rear_wheel_joint']})
     ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=' + NS, 'joint_state_controller', 'rear_wheels'],
               'spawner')
     ros.wait_for_controllers(2, NS)

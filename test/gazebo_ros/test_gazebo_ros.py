@@ -153,7 +153,7 @@ def test_model_and_link_states_are_published_on_every_step_with_scoped_names(ros
 @pytest.mark.slow
 def test_spawn_model_sets_joints_unpauses_and_reports_like_gazebo_ros(ros, urdf_file):
     plant = ros.start(['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=false', 'paused:=true'], 'plant')
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', urdf_file])
+    ros.set_param('/robot_description', textfile=urdf_file)
     spawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'robot_description', '-model', 'car',
                      '-x', '0.5', '-J', 'left_steering_hinge_joint', '0.25', '-unpause'], timeout=60)
     log = spawn.stdout + spawn.stderr

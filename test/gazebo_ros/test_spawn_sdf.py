@@ -105,7 +105,7 @@ def spawn_model(sim, *args, input=None):
 @pytest.mark.slow
 def test_spawn_model_sdf_from_a_file_a_parameter_the_model_path_and_stdin(sim):
     work = sim.workdir
-    sim.run(['rosparam', 'set', '/box_sdf', '--textfile', os.path.join(work, 'box.sdf')])
+    sim.set_param('/box_sdf', textfile=os.path.join(work, 'box.sdf'))
     runs = {
         'file_box': spawn_model(sim, '-sdf', '-file', os.path.join(work, 'box.sdf'), '-model', 'file_box', '-y', '1'),
         'param_box': spawn_model(sim, '-sdf', '-param', '/box_sdf', '-model', 'param_box', '-y', '2', '-Y', '1.5708'),

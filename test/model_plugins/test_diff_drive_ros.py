@@ -17,7 +17,7 @@ pytestmark = pytest.mark.ros
 @pytest.mark.slow
 def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states(ros):
     plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', DIFF_BOT])
+    ros.set_param('/robot_description', textfile=DIFF_BOT)
     spawn_urdf(ros, plant, '/robot_description', 'diff_bot')
     seen = ros.probe('model_plugins/probes/diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states.py',
                      timeout=90)
@@ -37,7 +37,7 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
                      'world_name:=' + os.path.abspath(arena)], 'tianracer_world')
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
     (tmp_path / 'diff_bot.urdf').write_text(open(DIFF_BOT).read())
-    ros.run(['rosparam', 'set', '/tb3/robot_description', '--textfile', str(tmp_path / 'diff_bot.urdf')])
+    ros.set_param('/tb3/robot_description', textfile=str(tmp_path / 'diff_bot.urdf'))
     spawn_urdf(ros, car, '/tb3/robot_description', 'tb3', '-robot_namespace', '/tb3', '-x', '-1', '-y', '-1.5')
     seen = ros.probe('model_plugins/probes/a_diff_drive_robot_and_the_tutorial_car_in_one_world.py', timeout=90)
     moved = {name: seen['after'][name][0] - seen['before'][name][0] for name in ('tianracer', 'tb3')}

@@ -11,7 +11,7 @@ pytestmark = pytest.mark.ros
 def test_force_plugin_takes_its_wrench_from_ros_and_f3d_reports_it(ros, tmp_path):
     (tmp_path / 'pushed.urdf').write_text(f3d_bot())
     plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', str(tmp_path / 'pushed.urdf')])
+    ros.set_param('/robot_description', textfile=str(tmp_path / 'pushed.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'pushed')
     seen = ros.probe('model_plugins/probes/force_plugin_takes_its_wrench_from_ros_and_f3d_reports_it.py', timeout=60)
     assert seen['rise'] > 0.3, 'geometry_msgs/Wrench on /force lifted the 5 kg base (2.2 m/s^2 net)'

@@ -12,7 +12,7 @@ pytestmark = pytest.mark.ros
 def test_a_static_transform_moves_the_box(ros, tmp_path):
     (tmp_path / 'box.urdf').write_text(BOX % '<linkName>box</linkName>')
     plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', str(tmp_path / 'box.urdf')])
+    ros.set_param('/robot_description', textfile=str(tmp_path / 'box.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'hog_box')
     seen = ros.probe('model_plugins/probes/a_static_transform_moves_the_box.py', timeout=60)
     assert seen['box'] == pytest.approx([0.8, 0.0, 1.5], abs=0.01)

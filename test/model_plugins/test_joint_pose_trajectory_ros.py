@@ -13,7 +13,7 @@ pytestmark = pytest.mark.ros
 def test_a_trajectory_on_the_topic_poses_the_arm(ros, tmp_path):
     (tmp_path / 'arm.urdf').write_text(arm().replace('</robot>', PLUGIN))
     plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', str(tmp_path / 'arm.urdf')])
+    ros.set_param('/robot_description', textfile=str(tmp_path / 'arm.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'arm')
     seen = ros.probe('model_plugins/probes/a_trajectory_on_the_topic_poses_the_arm.py', timeout=60)
     assert seen['shoulder'] == pytest.approx([1.0], abs=1e-5) and seen['elbow'] == pytest.approx([-0.6], abs=1e-5)

@@ -12,10 +12,10 @@ pytestmark = pytest.mark.ros
 def test_the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server(ros, tmp_path):
     (tmp_path / 'gripper.urdf').write_text(gripper(hasPID='mimic_gains'))
     plant = start_plant(ros)
-    ros.run(['rosparam', 'set', '/gripper/robot_description', '--textfile', str(tmp_path / 'gripper.urdf')])
-    ros.run(['rosparam', 'set', '/mimic_gains', '{p: 100.0, i: 0.0, d: 4.0}'])
-    ros.run(['rosparam', 'set', '/gripper/finger_controller',
-             '{type: position_controllers/JointPositionController, joint: finger_joint}'])
+    ros.set_param('/gripper/robot_description', textfile=str(tmp_path / 'gripper.urdf'))
+    ros.set_param('/mimic_gains', {'p': 100.0, 'i': 0.0, 'd': 4.0})
+    ros.set_param('/gripper/finger_controller', {'type': 'position_controllers/JointPositionController',
+                                                 'joint': 'finger_joint'})
     spawn_urdf(ros, plant, '/gripper/robot_description', 'gripper')
     spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/gripper', 'finger_controller'], 'spawner')
     ros.wait_for_controllers(1, namespace='/gripper')

@@ -81,7 +81,7 @@ def test_command_topic_turns_the_wheel_and_state_topics_publish(ros, plant):
 
 @pytest.mark.slow
 def test_controller_manager_errors_through_rosservice(ros, plant):
-    ros.run(['rosparam', 'set', NS + '/wrong_joint', "{type: velocity_controllers/JointVelocityController, joint: nope}"])
+    ros.set_param(NS + '/wrong_joint', {'type': 'velocity_controllers/JointVelocityController', 'joint': 'nope'})
     assert ros.service(CM + 'load_controller', "name: 'not_configured'") == {'ok': False}
     assert ros.service(CM + 'load_controller', "name: 'wrong_joint'") == {'ok': False}
     assert ros.service(CM + 'load_controller', "name: 'joint_state_controller'") == {'ok': True}

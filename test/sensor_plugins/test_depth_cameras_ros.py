@@ -20,7 +20,7 @@ WALL_X = 2.95
 def test_kinect_and_depth_camera_before_a_wall(ros, tmp_path):
     (tmp_path / 'wall.world').write_text(sdf_world(wall()))
     plant = start_plant(ros, str(tmp_path / 'wall.world'))
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', os.path.join(FIXTURES, 'urdf', 'depth_mast.urdf')])
+    ros.set_param('/robot_description', textfile=os.path.join(FIXTURES, 'urdf', 'depth_mast.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'depth_mast')
     seen = ros.probe('sensor_plugins/probes/kinect_and_depth_camera_before_a_wall.py', timeout=90)
     kinect, depth_camera = seen['kinect'], seen['depth_camera']

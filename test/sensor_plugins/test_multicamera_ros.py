@@ -28,7 +28,7 @@ def red_post(x):
 def test_stereo_pair_left_and_right_with_their_disparity(ros, tmp_path):
     (tmp_path / 'post.world').write_text(sdf_world(wall(xyz=(4.0, 0.0, 1.5)) + red_post(POST_X)))
     plant = start_plant(ros, str(tmp_path / 'post.world'))
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', os.path.join(FIXTURES, 'urdf', 'stereo_mast.urdf')])
+    ros.set_param('/robot_description', textfile=os.path.join(FIXTURES, 'urdf', 'stereo_mast.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'stereo_mast')
     seen = ros.probe('sensor_plugins/probes/stereo_pair_left_and_right_with_their_disparity.py', timeout=90)
     assert '/stereo/left/image_raw' in seen['topics'] and '/stereo/right/camera_info' in seen['topics']

@@ -13,7 +13,7 @@ def test_range_sensor_reports_the_nearest_ray_to_a_wall(ros, tmp_path):
     (tmp_path / 'wall.world').write_text(sdf_world(box_model('wall', (0.1, 2.0, 0.5), (0.75, 0.0, 0.25))))
     (tmp_path / 'skid_bot.urdf').write_text(skid_bot())
     plant = start_plant(ros, str(tmp_path / 'wall.world'))
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile', str(tmp_path / 'skid_bot.urdf')])
+    ros.set_param('/robot_description', textfile=str(tmp_path / 'skid_bot.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'skid_bot')
     seen = ros.probe('sensor_plugins/probes/range_sensor_reports_the_nearest_ray_to_a_wall.py', timeout=60)
     assert seen['frame'] == 'range_front' and seen['radiation'] == 1, 'infrared'

@@ -21,8 +21,7 @@ WALL_X = 2.95  # the wall's face, in the world (the mast stands at the origin)
 def test_hector_sonar_and_block_laser(ros, tmp_path):
     (tmp_path / 'wall.world').write_text(sdf_world(wall()))
     plant = start_plant(ros, str(tmp_path / 'wall.world'))
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile',
-             os.path.join(FIXTURES, 'urdf', 'ranger_mast.urdf')])
+    ros.set_param('/robot_description', textfile=os.path.join(FIXTURES, 'urdf', 'ranger_mast.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'ranger_mast')
     seen = ros.probe('sensor_plugins/probes/hector_sonar_and_block_laser.py', timeout=90)
     front, back, cloud = seen['front'], seen['back'], seen['cloud']

@@ -17,9 +17,9 @@ def test_plugins_publish_in_their_namespaces_with_their_frames(ros, tmp_path):
     plant = start_plant(ros)
     urdf = tmp_path / 'probe.urdf'
     urdf.write_text(PLUGIN_URDF)
-    ros.run(['rosparam', 'set', '/probe_description', '--textfile', str(urdf)])
-    ros.run(['rosparam', 'set', '/other/tf_prefix', 'custom'])      # found by the camera's searchParam
-    ros.run(['rosparam', 'set', '/robot_a/tf_prefix', 'truth_prefix'])  # read by gazebo_ros_p3d
+    ros.set_param('/probe_description', textfile=str(urdf))
+    ros.set_param('/other/tf_prefix', 'custom')      # found by the camera's searchParam
+    ros.set_param('/robot_a/tf_prefix', 'truth_prefix')  # read by gazebo_ros_p3d
     spawn_urdf(ros, plant, '/probe_description', 'probe', '-robot_namespace', '/robot_a')
     assert first_message(ros, '/shared/laser') == {'frame': 'scanner', 'type': 'sensor_msgs/LaserScan'}
     assert first_message(ros, '/other/front/rgb') == {'frame': 'custom/eye_frame', 'type': 'sensor_msgs/Image'}
@@ -87,7 +87,7 @@ def test_the_node_survives_whatever_a_sensor_asks_for_on_every_embree_kernel(emb
     plant = start_plant(ros)
     urdf = tmp_path / 'edges.urdf'
     urdf.write_text(EDGE_URDF)
-    ros.run(['rosparam', 'set', '/edges_description', '--textfile', str(urdf)])
+    ros.set_param('/edges_description', textfile=str(urdf))
     spawn_urdf(ros, plant, '/edges_description', 'edges')
     scans = ros.probe('sensor_plugins/probes/scans_of_every_edge_case.py', *SCANNING, timeout=120)
     for name, (samples, *_rest) in SCANNING.items():

@@ -28,8 +28,7 @@ def wall(name='wall', size=(0.1, 8.0, 3.0), xyz=(3.0, 0.0, 1.5)):
 def test_vlp16_and_hdl32_point_clouds(ros, tmp_path):
     (tmp_path / 'wall.world').write_text(sdf_world(wall()))
     plant = start_plant(ros, str(tmp_path / 'wall.world'))
-    ros.run(['rosparam', 'set', '/robot_description', '--textfile',
-             os.path.join(FIXTURES, 'urdf', 'velodyne_mast.urdf')])
+    ros.set_param('/robot_description', textfile=os.path.join(FIXTURES, 'urdf', 'velodyne_mast.urdf'))
     spawn_urdf(ros, plant, '/robot_description', 'velodyne_mast')
     seen = ros.probe('sensor_plugins/probes/vlp16_and_hdl32_point_clouds.py', timeout=90)
     vlp, hdl = seen['/velodyne_points'], seen['/hdl32/points']

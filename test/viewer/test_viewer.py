@@ -466,7 +466,7 @@ def test_a_ticked_sensor_stays_ticked_when_another_robots_sensor_comes(page):
     from plant_helpers import DIFF_BOT
     ros, _, driver, _ = page
     tick_overlay(driver, '/scan', 'the lidar')
-    ros.run(['rosparam', 'set', '/bot_description', '--textfile', DIFF_BOT])
+    ros.set_param('/bot_description', textfile=DIFF_BOT)
     spawn = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-urdf', '-param', 'bot_description', '-model', 'bot',
                      '-robot_namespace', 'bot', '-x', '1.5'], timeout=60)
     assert spawn.returncode == 0, spawn.stdout + spawn.stderr
@@ -537,7 +537,7 @@ def test_a_diff_drive_robot_in_the_arena_is_drawn_and_driven_by_the_keys_on_its_
     arena = os.path.join(PACKAGE, 'worlds', 'arena.world')
     driver = chromium
     with opened(ros, driver, arena) as (plant, _, _):
-        ros.run(['rosparam', 'set', '/robot_description', '--textfile', DIFF_BOT])
+        ros.set_param('/robot_description', textfile=DIFF_BOT)
         spawn_urdf(ros, plant, '/robot_description', 'diff_bot')
         wait_for(driver, "!!viewer.linkPose('diff_bot::base_link') && "
                          "!!document.querySelector('#models .model[data-model=\"diff_bot\"]')", 30,
