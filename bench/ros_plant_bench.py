@@ -62,21 +62,25 @@ def driving_probe(window, drive_topic=None, linear=0.0, angular=0.0, topics=(), 
                                 topics=list(topics), settle=settle)
 
 
-def plant_pid(launch_pid):
-    """The bullet_plant process that a roslaunch process started."""
-    for entry in os.listdir('/proc'):
-        if not entry.isdigit():
-            continue
-        try:
-            with open('/proc/%s/stat' % entry) as f:
-                fields = f.read().rsplit(')', 1)[1].split()
-            with open('/proc/%s/comm' % entry) as f:
-                name = f.read().strip()
-        except OSError:
-            continue
-        if int(fields[1]) == launch_pid and name == 'bullet_plant':
-            return int(entry)
-    raise RuntimeError('no bullet_plant process under roslaunch %d' % launch_pid)
+def plant_pid(started_pid, timeout=30.0):
+    """The bullet_plant process of a process started to run it: that process itself once gazebo_ros's
+    gzserver has become it (it execs the node), or its child (roslaunch's)."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        for entry in os.listdir('/proc'):
+            if not entry.isdigit():
+                continue
+            try:
+                with open('/proc/%s/stat' % entry) as f:
+                    fields = f.read().rsplit(')', 1)[1].split()
+                with open('/proc/%s/comm' % entry) as f:
+                    name = f.read().strip()
+            except OSError:
+                continue
+            if name == 'bullet_plant' and started_pid in (int(entry), int(fields[1])):
+                return int(entry)
+        time.sleep(0.1)
+    raise RuntimeError('no bullet_plant process from process %d within %g s' % (started_pid, timeout))
 
 
 def cpu_seconds(pid):
