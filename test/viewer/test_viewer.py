@@ -105,7 +105,9 @@ def opened(ros, driver, world, urdf_file=None):
     plant = tianracer_plant(ros, urdf_file, world=world) if urdf_file else start_plant(ros, world)
     # port 0: the viewer binds a port the system picks and prints it. A port found free here first
     # could be taken before the viewer bound it: chromium, starting beside it, took one in CI.
-    viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=0'], 'viewer')
+    # ~rate 10: the page gets the poses ten times a second, not the default 30, and draws a third as
+    # often: SwiftShader draws each frame on the CPU (chromium's CPU over the module 108 -> 77 s)
+    viewer = ros.start(['rosrun', 'tianracer_description', 'viewer', '_port:=0', '_rate:=10'], 'viewer')
     opened_at = re.compile(r'viewer: open (http://127\.0\.0\.1:\d+/)')
     ros.wait_until(lambda: opened_at.search(viewer.log()), 30, 'the viewer to serve')
     url = opened_at.search(viewer.log()).group(1)
