@@ -39,8 +39,8 @@ DESCRIPTIONS_BEGIN = '<!-- BEGIN DESCRIPTIONS: read by tools/architecture.py -->
 DESCRIPTIONS_END = '<!-- END DESCRIPTIONS -->'
 LONGEST = 200  # characters of a header sentence kept in the list
 
-HASH_COMMENT = ('.sh', '.yaml', '.yml', '.msg', '.srv', '.action', '.csv', '.ini', '.txt', '.cfg', '.cmake')
-SLASH_COMMENT = ('.cpp', '.h', '.hpp', '.cc', '.js')
+HASH_COMMENT = ('.sh', '.yaml', '.yml', '.msg', '.srv', '.action', '.csv', '.ini', '.txt', '.cfg', '.cmake', '.pc')
+SLASH_COMMENT = ('.cpp', '.h', '.hpp', '.cc', '.hh', '.js')
 XML_COMMENT = ('.xml', '.launch', '.world', '.xacro', '.test', '.urdf', '.sdf', '.config', '.dae', '.html')
 
 
@@ -123,7 +123,8 @@ def header_of(path, root=ROOT):
     """The first sentence of the comment or docstring a file starts with, or None."""
     full = os.path.join(root, path)
     name = os.path.basename(path)
-    ext = os.path.splitext(name)[1]
+    # a template (gazebo-config.cmake.in) is commented as what it makes
+    ext = os.path.splitext(name[:-3] if name.endswith('.in') else name)[1]
     try:
         with open(full, encoding='utf-8') as f:
             text = f.read()
@@ -315,12 +316,18 @@ def read_include_rules(text):
 
 
 def _cmake_text(root):
-    """CMakeLists.txt without its comments ('' where there is none)."""
-    path = os.path.join(root, 'CMakeLists.txt')
-    if not os.path.exists(path):
-        return ''
-    with open(path, encoding='utf-8') as f:
-        return re.sub(r'#[^\n]*', '', f.read())
+    """CMakeLists.txt and the cmake/*.cmake files it includes, without their comments ('' where there
+    is none)."""
+    paths = [os.path.join(root, 'CMakeLists.txt')]
+    cmake_folder = os.path.join(root, 'cmake')
+    if os.path.isdir(cmake_folder):
+        paths += sorted(os.path.join(cmake_folder, n) for n in os.listdir(cmake_folder) if n.endswith('.cmake'))
+    text = ''
+    for path in paths:
+        if os.path.exists(path):
+            with open(path, encoding='utf-8') as f:
+                text += re.sub(r'#[^\n]*', '', f.read()) + '\n'
+    return text
 
 
 def cmake_include_dirs(root=ROOT):

@@ -100,6 +100,37 @@ def test_a_robot_package_builds_with_catkin_tools_on_the_install_space(install_s
     assert nodes.stdout.split() == ['/gazebo', '/spawn_rover'], nodes.stdout + nodes.stderr
 
 
+@pytest.mark.slow
+def test_a_package_with_its_own_gazebo_plugin_builds_on_the_install_space_with_gazebo_dev_and_pkg_config(
+        install_space, tmp_path):
+    """test/fixtures/gazebo_plugin_pkg: catkin's gazebo_dev and find_package(gazebo) (Gazebo 11's C++
+    API, GAZEBO_LIBRARIES), a model plugin library and a node that makes the plugin from its file
+    and loads it with its <plugin> element read by sdformat; and a program built by `pkg-config
+    gazebo` alone."""
+    workspace = tmp_path / 'plugin_ws'
+    shutil.copytree(os.path.join(FIXTURES, 'gazebo_plugin_pkg'), workspace / 'src' / 'gazebo_plugin_pkg')
+    status, output = run('source %s/setup.bash && catkin_make' % install_space, cwd=workspace)
+    assert status == 0, output
+    assert '-- Gazebo version: 11.15' in output, output
+    env = sourced(workspace / 'devel' / 'setup.bash')
+    check = subprocess.run([str(workspace / 'devel' / 'lib' / 'gazebo_plugin_pkg' / 'plugin_check')],
+                           env=dict(env, GAZEBO_PLUGIN_PATH=str(workspace / 'devel' / 'lib')),
+                           capture_output=True, text=True, timeout=30)
+    assert check.returncode == 0, check.stdout + check.stderr
+    assert check.stdout.split('\n')[:2] == ['hello_model: hi', 'gazebo 11 plugin hello type model step 0.001'], \
+        check.stdout
+    # The headers and libraries come from the install space, not from the source tree.
+    flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'gazebo'], env=env, capture_output=True, text=True)
+    assert flags.returncode == 0 and install_space + '/include/gazebo-11' in flags.stdout, flags.stdout + flags.stderr
+    (tmp_path / 'clock.cc').write_text(
+        '#include <gazebo/common/Time.hh>\n#include <iostream>\n'
+        'int main() { std::cout << (gazebo::common::Time(1.5) - gazebo::common::Time(0, 250000000)).Double()'
+        ' << std::endl; }\n')
+    status, output = run('source %s/setup.bash && g++ clock.cc -o clock $(pkg-config --cflags --libs gazebo) && ./clock'
+                         % install_space, cwd=tmp_path)
+    assert status == 0 and output.strip() == '1.25', output
+
+
 def test_this_repository_cloned_into_a_workspace_is_refused_with_what_to_do(tmp_path):
     workspace = tmp_path / 'clone_ws'
     (workspace / 'src').mkdir(parents=True)

@@ -1,0 +1,134 @@
+// Gazebo 11's common library over the plant (include/gazebo-11/gazebo/common/): common::Time's
+// arithmetic as plugins use it on simulated time, event::EventT's connections as plugins hold
+// them, the console's prefixes, and PluginT::Create's errors for a library that is not a plugin.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include <gazebo/common/common.hh>
+
+#include "mesh_fixtures.h"
+
+using gazebo::common::Time;
+
+TEST(GazeboTime, KeepsSecondsAndNanosecondsOfOneSign)
+{
+  EXPECT_EQ(Time(1, 1500000000), Time(2, 500000000));
+  const Time negative(-0.25);
+  EXPECT_EQ(negative.sec, 0);
+  EXPECT_EQ(negative.nsec, -250000000);
+  const Time borrow = Time(2, 0) - Time(0, 1);
+  EXPECT_EQ(borrow.sec, 1);
+  EXPECT_EQ(borrow.nsec, 999999999);
+  EXPECT_DOUBLE_EQ((Time(1.5) - Time(2.0)).Double(), -0.5);
+}
+
+TEST(GazeboTime, ArithmeticAndComparisonsAsAPluginUsesThemOnSimulatedTime)
+{
+  const Time last(10, 990000000), now(11, 10000000);
+  const Time elapsed = now - last;
+  EXPECT_EQ(elapsed, Time(0, 20000000));
+  EXPECT_NEAR(elapsed.Double(), 0.02, 1e-12);
+  EXPECT_TRUE(elapsed >= 0.02 && elapsed < 0.021 && elapsed > Time::Zero);
+  EXPECT_NEAR((Time(3.0) * Time(0.5)).Double(), 1.5, 1e-9);
+  EXPECT_NEAR((Time(3.0) / Time(2.0)).Double(), 1.5, 1e-9);
+  EXPECT_EQ(Time(3.0) / Time::Zero, Time(3.0));  // Gazebo's: an error, and the time as it was
+  Time accumulated;
+  for (int i = 0; i < 1000; ++i)
+    accumulated += Time(0.001);
+  EXPECT_EQ(accumulated, Time(1, 0));
+  std::stringstream text;
+  text << Time(4, 5);
+  EXPECT_EQ(text.str(), "4 5");
+  Time read;
+  text >> read;
+  EXPECT_EQ(read, Time(4, 5));
+}
+
+TEST(GazeboTime, NonFiniteSecondsAreZeroAndTheWallClockMoves)
+{
+  EXPECT_EQ(Time(std::numeric_limits<double>::quiet_NaN()), Time::Zero);
+  EXPECT_EQ(Time(std::numeric_limits<double>::infinity()), Time::Zero);
+  const Time before = Time::GetWallTime();
+  Time::MSleep(2);
+  EXPECT_GE((Time::GetWallTime() - before).Double(), 0.002);
+  EXPECT_EQ(Time::GetWallTimeAsISOString().size(), 19u);  // YYYY-MM-DDTHH:MM:SS
+}
+
+TEST(GazeboEvents, ACallbackRunsWhileItsConnectionIsHeld)
+{
+  gazebo::event::EventT<void(const gazebo::common::UpdateInfo&)> update;
+  int calls = 0;
+  double seen = 0.0;
+  gazebo::event::ConnectionPtr connection = update.Connect([&](const gazebo::common::UpdateInfo& info) {
+    ++calls;
+    seen = info.simTime.Double();
+  });
+  gazebo::common::UpdateInfo info;
+  info.simTime = Time(1.25);
+  update(info);
+  EXPECT_EQ(calls, 1);
+  EXPECT_DOUBLE_EQ(seen, 1.25);
+  EXPECT_EQ(update.ConnectionCount(), 1u);
+  connection.reset();  // as a plugin disconnects: its member reset
+  update(info);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(update.ConnectionCount(), 0u);
+}
+
+TEST(GazeboEvents, ABoundMemberWithoutArgumentsConnectsToWorldUpdateBegin)
+{
+  struct Plugin
+  {
+    int updates = 0;
+    void OnUpdate() { ++updates; }
+  } plugin;
+  // Gazebo's tutorials connect std::bind(&Plugin::OnUpdate, this), which takes no UpdateInfo.
+  auto connection = gazebo::event::Events::ConnectWorldUpdateBegin(std::bind(&Plugin::OnUpdate, &plugin));
+  gazebo::event::Events::worldUpdateBegin(gazebo::common::UpdateInfo());
+  EXPECT_EQ(plugin.updates, 1);
+}
+
+TEST(GazeboEvents, ASubscriberMayDisconnectAnotherDuringTheCall)
+{
+  gazebo::event::EventT<void()> step;
+  int first = 0, second = 0;
+  gazebo::event::ConnectionPtr b;
+  auto a = step.Connect([&] {
+    ++first;
+    b.reset();
+  });
+  b = step.Connect([&] { ++second; });
+  step();
+  EXPECT_EQ(first, 1);
+  EXPECT_EQ(second, 0);  // disconnected before its turn came
+}
+
+TEST(GazeboConsole, LinesCarryGazebosPrefixes)
+{
+  const std::string path = mesh_fixtures::tempDir("gazebo_console") + "/err.txt";
+  FILE* saved = std::freopen(path.c_str(), "w", stderr);
+  ASSERT_NE(saved, nullptr);
+  gzerr << "joint [" << "wheel" << "] not found" << std::endl;
+  gzwarn << "slow" << std::endl;
+  std::fflush(stderr);
+  std::ifstream written(path);
+  std::string error_line, warning_line;
+  std::getline(written, error_line);
+  std::getline(written, warning_line);
+  EXPECT_EQ(error_line.rfind("[Err] [test_gazebo_common.cpp:", 0), 0u) << error_line;
+  EXPECT_NE(error_line.find("] joint [wheel] not found"), std::string::npos) << error_line;
+  EXPECT_EQ(warning_line.rfind("[Wrn] [test_gazebo_common.cpp:", 0), 0u) << warning_line;
+}
+
+TEST(GazeboPlugin, ALibraryThatIsNotFoundOrNotAPluginGivesNoPluginAndSaysWhy)
+{
+  EXPECT_FALSE(gazebo::ModelPlugin::Create("libno_such_plugin_here.so", "missing"));
+  // A shared library without RegisterPlugin: the C library itself.
+  EXPECT_FALSE(gazebo::WorldPlugin::Create("libm.so.6", "not_a_plugin"));
+}
