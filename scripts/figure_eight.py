@@ -38,7 +38,8 @@ class FigureEight:
 
     def on_odom(self, m):
         p = m.pose.pose
-        self.odom.append((m.header.stamp.to_sec(), p.position.x, p.position.y, yaw(p.orientation)))
+        self.odom.append((m.header.stamp.to_sec(), p.position.x, p.position.y, yaw(p.orientation),
+                          m.twist.twist.angular.z))
 
     def on_scan(self, m):
         self.scan = m
@@ -50,6 +51,7 @@ class FigureEight:
         start_pose = self.odom[-1]
         commanded = [(start_pose[1], start_pose[2])]
         x, y, heading = start_pose[1], start_pose[2], start_pose[3]
+        turn_rate = self.speed * math.tan(self.steering) / self.geometry.wheelbase
         rate = rospy.Rate(10)
         loops = []
         for steering in (self.steering, -self.steering):
@@ -64,11 +66,16 @@ class FigureEight:
                 x += self.speed * math.cos(heading) * dt
                 y += self.speed * math.sin(heading) * dt
                 commanded.append((x, y))
-            loops.append([(px, py) for t, px, py, _ in self.odom if begin + 0.5 <= t <= begin + loop_time])
+            # The loop is where the car turned at its steady rate for this steering, read from its own
+            # odometry: a command that reached the plant late (a loaded machine, a fast pace) shifts
+            # the loop in simulated time, not what it is.
+            sign = 1.0 if steering > 0 else -1.0
+            loops.append([(px, py) for t, px, py, _, rate_z in self.odom
+                          if begin <= t <= begin + loop_time + 3.0 and abs(sign * rate_z - turn_rate) < 0.1 * turn_rate])
         self.cmd.publish(Twist())
         rospy.sleep(1.0)
 
-        actual = [(px, py) for t, px, py, _ in self.odom if t >= start_pose[0]]
+        actual = [(px, py) for t, px, py, _, _ in self.odom if t >= start_pose[0]]
         length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(actual, actual[1:]))
         end_error = math.hypot(actual[-1][0] - start_pose[1], actual[-1][1] - start_pose[2])
         print('figure-eight at %.2f m/s, steering %.3f rad: ideal radius %.3f m' % (self.speed, self.steering, radius))
@@ -88,7 +95,7 @@ class FigureEight:
         axes.plot(*zip(*commanded), '--', label='commanded (bicycle model)')
         axes.plot(*zip(*actual), label='actual (odom)')
         if self.scan is not None and self.odom:
-            _, px, py, heading = self.odom[-1]
+            _, px, py, heading, _ = self.odom[-1]
             # the lidar's place on the car, from the URDF (the scan is in its frame)
             joint = next(j for j, e in self.model.joints.items() if e.find('child').get('link') == self.scan.header.frame_id)
             ox, oy = self.model.joint_position(joint)[:2]
