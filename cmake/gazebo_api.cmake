@@ -23,7 +23,19 @@ target_link_libraries(gazebo_common PUBLIC sdformat12::sdformat12 ignition-math6
 set_target_properties(gazebo_common PROPERTIES
   LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
   VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
-set(GAZEBO_API_LIBRARIES gazebo_common)
+# Gazebo's physics classes for plugins (World, Model, Link, Joint) over the simulator's bridge
+# (gazebo/physics/PlantBridge.hh), which the plant implements.
+add_library(gazebo_physics SHARED
+  src/gazebo/physics/Joint.cc
+  src/gazebo/physics/Link.cc
+  src/gazebo/physics/Model.cc
+  src/gazebo/physics/World.cc)
+target_compile_options(gazebo_physics PRIVATE -Wall -Wextra)
+target_link_libraries(gazebo_physics PUBLIC gazebo_common)
+set_target_properties(gazebo_physics PROPERTIES
+  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
+  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
+set(GAZEBO_API_LIBRARIES gazebo_physics gazebo_common)
 list(TRANSFORM GAZEBO_API_LIBRARIES PREPEND -l OUTPUT_VARIABLE GAZEBO_API_PKG_LIBS)
 list(JOIN GAZEBO_API_PKG_LIBS " " GAZEBO_API_PKG_LIBS)
 

@@ -161,6 +161,10 @@ inline std::unique_ptr<ModelPlugin> createModelPlugin(const std::string& filenam
   return make ? (*make)() : nullptr;
 }
 
+// The host of a Gazebo model plugin library of the user's own (ModelPluginDescription::library):
+// its Load loads the library and the plugin as Gazebo does (src/plant/gazebo_host/).
+std::unique_ptr<ModelPlugin> createGazeboModelPlugin();
+
 // The description's facts of a model plugin's file: whose naming rules (plugin_names.h) and, for the
 // mimic joint plugin, the element naming where it reads pid gains.
 inline PluginFile modelPluginFile(PluginNaming naming = PluginNaming::Default, const std::string& pid_gains_element = "")

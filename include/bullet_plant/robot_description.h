@@ -85,6 +85,10 @@ struct PluginFile
 
 // The registered facts of `filename` (libgazebo_ros_*.so); null for a file the plant does not simulate.
 const PluginFile* findPluginFile(const std::string& filename);
+// Where Gazebo would load the plugin library `filename` from: an absolute path that exists, else
+// the first folder of GAZEBO_PLUGIN_PATH, then of LD_LIBRARY_PATH (where catkin puts the
+// workspaces' lib folders), that holds it; "" where none does.
+std::string findGazeboPluginLibrary(const std::string& filename);
 // The files registered, for messages ("gazebo_ros_control, gazebo_ros_laser, ...").
 std::string simulatedPluginNames();
 
@@ -94,6 +98,10 @@ struct ModelPluginDescription
 {
   std::string name, filename;  // filename: a registered model plugin's (findPluginFile)
   std::map<std::string, std::string> params;  // child element -> its text
+  // A Gazebo plugin library of the user's own: the file `filename` found on the plugin paths
+  // (findGazeboPluginLibrary), loaded as Gazebo loads it (src/plant/gazebo_host/); "" for the
+  // plant's own plugin of that name. `xml`: the <plugin> element as written, for its Load.
+  std::string library, xml;
 
   bool has(const std::string& key) const { return params.count(key) > 0; }
   std::string text(const std::string& key, const std::string& fallback) const;

@@ -5,6 +5,7 @@ catkin_make and with catkin_tools' `catkin build`; the robot's own gazebo launch
 diff drive). Each step runs in a clean environment that sources only what a user would, so nothing
 of the source tree or its devel space can stand in for the install. And a clone of this repository
 in a workspace's src/ is refused with what to do."""
+import json
 import os
 import shutil
 import subprocess
@@ -12,7 +13,7 @@ import subprocess
 import pytest
 
 from ros_harness import RosSystem
-from suite_paths import FIXTURES, REPOSITORY
+from suite_paths import FIXTURES, REPOSITORY, TEST_DIR
 
 pytestmark = pytest.mark.ros
 
@@ -119,6 +120,25 @@ def test_a_package_with_its_own_gazebo_plugin_builds_on_the_install_space_with_g
     assert check.returncode == 0, check.stdout + check.stderr
     assert check.stdout.split('\n')[:2] == ['hello_model: hi', 'gazebo 11 plugin hello type model step 0.001'], \
         check.stdout
+    # The plant loads the package's plugin library (found on LD_LIBRARY_PATH, where the workspace's
+    # devel/lib is) for a <plugin> of that file name, and the plugin moves its models.
+    moved = subprocess.run(['/usr/bin/python3', os.path.join(TEST_DIR, 'gazebo_ros', 'probes',
+                                                              'user_model_plugin_moves_its_model.py'), str(tmp_path)],
+                           env=env, capture_output=True, text=True, timeout=120)
+    assert moved.returncode == 0, moved.stdout + moved.stderr
+    motion = json.loads(moved.stdout.strip().splitlines()[-1])
+    errors = [text for level, text in motion['messages'] if level == 'ERROR']
+    # A library that is no Gazebo plugin: one error naming the plugin and the file; the model runs.
+    assert len(errors) == 1 and "plugin 'push' (/lib/x86_64-linux-gnu/libm.so.6)" in errors[0] \
+        and 'has no RegisterPlugin' in errors[0], errors
+    assert motion['end']['broken'][2] < motion['start']['broken'][2] - 0.3, motion  # it fell to the ground
+    pushed_x = motion['end']['pushed'][0] - motion['start']['pushed'][0]
+    assert 0.27 < pushed_x < 0.33, motion  # SetLinearVel(0.3, 0, 0) each update for 1 s
+    assert abs(motion['spin'][1] - 2.0) < 0.05, motion  # Joint::SetVelocity(0, 2.0)
+    lifted_z = motion['end']['lifted'][2] - motion['start']['lifted'][2]
+    assert 4.0 < lifted_z < 5.5, motion  # Link::AddForce of twice its weight: up at g, 4.9 m in 1 s
+    steps, last, world_time, name = motion['reports']['pushed']
+    assert int(steps) == 1000 and abs(float(last) - 0.999) < 1e-9 and name == 'pushed_cart', motion['reports']
     # The headers and libraries come from the install space, not from the source tree.
     flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'gazebo'], env=env, capture_output=True, text=True)
     assert flags.returncode == 0 and install_space + '/include/gazebo-11' in flags.stdout, flags.stdout + flags.stderr

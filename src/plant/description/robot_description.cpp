@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <mutex>
 #include <sstream>
+
+#include <sys/stat.h>
 
 #include <console_bridge/console.h>
 #include <tinyxml2.h>
@@ -34,6 +37,28 @@ double SensorDescription::pluginNumber(const std::string& key, double fallback) 
 }
 
 const PluginFile* findPluginFile(const std::string& filename) { return Registry<PluginFile>::instance().find(filename); }
+
+std::string findGazeboPluginLibrary(const std::string& filename)
+{
+  struct stat found;
+  if (filename.empty())
+    return "";
+  if (filename.front() == '/')
+    return stat(filename.c_str(), &found) == 0 ? filename : "";
+  for (const char* variable : {"GAZEBO_PLUGIN_PATH", "LD_LIBRARY_PATH"})
+  {
+    const char* value = std::getenv(variable);
+    std::stringstream folders(value ? value : "");
+    std::string folder;
+    while (std::getline(folders, folder, ':'))
+    {
+      const std::string path = folder + "/" + filename;
+      if (!folder.empty() && stat(path.c_str(), &found) == 0 && S_ISREG(found.st_mode))
+        return path;
+    }
+  }
+  return "";
+}
 
 std::string simulatedPluginNames()
 {

@@ -941,7 +941,7 @@ void createModelPlugins(Robot::Internals& r)
 {
   for (const ModelPluginDescription& d : r.description.model_plugins)
   {
-    std::unique_ptr<ModelPlugin> plugin = createModelPlugin(d.filename);
+    std::unique_ptr<ModelPlugin> plugin = d.library.empty() ? createModelPlugin(d.filename) : createGazeboModelPlugin();
     if (!plugin)
       continue;
     plugin->setDescription(d);

@@ -1,0 +1,55 @@
+// physics::Model as a model plugin reads and moves it: its name, world, pose and velocities (its
+// canonical link's), its links and joints by name.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include <boost/enable_shared_from_this.hpp>
+#include <ignition/math/Pose3.hh>
+#include <ignition/math/Vector3.hh>
+
+#include "gazebo/physics/PhysicsTypes.hh"
+#include "gazebo/util/system.hh"
+
+namespace gazebo
+{
+namespace physics
+{
+class ModelBridge;
+
+class GZ_PHYSICS_VISIBLE Model : public boost::enable_shared_from_this<Model>
+{
+public:
+  Model(std::shared_ptr<ModelBridge> bridge, WorldPtr world);
+  std::string GetName() const;
+  std::string GetScopedName(bool prependWorldName = false) const;
+  WorldPtr GetWorld() const;
+  ignition::math::Pose3d WorldPose() const;
+  ignition::math::Vector3d WorldLinearVel() const;
+  ignition::math::Vector3d WorldAngularVel() const;
+  ignition::math::Vector3d RelativeLinearVel() const;
+  ignition::math::Vector3d RelativeAngularVel() const;
+  // The canonical link moves with this velocity from now on, its angular velocity kept (and the
+  // other way about for SetAngularVel).
+  void SetLinearVel(const ignition::math::Vector3d& velocity);
+  void SetAngularVel(const ignition::math::Vector3d& velocity);
+  // "canonical" (the default) is the canonical link; null for a link the model lacks.
+  LinkPtr GetLink(const std::string& name = "canonical") const;
+  LinkPtr GetChildLink(const std::string& name) const;
+  const Link_V& GetLinks() const;
+  // By its name or its scoped name (MODEL::JOINT); null, with one error naming it, for a joint the
+  // model lacks or a fixed one.
+  JointPtr GetJoint(const std::string& name);
+  const Joint_V& GetJoints() const;
+
+private:
+  std::shared_ptr<ModelBridge> bridge_;
+  WorldPtr world_;
+  Link_V links_;
+  mutable Joint_V joints_;
+  std::map<std::string, JointPtr> joints_by_name_;
+};
+}  // namespace physics
+}  // namespace gazebo

@@ -1,0 +1,63 @@
+// The simulator's side of the physics classes: what physics::World, Model, Link and Joint ask of
+// the simulation that hosts a plugin. The Bullet plant implements it (src/plant/gazebo_host/); a
+// plugin never uses it. Poses and vectors are in the world frame.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <ignition/math/Pose3.hh>
+#include <ignition/math/Vector3.hh>
+
+#include "gazebo/common/Time.hh"
+
+namespace gazebo
+{
+namespace physics
+{
+class JointBridge
+{
+public:
+  virtual ~JointBridge() = default;
+  virtual double position() const = 0;
+  virtual double velocity() const = 0;
+  // False (and one warning naming the joint) where the joint is driven by something else (a
+  // gazebo_ros_control transmission): nothing is changed.
+  virtual bool setVelocity(double velocity) = 0;
+  virtual bool setForce(double effort) = 0;
+  virtual bool setPosition(double position) = 0;
+};
+
+class ModelBridge
+{
+public:
+  virtual ~ModelBridge() = default;
+  virtual std::string name() const = 0;
+  virtual std::string canonicalLink() const = 0;
+  virtual std::vector<std::string> linkNames() const = 0;
+  virtual std::vector<std::string> jointNames() const = 0;
+  virtual ignition::math::Pose3d linkPose(const std::string& link) const = 0;
+  virtual ignition::math::Vector3d linkLinearVel(const std::string& link) const = 0;
+  virtual ignition::math::Vector3d linkAngularVel(const std::string& link) const = 0;
+  // The canonical link's body moves with `linear` and turns with `angular` from now on.
+  virtual void setVelocity(const ignition::math::Vector3d& linear, const ignition::math::Vector3d& angular) = 0;
+  // A force at the link's centre of mass and a torque, for the coming step.
+  virtual void addLinkWrench(const std::string& link, const ignition::math::Vector3d& force,
+                             const ignition::math::Vector3d& torque) = 0;
+  // Null for a joint the model lacks or a fixed one.
+  virtual std::unique_ptr<JointBridge> joint(const std::string& name) = 0;
+};
+
+class WorldBridge
+{
+public:
+  virtual ~WorldBridge() = default;
+  virtual std::string name() const = 0;
+  virtual common::Time simTime() const = 0;
+  virtual ignition::math::Vector3d gravity() const = 0;
+  virtual double stepSize() const = 0;
+  virtual uint64_t iterations() const = 0;
+};
+}  // namespace physics
+}  // namespace gazebo

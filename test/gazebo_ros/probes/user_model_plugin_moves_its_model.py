@@ -1,0 +1,55 @@
+"""A user's Gazebo model plugin (test/fixtures/gazebo_plugin_pkg's libpush_model.so, found on the
+library path) hosted by the plant from Python: two carts, one pushed along x at 0.3 m/s with its top
+spun at 2 rad/s, one lifted by twice its weight, and one naming a library that is no Gazebo plugin
+(the C maths library: it loads, but has no RegisterPlugin); 1 s of simulated time, then reset_world
+(the plugins' Reset writes their counts to the report files). Prints the carts' motion as JSON."""
+import json
+import sys
+
+from tianracer_description import bullet_plant
+
+CART = """<?xml version="1.0"?>
+<robot name="cart">
+  <link name="base">
+    <inertial><mass value="2.0"/><inertia ixx="0.02" iyy="0.03" izz="0.04" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="0.4 0.3 0.1"/></geometry></collision>
+  </link>
+  <link name="top">
+    <inertial><origin xyz="0 0 0"/><mass value="0.2"/><inertia ixx="0.001" iyy="0.001" izz="0.001" ixy="0" ixz="0" iyz="0"/></inertial>
+  </link>
+  <joint name="spin_joint" type="continuous">
+    <parent link="base"/><child link="top"/><origin xyz="0 0 0.1"/><axis xyz="0 0 1"/>
+  </joint>
+  <gazebo>
+    <plugin name="push" filename="libpush_model.so">%s</plugin>
+  </gazebo>
+</robot>
+"""
+
+
+NOT_A_PLUGIN = '/lib/x86_64-linux-gnu/libm.so.6'
+
+
+def main(report_dir):
+    world = bullet_plant.World()
+    world.echo = False
+    pushed = world.spawn(CART % ('<speed>0.3</speed><joint>spin_joint</joint><spin>2.0</spin><report>%s/pushed.txt</report>'
+                                 % report_dir), 'pushed_cart', pose=[0.0, 0.0, 0.06, 0, 0, 0])
+    lifted = world.spawn(CART % ('<pushed>base</pushed><lift>43.164</lift><report>%s/lifted.txt</report>' % report_dir),
+                         'lifted_cart', pose=[0.0, 2.0, 0.06, 0, 0, 0])
+    broken = world.spawn(CART.replace('libpush_model.so', NOT_A_PLUGIN) % '', 'broken_cart', pose=[0.0, 4.0, 0.5, 0, 0, 0])
+    start = {'pushed': list(pushed.base_pose()), 'lifted': list(lifted.base_pose()), 'broken': list(broken.base_pose())}
+    world.step(int(round(1.0 / world.time_step)))
+    end = {'pushed': list(pushed.base_pose()), 'lifted': list(lifted.base_pose()), 'broken': list(broken.base_pose())}
+    spin = list(pushed.joint_state('spin_joint'))
+    world.reset_world()
+    reports = {}
+    for name in ('pushed', 'lifted'):
+        with open('%s/%s.txt' % (report_dir, name)) as f:
+            reports[name] = f.read().split()
+    print(json.dumps({'start': start, 'end': end, 'spin': spin, 'reports': reports, 'messages': world.messages()},
+                     default=list))
+
+
+if __name__ == '__main__':
+    main(sys.argv[1])
