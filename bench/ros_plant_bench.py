@@ -17,7 +17,7 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test', 'helpers'))
-from ros_harness import RosSystem  # noqa: E402  (the test harness)
+from ros_harness import RosSystem, plant_pid  # noqa: E402,F401  (the test harness; plant_pid for the benches)
 from tianracer_description.tianracer import TUTORIAL_CONTROLLERS  # noqa: E402
 
 ROUNDS = 3
@@ -60,27 +60,6 @@ def driving_probe(window, drive_topic=None, linear=0.0, angular=0.0, topics=(), 
     """The DRIVING_PROBE script for ros.python: prints {"rtf": ..., "rates": {topic: per sim s}}."""
     return DRIVING_PROBE.format(window=window, drive_topic=drive_topic, linear=linear, angular=angular,
                                 topics=list(topics), settle=settle)
-
-
-def plant_pid(started_pid, timeout=30.0):
-    """The bullet_plant process of a process started to run it: that process itself once gazebo_ros's
-    gzserver has become it (it execs the node), or its child (roslaunch's)."""
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        for entry in os.listdir('/proc'):
-            if not entry.isdigit():
-                continue
-            try:
-                with open('/proc/%s/stat' % entry) as f:
-                    fields = f.read().rsplit(')', 1)[1].split()
-                with open('/proc/%s/comm' % entry) as f:
-                    name = f.read().strip()
-            except OSError:
-                continue
-            if name == 'bullet_plant' and started_pid in (int(entry), int(fields[1])):
-                return int(entry)
-        time.sleep(0.1)
-    raise RuntimeError('no bullet_plant process from process %d within %g s' % (started_pid, timeout))
 
 
 def cpu_seconds(pid):

@@ -4,36 +4,15 @@ deleted through gazebo_ros's services SPAWN_DELETE_CYCLES times each (150 in the
 bound, 5 MB, is for 1000, which `SPAWN_DELETE_CYCLES=1000` runs), and the node's resident memory from
 the end of the first tenth to the end."""
 import os
-import time
 
 import pytest
 
-from ros_harness import RosSystem
+from ros_harness import RosSystem, plant_pid
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 
 CYCLES = int(os.environ.get('SPAWN_DELETE_CYCLES', '150'))
 MAX_GROWTH_KB = 5 * 1024  # the issue's bound, for 1000 cycles of each
-
-
-def node_pid(launcher_pid, timeout=30):
-    """The bullet_plant node roslaunch started (a child of the launcher)."""
-    deadline = time.time() + timeout
-    while time.time() < deadline:
-        for entry in os.listdir('/proc'):
-            if not entry.isdigit():
-                continue
-            try:
-                with open('/proc/%s/stat' % entry) as stat:
-                    parent = int(stat.read().rsplit(')', 1)[1].split()[1])
-                with open('/proc/%s/cmdline' % entry) as cmdline:
-                    command = cmdline.read()
-            except OSError:
-                continue
-            if parent == launcher_pid and 'bullet_plant' in command:
-                return int(entry)
-        time.sleep(0.2)
-    raise AssertionError('no bullet_plant node under roslaunch %d' % launcher_pid)
 
 
 def test_a_thousand_spawn_delete_cycles_keep_the_node_the_same_size(tmp_path):
@@ -44,7 +23,7 @@ def test_a_thousand_spawn_delete_cycles_keep_the_node_the_same_size(tmp_path):
         # as it can (real_time_factor:=0), in the same wall time (35 s alone)
         plant = ros.start(['roslaunch', 'gazebo_ros', 'empty_world.launch', 'gui:=false', 'real_time_factor:=3'],
                           'plant')
-        pid = node_pid(plant.pid)
+        pid = plant_pid(plant.pid)
         out = ros.probe('gazebo_ros/probes/spawn_delete_cycles.py', CYCLES, pid, timeout=60 + 2 * CYCLES)
     finally:
         ros.close()

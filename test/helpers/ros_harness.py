@@ -368,6 +368,27 @@ class RosSystem:
             process.kill()  # reaps the killed ones, closes every log
 
 
+def plant_pid(started_pid, timeout=30.0):
+    """The bullet_plant process of a process started to run it: that process itself once gazebo_ros's
+    gzserver has become it (it execs the node), or its child (roslaunch's)."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        for entry in os.listdir('/proc'):
+            if not entry.isdigit():
+                continue
+            try:
+                with open('/proc/%s/stat' % entry) as f:
+                    fields = f.read().rsplit(')', 1)[1].split()
+                with open('/proc/%s/comm' % entry) as f:
+                    name = f.read().strip()
+            except OSError:
+                continue
+            if name == 'bullet_plant' and started_pid in (int(entry), int(fields[1])):
+                return int(entry)
+        time.sleep(0.1)
+    raise RuntimeError('no bullet_plant process from process %d within %g s' % (started_pid, timeout))
+
+
 def start_plant(ros, world=None, paused=False):
     """The simulator with no robot yet, as gazebo_ros_pkgs' own tests start it: gazebo_ros's gzserver
     on the world (rosrun; `-u` paused), with /use_sim_time set as empty_world.launch sets it. Through
