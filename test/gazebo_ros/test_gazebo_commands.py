@@ -35,7 +35,7 @@ def crate_height(ros):
 
 def wait_for_gazebo(ros, process):
     ros.wait_until(lambda: process.popen.poll() is not None or
-                   ros.run(['rosservice', 'list'], timeout=10).stdout.count('/gazebo/get_model_state'), 60,
+                   '/gazebo/get_model_state' in ros.services(), 60,
                    'the node\'s services')
     assert process.popen.poll() is None, process.log()
 
@@ -49,7 +49,7 @@ def test_gzserver_runs_the_world_paused_and_warns_once_of_an_option_it_does_not_
     ros.wait_until(lambda: crate_height(ros) < 0.11, 30, 'the crate to land')
     log = server.log()
     assert log.count('--no_such_option') == 1 and 'unknown option' in log, log
-    assert ros.run(['rosparam', 'get', '/gazebo/lockstep']).stdout.strip() == 'false'  # late frames skipped
+    assert ros.get_param('/gazebo/lockstep') is False  # late frames skipped
     assert 'libgazebo_ros_api_plugin' not in log, 'gazebo_ros\'s own system plugin is no surprise'
     assert 'unregistered physics' not in log
 
@@ -59,7 +59,7 @@ def test_gzserver_iters_simulates_that_many_steps_and_stops(ros):
     out = run.stdout + run.stderr
     assert run.returncode == 0, out
     assert '250 iterations simulated (~iterations), 0.250 s of simulated time' in out, out
-    assert ros.run(['rosparam', 'get', '/gazebo/lockstep']).stdout.strip() == 'true'  # every camera frame rendered
+    assert ros.get_param('/gazebo/lockstep') is True  # every camera frame rendered
 
 
 def test_gzserver_refuses_log_playback_and_answers_help_and_version(ros):

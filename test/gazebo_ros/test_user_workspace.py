@@ -1,8 +1,9 @@
 """A Gazebo user's own robot package on the plant, as README's "Your robot on the plant" walks it: the
 plant's install space (`make install`), sourced as /opt/ros is; the user's own workspace built on it with
-catkin_make and with catkin_tools' `catkin build`; the robot's own gazebo launch file run unchanged
+catkin_make (once for the module: the robot's package and a package of Gazebo plugins of the user's
+own) and with catkin_tools' `catkin build`; the robot's own gazebo launch file run unchanged
 (test/fixtures/rover_description: gazebo_ros's empty_world.launch, xacro, spawn_model, gazebo_plugins'
-diff drive). Each step runs in a clean environment that sources only what a user would, so nothing
+diff drive); the user's plugins loaded by the plant (test/fixtures/gazebo_plugin_pkg). Each step runs in a clean environment that sources only what a user would, so nothing
 of the source tree or its devel space can stand in for the install. And a clone of this repository
 in a workspace's src/ is refused with what to do."""
 import json
@@ -49,18 +50,27 @@ def install_space():
     return prefix
 
 
-def user_workspace(tmp_path):
-    workspace = tmp_path / 'rover_ws'
+def user_workspace(root):
+    workspace = root / 'rover_ws'
     shutil.copytree(ROVER, workspace / 'src' / 'rover_description')
     return workspace
 
 
-def test_a_robot_package_built_with_catkin_make_on_the_install_space_runs_its_gazebo_launch_file(
-        install_space, tmp_path):
-    workspace = user_workspace(tmp_path)
+@pytest.fixture(scope='module')
+def catkin_make_workspace(install_space, tmp_path_factory):
+    """One user workspace with the robot's package and a package of Gazebo plugins of its own
+    (test/fixtures/gazebo_plugin_pkg), built once with catkin_make on the install space, as a user's
+    workspace holds both: (workspace, its devel space's environment, catkin_make's output)."""
+    workspace = user_workspace(tmp_path_factory.mktemp('user'))
+    shutil.copytree(os.path.join(FIXTURES, 'gazebo_plugin_pkg'), workspace / 'src' / 'gazebo_plugin_pkg')
     status, output = run('source %s/setup.bash && catkin_make' % install_space, cwd=workspace)
     assert status == 0, output
-    env = sourced(workspace / 'devel' / 'setup.bash')
+    return workspace, sourced(workspace / 'devel' / 'setup.bash'), output
+
+
+def test_a_robot_package_built_with_catkin_make_on_the_install_space_runs_its_gazebo_launch_file(
+        install_space, catkin_make_workspace, tmp_path):
+    workspace, env, _ = catkin_make_workspace
     # The plant's packages come from the install space, the rover from the user's workspace.
     for package, where in (('gazebo_ros', install_space), ('tianracer_description', install_space),
                            ('xacro', install_space), ('rover_description', str(workspace / 'src'))):
@@ -70,8 +80,8 @@ def test_a_robot_package_built_with_catkin_make_on_the_install_space_runs_its_ga
     ros = RosSystem(str(tmp_path), base_env=env)
     try:
         launch = ros.start(['roslaunch', 'rover_description', 'gazebo.launch', 'gui:=false'], 'roslaunch')
-        ros.wait_until(lambda: launch.popen.poll() is not None or 'rover' in ros.run(
-            ['rosservice', 'call', '/gazebo/get_world_properties'], timeout=10).stdout, 60, 'the rover spawned')
+        ros.wait_until(lambda: launch.popen.poll() is not None or 'rover' in ros.service(
+            '/gazebo/get_world_properties', wait=True, timeout=60)['model_names'], 60, 'the rover spawned')
         assert launch.popen.poll() is None, launch.log()
         start = ros.probe('gazebo_ros/probes/model_poses.py', 'rover')['rover']
         drive = ros.start(['rostopic', 'pub', '-r', '10', '/cmd_vel', 'geometry_msgs/Twist',
@@ -103,17 +113,13 @@ def test_a_robot_package_builds_with_catkin_tools_on_the_install_space(install_s
 
 @pytest.mark.slow
 def test_a_package_with_its_own_gazebo_plugin_builds_on_the_install_space_with_gazebo_dev_and_pkg_config(
-        install_space, tmp_path):
+        install_space, catkin_make_workspace, tmp_path):
     """test/fixtures/gazebo_plugin_pkg: catkin's gazebo_dev and find_package(gazebo) (Gazebo 11's C++
     API, GAZEBO_LIBRARIES), a model plugin library and a node that makes the plugin from its file
     and loads it with its <plugin> element read by sdformat; and a program built by `pkg-config
     gazebo` alone."""
-    workspace = tmp_path / 'plugin_ws'
-    shutil.copytree(os.path.join(FIXTURES, 'gazebo_plugin_pkg'), workspace / 'src' / 'gazebo_plugin_pkg')
-    status, output = run('source %s/setup.bash && catkin_make' % install_space, cwd=workspace)
-    assert status == 0, output
+    workspace, env, output = catkin_make_workspace
     assert '-- Gazebo version: 11.15' in output, output
-    env = sourced(workspace / 'devel' / 'setup.bash')
     check = subprocess.run([str(workspace / 'devel' / 'lib' / 'gazebo_plugin_pkg' / 'plugin_check')],
                            env=dict(env, GAZEBO_PLUGIN_PATH=str(workspace / 'devel' / 'lib')),
                            capture_output=True, text=True, timeout=30)

@@ -35,7 +35,7 @@ def launch(ros, tmp_path, launch_file, *args):
     ros.env['GAZEBO_MODEL_PATH'] = str(models)
     plant = ros.start(['roslaunch', 'gazebo_ros', launch_file, 'gui:=false', *args], 'launch')
     ros.wait_until(lambda: plant.popen.poll() is not None or
-                   '/gazebo/get_model_state' in ros.run(['rosservice', 'list'], timeout=10).stdout, 60,
+                   '/gazebo/get_model_state' in ros.services(), 60,
                    'the node\'s services')
     assert plant.popen.poll() is None, plant.log()
     return plant

@@ -300,6 +300,20 @@ class RosSystem:
         code, message, _ = xmlrpc.client.ServerProxy(self.env['ROS_MASTER_URI']).setParam('/ros_harness', name, value)
         assert code == 1, 'setting the parameter %s: %s' % (name, message)
 
+    def get_param(self, name):
+        """`rosparam get NAME`'s value, asked of the master here (no `rosparam` process)."""
+        code, message, value = xmlrpc.client.ServerProxy(self.env['ROS_MASTER_URI']).getParam('/ros_harness', name)
+        assert code == 1, 'getting the parameter %s: %s' % (name, message)
+        return value
+
+    def services(self):
+        """`rosservice list`: the services the master knows, asked of it here (its getSystemState, as
+        rosservice asks it; no process)."""
+        code, message, (_, _, services) = xmlrpc.client.ServerProxy(self.env['ROS_MASTER_URI']).getSystemState(
+            '/ros_harness')
+        assert code == 1, 'the master\'s system state: %s' % message
+        return [name for name, _ in services]
+
     def load_params(self, path):
         """`rosparam load PATH`: the file read by rosparam's own reader (its documents, namespaces and
         !degrees / !radians tags), its values set as `set_param` sets them."""
@@ -322,17 +336,18 @@ class RosSystem:
         assert result.returncode == 0, result.stderr
         return json.loads(result.stdout.strip().splitlines()[-1])
 
-    def service(self, name, request_yaml='{}', timeout=15):
-        """`rosservice call NAME REQUEST_YAML`: the response as YAML reads what rosservice prints. The
-        calls of a test go through one process of rosservice's own code (probes/service_caller.py);
-        one that takes longer than `timeout` s stops it (the next call starts another)."""
+    def service(self, name, request_yaml='{}', timeout=15, wait=False):
+        """`rosservice call [--wait] NAME REQUEST_YAML`: the response as YAML reads what rosservice
+        prints. The calls of a test go through one process of rosservice's own code
+        (probes/service_caller.py); one that takes longer than `timeout` s (the wait included) stops
+        it (the next call starts another)."""
         if self._service_caller is None or self._service_caller.popen.poll() is not None:
             self._service_caller = Process([PYTHON, os.path.join(HELPERS, 'probes', 'service_caller.py')], self.env,
                                            os.path.join(self.workdir, 'service_caller.log'),
                                            stdin=subprocess.PIPE, stdout=subprocess.PIPE)
             self.processes.append(self._service_caller)
         caller = self._service_caller.popen
-        caller.stdin.write(json.dumps({'service': name, 'request': request_yaml}) + '\n')
+        caller.stdin.write(json.dumps({'service': name, 'request': request_yaml, 'wait': wait}) + '\n')
         caller.stdin.flush()
         if not select.select([caller.stdout], [], [], timeout)[0]:
             self._service_caller.stop(1.0)

@@ -5,6 +5,7 @@ import subprocess
 import time
 
 import pytest
+import yaml
 
 from ros_harness import free_port
 
@@ -47,7 +48,7 @@ def test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c(ros):
     ('<robotNamespace>/tian racer</robotNamespace>', "robotNamespace: '/tian racer'"),
     ('<robotNamespace>/tianracer</robotNamespace><eStopTopic>e stop</eStopTopic>', "eStopTopic: 'e stop'"),
 ])
-def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, urdf_xml, bad, what, tmp_path):
+def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, urdf_xml, bad, what):
     import re
     tag = re.match(r'<(\w+)>', bad).group(1)
     original = '<topicName>scan</topicName>' if tag == 'topicName' else \
@@ -55,13 +56,14 @@ def test_a_robot_with_a_bad_ros_name_is_refused_and_the_node_keeps_running(ros, 
     assert original in urdf_xml
     bad_urdf = urdf_xml.replace(original, bad, 1)
     plant = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_real_time_factor:=0'], 'plant')
-    ros.run(['rosservice', 'call', '--wait', '/gazebo/pause_physics'], timeout=30)
-    (tmp_path / 'bad.urdf').write_text(bad_urdf)
-    (tmp_path / 'good.urdf').write_text(urdf_xml.replace(original, original, 1))
-    spawn = ros.probe('node/probes/spawn_a_bad_and_a_good_robot.py', tmp_path / 'bad.urdf', tmp_path / 'good.urdf',
-                      timeout=60)
-    assert spawn[0] is False and what in spawn[1], spawn
-    assert spawn[2] is True, plant.log()
+    ros.service('/gazebo/pause_physics', wait=True, timeout=30)
+
+    def spawn(name, urdf):
+        return ros.service('/gazebo/spawn_urdf_model', yaml.safe_dump(
+            {'model_name': name, 'model_xml': urdf, 'robot_namespace': ''}), timeout=60)
+    bad = spawn('bad', bad_urdf)
+    assert bad['success'] is False and what in bad['status_message'], bad
+    assert spawn('good', urdf_xml)['success'] is True, plant.log()
     ros.service('/gazebo/unpause_physics')
     time.sleep(1.0)
     assert plant.popen.poll() is None, plant.log()

@@ -148,7 +148,7 @@ print(json.dumps(all(p.get_num_connections() > 0 for p in publishers)))
 
 
 def test_pause_unpause_and_reset_like_gazebo(ros, plant):
-    assert ros.run(['rosparam', 'get', '/use_sim_time']).stdout.strip() == 'true'
+    assert ros.get_param('/use_sim_time') is True
     clock = ros.probe('node/probes/pause_unpause_and_reset_like_gazebo.py')
     assert clock['during_pause'] == 0, 'no /clock while paused'
     assert clock['paused_at'] < clock['resumed'] < clock['paused_at'] + 0.05, 'time goes on from where it stopped'

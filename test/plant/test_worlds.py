@@ -340,12 +340,10 @@ def test_node_on_a_world_file_found_nowhere_says_so_and_runs_the_empty_world(ros
     # gazebo_ros ships: Gazebo 11's server says it could not open the file and runs worlds/empty.world.
     missing = str(tmp_path / 'worlds' / 'empty_world.world')
     node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + missing], 'plant')
-    ros.wait_until(lambda: '/gazebo/get_world_properties' in ros.run(['rosservice', 'list'], timeout=5).stdout,
-                   30, 'the plant node')
+    assert ros.service('/gazebo/get_world_properties', wait=True, timeout=30)['success'] is True
     log = node.log()
     assert 'Could not open file[%s]' % missing in log and 'Falling back on worlds/empty.world' in log, log
-    properties = ros.run(['rosservice', 'call', '/gazebo/get_world_properties'], timeout=10).stdout
-    assert 'success: True' in properties and 'sim_time: 0.0\n' not in properties, properties  # it runs
+    ros.wait_until(lambda: ros.service('/gazebo/get_world_properties')['sim_time'] > 0, 10, 'the world to run')
 
 
 @pytest.mark.ros
@@ -361,8 +359,7 @@ def test_node_resolves_a_launched_worlds_uris_against_its_file(ros, tmp_path):
 </link></model>"""))
     ros.env['GAZEBO_MODEL_PATH'] = str(models)
     node = ros.start(['rosrun', 'tianracer_description', 'bullet_plant', '_world_name:=' + str(world)], 'plant')
-    ros.wait_until(lambda: ros.run(['rosservice', 'list'], timeout=5).stdout.count('/gazebo/pause_physics'),
-                   30, 'the plant node')
+    ros.wait_until(lambda: '/gazebo/pause_physics' in ros.services(), 30, 'the plant node')
     not_found = [line for line in node.log().splitlines() if 'not found' in line]
     assert len(not_found) == 1 and 'rocks::link::lost' in not_found[0], node.log()
 

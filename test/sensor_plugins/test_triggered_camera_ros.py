@@ -22,7 +22,7 @@ def test_a_triggered_camera_publishes_one_frame_per_trigger(ros, tmp_path):
     (tmp_path / 'eye.world').write_text(sdf_world(EYE))
     plant = start_plant(ros, str(tmp_path / 'eye.world'))
     # the probe on simulated time: after the launch file has set /use_sim_time
-    ros.wait_until(lambda: '/gazebo/get_model_state' in ros.run(['rosservice', 'list']).stdout, 60, 'the node')
+    ros.wait_until(lambda: '/gazebo/get_model_state' in ros.services(), 60, 'the node')
     counts = ros.probe('sensor_plugins/probes/triggered_camera_frames.py', timeout=90)
     assert counts['trigger_subscribers'] == ['/gazebo'], counts
     assert counts['untriggered'] == 0, 'a 1 Hz camera publishes nothing in 1.5 s until triggered'
