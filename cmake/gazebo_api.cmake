@@ -29,6 +29,7 @@ add_library(gazebo_physics SHARED
   src/gazebo/physics/Joint.cc
   src/gazebo/physics/Link.cc
   src/gazebo/physics/Model.cc
+  src/gazebo/physics/PhysicsEngine.cc
   src/gazebo/physics/World.cc)
 target_compile_options(gazebo_physics PRIVATE -Wall -Wextra)
 target_link_libraries(gazebo_physics PUBLIC gazebo_common)

@@ -23,6 +23,7 @@
 
 namespace bullet_plant
 {
+class GazeboHost;
 class Log;
 class Param;
 
@@ -114,6 +115,8 @@ public:
   virtual std::string pluginNamespace(const ModelPluginDescription& plugin) const = 0;
   // What the plugin's frame ids resolve against, by its file's naming rule (plugin_names.h).
   virtual std::string tfPrefix(const ModelPluginDescription& plugin) const = 0;
+  // The world's host of Gazebo plugins (gazebo_host.h), made at the first call.
+  virtual GazeboHost& gazeboHost() = 0;
   virtual Log& log() = 0;
 
 protected:

@@ -139,6 +139,10 @@ public:
   // time to 0, robots to their spawn poses and joint positions, static models where the file put them
   void resetSimulation();
   void resetWorld();  // robots to their spawn poses, static models where the file put them; time goes on
+  // gzserver -s FILE: a Gazebo system plugin of the user's own, found on the plugin paths, loaded
+  // with `arguments` (gzserver's command line) as Gazebo's server loads it (gazebo_host.h); false
+  // where it could not be (the log says why), and the world runs without it.
+  bool loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments);
 
   // The lights by name, gazebo_ros's get_light_properties, set_light_properties and delete_light:
   // the world's lights in file order (model://sun's where the world includes it). A change

@@ -79,6 +79,14 @@ constexpr double kMinStepSize = 1e-9, kMaxStepSize = 0.1;  // s
 // The most solver passes a step the plant takes from <iters> (ODE's quick step default: 50).
 constexpr int kMaxSolverIterations = 1000;
 
+// A <plugin> of the world: a Gazebo WorldPlugin library of the user's own, its file found on the
+// plugin paths (findGazeboPluginLibrary), loaded as Gazebo loads it (gazebo_host.h).
+struct WorldPluginDescription
+{
+  std::string name, filename, library;
+  std::string xml;  // the <plugin> element as written, for its Load
+};
+
 struct WorldDescription
 {
   std::string name = "default";
@@ -116,6 +124,8 @@ struct WorldDescription
   // The models that move (SDF's default; not <static>), in file order: the world spawns each as
   // spawn_model would, under its name and at its pose.
   std::vector<ModelDescription> models;
+  // The world's plugins whose files were found, in file order; one not found is a warning.
+  std::vector<WorldPluginDescription> plugins;
   std::vector<std::string> warnings;  // each unsupported element once: what, where, left out
   std::vector<std::string> errors;    // models refused (what sdf_model.h refuses), the world goes on without them
   std::string file;      // the world file; "" when parsed from text

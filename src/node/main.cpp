@@ -27,6 +27,10 @@ int main(int argc, char** argv)
           "  ~paused               start paused (default false)\n"
           "  ~iterations           simulate this many steps, then stop (default 0: until shut down)\n"
           "  ~enable_ros_network   false: none of gazebo_ros's services and topics, as Gazebo (default true)\n"
+          "  ~system_plugins       Gazebo system plugin files of the user's own to load (gzserver -s FILE): a list,\n"
+          "                        or one file a line\n"
+          "  ~server_arguments     the command line their Load gets, as ~system_plugins (default gzserver)\n"
+          "  ~verbose              Gazebo's console writes what plugins say (gzmsg), as gzserver --verbose\n"
           "Services and topics: gazebo_ros's (~spawn_urdf_model, ~get_model_state, ~model_states, ...; docs/gazebo_compatibility.md)\n");
       return 0;
     }

@@ -9,6 +9,7 @@
 #include <rosgraph_msgs/Clock.h>
 #include <tinyxml2.h>
 
+#include "bullet_plant/gazebo_host.h"
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/params.h"
 #include "bullet_plant/plugin_names.h"
@@ -152,6 +153,23 @@ double readRealTimeFactor(const ros::NodeHandle& private_nh, double world_value)
                              std::to_string(kSlowestRealTimeFactor) + ", or 0 (or less) to run as fast as possible");
   return factor;
 }
+// A list parameter as a launch file's <rosparam> gives it, or as gzserver passes it on the command
+// line (one item a line: roscpp reads `_name:=value` as one string).
+std::vector<std::string> readListParam(ros::NodeHandle& private_nh, const std::string& name,
+                                       const std::vector<std::string>& fallback)
+{
+  std::vector<std::string> list;
+  if (private_nh.getParam(name, list))
+    return list;
+  std::string text;
+  if (!private_nh.getParam(name, text))
+    return fallback;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty())
+      list.push_back(line);
+  return list;
+}
 }  // namespace
 
 RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPluginLoader load_model_plugins)
@@ -159,6 +177,9 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
 {
   std::string world_file;
   private_nh_.param<std::string>("world_name", world_file, "");
+  bool verbose = false;
+  private_nh_.param("verbose", verbose, false);
+  setGazeboVerbose(verbose);
   WorldDescription description = emptyWorldDescription();
   try
   {
@@ -191,6 +212,11 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   private_nh_.param("lockstep", lockstep, false);
   world_->setLockstep(lockstep);
   loadWorldModels();
+  // gzserver -s FILE: Gazebo system plugins of the user's own (gazebo_ros's own are this node),
+  // Load given gzserver's command line as Gazebo's server gives it.
+  const std::vector<std::string> server_arguments = readListParam(private_nh_, "server_arguments", {"gzserver"});
+  for (const std::string& plugin : readListParam(private_nh_, "system_plugins", {}))
+    world_->loadSystemPlugin(plugin, server_arguments);
   world_->prepareCameras();
   real_time_factor_ = readRealTimeFactor(private_nh_, description.pace());
   // Every node on simulated time subscribes /clock; at Gazebo's 1 kHz that costs more than the physics.

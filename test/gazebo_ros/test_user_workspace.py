@@ -12,6 +12,7 @@ import shutil
 import subprocess
 
 import pytest
+import yaml
 
 from ros_harness import RosSystem
 from suite_paths import FIXTURES, REPOSITORY, TEST_DIR
@@ -167,3 +168,66 @@ def test_this_repository_cloned_into_a_workspace_is_refused_with_what_to_do(tmp_
     assert "catkin does not look for packages inside a package" in message, output
     assert 'tianracer_description/compat/* src/' in message, output  # link the packages beside it
     assert 'make install' in message, output  # or extend the install space
+
+
+# The world of the user's world plugin (attach_world): a carrier box it drives along x, a cargo box
+# behind it that it holds to the carrier from 0.5 to 1.5 s; beside it, the same plugin told to
+# throw in Load and a plugin whose file is nowhere, which Gazebo reports and runs the world without.
+ATTACH_WORLD = """<?xml version="1.0"?>
+<sdf version="1.7">
+  <world name="default">
+    <include><uri>model://ground_plane</uri></include>
+    %s
+    %s
+    <plugin name="attach" filename="libattach_world.so">
+      <carrier>carrier</carrier><cargo>cargo</cargo><speed>0.3</speed><attach_at>0.5</attach_at><detach_at>1.5</detach_at>
+    </plugin>
+    <plugin name="thrower" filename="libattach_world.so"><throw_in_load>true</throw_in_load></plugin>
+    <plugin name="missing" filename="libno_such_plugin.so"/>
+  </world>
+</sdf>
+"""
+BOX = """<model name="{name}"><pose>{x} 0 {half} 0 0 0</pose><link name="body">
+      <inertial><mass>{mass}</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+      <collision name="c"><geometry><box><size>{size} {size} {size}</size></box></geometry></collision>
+    </link></model>"""
+
+
+@pytest.mark.slow
+def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catkin_make_workspace, tmp_path):
+    """gzserver -s libhello_system.so on a world naming the user's world plugin: the world plugin
+    (physics::World's ModelByName, Physics()->CreateJoint, Joint::Load / Init / Detach) carries the
+    cargo for the second it holds it, read through gazebo_ros's get_model_state; the system plugin
+    has the server's command line and the world's updates and says so on ROS."""
+    workspace, env, _ = catkin_make_workspace
+    world = tmp_path / 'attach.world'
+    world.write_text(ATTACH_WORLD % (BOX.format(name='carrier', x=0.0, half=0.1, mass=2.0, size=0.2),
+                                     BOX.format(name='cargo', x=-0.4, half=0.05, mass=0.5, size=0.1)))
+    ros = RosSystem(str(tmp_path), base_env=env)
+    try:
+        ros.set_param('/use_sim_time', True)
+        server = ros.start(['rosrun', 'gazebo_ros', 'gzserver', '-u', '--verbose', '-s', 'libhello_system.so', str(world)],
+                           'gzserver')
+
+        def x_of(model):
+            return ros.service('/gazebo/get_model_state', '{model_name: %s}' % model)['pose']['position']['x']
+        ros.service('/gazebo/get_world_properties', wait=True, timeout=60)
+        start = {model: x_of(model) for model in ('carrier', 'cargo')}
+        ros.service('/gazebo/unpause_physics')
+        ros.wait_until(lambda: ros.service('/gazebo/get_world_properties')['sim_time'] >= 2.0, 60, '2 s simulated')
+        ros.service('/gazebo/pause_physics')
+        end = {model: x_of(model) for model in ('carrier', 'cargo')}
+        hello = yaml.safe_load(ros.run(['rostopic', 'echo', '-n', '1', '/hello_system'],
+                                       timeout=30).stdout.split('\n---')[0])['data']
+        log = server.log()
+    finally:
+        ros.close()
+    assert 'attach_world in world [default] of 2 models, step 0.001 s' in log, log
+    assert end['carrier'] - start['carrier'] > 0.55, (start, end)  # driven at 0.3 m/s for 2 s and more
+    # Held for 1 s at 0.3 m/s, then let go: it slides 5 mm more on the ground (mu 1)
+    assert 0.27 < end['cargo'] - start['cargo'] < 0.36, (start, end, log)
+    errors = [line for line in log.splitlines() if 'ERROR' in line or '[Err]' in line]
+    assert any("world plugin 'thrower' (libattach_world.so): its Load threw: attach_world was told to throw" in line
+               for line in errors), log
+    assert "world plugin 'missing' (libno_such_plugin.so)" in log and 'no such file on GAZEBO_PLUGIN_PATH' in log, log
+    assert 'world default; updates' in hello and 'arguments gzserver -u --verbose -s libhello_system.so %s' % world in hello, hello

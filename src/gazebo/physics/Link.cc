@@ -8,19 +8,17 @@ namespace gazebo
 {
 namespace physics
 {
-Link::Link(const std::string& name, Model* model, std::shared_ptr<ModelBridge> bridge)
-  : name_(name), model_(model), bridge_(std::move(bridge))
-{
-}
+Link::Link(const std::string& name, std::shared_ptr<ModelBridge> bridge) : name_(name), bridge_(std::move(bridge)) {}
 
 std::string Link::GetName() const { return name_; }
 
 std::string Link::GetScopedName(bool prependWorldName) const
 {
-  return model_->GetScopedName(prependWorldName) + "::" + name_;
+  const ModelPtr model = model_.lock();
+  return (model ? model->GetScopedName(prependWorldName) : bridge_->name()) + "::" + name_;
 }
 
-ModelPtr Link::GetModel() const { return model_->shared_from_this(); }
+ModelPtr Link::GetModel() const { return model_.lock(); }
 
 ignition::math::Pose3d Link::WorldPose() const { return bridge_->linkPose(name_); }
 

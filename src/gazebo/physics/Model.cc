@@ -14,10 +14,16 @@ namespace physics
 Model::Model(std::shared_ptr<ModelBridge> bridge, WorldPtr world) : bridge_(std::move(bridge)), world_(std::move(world))
 {
   const std::string canonical = bridge_->canonicalLink();
-  links_.push_back(LinkPtr(new Link(canonical, this, bridge_)));  // the canonical link first, as Gazebo's
+  links_.push_back(LinkPtr(new Link(canonical, bridge_)));  // the canonical link first, as Gazebo's
   for (const std::string& link : bridge_->linkNames())
     if (link != canonical)
-      links_.push_back(LinkPtr(new Link(link, this, bridge_)));
+      links_.push_back(LinkPtr(new Link(link, bridge_)));
+}
+
+void Model::adoptLinks()
+{
+  for (const LinkPtr& link : links_)
+    link->model_ = shared_from_this();
 }
 
 std::string Model::GetName() const { return bridge_->name(); }

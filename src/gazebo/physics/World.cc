@@ -1,20 +1,69 @@
 // physics::World (gazebo/physics/World.hh), over the simulator's WorldBridge.
 #include "gazebo/physics/World.hh"
 
+#include "gazebo/physics/Model.hh"
+#include "gazebo/physics/PhysicsEngine.hh"
 #include "gazebo/physics/PlantBridge.hh"
 
 namespace gazebo
 {
 namespace physics
 {
-World::World(std::shared_ptr<WorldBridge> bridge) : bridge_(std::move(bridge)) {}
+World::World(std::shared_ptr<WorldBridge> bridge)
+  : bridge_(std::move(bridge)), physics_(new PhysicsEngine(bridge_)), started_(common::Time::GetWallTime())
+{
+}
+
+World::~World() = default;
 
 std::string World::Name() const { return bridge_->name(); }
 
 common::Time World::SimTime() const { return bridge_->simTime(); }
 
+common::Time World::RealTime() const { return common::Time::GetWallTime() - started_; }
+
 uint32_t World::Iterations() const { return static_cast<uint32_t>(bridge_->iterations()); }
 
 ignition::math::Vector3d World::Gravity() const { return bridge_->gravity(); }
+
+PhysicsEnginePtr World::Physics() const { return physics_; }
+
+ModelPtr World::ModelByName(const std::string& name) const
+{
+  const std::string prefix = Name() + "::";
+  const std::string bare = name.compare(0, prefix.size(), prefix) == 0 ? name.substr(prefix.size()) : name;
+  std::shared_ptr<ModelBridge> model = bridge_->model(bare);
+  if (!model)
+  {
+    models_.erase(bare);  // gone (delete_model): a model that comes again under the name is a new one
+    return ModelPtr();
+  }
+  ModelPtr& known = models_[bare];
+  if (!known || known->bridge_ != model)
+  {
+    known.reset(new Model(model, boost::const_pointer_cast<World>(shared_from_this())));
+    known->adoptLinks();
+  }
+  return known;
+}
+
+Model_V World::Models() const
+{
+  Model_V models;
+  for (const std::string& name : bridge_->modelNames())
+    if (ModelPtr model = ModelByName(name))
+      models.push_back(model);
+  return models;
+}
+
+unsigned int World::ModelCount() const { return static_cast<unsigned int>(bridge_->modelNames().size()); }
+
+void World::SetPaused(bool paused) { bridge_->setPaused(paused); }
+
+bool World::IsPaused() const { return bridge_->paused(); }
+
+void World::Reset() { bridge_->reset(); }
+
+void World::Fini() { models_.clear(); }
 }  // namespace physics
 }  // namespace gazebo

@@ -256,30 +256,22 @@ void readModelPlugin(const tinyxml2::XMLElement* p, RobotDescription& out)
   // plugin of that name: whoever built upstream's runs upstream's (gazebo_ros_control stays the
   // plant's, its hardware layer being the plant's own).
   const std::string library = filename == "libgazebo_ros_control.so" ? "" : findGazeboPluginLibrary(filename);
-  if (!library.empty())
-  {
-    ModelPluginDescription d;
-    d.name = p->Attribute("name") ? p->Attribute("name") : "";
-    d.filename = filename;
-    d.library = library;
-    for (auto* e = p->FirstChildElement(); e; e = e->NextSiblingElement())
-      d.params[e->Name()] = e->GetText() ? xml::trimmed(e->GetText()) : "";
-    tinyxml2::XMLPrinter printer(nullptr, true);
-    p->Accept(&printer);
-    d.xml = printer.CStr();
-    out.model_plugins.push_back(std::move(d));
-  }
-  else if (filename == "libgazebo_ros_control.so")
+  if (library.empty() && filename == "libgazebo_ros_control.so")
     readControlPlugin(p, out);
-  else if (file && file->role == PluginRole::LinkSensor)
+  else if (library.empty() && file && file->role == PluginRole::LinkSensor)
     readLinkSensorPlugin(p, out);
-  else if (file && file->role == PluginRole::Model)
+  else if (!library.empty() || (file && file->role == PluginRole::Model))
   {
     ModelPluginDescription d;
     d.name = p->Attribute("name") ? p->Attribute("name") : "";
     d.filename = filename;
     for (auto* e = p->FirstChildElement(); e; e = e->NextSiblingElement())
       d.params[e->Name()] = e->GetText() ? xml::trimmed(e->GetText()) : "";
+    if (!library.empty())
+    {
+      d.library = library;
+      d.xml = xml::printed(p);
+    }
     out.model_plugins.push_back(std::move(d));
   }
   else

@@ -385,6 +385,26 @@ LightDescription readLight(const tinyxml2::XMLElement* light, const urdf::Pose& 
   return out;
 }
 
+// A world's <plugin>: a Gazebo WorldPlugin library, loaded where its file is found on the plugin
+// paths, as Gazebo's World::LoadPlugin looks for it. Gazebo reports a file it cannot open and runs
+// the world without it; so does the plant (gazebo_ros's own world plugins are the node itself).
+void addWorldPlugin(const tinyxml2::XMLElement* e, const Source& source, WorldDescription& world)
+{
+  WorldPluginDescription plugin;
+  plugin.name = e->Attribute("name") ? e->Attribute("name") : "";
+  plugin.filename = e->Attribute("filename") ? e->Attribute("filename") : "";
+  plugin.library = findGazeboPluginLibrary(plugin.filename);
+  if (plugin.library.empty())
+  {
+    world.warnings.push_back("world plugin '" + plugin.name + "' (" +
+                             (plugin.filename.empty() ? "no filename" : plugin.filename) + ") in " + source.describe() +
+                             " is not run: no such file on GAZEBO_PLUGIN_PATH or LD_LIBRARY_PATH; skipped");
+    return;
+  }
+  plugin.xml = xml::printed(e);
+  world.plugins.push_back(std::move(plugin));
+}
+
 // A saved world's <state> (gzclient's "Save World" writes one): each model it names that the world
 // simulates starts at the state's <pose>, as Gazebo's World::SetState puts it. What the plant does
 // not take from it is said once: link poses (joint positions), scenery moved, insertions, deletions.
@@ -589,10 +609,8 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
       readInclude(e, source, "", urdf::Pose(), 0, world);
     else if (tag == "light")
       addLight(e);
-    else if (tag == "plugin")  // a WorldPlugin (libRubblePlugin.so ...): Gazebo's own C++, not the plant's
-      world.warnings.push_back("world plugin '" + std::string(e->Attribute("name") ? e->Attribute("name") : "") + "' (" +
-                               (e->Attribute("filename") ? e->Attribute("filename") : "no filename") + ") in " +
-                               source.describe() + " is not run: the plant runs no world plugins; skipped");
+    else if (tag == "plugin")
+      addWorldPlugin(e, source, world);
     else if (isUnsupportedWorldElement(tag))
       world.warnings.push_back("<" + tag + "> in " + source.describe() + " is not supported; skipped");
   }

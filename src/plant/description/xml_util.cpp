@@ -9,6 +9,13 @@ namespace bullet_plant
 {
 namespace xml
 {
+std::string printed(const tinyxml2::XMLElement* e)
+{
+  tinyxml2::XMLPrinter printer(nullptr, true);
+  e->Accept(&printer);
+  return printer.CStr();
+}
+
 std::string trimmed(const std::string& s)
 {
   const char* space = " \t\r\n";

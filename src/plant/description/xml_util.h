@@ -20,5 +20,7 @@ double childDouble(const tinyxml2::XMLElement* e, const std::string& path, doubl
 std::vector<double> numbers(const std::string& text, size_t n, const std::string& what);
 // SDF "x y z roll pitch yaw" (empty: identity).
 urdf::Pose parseSdfPose(const std::string& text);
+// The element as XML text (its children and attributes), as a plugin's Load reads it again.
+std::string printed(const tinyxml2::XMLElement* e);
 }  // namespace xml
 }  // namespace bullet_plant

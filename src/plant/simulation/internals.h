@@ -11,7 +11,9 @@
 #include <btBulletDynamicsCommon.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
 
+#include "bullet_plant/gazebo_host.h"
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/robot.h"
 #include "bullet_plant/world.h"
@@ -27,6 +29,7 @@
 #include "simulation/robot_model_plugin_context.h"
 #include "simulation/robot_multibody.h"
 #include "simulation/robot_sensor_context.h"
+#include "simulation/world_plugin_context.h"
 
 namespace bullet_plant
 {
@@ -166,6 +169,29 @@ struct World::Internals
   // Every camera's frame in the making collected (rendered, made the latest).
   void collectFrames();
   Lighting lighting() const;
+
+  // Joints made at run time by Gazebo plugins (WorldPluginContext::attach): each holds a link of one
+  // robot to a link of another (or of the same) where they were, by its id.
+  struct Attachment
+  {
+    std::unique_ptr<btMultiBodyFixedConstraint> constraint;
+    const Robot::Internals* parent = nullptr;
+    const Robot::Internals* child = nullptr;
+  };
+  std::map<int, Attachment> attachments;
+  int next_attachment = 0;
+  int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
+             const std::string& child_link);
+  void detach(int attachment);
+  // The attachments on a robot that leaves the world.
+  void releaseAttachments(const Robot::Internals& robot);
+
+  // Gazebo's plugins of the user's own (gazebo_host.h), made at the first (gazeboHost): the world's
+  // side of them and their host. Last, so that they go before the robots whose models they hold.
+  World* self = nullptr;
+  std::unique_ptr<PlantWorldPluginContext> gazebo_context;
+  std::unique_ptr<GazeboHost> gazebo_host;
+  GazeboHost& gazeboHost();
 };
 
 // What sensors see of a world's static models where its description has them now: each collision

@@ -147,4 +147,6 @@ std::string RobotModelPluginContext::tfPrefix(const ModelPluginDescription& plug
 
 Log& RobotModelPluginContext::log() { return robot_.world->log; }
 
+GazeboHost& RobotModelPluginContext::gazeboHost() { return robot_.world->gazeboHost(); }
+
 }  // namespace bullet_plant

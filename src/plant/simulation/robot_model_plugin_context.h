@@ -39,6 +39,7 @@ public:
   const Param& params() const override;
   std::string pluginNamespace(const ModelPluginDescription& plugin) const override;
   std::string tfPrefix(const ModelPluginDescription& plugin) const override;
+  GazeboHost& gazeboHost() override;
   Log& log() override;
 
 private:

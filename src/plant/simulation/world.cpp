@@ -18,6 +18,7 @@
 #include "physics/wheel_contact.h"
 #include "simulation/collision_shapes.h"
 #include "simulation/internals.h"
+#include "simulation/world_plugin_context.h"
 #include "simulation/robot_builder.h"
 
 namespace bullet_plant
@@ -240,10 +241,18 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
       w.log.error("world: model '" + model.name + "' is left out: " + e.what());
     }
   w.loading_file = false;
+  w.self = this;
+  // Gazebo loads a world's plugins once its models are in it.
+  for (const WorldPluginDescription& plugin : description.plugins)
+    w.gazeboHost().loadWorldPlugin(plugin);
 }
 
 World::~World()
 {
+  in_->gazebo_host.reset();  // the plugins go first: they hold the models
+  for (auto& attachment : in_->attachments)
+    in_->dynamics->removeMultiBodyConstraint(attachment.second.constraint.get());
+  in_->attachments.clear();
   for (auto& robot : in_->robots)
     removeRobot(*robot->in_);
   in_->robots.clear();
@@ -419,8 +428,11 @@ bool World::remove(const std::string& name)
   for (Robot* tree : model->in_->other_trees)
     trees.push_back(tree->in_.get());
   trees.push_back(model->in_.get());
+  if (in_->gazebo_host)
+    in_->gazebo_host->modelRemoved(name);  // before its model plugins go with it
   for (Robot::Internals* tree : trees)
   {
+    in_->releaseAttachments(*tree);
     if (in_->ray_scene)
       in_->ray_scene->removeOwner(tree);
     if (in_->gl_scene)
@@ -466,6 +478,8 @@ void World::step(int n)
   Internals& w = *in_;
   for (int i = 0; i < n; ++i)
   {
+    if (w.gazebo_host)
+      w.gazebo_host->beginStep();
     for (auto& r : w.robots)
       if (!r->in_->disabled)
       {
@@ -505,6 +519,8 @@ void World::step(int n)
     for (auto& r : w.robots)
       if (!r->in_->disabled && !r->in_->asleep())
         r->in_->updateSensors(w.time_ns);
+    if (w.gazebo_host)
+      w.gazebo_host->endStep();
   }
   if (!w.frames_ahead)
     w.collectFrames();
@@ -579,7 +595,11 @@ void World::resetSimulation()
 {
   in_->collectFrames();  // the frames of before, before time goes back
   in_->time_ns = 0;
-  resetWorld();
+  for (auto& r : in_->robots)
+    r->in_->resetToSpawn();
+  in_->resetStaticModels();
+  if (in_->gazebo_host)
+    in_->gazebo_host->reset(true);
 }
 
 void World::resetWorld()
@@ -587,6 +607,114 @@ void World::resetWorld()
   for (auto& r : in_->robots)
     r->in_->resetToSpawn();
   in_->resetStaticModels();
+  if (in_->gazebo_host)
+    in_->gazebo_host->reset(false);
+}
+
+bool World::loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments)
+{
+  return in_->gazeboHost().loadSystemPlugin(filename, arguments);
+}
+
+GazeboHost& World::Internals::gazeboHost()
+{
+  if (!gazebo_host)
+  {
+    gazebo_context.reset(new PlantWorldPluginContext(*self, *this));
+    gazebo_host = createGazeboHost(*gazebo_context);
+  }
+  return *gazebo_host;
+}
+
+namespace
+{
+// The robot (one tree of a model) whose body holds `link`, and that body; null for none.
+Robot::Internals* treeOfLink(Robot& model, const std::string& link, int& body)
+{
+  std::vector<Robot*> trees{&model};
+  trees.insert(trees.end(), internalsOf(model).other_trees.begin(), internalsOf(model).other_trees.end());
+  for (Robot* tree : trees)
+  {
+    Robot::Internals& r = internalsOf(*tree);
+    auto found = r.multibody.link_in_body.find(link);
+    if (found != r.multibody.link_in_body.end())
+    {
+      body = found->second.first;
+      return &r;
+    }
+  }
+  return nullptr;
+}
+}  // namespace
+
+int World::Internals::attach(const std::string& parent_model, const std::string& parent_link,
+                             const std::string& child_model, const std::string& child_link)
+{
+  const std::string what = "a joint made at run time from " + parent_model + "::" + parent_link + " to " + child_model +
+                           "::" + child_link;
+  Robot* parent = self->robot(parent_model);
+  Robot* child = self->robot(child_model);
+  if (!parent || !child)
+  {
+    log.error(what + ": there is no model '" + (parent ? child_model : parent_model) + "' that moves; nothing is attached");
+    return -1;
+  }
+  int parent_body = 0, child_body = 0;
+  Robot::Internals* a = treeOfLink(*parent, parent_link, parent_body);
+  Robot::Internals* b = treeOfLink(*child, child_link, child_body);
+  if (!a || !b)
+  {
+    log.error(what + ": model '" + (a ? child_model : parent_model) + "' has no link '" + (a ? child_link : parent_link) +
+              "'; nothing is attached");
+    return -1;
+  }
+  if (a == b && parent_body == child_body)
+  {
+    log.error(what + ": both links are one body; nothing is attached");
+    return -1;
+  }
+  // Held where they are now: the constraint's frame at the child body's centre of mass, in world
+  // axes, given in each body's own frame (Bullet's body frames are the centres of mass).
+  const btTransform ta = a->multibody.bodyWorldTransform(parent_body);
+  const btTransform tb = b->multibody.bodyWorldTransform(child_body);
+  const btVector3 pivot = tb.getOrigin();
+  Attachment attachment;
+  attachment.constraint.reset(new btMultiBodyFixedConstraint(
+      a->multibody.bullet.get(), parent_body - 1, b->multibody.bullet.get(), child_body - 1, ta.inverse() * pivot,
+      btVector3(0, 0, 0), ta.getBasis().transpose(), tb.getBasis().transpose()));
+  attachment.parent = a;
+  attachment.child = b;
+  dynamics->addMultiBodyConstraint(attachment.constraint.get());
+  wakeUp(*a->multibody.bullet);
+  wakeUp(*b->multibody.bullet);
+  const int id = next_attachment++;
+  attachments[id] = std::move(attachment);
+  return id;
+}
+
+void World::Internals::detach(int attachment)
+{
+  auto found = attachments.find(attachment);
+  if (found == attachments.end())
+    return;  // released already, with a model that left the world
+  dynamics->removeMultiBodyConstraint(found->second.constraint.get());
+  wakeUp(*const_cast<Robot::Internals*>(found->second.parent)->multibody.bullet);
+  wakeUp(*const_cast<Robot::Internals*>(found->second.child)->multibody.bullet);
+  attachments.erase(found);
+}
+
+void World::Internals::releaseAttachments(const Robot::Internals& robot)
+{
+  for (auto it = attachments.begin(); it != attachments.end();)
+  {
+    if (it->second.parent == &robot || it->second.child == &robot)
+    {
+      dynamics->removeMultiBodyConstraint(it->second.constraint.get());
+      it = attachments.erase(it);
+    }
+    else
+      ++it;
+  }
 }
 
 namespace

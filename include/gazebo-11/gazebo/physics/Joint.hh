@@ -1,9 +1,13 @@
-// physics::Joint as a model plugin drives a movable joint: its position and velocity, and an
-// effort, a velocity or a position set (axis 0; a joint of the plant has one axis).
+// physics::Joint: a model's movable joint as a plugin drives it (its position and velocity, and an
+// effort, a velocity or a position set; axis 0, a joint of the plant having one axis), and a joint
+// made at run time (PhysicsEngine::CreateJoint) that holds two links together until detached.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
+
+#include <ignition/math/Pose3.hh>
 
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/util/system.hh"
@@ -13,13 +17,18 @@ namespace gazebo
 namespace physics
 {
 class JointBridge;
+class WorldBridge;
 
 class GZ_PHYSICS_VISIBLE Joint
 {
 public:
+  // A model's joint.
   Joint(const std::string& name, std::unique_ptr<JointBridge> bridge);
+  // A joint made at run time, of `type`, belonging to `model`, in the world of `world`.
+  Joint(const std::string& type, ModelPtr model, std::shared_ptr<WorldBridge> world);
   ~Joint();
   std::string GetName() const;
+  void SetName(const std::string& name);
   // Axis 0; another axis is 0 with one error naming the joint.
   double Position(unsigned int index = 0) const;
   double GetVelocity(unsigned int index) const;
@@ -28,11 +37,36 @@ public:
   // An effort (N m or N) added for the coming step.
   void SetForce(unsigned int index, double effort);
   bool SetPosition(unsigned int index, double position, bool preserveWorldVelocity = false);
+  // The model's limits (-inf / inf where it has none); a joint made at run time keeps what it is set.
+  double LowerLimit(unsigned int index = 0) const;
+  double UpperLimit(unsigned int index = 0) const;
+  void SetLowerLimit(unsigned int index, double limit);
+  void SetUpperLimit(unsigned int index, double limit);
+
+  // A joint made at run time: Load names its links (and its anchor, which a held joint does not
+  // need), Init or Attach holds the child to the parent where they are now, Detach lets go.
+  void Load(LinkPtr parent, LinkPtr child, const ignition::math::Pose3d& pose);
+  void Init();
+  void Attach(LinkPtr parent, LinkPtr child);
+  void Detach();
+  void SetModel(ModelPtr model);
+  ModelPtr GetModel() const;
+  LinkPtr GetParent() const;
+  LinkPtr GetChild() const;
 
 private:
   bool axisZero(unsigned int index, const char* call) const;
-  std::string name_;
+  // A model's joint answers through its bridge; a joint made at run time has none.
+  bool modelJoint(const char* call) const;
+  std::string name_, type_;
   std::unique_ptr<JointBridge> bridge_;
+  std::shared_ptr<WorldBridge> world_;
+  ModelPtr model_;
+  LinkPtr parent_, child_;
+  int attachment_ = -1;
+  double lower_ = -std::numeric_limits<double>::infinity();
+  double upper_ = std::numeric_limits<double>::infinity();
+  bool warned_type_ = false;
 };
 }  // namespace physics
 }  // namespace gazebo

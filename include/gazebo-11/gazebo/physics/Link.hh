@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include <boost/weak_ptr.hpp>
 #include <ignition/math/Pose3.hh>
 #include <ignition/math/Vector3.hh>
 
@@ -20,9 +21,10 @@ class ModelBridge;
 class GZ_PHYSICS_VISIBLE Link
 {
 public:
-  Link(const std::string& name, Model* model, std::shared_ptr<ModelBridge> bridge);
+  Link(const std::string& name, std::shared_ptr<ModelBridge> bridge);
   std::string GetName() const;
   std::string GetScopedName(bool prependWorldName = false) const;
+  // Null once its model has left the world and no one holds it.
   ModelPtr GetModel() const;
   ignition::math::Pose3d WorldPose() const;
   ignition::math::Vector3d WorldLinearVel() const;
@@ -37,8 +39,9 @@ public:
   void AddRelativeTorque(const ignition::math::Vector3d& torque);
 
 private:
+  friend class Model;  // which names itself their model once it is held
   std::string name_;
-  Model* model_;
+  boost::weak_ptr<Model> model_;
   std::shared_ptr<ModelBridge> bridge_;
 };
 }  // namespace physics

@@ -45,6 +45,9 @@ public:
   const Joint_V& GetJoints() const;
 
 private:
+  friend class World;  // which keeps one Model for each of the simulator's models
+  // Its links' GetModel from now on (once a shared_ptr holds it: World::ModelByName).
+  void adoptLinks();
   std::shared_ptr<ModelBridge> bridge_;
   WorldPtr world_;
   Link_V links_;

@@ -16,6 +16,8 @@ namespace gazebo
 {
 namespace physics
 {
+class ModelBridge;
+
 class JointBridge
 {
 public:
@@ -27,6 +29,9 @@ public:
   virtual bool setVelocity(double velocity) = 0;
   virtual bool setForce(double effort) = 0;
   virtual bool setPosition(double position) = 0;
+  // The joint's limits as its model gives them (-inf / inf for none).
+  virtual double lowerLimit() const = 0;
+  virtual double upperLimit() const = 0;
 };
 
 class ModelBridge
@@ -57,7 +62,22 @@ public:
   virtual common::Time simTime() const = 0;
   virtual ignition::math::Vector3d gravity() const = 0;
   virtual double stepSize() const = 0;
+  // False (the simulator says why) for a step it cannot take.
+  virtual bool setStepSize(double seconds) = 0;
+  virtual double realTimeUpdateRate() const = 0;
+  virtual double realTimeFactor() const = 0;
   virtual uint64_t iterations() const = 0;
+  // The models that move, in the order they came, and one by name (null for none).
+  virtual std::vector<std::string> modelNames() const = 0;
+  virtual std::shared_ptr<ModelBridge> model(const std::string& name) = 0;
+  virtual bool paused() const = 0;
+  virtual void setPaused(bool paused) = 0;
+  virtual void reset() = 0;
+  // A joint made at run time holding the child link to the parent link where they are now: an id
+  // for detach, or -1 (the simulator says why).
+  virtual int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
+                     const std::string& child_link) = 0;
+  virtual void detach(int attachment) = 0;
 };
 }  // namespace physics
 }  // namespace gazebo

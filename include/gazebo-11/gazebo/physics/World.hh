@@ -1,6 +1,8 @@
-// physics::World as a plugin reads it: its name, simulated time, iterations and gravity.
+// physics::World as a plugin reads and runs it: its name, time, gravity and physics engine, its
+// models by name, pause and reset.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -21,13 +23,32 @@ class GZ_PHYSICS_VISIBLE World : public boost::enable_shared_from_this<World>
 {
 public:
   explicit World(std::shared_ptr<WorldBridge> bridge);
+  ~World();
   std::string Name() const;
   common::Time SimTime() const;
+  // Wall-clock time since the world was made, as Gazebo's (paused time included).
+  common::Time RealTime() const;
   uint32_t Iterations() const;
   ignition::math::Vector3d Gravity() const;
+  PhysicsEnginePtr Physics() const;
+  // The model of that name (its scoped name too), the same handle each time; null for none.
+  ModelPtr ModelByName(const std::string& name) const;
+  Model_V Models() const;
+  unsigned int ModelCount() const;
+  void SetPaused(bool paused);
+  bool IsPaused() const;
+  // The simulation back to its start (models where they came, time 0), as gazebo_ros's
+  // reset_simulation.
+  void Reset();
+  // The world's models let go (each holds the world): before the simulator drops the world.
+  void Fini();
 
 private:
   std::shared_ptr<WorldBridge> bridge_;
+  PhysicsEnginePtr physics_;
+  common::Time started_;
+  // One Model for each of the simulator's models, as Gazebo's world owns them (Fini lets them go).
+  mutable std::map<std::string, ModelPtr> models_;
 };
 }  // namespace physics
 }  // namespace gazebo

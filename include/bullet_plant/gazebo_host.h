@@ -1,0 +1,83 @@
+// Gazebo 11's plugins of the user's own in a world, hosted as Gazebo hosts them: world plugins (a
+// <plugin> in the world file), system plugins (gzserver -s) and model plugins (a robot's <plugin>
+// whose library was found: createGazeboModelPlugin, model_plugin.h), all over one physics::World.
+// The world makes its host when the first such plugin comes, so that a world without one pays
+// nothing; the host reaches the world through WorldPluginContext, implemented by the simulation.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <urdf_model/pose.h>
+
+#include "bullet_plant/world_description.h"
+
+namespace bullet_plant
+{
+class Log;
+class ModelPluginContext;
+
+// What Gazebo's physics::World, and the joints plugins make at run time, reach of the world.
+class WorldPluginContext
+{
+public:
+  virtual const std::string& worldName() const = 0;
+  virtual int64_t timeNs() const = 0;
+  virtual uint64_t iterations() const = 0;
+  virtual double stepSize() const = 0;
+  // PhysicsEngine::SetMaxStepSize: within the plant's bounds (world_description.h); false otherwise.
+  virtual bool setStepSize(double seconds) = 0;
+  virtual double realTimeUpdateRate() const = 0;
+  virtual double realTimeFactor() const = 0;
+  virtual urdf::Vector3 gravity() const = 0;
+  // The models that move (the robots), in the order they came; the plugin context of one by name,
+  // or null for a name that is none of them.
+  virtual std::vector<std::string> modelNames() const = 0;
+  virtual ModelPluginContext* model(const std::string& name) = 0;
+  virtual bool paused() const = 0;
+  virtual void setPaused(bool paused) = 0;
+  // World::Reset: models to where they started, time to 0 (gazebo_ros's reset_simulation).
+  virtual void resetSimulation() = 0;
+  // A joint made at run time that holds `child_link` of `child_model` to `parent_link` of
+  // `parent_model` where they are now (Joint::Attach). An id to release it with (Joint::Detach), or
+  // -1 with the reason logged (an unknown model or link, a link fixed to the world on both sides).
+  virtual int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
+                     const std::string& child_link) = 0;
+  virtual void detach(int attachment) = 0;
+  virtual Log& log() = 0;
+
+protected:
+  ~WorldPluginContext() = default;
+};
+
+class GazeboHost
+{
+public:
+  virtual ~GazeboHost() = default;
+  // WorldPlugin: made from its library, Load(World, its <plugin> element read by sdformat), Init.
+  // False, with Gazebo's error naming the plugin, the file and why, where it cannot be; the world
+  // runs without it.
+  virtual bool loadWorldPlugin(const WorldPluginDescription& plugin) = 0;
+  // SystemPlugin (gzserver -s FILE): found on the plugin paths, Load(argc, argv), Init. False as above.
+  virtual bool loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments) = 0;
+  // Each step: event::Events::worldUpdateBegin and beforePhysicsUpdate before the plugins' and the
+  // controllers' updates, worldUpdateEnd after the physics.
+  virtual void beginStep() = 0;
+  virtual void endStep() = 0;
+  // reset_world / reset_simulation: the world plugins' Reset and Events::worldReset (timeReset too
+  // for a simulation reset).
+  virtual void reset(bool simulation) = 0;
+  // A model left the world (delete_model): its physics::Model answers nothing from now on, and the
+  // joints made at run time on it are released.
+  virtual void modelRemoved(const std::string& name) = 0;
+};
+
+std::unique_ptr<GazeboHost> createGazeboHost(WorldPluginContext& world);
+
+// gzserver --verbose: Gazebo's console (gzmsg, gzdbg) writes what plugins say; without it only
+// their warnings and errors, as Gazebo's. The process's, as Gazebo's console is.
+void setGazeboVerbose(bool verbose);
+
+}  // namespace bullet_plant

@@ -1,0 +1,42 @@
+// physics::PhysicsEngine as plugins use it: the step and its pace, joints made at run time, and the
+// mutex the simulator holds while it updates the world (a plugin's ROS callbacks take it to act
+// between steps).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <boost/thread/recursive_mutex.hpp>
+
+#include "gazebo/physics/PhysicsTypes.hh"
+#include "gazebo/util/system.hh"
+
+namespace gazebo
+{
+namespace physics
+{
+class WorldBridge;
+
+class GZ_PHYSICS_VISIBLE PhysicsEngine
+{
+public:
+  explicit PhysicsEngine(std::shared_ptr<WorldBridge> bridge);
+  virtual ~PhysicsEngine();
+  // "bullet": the engine under the plant.
+  std::string GetType() const;
+  double GetMaxStepSize() const;
+  // Within the simulator's bounds; another is refused with an error naming it.
+  void SetMaxStepSize(double step);
+  double GetRealTimeUpdateRate() const;
+  double GetTargetRealTimeFactor() const;
+  // A joint between two links made at run time ("fixed", "revolute", "prismatic", ...): it holds
+  // nothing until Attach (or Load and Init). `parent` is the model it belongs to.
+  JointPtr CreateJoint(const std::string& type, ModelPtr parent = ModelPtr());
+  boost::recursive_mutex* GetPhysicsUpdateMutex() const;
+
+private:
+  std::shared_ptr<WorldBridge> bridge_;
+  mutable boost::recursive_mutex update_mutex_;
+};
+}  // namespace physics
+}  // namespace gazebo

@@ -1,0 +1,313 @@
+#include "gazebo_host/gazebo_world_host.h"
+
+#include <dlfcn.h>
+
+#include <cmath>
+#include <exception>
+
+#include <gazebo/common/Console.hh>
+#include <gazebo/common/Events.hh>
+#include <gazebo/physics/PhysicsEngine.hh>
+#include <gazebo/physics/World.hh>
+
+#include "bullet_plant/log.h"
+#include "bullet_plant/robot_description.h"
+
+namespace bullet_plant
+{
+// physics::World's side in the plant: the world's context, and the models' bridges the host keeps.
+class HostWorld final : public gazebo::physics::WorldBridge
+{
+public:
+  explicit HostWorld(PlantGazeboHost& host) : host_(host), context_(host.context()) {}
+
+  std::string name() const override { return context_.worldName(); }
+  gazebo::common::Time simTime() const override
+  {
+    const int64_t ns = context_.timeNs();
+    return gazebo::common::Time(static_cast<int32_t>(ns / 1000000000), static_cast<int32_t>(ns % 1000000000));
+  }
+  ignition::math::Vector3d gravity() const override
+  {
+    const urdf::Vector3 g = context_.gravity();
+    return {g.x, g.y, g.z};
+  }
+  double stepSize() const override { return context_.stepSize(); }
+  bool setStepSize(double seconds) override { return context_.setStepSize(seconds); }
+  double realTimeUpdateRate() const override { return context_.realTimeUpdateRate(); }
+  double realTimeFactor() const override { return context_.realTimeFactor(); }
+  uint64_t iterations() const override { return context_.iterations(); }
+  std::vector<std::string> modelNames() const override { return context_.modelNames(); }
+  std::shared_ptr<gazebo::physics::ModelBridge> model(const std::string& name) override { return host_.modelBridge(name); }
+  bool paused() const override { return context_.paused(); }
+  void setPaused(bool paused) override { context_.setPaused(paused); }
+  void reset() override { context_.resetSimulation(); }
+  int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
+             const std::string& child_link) override
+  {
+    return context_.attach(parent_model, parent_link, child_model, child_link);
+  }
+  void detach(int attachment) override { context_.detach(attachment); }
+
+private:
+  PlantGazeboHost& host_;
+  WorldPluginContext& context_;
+};
+
+namespace
+{
+gazebo::common::UpdateInfo updateInfo(const gazebo::physics::World& world)
+{
+  gazebo::common::UpdateInfo info;
+  info.worldName = world.Name();
+  info.simTime = world.SimTime();
+  info.realTime = world.RealTime();
+  return info;
+}
+
+std::string worldPluginLabel(const std::string& name, const std::string& filename)
+{
+  return "world plugin '" + name + "' (" + filename + ")";
+}
+}  // namespace
+
+std::string whyNotLoadable(const std::string& library, const std::string& registration)
+{
+  void* handle = dlopen(library.c_str(), RTLD_LAZY | RTLD_GLOBAL);
+  if (!handle)
+  {
+    const char* reason = dlerror();
+    return "cannot load " + library + ": " + (reason ? reason : "dlopen failed");
+  }
+  if (!dlsym(handle, "RegisterPlugin"))
+    return library + " is not a Gazebo plugin: it has no RegisterPlugin (" + registration + ")";
+  return "";  // the handle stays: Gazebo keeps plugin libraries loaded, and Create opens it again
+}
+
+sdf::ElementPtr pluginElement(const std::string& xml, const std::string& parent, std::string& error)
+{
+  sdf::SDFPtr sdf(new sdf::SDF());
+  sdf::init(sdf);
+  sdf::Errors errors;
+  const std::string body = parent == "model" ? "<link name='__link__'/>" + xml : xml;
+  const std::string text = "<sdf version='1.7'><" + parent + " name='__plugin_host__'>" + body + "</" + parent + "></sdf>";
+  if (!sdf::readString(text, sdf, errors) || !sdf->Root()->HasElement(parent))
+  {
+    error = errors.empty() ? "sdformat could not read it" : errors.front().Message();
+    return sdf::ElementPtr();
+  }
+  sdf::ElementPtr element = sdf->Root()->GetElement(parent);
+  if (!element->HasElement("plugin"))
+  {
+    error = "sdformat found no <plugin> in it";
+    return sdf::ElementPtr();
+  }
+  return element->GetElement("plugin");
+}
+
+PlantGazeboHost::PlantGazeboHost(WorldPluginContext& world)
+  : context_(world), bridge_(std::make_shared<HostWorld>(*this)), world_(new gazebo::physics::World(bridge_))
+{
+}
+
+PlantGazeboHost::~PlantGazeboHost()
+{
+  if (stepping_)
+    world_->Physics()->GetPhysicsUpdateMutex()->unlock();
+  // The plugins go before the models and the world they hold, as Gazebo's world unloads them.
+  world_plugins_.clear();
+  system_plugins_.clear();
+  for (auto& model : models_)
+    model.second->release();
+  world_->Fini();
+}
+
+std::shared_ptr<ContextModel> PlantGazeboHost::modelBridge(ModelPluginContext& context)
+{
+  std::shared_ptr<ContextModel>& bridge = models_[context.modelName()];
+  if (!bridge)
+    bridge = std::make_shared<ContextModel>(context);
+  return bridge;
+}
+
+std::shared_ptr<ContextModel> PlantGazeboHost::modelBridge(const std::string& name)
+{
+  auto known = models_.find(name);
+  if (known != models_.end())
+    return known->second;
+  ModelPluginContext* model = context_.model(name);
+  return model ? modelBridge(*model) : nullptr;
+}
+
+void PlantGazeboHost::modelRemoved(const std::string& name)
+{
+  auto known = models_.find(name);
+  if (known == models_.end())
+    return;
+  known->second->release();
+  models_.erase(known);
+  gazebo::event::Events::deleteEntity(name);
+}
+
+bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
+{
+  const std::string label = worldPluginLabel(d.name, d.filename);
+  Log& log = context_.log();
+  const std::string unloadable = whyNotLoadable(d.library, "GZ_REGISTER_WORLD_PLUGIN");
+  if (!unloadable.empty())
+  {
+    log.error(label + ": " + unloadable + "; the world runs without it");
+    return false;
+  }
+  gazebo::WorldPlugin::TPtr plugin;
+  try
+  {
+    plugin = gazebo::WorldPlugin::Create(d.library, d.name);
+  }
+  catch (const std::exception& e)
+  {
+    log.error(label + ": loading " + d.library + " threw: " + e.what() + "; the world runs without it");
+    return false;
+  }
+  if (!plugin || plugin->GetType() != gazebo::WORLD_PLUGIN)
+  {
+    log.error(label + ": " + d.library + (plugin ? " registers a plugin that is not a world plugin; a <plugin> in "
+                                                   "a world loads a world plugin (GZ_REGISTER_WORLD_PLUGIN)"
+                                                 : " made no plugin") + "; the world runs without it");
+    return false;
+  }
+  std::string error;
+  sdf::ElementPtr element = pluginElement(d.xml, "world", error);
+  if (!element)
+  {
+    log.error(label + ": its <plugin> element: " + error + "; the world runs without it");
+    return false;
+  }
+  try
+  {
+    plugin->Load(world_, element);
+    plugin->Init();
+  }
+  catch (const std::exception& e)
+  {
+    log.error(label + ": its Load threw: " + e.what() + "; the world runs without it");
+    return false;
+  }
+  world_plugins_.push_back(plugin);
+  return true;
+}
+
+bool PlantGazeboHost::loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments)
+{
+  const std::string label = "system plugin (" + filename + ")";
+  Log& log = context_.log();
+  const std::string library = findGazeboPluginLibrary(filename);
+  if (library.empty())
+  {
+    log.error(label + ": no such file on GAZEBO_PLUGIN_PATH or LD_LIBRARY_PATH; the world runs without it");
+    return false;
+  }
+  const std::string unloadable = whyNotLoadable(library, "GZ_REGISTER_SYSTEM_PLUGIN");
+  if (!unloadable.empty())
+  {
+    log.error(label + ": " + unloadable + "; the world runs without it");
+    return false;
+  }
+  gazebo::SystemPlugin::TPtr plugin;
+  try
+  {
+    plugin = gazebo::SystemPlugin::Create(library, filename);
+  }
+  catch (const std::exception& e)
+  {
+    log.error(label + ": loading " + library + " threw: " + e.what() + "; the world runs without it");
+    return false;
+  }
+  if (!plugin || plugin->GetType() != gazebo::SYSTEM_PLUGIN)
+  {
+    log.error(label + ": " + library + (plugin ? " registers a plugin that is not a system plugin "
+                                                 "(GZ_REGISTER_SYSTEM_PLUGIN)" : " made no plugin") +
+              "; the world runs without it");
+    return false;
+  }
+  // Load(argc, argv) with gzserver's command line, as Gazebo's server hands it on.
+  std::vector<char*> argv;
+  for (const std::string& argument : arguments)
+  {
+    system_arguments_.emplace_back(argument.begin(), argument.end());
+    system_arguments_.back().push_back('\0');
+    argv.push_back(system_arguments_.back().data());
+  }
+  argv.push_back(nullptr);
+  try
+  {
+    plugin->Load(static_cast<int>(arguments.size()), argv.data());
+    plugin->Init();
+    // Gazebo's server loads system plugins before the world, which then says it was made.
+    gazebo::event::Events::worldCreated(world_->Name());
+  }
+  catch (const std::exception& e)
+  {
+    log.error(label + ": its Load threw: " + e.what() + "; the world runs without it");
+    return false;
+  }
+  system_plugins_.push_back(plugin);
+  return true;
+}
+
+void PlantGazeboHost::beginStep()
+{
+  // The world update holds the physics update mutex, so that what a plugin's ROS callbacks do
+  // between steps (under the same mutex) never lands in the middle of one.
+  world_->Physics()->GetPhysicsUpdateMutex()->lock();
+  stepping_ = true;
+  const gazebo::common::UpdateInfo info = updateInfo(*world_);
+  try
+  {
+    gazebo::event::Events::worldUpdateBegin(info);
+    gazebo::event::Events::beforePhysicsUpdate(info);
+  }
+  catch (const std::exception& e)
+  {
+    context_.log().error(std::string("a Gazebo plugin's world update callback threw: ") + e.what());
+  }
+}
+
+void PlantGazeboHost::endStep()
+{
+  try
+  {
+    gazebo::event::Events::worldUpdateEnd();
+  }
+  catch (const std::exception& e)
+  {
+    context_.log().error(std::string("a Gazebo plugin's world update end callback threw: ") + e.what());
+  }
+  if (stepping_)
+  {
+    stepping_ = false;
+    world_->Physics()->GetPhysicsUpdateMutex()->unlock();
+  }
+}
+
+void PlantGazeboHost::reset(bool simulation)
+{
+  try
+  {
+    for (auto& plugin : world_plugins_)
+      plugin->Reset();
+    if (simulation)
+      gazebo::event::Events::timeReset();
+    gazebo::event::Events::worldReset();
+  }
+  catch (const std::exception& e)
+  {
+    context_.log().error(std::string("a Gazebo world plugin's Reset threw: ") + e.what());
+  }
+}
+
+std::unique_ptr<GazeboHost> createGazeboHost(WorldPluginContext& world) { return std::make_unique<PlantGazeboHost>(world); }
+
+void setGazeboVerbose(bool verbose) { gazebo::common::Console::SetQuiet(!verbose); }
+
+}  // namespace bullet_plant

@@ -1,0 +1,63 @@
+// The world's host of Gazebo plugins (GazeboHost, gazebo_host.h): one physics::World over the
+// world's context, its world and system plugins, its events each step, and one physics::Model
+// bridge for each model (model_bridge.h), which the model plugins' host shares
+// (gazebo_model_plugin.cpp).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gazebo/common/Plugin.hh>
+#include <gazebo/physics/PhysicsTypes.hh>
+#include <sdf/sdf.hh>
+
+#include "bullet_plant/gazebo_host.h"
+#include "gazebo_host/model_bridge.h"
+
+namespace bullet_plant
+{
+class HostWorld;
+
+class PlantGazeboHost final : public GazeboHost
+{
+public:
+  explicit PlantGazeboHost(WorldPluginContext& world);
+  ~PlantGazeboHost() override;
+
+  bool loadWorldPlugin(const WorldPluginDescription& plugin) override;
+  bool loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments) override;
+  void beginStep() override;
+  void endStep() override;
+  void reset(bool simulation) override;
+  void modelRemoved(const std::string& name) override;
+
+  gazebo::physics::WorldPtr world() const { return world_; }
+  // The bridge of the model whose context this is (a model plugin's), made at its first call; by
+  // name for a world's lookup (null for no model of that name).
+  std::shared_ptr<ContextModel> modelBridge(ModelPluginContext& context);
+  std::shared_ptr<ContextModel> modelBridge(const std::string& name);
+  WorldPluginContext& context() { return context_; }
+
+private:
+  WorldPluginContext& context_;
+  std::shared_ptr<HostWorld> bridge_;
+  gazebo::physics::WorldPtr world_;
+  std::map<std::string, std::shared_ptr<ContextModel>> models_;
+  std::vector<gazebo::WorldPlugin::TPtr> world_plugins_;
+  std::vector<gazebo::SystemPlugin::TPtr> system_plugins_;
+  std::vector<std::vector<char>> system_arguments_;  // argv's strings outlive Load, as Gazebo's do
+  bool stepping_ = false;  // the physics update mutex is held from beginStep to endStep
+};
+
+// Why Gazebo could not load `library` as a plugin (dlopen's reason, or no RegisterPlugin), "" where
+// it can: the error then names the reason beside the plugin. `registration` names the macro its
+// kind registers with (GZ_REGISTER_MODEL_PLUGIN ...).
+std::string whyNotLoadable(const std::string& library, const std::string& registration);
+
+// The <plugin> element `xml` as sdformat reads it inside a `parent` ("world" or "model"), for the
+// plugin's Load; null with sdformat's reason in `error`.
+sdf::ElementPtr pluginElement(const std::string& xml, const std::string& parent, std::string& error);
+
+}  // namespace bullet_plant

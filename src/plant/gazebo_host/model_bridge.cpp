@@ -1,0 +1,191 @@
+#include "gazebo_host/model_bridge.h"
+
+#include <cmath>
+#include <limits>
+
+#include <gazebo/common/Console.hh>
+
+#include "bullet_plant/log.h"
+
+namespace bullet_plant
+{
+namespace
+{
+ignition::math::Vector3d toIgnition(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+
+urdf::Vector3 toUrdf(const ignition::math::Vector3d& v) { return urdf::Vector3(v.X(), v.Y(), v.Z()); }
+
+bool finite(const ignition::math::Vector3d& v) { return std::isfinite(v.X()) && std::isfinite(v.Y()) && std::isfinite(v.Z()); }
+
+class ContextJoint final : public gazebo::physics::JointBridge
+{
+public:
+  ContextJoint(std::shared_ptr<ModelReach> reach, std::string name) : reach_(std::move(reach)), name_(std::move(name)) {}
+
+  double position() const override
+  {
+    double position = 0.0, velocity = 0.0;
+    if (reach_->context)
+      reach_->context->jointState(name_, position, velocity);
+    return position;
+  }
+  double velocity() const override
+  {
+    double position = 0.0, velocity = 0.0;
+    if (reach_->context)
+      reach_->context->jointState(name_, position, velocity);
+    return velocity;
+  }
+  bool setVelocity(double velocity) override
+  {
+    ModelJoint* joint = driven();
+    if (joint)
+      joint->setPosition(joint->position(), velocity);  // Gazebo's SetVelocity: the rate now, no motor
+    return joint != nullptr;
+  }
+  bool setForce(double effort) override
+  {
+    ModelJoint* joint = driven();
+    if (joint)
+      joint->setForce(effort);
+    return joint != nullptr;
+  }
+  bool setPosition(double position) override
+  {
+    ModelJoint* joint = driven();
+    if (joint)
+      joint->setPosition(position, 0.0);
+    return joint != nullptr;
+  }
+  double lowerLimit() const override { return limit(false); }
+  double upperLimit() const override { return limit(true); }
+
+private:
+  // The joint taken for driving at the first call that drives it (the context says once why it
+  // cannot be: a transmission drives it); null once the model left the world.
+  ModelJoint* driven()
+  {
+    if (!reach_->context)
+      return nullptr;
+    if (!asked_)
+    {
+      joint_ = reach_->context->modelJoint(name_, reach_->label);
+      asked_ = true;
+    }
+    return joint_;
+  }
+  double limit(bool upper) const
+  {
+    const double none = upper ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+    if (!reach_->context)
+      return none;
+    const auto joint = reach_->context->robotDescription().model->getJoint(name_);
+    if (!joint || !joint->limits || joint->type == urdf::Joint::CONTINUOUS)
+      return none;
+    return upper ? joint->limits->upper : joint->limits->lower;
+  }
+
+  std::shared_ptr<ModelReach> reach_;
+  std::string name_;
+  ModelJoint* joint_ = nullptr;
+  bool asked_ = false;
+};
+}  // namespace
+
+ContextModel::ContextModel(ModelPluginContext& context)
+  : reach_(std::make_shared<ModelReach>(ModelReach{&context, "model '" + context.modelName() + "'"})),
+    name_(context.modelName())
+{
+}
+
+ModelPluginContext* ContextModel::reach(const char* call) const
+{
+  if (!reach_->context && !said_gone_)
+  {
+    said_gone_ = true;  // on Gazebo's console: the model's own log left with it
+    gzerr << "Model [" << name_ << "]: " << call << " after the model was deleted; it does nothing" << std::endl;
+  }
+  return reach_->context;
+}
+
+std::string ContextModel::canonicalLink() const
+{
+  ModelPluginContext* context = reach("GetLink");
+  return context ? context->rootLink() : "";
+}
+
+std::vector<std::string> ContextModel::linkNames() const
+{
+  std::vector<std::string> names;
+  if (ModelPluginContext* context = reach("GetLinks"))
+    for (const auto& link : context->robotDescription().model->links_)
+      if (!context->robotDescription().frame_links.count(link.first))
+        names.push_back(link.first);
+  return names;
+}
+
+std::vector<std::string> ContextModel::jointNames() const
+{
+  std::vector<std::string> names;
+  double position, velocity;
+  if (ModelPluginContext* context = reach("GetJoints"))
+    for (const auto& joint : context->robotDescription().model->joints_)
+      if (context->jointState(joint.first, position, velocity))
+        names.push_back(joint.first);
+  return names;
+}
+
+ignition::math::Pose3d ContextModel::linkPose(const std::string& link) const
+{
+  ModelPluginContext* context = reach("WorldPose");
+  if (!context)
+    return ignition::math::Pose3d::Zero;
+  const urdf::Pose pose = context->linkMotion(link).pose;
+  return {pose.position.x, pose.position.y, pose.position.z, pose.rotation.w, pose.rotation.x, pose.rotation.y,
+          pose.rotation.z};
+}
+
+ignition::math::Vector3d ContextModel::linkLinearVel(const std::string& link) const
+{
+  ModelPluginContext* context = reach("WorldLinearVel");
+  return context ? toIgnition(context->linkMotion(link).velocity) : ignition::math::Vector3d::Zero;
+}
+
+ignition::math::Vector3d ContextModel::linkAngularVel(const std::string& link) const
+{
+  ModelPluginContext* context = reach("WorldAngularVel");
+  return context ? toIgnition(context->linkMotion(link).angular_velocity) : ignition::math::Vector3d::Zero;
+}
+
+void ContextModel::setVelocity(const ignition::math::Vector3d& linear, const ignition::math::Vector3d& angular)
+{
+  ModelPluginContext* context = reach("SetLinearVel");
+  if (!context)
+    return;
+  if (finite(linear) && finite(angular))
+    context->setModelVelocity(toUrdf(linear), toUrdf(angular));
+  else
+    context->log().warn(reach_->label + ": a non-finite model velocity is ignored");
+}
+
+void ContextModel::addLinkWrench(const std::string& link, const ignition::math::Vector3d& force,
+                                 const ignition::math::Vector3d& torque)
+{
+  ModelPluginContext* context = reach("AddForce");
+  if (!context)
+    return;
+  if (finite(force) && finite(torque))
+    context->addLinkWrench(link, toUrdf(force), toUrdf(torque));
+  else
+    context->log().warn(reach_->label + ": a non-finite force or torque on link '" + link + "' is ignored");
+}
+
+std::unique_ptr<gazebo::physics::JointBridge> ContextModel::joint(const std::string& name)
+{
+  double position, velocity;
+  ModelPluginContext* context = reach("GetJoint");
+  if (!context || !context->jointState(name, position, velocity))
+    return nullptr;
+  return std::make_unique<ContextJoint>(reach_, name);
+}
+}  // namespace bullet_plant

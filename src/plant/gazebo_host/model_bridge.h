@@ -1,0 +1,50 @@
+// physics::Model's, Link's and Joint's side in the plant (gazebo/physics/PlantBridge.hh), over a
+// model's plugin context (ModelPluginContext): one for each model of the world, shared by its
+// model plugins and the world plugins that look it up. When the model leaves the world (delete_model)
+// the bridge is released: the handles plugins still hold answer nothing and change nothing.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gazebo/physics/PlantBridge.hh>
+
+#include "bullet_plant/model_plugin.h"
+
+namespace bullet_plant
+{
+// The model a bridge reaches while it is in the world: null once it left.
+struct ModelReach
+{
+  ModelPluginContext* context = nullptr;
+  std::string label;  // how messages name it: "model 'NAME'"
+};
+
+class ContextModel final : public gazebo::physics::ModelBridge
+{
+public:
+  explicit ContextModel(ModelPluginContext& context);
+  // The model left the world.
+  void release() { reach_->context = nullptr; }
+
+  std::string name() const override { return name_; }
+  std::string canonicalLink() const override;
+  std::vector<std::string> linkNames() const override;
+  std::vector<std::string> jointNames() const override;
+  ignition::math::Pose3d linkPose(const std::string& link) const override;
+  ignition::math::Vector3d linkLinearVel(const std::string& link) const override;
+  ignition::math::Vector3d linkAngularVel(const std::string& link) const override;
+  void setVelocity(const ignition::math::Vector3d& linear, const ignition::math::Vector3d& angular) override;
+  void addLinkWrench(const std::string& link, const ignition::math::Vector3d& force,
+                     const ignition::math::Vector3d& torque) override;
+  std::unique_ptr<gazebo::physics::JointBridge> joint(const std::string& name) override;
+
+private:
+  // The context while the model is in the world; null (and one error) after.
+  ModelPluginContext* reach(const char* call) const;
+  std::shared_ptr<ModelReach> reach_;
+  std::string name_;
+  mutable bool said_gone_ = false;
+};
+}  // namespace bullet_plant

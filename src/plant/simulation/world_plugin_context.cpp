@@ -1,0 +1,66 @@
+#include "simulation/world_plugin_context.h"
+
+#include <stdexcept>
+
+#include "bullet_plant/log.h"
+#include "simulation/internals.h"
+
+namespace bullet_plant
+{
+const std::string& PlantWorldPluginContext::worldName() const { return w_.description.name; }
+
+int64_t PlantWorldPluginContext::timeNs() const { return w_.time_ns; }
+
+uint64_t PlantWorldPluginContext::iterations() const { return w_.steps; }
+
+double PlantWorldPluginContext::stepSize() const { return w_.step_s; }
+
+bool PlantWorldPluginContext::setStepSize(double seconds)
+{
+  try
+  {
+    world_.setTimeStep(seconds);
+    return true;
+  }
+  catch (const std::invalid_argument&)
+  {
+    return false;
+  }
+}
+
+double PlantWorldPluginContext::realTimeUpdateRate() const { return w_.description.real_time_update_rate; }
+
+double PlantWorldPluginContext::realTimeFactor() const { return w_.description.real_time_factor; }
+
+urdf::Vector3 PlantWorldPluginContext::gravity() const { return world_.gravity(); }
+
+std::vector<std::string> PlantWorldPluginContext::modelNames() const
+{
+  std::vector<std::string> names;
+  for (Robot* robot : world_.robots())
+    names.push_back(robot->name());
+  return names;
+}
+
+ModelPluginContext* PlantWorldPluginContext::model(const std::string& name)
+{
+  Robot* robot = world_.robot(name);
+  return robot ? &internalsOf(*robot).model_plugin_context : nullptr;
+}
+
+bool PlantWorldPluginContext::paused() const { return world_.paused(); }
+
+void PlantWorldPluginContext::setPaused(bool paused) { world_.setPaused(paused); }
+
+void PlantWorldPluginContext::resetSimulation() { world_.resetSimulation(); }
+
+int PlantWorldPluginContext::attach(const std::string& parent_model, const std::string& parent_link,
+                                    const std::string& child_model, const std::string& child_link)
+{
+  return w_.attach(parent_model, parent_link, child_model, child_link);
+}
+
+void PlantWorldPluginContext::detach(int attachment) { w_.detach(attachment); }
+
+Log& PlantWorldPluginContext::log() { return w_.log; }
+}  // namespace bullet_plant
