@@ -14,6 +14,7 @@ set(GAZEBO_API_MAJOR_VERSION 11)
 add_library(gazebo_common SHARED
   src/gazebo/common/Console.cc
   src/gazebo/common/Events.cc
+  src/gazebo/common/PID.cc
   src/gazebo/common/SystemPaths.cc
   src/gazebo/common/Time.cc)
 target_include_directories(gazebo_common PUBLIC
@@ -27,6 +28,7 @@ set_target_properties(gazebo_common PROPERTIES
 # (gazebo/physics/PlantBridge.hh), which the plant implements.
 add_library(gazebo_physics SHARED
   src/gazebo/physics/Joint.cc
+  src/gazebo/physics/JointController.cc
   src/gazebo/physics/Link.cc
   src/gazebo/physics/Model.cc
   src/gazebo/physics/PhysicsEngine.cc

@@ -81,6 +81,9 @@ public:
   // neither gravity nor contacts, which the physics adds later, as in ODE's accumulators. Zero for
   // an unknown link.
   virtual void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const = 0;
+  // Where addLinkWrench's force acts: the centre of mass of `link`'s body (world); the world's
+  // origin for an unknown link.
+  virtual urdf::Vector3 bodyCentreOfMass(const std::string& link) const = 0;
   // Joint::SetPosition on any movable joint (a controller's too), the joint then at rest; false for
   // a joint the robot lacks or a fixed one. Within the URDF limits.
   virtual bool setJointPosition(const std::string& joint, double position) = 0;

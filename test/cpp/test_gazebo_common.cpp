@@ -3,6 +3,7 @@
 // them, the console's prefixes, and PluginT::Create's errors for a library that is not a plugin.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -131,4 +132,38 @@ TEST(GazeboPlugin, ALibraryThatIsNotFoundOrNotAPluginGivesNoPluginAndSaysWhy)
   EXPECT_FALSE(gazebo::ModelPlugin::Create("libno_such_plugin_here.so", "missing"));
   // A shared library without RegisterPlugin: the C library itself.
   EXPECT_FALSE(gazebo::WorldPlugin::Create("libm.so.6", "not_a_plugin"));
+}
+
+// common::PID drives a unit mass to a target as Gazebo's joint controllers use it: the command is
+// the force for error = position - target.
+TEST(GazeboPid, DrivesAMassToItsTargetAndHoldsItsLimits)
+{
+  gazebo::common::PID pid(40.0, 20.0, 12.0, 2.0, -2.0, 10.0, -10.0);
+  double x = 0.0, v = 0.0;
+  const double dt = 0.001, target = 1.0;
+  double largest = 0.0;
+  for (int i = 0; i < 20000; ++i)  // 20 s: the integral's wind-up unwinds in a few seconds
+  {
+    const double force = pid.Update(x - target, dt);
+    largest = std::max(largest, std::abs(force));
+    v += force * dt;
+    x += v * dt;
+  }
+  EXPECT_NEAR(x, target, 1e-3);
+  EXPECT_LE(largest, 10.0);  // clamped to [cmdMin, cmdMax]
+  double pe, ie, de;
+  pid.GetErrors(pe, ie, de);
+  EXPECT_LE(std::abs(20.0 * ie), 2.0);  // the integral term within [imin, imax]
+}
+
+TEST(GazeboPid, AZeroStepOrANonFiniteErrorCommandsNothingAndUnclampedByDefault)
+{
+  gazebo::common::PID pid(2.0, 0.0, 0.0);
+  EXPECT_EQ(pid.Update(1.0, gazebo::common::Time(0, 0)), 0.0);
+  EXPECT_EQ(pid.Update(std::numeric_limits<double>::quiet_NaN(), 0.01), 0.0);
+  EXPECT_EQ(pid.Update(-100.0, 0.01), 200.0);  // cmdMax -1 < cmdMin 0: no clamp
+  gazebo::common::PID copy;
+  copy = pid;
+  EXPECT_EQ(copy.GetPGain(), 2.0);
+  EXPECT_EQ(copy.GetCmd(), 0.0);  // assignment starts the errors and the command again, as Gazebo's
 }

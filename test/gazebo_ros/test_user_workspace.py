@@ -7,6 +7,7 @@ diff drive); the user's plugins loaded by the plant (test/fixtures/gazebo_plugin
 of the source tree or its devel space can stand in for the install. And a clone of this repository
 in a workspace's src/ is refused with what to do."""
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -144,8 +145,16 @@ def test_a_package_with_its_own_gazebo_plugin_builds_on_the_install_space_with_g
     assert abs(motion['spin'][1] - 2.0) < 0.05, motion  # Joint::SetVelocity(0, 2.0)
     lifted_z = motion['end']['lifted'][2] - motion['start']['lifted'][2]
     assert 4.0 < lifted_z < 5.5, motion  # Link::AddForce of twice its weight: up at g, 4.9 m in 1 s
-    steps, last, world_time, name = motion['reports']['pushed']
+    steps, last, world_time, name, mass = motion['reports']['pushed']
     assert int(steps) == 1000 and abs(float(last) - 0.999) < 1e-9 and name == 'pushed_cart', motion['reports']
+    assert float(mass) == 2.0, motion['reports']  # Link::GetInertial: the base link's own <inertial>
+    # The model's joint controller (JointController, common::PID) holds the joint at its 1 rad target.
+    assert abs(motion['held'][0] - 1.0) < 0.02 and abs(motion['held'][1]) < 0.05, motion['held']
+    # 0.5 N along x at 0.15 m to the left of the floating cart's centre of mass: it moves 0.11 m
+    # (0.5 / 2.2 kg for 1 s) and turns right at 0.075 N m / 0.04 kg m^2 (0.94 rad in 1 s).
+    start, end = motion['start']['twisted'], motion['end']['twisted']
+    yaw = 2 * math.atan2(end[5], end[6])
+    assert 0.09 < end[0] - start[0] < 0.13 and -1.05 < yaw < -0.8 and abs(end[2] - start[2]) < 0.02, (start, end)
     # The headers and libraries come from the install space, not from the source tree.
     flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'gazebo'], env=env, capture_output=True, text=True)
     assert flags.returncode == 0 and install_space + '/include/gazebo-11' in flags.stdout, flags.stdout + flags.stderr

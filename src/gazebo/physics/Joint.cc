@@ -11,7 +11,8 @@ namespace gazebo
 {
 namespace physics
 {
-Joint::Joint(const std::string& name, std::unique_ptr<JointBridge> bridge) : name_(name), bridge_(std::move(bridge))
+Joint::Joint(const std::string& name, std::unique_ptr<JointBridge> bridge, const std::string& model_name)
+  : name_(name), model_name_(model_name), bridge_(std::move(bridge))
 {
   lower_ = bridge_->lowerLimit();
   upper_ = bridge_->upperLimit();
@@ -29,6 +30,12 @@ Joint::~Joint()
 }
 
 std::string Joint::GetName() const { return name_; }
+
+std::string Joint::GetScopedName(bool prependWorldName) const
+{
+  const std::string model = model_ ? model_->GetScopedName(prependWorldName) : model_name_;
+  return model.empty() ? name_ : model + "::" + name_;
+}
 
 void Joint::SetName(const std::string& name) { name_ = name; }
 

@@ -1,6 +1,8 @@
 // physics::Link (gazebo/physics/Link.hh), over its model's ModelBridge.
 #include "gazebo/physics/Link.hh"
 
+#include "gazebo/physics/Inertial.hh"
+#include "gazebo/physics/Joint.hh"
 #include "gazebo/physics/Model.hh"
 #include "gazebo/physics/PlantBridge.hh"
 
@@ -40,5 +42,65 @@ void Link::AddTorque(const ignition::math::Vector3d& torque) { bridge_->addLinkW
 void Link::AddRelativeForce(const ignition::math::Vector3d& force) { AddForce(WorldPose().Rot().RotateVector(force)); }
 
 void Link::AddRelativeTorque(const ignition::math::Vector3d& torque) { AddTorque(WorldPose().Rot().RotateVector(torque)); }
+
+void Link::AddForceAtWorldPosition(const ignition::math::Vector3d& force, const ignition::math::Vector3d& position)
+{
+  // At the body's centre of mass, with its moment about it.
+  bridge_->addLinkWrench(name_, force, (position - bridge_->bodyCentreOfMass(name_)).Cross(force));
+}
+
+void Link::AddForceAtRelativePosition(const ignition::math::Vector3d& force, const ignition::math::Vector3d& position)
+{
+  AddForceAtWorldPosition(force, WorldPose().CoordPositionAdd(position));
+}
+
+void Link::SetForce(const ignition::math::Vector3d& force) { AddForce(force - WorldForce()); }
+
+void Link::SetTorque(const ignition::math::Vector3d& torque) { AddTorque(torque - WorldTorque()); }
+
+ignition::math::Vector3d Link::WorldForce() const
+{
+  ignition::math::Vector3d force, torque;
+  bridge_->addedLinkWrench(name_, force, torque);
+  return force;
+}
+
+ignition::math::Vector3d Link::WorldTorque() const
+{
+  ignition::math::Vector3d force, torque;
+  bridge_->addedLinkWrench(name_, force, torque);
+  return torque;
+}
+
+ignition::math::Pose3d Link::WorldCoGPose() const
+{
+  return ignition::math::Pose3d(bridge_->bodyCentreOfMass(name_), WorldPose().Rot());
+}
+
+InertialPtr Link::GetInertial() const
+{
+  const LinkInertia inertia = bridge_->linkInertia(name_);
+  InertialPtr inertial(new Inertial(inertia.mass));
+  inertial->SetPose(inertia.pose);
+  inertial->SetInertiaMatrix(inertia.ixx, inertia.iyy, inertia.izz, inertia.ixy, inertia.ixz, inertia.iyz);
+  return inertial;
+}
+
+namespace
+{
+Joint_V jointsOf(const ModelPtr& model, const std::vector<std::string>& names)
+{
+  Joint_V joints;
+  if (model)
+    for (const std::string& name : names)
+      if (JointPtr joint = model->GetJoint(name))
+        joints.push_back(joint);
+  return joints;
+}
+}  // namespace
+
+Joint_V Link::GetParentJoints() const { return jointsOf(GetModel(), bridge_->linkJoints(name_, true)); }
+
+Joint_V Link::GetChildJoints() const { return jointsOf(GetModel(), bridge_->linkJoints(name_, false)); }
 }  // namespace physics
 }  // namespace gazebo

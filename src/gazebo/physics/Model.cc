@@ -3,6 +3,7 @@
 
 #include "gazebo/common/Console.hh"
 #include "gazebo/physics/Joint.hh"
+#include "gazebo/physics/JointController.hh"
 #include "gazebo/physics/Link.hh"
 #include "gazebo/physics/PlantBridge.hh"
 #include "gazebo/physics/World.hh"
@@ -78,7 +79,7 @@ JointPtr Model::GetJoint(const std::string& name)
     gzerr << "Model [" << GetName() << "] has no movable joint [" << name << "]" << std::endl;
     return JointPtr();
   }
-  JointPtr joint(new Joint(bare, std::move(bridge)));
+  JointPtr joint(new Joint(bare, std::move(bridge), GetName()));
   joints_by_name_[bare] = joint;
   return joint;
 }
@@ -93,6 +94,21 @@ const Joint_V& Model::GetJoints() const
       joints_.push_back(joint);
   }
   return joints_;
+}
+void Model::SetWorldPose(const ignition::math::Pose3d& pose, bool /*notify*/, bool /*publish*/)
+{
+  bridge_->setWorldPose(pose);
+}
+
+bool Model::IsStatic() const { return false; }
+
+unsigned int Model::GetJointCount() const { return static_cast<unsigned int>(GetJoints().size()); }
+
+JointControllerPtr Model::GetJointController()
+{
+  if (!joint_controller_)
+    joint_controller_.reset(new JointController(shared_from_this()));
+  return joint_controller_;
 }
 }  // namespace physics
 }  // namespace gazebo

@@ -180,6 +180,73 @@ void ContextModel::addLinkWrench(const std::string& link, const ignition::math::
     context->log().warn(reach_->label + ": a non-finite force or torque on link '" + link + "' is ignored");
 }
 
+void ContextModel::addedLinkWrench(const std::string& link, ignition::math::Vector3d& force,
+                                   ignition::math::Vector3d& torque) const
+{
+  urdf::Vector3 f, t;
+  if (ModelPluginContext* context = reach("WorldForce"))
+    context->addedLinkWrench(link, f, t);
+  force = toIgnition(f);
+  torque = toIgnition(t);
+}
+
+ignition::math::Vector3d ContextModel::bodyCentreOfMass(const std::string& link) const
+{
+  ModelPluginContext* context = reach("WorldCoGPose");
+  return context ? toIgnition(context->bodyCentreOfMass(link)) : ignition::math::Vector3d::Zero;
+}
+
+gazebo::physics::LinkInertia ContextModel::linkInertia(const std::string& link) const
+{
+  gazebo::physics::LinkInertia inertia;
+  ModelPluginContext* context = reach("GetInertial");
+  if (!context)
+    return inertia;
+  const urdf::LinkConstSharedPtr l = context->robotDescription().model->getLink(link);
+  if (!l || !l->inertial)
+    return inertia;
+  const urdf::Inertial& i = *l->inertial;
+  inertia.mass = i.mass;
+  inertia.pose = {i.origin.position.x, i.origin.position.y, i.origin.position.z, i.origin.rotation.w,
+                  i.origin.rotation.x, i.origin.rotation.y, i.origin.rotation.z};
+  inertia.ixx = i.ixx;
+  inertia.iyy = i.iyy;
+  inertia.izz = i.izz;
+  inertia.ixy = i.ixy;
+  inertia.ixz = i.ixz;
+  inertia.iyz = i.iyz;
+  return inertia;
+}
+
+std::vector<std::string> ContextModel::linkJoints(const std::string& link, bool parent_side) const
+{
+  std::vector<std::string> names;
+  double position, velocity;
+  if (ModelPluginContext* context = reach(parent_side ? "GetParentJoints" : "GetChildJoints"))
+    for (const auto& joint : context->robotDescription().model->joints_)
+      if ((parent_side ? joint.second->child_link_name : joint.second->parent_link_name) == link &&
+          context->jointState(joint.first, position, velocity))
+        names.push_back(joint.first);
+  return names;
+}
+
+void ContextModel::setWorldPose(const ignition::math::Pose3d& pose)
+{
+  ModelPluginContext* context = reach("SetWorldPose");
+  if (!context)
+    return;
+  const ignition::math::Quaterniond& q = pose.Rot();
+  if (!finite(pose.Pos()) || !std::isfinite(q.W() + q.X() + q.Y() + q.Z()))
+  {
+    context->log().warn(reach_->label + ": a non-finite pose is ignored");
+    return;
+  }
+  urdf::Pose p;
+  p.position = toUrdf(pose.Pos());
+  p.rotation = urdf::Rotation(q.X(), q.Y(), q.Z(), q.W());
+  context->setLinkWorldPose(context->rootLink(), p);
+}
+
 std::unique_ptr<gazebo::physics::JointBridge> ContextModel::joint(const std::string& name)
 {
   double position, velocity;

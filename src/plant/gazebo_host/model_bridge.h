@@ -38,6 +38,12 @@ public:
   void setVelocity(const ignition::math::Vector3d& linear, const ignition::math::Vector3d& angular) override;
   void addLinkWrench(const std::string& link, const ignition::math::Vector3d& force,
                      const ignition::math::Vector3d& torque) override;
+  void addedLinkWrench(const std::string& link, ignition::math::Vector3d& force,
+                       ignition::math::Vector3d& torque) const override;
+  ignition::math::Vector3d bodyCentreOfMass(const std::string& link) const override;
+  gazebo::physics::LinkInertia linkInertia(const std::string& link) const override;
+  std::vector<std::string> linkJoints(const std::string& link, bool parent_side) const override;
+  void setWorldPose(const ignition::math::Pose3d& pose) override;
   std::unique_ptr<gazebo::physics::JointBridge> joint(const std::string& name) override;
 
 private:

@@ -88,6 +88,14 @@ void RobotModelPluginContext::addedLinkWrench(const std::string& link, urdf::Vec
   torque = fromBullet(body == 0 ? mb.getBaseTorque() : mb.getLinkTorque(body - 1));
 }
 
+urdf::Vector3 RobotModelPluginContext::bodyCentreOfMass(const std::string& link) const
+{
+  auto it = robot_.multibody.link_in_body.find(link);
+  if (it == robot_.multibody.link_in_body.end())
+    return urdf::Vector3();
+  return fromBullet(robot_.multibody.bodyWorldTransform(it->second.first).getOrigin());
+}
+
 bool RobotModelPluginContext::setJointPosition(const std::string& joint, double position)
 {
   if (!robot_.multibody.joint_index.count(joint) || !std::isfinite(position))

@@ -26,6 +26,7 @@ public:
   uint32_t noiseSeed(const ModelPluginDescription& plugin) const override;
   void addLinkWrench(const std::string& link, const urdf::Vector3& force, const urdf::Vector3& torque) override;
   void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const override;
+  urdf::Vector3 bodyCentreOfMass(const std::string& link) const override;
   bool setJointPosition(const std::string& joint, double position) override;
   void setLinkWorldPose(const std::string& link, const urdf::Pose& pose) override;
   void setPhysicsEnabled(bool enabled) override;

@@ -1,6 +1,7 @@
 """A user's Gazebo model plugin (test/fixtures/gazebo_plugin_pkg's libpush_model.so, found on the
 library path) hosted by the plant from Python: two carts, one pushed along x at 0.3 m/s with its top
-spun at 2 rad/s, one lifted by twice its weight, and one naming a library that is no Gazebo plugin
+spun at 2 rad/s, one lifted by twice its weight, one whose joint its model's joint controller holds
+at 1 rad, one floating and pushed off its centre, and one naming a library that is no Gazebo plugin
 (the C maths library: it loads, but has no RegisterPlugin); 1 s of simulated time, then reset_world
 (the plugins' Reset writes their counts to the report files). Prints the carts' motion as JSON."""
 import json
@@ -38,17 +39,23 @@ def main(report_dir):
     lifted = world.spawn(CART % ('<pushed>base</pushed><lift>43.164</lift><report>%s/lifted.txt</report>' % report_dir),
                          'lifted_cart', pose=[0.0, 2.0, 0.06, 0, 0, 0])
     broken = world.spawn(CART.replace('libpush_model.so', NOT_A_PLUGIN) % '', 'broken_cart', pose=[0.0, 4.0, 0.5, 0, 0, 0])
-    start = {'pushed': list(pushed.base_pose()), 'lifted': list(lifted.base_pose()), 'broken': list(broken.base_pose())}
+    held = world.spawn(CART % '<joint>spin_joint</joint><target>1.0</target>', 'held_cart', pose=[0.0, 6.0, 0.06, 0, 0, 0])
+    # floating (its weight lifted), pushed along x at a point 0.15 m to its left: it turns right
+    twisted = world.spawn(CART % '<pushed>base</pushed><lift>21.56</lift><push_at>0 0.15 0</push_at>'
+                          '<push_force>0.5 0 0</push_force>', 'twisted_cart', pose=[0.0, 8.0, 1.0, 0, 0, 0])
+    carts = {'pushed': pushed, 'lifted': lifted, 'broken': broken, 'twisted': twisted}
+    start = {name: list(cart.base_pose()) for name, cart in carts.items()}
     world.step(int(round(1.0 / world.time_step)))
-    end = {'pushed': list(pushed.base_pose()), 'lifted': list(lifted.base_pose()), 'broken': list(broken.base_pose())}
+    end = {name: list(cart.base_pose()) for name, cart in carts.items()}
     spin = list(pushed.joint_state('spin_joint'))
+    held_at = list(held.joint_state('spin_joint'))
     world.reset_world()
     reports = {}
     for name in ('pushed', 'lifted'):
         with open('%s/%s.txt' % (report_dir, name)) as f:
             reports[name] = f.read().split()
-    print(json.dumps({'start': start, 'end': end, 'spin': spin, 'reports': reports, 'messages': world.messages()},
-                     default=list))
+    print(json.dumps({'start': start, 'end': end, 'spin': spin, 'held': held_at, 'reports': reports,
+                      'messages': world.messages()}, default=list))
 
 
 if __name__ == '__main__':

@@ -23,11 +23,13 @@ class GZ_PHYSICS_VISIBLE Joint
 {
 public:
   // A model's joint.
-  Joint(const std::string& name, std::unique_ptr<JointBridge> bridge);
+  Joint(const std::string& name, std::unique_ptr<JointBridge> bridge, const std::string& model_name);
   // A joint made at run time, of `type`, belonging to `model`, in the world of `world`.
   Joint(const std::string& type, ModelPtr model, std::shared_ptr<WorldBridge> world);
   ~Joint();
   std::string GetName() const;
+  // MODEL::JOINT (the world's name first where asked, as Gazebo's).
+  std::string GetScopedName(bool prependWorldName = false) const;
   void SetName(const std::string& name);
   // Axis 0; another axis is 0 with one error naming the joint.
   double Position(unsigned int index = 0) const;
@@ -58,7 +60,7 @@ private:
   bool axisZero(unsigned int index, const char* call) const;
   // A model's joint answers through its bridge; a joint made at run time has none.
   bool modelJoint(const char* call) const;
-  std::string name_, type_;
+  std::string name_, type_, model_name_;
   std::unique_ptr<JointBridge> bridge_;
   std::shared_ptr<WorldBridge> world_;
   ModelPtr model_;

@@ -37,6 +37,23 @@ public:
   // At the centre of mass, the link's axes.
   void AddRelativeForce(const ignition::math::Vector3d& force);
   void AddRelativeTorque(const ignition::math::Vector3d& torque);
+  // A force in world axes at a point of the link: given in the link frame, or in the world.
+  void AddForceAtRelativePosition(const ignition::math::Vector3d& force, const ignition::math::Vector3d& position);
+  void AddForceAtWorldPosition(const ignition::math::Vector3d& force, const ignition::math::Vector3d& position);
+  // The force (torque) on the link for the coming step made `force`, whatever was added so far.
+  void SetForce(const ignition::math::Vector3d& force);
+  void SetTorque(const ignition::math::Vector3d& torque);
+  // What has been added for the coming step (world axes; the torque about the centre of mass):
+  // neither gravity nor contacts, as in Gazebo's ODE.
+  ignition::math::Vector3d WorldForce() const;
+  ignition::math::Vector3d WorldTorque() const;
+  // The centre of mass where forces act (of the link and the links fixed to it), the link's axes.
+  ignition::math::Pose3d WorldCoGPose() const;
+  // The link's own <inertial>; a copy.
+  InertialPtr GetInertial() const;
+  // The movable joints whose child, or whose parent, the link is.
+  Joint_V GetParentJoints() const;
+  Joint_V GetChildJoints() const;
 
 private:
   friend class Model;  // which names itself their model once it is held

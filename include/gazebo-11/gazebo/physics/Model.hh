@@ -43,6 +43,14 @@ public:
   // model lacks or a fixed one.
   JointPtr GetJoint(const std::string& name);
   const Joint_V& GetJoints() const;
+  unsigned int GetJointCount() const;
+  // The model moved so that its canonical link is at `pose` (world), its joints as they are, at
+  // rest; nothing for a model fixed to the world.
+  void SetWorldPose(const ignition::math::Pose3d& pose, bool notify = true, bool publish = true);
+  // False: a model that moves (a static model of the world is scenery here, not a Model).
+  bool IsStatic() const;
+  // The model's joint controller, made at the first call (its joints by scoped name).
+  JointControllerPtr GetJointController();
 
 private:
   friend class World;  // which keeps one Model for each of the simulator's models
@@ -52,6 +60,7 @@ private:
   WorldPtr world_;
   Link_V links_;
   mutable Joint_V joints_;
+  JointControllerPtr joint_controller_;
   std::map<std::string, JointPtr> joints_by_name_;
 };
 }  // namespace physics

@@ -34,6 +34,15 @@ public:
   virtual double upperLimit() const = 0;
 };
 
+// A link's own <inertial>, as its model gives it: the mass, the centre of mass and the inertia's
+// axes in the link frame, and the inertia about it in those axes.
+struct LinkInertia
+{
+  double mass = 0.0;
+  ignition::math::Pose3d pose;
+  double ixx = 0.0, iyy = 0.0, izz = 0.0, ixy = 0.0, ixz = 0.0, iyz = 0.0;
+};
+
 class ModelBridge
 {
 public:
@@ -50,6 +59,17 @@ public:
   // A force at the link's centre of mass and a torque, for the coming step.
   virtual void addLinkWrench(const std::string& link, const ignition::math::Vector3d& force,
                              const ignition::math::Vector3d& torque) = 0;
+  // What has been added to the link's body for the coming step so far (world axes, the torque about
+  // its centre of mass), and where that centre is (world): the link's body holds the links fixed
+  // to it, as Gazebo lumps them.
+  virtual void addedLinkWrench(const std::string& link, ignition::math::Vector3d& force,
+                               ignition::math::Vector3d& torque) const = 0;
+  virtual ignition::math::Vector3d bodyCentreOfMass(const std::string& link) const = 0;
+  virtual LinkInertia linkInertia(const std::string& link) const = 0;
+  // The movable joints whose child (`parent_side` false: whose parent) the link is.
+  virtual std::vector<std::string> linkJoints(const std::string& link, bool parent_side) const = 0;
+  // The model moved so that its canonical link is at `pose` (world), joints as they are, at rest.
+  virtual void setWorldPose(const ignition::math::Pose3d& pose) = 0;
   // Null for a joint the model lacks or a fixed one.
   virtual std::unique_ptr<JointBridge> joint(const std::string& name) = 0;
 };

@@ -1,7 +1,9 @@
 // Gazebo's physics library, as a plugin includes it whole: the world, its physics engine, models, links and joints.
 #pragma once
 
+#include "gazebo/physics/Inertial.hh"
 #include "gazebo/physics/Joint.hh"
+#include "gazebo/physics/JointController.hh"
 #include "gazebo/physics/Link.hh"
 #include "gazebo/physics/Model.hh"
 #include "gazebo/physics/PhysicsEngine.hh"
