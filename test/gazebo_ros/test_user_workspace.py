@@ -145,9 +145,12 @@ def test_a_package_with_its_own_gazebo_plugin_builds_on_the_install_space_with_g
     assert abs(motion['spin'][1] - 2.0) < 0.05, motion  # Joint::SetVelocity(0, 2.0)
     lifted_z = motion['end']['lifted'][2] - motion['start']['lifted'][2]
     assert 4.0 < lifted_z < 5.5, motion  # Link::AddForce of twice its weight: up at g, 4.9 m in 1 s
-    steps, last, world_time, name, mass = motion['reports']['pushed']
+    steps, last, world_time, name, mass, _, effort_limit = motion['reports']['pushed']
     assert int(steps) == 1000 and abs(float(last) - 0.999) < 1e-9 and name == 'pushed_cart', motion['reports']
     assert float(mass) == 2.0, motion['reports']  # Link::GetInertial: the base link's own <inertial>
+    assert float(effort_limit) == -1.0, motion['reports']  # GetEffortLimit: the continuous joint gives none
+    # SetParam("fmax", 0.5) and ("vel", 1.5): the joint's motor turns it at 1.5 rad/s (GetParam says so)
+    assert abs(motion['motor'][1] - 1.5) < 0.01 and float(motion['reports']['motored'][5]) == 1.5, motion
     # The model's joint controller (JointController, common::PID) holds the joint at its 1 rad target.
     assert abs(motion['held'][0] - 1.0) < 0.02 and abs(motion['held'][1]) < 0.05, motion['held']
     # 0.5 N along x at 0.15 m to the left of the floating cart's centre of mass: it moves 0.11 m

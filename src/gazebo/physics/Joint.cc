@@ -2,6 +2,8 @@
 // joint made at run time over its WorldBridge.
 #include "gazebo/physics/Joint.hh"
 
+#include <cmath>
+
 #include "gazebo/common/Console.hh"
 #include "gazebo/physics/Link.hh"
 #include "gazebo/physics/Model.hh"
@@ -11,8 +13,9 @@ namespace gazebo
 {
 namespace physics
 {
-Joint::Joint(const std::string& name, std::unique_ptr<JointBridge> bridge, const std::string& model_name)
-  : name_(name), model_name_(model_name), bridge_(std::move(bridge))
+Joint::Joint(const std::string& name, std::unique_ptr<JointBridge> bridge, const std::string& model_name, LinkPtr parent,
+             LinkPtr child)
+  : name_(name), model_name_(model_name), bridge_(std::move(bridge)), parent_(std::move(parent)), child_(std::move(child))
 {
   lower_ = bridge_->lowerLimit();
   upper_ = bridge_->upperLimit();
@@ -108,6 +111,98 @@ void Joint::SetUpperLimit(unsigned int index, double limit)
            << "its upper limit stays " << upper_ << std::endl;
   else
     upper_ = limit;
+}
+
+double Joint::GetEffortLimit(unsigned int index)
+{
+  if (!axisZero(index, "GetEffortLimit") || !bridge_)
+    return -1.0;
+  const double limit = bridge_->effortLimit();
+  return std::isfinite(limit) ? limit : -1.0;
+}
+
+double Joint::GetVelocityLimit(unsigned int index)
+{
+  if (!axisZero(index, "GetVelocityLimit") || !bridge_)
+    return -1.0;
+  const double limit = bridge_->velocityLimit();
+  return std::isfinite(limit) ? limit : -1.0;
+}
+
+namespace
+{
+// A number from what plugins pass SetParam: double, float, int, unsigned or bool, as Gazebo casts.
+bool number(const boost::any& value, double& out)
+{
+  if (const double* d = boost::any_cast<double>(&value))
+    out = *d;
+  else if (const float* f = boost::any_cast<float>(&value))
+    out = *f;
+  else if (const int* i = boost::any_cast<int>(&value))
+    out = *i;
+  else if (const unsigned int* u = boost::any_cast<unsigned int>(&value))
+    out = *u;
+  else if (const bool* b = boost::any_cast<bool>(&value))
+    out = *b ? 1.0 : 0.0;
+  else
+    return false;
+  return true;
+}
+}  // namespace
+
+bool Joint::SetParam(const std::string& key, unsigned int index, const boost::any& value)
+{
+  double v = 0.0;
+  if (!axisZero(index, "SetParam"))
+    return false;
+  if (!number(value, v) || !std::isfinite(v))
+  {
+    gzerr << "Joint::SetParam(\"" << key << "\") on joint [" << name_ << "]: not a finite number" << std::endl;
+    return false;
+  }
+  if ((key == "vel" || key == "fmax") && modelJoint("SetParam"))
+  {
+    const bool set = key == "vel" ? bridge_->setMotorVelocity(v) : bridge_->setMotorMaxForce(v);
+    if (set)
+      (key == "vel" ? motor_velocity_ : motor_max_force_) = v;
+    return set;
+  }
+  gzwarn << "Joint::SetParam(\"" << key << "\") on joint [" << name_ << "]: not simulated by the plant "
+         << "(\"vel\" and \"fmax\" are; the limits and friction are the model's)" << std::endl;
+  return false;
+}
+
+double Joint::GetParam(const std::string& key, unsigned int index)
+{
+  if (!axisZero(index, "GetParam"))
+    return 0.0;
+  if (key == "vel")
+    return motor_velocity_;
+  if (key == "fmax")
+    return motor_max_force_;
+  if (key == "hi_stop")
+    return UpperLimit(0);
+  if (key == "lo_stop")
+    return LowerLimit(0);
+  gzerr << "Joint::GetParam(\"" << key << "\") on joint [" << name_ << "]: not a parameter the plant keeps"
+        << std::endl;
+  return 0.0;
+}
+
+JointWrench Joint::GetForceTorque(unsigned int index)
+{
+  JointWrench wrench;
+  if (!axisZero(index, "GetForceTorque") || !modelJoint("GetForceTorque"))
+    return wrench;
+  bridge_->childWrench(wrench.body2Force, wrench.body2Torque);
+  if (parent_ && child_)
+  {
+    // The reaction on the parent, turned into the parent link's axes.
+    const ignition::math::Quaterniond child_in_parent = parent_->WorldPose().Rot().Inverse() * child_->WorldPose().Rot();
+    wrench.body1Force = -child_in_parent.RotateVector(wrench.body2Force);
+    wrench.body1Torque = -child_in_parent.RotateVector(wrench.body2Torque);
+  }
+  return wrench;
 }
 
 void Joint::Load(LinkPtr parent, LinkPtr child, const ignition::math::Pose3d& /*pose*/)

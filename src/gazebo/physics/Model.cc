@@ -79,7 +79,8 @@ JointPtr Model::GetJoint(const std::string& name)
     gzerr << "Model [" << GetName() << "] has no movable joint [" << name << "]" << std::endl;
     return JointPtr();
   }
-  JointPtr joint(new Joint(bare, std::move(bridge), GetName()));
+  const std::string parent = bridge->parentLink(), child = bridge->childLink();
+  JointPtr joint(new Joint(bare, std::move(bridge), GetName(), GetLink(parent), GetLink(child)));
   joints_by_name_[bare] = joint;
   return joint;
 }

@@ -59,6 +59,54 @@ public:
   }
   double lowerLimit() const override { return limit(false); }
   double upperLimit() const override { return limit(true); }
+  double effortLimit() const override
+  {
+    const auto joint = urdfJoint();
+    return joint && joint->limits && joint->limits->effort > 0 ? joint->limits->effort
+                                                               : std::numeric_limits<double>::infinity();
+  }
+  double velocityLimit() const override
+  {
+    const auto joint = urdfJoint();
+    return joint && joint->limits && joint->limits->velocity > 0 ? joint->limits->velocity
+                                                                 : std::numeric_limits<double>::infinity();
+  }
+  std::string parentLink() const override
+  {
+    const auto joint = urdfJoint();
+    return joint ? joint->parent_link_name : "";
+  }
+  std::string childLink() const override
+  {
+    const auto joint = urdfJoint();
+    return joint ? joint->child_link_name : "";
+  }
+  bool setMotorVelocity(double velocity) override
+  {
+    ModelJoint* joint = driven();
+    if (joint)
+      joint->setVelocity(velocity);
+    return joint != nullptr;
+  }
+  bool setMotorMaxForce(double force) override
+  {
+    ModelJoint* joint = driven();
+    if (joint)
+      joint->setMaxForce(force);
+    return joint != nullptr;
+  }
+  void childWrench(ignition::math::Vector3d& force, ignition::math::Vector3d& torque) override
+  {
+    force = torque = ignition::math::Vector3d::Zero;
+    if (!reach_->context)
+      return;
+    if (!watched_)
+      watched_ = reach_->context->watchJointWrench(name_);
+    urdf::Vector3 f, t;
+    reach_->context->jointWrench(name_, f, t);
+    force = toIgnition(f);
+    torque = toIgnition(t);
+  }
 
 private:
   // The joint taken for driving at the first call that drives it (the context says once why it
@@ -74,12 +122,14 @@ private:
     }
     return joint_;
   }
+  urdf::JointConstSharedPtr urdfJoint() const
+  {
+    return reach_->context ? reach_->context->robotDescription().model->getJoint(name_) : nullptr;
+  }
   double limit(bool upper) const
   {
     const double none = upper ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
-    if (!reach_->context)
-      return none;
-    const auto joint = reach_->context->robotDescription().model->getJoint(name_);
+    const auto joint = urdfJoint();
     if (!joint || !joint->limits || joint->type == urdf::Joint::CONTINUOUS)
       return none;
     return upper ? joint->limits->upper : joint->limits->lower;
@@ -89,6 +139,7 @@ private:
   std::string name_;
   ModelJoint* joint_ = nullptr;
   bool asked_ = false;
+  bool watched_ = false;
 };
 }  // namespace
 

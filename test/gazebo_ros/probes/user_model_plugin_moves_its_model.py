@@ -1,7 +1,7 @@
 """A user's Gazebo model plugin (test/fixtures/gazebo_plugin_pkg's libpush_model.so, found on the
 library path) hosted by the plant from Python: two carts, one pushed along x at 0.3 m/s with its top
 spun at 2 rad/s, one lifted by twice its weight, one whose joint its model's joint controller holds
-at 1 rad, one floating and pushed off its centre, and one naming a library that is no Gazebo plugin
+at 1 rad, one whose joint's motor turns it at 1.5 rad/s, one floating and pushed off its centre, and one naming a library that is no Gazebo plugin
 (the C maths library: it loads, but has no RegisterPlugin); 1 s of simulated time, then reset_world
 (the plugins' Reset writes their counts to the report files). Prints the carts' motion as JSON."""
 import json
@@ -40,6 +40,9 @@ def main(report_dir):
                          'lifted_cart', pose=[0.0, 2.0, 0.06, 0, 0, 0])
     broken = world.spawn(CART.replace('libpush_model.so', NOT_A_PLUGIN) % '', 'broken_cart', pose=[0.0, 4.0, 0.5, 0, 0, 0])
     held = world.spawn(CART % '<joint>spin_joint</joint><target>1.0</target>', 'held_cart', pose=[0.0, 6.0, 0.06, 0, 0, 0])
+    motored = world.spawn(CART % ('<joint>spin_joint</joint><motor_velocity>1.5</motor_velocity><motor_force>0.5'
+                                  '</motor_force><report>%s/motored.txt</report>' % report_dir), 'motored_cart',
+                          pose=[0.0, 10.0, 0.06, 0, 0, 0])
     # floating (its weight lifted), pushed along x at a point 0.15 m to its left: it turns right
     twisted = world.spawn(CART % '<pushed>base</pushed><lift>21.56</lift><push_at>0 0.15 0</push_at>'
                           '<push_force>0.5 0 0</push_force>', 'twisted_cart', pose=[0.0, 8.0, 1.0, 0, 0, 0])
@@ -49,12 +52,13 @@ def main(report_dir):
     end = {name: list(cart.base_pose()) for name, cart in carts.items()}
     spin = list(pushed.joint_state('spin_joint'))
     held_at = list(held.joint_state('spin_joint'))
+    motor = list(motored.joint_state('spin_joint'))
     world.reset_world()
     reports = {}
-    for name in ('pushed', 'lifted'):
+    for name in ('pushed', 'lifted', 'motored'):
         with open('%s/%s.txt' % (report_dir, name)) as f:
             reports[name] = f.read().split()
-    print(json.dumps({'start': start, 'end': end, 'spin': spin, 'held': held_at, 'reports': reports,
+    print(json.dumps({'start': start, 'end': end, 'spin': spin, 'held': held_at, 'motor': motor, 'reports': reports,
                       'messages': world.messages()}, default=list))
 
 

@@ -7,8 +7,10 @@
 #include <memory>
 #include <string>
 
+#include <boost/any.hpp>
 #include <ignition/math/Pose3.hh>
 
+#include "gazebo/physics/JointWrench.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/util/system.hh"
 
@@ -22,8 +24,9 @@ class WorldBridge;
 class GZ_PHYSICS_VISIBLE Joint
 {
 public:
-  // A model's joint.
-  Joint(const std::string& name, std::unique_ptr<JointBridge> bridge, const std::string& model_name);
+  // A model's joint, between two of its links.
+  Joint(const std::string& name, std::unique_ptr<JointBridge> bridge, const std::string& model_name, LinkPtr parent,
+        LinkPtr child);
   // A joint made at run time, of `type`, belonging to `model`, in the world of `world`.
   Joint(const std::string& type, ModelPtr model, std::shared_ptr<WorldBridge> world);
   ~Joint();
@@ -42,6 +45,17 @@ public:
   // The model's limits (-inf / inf where it has none); a joint made at run time keeps what it is set.
   double LowerLimit(unsigned int index = 0) const;
   double UpperLimit(unsigned int index = 0) const;
+  // The model's <limit effort> and <limit velocity> (-1 where it gives none, as Gazebo's).
+  double GetEffortLimit(unsigned int index);
+  double GetVelocityLimit(unsigned int index);
+  // "fmax" and "vel": a motor driving the joint to the velocity with at most the force, every step
+  // until told otherwise (ODE's); "hi_stop" and "lo_stop" read the limits. Another key, or a limit
+  // or "friction" set, is one gzwarn and false.
+  bool SetParam(const std::string& key, unsigned int index, const boost::any& value);
+  double GetParam(const std::string& key, unsigned int index);
+  // What the joint passed between its links over the last step (JointWrench.hh); watched from the
+  // first call, so that call answers zeros.
+  JointWrench GetForceTorque(unsigned int index);
   void SetLowerLimit(unsigned int index, double limit);
   void SetUpperLimit(unsigned int index, double limit);
 
@@ -69,6 +83,7 @@ private:
   double lower_ = -std::numeric_limits<double>::infinity();
   double upper_ = std::numeric_limits<double>::infinity();
   bool warned_type_ = false;
+  double motor_velocity_ = 0.0, motor_max_force_ = 0.0;
 };
 }  // namespace physics
 }  // namespace gazebo

@@ -29,9 +29,21 @@ public:
   virtual bool setVelocity(double velocity) = 0;
   virtual bool setForce(double effort) = 0;
   virtual bool setPosition(double position) = 0;
-  // The joint's limits as its model gives them (-inf / inf for none).
+  // The joint's limits as its model gives them (-inf / inf for none; the effort and velocity
+  // limits inf for none).
   virtual double lowerLimit() const = 0;
   virtual double upperLimit() const = 0;
+  virtual double effortLimit() const = 0;
+  virtual double velocityLimit() const = 0;
+  virtual std::string parentLink() const = 0;
+  virtual std::string childLink() const = 0;
+  // SetParam("vel") and ("fmax"): a motor that drives the joint to the velocity with at most the
+  // force, every step until told otherwise. False as setVelocity.
+  virtual bool setMotorVelocity(double velocity) = 0;
+  virtual bool setMotorMaxForce(double force) = 0;
+  // The wrench the joint passed to its child over the last step, in the child link's frame (the
+  // torque about the joint's origin), watched from the first call on: zero until a step has run.
+  virtual void childWrench(ignition::math::Vector3d& force, ignition::math::Vector3d& torque) = 0;
 };
 
 // A link's own <inertial>, as its model gives it: the mass, the centre of mass and the inertia's
