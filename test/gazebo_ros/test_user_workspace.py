@@ -149,6 +149,8 @@ def test_a_package_with_its_own_gazebo_plugin_builds_on_the_install_space_with_g
     assert int(steps) == 1000 and abs(float(last) - 0.999) < 1e-9 and name == 'pushed_cart', motion['reports']
     assert float(mass) == 2.0, motion['reports']  # Link::GetInertial: the base link's own <inertial>
     assert float(effort_limit) == -1.0, motion['reports']  # GetEffortLimit: the continuous joint gives none
+    # The last of 50 carts spawned under one name after deletes moved by its own plugin in its 10 ms.
+    assert 0.0025 < motion['respawned_x'] < 0.0035, motion['respawned_x']
     # SetParam("fmax", 0.5) and ("vel", 1.5): the joint's motor turns it at 1.5 rad/s (GetParam says so)
     assert abs(motion['motor'][1] - 1.5) < 0.01 and float(motion['reports']['motored'][5]) == 1.5, motion
     # The model's joint controller (JointController, common::PID) holds the joint at its 1 rad target.

@@ -3,7 +3,8 @@ library path) hosted by the plant from Python: two carts, one pushed along x at 
 spun at 2 rad/s, one lifted by twice its weight, one whose joint its model's joint controller holds
 at 1 rad, one whose joint's motor turns it at 1.5 rad/s, one floating and pushed off its centre, and one naming a library that is no Gazebo plugin
 (the C maths library: it loads, but has no RegisterPlugin); 1 s of simulated time, then reset_world
-(the plugins' Reset writes their counts to the report files). Prints the carts' motion as JSON."""
+(the plugins' Reset writes their counts to the report files), then one cart deleted and spawned
+again 50 times. Prints the carts' motion as JSON."""
 import json
 import sys
 
@@ -58,7 +59,15 @@ def main(report_dir):
     for name in ('pushed', 'lifted', 'motored'):
         with open('%s/%s.txt' % (report_dir, name)) as f:
             reports[name] = f.read().split()
+    # delete_model and spawn again, 50 times: each plugin goes with its model and a new one comes
+    # with the next, which moves its own model (a plugin of a deleted model would crash the next step)
+    for _ in range(50):
+        world.remove('pushed_cart')
+        respawned = world.spawn(CART % '<speed>0.3</speed>', 'pushed_cart', pose=[0.0, 0.0, 0.06, 0, 0, 0])
+        world.step(10)
+    respawned_x = respawned.base_pose()[0]
     print(json.dumps({'start': start, 'end': end, 'spin': spin, 'held': held_at, 'motor': motor, 'reports': reports,
+                      'respawned_x': respawned_x,
                       'messages': world.messages()}, default=list))
 
 
