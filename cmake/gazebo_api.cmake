@@ -14,6 +14,7 @@ set(GAZEBO_API_MAJOR_VERSION 11)
 add_library(gazebo_common SHARED
   src/gazebo/common/Console.cc
   src/gazebo/common/Events.cc
+  src/gazebo/common/Exception.cc
   src/gazebo/common/PID.cc
   src/gazebo/common/SystemPaths.cc
   src/gazebo/common/Time.cc)

@@ -46,6 +46,11 @@ public:
       context.log().error(label + ": loading " + d.library + " threw: " + e.what() + "; the plugin is not loaded");
       return false;
     }
+    catch (...)
+    {
+      context.log().error(label + ": loading " + d.library + " threw: " + "something that is no std::exception" + "; the plugin is not loaded");
+      return false;
+    }
     if (!plugin_)
     {
       context.log().error(label + ": " + d.library + " made no plugin; the plugin is not loaded");
@@ -77,6 +82,12 @@ public:
     catch (const std::exception& e)
     {
       context.log().error(label + ": its Load threw: " + e.what() + "; the plugin is not loaded");
+      plugin_.reset();
+      return false;
+    }
+    catch (...)
+    {
+      context.log().error(label + ": its Load threw: " + "something that is no std::exception" + "; the plugin is not loaded");
       plugin_.reset();
       return false;
     }

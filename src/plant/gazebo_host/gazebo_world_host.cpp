@@ -169,6 +169,11 @@ bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
     log.error(label + ": loading " + d.library + " threw: " + e.what() + "; the world runs without it");
     return false;
   }
+  catch (...)
+  {
+    log.error(label + ": loading " + d.library + " threw: " + "something that is no std::exception" + "; the world runs without it");
+    return false;
+  }
   if (!plugin || plugin->GetType() != gazebo::WORLD_PLUGIN)
   {
     log.error(label + ": " + d.library + (plugin ? " registers a plugin that is not a world plugin; a <plugin> in "
@@ -191,6 +196,11 @@ bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
   catch (const std::exception& e)
   {
     log.error(label + ": its Load threw: " + e.what() + "; the world runs without it");
+    return false;
+  }
+  catch (...)
+  {
+    log.error(label + ": its Load threw: " + "something that is no std::exception" + "; the world runs without it");
     return false;
   }
   world_plugins_.push_back(plugin);
@@ -223,6 +233,11 @@ bool PlantGazeboHost::loadSystemPlugin(const std::string& filename, const std::v
     log.error(label + ": loading " + library + " threw: " + e.what() + "; the world runs without it");
     return false;
   }
+  catch (...)
+  {
+    log.error(label + ": loading " + library + " threw: " + "something that is no std::exception" + "; the world runs without it");
+    return false;
+  }
   if (!plugin || plugin->GetType() != gazebo::SYSTEM_PLUGIN)
   {
     log.error(label + ": " + library + (plugin ? " registers a plugin that is not a system plugin "
@@ -251,6 +266,11 @@ bool PlantGazeboHost::loadSystemPlugin(const std::string& filename, const std::v
     log.error(label + ": its Load threw: " + e.what() + "; the world runs without it");
     return false;
   }
+  catch (...)
+  {
+    log.error(label + ": its Load threw: " + "something that is no std::exception" + "; the world runs without it");
+    return false;
+  }
   system_plugins_.push_back(plugin);
   return true;
 }
@@ -271,6 +291,10 @@ void PlantGazeboHost::beginStep()
   {
     context_.log().error(std::string("a Gazebo plugin's world update callback threw: ") + e.what());
   }
+  catch (...)
+  {
+    context_.log().error(std::string("a Gazebo plugin's world update callback threw: ") + "something that is no std::exception");
+  }
 }
 
 void PlantGazeboHost::endStep()
@@ -282,6 +306,10 @@ void PlantGazeboHost::endStep()
   catch (const std::exception& e)
   {
     context_.log().error(std::string("a Gazebo plugin's world update end callback threw: ") + e.what());
+  }
+  catch (...)
+  {
+    context_.log().error(std::string("a Gazebo plugin's world update end callback threw: ") + "something that is no std::exception");
   }
   if (stepping_)
   {
@@ -303,6 +331,10 @@ void PlantGazeboHost::reset(bool simulation)
   catch (const std::exception& e)
   {
     context_.log().error(std::string("a Gazebo world plugin's Reset threw: ") + e.what());
+  }
+  catch (...)
+  {
+    context_.log().error(std::string("a Gazebo world plugin's Reset threw: ") + "something that is no std::exception");
   }
 }
 

@@ -11,6 +11,15 @@
 #include <utility>
 #include <vector>
 
+// As Gazebo's Event.hh: plugins bind their callbacks with boost::bind and its placeholders (_1 ...),
+// which they find through this header, in the global namespace as Boost put them before 1.73
+// (without the define, Boost 1.74 says it is deprecated in every file that includes it).
+#ifndef BOOST_BIND_GLOBAL_PLACEHOLDERS
+#define BOOST_BIND_GLOBAL_PLACEHOLDERS
+#endif
+#include <boost/bind.hpp>
+#include <boost/function.hpp>
+
 #include "gazebo/util/system.hh"
 
 namespace gazebo

@@ -1,9 +1,10 @@
-// Gazebo's common library, as a plugin includes it whole: time, the console, events, PID, plugins.
+// Gazebo's common library, as a plugin includes it whole: time, the console, events, exceptions, PID, plugins.
 #pragma once
 
 #include "gazebo/common/Console.hh"
 #include "gazebo/common/Event.hh"
 #include "gazebo/common/Events.hh"
+#include "gazebo/common/Exception.hh"
 #include "gazebo/common/PID.hh"
 #include "gazebo/common/Plugin.hh"
 #include "gazebo/common/SystemPaths.hh"
