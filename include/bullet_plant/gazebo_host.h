@@ -38,6 +38,9 @@ public:
   virtual ModelPluginContext* model(const std::string& name) = 0;
   virtual bool paused() const = 0;
   virtual void setPaused(bool paused) = 0;
+  // World::SetPhysicsEnabled: without physics time goes on, nothing moves unless set.
+  virtual bool physicsEnabled() const = 0;
+  virtual void setPhysicsEnabled(bool enable) = 0;
   // World::Reset: models to where they started, time to 0 (gazebo_ros's reset_simulation).
   virtual void resetSimulation() = 0;
   // A joint made at run time that holds `child_link` of `child_model` to `parent_link` of

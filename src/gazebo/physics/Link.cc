@@ -1,6 +1,7 @@
 // physics::Link (gazebo/physics/Link.hh), over its model's ModelBridge.
 #include "gazebo/physics/Link.hh"
 
+#include "gazebo/common/Console.hh"
 #include "gazebo/physics/Inertial.hh"
 #include "gazebo/physics/Joint.hh"
 #include "gazebo/physics/Model.hh"
@@ -21,6 +22,39 @@ std::string Link::GetScopedName(bool prependWorldName) const
 }
 
 ModelPtr Link::GetModel() const { return model_.lock(); }
+
+Entity::~Entity() = default;
+
+void Link::SetLinearVel(const ignition::math::Vector3d& velocity)
+{
+  if (bridge_->canonicalLink() == name_)
+    bridge_->setVelocity(velocity, WorldAngularVel());
+  else
+    gzerr << "Link::SetLinearVel on link [" << GetScopedName() << "]: the plant sets a model's velocity at its "
+          << "canonical link [" << bridge_->canonicalLink() << "] only; nothing is changed" << std::endl;
+}
+
+void Link::SetAngularVel(const ignition::math::Vector3d& velocity)
+{
+  if (bridge_->canonicalLink() == name_)
+    bridge_->setVelocity(WorldLinearVel(), velocity);
+  else
+    gzerr << "Link::SetAngularVel on link [" << GetScopedName() << "]: the plant sets a model's velocity at its "
+          << "canonical link [" << bridge_->canonicalLink() << "] only; nothing is changed" << std::endl;
+}
+
+void Link::SetGravityMode(bool mode)
+{
+  gzwarn << "Link::SetGravityMode(" << (mode ? "true" : "false") << ") on link [" << GetScopedName()
+         << "]: the plant keeps the gravity the model was built with" << std::endl;
+}
+
+void Link::SetWorldPose(const ignition::math::Pose3d& pose, bool /*notify*/, bool /*publish*/)
+{
+  bridge_->setLinkWorldPose(name_, pose);
+}
+
+bool Link::GetGravityMode() const { return bridge_->linkGravity(name_); }
 
 ignition::math::Pose3d Link::WorldPose() const { return bridge_->linkPose(name_); }
 

@@ -98,7 +98,24 @@ const Joint_V& Model::GetJoints() const
 }
 void Model::SetWorldPose(const ignition::math::Pose3d& pose, bool /*notify*/, bool /*publish*/)
 {
-  bridge_->setWorldPose(pose);
+  bridge_->setLinkWorldPose(bridge_->canonicalLink(), pose);
+}
+
+void Model::SetLinkWorldPose(const ignition::math::Pose3d& pose, std::string link)
+{
+  const LinkPtr found = GetLink(link);
+  if (!found)
+  {
+    gzerr << "Model::SetLinkWorldPose: model [" << GetName() << "] has no link [" << link << "]" << std::endl;
+    return;
+  }
+  SetLinkWorldPose(pose, found);
+}
+
+void Model::SetLinkWorldPose(const ignition::math::Pose3d& pose, const LinkPtr& link)
+{
+  if (link)
+    bridge_->setLinkWorldPose(link->GetName(), pose);
 }
 
 bool Model::IsStatic() const { return false; }

@@ -1,6 +1,7 @@
 // physics::World (gazebo/physics/World.hh), over the simulator's WorldBridge.
 #include "gazebo/physics/World.hh"
 
+#include "gazebo/physics/Link.hh"
 #include "gazebo/physics/Model.hh"
 #include "gazebo/physics/PhysicsEngine.hh"
 #include "gazebo/physics/PlantBridge.hh"
@@ -56,9 +57,24 @@ Model_V World::Models() const
   return models;
 }
 
+EntityPtr World::EntityByName(const std::string& name) const
+{
+  if (ModelPtr model = ModelByName(name))
+    return model;
+  const size_t split = name.rfind("::");
+  if (split == std::string::npos)
+    return EntityPtr();
+  const ModelPtr model = ModelByName(name.substr(0, split));
+  return model ? EntityPtr(model->GetLink(name.substr(split + 2))) : EntityPtr();
+}
+
 unsigned int World::ModelCount() const { return static_cast<unsigned int>(bridge_->modelNames().size()); }
 
 void World::SetPaused(bool paused) { bridge_->setPaused(paused); }
+
+bool World::PhysicsEnabled() const { return bridge_->physicsEnabled(); }
+
+void World::SetPhysicsEnabled(bool enable) { bridge_->setPhysicsEnabled(enable); }
 
 bool World::IsPaused() const { return bridge_->paused(); }
 

@@ -41,6 +41,8 @@ public:
   std::shared_ptr<gazebo::physics::ModelBridge> model(const std::string& name) override { return host_.modelBridge(name); }
   bool paused() const override { return context_.paused(); }
   void setPaused(bool paused) override { context_.setPaused(paused); }
+  bool physicsEnabled() const override { return context_.physicsEnabled(); }
+  void setPhysicsEnabled(bool enable) override { context_.setPhysicsEnabled(enable); }
   void reset() override { context_.resetSimulation(); }
   int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
              const std::string& child_link) override

@@ -269,6 +269,16 @@ gazebo::physics::LinkInertia ContextModel::linkInertia(const std::string& link) 
   return inertia;
 }
 
+bool ContextModel::linkGravity(const std::string& link) const
+{
+  ModelPluginContext* context = reach("GetGravityMode");
+  if (!context)
+    return true;
+  const auto& physics = context->robotDescription().link_physics;
+  auto found = physics.find(link);
+  return found == physics.end() || found->second.gravity;
+}
+
 std::vector<std::string> ContextModel::linkJoints(const std::string& link, bool parent_side) const
 {
   std::vector<std::string> names;
@@ -281,7 +291,7 @@ std::vector<std::string> ContextModel::linkJoints(const std::string& link, bool 
   return names;
 }
 
-void ContextModel::setWorldPose(const ignition::math::Pose3d& pose)
+void ContextModel::setLinkWorldPose(const std::string& link, const ignition::math::Pose3d& pose)
 {
   ModelPluginContext* context = reach("SetWorldPose");
   if (!context)
@@ -295,7 +305,7 @@ void ContextModel::setWorldPose(const ignition::math::Pose3d& pose)
   urdf::Pose p;
   p.position = toUrdf(pose.Pos());
   p.rotation = urdf::Rotation(q.X(), q.Y(), q.Z(), q.W());
-  context->setLinkWorldPose(context->rootLink(), p);
+  context->setLinkWorldPose(link, p);
 }
 
 std::unique_ptr<gazebo::physics::JointBridge> ContextModel::joint(const std::string& name)

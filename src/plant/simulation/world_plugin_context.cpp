@@ -52,6 +52,10 @@ bool PlantWorldPluginContext::paused() const { return world_.paused(); }
 
 void PlantWorldPluginContext::setPaused(bool paused) { world_.setPaused(paused); }
 
+bool PlantWorldPluginContext::physicsEnabled() const { return w_.physics_enabled; }
+
+void PlantWorldPluginContext::setPhysicsEnabled(bool enable) { w_.physics_enabled = enable; }
+
 void PlantWorldPluginContext::resetSimulation() { world_.resetSimulation(); }
 
 int PlantWorldPluginContext::attach(const std::string& parent_model, const std::string& parent_link,

@@ -29,6 +29,8 @@ public:
   ModelPluginContext* model(const std::string& name) override;
   bool paused() const override;
   void setPaused(bool paused) override;
+  bool physicsEnabled() const override;
+  void setPhysicsEnabled(bool enable) override;
   void resetSimulation() override;
   int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
              const std::string& child_link) override;

@@ -9,6 +9,7 @@
 #include <ignition/math/Pose3.hh>
 #include <ignition/math/Vector3.hh>
 
+#include "gazebo/physics/Entity.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/util/system.hh"
 
@@ -18,17 +19,29 @@ namespace physics
 {
 class ModelBridge;
 
-class GZ_PHYSICS_VISIBLE Link
+class GZ_PHYSICS_VISIBLE Link : public Entity
 {
 public:
   Link(const std::string& name, std::shared_ptr<ModelBridge> bridge);
-  std::string GetName() const;
-  std::string GetScopedName(bool prependWorldName = false) const;
+  std::string GetName() const override;
+  std::string GetScopedName(bool prependWorldName = false) const override;
   // Null once its model has left the world and no one holds it.
   ModelPtr GetModel() const;
-  ignition::math::Pose3d WorldPose() const;
-  ignition::math::Vector3d WorldLinearVel() const;
-  ignition::math::Vector3d WorldAngularVel() const;
+  ModelPtr GetParentModel() const { return GetModel(); }
+  // The pose the physics left it at: its world pose (Gazebo's, read from a world update callback).
+  ignition::math::Pose3d DirtyPose() const { return WorldPose(); }
+  // The canonical link's velocity set as Model::SetLinearVel / SetAngularVel sets it; another
+  // link's is one gzerr (the plant sets a model's velocity at its canonical link only).
+  void SetLinearVel(const ignition::math::Vector3d& velocity);
+  void SetAngularVel(const ignition::math::Vector3d& velocity);
+  // The model moved so that the link is at `pose` (world), its joints as they are, at rest.
+  void SetWorldPose(const ignition::math::Pose3d& pose, bool notify = true, bool publish = true);
+  // Whether gravity pulls it: its model's <gravity>, as built; setting it is one gzwarn.
+  void SetGravityMode(bool mode);
+  bool GetGravityMode() const;
+  ignition::math::Pose3d WorldPose() const override;
+  ignition::math::Vector3d WorldLinearVel() const override;
+  ignition::math::Vector3d WorldAngularVel() const override;
   ignition::math::Vector3d RelativeLinearVel() const;
   ignition::math::Vector3d RelativeAngularVel() const;
   // At the centre of mass, world axes.

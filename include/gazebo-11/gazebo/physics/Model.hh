@@ -10,6 +10,7 @@
 #include <ignition/math/Pose3.hh>
 #include <ignition/math/Vector3.hh>
 
+#include "gazebo/physics/Entity.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/util/system.hh"
 
@@ -19,16 +20,16 @@ namespace physics
 {
 class ModelBridge;
 
-class GZ_PHYSICS_VISIBLE Model : public boost::enable_shared_from_this<Model>
+class GZ_PHYSICS_VISIBLE Model : public Entity, public boost::enable_shared_from_this<Model>
 {
 public:
   Model(std::shared_ptr<ModelBridge> bridge, WorldPtr world);
-  std::string GetName() const;
-  std::string GetScopedName(bool prependWorldName = false) const;
+  std::string GetName() const override;
+  std::string GetScopedName(bool prependWorldName = false) const override;
   WorldPtr GetWorld() const;
-  ignition::math::Pose3d WorldPose() const;
-  ignition::math::Vector3d WorldLinearVel() const;
-  ignition::math::Vector3d WorldAngularVel() const;
+  ignition::math::Pose3d WorldPose() const override;
+  ignition::math::Vector3d WorldLinearVel() const override;
+  ignition::math::Vector3d WorldAngularVel() const override;
   ignition::math::Vector3d RelativeLinearVel() const;
   ignition::math::Vector3d RelativeAngularVel() const;
   // The canonical link moves with this velocity from now on, its angular velocity kept (and the
@@ -47,6 +48,9 @@ public:
   // The model moved so that its canonical link is at `pose` (world), its joints as they are, at
   // rest; nothing for a model fixed to the world.
   void SetWorldPose(const ignition::math::Pose3d& pose, bool notify = true, bool publish = true);
+  // The model moved so that the link (by name or handle) is at `pose` (world), as SetWorldPose.
+  void SetLinkWorldPose(const ignition::math::Pose3d& pose, std::string link);
+  void SetLinkWorldPose(const ignition::math::Pose3d& pose, const LinkPtr& link);
   // False: a model that moves (a static model of the world is scenery here, not a Model).
   bool IsStatic() const;
   // The model's joint controller, made at the first call (its joints by scoped name).

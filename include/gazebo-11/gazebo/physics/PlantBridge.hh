@@ -78,10 +78,12 @@ public:
                                ignition::math::Vector3d& torque) const = 0;
   virtual ignition::math::Vector3d bodyCentreOfMass(const std::string& link) const = 0;
   virtual LinkInertia linkInertia(const std::string& link) const = 0;
+  // Whether gravity pulls the link (its model's <gravity>).
+  virtual bool linkGravity(const std::string& link) const = 0;
   // The movable joints whose child (`parent_side` false: whose parent) the link is.
   virtual std::vector<std::string> linkJoints(const std::string& link, bool parent_side) const = 0;
-  // The model moved so that its canonical link is at `pose` (world), joints as they are, at rest.
-  virtual void setWorldPose(const ignition::math::Pose3d& pose) = 0;
+  // The model moved so that `link` is at `pose` (world), joints as they are, at rest.
+  virtual void setLinkWorldPose(const std::string& link, const ignition::math::Pose3d& pose) = 0;
   // Null for a joint the model lacks or a fixed one.
   virtual std::unique_ptr<JointBridge> joint(const std::string& name) = 0;
 };
@@ -104,6 +106,8 @@ public:
   virtual std::shared_ptr<ModelBridge> model(const std::string& name) = 0;
   virtual bool paused() const = 0;
   virtual void setPaused(bool paused) = 0;
+  virtual bool physicsEnabled() const = 0;
+  virtual void setPhysicsEnabled(bool enable) = 0;
   virtual void reset() = 0;
   // A joint made at run time holding the child link to the parent link where they are now: an id
   // for detach, or -1 (the simulator says why).

@@ -34,9 +34,15 @@ public:
   // The model of that name (its scoped name too), the same handle each time; null for none.
   ModelPtr ModelByName(const std::string& name) const;
   Model_V Models() const;
+  // A model by name, or a link by its scoped name (MODEL::LINK); null for neither.
+  EntityPtr EntityByName(const std::string& name) const;
   unsigned int ModelCount() const;
   void SetPaused(bool paused);
   bool IsPaused() const;
+  // Without physics time goes on and plugins, controllers and sensors run, but nothing moves unless
+  // set (gazebo_ros_joint_pose_trajectory turns it off while it sets poses).
+  bool PhysicsEnabled() const;
+  void SetPhysicsEnabled(bool enable);
   // The simulation back to its start (models where they came, time 0), as gazebo_ros's
   // reset_simulation.
   void Reset();

@@ -1,6 +1,7 @@
 // Gazebo's physics library, as a plugin includes it whole: the world, its physics engine, models, links and joints.
 #pragma once
 
+#include "gazebo/physics/Entity.hh"
 #include "gazebo/physics/Inertial.hh"
 #include "gazebo/physics/Joint.hh"
 #include "gazebo/physics/JointController.hh"
