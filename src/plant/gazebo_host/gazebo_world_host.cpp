@@ -16,44 +16,73 @@
 namespace bullet_plant
 {
 // physics::World's side in the plant: the world's context, and the models' bridges the host keeps.
+// Joints a plugin made hold it too, and may outlive the host (a model plugin's, destroyed with its
+// robot after the world's host): released with the host, it answers nothing and changes nothing.
 class HostWorld final : public gazebo::physics::WorldBridge
 {
 public:
-  explicit HostWorld(PlantGazeboHost& host) : host_(host), context_(host.context()) {}
+  explicit HostWorld(PlantGazeboHost& host) : host_(&host), context_(&host.context()) {}
+  void release()
+  {
+    host_ = nullptr;
+    context_ = nullptr;
+  }
 
-  std::string name() const override { return context_.worldName(); }
+  std::string name() const override { return context_ ? context_->worldName() : ""; }
   gazebo::common::Time simTime() const override
   {
-    const int64_t ns = context_.timeNs();
+    const int64_t ns = context_ ? context_->timeNs() : 0;
     return gazebo::common::Time(static_cast<int32_t>(ns / 1000000000), static_cast<int32_t>(ns % 1000000000));
   }
   ignition::math::Vector3d gravity() const override
   {
-    const urdf::Vector3 g = context_.gravity();
+    const urdf::Vector3 g = context_ ? context_->gravity() : urdf::Vector3();
     return {g.x, g.y, g.z};
   }
-  double stepSize() const override { return context_.stepSize(); }
-  bool setStepSize(double seconds) override { return context_.setStepSize(seconds); }
-  double realTimeUpdateRate() const override { return context_.realTimeUpdateRate(); }
-  double realTimeFactor() const override { return context_.realTimeFactor(); }
-  uint64_t iterations() const override { return context_.iterations(); }
-  std::vector<std::string> modelNames() const override { return context_.modelNames(); }
-  std::shared_ptr<gazebo::physics::ModelBridge> model(const std::string& name) override { return host_.modelBridge(name); }
-  bool paused() const override { return context_.paused(); }
-  void setPaused(bool paused) override { context_.setPaused(paused); }
-  bool physicsEnabled() const override { return context_.physicsEnabled(); }
-  void setPhysicsEnabled(bool enable) override { context_.setPhysicsEnabled(enable); }
-  void reset() override { context_.resetSimulation(); }
+  double stepSize() const override { return context_ ? context_->stepSize() : 0.0; }
+  bool setStepSize(double seconds) override { return context_ && context_->setStepSize(seconds); }
+  double realTimeUpdateRate() const override { return context_ ? context_->realTimeUpdateRate() : 0.0; }
+  double realTimeFactor() const override { return context_ ? context_->realTimeFactor() : 0.0; }
+  uint64_t iterations() const override { return context_ ? context_->iterations() : 0; }
+  std::vector<std::string> modelNames() const override
+  {
+    return context_ ? context_->modelNames() : std::vector<std::string>();
+  }
+  std::shared_ptr<gazebo::physics::ModelBridge> model(const std::string& name) override
+  {
+    return host_ ? host_->modelBridge(name) : nullptr;
+  }
+  bool paused() const override { return context_ && context_->paused(); }
+  void setPaused(bool paused) override
+  {
+    if (context_)
+      context_->setPaused(paused);
+  }
+  bool physicsEnabled() const override { return context_ && context_->physicsEnabled(); }
+  void setPhysicsEnabled(bool enable) override
+  {
+    if (context_)
+      context_->setPhysicsEnabled(enable);
+  }
+  void reset() override
+  {
+    if (context_)
+      context_->resetSimulation();
+  }
   int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
              const std::string& child_link) override
   {
-    return context_.attach(parent_model, parent_link, child_model, child_link);
+    return context_ ? context_->attach(parent_model, parent_link, child_model, child_link) : -1;
   }
-  void detach(int attachment) override { context_.detach(attachment); }
+  void detach(int attachment) override
+  {
+    if (context_)
+      context_->detach(attachment);
+  }
 
 private:
-  PlantGazeboHost& host_;
-  WorldPluginContext& context_;
+  PlantGazeboHost* host_;
+  WorldPluginContext* context_;
 };
 
 namespace
@@ -122,6 +151,7 @@ PlantGazeboHost::~PlantGazeboHost()
   for (auto& model : models_)
     model.second->release();
   world_->Fini();
+  bridge_->release();
 }
 
 std::shared_ptr<ContextModel> PlantGazeboHost::modelBridge(ModelPluginContext& context)
