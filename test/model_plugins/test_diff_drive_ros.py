@@ -38,7 +38,7 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
     (tmp_path / 'diff_bot.urdf').write_text(open(DIFF_BOT).read())
     ros.set_param('/tb3/robot_description', textfile=str(tmp_path / 'diff_bot.urdf'))
-    spawn_urdf(ros, car, '/tb3/robot_description', 'tb3', '-robot_namespace', '/tb3', '-x', '-1', '-y', '-1.5')
+    spawn_urdf(ros, car, '/tb3/robot_description', 'tb3', robot_namespace='/tb3', xyz=(-1, -1.5, 0))
     seen = ros.probe('model_plugins/probes/a_diff_drive_robot_and_the_tutorial_car_in_one_world.py', timeout=90)
     moved = {name: seen['after'][name][0] - seen['before'][name][0] for name in ('tianracer', 'tb3')}
     assert moved['tianracer'] > 0.5, moved

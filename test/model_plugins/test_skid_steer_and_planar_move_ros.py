@@ -15,8 +15,8 @@ def test_skid_steer_and_planar_move_robots_in_their_spawn_namespaces(ros, tmp_pa
     plant = start_plant(ros)
     ros.set_param('/skid_bot/robot_description', textfile=str(tmp_path / 'skid_bot.urdf'))
     ros.set_param('/planar_bot/robot_description', textfile=str(tmp_path / 'planar_bot.urdf'))
-    spawn_urdf(ros, plant, '/skid_bot/robot_description', 'skid_bot', '-robot_namespace', '/skid_bot')
-    spawn_urdf(ros, plant, '/planar_bot/robot_description', 'planar_bot', '-robot_namespace', '/planar_bot', '-y', '2')
+    spawn_urdf(ros, plant, '/skid_bot/robot_description', 'skid_bot', robot_namespace='/skid_bot')
+    spawn_urdf(ros, plant, '/planar_bot/robot_description', 'planar_bot', robot_namespace='/planar_bot', xyz=(0, 2, 0))
     seen = ros.probe('model_plugins/probes/skid_steer_and_planar_move_robots_in_their_spawn_namespaces.py', timeout=90)
     frame, child, speed, x, yaw_covariance = seen['skid']
     assert (frame, child) == ('odom', 'base_footprint'), 'skid_steer_drive prefixes no frame'

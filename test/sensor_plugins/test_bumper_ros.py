@@ -16,7 +16,7 @@ def test_bumper_states_of_a_robot_pushed_into_a_wall(ros, tmp_path):
     (tmp_path / 'wall.world').write_text(sdf_world(box_model('wall', (0.1, 2.0, 0.5), (0.34, 0, 0.25))))
     plant = start_plant(ros, str(tmp_path / 'wall.world'))
     ros.set_param('/robot_description', textfile=os.path.join(FIXTURES, 'urdf', 'bumper_bot.urdf'))
-    spawn_urdf(ros, plant, '/robot_description', 'bumper_bot', '-z', '0.05')
+    spawn_urdf(ros, plant, '/robot_description', 'bumper_bot', xyz=(0, 0, 0.05))
     seen = ros.probe('sensor_plugins/probes/bumper_states_of_a_robot_pushed_into_a_wall.py', timeout=90)
     ground, before, after = seen['ground'], seen['before'], seen['after']
     assert ground['frame'] == 'world' and before['frame'] == 'bumper'

@@ -75,7 +75,7 @@ def test_a_world_file_sdf_model_publishes_as_its_urdf_twin(ros, tmp_path):
     (tmp_path / 'twin.urdf').write_text(URDF_TWIN)
     plant = start_plant(ros, str(tmp_path / 'probe.world'))
     ros.set_param('/twin_description', textfile=str(tmp_path / 'twin.urdf'))
-    spawn_urdf(ros, plant, '/twin_description', 'twin', '-y', '20', '-z', '0.1', '-robot_namespace', '/twin')
+    spawn_urdf(ros, plant, '/twin_description', 'twin', robot_namespace='/twin', xyz=(0, 20, 0.1))
     # The same SDF spawned by spawn_sdf_model in a namespace of its own publishes as the twin does there.
     spawned = ros.run(['rosrun', 'gazebo_ros', 'spawn_model', '-sdf', '-stdin', '-model', 'sdf_twin', '-y', '-20',
                        '-robot_namespace', '/sdf_twin'], timeout=60,

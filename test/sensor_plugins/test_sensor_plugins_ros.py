@@ -20,7 +20,7 @@ def test_plugins_publish_in_their_namespaces_with_their_frames(ros, tmp_path):
     ros.set_param('/probe_description', textfile=str(urdf))
     ros.set_param('/other/tf_prefix', 'custom')      # found by the camera's searchParam
     ros.set_param('/robot_a/tf_prefix', 'truth_prefix')  # read by gazebo_ros_p3d
-    spawn_urdf(ros, plant, '/probe_description', 'probe', '-robot_namespace', '/robot_a')
+    spawn_urdf(ros, plant, '/probe_description', 'probe', robot_namespace='/robot_a')
     assert first_message(ros, '/shared/laser') == {'frame': 'scanner', 'type': 'sensor_msgs/LaserScan'}
     assert first_message(ros, '/other/front/rgb') == {'frame': 'custom/eye_frame', 'type': 'sensor_msgs/Image'}
     assert first_message(ros, '/robot_a/ground_truth') == {'frame': 'truth_prefix/world', 'child': 'base_footprint',

@@ -407,9 +407,12 @@ def test_teleop_keys_in_the_page_drive_the_car_through_the_converter_and_letting
                      ".some((o) => o.value === '/tianracer/cmd_vel')", 30, "the converter's topic to be offered")
     Select(driver.find_element(By.ID, 'drive_topic')).select_by_value('/tianracer/cmd_vel')
     driver.execute_script('document.activeElement.blur()')
-    start = ros.probe('viewer/probes/model_xy.py')
+    def model_xy():
+        position = ros.model_pose('tianracer')['position']
+        return position['x'], position['y']
+    start = model_xy()
     ActionChains(driver).key_down('i').pause(2.0).key_up('i').perform()  # i: straight ahead
-    driven = at_rest(lambda: ros.probe('viewer/probes/model_xy.py'))  # the converter's 0.2 s and the car rolling out
+    driven = at_rest(model_xy)  # the converter's 0.2 s and the car rolling out
     assert driven[0] - start[0] > 0.3, 'the car did not drive ahead: %s -> %s' % (start, driven)
 
 
