@@ -3,10 +3,11 @@
 CMakeLists.txt builds one gtest executable per source file, named after it, into the devel space
 (`make build` runs `catkin_make all tests`); this module finds each one with catkin's own lookup
 (the workspace on CMAKE_PREFIX_PATH, as catkin_find does), lists its cases with --gtest_list_tests
-and runs every case on its own with --gtest_filter, so a crash belongs to the case that crashed.
-A source without an executable, an executable that cannot list its cases, a crash or a case that
-does not report itself all fail: nothing here is skipped but what gtest itself skips (DISABLED_
-cases, GTEST_SKIP).
+and runs them all in one run, as gtest does; a case that failed there, or every case of a run that
+crashed, hung or did not report, runs again on its own with --gtest_filter, so a crash belongs to
+the case that crashed and a failure shows that case's output. A source without an executable, an
+executable that cannot list its cases, a crash or a case that does not report itself all fail:
+nothing here is skipped but what gtest itself skips (DISABLED_ cases, GTEST_SKIP).
 
 The sources that cast rays run every case once per instruction set of Embree's kernels that this
 CPU runs (TIANRACER_EMBREE_ISA, see include/bullet_plant/ray_kernels.h): Embree runs only the widest
@@ -118,33 +119,76 @@ def gtest_result(report, case):
     return None
 
 
-@pytest.mark.parametrize('stem,isa,executable,case', gtest_cases())
-def test_gtest_case(stem, isa, executable, case, tmp_path):
-    if isinstance(case, Problem):
-        pytest.fail(case.message, pytrace=False)
-    report = tmp_path / 'gtest.xml'
+def case_environment(isa, tmp_dir):
     env = dict(os.environ)
     env.pop(ISA_VARIABLE, None)
     env.pop(LLVMPIPE_WIDTH, None)
-    env['TMPDIR'] = str(tmp_path)  # the files a case writes (mesh_fixtures::tempDir) are the test's
+    env['TMPDIR'] = str(tmp_dir)  # the files a case writes (mesh_fixtures::tempDir) are the test's
     if isa:
         env[isa[0]] = isa[1]
         if isa[0] == ISA_VARIABLE:
             ISAS_RUN.add(isa[1])
-    try:
-        run = subprocess.run([executable, '--gtest_filter=' + case, '--gtest_output=xml:%s' % report],
-                             capture_output=True, text=True, timeout=CASE_TIMEOUT, env=env)
-    except subprocess.TimeoutExpired as timeout:
-        pytest.fail('%s%s %s did not finish within %d s:\n%s' % (isa_prefix(isa), stem, case, CASE_TIMEOUT, timeout.stdout or ''),
-                    pytrace=False)
-    output = run.stdout + run.stderr
-    result = gtest_result(report, case) if report.exists() else None
-    if run.returncode != 0 or result is None:
-        ended = ('was killed by %s' % signal.Signals(-run.returncode).name if run.returncode < 0
-                 else 'exited %d' % run.returncode)
-        pytest.fail('%s%s --gtest_filter=%s %s%s:\n%s' % (
-            isa_prefix(isa), executable, case, ended, '' if result is not None else ' without reporting the case', output),
-            pytrace=False)
+    return env
+
+
+_WHOLE_RUNS = {}  # (executable, variant): {case: <testcase>} of its run with every case, or None
+
+
+def whole_run(executable, isa, tmp_path_factory):
+    """Every case of an executable in one run (a gtest executable's own way; a process a case cost
+    0.05 to 0.1 s, some 300 a suite): {case: its <testcase>}, or None where that run crashed, hung
+    or did not report (each case then runs on its own, so a crash belongs to the case that crashed)."""
+    key = (executable, isa)
+    if key not in _WHOLE_RUNS:
+        tmp_dir = tmp_path_factory.mktemp(os.path.basename(executable))
+        report = tmp_dir / 'gtest.xml'
+        try:
+            run = subprocess.run([executable, '--gtest_output=xml:%s' % report], capture_output=True, text=True,
+                                 timeout=CASE_TIMEOUT, env=case_environment(isa, tmp_dir))
+            crashed = run.returncode not in (0, 1) or not report.exists()
+        except subprocess.TimeoutExpired:
+            crashed = True
+        _WHOLE_RUNS[key] = None if crashed else {
+            '%s.%s' % (testcase.get('classname'), testcase.get('name')): testcase
+            for testcase in ET.parse(report).getroot().iter('testcase')}
+    return _WHOLE_RUNS[key]
+
+
+def failures_of(result):
+    return '\n'.join(failure.get('message', '') for failure in result.iter('failure'))
+
+
+@pytest.mark.parametrize('stem,isa,executable,case', gtest_cases())
+def test_gtest_case(stem, isa, executable, case, tmp_path, tmp_path_factory):
+    if isinstance(case, Problem):
+        pytest.fail(case.message, pytrace=False)
+    results = whole_run(executable, isa, tmp_path_factory)
+    result = results.get(case) if results is not None else None
+    output = ''
+    if result is None or result.find('failure') is not None:
+        # on its own: a crash is this case's, and a failure shows this case's output alone
+        report = tmp_path / 'gtest.xml'
+        try:
+            run = subprocess.run([executable, '--gtest_filter=' + case, '--gtest_output=xml:%s' % report],
+                                 capture_output=True, text=True, timeout=CASE_TIMEOUT,
+                                 env=case_environment(isa, tmp_path))
+        except subprocess.TimeoutExpired as timeout:
+            pytest.fail('%s%s %s did not finish within %d s:\n%s' % (isa_prefix(isa), stem, case, CASE_TIMEOUT,
+                                                                       timeout.stdout or ''), pytrace=False)
+        output = run.stdout + run.stderr
+        alone = gtest_result(report, case) if report.exists() else None
+        if run.returncode != 0 or alone is None:
+            ended = ('was killed by %s' % signal.Signals(-run.returncode).name if run.returncode < 0
+                     else 'exited %d' % run.returncode)
+            pytest.fail('%s%s --gtest_filter=%s %s%s:\n%s%s' % (
+                isa_prefix(isa), executable, case, ended, '' if alone is not None else ' without reporting the case',
+                output, '' if result is None else '\nwith the other cases it failed too: ' + failures_of(result)),
+                pytrace=False)
+        if result is not None:
+            # it passed alone and failed among the others: what another case left behind broke it
+            pytest.fail('%s%s %s failed in the run of every case and passed alone: it depends on what another '
+                        'case leaves behind:\n%s' % (isa_prefix(isa), executable, case, failures_of(result)),
+                        pytrace=False)
+        result = alone
     if result.get('result') == 'skipped' or result.get('status') == 'notrun':
         pytest.skip('gtest skipped %s (DISABLED_ or GTEST_SKIP)' % case)
-    assert result.find('failure') is None, output
