@@ -39,7 +39,15 @@ target_link_libraries(gazebo_physics PUBLIC gazebo_common)
 set_target_properties(gazebo_physics PROPERTIES
   LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
   VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
-set(GAZEBO_API_LIBRARIES gazebo_physics gazebo_common)
+# Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
+add_library(gazebo_sensors SHARED
+  src/gazebo/sensors/Sensor.cc)
+target_compile_options(gazebo_sensors PRIVATE -Wall -Wextra)
+target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
+set_target_properties(gazebo_sensors PROPERTIES
+  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
+  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
+set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_physics gazebo_common)
 list(TRANSFORM GAZEBO_API_LIBRARIES PREPEND -l OUTPUT_VARIABLE GAZEBO_API_PKG_LIBS)
 list(JOIN GAZEBO_API_PKG_LIBS " " GAZEBO_API_PKG_LIBS)
 

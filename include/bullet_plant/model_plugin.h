@@ -36,8 +36,12 @@ public:
   // force (N m or N) every step until told otherwise.
   virtual void setVelocity(double velocity) = 0;
   virtual void setMaxForce(double force) = 0;
-  // SetForce: an effort added to the joint in the coming step only.
+  // SetForce: an effort added to the joint in the coming step only; the efforts of the calls before
+  // one step add up, as Gazebo's.
   virtual void setForce(double effort) = 0;
+  // GetForce: the efforts set for the coming step, or those the last step applied until the next
+  // SetForce.
+  virtual double appliedForce() const = 0;
   // SetPosition: the joint put at the position now, moving at the velocity (the rest of the model
   // keeps its motion). Within the URDF limits only as far as the limit rows push it back.
   virtual void setPosition(double position, double velocity) = 0;

@@ -1,6 +1,7 @@
 // Gazebo 11's common library over the plant (include/gazebo-11/gazebo/common/): common::Time's
 // arithmetic as plugins use it on simulated time, event::EventT's connections as plugins hold
-// them, the console's prefixes, and PluginT::Create's errors for a library that is not a plugin.
+// them, the console's prefixes, PluginT::Create's errors for a library that is not a plugin, and
+// sensors::Sensor's base as a sensor plugin reads it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include <gazebo/common/common.hh>
+#include <gazebo/sensors/Sensor.hh>
 
 #include "mesh_fixtures.h"
 
@@ -166,4 +168,65 @@ TEST(GazeboPid, AZeroStepOrANonFiniteErrorCommandsNothingAndUnclampedByDefault)
   copy = pid;
   EXPECT_EQ(copy.GetPGain(), 2.0);
   EXPECT_EQ(copy.GetCmd(), 0.0);  // assignment starts the errors and the command again, as Gazebo's
+}
+
+// sensors::Sensor, the base every Gazebo sensor type derives from: what its <sensor> element gives,
+// over sensor.sdf's defaults, and its names as gazebo_ros_utils.h reads them (GetModelName splits
+// ScopedName at "::").
+class CountingSensor : public gazebo::sensors::Sensor
+{
+public:
+  CountingSensor() : Sensor(gazebo::sensors::OTHER) {}
+  int updates = 0;
+
+protected:
+  bool UpdateImpl(bool) override { return ++updates > 0; }
+};
+
+sdf::ElementPtr sensorElement(const std::string& xml)
+{
+  sdf::SDFPtr document(new sdf::SDF);
+  sdf::init(document);
+  sdf::readString("<sdf version='1.6'><model name='m'><link name='l'>" + xml + "</link></model></sdf>", document);
+  return document->Root()->GetElement("model")->GetElement("link")->GetElement("sensor");
+}
+
+TEST(GazeboSensor, ReadsItsElementOverTheSpecsDefaultsAndNamesItselfByItsParent)
+{
+  CountingSensor sonar, quiet;
+  sonar.Load("default", sensorElement("<sensor name='front_sonar' type='sonar'><always_on>1</always_on>"
+                                      "<update_rate>20</update_rate><topic>range</topic><pose>0.1 0 0.2 0 0 0</pose>"
+                                      "</sensor>"));
+  sonar.SetParent("bot::chassis", 7);
+  EXPECT_EQ(sonar.Name(), "front_sonar");
+  EXPECT_EQ(sonar.Type(), "sonar");
+  EXPECT_TRUE(sonar.IsActive());
+  EXPECT_DOUBLE_EQ(sonar.UpdateRate(), 20.0);
+  EXPECT_EQ(sonar.Topic(), "range");
+  EXPECT_EQ(sonar.Pose(), ignition::math::Pose3d(0.1, 0, 0.2, 0, 0, 0));
+  EXPECT_EQ(sonar.ParentName(), "bot::chassis");
+  EXPECT_EQ(sonar.ParentId(), 7u);
+  EXPECT_EQ(sonar.ScopedName(), "default::bot::chassis::front_sonar");
+  EXPECT_EQ(sonar.Category(), gazebo::sensors::OTHER);
+
+  quiet.Load("default", sensorElement("<sensor name='q' type='imu'/>"));
+  EXPECT_FALSE(quiet.IsActive());  // always_on's default
+  EXPECT_DOUBLE_EQ(quiet.UpdateRate(), 0.0);
+  EXPECT_EQ(quiet.Topic(), "");
+  EXPECT_FALSE(quiet.Visualize());
+  EXPECT_NE(quiet.Id(), sonar.Id());
+}
+
+TEST(GazeboSensor, InNoWorldItSaysSoOnceAndNeverUpdates)
+{
+  CountingSensor lost;
+  testing::internal::CaptureStderr();
+  lost.Load("no_such_world", sensorElement("<sensor name='lost' type='imu'><always_on>1</always_on></sensor>"));
+  lost.Update(true);
+  lost.Update(true);
+  const std::string said = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(lost.updates, 0);
+  EXPECT_NE(said.find("Unable to find world by name in physics::get_world[no_such_world]"), std::string::npos) << said;
+  EXPECT_EQ(said.find("is in no world"), said.rfind("is in no world")) << said;
+  EXPECT_NE(said.find("Sensor [lost] is in no world"), std::string::npos) << said;
 }

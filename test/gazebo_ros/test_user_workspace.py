@@ -145,10 +145,15 @@ def test_a_package_with_its_own_gazebo_plugin_builds_on_the_install_space_with_g
     assert abs(motion['spin'][1] - 2.0) < 0.05, motion  # Joint::SetVelocity(0, 2.0)
     lifted_z = motion['end']['lifted'][2] - motion['start']['lifted'][2]
     assert 4.0 < lifted_z < 5.5, motion  # Link::AddForce of twice its weight: up at g, 4.9 m in 1 s
-    steps, last, world_time, name, mass, _, effort_limit = motion['reports']['pushed']
+    steps, last, world_time, name, mass, _, effort_limit, _, top_height = motion['reports']['pushed']
     assert int(steps) == 1000 and abs(float(last) - 0.999) < 1e-9 and name == 'pushed_cart', motion['reports']
     assert float(mass) == 2.0, motion['reports']  # Link::GetInertial: the base link's own <inertial>
     assert float(effort_limit) == -1.0, motion['reports']  # GetEffortLimit: the continuous joint gives none
+    assert float(top_height) == 0.1, motion['reports']  # Link::RelativePose: the joint's origin in the model
+    # Joint::SetForce twice a step, 0.002 N m each: GetForce says the step's sum, and the top (0.001
+    # kg m^2 on a base of 0.04 about z) spins up at some 4 rad/s^2 relative to the base
+    assert float(motion['reports']['lifted'][7]) == 0.004, motion['reports']
+    assert 3.0 < motion['twisted_spin'][1] < 5.0, motion['twisted_spin']
     # The last of 50 carts spawned under one name after deletes moved by its own plugin in its 10 ms.
     assert 0.0025 < motion['respawned_x'] < 0.0035, motion['respawned_x']
     # SetParam("fmax", 0.5) and ("vel", 1.5): the joint's motor turns it at 1.5 rad/s (GetParam says so)
@@ -212,7 +217,7 @@ def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catk
     """gzserver -s libhello_system.so on a world naming the user's world plugin: the world plugin
     (physics::World's ModelByName, Physics()->CreateJoint, Joint::Load / Init / Detach) carries the
     cargo for the second it holds it, read through gazebo_ros's get_model_state; the system plugin
-    has the server's command line and the world's updates and says so on ROS."""
+    has the server's command line, the world (physics::get_world) and its updates and says so on ROS."""
     workspace, env, _ = catkin_make_workspace
     world = tmp_path / 'attach.world'
     world.write_text(ATTACH_WORLD % (BOX.format(name='carrier', x=0.0, half=0.1, mass=2.0, size=0.2),
@@ -244,4 +249,4 @@ def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catk
     assert any("world plugin 'thrower' (libattach_world.so): its Load threw: attach_world was told to throw" in line
                for line in errors), log
     assert "world plugin 'missing' (libno_such_plugin.so)" in log and 'no such file on GAZEBO_PLUGIN_PATH' in log, log
-    assert 'world default; updates' in hello and 'arguments gzserver -u --verbose -s libhello_system.so %s' % world in hello, hello
+    assert 'world default; updates' in hello and '; models 2;' in hello and 'arguments gzserver -u --verbose -s libhello_system.so %s' % world in hello, hello

@@ -82,6 +82,11 @@ void Joint::SetForce(unsigned int index, double effort)
     bridge_->setForce(effort);
 }
 
+double Joint::GetForce(unsigned int index)
+{
+  return axisZero(index, "GetForce") && bridge_ ? bridge_->appliedForce() : 0.0;
+}
+
 bool Joint::SetPosition(unsigned int index, double position, bool /*preserveWorldVelocity*/)
 {
   return axisZero(index, "SetPosition") && modelJoint("SetPosition") && bridge_->setPosition(position);

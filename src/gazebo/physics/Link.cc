@@ -62,6 +62,12 @@ ignition::math::Vector3d Link::WorldLinearVel() const { return bridge_->linkLine
 
 ignition::math::Vector3d Link::WorldAngularVel() const { return bridge_->linkAngularVel(name_); }
 
+ignition::math::Pose3d Link::RelativePose() const
+{
+  const ModelPtr model = GetModel();
+  return model ? WorldPose() - model->WorldPose() : WorldPose();
+}
+
 ignition::math::Vector3d Link::RelativeLinearVel() const { return WorldPose().Rot().RotateVectorReverse(WorldLinearVel()); }
 
 ignition::math::Vector3d Link::RelativeAngularVel() const

@@ -1,21 +1,57 @@
 // physics::World (gazebo/physics/World.hh), over the simulator's WorldBridge.
 #include "gazebo/physics/World.hh"
 
+#include <algorithm>
+#include <mutex>
+#include <vector>
+
+#include "gazebo/common/Console.hh"
+#include "gazebo/common/Exception.hh"
+
 #include "gazebo/physics/Link.hh"
 #include "gazebo/physics/Model.hh"
 #include "gazebo/physics/PhysicsEngine.hh"
+#include "gazebo/physics/PhysicsIface.hh"
 #include "gazebo/physics/PlantBridge.hh"
 
 namespace gazebo
 {
 namespace physics
 {
+namespace
+{
+// The worlds alive in the process, in the order they were made, for get_world. A World is always
+// owned by a WorldPtr (the simulator's host makes it so): get_world hands out shared_from_this.
+std::mutex worlds_mutex;
+std::vector<World*> worlds;
+}  // namespace
+
 World::World(std::shared_ptr<WorldBridge> bridge)
   : bridge_(std::move(bridge)), physics_(new PhysicsEngine(bridge_)), started_(common::Time::GetWallTime())
 {
+  std::lock_guard<std::mutex> lock(worlds_mutex);
+  worlds.push_back(this);
 }
 
-World::~World() = default;
+World::~World()
+{
+  std::lock_guard<std::mutex> lock(worlds_mutex);
+  worlds.erase(std::remove(worlds.begin(), worlds.end(), this), worlds.end());
+}
+
+WorldPtr get_world(const std::string& name)
+{
+  {
+    std::lock_guard<std::mutex> lock(worlds_mutex);
+    for (World* world : worlds)
+      if (name.empty() || world->Name() == name)
+        return world->shared_from_this();
+    if (name.empty())
+      gzerr << "no worlds\n";
+  }
+  gzerr << "Unable to find world by name in physics::get_world[" << name << "]\n";
+  gzthrow("Unable to find world by name in physics::get_world(world_name)");
+}
 
 std::string World::Name() const { return bridge_->name(); }
 

@@ -50,6 +50,11 @@ public:
       joint->setForce(effort);
     return joint != nullptr;
   }
+  double appliedForce() const override
+  {
+    // a joint no SetForce (or motor) has reached yet had none: asking is not driving it
+    return reach_->context && joint_ ? joint_->appliedForce() : 0.0;
+  }
   bool setPosition(double position) override
   {
     ModelJoint* joint = driven();

@@ -22,8 +22,12 @@ void ModelJointSim::setMaxForce(double force)
 
 void ModelJointSim::setForce(double effort)
 {
-  if (std::isfinite(effort))
-    force_ = effort;
+  if (!std::isfinite(effort))
+    return;
+  if (!pending_)
+    force_ = 0.0;  // the first call since the last step: a new step's sum
+  pending_ = true;
+  force_ += effort;
 }
 
 void ModelJointSim::setPosition(double position, double velocity)
@@ -44,9 +48,9 @@ void ModelJointSim::apply(double dt)
     joint_.drive->drive(velocity_, std::numeric_limits<double>::infinity(), max_force_ * dt);
   else if (joint_.drive->enabled())
     joint_.drive->disable();
-  if (force_ != 0.0)
+  if (pending_ && force_ != 0.0)
     body_.addJointTorque(joint_.link, btScalar(force_));
-  force_ = 0.0;
+  pending_ = false;
 }
 
 }  // namespace bullet_plant

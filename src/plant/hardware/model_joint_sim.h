@@ -18,6 +18,7 @@ public:
   void setVelocity(double velocity) override;
   void setMaxForce(double force) override;
   void setForce(double effort) override;
+  double appliedForce() const override { return force_; }
   void setPosition(double position, double velocity) override;
   double position() const override;
   double velocity() const override;
@@ -29,7 +30,8 @@ private:
   MovableJoint& joint_;
   btMultiBody& body_;
   double velocity_ = 0.0, max_force_ = 0.0;
-  double force_ = 0.0;  // SetForce's, until the step that applies it
+  double force_ = 0.0;     // SetForce's sum: for the coming step where pending_, else the last step's
+  bool pending_ = false;  // SetForce was called since the last step
 };
 
 }  // namespace bullet_plant

@@ -1,6 +1,6 @@
 """A user's Gazebo model plugin (test/fixtures/gazebo_plugin_pkg's libpush_model.so, found on the
 library path) hosted by the plant from Python: two carts, one pushed along x at 0.3 m/s with its top
-spun at 2 rad/s, one lifted by twice its weight, one whose joint its model's joint controller holds
+spun at 2 rad/s, one lifted by twice its weight with its top twisted by 0.004 N m, one whose joint its model's joint controller holds
 at 1 rad, one whose joint's motor turns it at 1.5 rad/s, one floating and pushed off its centre, and one naming a library that is no Gazebo plugin
 (the C maths library: it loads, but has no RegisterPlugin); 1 s of simulated time, then reset_world
 (the plugins' Reset writes their counts to the report files), then one cart deleted and spawned
@@ -37,7 +37,8 @@ def main(report_dir):
     world.echo = False
     pushed = world.spawn(CART % ('<speed>0.3</speed><joint>spin_joint</joint><spin>2.0</spin><report>%s/pushed.txt</report>'
                                  % report_dir), 'pushed_cart', pose=[0.0, 0.0, 0.06, 0, 0, 0])
-    lifted = world.spawn(CART % ('<pushed>base</pushed><lift>43.164</lift><report>%s/lifted.txt</report>' % report_dir),
+    lifted = world.spawn(CART % ('<pushed>base</pushed><lift>43.164</lift><joint>spin_joint</joint><twist>0.004</twist>'
+                                 '<report>%s/lifted.txt</report>' % report_dir),
                          'lifted_cart', pose=[0.0, 2.0, 0.06, 0, 0, 0])
     broken = world.spawn(CART.replace('libpush_model.so', NOT_A_PLUGIN) % '', 'broken_cart', pose=[0.0, 4.0, 0.5, 0, 0, 0])
     held = world.spawn(CART % '<joint>spin_joint</joint><target>1.0</target>', 'held_cart', pose=[0.0, 6.0, 0.06, 0, 0, 0])
@@ -54,6 +55,7 @@ def main(report_dir):
     spin = list(pushed.joint_state('spin_joint'))
     held_at = list(held.joint_state('spin_joint'))
     motor = list(motored.joint_state('spin_joint'))
+    twisted_spin = list(lifted.joint_state('spin_joint'))
     world.reset_world()
     reports = {}
     for name in ('pushed', 'lifted', 'motored'):
@@ -67,7 +69,7 @@ def main(report_dir):
         world.step(10)
     respawned_x = respawned.base_pose()[0]
     print(json.dumps({'start': start, 'end': end, 'spin': spin, 'held': held_at, 'motor': motor, 'reports': reports,
-                      'respawned_x': respawned_x,
+                      'respawned_x': respawned_x, 'twisted_spin': twisted_spin,
                       'messages': world.messages()}, default=list))
 
 

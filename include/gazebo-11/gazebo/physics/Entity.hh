@@ -21,6 +21,8 @@ public:
   virtual std::string GetName() const = 0;
   virtual std::string GetScopedName(bool prependWorldName = false) const = 0;
   virtual ignition::math::Pose3d WorldPose() const = 0;
+  // The pose in the parent's frame: a link's in its model's, a model's in the world.
+  virtual ignition::math::Pose3d RelativePose() const = 0;
   virtual ignition::math::Vector3d WorldLinearVel() const = 0;
   virtual ignition::math::Vector3d WorldAngularVel() const = 0;
 };

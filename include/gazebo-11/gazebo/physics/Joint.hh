@@ -41,6 +41,9 @@ public:
   void SetVelocity(unsigned int index, double velocity);
   // An effort (N m or N) added for the coming step.
   void SetForce(unsigned int index, double effort);
+  // The efforts SetForce gave for the coming step, or the last step's until the next SetForce, as
+  // Gazebo's.
+  double GetForce(unsigned int index);
   bool SetPosition(unsigned int index, double position, bool preserveWorldVelocity = false);
   // The model's limits (-inf / inf where it has none); a joint made at run time keeps what it is set.
   double LowerLimit(unsigned int index = 0) const;

@@ -40,6 +40,7 @@ public:
   void SetGravityMode(bool mode);
   bool GetGravityMode() const;
   ignition::math::Pose3d WorldPose() const override;
+  ignition::math::Pose3d RelativePose() const override;
   ignition::math::Vector3d WorldLinearVel() const override;
   ignition::math::Vector3d WorldAngularVel() const override;
   ignition::math::Vector3d RelativeLinearVel() const;

@@ -28,6 +28,7 @@ public:
   std::string GetScopedName(bool prependWorldName = false) const override;
   WorldPtr GetWorld() const;
   ignition::math::Pose3d WorldPose() const override;
+  ignition::math::Pose3d RelativePose() const override { return WorldPose(); }
   ignition::math::Vector3d WorldLinearVel() const override;
   ignition::math::Vector3d WorldAngularVel() const override;
   ignition::math::Vector3d RelativeLinearVel() const;

@@ -28,6 +28,9 @@ public:
   // gazebo_ros_control transmission): nothing is changed.
   virtual bool setVelocity(double velocity) = 0;
   virtual bool setForce(double effort) = 0;
+  // The efforts setForce gave for the coming step (summed), or those of the last step until the
+  // next setForce; 0 where the joint is driven by something else.
+  virtual double appliedForce() const = 0;
   virtual bool setPosition(double position) = 0;
   // The joint's limits as its model gives them (-inf / inf for none; the effort and velocity
   // limits inf for none).

@@ -1,5 +1,5 @@
-// The sensor classes' names and handle types, as Gazebo 11 declares them (std::shared_ptr
-// handles): what common/Plugin.hh's SensorPlugin needs to name a SensorPtr.
+// The sensor classes' names, handle types and categories, as Gazebo 11 declares them (std::shared_ptr
+// handles): what common/Plugin.hh's SensorPlugin and sensors/Sensor.hh name.
 #pragma once
 
 #include <memory>
@@ -12,5 +12,14 @@ namespace sensors
 class Sensor;
 typedef std::shared_ptr<Sensor> SensorPtr;
 typedef std::vector<SensorPtr> Sensor_V;
+
+// Gazebo updates the sensors of each category in a thread of their own.
+enum SensorCategory
+{
+  IMAGE = 0,  // needs the rendering engine
+  RAY = 1,
+  OTHER = 2,
+  CATEGORY_COUNT = 3
+};
 }  // namespace sensors
 }  // namespace gazebo
