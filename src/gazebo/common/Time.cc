@@ -14,8 +14,6 @@ const Time Time::Zero(0, 0);
 const int32_t Time::nsInSec = 1000000000;
 const int32_t Time::nsInMs = 1000000;
 
-Time::Time() : sec(0), nsec(0) {}
-
 Time::Time(const struct timeval& tv) : sec(static_cast<int32_t>(tv.tv_sec)), nsec(static_cast<int32_t>(tv.tv_usec * 1000))
 {
   Correct();

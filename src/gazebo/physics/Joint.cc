@@ -181,10 +181,11 @@ double Joint::GetParam(const std::string& key, unsigned int index)
 {
   if (!axisZero(index, "GetParam"))
     return 0.0;
-  if (key == "vel")
-    return motor_velocity_;
-  if (key == "fmax")
+  // drives ask for "fmax" every step (gazebo_ros_diff_drive): the cheapest test first
+  if (key.size() == 4 && key == "fmax")
     return motor_max_force_;
+  if (key.size() == 3 && key == "vel")
+    return motor_velocity_;
   if (key == "hi_stop")
     return UpperLimit(0);
   if (key == "lo_stop")

@@ -1,7 +1,10 @@
 // physics::World (gazebo/physics/World.hh), over the simulator's WorldBridge.
 #include "gazebo/physics/World.hh"
 
+#include <time.h>
+
 #include <algorithm>
+#include <cstdint>
 #include <mutex>
 #include <vector>
 
@@ -24,10 +27,17 @@ namespace
 // owned by a WorldPtr (the simulator's host makes it so): get_world hands out shared_from_this.
 std::mutex worlds_mutex;
 std::vector<World*> worlds;
+
+int64_t wallClockNs()
+{
+  struct timespec now;
+  clock_gettime(CLOCK_REALTIME, &now);
+  return static_cast<int64_t>(now.tv_sec) * 1000000000 + now.tv_nsec;
+}
 }  // namespace
 
 World::World(std::shared_ptr<WorldBridge> bridge)
-  : bridge_(std::move(bridge)), physics_(new PhysicsEngine(bridge_)), started_(common::Time::GetWallTime())
+  : bridge_(std::move(bridge)), physics_(new PhysicsEngine(bridge_)), started_ns_(wallClockNs())
 {
   std::lock_guard<std::mutex> lock(worlds_mutex);
   worlds.push_back(this);
@@ -57,7 +67,17 @@ std::string World::Name() const { return bridge_->name(); }
 
 common::Time World::SimTime() const { return bridge_->simTime(); }
 
-common::Time World::RealTime() const { return common::Time::GetWallTime() - started_; }
+common::Time World::RealTime() const
+{
+  // every step's UpdateInfo has it: one reading of the clock, no normalising where it is positive
+  const int64_t ns = wallClockNs() - started_ns_;
+  if (ns < 0)  // the wall clock was set back
+    return common::Time(0, static_cast<int32_t>(0));
+  common::Time time;
+  time.sec = static_cast<int32_t>(ns / 1000000000);
+  time.nsec = static_cast<int32_t>(ns % 1000000000);
+  return time;
+}
 
 uint32_t World::Iterations() const { return static_cast<uint32_t>(bridge_->iterations()); }
 

@@ -31,8 +31,13 @@ public:
   std::string name() const override { return context_ ? context_->worldName() : ""; }
   gazebo::common::Time simTime() const override
   {
+    // a plugin asks every step (gazebo_ros_diff_drive twice): sec and nsec set as they are, never
+    // negative, without the general constructor's normalising
     const int64_t ns = context_ ? context_->timeNs() : 0;
-    return gazebo::common::Time(static_cast<int32_t>(ns / 1000000000), static_cast<int32_t>(ns % 1000000000));
+    gazebo::common::Time time;
+    time.sec = static_cast<int32_t>(ns / 1000000000);
+    time.nsec = static_cast<int32_t>(ns % 1000000000);
+    return time;
   }
   ignition::math::Vector3d gravity() const override
   {
@@ -87,15 +92,6 @@ private:
 
 namespace
 {
-gazebo::common::UpdateInfo updateInfo(const gazebo::physics::World& world)
-{
-  gazebo::common::UpdateInfo info;
-  info.worldName = world.Name();
-  info.simTime = world.SimTime();
-  info.realTime = world.RealTime();
-  return info;
-}
-
 std::string worldPluginLabel(const std::string& name, const std::string& filename)
 {
   return "world plugin '" + name + "' (" + filename + ")";
@@ -139,12 +135,14 @@ sdf::ElementPtr pluginElement(const std::string& xml, const std::string& parent,
 PlantGazeboHost::PlantGazeboHost(WorldPluginContext& world)
   : context_(world), bridge_(std::make_shared<HostWorld>(*this)), world_(new gazebo::physics::World(bridge_))
 {
+  physics_mutex_ = world_->Physics()->GetPhysicsUpdateMutex();
+  step_info_.worldName = world_->Name();
 }
 
 PlantGazeboHost::~PlantGazeboHost()
 {
   if (stepping_)
-    world_->Physics()->GetPhysicsUpdateMutex()->unlock();
+    physics_mutex_->unlock();
   // The plugins go before the models and the world they hold, as Gazebo's world unloads them.
   world_plugins_.clear();
   system_plugins_.clear();
@@ -311,13 +309,14 @@ void PlantGazeboHost::beginStep()
 {
   // The world update holds the physics update mutex, so that what a plugin's ROS callbacks do
   // between steps (under the same mutex) never lands in the middle of one.
-  world_->Physics()->GetPhysicsUpdateMutex()->lock();
+  physics_mutex_->lock();
   stepping_ = true;
-  const gazebo::common::UpdateInfo info = updateInfo(*world_);
+  step_info_.simTime = world_->SimTime();
+  step_info_.realTime = world_->RealTime();
   try
   {
-    gazebo::event::Events::worldUpdateBegin(info);
-    gazebo::event::Events::beforePhysicsUpdate(info);
+    gazebo::event::Events::worldUpdateBegin(step_info_);
+    gazebo::event::Events::beforePhysicsUpdate(step_info_);
   }
   catch (const std::exception& e)
   {
@@ -346,7 +345,7 @@ void PlantGazeboHost::endStep()
   if (stepping_)
   {
     stepping_ = false;
-    world_->Physics()->GetPhysicsUpdateMutex()->unlock();
+    physics_mutex_->unlock();
   }
 }
 

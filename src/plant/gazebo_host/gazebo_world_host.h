@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <boost/thread/recursive_mutex.hpp>
 #include <gazebo/common/Plugin.hh>
+#include <gazebo/common/UpdateInfo.hh>
 #include <gazebo/physics/PhysicsTypes.hh>
 #include <sdf/sdf.hh>
 
@@ -49,6 +51,8 @@ private:
   std::vector<gazebo::SystemPlugin::TPtr> system_plugins_;
   std::vector<std::vector<char>> system_arguments_;  // argv's strings outlive Load, as Gazebo's do
   bool stepping_ = false;  // the physics update mutex is held from beginStep to endStep
+  boost::recursive_mutex* physics_mutex_ = nullptr;
+  gazebo::common::UpdateInfo step_info_;  // the world's name once, the times each step
 };
 
 // Why Gazebo could not load `library` as a plugin (dlopen's reason, or no RegisterPlugin), "" where

@@ -4,8 +4,8 @@
 // A subscriber may connect or disconnect others, or itself, from its callback.
 #pragma once
 
+#include <atomic>
 #include <functional>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -31,11 +31,11 @@ class GZ_COMMON_VISIBLE Event
 public:
   virtual ~Event() = default;
   virtual void Disconnect(int id) = 0;
-  bool Signaled() const { return signaled_; }
-  void SetSignaled(bool signaled) { signaled_ = signaled; }
+  bool Signaled() const { return signaled_.load(); }
+  void SetSignaled(bool signaled) { signaled_.store(signaled); }
 
 private:
-  bool signaled_ = false;
+  std::atomic<bool> signaled_{false};
 };
 
 // One subscription: disconnects it from its event when the last ConnectionPtr to it goes.
@@ -67,16 +67,19 @@ public:
 
   ConnectionPtr Connect(const std::function<T>& subscriber)
   {
-    std::lock_guard<std::recursive_mutex> lock(state_->mutex);
+    std::lock_guard<std::mutex> lock(state_->mutex);
     const int id = state_->next_id++;
-    state_->subscribers.emplace(id, std::make_shared<std::function<T>>(subscriber));
+    auto subscribers = std::make_shared<Subscribers>(*state_->subscribers);
+    subscribers->push_back(std::make_shared<Slot>(id, subscriber));
+    state_->subscribers = std::move(subscribers);
+    state_->count.fetch_add(1, std::memory_order_release);
     return std::make_shared<Connection>(state_, id);
   }
 
   unsigned int ConnectionCount() const
   {
-    std::lock_guard<std::recursive_mutex> lock(state_->mutex);
-    return static_cast<unsigned int>(state_->subscribers.size());
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    return static_cast<unsigned int>(state_->subscribers->size());
   }
 
   // Calls every subscriber connected when the call began and still connected when its turn comes.
@@ -89,33 +92,50 @@ public:
   template <typename... Args>
   void Signal(Args&&... args)
   {
-    std::vector<std::pair<int, std::shared_ptr<std::function<T>>>> called;
+    // The list as it is now (connecting or disconnecting makes a new one, so a call never copies
+    // it: the plant signals worldUpdateBegin every step), each slot's flag read as its turn comes.
+    state_->SetSignaled(true);
+    if (state_->count.load(std::memory_order_acquire) == 0)
+      return;  // most of the world's events, most steps: not even the lock
+    std::shared_ptr<const Subscribers> called;
     {
-      std::lock_guard<std::recursive_mutex> lock(state_->mutex);
-      state_->SetSignaled(true);
-      called.assign(state_->subscribers.begin(), state_->subscribers.end());
+      std::lock_guard<std::mutex> lock(state_->mutex);
+      called = state_->subscribers;
     }
-    for (auto& subscriber : called)
-    {
-      {
-        std::lock_guard<std::recursive_mutex> lock(state_->mutex);
-        if (!state_->subscribers.count(subscriber.first))
-          continue;
-      }
-      (*subscriber.second)(args...);
-    }
+    for (const std::shared_ptr<Slot>& slot : *called)
+      if (slot->connected.load(std::memory_order_acquire))
+        slot->callback(args...);
   }
 
 private:
+  struct Slot
+  {
+    Slot(int slot_id, const std::function<T>& slot_callback) : id(slot_id), callback(slot_callback) {}
+    const int id;
+    const std::function<T> callback;
+    std::atomic<bool> connected{true};
+  };
+  using Subscribers = std::vector<std::shared_ptr<Slot>>;
+
   struct State : Event
   {
     void Disconnect(int id) override
     {
-      std::lock_guard<std::recursive_mutex> lock(mutex);
-      subscribers.erase(id);
+      std::lock_guard<std::mutex> lock(mutex);
+      auto remaining = std::make_shared<Subscribers>();
+      for (const std::shared_ptr<Slot>& slot : *subscribers)
+        if (slot->id == id)
+        {
+          slot->connected.store(false, std::memory_order_release);
+          count.fetch_sub(1, std::memory_order_release);
+        }
+        else
+          remaining->push_back(slot);
+      subscribers = std::move(remaining);
     }
-    mutable std::recursive_mutex mutex;
-    std::map<int, std::shared_ptr<std::function<T>>> subscribers;
+    mutable std::mutex mutex;  // guards the list's handle; no callback runs under it
+    std::shared_ptr<const Subscribers> subscribers = std::make_shared<Subscribers>();
+    std::atomic<int> count{0};  // the list's length, read without the lock
     int next_id = 0;
   };
   std::shared_ptr<State> state_;

@@ -19,7 +19,7 @@ namespace common
 class GZ_COMMON_VISIBLE Time
 {
 public:
-  Time();
+  Time() : sec(0), nsec(0) {}
   Time(const Time& time) = default;
   Time(const struct timeval& tv);
   Time(const struct timespec& tv);

@@ -52,7 +52,7 @@ public:
 private:
   std::shared_ptr<WorldBridge> bridge_;
   PhysicsEnginePtr physics_;
-  common::Time started_;
+  int64_t started_ns_;  // the wall clock when it was made
   // One Model for each of the simulator's models, as Gazebo's world owns them (Fini lets them go).
   mutable std::map<std::string, ModelPtr> models_;
 };
