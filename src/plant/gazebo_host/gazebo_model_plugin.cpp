@@ -4,7 +4,6 @@
 // reset_simulation call its Reset; it goes when its model is deleted. Its model is the world's
 // (gazebo_world_host.h): physics::World::ModelByName gives world plugins the same handle, and the
 // world's events (worldUpdateBegin ...) reach its callbacks each step.
-#include <exception>
 #include <memory>
 #include <string>
 
@@ -20,6 +19,8 @@ namespace bullet_plant
 {
 namespace
 {
+constexpr const char* kNotLoaded = "; the plugin is not loaded";
+
 class GazeboModelPluginHost final : public ModelPlugin
 {
 public:
@@ -37,20 +38,9 @@ public:
       context.log().error(label + ": " + unloadable + "; the plugin is not loaded");
       return false;
     }
-    try
-    {
-      plugin_ = gazebo::ModelPlugin::Create(d.library, d.name);
-    }
-    catch (const std::exception& e)
-    {
-      context.log().error(label + ": loading " + d.library + " threw: " + e.what() + "; the plugin is not loaded");
+    if (!pluginCall(context.log(), [&] { return label + ": loading " + d.library + " threw"; }, kNotLoaded,
+                    [&] { plugin_ = gazebo::ModelPlugin::Create(d.library, d.name); }))
       return false;
-    }
-    catch (...)
-    {
-      context.log().error(label + ": loading " + d.library + " threw: " + "something that is no std::exception" + "; the plugin is not loaded");
-      return false;
-    }
     if (!plugin_)
     {
       context.log().error(label + ": " + d.library + " made no plugin; the plugin is not loaded");
@@ -74,20 +64,11 @@ public:
     auto& host = static_cast<PlantGazeboHost&>(context.gazeboHost());
     host.modelBridge(context);  // the world knows the model from now on, though its spawn is not done
     model_ = host.world()->ModelByName(context.modelName());
-    try
+    if (!pluginCall(context.log(), [&] { return label + ": its Load threw"; }, kNotLoaded, [&] {
+          plugin_->Load(model_, element);
+          plugin_->Init();
+        }))
     {
-      plugin_->Load(model_, element);
-      plugin_->Init();
-    }
-    catch (const std::exception& e)
-    {
-      context.log().error(label + ": its Load threw: " + e.what() + "; the plugin is not loaded");
-      plugin_.reset();
-      return false;
-    }
-    catch (...)
-    {
-      context.log().error(label + ": its Load threw: " + "something that is no std::exception" + "; the plugin is not loaded");
       plugin_.reset();
       return false;
     }

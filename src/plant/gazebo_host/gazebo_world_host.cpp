@@ -92,6 +92,8 @@ private:
 
 namespace
 {
+constexpr const char* kWithout = "; the world runs without it";
+
 std::string worldPluginLabel(const std::string& name, const std::string& filename)
 {
   return "world plugin '" + name + "' (" + filename + ")";
@@ -190,20 +192,9 @@ bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
     return false;
   }
   gazebo::WorldPlugin::TPtr plugin;
-  try
-  {
-    plugin = gazebo::WorldPlugin::Create(d.library, d.name);
-  }
-  catch (const std::exception& e)
-  {
-    log.error(label + ": loading " + d.library + " threw: " + e.what() + "; the world runs without it");
+  if (!pluginCall(log, [&] { return label + ": loading " + d.library + " threw"; }, kWithout,
+                  [&] { plugin = gazebo::WorldPlugin::Create(d.library, d.name); }))
     return false;
-  }
-  catch (...)
-  {
-    log.error(label + ": loading " + d.library + " threw: " + "something that is no std::exception" + "; the world runs without it");
-    return false;
-  }
   if (!plugin || plugin->GetType() != gazebo::WORLD_PLUGIN)
   {
     log.error(label + ": " + d.library + (plugin ? " registers a plugin that is not a world plugin; a <plugin> in "
@@ -218,21 +209,11 @@ bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
     log.error(label + ": its <plugin> element: " + error + "; the world runs without it");
     return false;
   }
-  try
-  {
-    plugin->Load(world_, element);
-    plugin->Init();
-  }
-  catch (const std::exception& e)
-  {
-    log.error(label + ": its Load threw: " + e.what() + "; the world runs without it");
+  if (!pluginCall(log, [&] { return label + ": its Load threw"; }, kWithout, [&] {
+        plugin->Load(world_, element);
+        plugin->Init();
+      }))
     return false;
-  }
-  catch (...)
-  {
-    log.error(label + ": its Load threw: " + "something that is no std::exception" + "; the world runs without it");
-    return false;
-  }
   world_plugins_.push_back(plugin);
   return true;
 }
@@ -254,20 +235,9 @@ bool PlantGazeboHost::loadSystemPlugin(const std::string& filename, const std::v
     return false;
   }
   gazebo::SystemPlugin::TPtr plugin;
-  try
-  {
-    plugin = gazebo::SystemPlugin::Create(library, filename);
-  }
-  catch (const std::exception& e)
-  {
-    log.error(label + ": loading " + library + " threw: " + e.what() + "; the world runs without it");
+  if (!pluginCall(log, [&] { return label + ": loading " + library + " threw"; }, kWithout,
+                  [&] { plugin = gazebo::SystemPlugin::Create(library, filename); }))
     return false;
-  }
-  catch (...)
-  {
-    log.error(label + ": loading " + library + " threw: " + "something that is no std::exception" + "; the world runs without it");
-    return false;
-  }
   if (!plugin || plugin->GetType() != gazebo::SYSTEM_PLUGIN)
   {
     log.error(label + ": " + library + (plugin ? " registers a plugin that is not a system plugin "
@@ -284,23 +254,13 @@ bool PlantGazeboHost::loadSystemPlugin(const std::string& filename, const std::v
     argv.push_back(system_arguments_.back().data());
   }
   argv.push_back(nullptr);
-  try
-  {
-    plugin->Load(static_cast<int>(arguments.size()), argv.data());
-    plugin->Init();
-    // Gazebo's server loads system plugins before the world, which then says it was made.
-    gazebo::event::Events::worldCreated(world_->Name());
-  }
-  catch (const std::exception& e)
-  {
-    log.error(label + ": its Load threw: " + e.what() + "; the world runs without it");
+  if (!pluginCall(log, [&] { return label + ": its Load threw"; }, kWithout, [&] {
+        plugin->Load(static_cast<int>(arguments.size()), argv.data());
+        plugin->Init();
+        // Gazebo's server loads system plugins before the world, which then says it was made.
+        gazebo::event::Events::worldCreated(world_->Name());
+      }))
     return false;
-  }
-  catch (...)
-  {
-    log.error(label + ": its Load threw: " + "something that is no std::exception" + "; the world runs without it");
-    return false;
-  }
   system_plugins_.push_back(plugin);
   return true;
 }
@@ -313,35 +273,16 @@ void PlantGazeboHost::beginStep()
   stepping_ = true;
   step_info_.simTime = world_->SimTime();
   step_info_.realTime = world_->RealTime();
-  try
-  {
+  pluginCall(context_.log(), [] { return std::string("a Gazebo plugin's world update callback threw"); }, "", [&] {
     gazebo::event::Events::worldUpdateBegin(step_info_);
     gazebo::event::Events::beforePhysicsUpdate(step_info_);
-  }
-  catch (const std::exception& e)
-  {
-    context_.log().error(std::string("a Gazebo plugin's world update callback threw: ") + e.what());
-  }
-  catch (...)
-  {
-    context_.log().error(std::string("a Gazebo plugin's world update callback threw: ") + "something that is no std::exception");
-  }
+  });
 }
 
 void PlantGazeboHost::endStep()
 {
-  try
-  {
-    gazebo::event::Events::worldUpdateEnd();
-  }
-  catch (const std::exception& e)
-  {
-    context_.log().error(std::string("a Gazebo plugin's world update end callback threw: ") + e.what());
-  }
-  catch (...)
-  {
-    context_.log().error(std::string("a Gazebo plugin's world update end callback threw: ") + "something that is no std::exception");
-  }
+  pluginCall(context_.log(), [] { return std::string("a Gazebo plugin's world update end callback threw"); }, "",
+             [] { gazebo::event::Events::worldUpdateEnd(); });
   if (stepping_)
   {
     stepping_ = false;
@@ -351,22 +292,13 @@ void PlantGazeboHost::endStep()
 
 void PlantGazeboHost::reset(bool simulation)
 {
-  try
-  {
+  pluginCall(context_.log(), [] { return std::string("a Gazebo world plugin's Reset threw"); }, "", [&] {
     for (auto& plugin : world_plugins_)
       plugin->Reset();
     if (simulation)
       gazebo::event::Events::timeReset();
     gazebo::event::Events::worldReset();
-  }
-  catch (const std::exception& e)
-  {
-    context_.log().error(std::string("a Gazebo world plugin's Reset threw: ") + e.what());
-  }
-  catch (...)
-  {
-    context_.log().error(std::string("a Gazebo world plugin's Reset threw: ") + "something that is no std::exception");
-  }
+  });
 }
 
 std::unique_ptr<GazeboHost> createGazeboHost(WorldPluginContext& world) { return std::make_unique<PlantGazeboHost>(world); }

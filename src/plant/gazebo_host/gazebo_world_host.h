@@ -16,6 +16,7 @@
 #include <sdf/sdf.hh>
 
 #include "bullet_plant/gazebo_host.h"
+#include "bullet_plant/log.h"
 #include "gazebo_host/model_bridge.h"
 
 namespace bullet_plant
@@ -54,6 +55,28 @@ private:
   boost::recursive_mutex* physics_mutex_ = nullptr;
   gazebo::common::UpdateInfo step_info_;  // the world's name once, the times each step
 };
+
+// Runs a plugin's code: where it throws (anything), one error "<what>: <why><consequence>", where
+// `what()` says what threw (made only then: the world's update calls it every step), and false.
+// The simulator never dies of a plugin's exception.
+template <typename What, typename Call>
+bool pluginCall(Log& log, What&& what, const char* consequence, Call&& call)
+{
+  try
+  {
+    call();
+    return true;
+  }
+  catch (const std::exception& e)
+  {
+    log.error(what() + ": " + e.what() + consequence);
+  }
+  catch (...)
+  {
+    log.error(what() + ": something that is no std::exception" + consequence);
+  }
+  return false;
+}
 
 // Why Gazebo could not load `library` as a plugin (dlopen's reason, or no RegisterPlugin), "" where
 // it can: the error then names the reason beside the plugin. `registration` names the macro its
