@@ -17,6 +17,19 @@ from tianracer_description.path_metrics import circle_radius
 from tianracer_description.urdf_geometry import UrdfModel, ackermann_geometry
 
 
+def longest_run(samples):
+    """The (x, y) of the longest run of consecutive samples (x, y, steady) that are all steady."""
+    best, run = [], []
+    for x, y, steady in samples:
+        if not steady:
+            run = []
+            continue
+        run.append((x, y))
+        if len(run) > len(best):
+            best = run
+    return best
+
+
 def yaw(q):
     return math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
 
@@ -68,10 +81,13 @@ class FigureEight:
                 commanded.append((x, y))
             # The loop is where the car turned at its steady rate for this steering, read from its own
             # odometry: a command that reached the plant late (a loaded machine, a fast pace) shifts
-            # the loop in simulated time, not what it is.
+            # the loop in simulated time, not what it is. Its longest unbroken stretch: a command
+            # later than cmdvel2gazebo's 0.2 s timeout (50 ms of wall time at four times real time)
+            # stops the car with its wheels straight, and the turn after it is an arc about another
+            # centre.
             sign = 1.0 if steering > 0 else -1.0
-            loops.append([(px, py) for t, px, py, _, rate_z in self.odom
-                          if begin <= t <= begin + loop_time + 3.0 and abs(sign * rate_z - turn_rate) < 0.1 * turn_rate])
+            loops.append(longest_run([(px, py, abs(sign * rate_z - turn_rate) < 0.1 * turn_rate)
+                                      for t, px, py, _, rate_z in self.odom if begin <= t <= begin + loop_time + 3.0]))
         self.cmd.publish(Twist())
         rospy.sleep(1.0)
 
