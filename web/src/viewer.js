@@ -685,6 +685,9 @@ window.viewer = {
   ready: () => world.children.length > 0 && pendingMeshes === 0 && (links.size === 0 || posesReceived > 0),
   // the window pixel (x right, y down, CSS pixels) a world point is drawn at
   project: (x, y, z) => {
+    // the camera as it is now: a follow moves it with the poses, its matrices are made at the next
+    // frame (which a loaded machine draws late)
+    camera.updateMatrixWorld();
     const p = new THREE.Vector3(x, y, z).project(camera);
     return [(p.x + 1) / 2 * canvas.clientWidth, (1 - p.y) / 2 * canvas.clientHeight];
   },
