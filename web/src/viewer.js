@@ -416,7 +416,10 @@ function listModels(robots) {
     follow.onchange = () => {
       for (const other of list.querySelectorAll('input.follow')) if (other !== follow) other.checked = false;
       following = follow.checked ? robot : null;
-      followedAt = null;
+      // followed from where it is drawn now: the next poses may already have it elsewhere (a
+      // set_model_state right after the tick), a move the camera must follow too
+      const drawn = following && linkPoses.get(rootLinks.get(following));
+      followedAt = drawn ? new THREE.Vector3(drawn[0], drawn[1], drawn[2]) : null;
     };
     const move = document.createElement('button');
     move.className = 'move';
