@@ -10,11 +10,13 @@ set(GAZEBO_API_VERSION_FULL 11.15.1)  # include/gazebo-11/gazebo/gazebo_config.h
 set(GAZEBO_API_VERSION 11.15)
 set(GAZEBO_API_MAJOR_VERSION 11)
 
-# Gazebo's common library: time, the console, events, plugin paths.
+# Gazebo's common library: time, the console, events, plugin paths, animations.
 add_library(gazebo_common SHARED
+  src/gazebo/common/Animation.cc
   src/gazebo/common/Console.cc
   src/gazebo/common/Events.cc
   src/gazebo/common/Exception.cc
+  src/gazebo/common/KeyFrame.cc
   src/gazebo/common/PID.cc
   src/gazebo/common/SystemPaths.cc
   src/gazebo/common/Time.cc)

@@ -49,6 +49,9 @@ public:
   virtual int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
                      const std::string& child_link) = 0;
   virtual void detach(int attachment) = 0;
+  // World::InsertModelString / InsertModelFile / InsertModelSDF: a model as SDF text, added between
+  // steps (World::insertModel).
+  virtual void insertModel(const std::string& sdf_xml) = 0;
   virtual Log& log() = 0;
 
 protected:

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -95,6 +96,19 @@ public:
   Robot& spawn(RobotDescription description, const std::string& name, const urdf::Pose& pose,
                const std::string& robot_namespace = "",
                const std::map<std::string, double>& initial_joints = {});
+  // Gazebo's factory: a model a Gazebo plugin asks for (World::InsertModelString, InsertModelFile,
+  // InsertModelSDF), as SDF text readInsertedModel reads, from any thread. It comes between steps, as
+  // Gazebo's world adds it after its next update, under its own <model name> made unique as Gazebo
+  // makes it (uniqueModelName), where its <pose> puts it: through the model inserter where one is set
+  // (the node's, which loads its plugins as a spawn's, paused or not), otherwise at the end of the
+  // step in progress or the next. One that cannot be read or added is an error in the log, naming
+  // why; the world goes on.
+  void insertModel(const std::string& sdf_xml);
+  using ModelInserter = std::function<void(const std::string& sdf_xml)>;
+  // The inserter takes the insertions over, those queued so far first.
+  void setModelInserter(ModelInserter inserter);
+  // `name` where no model has it, else Gazebo's World::UniqueModelName: NAME_0, NAME_1 ...
+  std::string uniqueModelName(const std::string& name);
   // Takes out the model `name`: a robot, or one of the world's static models (its collisions, and what
   // lidars and cameras see of it); false for no such model.
   bool remove(const std::string& name);

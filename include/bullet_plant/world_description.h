@@ -150,4 +150,15 @@ public:
 // The empty world, as Gazebo's worlds/empty.world: default physics, its sun and a ground plane.
 WorldDescription emptyWorldDescription();
 
+// What spawn_urdf_model and spawn_sdf_model are given, as gazebo_ros takes it: URDF (<robot>), an SDF
+// model (<sdf><model>), or gazebo_ros's model database request (<sdf><world><include><uri>model://NAME,
+// what spawn_model -database sends), found in GAZEBO_MODEL_PATH and the packages' gazebo_model_path
+// exports as the world file's includes are; the include's <pose> (none: the identity, as gazebo_ros
+// writes one) is the model's pose. Throws DescriptionError naming what is wrong.
+ModelDescription readSpawnedModel(const std::string& model_xml);
+// What Gazebo's factory is given (World::InsertModelString / InsertModelFile / InsertModelSDF): the
+// same, but an <include> without a <pose> puts the model where its own <pose> says, as Gazebo's
+// factory reads the model's file.
+ModelDescription readInsertedModel(const std::string& model_xml);
+
 }  // namespace bullet_plant

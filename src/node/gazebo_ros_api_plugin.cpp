@@ -167,6 +167,12 @@ GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private
   scene_link_states_gate_.setPeriodNs(scene_period_ns);
   scene_contacts_gate_.setPeriodNs(scene_period_ns);
   watchForViewers();
+  // The scene again after each model that comes or goes (spawn, delete, a Gazebo plugin's insertion):
+  // the only ways models come and go.
+  plant_.connectModelsChanged([this] {
+    publishScene();
+    publishScenePoses();
+  });
   plant_.connectWorldUpdateEnd([this] {
     publishModelStates();
     publishLinkStates();
@@ -238,7 +244,7 @@ void GazeboRosApiPlugin::advertiseViewerTopics()
   ROS_INFO("a viewer asked: %s, %s, %s and %s are up", scene_pub_.getTopic().c_str(),
            scene_link_states_pub_.getTopic().c_str(), scene_contacts_pub_.getTopic().c_str(),
            subscribers_.back().getTopic().c_str());
-  publishScene();  // the world's; again after each spawn and delete, the only ways robots come and go
+  publishScene();  // the world's; again after each model that comes or goes (connectModelsChanged)
 }
 
 template <class Srv>
@@ -360,11 +366,6 @@ bool GazeboRosApiPlugin::spawnModel(gazebo_msgs::SpawnModel::Request& req, gazeb
   std::string message;
   res.success = plant_.spawn(req.model_name, req.model_xml, req.robot_namespace, pose, {}, message);
   res.status_message = res.success ? "SpawnModel: Successfully spawned entity" : "SpawnModel: Failure - " + message;
-  plant_.onSimThread<bool>([this] {
-    publishScene();
-    publishScenePoses();
-    return true;
-  });
   return true;
 }
 
@@ -373,11 +374,6 @@ bool GazeboRosApiPlugin::deleteModel(gazebo_msgs::DeleteModel::Request& req, gaz
   std::string message;
   res.success = plant_.remove(req.model_name, message);
   res.status_message = res.success ? "DeleteModel: successfully deleted model" : "DeleteModel: model does not exist";
-  plant_.onSimThread<bool>([this] {
-    publishScene();
-    publishScenePoses();
-    return true;
-  });
   if (!res.success)
     ROS_ERROR("DeleteModel: model [%s] does not exist", req.model_name.c_str());
   return true;

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include <rosgraph_msgs/Clock.h>
-#include <tinyxml2.h>
 
 #include "bullet_plant/gazebo_host.h"
 #include "bullet_plant/geometry.h"
@@ -50,56 +49,6 @@ Param toParam(XmlRpc::XmlRpcValue& v)
 }
 
 }  // namespace
-
-ModelDescription readSpawnedModel(const std::string& model_xml)
-{
-  tinyxml2::XMLDocument doc;
-  doc.Parse(model_xml.c_str(), model_xml.size());
-  tinyxml2::XMLElement* root = doc.Error() ? nullptr : doc.RootElement();
-  tinyxml2::XMLElement* world = root && std::string(root->Name()) == "sdf" && !root->FirstChildElement("model")
-                                    ? root->FirstChildElement("world")
-                                    : nullptr;
-  tinyxml2::XMLElement* include = world && !world->FirstChildElement("model") ? world->FirstChildElement("include") : nullptr;
-  if (!include)
-    return parseModelXml(model_xml);  // URDF or an SDF model, or the parser's complaint
-  // The model database request: the world reader finds and reads the included model.
-  std::string uri = include->FirstChildElement("uri") && include->FirstChildElement("uri")->GetText()
-                        ? include->FirstChildElement("uri")->GetText()
-                        : "";
-  uri.erase(0, uri.find_first_not_of(" \t\r\n"));
-  uri.erase(uri.find_last_not_of(" \t\r\n") + 1);
-  if (!include->FirstChildElement("pose"))
-    include->InsertEndChild(doc.NewElement("pose"))->ToElement()->SetText("0 0 0 0 0 0");
-  auto read = [&doc] {
-    tinyxml2::XMLPrinter printer;
-    doc.Print(&printer);
-    WorldDescription world = parseWorldDescription(printer.CStr());
-    if (!world.errors.empty())
-      throw DescriptionError(world.errors.front());
-    return world;
-  };
-  WorldDescription found = read();
-  bool is_static = false;
-  if (found.models.empty())
-  {
-    // Not found: the world reader's warning names the URI and where it looked.
-    for (const std::string& warning : found.warnings)
-      if (warning.rfind("<include> of '" + uri + "'", 0) == 0)
-        throw DescriptionError(warning);
-    // Found, but <static>: scenery to a world; spawned, a model fixed where it is put, as Gazebo's.
-    tinyxml2::XMLElement* static_element = include->FirstChildElement("static");
-    if (!static_element)
-      static_element = include->InsertEndChild(doc.NewElement("static"))->ToElement();
-    static_element->SetText("false");
-    found = read();
-    is_static = true;
-  }
-  if (found.models.empty())
-    throw DescriptionError("<include> of '" + uri + "' gives no model to spawn");
-  ModelDescription model = std::move(found.models.front());
-  model.robot.is_static = model.robot.is_static || is_static;
-  return model;
-}
 
 void RosPlant::post(std::function<void()> work)
 {
@@ -212,6 +161,8 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
   private_nh_.param("lockstep", lockstep, false);
   world_->setLockstep(lockstep);
   loadWorldModels();
+  // What Gazebo plugins insert (their world's Load may have already) comes as a spawn's, with its plugins.
+  world_->setModelInserter([this](const std::string& sdf_xml) { insertModel(sdf_xml); });
   // gzserver -s FILE: Gazebo system plugins of the user's own (gazebo_ros's own are this node),
   // Load given gzserver's command line as Gazebo's server gives it.
   const std::vector<std::string> server_arguments = readListParam(private_nh_, "server_arguments", {"gzserver"});
@@ -240,6 +191,7 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
 
 RosPlant::~RosPlant()
 {
+  world_->setModelInserter(nullptr);  // a plugin going with the world inserts into it, not into this
   robots_.clear();
 }
 
@@ -255,21 +207,55 @@ void RosPlant::copyParams(const std::string& key)
   });
 }
 
-bool RosPlant::spawn(const std::string& name, const std::string& model_xml, const std::string& ns,
-                     const urdf::Pose& pose, const std::map<std::string, double>& joints, std::string& message)
+RosPlant::SpawnRequest RosPlant::prepareSpawn(const std::string& name, ModelDescription model,
+                                              const std::string& ns, const urdf::Pose& pose,
+                                              const std::map<std::string, double>& joints)
 {
+  SpawnRequest request;
+  request.name = name.empty() ? model.name : name;
+  // gazebo_ros: the SDF's model <pose> in the frame of the request's initial pose (a URDF has none).
+  request.pose = compose(pose, model.pose);
+  request.description = std::move(model.robot);
+  request.ns = ns;
+  request.joints = joints;
   // The robot namespace decides where its pid_gains live: read it before the sim thread spawns.
-  RobotDescription description;
-  urdf::Pose model_pose;
-  std::string control_ns;
+  request.control_ns = request.description.control.controlNamespace(ns);
+  requireValidRosName(request.description.control.givenControlNamespace(ns),
+                      "robot '" + request.name + "' robotNamespace");
+  copyParams(request.control_ns + "/gazebo_ros_control");
+  copyParams("/gazebo_ros_control");  // where legacyModeNS (the default) has Gazebo look for pid_gains
+  for (const ModelPluginDescription& plugin : request.description.model_plugins)
+  {
+    // The mimic joint plugin's pid gains, wherever its <hasPID> puts them.
+    const std::string& gains_element = findPluginFile(plugin.filename)->pid_gains_element;
+    if (!gains_element.empty() && plugin.has(gains_element))
+    {
+      const std::string gains = plugin.text(gains_element, "");
+      const std::string plugin_ns =
+          gains.empty() || gains[0] != '/' ? modelPluginNamespace(plugin, ns, request.name) : "";
+      copyParams("/" + joinPath(plugin_ns, gains.empty() ? "gazebo_ros_control" : gains));
+    }
+  }
+  return request;
+}
+
+bool RosPlant::addModel(SpawnRequest& request, std::string& message)
+{
+  const std::string& name = request.name;
   try
   {
-    ModelDescription model = readSpawnedModel(model_xml);
-    // gazebo_ros: the SDF's model <pose> in the frame of the request's initial pose (a URDF has none).
-    model_pose = compose(pose, model.pose);
-    description = std::move(model.robot);
-    control_ns = description.control.controlNamespace(ns);
-    requireValidRosName(description.control.givenControlNamespace(ns), "robot '" + name + "' robotNamespace");
+    // Two controller managers cannot offer their services under one name: the second would be unreachable.
+    for (Robot* other : world_->robots())
+      if (request.description.control.present && other->controllerManager() &&
+          other->controlNamespace() == request.control_ns)
+        throw std::invalid_argument("robot '" + name + "': robotNamespace '" + other->controlNamespace() +
+                                    "' already holds the controller manager of robot '" + other->name() +
+                                    "'; give each robot its own namespace (spawn_model -robot_namespace)");
+    Robot& robot = world_->spawn(std::move(request.description), name, request.pose, request.ns, request.joints);
+    loadModelPlugins(robot);
+    message = "spawned '" + name + "'" +
+              (robot.controllerManager() ? " with a controller manager in " + robot.controlNamespace() : "");
+    ROS_INFO_STREAM(message);
   }
   catch (const std::exception& e)
   {
@@ -277,42 +263,50 @@ bool RosPlant::spawn(const std::string& name, const std::string& model_xml, cons
     ROS_ERROR("Could not spawn '%s': %s", name.c_str(), message.c_str());
     return false;
   }
-  copyParams(control_ns + "/gazebo_ros_control");
-  copyParams("/gazebo_ros_control");  // where legacyModeNS (the default) has Gazebo look for pid_gains
-  for (const ModelPluginDescription& plugin : description.model_plugins)
+  for (const std::function<void()>& callback : models_changed_)
+    callback();
+  return true;
+}
+
+bool RosPlant::spawn(const std::string& name, const std::string& model_xml, const std::string& ns,
+                     const urdf::Pose& pose, const std::map<std::string, double>& joints, std::string& message)
+{
+  SpawnRequest request;
+  try
   {
-    // The mimic joint plugin's pid gains, wherever its <hasPID> puts them.
-    const std::string& gains_element = findPluginFile(plugin.filename)->pid_gains_element;
-    if (!gains_element.empty() && plugin.has(gains_element))
-    {
-      const std::string gains = plugin.text(gains_element, "");
-      const std::string plugin_ns = gains.empty() || gains[0] != '/' ? modelPluginNamespace(plugin, ns, name) : "";
-      copyParams("/" + joinPath(plugin_ns, gains.empty() ? "gazebo_ros_control" : gains));
-    }
+    request = prepareSpawn(name, readSpawnedModel(model_xml), ns, pose, joints);
   }
-  return onSimThread<bool>([&] {
-    try
-    {
-      // Two controller managers cannot offer their services under one name: the second would be unreachable.
-      for (Robot* other : world_->robots())
-        if (description.control.present && other->controllerManager() && other->controlNamespace() == control_ns)
-          throw std::invalid_argument("robot '" + name + "': robotNamespace '" + other->controlNamespace() +
-                                      "' already holds the controller manager of robot '" + other->name() +
-                                      "'; give each robot its own namespace (spawn_model -robot_namespace)");
-      Robot& robot = world_->spawn(std::move(description), name, model_pose, ns, joints);
-      loadModelPlugins(robot);
-      message = "spawned '" + name + "'" + (robot.controllerManager() ? " with a controller manager in " + robot.controlNamespace() : "");
-      ROS_INFO_STREAM(message);
-      return true;
-    }
-    catch (const std::exception& e)
-    {
-      message = e.what();
-      ROS_ERROR("Could not spawn '%s': %s", name.c_str(), message.c_str());
-      return false;
-    }
+  catch (const std::exception& e)
+  {
+    message = e.what();
+    ROS_ERROR("Could not spawn '%s': %s", name.c_str(), message.c_str());
+    return false;
+  }
+  return onSimThread<bool>([&] { return addModel(request, message); });
+}
+
+void RosPlant::insertModel(const std::string& sdf_xml)
+{
+  std::shared_ptr<SpawnRequest> request;
+  try
+  {
+    request = std::make_shared<SpawnRequest>(prepareSpawn("", readInsertedModel(sdf_xml), "", urdf::Pose(), {}));
+  }
+  catch (const std::exception& e)
+  {
+    ROS_ERROR("Could not insert the model a Gazebo plugin asked for (World::InsertModelString, InsertModelFile or "
+              "InsertModelSDF): %s; the world goes on without it", e.what());
+    return;
+  }
+  // After the parameters prepareSpawn copies, as Gazebo's world adds it after its update, paused or not.
+  post([this, request] {
+    request->name = world_->uniqueModelName(request->name);
+    std::string message;
+    addModel(*request, message);
   });
 }
+
+void RosPlant::connectModelsChanged(std::function<void()> callback) { models_changed_.push_back(std::move(callback)); }
 
 void RosPlant::loadModelPlugins(Robot& robot)
 {
@@ -359,6 +353,8 @@ bool RosPlant::remove(const std::string& name, std::string& message)
       return false;
     }
     message = "deleted '" + name + "'";
+    for (const std::function<void()>& callback : models_changed_)
+      callback();
     return true;
   });
 }

@@ -81,8 +81,32 @@ public:
   bool spawn(const std::string& name, const std::string& model_xml, const std::string& ns, const urdf::Pose& pose,
              const std::map<std::string, double>& joints, std::string& message);
   bool remove(const std::string& name, std::string& message);
+  // Gazebo's factory (a plugin's World::InsertModelString, InsertModelFile, InsertModelSDF; the
+  // world's model inserter), from any thread: read and its parameters copied now, added on the
+  // simulation thread between steps, paused or not, as spawn adds a model, under its own name made
+  // unique as Gazebo's world makes it (NAME_0, NAME_1 ...). What cannot be read or added is an error.
+  void insertModel(const std::string& sdf_xml);
+  // Gazebo's model events as gazebo_ros's scene follows them: `callback` runs on the simulation
+  // thread after a model came (spawn, insertModel) or went (remove).
+  void connectModelsChanged(std::function<void()> callback);
 
 private:
+  // A model read for spawn and insertModel, its parameters copied: what the simulation thread adds.
+  struct SpawnRequest
+  {
+    std::string name;
+    RobotDescription description;
+    urdf::Pose pose;
+    std::string ns;
+    std::map<std::string, double> joints;
+    std::string control_ns;  // where its controllers' parameters are
+  };
+  // The model read (readSpawnedModel, readInsertedModel), placed, and the parameters its controllers
+  // and plugins read copied (`name` empty: the model's own); throws naming what is wrong. Any thread.
+  SpawnRequest prepareSpawn(const std::string& name, ModelDescription model, const std::string& ns,
+                            const urdf::Pose& pose, const std::map<std::string, double>& joints);
+  // On the simulation thread: the model added and its plugins loaded; false with why in `message`.
+  bool addModel(SpawnRequest& request, std::string& message);
   // The world file's models, which the World spawned as it was made: their model plugins, as spawn's.
   void loadWorldModels();
   // A robot just added: its model plugins; throws (the robot taken out again) when they cannot load.
@@ -99,6 +123,7 @@ private:
   ModelPluginLoader load_model_plugins_;
   std::map<std::string, std::unique_ptr<ModelPlugins>> robots_;
   std::vector<std::function<void()>> world_update_end_;
+  std::vector<std::function<void()>> models_changed_;
   ros::Publisher clock_pub_;
 
   std::mutex queue_mutex_;
@@ -115,13 +140,6 @@ private:
   ros::WallTime last_status_;
   int64_t status_start_sim_ns_ = 0;
 };
-
-// What spawn_urdf_model and spawn_sdf_model are given, as gazebo_ros takes it: URDF (<robot>), an SDF
-// model (<sdf><model>), or gazebo_ros's model database request (<sdf><world><include><uri>model://NAME,
-// what spawn_model -database sends), found in GAZEBO_MODEL_PATH and the packages' gazebo_model_path
-// exports as the world file's includes are; the include's <pose> (none: the identity, as gazebo_ros
-// writes one) is the model's pose. Throws DescriptionError naming what is wrong.
-ModelDescription readSpawnedModel(const std::string& model_xml);
 
 template <class Result>
 Result RosPlant::onSimThread(std::function<Result()> work)

@@ -1,7 +1,8 @@
 // Gazebo 11's common library over the plant (include/gazebo-11/gazebo/common/): common::Time's
 // arithmetic as plugins use it on simulated time, event::EventT's connections as plugins hold
-// them, the console's prefixes, PluginT::Create's errors for a library that is not a plugin, and
-// sensors::Sensor's base as a sensor plugin reads it.
+// them, the console's prefixes, PluginT::Create's errors for a library that is not a plugin,
+// common::Animation's key frames and interpolation, and sensors::Sensor's base as a sensor plugin
+// reads it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -189,6 +190,96 @@ sdf::ElementPtr sensorElement(const std::string& xml)
   sdf::init(document);
   sdf::readString("<sdf version='1.6'><model name='m'><link name='l'>" + xml + "</link></model></sdf>", document);
   return document->Root()->GetElement("model")->GetElement("link")->GetElement("sensor");
+}
+
+// Gazebo's animate_joints example's key frames, on a loop of 5 s.
+TEST(GazeboAnimation, ANumericAnimationInterpolatesBetweenItsKeyFramesAndWrapsWhereItLoops)
+{
+  gazebo::common::NumericAnimationPtr anim(new gazebo::common::NumericAnimation("swing", 5.0, true));
+  anim->CreateKeyFrame(0.0)->SetValue(0.1);
+  anim->CreateKeyFrame(5.0)->SetValue(0.1);
+  anim->CreateKeyFrame(2.5)->SetValue(2.0);  // created out of order, kept in time order
+  ASSERT_EQ(anim->GetKeyFrameCount(), 3u);
+  EXPECT_DOUBLE_EQ(anim->GetKeyFrame(1)->GetTime(), 2.5);
+  EXPECT_EQ(anim->GetKeyFrame(3), nullptr);
+
+  gazebo::common::NumericKeyFrame value(0);
+  anim->GetInterpolatedKeyFrame(value);
+  EXPECT_DOUBLE_EQ(value.GetValue(), 0.1);
+  anim->AddTime(1.25);
+  anim->GetInterpolatedKeyFrame(value);
+  EXPECT_NEAR(value.GetValue(), 1.05, 1e-12);
+  anim->AddTime(2.5);  // 3.75 s: half way back
+  anim->GetInterpolatedKeyFrame(value);
+  EXPECT_NEAR(value.GetValue(), 1.05, 1e-12);
+  anim->AddTime(1.75);  // 5.5 s: 0.5 s into the next loop
+  EXPECT_NEAR(anim->GetTime(), 0.5, 1e-12);
+  anim->GetInterpolatedKeyFrame(value);
+  EXPECT_NEAR(value.GetValue(), 0.1 + 1.9 * 0.2, 1e-12);
+}
+
+TEST(GazeboAnimation, WithoutALoopTheTimeStaysWithinTheLengthAndBadInputChangesNothing)
+{
+  gazebo::common::NumericAnimation anim("once", 2.0, false);
+  anim.CreateKeyFrame(0.0)->SetValue(0.0);
+  anim.CreateKeyFrame(2.0)->SetValue(4.0);
+  anim.AddTime(3.0);
+  EXPECT_DOUBLE_EQ(anim.GetTime(), 2.0);
+  gazebo::common::NumericKeyFrame value(0);
+  anim.GetInterpolatedKeyFrame(value);
+  EXPECT_DOUBLE_EQ(value.GetValue(), 4.0);
+  anim.AddTime(-5.0);
+  EXPECT_DOUBLE_EQ(anim.GetTime(), 0.0);
+  anim.AddTime(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_DOUBLE_EQ(anim.GetTime(), 0.0);
+
+  // no key frames: the value asked for is left as it was; a loop of no length stays at 0
+  gazebo::common::NumericAnimation empty("empty", 0.0, true);
+  empty.AddTime(1.0);
+  gazebo::common::NumericKeyFrame untouched(0);
+  untouched.SetValue(7.0);
+  empty.GetInterpolatedKeyFrame(untouched);
+  EXPECT_DOUBLE_EQ(untouched.GetValue(), 7.0);
+}
+
+TEST(GazeboAnimation, APoseAnimationPassesThroughItsKeyFramesAlongSplines)
+{
+  gazebo::common::PoseAnimation anim("slide", 2.0, false);
+  for (int second = 0; second <= 2; ++second)
+  {
+    gazebo::common::PoseKeyFrame* key = anim.CreateKeyFrame(second);
+    key->Translation(ignition::math::Vector3d(second, 0, 0));
+    key->Rotation(ignition::math::Quaterniond(0, 0, 0.5 * second));
+  }
+  gazebo::common::PoseKeyFrame pose(0);
+  anim.SetTime(1.0);  // on a key frame: that key frame
+  anim.GetInterpolatedKeyFrame(pose);
+  EXPECT_NEAR(pose.Translation().X(), 1.0, 1e-9);
+  EXPECT_NEAR(pose.Rotation().Yaw(), 0.5, 1e-9);
+  // between key frames: along ignition-math's splines through them (Catmull-Rom through the
+  // translations, squad through the rotations, their tangents made once), as Gazebo's
+  anim.SetTime(0.5);
+  anim.GetInterpolatedKeyFrame(pose);
+  ignition::math::Spline translations;
+  ignition::math::RotationSpline rotations;
+  translations.AutoCalculate(false);
+  rotations.AutoCalculate(false);
+  for (int second = 0; second <= 2; ++second)
+  {
+    translations.AddPoint(ignition::math::Vector3d(second, 0, 0));
+    rotations.AddPoint(ignition::math::Quaterniond(0, 0, 0.5 * second));
+  }
+  translations.RecalcTangents();
+  rotations.RecalcTangents();
+  EXPECT_NEAR(pose.Translation().X(), translations.Interpolate(0, 0.5).X(), 1e-12);
+  EXPECT_NEAR(pose.Rotation().Yaw(), rotations.Interpolate(0, 0.5).Yaw(), 1e-12);
+  EXPECT_GT(pose.Translation().X(), 0.4);  // on its way from the first key frame to the second
+  EXPECT_LT(pose.Translation().X(), 0.5);
+  anim.SetTime(1.5);  // the second segment: from index 1
+  anim.GetInterpolatedKeyFrame(pose);
+  EXPECT_NEAR(pose.Translation().X(), translations.Interpolate(1, 0.5).X(), 1e-12);
+  EXPECT_GT(pose.Translation().X(), 1.0);
+  EXPECT_LT(pose.Translation().X(), 2.0);
 }
 
 TEST(GazeboSensor, ReadsItsElementOverTheSpecsDefaultsAndNamesItselfByItsParent)

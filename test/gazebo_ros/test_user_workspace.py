@@ -250,3 +250,147 @@ def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catk
                for line in errors), log
     assert "world plugin 'missing' (libno_such_plugin.so)" in log and 'no such file on GAZEBO_PLUGIN_PATH' in log, log
     assert 'world default; updates' in hello and '; models 2;' in hello and 'arguments gzserver -u --verbose -s libhello_system.so %s' % world in hello, hello
+
+
+# The world of the user's factory plugin and animated models: an arm whose joint the user's model
+# plugin swings through key frames, a box it slides along x (Gazebo's animate_joints and animate_pose
+# examples), and a world plugin that adds models in its Load as Gazebo's factory example does (a model
+# file by URI, SDF text twice under one name, sdformat's SDF renamed; and a model it cannot read).
+FACTORY_WORLD = """<?xml version="1.0"?>
+<sdf version="1.7">
+  <world name="default">
+    <include><uri>model://ground_plane</uri></include>
+    <model name="arm">
+      <joint name="fixed_to_world" type="fixed"><parent>world</parent><child>base</child></joint>
+      <link name="base"><pose>0 0 0.1 0 0 0</pose>
+        <inertial><mass>5</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz></inertia></inertial>
+        <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+      </link>
+      <link name="boom"><pose>0.3 0 0.25 0 0 0</pose>
+        <inertial><mass>0.5</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+        <collision name="c"><geometry><box><size>0.5 0.05 0.05</size></box></geometry></collision>
+      </link>
+      <joint name="swing" type="revolute"><parent>base</parent><child>boom</child>
+        <pose>-0.3 0 0 0 0 0</pose><axis><xyz>0 0 1</xyz></axis></joint>
+      <plugin name="animate" filename="libanimate_model.so"><joint>swing</joint><swing>1.2</swing></plugin>
+    </model>
+    <model name="slider"><pose>0 -2 0.1 0 0 0</pose>
+      <link name="body">
+        <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+        <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+      </link>
+      <plugin name="animate" filename="libanimate_model.so"><move>1.0</move></plugin>
+    </model>
+    <plugin name="factory" filename="libfactory_world.so">
+      <model_uri>model://crate</model_uri><sphere_name>ball</sphere_name><box_name>renamed_box</box_name>
+    </plugin>
+  </world>
+</sdf>
+"""
+CRATE_MODEL = """<?xml version="1.0"?>
+<sdf version="1.6"><model name="crate"><pose>-2 3 0.25 0 0 0</pose><link name="link">
+  <inertial><mass>2</mass></inertial>
+  <collision name="c"><geometry><box><size>0.5 0.5 0.5</size></box></geometry></collision>
+</link></model></sdf>
+"""
+
+
+@pytest.mark.slow
+def test_a_world_plugin_inserts_models_and_a_model_plugin_animates_joints_and_poses_under_gzserver(
+        catkin_make_workspace, tmp_path):
+    """The user's world plugin (World::InsertModelFile / InsertModelString / InsertModelSDF) adds its
+    models after the world's first update, paused as it is, named as Gazebo names them, and the world
+    goes on past the one it cannot read; the user's model plugin (Model::SetJointAnimation,
+    SetAnimation over common::NumericAnimation and PoseAnimation) moves the arm's joint and the slider
+    where the key frames say at each simulated time, and is told when each animation completes."""
+    workspace, env, _ = catkin_make_workspace
+    models = tmp_path / 'models'
+    (models / 'crate').mkdir(parents=True)
+    (models / 'crate' / 'model.config').write_text(
+        '<?xml version="1.0"?><model><name>crate</name><sdf version="1.6">model.sdf</sdf></model>')
+    (models / 'crate' / 'model.sdf').write_text(CRATE_MODEL)
+    world = tmp_path / 'factory.world'
+    world.write_text(FACTORY_WORLD)
+    ros = RosSystem(str(tmp_path), base_env=dict(env, GAZEBO_MODEL_PATH=str(models)))
+    try:
+        ros.set_param('/use_sim_time', True)
+        server = ros.start(['rosrun', 'gazebo_ros', 'gzserver', '-u', '--verbose', str(world)], 'gzserver')
+        ros.service('/gazebo/get_world_properties', wait=True, timeout=60)
+        inserted = {'crate', 'ball', 'ball_0', 'renamed_box'}
+        ros.wait_until(lambda: inserted <= set(ros.service('/gazebo/get_world_properties')['model_names']), 30,
+                       'the models the factory plugin inserted, while paused')
+        paused_time = ros.service('/gazebo/get_world_properties')['sim_time']
+        names = ros.service('/gazebo/get_world_properties')['model_names']
+        placed = {name: ros.service('/gazebo/get_model_state', '{model_name: %s}' % name)['pose']['position']
+                  for name in ('crate', 'ball', 'ball_0', 'renamed_box')}
+        slider_start = ros.service('/gazebo/get_model_state', '{model_name: slider}')['pose']['position']['x']
+
+        def run_to(seconds):
+            ros.service('/gazebo/unpause_physics')
+            ros.wait_until(lambda: ros.service('/gazebo/get_world_properties')['sim_time'] >= seconds, 60,
+                           '%s s simulated' % seconds)
+            ros.service('/gazebo/pause_physics')
+            now = ros.service('/gazebo/get_world_properties')['sim_time']
+            swing = ros.service('/gazebo/get_joint_properties', '{joint_name: swing}')['position'][0]
+            slider = ros.service('/gazebo/get_model_state', '{model_name: slider}')['pose']['position']['x']
+            return now, swing, slider - slider_start
+        early = run_to(0.6)
+        late = run_to(1.5)
+        done = run_to(2.3)
+        log = server.log()
+    finally:
+        ros.close()
+    assert paused_time == 0.0, paused_time  # inserted before any step, as Gazebo's factory while paused
+    assert sorted(names).count('ball') == 1 and len(names) == len(set(names)), names
+    assert abs(placed['ball']['x'] - 0.0) < 1e-6 and abs(placed['ball_0']['x'] - 1.0) < 1e-6, placed
+    assert abs(placed['renamed_box']['x'] - 2.0) < 1e-6 and abs(placed['crate']['x'] + 2.0) < 1e-6, placed
+    assert 'broken' not in names and "nowhere" in log and 'Could not insert' in log, log
+    # the joint linearly between its key frames: 0 -> 1.2 rad over the first second, back to 0.6 over
+    # the next; the slider along the spline through 0, 0.5 and 1 m (test_gazebo_common has its values),
+    # past the first key frame and short of the last at 1.5 s
+    time, swing, moved = early
+    assert abs(swing - 1.2 * time) < 0.02, early
+    assert 0.0 < moved < 0.5, early
+    time, swing, moved = late
+    assert abs(swing - (1.2 - 0.6 * (time - 1.0))) < 0.02, late
+    assert early[2] < 0.5 < moved < 1.0, (early, late)
+    time, swing, moved = done  # both ended at 2 s: the joint where its last update put it, the slider 1 m on
+    assert abs(swing - 0.6) < 0.02 and abs(moved - 1.0) < 0.01, done
+    for what in ('arm joint', 'slider pose'):
+        line = next((line for line in log.splitlines() if 'animate_model: %s animation complete at' % what in line),
+                    None)
+        assert line is not None, log
+        assert 2.0 <= float(line.split(' at ')[1].split()[0]) < 2.01, line
+
+
+def test_models_a_world_plugin_inserts_come_after_the_first_step_in_the_plant_from_python(
+        catkin_make_workspace, tmp_path):
+    """The plant from Python (no node) with the user's factory plugin in the world file: its
+    insertions come at the end of the first step, named as Gazebo names them, where their poses put
+    them; the one it cannot read is an error in the log and the world goes on."""
+    workspace, env, _ = catkin_make_workspace
+    models = tmp_path / 'models'
+    (models / 'crate').mkdir(parents=True)
+    (models / 'crate' / 'model.config').write_text(
+        '<?xml version="1.0"?><model><name>crate</name><sdf version="1.6">model.sdf</sdf></model>')
+    (models / 'crate' / 'model.sdf').write_text(CRATE_MODEL)
+    world = tmp_path / 'factory.world'
+    world.write_text(FACTORY_WORLD)
+    script = (
+        "import json\n"
+        "from tianracer_description import bullet_plant\n"
+        "world = bullet_plant.World.from_file(%r)\n"
+        "before = sorted(world.robots)\n"
+        "world.step(1)\n"
+        "print(json.dumps({'before': before, 'after': sorted(world.robots),\n"
+        "                  'x': {n: world.robot(n).base_pose()[0] for n in ('ball', 'ball_0', 'renamed_box', 'crate')}}))\n"
+        % str(world))
+    done = subprocess.run(['/usr/bin/python3', '-c', script], env=dict(env, GAZEBO_MODEL_PATH=str(models)),
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stdout + done.stderr
+    out = json.loads(done.stdout.strip().splitlines()[-1])
+    assert out['before'] == ['arm', 'slider'], out
+    assert out['after'] == ['arm', 'ball', 'ball_0', 'crate', 'renamed_box', 'slider'], out
+    assert abs(out['x']['ball']) < 1e-3 and abs(out['x']['ball_0'] - 1.0) < 1e-3, out
+    assert abs(out['x']['renamed_box'] - 2.0) < 1e-3 and abs(out['x']['crate'] + 2.0) < 1e-3, out
+    assert 'nowhere' in done.stderr + done.stdout and 'the world goes on without it' in done.stderr + done.stdout, done

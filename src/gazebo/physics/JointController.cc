@@ -113,6 +113,33 @@ bool JointController::SetVelocityTarget(const std::string& joint, double target)
   return true;
 }
 
+void JointController::SetJointPosition(const std::string& name, double position, int index)
+{
+  auto joint = joints_.find(name);
+  if (joint != joints_.end())
+    SetJointPosition(joint->second, position, index);
+  else
+    gzwarn << "SetJointPosition [" << name << "] not found\n";
+}
+
+void JointController::SetJointPosition(JointPtr joint, double position, int index)
+{
+  if (joint && index >= 0)
+    joint->SetPosition(static_cast<unsigned int>(index), position);
+}
+
+void JointController::SetJointPositions(const std::map<std::string, double>& positions)
+{
+  for (const auto& joint : joints_)
+  {
+    auto position = positions.find(joint.second->GetName());
+    if (position == positions.end())
+      position = positions.find(joint.second->GetScopedName());
+    if (position != positions.end())
+      SetJointPosition(joint.second, position->second);
+  }
+}
+
 std::map<std::string, JointPtr> JointController::GetJoints() const { return joints_; }
 std::map<std::string, double> JointController::GetForces() const { return forces_; }
 std::map<std::string, double> JointController::GetPositions() const { return positions_; }

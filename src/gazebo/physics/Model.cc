@@ -1,7 +1,10 @@
 // physics::Model (gazebo/physics/Model.hh), over the simulator's ModelBridge.
 #include "gazebo/physics/Model.hh"
 
+#include "gazebo/common/Animation.hh"
 #include "gazebo/common/Console.hh"
+#include "gazebo/common/Events.hh"
+#include "gazebo/common/KeyFrame.hh"
 #include "gazebo/physics/Joint.hh"
 #include "gazebo/physics/JointController.hh"
 #include "gazebo/physics/Link.hh"
@@ -127,6 +130,91 @@ JointControllerPtr Model::GetJointController()
   if (!joint_controller_)
     joint_controller_.reset(new JointController(shared_from_this()));
   return joint_controller_;
+}
+void Model::SetJointAnimation(const std::map<std::string, common::NumericAnimationPtr>& anims,
+                              boost::function<void()> onComplete)
+{
+  for (const auto& anim : anims)
+    if (anim.second)
+      joint_animations_[anim.first] = anim.second;
+  on_joint_animation_complete_ = onComplete;
+  joint_animation_time_ = world_ ? world_->SimTime() : common::Time();
+  if (!joint_animation_update_ && !joint_animations_.empty())
+    // Gazebo's world moves its models' joint animations in the model's update, after the world update
+    // begin callbacks and the model's joint controller, before the physics
+    joint_animation_update_ = event::Events::ConnectBeforePhysicsUpdate(
+        [this](const common::UpdateInfo& info) { UpdateJointAnimation(info); });
+}
+
+void Model::UpdateJointAnimation(const common::UpdateInfo& info)
+{
+  common::NumericKeyFrame frame(0);
+  std::map<std::string, double> positions;
+  for (auto anim = joint_animations_.begin(); anim != joint_animations_.end();)
+  {
+    anim->second->AddTime((info.simTime - joint_animation_time_).Double());
+    if (anim->second->GetTime() < anim->second->GetLength())
+    {
+      anim->second->GetInterpolatedKeyFrame(frame);
+      positions[anim->first] = frame.GetValue();
+      ++anim;
+    }
+    else
+      anim = joint_animations_.erase(anim);
+  }
+  joint_animation_time_ = info.simTime;
+  if (!positions.empty())
+  {
+    GetJointController()->SetJointPositions(positions);
+    return;
+  }
+  joint_animation_update_.reset();  // all ended: the model's updates stop moving its joints
+  boost::function<void()> complete;
+  complete.swap(on_joint_animation_complete_);
+  if (complete)
+    complete();
+}
+
+void Model::SetAnimation(const common::PoseAnimationPtr& anim) { SetAnimation(anim, NULL); }
+
+void Model::SetAnimation(const common::PoseAnimationPtr& anim, boost::function<void()> onComplete)
+{
+  animation_start_ = WorldPose();
+  animation_time_ = world_ ? world_->SimTime() : common::Time();
+  animation_ = anim;
+  on_animation_complete_ = onComplete;
+  animation_update_.reset();
+  if (animation_)
+    animation_update_ = event::Events::ConnectWorldUpdateBegin(
+        [this](const common::UpdateInfo& info) { UpdateAnimation(info); });
+}
+
+void Model::UpdateAnimation(const common::UpdateInfo& info)
+{
+  common::PoseKeyFrame frame(0);
+  animation_->AddTime((info.simTime - animation_time_).Double());
+  animation_->GetInterpolatedKeyFrame(frame);
+  // the key frame's pose taken in the frame of the pose the model started from
+  SetWorldPose(ignition::math::Pose3d(frame.Translation(), frame.Rotation()) + animation_start_);
+  animation_time_ = info.simTime;
+  if (animation_->GetTime() < animation_->GetLength())
+    return;
+  animation_update_.reset();
+  animation_.reset();
+  boost::function<void()> complete;
+  complete.swap(on_animation_complete_);
+  if (complete)
+    complete();
+}
+
+void Model::StopAnimation()
+{
+  animation_update_.reset();
+  animation_.reset();
+  on_animation_complete_.clear();
+  joint_animation_update_.reset();
+  joint_animations_.clear();
+  on_joint_animation_complete_.clear();
 }
 }  // namespace physics
 }  // namespace gazebo

@@ -24,7 +24,8 @@ namespace physics
 namespace
 {
 // The worlds alive in the process, in the order they were made, for get_world. A World is always
-// owned by a WorldPtr (the simulator's host makes it so): get_world hands out shared_from_this.
+// owned by a WorldPtr (the simulator's host makes it so): get_world hands out a handle from it, none
+// from a world whose last handle has gone and whose destructor waits on the lock to leave the list.
 std::mutex worlds_mutex;
 std::vector<World*> worlds;
 
@@ -54,8 +55,9 @@ WorldPtr get_world(const std::string& name)
   {
     std::lock_guard<std::mutex> lock(worlds_mutex);
     for (World* world : worlds)
-      if (name.empty() || world->Name() == name)
-        return world->shared_from_this();
+      if (WorldPtr alive = world->weak_from_this().lock())
+        if (name.empty() || alive->Name() == name)
+          return alive;
     if (name.empty())
       gzerr << "no worlds\n";
   }
@@ -135,6 +137,26 @@ void World::SetPhysicsEnabled(bool enable) { bridge_->setPhysicsEnabled(enable);
 bool World::IsPaused() const { return bridge_->paused(); }
 
 void World::Reset() { bridge_->reset(); }
+
+void World::InsertModelFile(const std::string& sdfFilename)
+{
+  // gazebo_ros's model database request (spawn_model -database): the world's <include> of the URI
+  std::string uri;
+  for (const char c : sdfFilename)
+    switch (c)
+    {
+      case '&': uri += "&amp;"; break;
+      case '<': uri += "&lt;"; break;
+      case '>': uri += "&gt;"; break;
+      default: uri += c;
+    }
+  bridge_->insertModel("<sdf version='1.6'><world name='default'><include><uri>" + uri +
+                       "</uri></include></world></sdf>");
+}
+
+void World::InsertModelString(const std::string& sdfString) { bridge_->insertModel(sdfString); }
+
+void World::InsertModelSDF(const sdf::SDF& sdf) { bridge_->insertModel(sdf.ToString()); }
 
 void World::Fini() { models_.clear(); }
 }  // namespace physics

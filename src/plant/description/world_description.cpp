@@ -664,4 +664,63 @@ WorldDescription parseWorldFile(const std::string& name)
   return parseWorld(sdf::readFile(path, "world file"), Source{path, sdf::directoryOf(path)});
 }
 
+namespace
+{
+// readSpawnedModel and readInsertedModel: an <include> without a <pose> at the identity (gazebo_ros
+// then puts the request's pose there), or at the model's own <pose> (Gazebo's factory reads the file).
+ModelDescription readModelRequest(const std::string& model_xml, bool include_at_identity)
+{
+  tinyxml2::XMLDocument doc;
+  doc.Parse(model_xml.c_str(), model_xml.size());
+  tinyxml2::XMLElement* root = doc.Error() ? nullptr : doc.RootElement();
+  tinyxml2::XMLElement* world = root && std::string(root->Name()) == "sdf" && !root->FirstChildElement("model")
+                                    ? root->FirstChildElement("world")
+                                    : nullptr;
+  tinyxml2::XMLElement* include = world && !world->FirstChildElement("model") ? world->FirstChildElement("include") : nullptr;
+  if (!include)
+    return parseModelXml(model_xml);  // URDF or an SDF model, or the parser's complaint
+  // The model database request: the world reader finds and reads the included model.
+  std::string uri = include->FirstChildElement("uri") && include->FirstChildElement("uri")->GetText()
+                        ? include->FirstChildElement("uri")->GetText()
+                        : "";
+  uri.erase(0, uri.find_first_not_of(" \t\r\n"));
+  uri.erase(uri.find_last_not_of(" \t\r\n") + 1);
+  if (include_at_identity && !include->FirstChildElement("pose"))
+    include->InsertEndChild(doc.NewElement("pose"))->ToElement()->SetText("0 0 0 0 0 0");
+  auto read = [&doc] {
+    tinyxml2::XMLPrinter printer;
+    doc.Print(&printer);
+    WorldDescription world = parseWorldDescription(printer.CStr());
+    if (!world.errors.empty())
+      throw DescriptionError(world.errors.front());
+    return world;
+  };
+  WorldDescription found = read();
+  bool is_static = false;
+  if (found.models.empty())
+  {
+    // Not found: the world reader's warning names the URI and where it looked.
+    for (const std::string& warning : found.warnings)
+      if (warning.rfind("<include> of '" + uri + "'", 0) == 0)
+        throw DescriptionError(warning);
+    // Found, but <static>: scenery to a world; spawned, a model fixed where it is put, as Gazebo's.
+    tinyxml2::XMLElement* static_element = include->FirstChildElement("static");
+    if (!static_element)
+      static_element = include->InsertEndChild(doc.NewElement("static"))->ToElement();
+    static_element->SetText("false");
+    found = read();
+    is_static = true;
+  }
+  if (found.models.empty())
+    throw DescriptionError("<include> of '" + uri + "' gives no model to spawn");
+  ModelDescription model = std::move(found.models.front());
+  model.robot.is_static = model.robot.is_static || is_static;
+  return model;
+}
+}  // namespace
+
+ModelDescription readSpawnedModel(const std::string& model_xml) { return readModelRequest(model_xml, true); }
+
+ModelDescription readInsertedModel(const std::string& model_xml) { return readModelRequest(model_xml, false); }
+
 }  // namespace bullet_plant

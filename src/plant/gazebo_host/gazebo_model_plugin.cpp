@@ -32,32 +32,15 @@ public:
   bool Load(const ModelPluginDescription& d, ModelPluginContext& context, int64_t /*time_ns*/) override
   {
     const std::string label = pluginLabel(d);
-    const std::string unloadable = whyNotLoadable(d.library, "GZ_REGISTER_MODEL_PLUGIN");
-    if (!unloadable.empty())
-    {
-      context.log().error(label + ": " + unloadable + "; the plugin is not loaded");
-      return false;
-    }
-    if (!pluginCall(context.log(), [&] { return label + ": loading " + d.library + " threw"; }, kNotLoaded,
-                    [&] { plugin_ = gazebo::ModelPlugin::Create(d.library, d.name); }))
-      return false;
+    plugin_ = createPlugin<gazebo::ModelPlugin>(context.log(), label, d.library, d.name, gazebo::MODEL_PLUGIN,
+                                                kNotLoaded);
     if (!plugin_)
-    {
-      context.log().error(label + ": " + d.library + " made no plugin; the plugin is not loaded");
       return false;
-    }
-    if (plugin_->GetType() != gazebo::MODEL_PLUGIN)
-    {
-      context.log().error(label + ": " + d.library + " registers a plugin that is not a model plugin; a <plugin> "
-                          "in a model loads a model plugin (GZ_REGISTER_MODEL_PLUGIN)");
-      plugin_.reset();
-      return false;
-    }
     std::string error;
     sdf::ElementPtr element = pluginElement(d.xml, "model", error);
     if (!element)
     {
-      context.log().error(label + ": its <plugin> element: " + error + "; the plugin is not loaded");
+      context.log().error(label + ": its <plugin> element: " + error + kNotLoaded);
       plugin_.reset();
       return false;
     }

@@ -84,6 +84,11 @@ public:
     if (context_)
       context_->detach(attachment);
   }
+  void insertModel(const std::string& sdf_xml) override
+  {
+    if (context_)
+      context_->insertModel(sdf_xml);
+  }
 
 private:
   PlantGazeboHost* host_;
@@ -111,6 +116,34 @@ std::string whyNotLoadable(const std::string& library, const std::string& regist
   if (!dlsym(handle, "RegisterPlugin"))
     return library + " is not a Gazebo plugin: it has no RegisterPlugin (" + registration + ")";
   return "";  // the handle stays: Gazebo keeps plugin libraries loaded, and Create opens it again
+}
+
+const char* pluginKindName(gazebo::PluginType kind)
+{
+  switch (kind)
+  {
+    case gazebo::WORLD_PLUGIN: return "world";
+    case gazebo::MODEL_PLUGIN: return "model";
+    case gazebo::SENSOR_PLUGIN: return "sensor";
+    case gazebo::SYSTEM_PLUGIN: return "system";
+    case gazebo::VISUAL_PLUGIN: return "visual";
+    case gazebo::GUI_PLUGIN: return "GUI";
+  }
+  return "Gazebo";
+}
+
+const char* pluginRegistration(gazebo::PluginType kind)
+{
+  switch (kind)
+  {
+    case gazebo::WORLD_PLUGIN: return "GZ_REGISTER_WORLD_PLUGIN";
+    case gazebo::MODEL_PLUGIN: return "GZ_REGISTER_MODEL_PLUGIN";
+    case gazebo::SENSOR_PLUGIN: return "GZ_REGISTER_SENSOR_PLUGIN";
+    case gazebo::SYSTEM_PLUGIN: return "GZ_REGISTER_SYSTEM_PLUGIN";
+    case gazebo::VISUAL_PLUGIN: return "GZ_REGISTER_VISUAL_PLUGIN";
+    case gazebo::GUI_PLUGIN: return "GZ_REGISTER_GUI_PLUGIN";
+  }
+  return "GZ_REGISTER_*_PLUGIN";
 }
 
 sdf::ElementPtr pluginElement(const std::string& xml, const std::string& parent, std::string& error)
@@ -185,28 +218,15 @@ bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
 {
   const std::string label = worldPluginLabel(d.name, d.filename);
   Log& log = context_.log();
-  const std::string unloadable = whyNotLoadable(d.library, "GZ_REGISTER_WORLD_PLUGIN");
-  if (!unloadable.empty())
-  {
-    log.error(label + ": " + unloadable + "; the world runs without it");
+  const gazebo::WorldPlugin::TPtr plugin =
+      createPlugin<gazebo::WorldPlugin>(log, label, d.library, d.name, gazebo::WORLD_PLUGIN, kWithout);
+  if (!plugin)
     return false;
-  }
-  gazebo::WorldPlugin::TPtr plugin;
-  if (!pluginCall(log, [&] { return label + ": loading " + d.library + " threw"; }, kWithout,
-                  [&] { plugin = gazebo::WorldPlugin::Create(d.library, d.name); }))
-    return false;
-  if (!plugin || plugin->GetType() != gazebo::WORLD_PLUGIN)
-  {
-    log.error(label + ": " + d.library + (plugin ? " registers a plugin that is not a world plugin; a <plugin> in "
-                                                   "a world loads a world plugin (GZ_REGISTER_WORLD_PLUGIN)"
-                                                 : " made no plugin") + "; the world runs without it");
-    return false;
-  }
   std::string error;
   sdf::ElementPtr element = pluginElement(d.xml, "world", error);
   if (!element)
   {
-    log.error(label + ": its <plugin> element: " + error + "; the world runs without it");
+    log.error(label + ": its <plugin> element: " + error + kWithout);
     return false;
   }
   if (!pluginCall(log, [&] { return label + ": its Load threw"; }, kWithout, [&] {
@@ -228,23 +248,10 @@ bool PlantGazeboHost::loadSystemPlugin(const std::string& filename, const std::v
     log.error(label + ": no such file on GAZEBO_PLUGIN_PATH or LD_LIBRARY_PATH; the world runs without it");
     return false;
   }
-  const std::string unloadable = whyNotLoadable(library, "GZ_REGISTER_SYSTEM_PLUGIN");
-  if (!unloadable.empty())
-  {
-    log.error(label + ": " + unloadable + "; the world runs without it");
+  const gazebo::SystemPlugin::TPtr plugin =
+      createPlugin<gazebo::SystemPlugin>(log, label, library, filename, gazebo::SYSTEM_PLUGIN, kWithout);
+  if (!plugin)
     return false;
-  }
-  gazebo::SystemPlugin::TPtr plugin;
-  if (!pluginCall(log, [&] { return label + ": loading " + library + " threw"; }, kWithout,
-                  [&] { plugin = gazebo::SystemPlugin::Create(library, filename); }))
-    return false;
-  if (!plugin || plugin->GetType() != gazebo::SYSTEM_PLUGIN)
-  {
-    log.error(label + ": " + library + (plugin ? " registers a plugin that is not a system plugin "
-                                                 "(GZ_REGISTER_SYSTEM_PLUGIN)" : " made no plugin") +
-              "; the world runs without it");
-    return false;
-  }
   // Load(argc, argv) with gzserver's command line, as Gazebo's server hands it on.
   std::vector<char*> argv;
   for (const std::string& argument : arguments)

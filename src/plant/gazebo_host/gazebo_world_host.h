@@ -83,6 +83,38 @@ bool pluginCall(Log& log, What&& what, const char* consequence, Call&& call)
 // kind registers with (GZ_REGISTER_MODEL_PLUGIN ...).
 std::string whyNotLoadable(const std::string& library, const std::string& registration);
 
+// A plugin's kind in words ("model") and the macro a plugin of it registers with
+// (GZ_REGISTER_MODEL_PLUGIN), for the errors.
+const char* pluginKindName(gazebo::PluginType kind);
+const char* pluginRegistration(gazebo::PluginType kind);
+
+// Gazebo's PluginT::Create of `library` as a plugin of `kind` (gazebo::ModelPlugin and MODEL_PLUGIN
+// ...): null, with one error "<label>: <why><consequence>", where it cannot be: the library does not
+// load or registers nothing, making it throws, it makes no plugin or one of another kind.
+template <class Plugin>
+typename Plugin::TPtr createPlugin(Log& log, const std::string& label, const std::string& library,
+                                   const std::string& name, gazebo::PluginType kind, const char* consequence)
+{
+  const std::string unloadable = whyNotLoadable(library, pluginRegistration(kind));
+  if (!unloadable.empty())
+  {
+    log.error(label + ": " + unloadable + consequence);
+    return nullptr;
+  }
+  typename Plugin::TPtr plugin;
+  if (!pluginCall(log, [&] { return label + ": loading " + library + " threw"; }, consequence,
+                  [&] { plugin = Plugin::Create(library, name); }))
+    return nullptr;
+  if (!plugin)
+    log.error(label + ": " + library + " made no plugin" + consequence);
+  else if (plugin->GetType() != kind)
+    log.error(label + ": " + library + " registers a plugin that is not a " + pluginKindName(kind) + " plugin (" +
+              pluginRegistration(kind) + ")" + consequence);
+  else
+    return plugin;
+  return nullptr;
+}
+
 // The <plugin> element `xml` as sdformat reads it inside a `parent` ("world" or "model"), for the
 // plugin's Load; null with sdformat's reason in `error`.
 sdf::ElementPtr pluginElement(const std::string& xml, const std::string& parent, std::string& error);

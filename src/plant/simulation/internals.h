@@ -1,10 +1,12 @@
 // Private state of World and Robot: what the public classes stand for in Bullet.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -185,6 +187,14 @@ struct World::Internals
   void detach(int attachment);
   // The attachments on a robot that leaves the world.
   void releaseAttachments(const Robot::Internals& robot);
+
+  // World::insertModel's queue, without an inserter (added at the end of a step: insertQueuedModels),
+  // and the inserter; guarded by insertion_mutex, `insertions_queued` read each step without it.
+  std::mutex insertion_mutex;
+  std::vector<std::string> insertions;
+  World::ModelInserter model_inserter;
+  std::atomic<bool> insertions_queued{false};
+  void insertQueuedModels();
 
   // Gazebo's plugins of the user's own (gazebo_host.h), made at the first (gazeboHost): the world's
   // side of them and their host. Last, so that they go before the robots whose models they hold.

@@ -1,4 +1,5 @@
 #include "bullet_plant/world.h"
+#include "bullet_plant/world_description.h"
 
 #include <algorithm>
 #include <cmath>
@@ -122,6 +123,9 @@ std::string World::Internals::collisionNameOf(const btCollisionObject* object, i
 World::World(const WorldDescription& description, LogSink sink) : in_(new Internals)
 {
   Internals& w = *in_;
+  // First: a world file's model with a Gazebo plugin of the user's own makes the world's plugin host
+  // (gazeboHost) as it spawns, and the host's world is this one.
+  w.self = this;
   if (sink)
     w.log.setSink(std::move(sink));
   w.description = description;
@@ -241,7 +245,6 @@ World::World(const WorldDescription& description, LogSink sink) : in_(new Intern
       w.log.error("world: model '" + model.name + "' is left out: " + e.what());
     }
   w.loading_file = false;
-  w.self = this;
   // Gazebo loads a world's plugins once its models are in it.
   for (const WorldPluginDescription& plugin : description.plugins)
     w.gazeboHost().loadWorldPlugin(plugin);
@@ -521,11 +524,73 @@ void World::step(int n)
         r->in_->updateSensors(w.time_ns);
     if (w.gazebo_host)
       w.gazebo_host->endStep();
+    if (w.insertions_queued.load(std::memory_order_relaxed))
+      w.insertQueuedModels();
   }
   if (!w.frames_ahead)
     w.collectFrames();
   if (!w.lockstep)
     w.reportSkippedFrames();
+}
+
+void World::insertModel(const std::string& sdf_xml)
+{
+  ModelInserter inserter;
+  {
+    std::lock_guard<std::mutex> lock(in_->insertion_mutex);
+    if (!in_->model_inserter)
+    {
+      in_->insertions.push_back(sdf_xml);
+      in_->insertions_queued = true;
+      return;
+    }
+    inserter = in_->model_inserter;
+  }
+  inserter(sdf_xml);  // not under the lock: the node's reads the model and asks ROS for parameters
+}
+
+void World::setModelInserter(ModelInserter inserter)
+{
+  std::vector<std::string> queued;
+  {
+    std::lock_guard<std::mutex> lock(in_->insertion_mutex);
+    in_->model_inserter = inserter;
+    queued.swap(in_->insertions);
+    in_->insertions_queued = false;
+  }
+  for (const std::string& xml : queued)
+    inserter ? inserter(xml) : insertModel(xml);
+}
+
+std::string World::uniqueModelName(const std::string& name)
+{
+  std::string unique = name;
+  for (int i = 0; robot(unique) || staticModel(unique); ++i)
+    unique = name + "_" + std::to_string(i);
+  return unique;
+}
+
+void World::Internals::insertQueuedModels()
+{
+  std::vector<std::string> queued;
+  {
+    std::lock_guard<std::mutex> lock(insertion_mutex);
+    queued.swap(insertions);
+    insertions_queued = false;
+  }
+  for (const std::string& xml : queued)
+    try
+    {
+      ModelDescription model = readInsertedModel(xml);
+      const std::string name = self->uniqueModelName(model.name);
+      self->spawn(std::move(model.robot), name, model.pose);
+      log.info("inserted model '" + name + "' (a Gazebo plugin's World::InsertModel)");
+    }
+    catch (const std::exception& e)
+    {
+      log.error(std::string("a model a Gazebo plugin inserted (World::InsertModelString, InsertModelFile or "
+                            "InsertModelSDF): ") + e.what() + "; the world goes on without it");
+    }
 }
 
 bool World::framesAhead() const { return in_->frames_ahead; }

@@ -66,5 +66,7 @@ int PlantWorldPluginContext::attach(const std::string& parent_model, const std::
 
 void PlantWorldPluginContext::detach(int attachment) { w_.detach(attachment); }
 
+void PlantWorldPluginContext::insertModel(const std::string& sdf_xml) { world_.insertModel(sdf_xml); }
+
 Log& PlantWorldPluginContext::log() { return w_.log; }
 }  // namespace bullet_plant

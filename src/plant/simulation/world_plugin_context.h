@@ -35,6 +35,7 @@ public:
   int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
              const std::string& child_link) override;
   void detach(int attachment) override;
+  void insertModel(const std::string& sdf_xml) override;
   Log& log() override;
 
 private:

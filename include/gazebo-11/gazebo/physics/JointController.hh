@@ -39,6 +39,12 @@ public:
   bool SetPositionTarget(const std::string& joint, double target);
   void SetVelocityPID(const std::string& joint, const common::PID& pid);
   bool SetVelocityTarget(const std::string& joint, double target);
+  // The joint put at the position now (Joint::SetPosition), by its scoped name; a warning naming it
+  // for a joint the controller lacks.
+  void SetJointPosition(const std::string& name, double position, int index = 0);
+  void SetJointPosition(JointPtr joint, double position, int index = 0);
+  // Each of the controller's joints whose name or scoped name the map has, put there.
+  void SetJointPositions(const std::map<std::string, double>& positions);
   std::map<std::string, JointPtr> GetJoints() const;
   std::map<std::string, double> GetForces() const;
   std::map<std::string, double> GetPositions() const;

@@ -7,9 +7,14 @@
 #include <string>
 
 #include <boost/enable_shared_from_this.hpp>
+#include <boost/function.hpp>
 #include <ignition/math/Pose3.hh>
 #include <ignition/math/Vector3.hh>
 
+#include "gazebo/common/CommonTypes.hh"
+#include "gazebo/common/Event.hh"
+#include "gazebo/common/Time.hh"
+#include "gazebo/common/UpdateInfo.hh"
 #include "gazebo/physics/Entity.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/util/system.hh"
@@ -56,6 +61,18 @@ public:
   bool IsStatic() const;
   // The model's joint controller, made at the first call (its joints by scoped name).
   JointControllerPtr GetJointController();
+  // Each joint named (by name or scoped name) put where its animation says, each step before the
+  // physics, its animation's time moving on with the simulated time; an animation that does not loop
+  // ends at its length, and `onComplete` runs once all have ended. Replaces the animations of the
+  // joints it names.
+  void SetJointAnimation(const std::map<std::string, common::NumericAnimationPtr>& anims,
+                         boost::function<void()> onComplete = NULL);
+  // The model moved each step (SetWorldPose) to the animation's pose taken from where the model is
+  // now; `onComplete` runs when it reaches its length.
+  void SetAnimation(const common::PoseAnimationPtr& anim);
+  void SetAnimation(const common::PoseAnimationPtr& anim, boost::function<void()> onComplete);
+  // The pose and joint animations stop where they are, their completions not called.
+  void StopAnimation();
 
 private:
   friend class World;  // which keeps one Model for each of the simulator's models
@@ -67,6 +84,18 @@ private:
   mutable Joint_V joints_;
   JointControllerPtr joint_controller_;
   std::map<std::string, JointPtr> joints_by_name_;
+
+  void UpdateJointAnimation(const common::UpdateInfo& info);
+  void UpdateAnimation(const common::UpdateInfo& info);
+  std::map<std::string, common::NumericAnimationPtr> joint_animations_;
+  boost::function<void()> on_joint_animation_complete_;
+  common::Time joint_animation_time_;  // the simulated time the joint animations were last moved to
+  event::ConnectionPtr joint_animation_update_;
+  common::PoseAnimationPtr animation_;
+  boost::function<void()> on_animation_complete_;
+  ignition::math::Pose3d animation_start_;
+  common::Time animation_time_;
+  event::ConnectionPtr animation_update_;
 };
 }  // namespace physics
 }  // namespace gazebo

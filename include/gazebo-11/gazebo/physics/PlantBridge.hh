@@ -117,6 +117,8 @@ public:
   virtual int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
                      const std::string& child_link) = 0;
   virtual void detach(int attachment) = 0;
+  // A model from SDF text, added between steps (World::InsertModelString and the others).
+  virtual void insertModel(const std::string& sdf_xml) = 0;
 };
 }  // namespace physics
 }  // namespace gazebo

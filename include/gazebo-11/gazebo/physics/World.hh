@@ -8,6 +8,7 @@
 
 #include <boost/enable_shared_from_this.hpp>
 #include <ignition/math/Vector3.hh>
+#include <sdf/SDFImpl.hh>
 
 #include "gazebo/common/Time.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
@@ -46,6 +47,15 @@ public:
   // The simulation back to its start (models where they came, time 0), as gazebo_ros's
   // reset_simulation.
   void Reset();
+  // Gazebo's factory: a model added between steps, after the world's next update (paused or not),
+  // under its own name made unique as Gazebo makes it (NAME_0, NAME_1 ...), where its <pose> puts it,
+  // with its plugins. InsertModelFile takes a model:// URI (or a path) as a world's <include> does,
+  // found in GAZEBO_MODEL_PATH and the packages' gazebo_model_path exports; InsertModelString SDF text
+  // (<sdf><model>); InsertModelSDF what sdformat read. One that cannot be read or added is an error in
+  // the simulator's log naming why; the world goes on.
+  void InsertModelFile(const std::string& sdfFilename);
+  void InsertModelString(const std::string& sdfString);
+  void InsertModelSDF(const sdf::SDF& sdf);
   // The world's models let go (each holds the world): before the simulator drops the world.
   void Fini();
 
