@@ -295,6 +295,19 @@ CRATE_MODEL = """<?xml version="1.0"?>
 """
 
 
+def factory_world(root):
+    """FACTORY_WORLD written in `root`, and a model folder with the crate its plugin inserts by URI:
+    (the world file, the folder for GAZEBO_MODEL_PATH)."""
+    models = root / 'models'
+    (models / 'crate').mkdir(parents=True)
+    (models / 'crate' / 'model.config').write_text(
+        '<?xml version="1.0"?><model><name>crate</name><sdf version="1.6">model.sdf</sdf></model>')
+    (models / 'crate' / 'model.sdf').write_text(CRATE_MODEL)
+    world = root / 'factory.world'
+    world.write_text(FACTORY_WORLD)
+    return world, models
+
+
 @pytest.mark.slow
 def test_a_world_plugin_inserts_models_and_a_model_plugin_animates_joints_and_poses_under_gzserver(
         catkin_make_workspace, tmp_path):
@@ -304,13 +317,7 @@ def test_a_world_plugin_inserts_models_and_a_model_plugin_animates_joints_and_po
     SetAnimation over common::NumericAnimation and PoseAnimation) moves the arm's joint and the slider
     where the key frames say at each simulated time, and is told when each animation completes."""
     workspace, env, _ = catkin_make_workspace
-    models = tmp_path / 'models'
-    (models / 'crate').mkdir(parents=True)
-    (models / 'crate' / 'model.config').write_text(
-        '<?xml version="1.0"?><model><name>crate</name><sdf version="1.6">model.sdf</sdf></model>')
-    (models / 'crate' / 'model.sdf').write_text(CRATE_MODEL)
-    world = tmp_path / 'factory.world'
-    world.write_text(FACTORY_WORLD)
+    world, models = factory_world(tmp_path)
     ros = RosSystem(str(tmp_path), base_env=dict(env, GAZEBO_MODEL_PATH=str(models)))
     try:
         ros.set_param('/use_sim_time', True)
@@ -369,13 +376,7 @@ def test_models_a_world_plugin_inserts_come_after_the_first_step_in_the_plant_fr
     insertions come at the end of the first step, named as Gazebo names them, where their poses put
     them; the one it cannot read is an error in the log and the world goes on."""
     workspace, env, _ = catkin_make_workspace
-    models = tmp_path / 'models'
-    (models / 'crate').mkdir(parents=True)
-    (models / 'crate' / 'model.config').write_text(
-        '<?xml version="1.0"?><model><name>crate</name><sdf version="1.6">model.sdf</sdf></model>')
-    (models / 'crate' / 'model.sdf').write_text(CRATE_MODEL)
-    world = tmp_path / 'factory.world'
-    world.write_text(FACTORY_WORLD)
+    world, models = factory_world(tmp_path)
     script = (
         "import json\n"
         "from tianracer_description import bullet_plant\n"
