@@ -30,14 +30,21 @@ def pytest_sessionstart(session):
 def pytest_collection_modifyitems(items):
     """The order pytest-xdist hands the modules out in (that of their first test collected), module by
     module, each module's tests in their own order: the modules with slow tests first, so that the run
-    does not end waiting for one long module started late; the modules whose tests are all marked
-    serial last, so that they start once the others are handed out."""
+    does not end waiting for one long module started late; the modules of serial tests last, so that
+    they start once the others are handed out. A module holds serial tests only: one in a module of
+    others would be handed out early and hold its worker idle until the other workers' tests in
+    progress end (a user workspace's build, a minute and a half)."""
     modules = {}
     for item in items:
-        serial, slow = modules.get(item.nodeid.split('::')[0], (True, False))
-        modules[item.nodeid.split('::')[0]] = (serial and item.get_closest_marker('serial') is not None,
-                                               slow or item.get_closest_marker('slow') is not None)
-    rank = {module: (serial, not slow) for module, (serial, slow) in modules.items()}
+        module = item.nodeid.split('::')[0]
+        serial, slow = modules.get(module, (set(), False))
+        serial.add(item.get_closest_marker('serial') is not None)
+        modules[module] = (serial, slow or item.get_closest_marker('slow') is not None)
+    mixed = sorted(module for module, (serial, _) in modules.items() if len(serial) > 1)
+    if mixed:
+        raise pytest.UsageError('%s: tests marked serial share a module with tests that are not; move the '
+                                'serial ones to a module of their own (docs/tests.md, "serial")' % ', '.join(mixed))
+    rank = {module: (True in serial, not slow) for module, (serial, slow) in modules.items()}
     items.sort(key=lambda item: rank[item.nodeid.split('::')[0]])  # stable: each module keeps its order
 
 

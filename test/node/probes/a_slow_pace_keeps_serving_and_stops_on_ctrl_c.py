@@ -1,4 +1,4 @@
-"""The ROS side of test_node_bad_settings.py::test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c, a rospy
+"""The ROS side of test_node_slow_pace.py::test_a_slow_pace_keeps_serving_and_stops_on_ctrl_c, a rospy
 program the test runs against its own master (ros.probe); it prints one JSON value on its last line."""
 import json, time, rospy
 from std_srvs.srv import Empty
