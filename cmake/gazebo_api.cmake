@@ -5,6 +5,8 @@
 find_package(sdformat12 REQUIRED)
 find_package(ignition-math6 REQUIRED)
 find_package(Boost REQUIRED)
+find_package(Protobuf REQUIRED)
+find_package(Threads REQUIRED)
 
 set(GAZEBO_API_VERSION_FULL 11.15.1)  # include/gazebo-11/gazebo/gazebo_config.h says the same
 set(GAZEBO_API_VERSION 11.15)
@@ -37,7 +39,7 @@ add_library(gazebo_physics SHARED
   src/gazebo/physics/PhysicsEngine.cc
   src/gazebo/physics/World.cc)
 target_compile_options(gazebo_physics PRIVATE -Wall -Wextra)
-target_link_libraries(gazebo_physics PUBLIC gazebo_common)
+target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_common)
 set_target_properties(gazebo_physics PROPERTIES
   LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
   VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
@@ -49,23 +51,98 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
 set_target_properties(gazebo_sensors PROPERTIES
   LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
   VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
-set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_physics gazebo_common)
+
+# Gazebo's messages (gazebo::msgs, libgazebo_msgs): protobuf from the .proto files in
+# src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
+# MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
+set(GAZEBO_MSGS gz_string:GzString)
+set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
+set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
+set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
+file(MAKE_DIRECTORY ${GAZEBO_MSGS_GENERATED} ${GAZEBO_MSGS_INCLUDE_DIR}/gazebo/msgs)
+set(GAZEBO_MSGS_SOURCES)
+set(GAZEBO_MSGS_HEADERS ${GAZEBO_MSGS_INCLUDE_DIR}/gazebo/msgs/MessageTypes.hh)
+set(GAZEBO_MSGS_INCLUDES)
+set(GAZEBO_MSGS_HANDLES)
+set(GAZEBO_MSGS_CONST_HANDLES)
+foreach(entry ${GAZEBO_MSGS})
+  string(REPLACE ":" ";" entry ${entry})
+  list(GET entry 0 file)
+  list(GET entry 1 message)
+  set(header ${GAZEBO_MSGS_INCLUDE_DIR}/gazebo/msgs/${file}.pb.h)
+  add_custom_command(OUTPUT ${GAZEBO_MSGS_GENERATED}/${file}.pb.cc ${header}
+    COMMAND protobuf::protoc --cpp_out=${GAZEBO_MSGS_GENERATED} -I${GAZEBO_MSGS_PROTO_DIR}
+      ${GAZEBO_MSGS_PROTO_DIR}/${file}.proto
+    COMMAND ${CMAKE_COMMAND} -E copy_if_different ${GAZEBO_MSGS_GENERATED}/${file}.pb.h ${header}
+    DEPENDS ${GAZEBO_MSGS_PROTO_DIR}/${file}.proto protobuf::protoc
+    COMMENT "gazebo::msgs: ${file}.proto")
+  list(APPEND GAZEBO_MSGS_SOURCES ${GAZEBO_MSGS_GENERATED}/${file}.pb.cc)
+  list(APPEND GAZEBO_MSGS_HEADERS ${header})
+  string(APPEND GAZEBO_MSGS_INCLUDES "#include \"gazebo/msgs/${file}.pb.h\"\n")
+  string(APPEND GAZEBO_MSGS_HANDLES "typedef boost::shared_ptr<gazebo::msgs::${message}> ${message}Ptr;\n")
+  string(APPEND GAZEBO_MSGS_CONST_HANDLES
+    "typedef const boost::shared_ptr<gazebo::msgs::${message} const> Const${message}Ptr;\n")
+endforeach()
+configure_file(cmake/MessageTypes.hh.in ${GAZEBO_MSGS_INCLUDE_DIR}/gazebo/msgs/MessageTypes.hh @ONLY)
+# Named as Gazebo's library; the target's own name leaves `gazebo_msgs` to the ROS package.
+add_library(gazebo_msgs_protobuf SHARED ${GAZEBO_MSGS_SOURCES})
+target_include_directories(gazebo_msgs_protobuf PUBLIC include/gazebo-11 ${GAZEBO_MSGS_INCLUDE_DIR}
+  ${GAZEBO_MSGS_GENERATED})
+target_link_libraries(gazebo_msgs_protobuf PUBLIC protobuf::libprotobuf)
+set_target_properties(gazebo_msgs_protobuf PROPERTIES OUTPUT_NAME gazebo_msgs
+  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
+  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
+install(FILES ${GAZEBO_MSGS_HEADERS} DESTINATION ${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11/gazebo/msgs)
+
+# Gazebo's transport inside the process (gazebo/transport/TopicManager.hh): nodes, publishers,
+# subscribers, with no master and no sockets.
+add_library(gazebo_transport SHARED
+  src/gazebo/transport/CallbackHelper.cc
+  src/gazebo/transport/Node.cc
+  src/gazebo/transport/Publisher.cc
+  src/gazebo/transport/Subscriber.cc
+  src/gazebo/transport/TopicManager.cc)
+target_compile_options(gazebo_transport PRIVATE -Wall -Wextra)
+target_link_libraries(gazebo_transport PUBLIC gazebo_common protobuf::libprotobuf Threads::Threads)
+set_target_properties(gazebo_transport PROPERTIES
+  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
+  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
+
+# Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
+# (gazebo_ros_elevator: ElevatorPlugin), in GAZEBO_LIBRARY_DIRS and GAZEBO_PLUGIN_PATH as Gazebo's.
+set(GAZEBO_API_PLUGINS ElevatorPlugin)
+foreach(plugin ${GAZEBO_API_PLUGINS})
+  add_library(${plugin} SHARED src/gazebo/plugins/${plugin}.cc)
+  target_compile_options(${plugin} PRIVATE -Wall -Wextra)
+  target_link_libraries(${plugin} PUBLIC gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
+  set_target_properties(${plugin} PROPERTIES
+    LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION})
+endforeach()
+install(TARGETS ${GAZEBO_API_PLUGINS} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
+
+set(GAZEBO_API_TARGETS gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
+set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs gazebo_common)
 list(TRANSFORM GAZEBO_API_LIBRARIES PREPEND -l OUTPUT_VARIABLE GAZEBO_API_PKG_LIBS)
 list(JOIN GAZEBO_API_PKG_LIBS " " GAZEBO_API_PKG_LIBS)
 
-install(TARGETS ${GAZEBO_API_LIBRARIES} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
+install(TARGETS ${GAZEBO_API_TARGETS} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 install(DIRECTORY include/gazebo-11/ DESTINATION ${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
 
 # The config and pkg-config files, once for each space: its include folder and its lib folder.
 foreach(space devel install)
   if(space STREQUAL devel)
     set(GAZEBO_API_PREFIX ${CATKIN_DEVEL_PREFIX})
+    # the headers of the source tree and those the build generates (gazebo/msgs)
     set(GAZEBO_API_INCLUDE_DIR ${PROJECT_SOURCE_DIR}/include/gazebo-11)
+    set(GAZEBO_API_INCLUDE_DIRS ${GAZEBO_API_INCLUDE_DIR} ${GAZEBO_MSGS_INCLUDE_DIR})
   else()
     set(GAZEBO_API_PREFIX ${CMAKE_INSTALL_PREFIX})
     set(GAZEBO_API_INCLUDE_DIR ${CMAKE_INSTALL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
+    set(GAZEBO_API_INCLUDE_DIRS ${GAZEBO_API_INCLUDE_DIR})
   endif()
   set(GAZEBO_API_LIB_DIR ${GAZEBO_API_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION})
+  list(TRANSFORM GAZEBO_API_INCLUDE_DIRS PREPEND -I OUTPUT_VARIABLE GAZEBO_API_PKG_CFLAGS)
+  list(JOIN GAZEBO_API_PKG_CFLAGS " " GAZEBO_API_PKG_CFLAGS)
   set(out ${CMAKE_CURRENT_BINARY_DIR}/gazebo_api_${space})
   configure_file(cmake/gazebo-config.cmake.in ${out}/gazebo-config.cmake @ONLY)
   configure_file(cmake/gazebo.pc.in ${out}/gazebo.pc @ONLY)

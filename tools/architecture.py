@@ -40,7 +40,7 @@ DESCRIPTIONS_END = '<!-- END DESCRIPTIONS -->'
 LONGEST = 200  # characters of a header sentence kept in the list
 
 HASH_COMMENT = ('.sh', '.yaml', '.yml', '.msg', '.srv', '.action', '.csv', '.ini', '.txt', '.cfg', '.cmake', '.pc')
-SLASH_COMMENT = ('.cpp', '.h', '.hpp', '.cc', '.hh', '.js')
+SLASH_COMMENT = ('.cpp', '.h', '.hpp', '.cc', '.hh', '.js', '.proto')
 XML_COMMENT = ('.xml', '.launch', '.world', '.xacro', '.test', '.urdf', '.sdf', '.config', '.dae', '.html')
 
 

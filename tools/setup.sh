@@ -37,8 +37,9 @@ APT_PACKAGES=(
   # the Python module's CarBatch steps worlds side by side on TBB's threads
   libtbb-dev
   # Gazebo 11's C++ API for users' plugins (include/gazebo-11/): the libraries Gazebo itself uses,
-  # sdformat for a plugin's <plugin> element and ignition-math for poses and vectors
-  libsdformat-dev libignition-math-dev libboost-dev
+  # sdformat for a plugin's <plugin> element and ignition-math for poses and vectors; protobuf for
+  # Gazebo's messages (gazebo::msgs) on its transport
+  libsdformat-dev libignition-math-dev libboost-dev libprotobuf-dev protobuf-compiler
   # the cameras' OpenGL: EGL without a display, OpenGL ES 3, Mesa's llvmpipe where there is no GPU
   libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri
   # the cameras' levels of detail: meshoptimizer's simplifier

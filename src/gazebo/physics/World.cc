@@ -16,6 +16,7 @@
 #include "gazebo/physics/PhysicsEngine.hh"
 #include "gazebo/physics/PhysicsIface.hh"
 #include "gazebo/physics/PlantBridge.hh"
+#include "gazebo/transport/TopicManager.hh"
 
 namespace gazebo
 {
@@ -40,6 +41,9 @@ int64_t wallClockNs()
 World::World(std::shared_ptr<WorldBridge> bridge)
   : bridge_(std::move(bridge)), physics_(new PhysicsEngine(bridge_)), started_ns_(wallClockNs())
 {
+  // Its name is a transport namespace, as Gazebo's world's node makes it: a plugin's
+  // transport::Node::Init() with no name takes the first world's ("~/x" is /gazebo/WORLD/x).
+  transport::TopicManager::Instance()->RegisterTopicNamespace(this->Name());
   std::lock_guard<std::mutex> lock(worlds_mutex);
   worlds.push_back(this);
 }

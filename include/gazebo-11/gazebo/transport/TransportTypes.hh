@@ -1,15 +1,17 @@
 // Gazebo transport's class names and handle types, as Gazebo 11 declares them (boost::shared_ptr
-// handles): what plugins that include this header only to name them need (gazebo_plugins' p3d,
-// f3d, force, ft_sensor ... include it and use none). Gazebo's transport itself is not offered yet:
-// the classes are declared, not defined.
+// handles, and MessagePtr over protobuf's Message).
 #pragma once
 
 #include <boost/shared_ptr.hpp>
+#include <google/protobuf/message.h>
+
+#include "gazebo/util/system.hh"
 
 namespace gazebo
 {
 namespace transport
 {
+class CallbackHelper;
 class Connection;
 class Node;
 class Publication;
@@ -19,6 +21,8 @@ class SubscribeOptions;
 class Subscriber;
 class SubscriptionTransport;
 
+typedef boost::shared_ptr<google::protobuf::Message> MessagePtr;
+typedef boost::shared_ptr<CallbackHelper> CallbackHelperPtr;
 typedef boost::shared_ptr<Connection> ConnectionPtr;
 typedef boost::shared_ptr<Node> NodePtr;
 typedef boost::shared_ptr<Publication> PublicationPtr;

@@ -1,6 +1,11 @@
-// Gazebo's transport library, as a plugin includes it whole. Here it names the classes and their
-// handles only (TransportTypes.hh): a plugin that includes it and uses ROS instead (gazebo_plugins'
-// gazebo_ros_imu) builds; one that makes a transport::Node does not yet (docs/gazebo_api.md).
+// Gazebo's transport header, as plugins include it: nodes, publishers and subscribers inside the
+// process (gazebo/transport/TopicManager.hh says how messages go).
 #pragma once
 
+#include "gazebo/transport/CallbackHelper.hh"
+#include "gazebo/transport/Node.hh"
+#include "gazebo/transport/Publisher.hh"
+#include "gazebo/transport/Subscriber.hh"
+#include "gazebo/transport/TopicManager.hh"
+#include "gazebo/transport/TransportIface.hh"
 #include "gazebo/transport/TransportTypes.hh"
