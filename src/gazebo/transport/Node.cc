@@ -144,19 +144,18 @@ SubscriberPtr Node::AddCallback(const std::string& _topic, CallbackHelperPtr _he
   return subscriber;
 }
 
+std::list<CallbackHelperPtr> Node::callbacksOn(const std::string& _topic) const
+{
+  std::lock_guard<std::recursive_mutex> lock(this->incomingMutex);
+  const auto found = this->callbacks.find(_topic);
+  return found == this->callbacks.end() ? std::list<CallbackHelperPtr>() : found->second;
+}
+
 bool Node::HandleData(const std::string& _topic, const std::string& _msg)
 {
   std::lock_guard<std::recursive_mutex> running(this->processIncomingMutex);
-  std::list<CallbackHelperPtr> helpers;
-  {
-    std::lock_guard<std::recursive_mutex> lock(this->incomingMutex);
-    const auto found = this->callbacks.find(_topic);
-    if (found == this->callbacks.end())
-      return false;
-    helpers = found->second;
-  }
   bool handled = false;
-  for (const CallbackHelperPtr& helper : helpers)
+  for (const CallbackHelperPtr& helper : this->callbacksOn(_topic))
     handled = helper->HandleData(_msg) || handled;
   return handled;
 }
@@ -164,16 +163,8 @@ bool Node::HandleData(const std::string& _topic, const std::string& _msg)
 bool Node::HandleMessage(const std::string& _topic, MessagePtr _msg, unsigned int _callbackId)
 {
   std::lock_guard<std::recursive_mutex> running(this->processIncomingMutex);
-  std::list<CallbackHelperPtr> helpers;
-  {
-    std::lock_guard<std::recursive_mutex> lock(this->incomingMutex);
-    const auto found = this->callbacks.find(_topic);
-    if (found == this->callbacks.end())
-      return false;
-    helpers = found->second;
-  }
   bool handled = false;
-  for (const CallbackHelperPtr& helper : helpers)
+  for (const CallbackHelperPtr& helper : this->callbacksOn(_topic))
   {
     if (_callbackId != 0 && helper->GetId() != _callbackId)
       continue;

@@ -114,6 +114,8 @@ public:
 
 private:
   SubscriberPtr AddCallback(const std::string& _topic, CallbackHelperPtr _helper);
+  // A copy of the topic's callbacks, to run without holding the lock that subscribing takes.
+  std::list<CallbackHelperPtr> callbacksOn(const std::string& _topic) const;
 
   std::string topicNamespace;
   bool initialized = false;
