@@ -107,7 +107,7 @@ def test_a_robot_package_builds_with_catkin_tools_on_the_install_space(install_s
     params = subprocess.run(['roslaunch', '--dump-params', 'rover_description', 'gazebo.launch'], env=env,
                             capture_output=True, text=True, timeout=60)
     assert params.returncode == 0, params.stderr
-    assert 'libgazebo_ros_diff_drive.so' in params.stdout and '/gazebo/world_name: worlds/empty.world' in params.stdout
+    assert 'libgazebo_ros_diff_drive.so' in params.stdout and '/gazebo/enable_ros_network: true' in params.stdout
     nodes = subprocess.run(['roslaunch', '--nodes', 'rover_description', 'gazebo.launch', 'gui:=false'], env=env,
                            capture_output=True, text=True, timeout=60)
     assert nodes.stdout.split() == ['/gazebo', '/spawn_rover'], nodes.stdout + nodes.stderr
@@ -214,7 +214,8 @@ BOX = """<model name="{name}"><pose>{x} 0 {half} 0 0 0</pose><link name="body">
 
 @pytest.mark.slow
 def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catkin_make_workspace, tmp_path):
-    """gzserver -s libhello_system.so on a world naming the user's world plugin: the world plugin
+    """gazebo_ros's empty_world.launch with extra_gazebo_args:="-s libhello_system.so" (gzserver -s) on a
+    world naming the user's world plugin, as a user's launch file starts them: the world plugin
     (physics::World's ModelByName, Physics()->CreateJoint, Joint::Load / Init / Detach) carries the
     cargo for the second it holds it, read through gazebo_ros's get_model_state; the system plugin
     has the server's command line, the world (physics::get_world) and its updates and says so on ROS."""
@@ -224,9 +225,8 @@ def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catk
                                      BOX.format(name='cargo', x=-0.4, half=0.05, mass=0.5, size=0.1)))
     ros = RosSystem(str(tmp_path), base_env=env)
     try:
-        ros.set_param('/use_sim_time', True)
-        server = ros.start(['rosrun', 'gazebo_ros', 'gzserver', '-u', '--verbose', '-s', 'libhello_system.so', str(world)],
-                           'gzserver')
+        server = ros.start(['roslaunch', 'gazebo_ros', 'empty_world.launch', 'world_name:=%s' % world, 'paused:=true',
+                            'verbose:=true', 'gui:=false', 'extra_gazebo_args:=-s libhello_system.so'], 'gzserver')
 
         def x_of(model):
             return ros.service('/gazebo/get_model_state', '{model_name: %s}' % model)['pose']['position']['x']
@@ -249,7 +249,7 @@ def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catk
     assert any("world plugin 'thrower' (libattach_world.so): its Load threw: attach_world was told to throw" in line
                for line in errors), log
     assert "world plugin 'missing' (libno_such_plugin.so)" in log and 'no such file on GAZEBO_PLUGIN_PATH' in log, log
-    assert 'world default; updates' in hello and '; models 2;' in hello and 'arguments gzserver -u --verbose -s libhello_system.so %s' % world in hello, hello
+    assert 'world default; updates' in hello and '; models 2;' in hello and 'arguments gzserver -u --verbose -e ode -s libhello_system.so %s' % world in hello, hello
 
 
 # The world of the user's factory plugin and animated models: an arm whose joint the user's model

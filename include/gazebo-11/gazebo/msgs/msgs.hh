@@ -2,4 +2,10 @@
 // (MessageTypes.hh, generated from src/gazebo/msgs/proto by the build).
 #pragma once
 
+// Gazebo 11's message and transport headers bring boost's threads in, and plugins lean on that:
+// gazebo_ros_pkgs' gazebo_ros_elevator declares a boost::thread having included no more than
+// Gazebo's ElevatorPlugin.hh and ROS. Here, not in the common headers every plugin includes, where
+// it would cost each plugin file some 2 s to compile.
+#include <boost/thread.hpp>
+
 #include "gazebo/msgs/MessageTypes.hh"

@@ -30,10 +30,8 @@ public:
   // Close the door, go to the floor, open the door, wait, close it; ignored while busy.
   void MoveToFloor(const int _floor);
 
-protected:
-  void Update(const common::UpdateInfo& _info);
-
 private:
+  void Update(const common::UpdateInfo& _info);
   void OnElevator(ConstGzStringPtr& _msg);
   std::unique_ptr<ElevatorPluginPrivate> dataPtr;
 };
