@@ -119,6 +119,15 @@ foreach(plugin ${GAZEBO_API_PLUGINS})
     LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION})
 endforeach()
 install(TARGETS ${GAZEBO_API_PLUGINS} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
+# gazebo_ros_pkgs' gazebo_ros_elevator over it, as upstream builds it (a ROS subscription on
+# ElevatorPlugin): libgazebo_ros_elevator.so in the ROS lib folder, where the plant finds plugin files.
+add_library(gazebo_ros_elevator SHARED src/gazebo/plugins/gazebo_ros_elevator.cpp)
+target_compile_options(gazebo_ros_elevator PRIVATE -Wall -Wextra)
+target_include_directories(gazebo_ros_elevator PRIVATE ${catkin_INCLUDE_DIRS})
+target_link_libraries(gazebo_ros_elevator ElevatorPlugin ${catkin_LIBRARIES})
+set_target_properties(gazebo_ros_elevator PROPERTIES
+  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION})
+install(TARGETS gazebo_ros_elevator LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 
 set(GAZEBO_API_TARGETS gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
 set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs gazebo_common)
