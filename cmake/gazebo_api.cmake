@@ -12,8 +12,22 @@ set(GAZEBO_API_VERSION_FULL 11.15.1)  # include/gazebo-11/gazebo/gazebo_config.h
 set(GAZEBO_API_VERSION 11.15)
 set(GAZEBO_API_MAJOR_VERSION 11)
 
+# One of Gazebo's libraries or plugins: built from SOURCES into the devel space's lib folder (where
+# GAZEBO_LIBRARY_DIRS and the plugin path find them), warnings on; VERSIONED: named as Gazebo 11's
+# libraries are (libNAME.so.11).
+function(gazebo_api_library name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "VERSIONED" "" "SOURCES")
+  add_library(${name} SHARED ${arg_SOURCES})
+  target_compile_options(${name} PRIVATE -Wall -Wextra)
+  set_target_properties(${name} PROPERTIES
+    LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION})
+  if(arg_VERSIONED)
+    set_target_properties(${name} PROPERTIES VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
+  endif()
+endfunction()
+
 # Gazebo's common library: time, the console, events, plugin paths, animations.
-add_library(gazebo_common SHARED
+gazebo_api_library(gazebo_common VERSIONED SOURCES
   src/gazebo/common/Animation.cc
   src/gazebo/common/Console.cc
   src/gazebo/common/Events.cc
@@ -24,33 +38,21 @@ add_library(gazebo_common SHARED
   src/gazebo/common/Time.cc)
 target_include_directories(gazebo_common PUBLIC
   include/gazebo-11 ${Boost_INCLUDE_DIRS})
-target_compile_options(gazebo_common PRIVATE -Wall -Wextra)
 target_link_libraries(gazebo_common PUBLIC sdformat12::sdformat12 ignition-math6::ignition-math6 ${CMAKE_DL_LIBS})
-set_target_properties(gazebo_common PROPERTIES
-  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
-  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
 # Gazebo's physics classes for plugins (World, Model, Link, Joint) over the simulator's bridge
 # (gazebo/physics/PlantBridge.hh), which the plant implements.
-add_library(gazebo_physics SHARED
+gazebo_api_library(gazebo_physics VERSIONED SOURCES
   src/gazebo/physics/Joint.cc
   src/gazebo/physics/JointController.cc
   src/gazebo/physics/Link.cc
   src/gazebo/physics/Model.cc
   src/gazebo/physics/PhysicsEngine.cc
   src/gazebo/physics/World.cc)
-target_compile_options(gazebo_physics PRIVATE -Wall -Wextra)
 target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_common)
-set_target_properties(gazebo_physics PROPERTIES
-  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
-  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
 # Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
-add_library(gazebo_sensors SHARED
+gazebo_api_library(gazebo_sensors VERSIONED SOURCES
   src/gazebo/sensors/Sensor.cc)
-target_compile_options(gazebo_sensors PRIVATE -Wall -Wextra)
 target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
-set_target_properties(gazebo_sensors PROPERTIES
-  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
-  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
 
 # Gazebo's messages (gazebo::msgs, libgazebo_msgs): protobuf from the .proto files in
 # src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
@@ -85,48 +87,38 @@ foreach(entry ${GAZEBO_MSGS})
 endforeach()
 configure_file(cmake/MessageTypes.hh.in ${GAZEBO_MSGS_INCLUDE_DIR}/gazebo/msgs/MessageTypes.hh @ONLY)
 # Named as Gazebo's library; the target's own name leaves `gazebo_msgs` to the ROS package.
-add_library(gazebo_msgs_protobuf SHARED ${GAZEBO_MSGS_SOURCES})
+gazebo_api_library(gazebo_msgs_protobuf VERSIONED SOURCES ${GAZEBO_MSGS_SOURCES})
 target_include_directories(gazebo_msgs_protobuf PUBLIC include/gazebo-11 ${GAZEBO_MSGS_INCLUDE_DIR}
   ${GAZEBO_MSGS_GENERATED})
 target_link_libraries(gazebo_msgs_protobuf PUBLIC protobuf::libprotobuf)
-set_target_properties(gazebo_msgs_protobuf PROPERTIES OUTPUT_NAME gazebo_msgs
-  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
-  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
+set_target_properties(gazebo_msgs_protobuf PROPERTIES OUTPUT_NAME gazebo_msgs)
+# protoc's code is not ours to warn about
+target_compile_options(gazebo_msgs_protobuf PRIVATE -w)
 install(FILES ${GAZEBO_MSGS_HEADERS} DESTINATION ${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11/gazebo/msgs)
 
 # Gazebo's transport inside the process (gazebo/transport/TopicManager.hh): nodes, publishers,
 # subscribers, with no master and no sockets.
-add_library(gazebo_transport SHARED
+gazebo_api_library(gazebo_transport VERSIONED SOURCES
   src/gazebo/transport/CallbackHelper.cc
   src/gazebo/transport/Node.cc
   src/gazebo/transport/Publisher.cc
   src/gazebo/transport/Subscriber.cc
   src/gazebo/transport/TopicManager.cc)
-target_compile_options(gazebo_transport PRIVATE -Wall -Wextra)
 target_link_libraries(gazebo_transport PUBLIC gazebo_common protobuf::libprotobuf Threads::Threads)
-set_target_properties(gazebo_transport PROPERTIES
-  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION}
-  VERSION ${GAZEBO_API_VERSION_FULL} SOVERSION ${GAZEBO_API_MAJOR_VERSION})
 
 # Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
 # (gazebo_ros_elevator: ElevatorPlugin), in GAZEBO_LIBRARY_DIRS and GAZEBO_PLUGIN_PATH as Gazebo's.
 set(GAZEBO_API_PLUGINS ElevatorPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
-  add_library(${plugin} SHARED src/gazebo/plugins/${plugin}.cc)
-  target_compile_options(${plugin} PRIVATE -Wall -Wextra)
+  gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
-  set_target_properties(${plugin} PROPERTIES
-    LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION})
 endforeach()
 install(TARGETS ${GAZEBO_API_PLUGINS} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 # gazebo_ros_pkgs' gazebo_ros_elevator over it, as upstream builds it (a ROS subscription on
 # ElevatorPlugin): libgazebo_ros_elevator.so in the ROS lib folder, where the plant finds plugin files.
-add_library(gazebo_ros_elevator SHARED src/gazebo/plugins/gazebo_ros_elevator.cpp)
-target_compile_options(gazebo_ros_elevator PRIVATE -Wall -Wextra)
+gazebo_api_library(gazebo_ros_elevator SOURCES src/gazebo/plugins/gazebo_ros_elevator.cpp)
 target_include_directories(gazebo_ros_elevator PRIVATE ${catkin_INCLUDE_DIRS})
 target_link_libraries(gazebo_ros_elevator ElevatorPlugin ${catkin_LIBRARIES})
-set_target_properties(gazebo_ros_elevator PROPERTIES
-  LIBRARY_OUTPUT_DIRECTORY ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_LIB_DESTINATION})
 install(TARGETS gazebo_ros_elevator LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 
 set(GAZEBO_API_TARGETS gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
