@@ -63,14 +63,17 @@ def browser():
         return webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
 
 
-def wait_for(driver, script, timeout, what):
+def wait_for(driver, script, timeout, what, state=None):
+    """Until `script` is true in the page; at the timeout an AssertionError with the browser's log and
+    the page's `state` script's answer (what the wait was for, part by part)."""
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         if driver.execute_script('return ' + script):
             return
         time.sleep(0.1)
-    raise AssertionError('timed out after %g s waiting for %s; the browser said: %s'
-                         % (timeout, what, driver.get_log('browser')))
+    raise AssertionError('timed out after %g s waiting for %s%s; the browser said: %s'
+                         % (timeout, what, '' if state is None else ' (%s)' % driver.execute_script('return ' + state),
+                            driver.get_log('browser')))
 
 
 def at_rest(read_xy, timeout=20.0, still=0.02):
@@ -113,7 +116,8 @@ def opened(ros, driver, world, urdf_file=None):
     url = opened_at.search(viewer.log()).group(1)
     try:
         driver.get(url)
-        wait_for(driver, '!!(window.viewer && viewer.ready())', 30, 'the scene to be drawn')
+        wait_for(driver, '!!(window.viewer && viewer.ready())', 30, 'the scene to be drawn',
+                 state='window.viewer ? viewer.readiness() : "no viewer in the page"')
         yield plant, viewer, url
     finally:
         driver.get('about:blank')

@@ -686,6 +686,9 @@ function frame() {
 window.viewer = {
   // the scene built, its meshes loaded and the robots posed
   ready: () => world.children.length > 0 && pendingMeshes === 0 && (links.size === 0 || posesReceived > 0),
+  // what ready() waits on, to say which part of it did not come
+  readiness: () => ({ sceneObjects: world.children.length, pendingMeshes, links: links.size, posesReceived,
+    socket: socket ? ['connecting', 'open', 'closing', 'closed'][socket.readyState] : 'none' }),
   // the window pixel (x right, y down, CSS pixels) a world point is drawn at
   project: (x, y, z) => {
     // the camera as it is now: a follow moves it with the poses, its matrices are made at the next
