@@ -123,7 +123,7 @@ unsigned int Publisher::GetOutgoingCount() const
 std::string Publisher::GetTopic() const { return this->topic; }
 std::string Publisher::GetMsgType() const { return this->msgType; }
 void Publisher::SendMessage() {}
-void Publisher::SetNode(NodePtr _node) { this->node = _node; }
+void Publisher::SetNode(NodePtr) {}
 uint32_t Publisher::Id() const { return this->id; }
 
 std::string Publisher::GetPrevMsg() const

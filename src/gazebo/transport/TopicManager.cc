@@ -16,11 +16,22 @@ namespace transport
 {
 namespace
 {
+// Drops the handles whose object is gone, and those `also` says (given the object, alive).
+template <typename T, typename Also>
+void dropHandles(std::vector<boost::weak_ptr<T>>& handles, Also also)
+{
+  handles.erase(std::remove_if(handles.begin(), handles.end(),
+                               [&](const boost::weak_ptr<T>& handle) {
+                                 const boost::shared_ptr<T> alive = handle.lock();
+                                 return !alive || also(alive);
+                               }),
+                handles.end());
+}
+
 template <typename T>
 void dropExpired(std::vector<boost::weak_ptr<T>>& handles)
 {
-  handles.erase(std::remove_if(handles.begin(), handles.end(), [](const boost::weak_ptr<T>& h) { return h.expired(); }),
-                handles.end());
+  dropHandles(handles, [](const boost::shared_ptr<T>&) { return false; });
 }
 }  // namespace
 
@@ -73,13 +84,8 @@ void TopicManager::Unadvertise(const std::string& _topic, uint32_t _publisherId)
   const auto found = this->topics.find(_topic);
   if (found == this->topics.end())
     return;
-  auto& publishers = found->second.publishers;
-  publishers.erase(std::remove_if(publishers.begin(), publishers.end(),
-                                  [_publisherId](const boost::weak_ptr<Publisher>& handle) {
-                                    const PublisherPtr publisher = handle.lock();
-                                    return !publisher || publisher->Id() == _publisherId;
-                                  }),
-                   publishers.end());
+  dropHandles(found->second.publishers,
+              [_publisherId](const PublisherPtr& publisher) { return publisher->Id() == _publisherId; });
 }
 
 void TopicManager::Subscribe(const std::string& _topic, const NodePtr& _node, unsigned int _callbackId,
@@ -110,13 +116,7 @@ void TopicManager::Unsubscribe(const std::string& _topic, const NodePtr& _node)
   const auto found = this->topics.find(_topic);
   if (found == this->topics.end())
     return;
-  auto& subscribers = found->second.subscribers;
-  subscribers.erase(std::remove_if(subscribers.begin(), subscribers.end(),
-                                   [&](const boost::weak_ptr<Node>& handle) {
-                                     const NodePtr node = handle.lock();
-                                     return !node || node == _node;
-                                   }),
-                    subscribers.end());
+  dropHandles(found->second.subscribers, [&](const NodePtr& node) { return node == _node; });
 }
 
 uint64_t TopicManager::Publish(const std::string& _topic, MessagePtr _message, const PublisherPtr& _publisher)

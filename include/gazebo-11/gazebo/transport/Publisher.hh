@@ -47,6 +47,7 @@ public:
   std::string GetMsgType() const;
   // Gazebo sends the queue on the wire here; in the process there is nothing left to send.
   void SendMessage();
+  // Gazebo's publisher keeps its node; here the node owns its publishers and nothing is kept.
   void SetNode(NodePtr _node);
   // The last message published (for latching subscribers): serialized, and as a message.
   std::string GetPrevMsg() const;
@@ -71,8 +72,6 @@ private:
   common::Time prevPublishTime;
   unsigned int outgoing = 0;
   bool queueLimitWarned = false;
-  // Weak: the node owns its publishers (Gazebo's holds a NodePtr; here that would be a cycle).
-  boost::weak_ptr<Node> node;
 };
 }  // namespace transport
 }  // namespace gazebo
