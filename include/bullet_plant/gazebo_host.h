@@ -12,6 +12,7 @@
 
 #include <urdf_model/pose.h>
 
+#include "bullet_plant/run_time_joint.h"
 #include "bullet_plant/world_description.h"
 
 namespace bullet_plant
@@ -43,12 +44,17 @@ public:
   virtual void setPhysicsEnabled(bool enable) = 0;
   // World::Reset: models to where they started, time to 0 (gazebo_ros's reset_simulation).
   virtual void resetSimulation() = 0;
-  // A joint made at run time that holds `child_link` of `child_model` to `parent_link` of
-  // `parent_model` where they are now (Joint::Attach). An id to release it with (Joint::Detach), or
-  // -1 with the reason logged (an unknown model or link, a link fixed to the world on both sides).
-  virtual int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
-                     const std::string& child_link) = 0;
-  virtual void detach(int attachment) = 0;
+  // A joint made at run time (Joint::Load, Attach): an id to read, drive and release it with
+  // (Joint::Detach), or -1 with the reason logged (an unknown model or link, both links one body, an
+  // anchor, axis or limits that are no such thing).
+  virtual int attach(const RunTimeJoint& joint) = 0;
+  virtual void detach(int joint) = 0;
+  // Its position (m or rad, 0 where it was made) and rate; 0 for a joint released or that neither
+  // slides nor turns.
+  virtual double jointPosition(int joint) const = 0;
+  virtual double jointVelocity(int joint) const = 0;
+  // An effort along or about its axis for the coming step (Joint::SetForce), added to any before.
+  virtual void addJointEffort(int joint, double effort) = 0;
   // World::InsertModelString / InsertModelFile / InsertModelSDF: a model as SDF text, added between
   // steps (World::insertModel).
   virtual void insertModel(const std::string& sdf_xml) = 0;

@@ -1,13 +1,15 @@
 // physics::Joint (gazebo/physics/Joint.hh): a model's joint over the simulator's JointBridge, or a
-// joint made at run time over its WorldBridge.
+// joint made at run time, which has one from its WorldBridge while attached.
 #include "gazebo/physics/Joint.hh"
 
 #include <cmath>
+#include <limits>
 
 #include "gazebo/common/Console.hh"
 #include "gazebo/physics/Link.hh"
 #include "gazebo/physics/Model.hh"
 #include "gazebo/physics/PlantBridge.hh"
+#include "gazebo/physics/World.hh"
 
 namespace gazebo
 {
@@ -26,11 +28,7 @@ Joint::Joint(const std::string& type, ModelPtr model, std::shared_ptr<WorldBridg
 {
 }
 
-Joint::~Joint()
-{
-  if (world_ && attachment_ >= 0)
-    world_->detach(attachment_);
-}
+Joint::~Joint() = default;
 
 std::string Joint::GetName() const { return name_; }
 
@@ -51,34 +49,34 @@ bool Joint::axisZero(unsigned int index, const char* call) const
   return false;
 }
 
-bool Joint::modelJoint(const char* call) const
+bool Joint::bridged(const char* call) const
 {
   if (bridge_)
     return true;
-  gzerr << "Joint::" << call << " on joint [" << name_ << "], made at run time: it holds its links fixed "
-        << "and has no position to read or drive" << std::endl;
+  gzerr << "Joint::" << call << " on joint [" << name_ << "], made at run time: it is not attached (Init or "
+        << "Attach attaches it)" << std::endl;
   return false;
 }
 
 double Joint::Position(unsigned int index) const
 {
-  return axisZero(index, "Position") && modelJoint("Position") ? bridge_->position() : 0.0;
+  return axisZero(index, "Position") && bridged("Position") ? bridge_->position() : 0.0;
 }
 
 double Joint::GetVelocity(unsigned int index) const
 {
-  return axisZero(index, "GetVelocity") && modelJoint("GetVelocity") ? bridge_->velocity() : 0.0;
+  return axisZero(index, "GetVelocity") && bridged("GetVelocity") ? bridge_->velocity() : 0.0;
 }
 
 void Joint::SetVelocity(unsigned int index, double velocity)
 {
-  if (axisZero(index, "SetVelocity") && modelJoint("SetVelocity"))
+  if (axisZero(index, "SetVelocity") && bridged("SetVelocity"))
     bridge_->setVelocity(velocity);
 }
 
 void Joint::SetForce(unsigned int index, double effort)
 {
-  if (axisZero(index, "SetForce") && modelJoint("SetForce"))
+  if (axisZero(index, "SetForce") && bridged("SetForce"))
     bridge_->setForce(effort);
 }
 
@@ -89,7 +87,7 @@ double Joint::GetForce(unsigned int index)
 
 bool Joint::SetPosition(unsigned int index, double position, bool /*preserveWorldVelocity*/)
 {
-  return axisZero(index, "SetPosition") && modelJoint("SetPosition") && bridge_->setPosition(position);
+  return axisZero(index, "SetPosition") && bridged("SetPosition") && bridge_->setPosition(position);
 }
 
 double Joint::LowerLimit(unsigned int index) const { return axisZero(index, "LowerLimit") ? lower_ : 0.0; }
@@ -101,8 +99,9 @@ void Joint::SetLowerLimit(unsigned int index, double limit)
   if (!axisZero(index, "SetLowerLimit"))
     return;
   if (bridge_)
-    gzwarn << "Joint::SetLowerLimit on joint [" << name_ << "]: the plant keeps the limits its model gives; "
-           << "its lower limit stays " << lower_ << std::endl;
+    gzwarn << "Joint::SetLowerLimit on joint [" << name_ << "]: the plant keeps the limits "
+           << (world_ ? "it was attached with until it is attached again" : "its model gives") << "; its lower "
+           << "limit stays " << lower_ << std::endl;
   else
     lower_ = limit;
 }
@@ -112,17 +111,18 @@ void Joint::SetUpperLimit(unsigned int index, double limit)
   if (!axisZero(index, "SetUpperLimit"))
     return;
   if (bridge_)
-    gzwarn << "Joint::SetUpperLimit on joint [" << name_ << "]: the plant keeps the limits its model gives; "
-           << "its upper limit stays " << upper_ << std::endl;
+    gzwarn << "Joint::SetUpperLimit on joint [" << name_ << "]: the plant keeps the limits "
+           << (world_ ? "it was attached with until it is attached again" : "its model gives") << "; its upper "
+           << "limit stays " << upper_ << std::endl;
   else
     upper_ = limit;
 }
 
 double Joint::GetEffortLimit(unsigned int index)
 {
-  if (!axisZero(index, "GetEffortLimit") || !bridge_)
+  if (!axisZero(index, "GetEffortLimit"))
     return -1.0;
-  const double limit = bridge_->effortLimit();
+  const double limit = bridge_ ? bridge_->effortLimit() : effort_limit_;
   return std::isfinite(limit) ? limit : -1.0;
 }
 
@@ -165,7 +165,7 @@ bool Joint::SetParam(const std::string& key, unsigned int index, const boost::an
     gzerr << "Joint::SetParam(\"" << key << "\") on joint [" << name_ << "]: not a finite number" << std::endl;
     return false;
   }
-  if ((key == "vel" || key == "fmax") && modelJoint("SetParam"))
+  if ((key == "vel" || key == "fmax") && bridged("SetParam"))
   {
     const bool set = key == "vel" ? bridge_->setMotorVelocity(v) : bridge_->setMotorMaxForce(v);
     if (set)
@@ -198,7 +198,7 @@ double Joint::GetParam(const std::string& key, unsigned int index)
 JointWrench Joint::GetForceTorque(unsigned int index)
 {
   JointWrench wrench;
-  if (!axisZero(index, "GetForceTorque") || !modelJoint("GetForceTorque"))
+  if (!axisZero(index, "GetForceTorque") || !bridged("GetForceTorque"))
     return wrench;
   bridge_->childWrench(wrench.body2Force, wrench.body2Torque);
   if (parent_ && child_)
@@ -211,16 +211,112 @@ JointWrench Joint::GetForceTorque(unsigned int index)
   return wrench;
 }
 
-void Joint::Load(LinkPtr parent, LinkPtr child, const ignition::math::Pose3d& /*pose*/)
+void Joint::Load(LinkPtr parent, LinkPtr child, const ignition::math::Pose3d& pose)
 {
   parent_ = std::move(parent);
   child_ = std::move(child);
+  pose_ = pose;
+}
+
+LinkPtr Joint::linkNamed(const std::string& name) const
+{
+  const size_t scope = name.rfind("::");
+  ModelPtr model = model_;
+  if (scope != std::string::npos && model_ && model_->GetWorld())
+    model = model_->GetWorld()->ModelByName(name.substr(0, scope));
+  LinkPtr link = model ? model->GetLink(scope == std::string::npos ? name : name.substr(scope + 2)) : LinkPtr();
+  if (!link)
+    gzerr << "Joint [" << name_ << "]: no link [" << name << "]"
+          << (model_ ? "" : " (the joint has no model: SetModel first)") << std::endl;
+  return link;
+}
+
+namespace
+{
+// An SDF value of `element`'s child `name`, or `otherwise` (joint.sdf's default) where it has none.
+template <class T>
+T childValue(const sdf::ElementPtr& element, const std::string& name, const T& otherwise)
+{
+  return element && element->HasElement(name) ? element->Get<T>(name) : otherwise;
+}
+}  // namespace
+
+void Joint::Load(sdf::ElementPtr sdf)
+{
+  if (!sdf)
+  {
+    gzerr << "Joint::Load on joint [" << name_ << "]: no <joint> element" << std::endl;
+    return;
+  }
+  // What plugins hand over is their <plugin>'s copy of a <joint>, unchecked against joint.sdf: each
+  // value is read where it is given, with joint.sdf's default where not.
+  if (sdf->HasAttribute("name"))
+    name_ = sdf->Get<std::string>("name");
+  if (sdf->HasAttribute("type"))
+    type_ = sdf->Get<std::string>("type");
+  pose_ = childValue(sdf, "pose", ignition::math::Pose3d::Zero);
+  const std::string parent = childValue<std::string>(sdf, "parent", "world");
+  parent_ = parent == "world" ? LinkPtr() : linkNamed(parent);
+  child_ = linkNamed(childValue<std::string>(sdf, "child", ""));
+  const sdf::ElementPtr axis = sdf->HasElement("axis") ? sdf->GetElement("axis") : sdf::ElementPtr();
+  if (!axis)
+    return;
+  axis_ = childValue(axis, "xyz", ignition::math::Vector3d::UnitZ);
+  // SDF 1.6: use_parent_model_frame; 1.7 on: <xyz expressed_in="__model__">.
+  const sdf::ElementPtr xyz = axis->HasElement("xyz") ? axis->GetElement("xyz") : sdf::ElementPtr();
+  axis_in_model_frame_ = childValue(axis, "use_parent_model_frame", false) ||
+                         (xyz && xyz->HasAttribute("expressed_in") && xyz->Get<std::string>("expressed_in") == "__model__");
+  const sdf::ElementPtr limit = axis->HasElement("limit") ? axis->GetElement("limit") : sdf::ElementPtr();
+  // joint.sdf's defaults, -1e16 and 1e16 and an effort of -1, are none.
+  const double lower = childValue(limit, "lower", -1e16), upper = childValue(limit, "upper", 1e16);
+  lower_ = lower <= -1e16 ? -std::numeric_limits<double>::infinity() : lower;
+  upper_ = upper >= 1e16 ? std::numeric_limits<double>::infinity() : upper;
+  const double effort = childValue(limit, "effort", -1.0);
+  effort_limit_ = effort < 0 ? std::numeric_limits<double>::infinity() : effort;
+  damping_ = childValue(axis->HasElement("dynamics") ? axis->GetElement("dynamics") : sdf::ElementPtr(), "damping", 0.0);
 }
 
 void Joint::Init()
 {
-  if (!bridge_ && parent_ && child_)
+  if (!bridge_ && child_)
     Attach(parent_, child_);
+}
+
+void Joint::SetAxis(unsigned int index, const ignition::math::Vector3d& axis)
+{
+  if (!axisZero(index, "SetAxis"))
+    return;
+  if (bridge_)
+    gzwarn << "Joint::SetAxis on joint [" << name_ << "]: the plant keeps the axis "
+           << (world_ ? "it was attached with until it is attached again" : "its model gives") << std::endl;
+  else
+    axis_ = axis;
+}
+
+ignition::math::Vector3d Joint::LocalAxis(unsigned int index) const
+{
+  if (!axisZero(index, "LocalAxis"))
+    return ignition::math::Vector3d::Zero;
+  if (!world_)
+    gzerr << "Joint::LocalAxis on joint [" << name_ << "] of a model: the plant answers it for joints made at run "
+          << "time only" << std::endl;
+  return world_ ? axis_ : ignition::math::Vector3d::Zero;
+}
+
+ignition::math::Vector3d Joint::GlobalAxis(unsigned int index) const
+{
+  if (!axisZero(index, "GlobalAxis"))
+    return ignition::math::Vector3d::Zero;
+  if (!world_ || !child_)
+  {
+    gzerr << "Joint::GlobalAxis on joint [" << name_ << "]: the plant answers it for joints made at run time, "
+          << "with a child link, only" << std::endl;
+    return ignition::math::Vector3d::Zero;
+  }
+  // The joint's frame turns with the child link; the model's frame with the model.
+  const ignition::math::Quaterniond frame = axis_in_model_frame_ && model_ ? model_->WorldPose().Rot()
+                                                                           : child_->WorldPose().Rot() * pose_.Rot();
+  return frame.RotateVector(axis_).Normalized();
 }
 
 void Joint::Attach(LinkPtr parent, LinkPtr child)
@@ -231,38 +327,47 @@ void Joint::Attach(LinkPtr parent, LinkPtr child)
           << "PhysicsEngine::CreateJoint attaches" << std::endl;
     return;
   }
-  if (!parent || !child)
+  if (!child)
   {
-    gzerr << "Joint::Attach on joint [" << name_ << "]: both links are needed (a link to the world is not "
-          << "supported by the plant)" << std::endl;
+    gzerr << "Joint::Attach on joint [" << name_ << "]: no child link; nothing is attached" << std::endl;
     return;
   }
-  if (attachment_ >= 0 && parent == parent_ && child == child_)
+  if (bridge_ && parent == parent_ && child == child_)
     return;  // Init after Attach, as gazebo_ros_link_attacher does: already held
   Detach();
   parent_ = parent;
   child_ = child;
-  if (type_ != "fixed" && !warned_type_ && !(lower_ == 0.0 && upper_ == 0.0))
+  const ModelPtr parent_model = parent ? parent->GetModel() : ModelPtr(), child_model = child->GetModel();
+  if ((parent && !parent_model) || !child_model)
   {
-    gzwarn << "Joint [" << name_ << "] of type " << type_ << " made at run time: the plant holds its links "
-           << "fixed to each other, as a " << type_ << " joint with both limits 0" << std::endl;
-    warned_type_ = true;
-  }
-  const ModelPtr parent_model = parent->GetModel(), child_model = child->GetModel();
-  if (!parent_model || !child_model)
-  {
-    gzerr << "Joint::Attach on joint [" << name_ << "]: link [" << (parent_model ? child : parent)->GetName()
+    gzerr << "Joint::Attach on joint [" << name_ << "]: link [" << (child_model ? parent : child)->GetName()
           << "]'s model has left the world" << std::endl;
     return;
   }
-  attachment_ = world_->attach(parent_model->GetName(), parent->GetName(), child_model->GetName(), child->GetName());
+  RunTimeJointSpec spec;
+  spec.name = name_;
+  spec.type = type_;
+  if (parent)
+  {
+    spec.parent_model = parent_model->GetName();
+    spec.parent_link = parent->GetName();
+  }
+  spec.child_model = child_model->GetName();
+  spec.child_link = child->GetName();
+  const ignition::math::Pose3d child_pose = child->WorldPose();
+  spec.anchor = child_pose.Pos() + child_pose.Rot().RotateVector(pose_.Pos());
+  spec.axis = GlobalAxis(0);
+  spec.lower = lower_;
+  spec.upper = upper_;
+  spec.damping = damping_;
+  spec.effort_limit = effort_limit_;
+  bridge_ = world_->attach(spec);
 }
 
 void Joint::Detach()
 {
-  if (world_ && attachment_ >= 0)
-    world_->detach(attachment_);
-  attachment_ = -1;
+  if (world_)
+    bridge_.reset();
 }
 
 void Joint::SetModel(ModelPtr model) { model_ = std::move(model); }

@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
+#include <map>
+#include <mutex>
 
 #include <gazebo/common/Console.hh>
 #include <gazebo/common/Events.hh>
@@ -18,7 +21,7 @@ namespace bullet_plant
 // physics::World's side in the plant: the world's context, and the models' bridges the host keeps.
 // Joints a plugin made hold it too, and may outlive the host (a model plugin's, destroyed with its
 // robot after the world's host): released with the host, it answers nothing and changes nothing.
-class HostWorld final : public gazebo::physics::WorldBridge
+class HostWorld final : public gazebo::physics::WorldBridge, public std::enable_shared_from_this<HostWorld>
 {
 public:
   explicit HostWorld(PlantGazeboHost& host) : host_(&host), context_(&host.context()) {}
@@ -74,16 +77,10 @@ public:
     if (context_)
       context_->resetSimulation();
   }
-  int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
-             const std::string& child_link) override
-  {
-    return context_ ? context_->attach(parent_model, parent_link, child_model, child_link) : -1;
-  }
-  void detach(int attachment) override
-  {
-    if (context_)
-      context_->detach(attachment);
-  }
+  std::unique_ptr<gazebo::physics::JointBridge> attach(const gazebo::physics::RunTimeJointSpec& joint) override;
+  WorldPluginContext* context() const { return context_; }
+  // The physics update mutex, or null once the host is gone.
+  boost::recursive_mutex* physicsMutex() const { return host_ ? &host_->physicsMutex() : nullptr; }
   void insertModel(const std::string& sdf_xml) override
   {
     if (context_)
@@ -94,6 +91,112 @@ private:
   PlantGazeboHost* host_;
   WorldPluginContext* context_;
 };
+
+// A joint made at run time, over the world's context by its id; it lets go when destroyed, and
+// answers nothing once the world's host is gone. What only a model's joint does (a velocity or a
+// position set, a motor, the wrench it passed) is one warning naming it.
+class RunTimeJointBridge final : public gazebo::physics::JointBridge
+{
+public:
+  RunTimeJointBridge(std::shared_ptr<HostWorld> world, int id, gazebo::physics::RunTimeJointSpec spec)
+    : world_(std::move(world)), id_(id), spec_(std::move(spec))
+  {
+  }
+  // Attached, driven and released from any thread (a plugin's ROS callback): between steps.
+  ~RunTimeJointBridge() override
+  {
+    if (boost::recursive_mutex* mutex = world_->physicsMutex())
+    {
+      std::lock_guard<boost::recursive_mutex> between_steps(*mutex);
+      world_->context()->detach(id_);
+    }
+  }
+  double position() const override { return world_->context() ? world_->context()->jointPosition(id_) : 0.0; }
+  double velocity() const override { return world_->context() ? world_->context()->jointVelocity(id_) : 0.0; }
+  bool setVelocity(double) override { return unsupported("SetVelocity"); }
+  bool setForce(double effort) override
+  {
+    boost::recursive_mutex* mutex = world_->physicsMutex();
+    if (!mutex)
+      return false;
+    std::lock_guard<boost::recursive_mutex> between_steps(*mutex);
+    WorldPluginContext* context = world_->context();
+    const uint64_t step = context->iterations();
+    if (step != force_step_)
+      applied_ = 0.0;  // the efforts of a step gone by
+    force_step_ = step;
+    applied_ += effort;
+    context->addJointEffort(id_, effort);
+    return true;
+  }
+  double appliedForce() const override { return applied_; }
+  bool setPosition(double) override { return unsupported("SetPosition"); }
+  double lowerLimit() const override { return spec_.lower; }
+  double upperLimit() const override { return spec_.upper; }
+  double effortLimit() const override { return spec_.effort_limit; }
+  double velocityLimit() const override { return std::numeric_limits<double>::infinity(); }
+  std::string parentLink() const override { return spec_.parent_link; }
+  std::string childLink() const override { return spec_.child_link; }
+  bool setMotorVelocity(double) override { return unsupported("SetParam(\"vel\")"); }
+  bool setMotorMaxForce(double) override { return unsupported("SetParam(\"fmax\")"); }
+  void childWrench(ignition::math::Vector3d& force, ignition::math::Vector3d& torque) override
+  {
+    unsupported("GetForceTorque");
+    force = torque = ignition::math::Vector3d::Zero;
+  }
+
+private:
+  bool unsupported(const char* call)
+  {
+    if (!warned_)
+      gzwarn << "Joint::" << call << " on joint [" << spec_.name << "], made at run time: the plant does not "
+             << "simulate it for such a joint (it holds its links, takes SetForce and reads Position and "
+             << "GetVelocity); nothing is changed" << std::endl;
+    warned_ = true;
+    return false;
+  }
+
+  std::shared_ptr<HostWorld> world_;
+  int id_;
+  gazebo::physics::RunTimeJointSpec spec_;
+  double applied_ = 0.0;
+  uint64_t force_step_ = 0;
+  bool warned_ = false;
+};
+
+std::unique_ptr<gazebo::physics::JointBridge> HostWorld::attach(const gazebo::physics::RunTimeJointSpec& spec)
+{
+  static const std::map<std::string, RunTimeJoint::Type> types{{"fixed", RunTimeJoint::Type::Fixed},
+                                                                {"prismatic", RunTimeJoint::Type::Prismatic},
+                                                                {"revolute", RunTimeJoint::Type::Revolute},
+                                                                {"ball", RunTimeJoint::Type::Ball}};
+  if (!context_ || !host_)
+    return nullptr;
+  auto type = types.find(spec.type);
+  if (type == types.end())
+  {
+    gzerr << "Joint [" << spec.name << "] of type " << spec.type << " made at run time: the plant makes fixed, "
+          << "prismatic, revolute and ball joints at run time; it is not attached" << std::endl;
+    return nullptr;
+  }
+  std::lock_guard<boost::recursive_mutex> between_steps(host_->physicsMutex());
+  RunTimeJoint joint;
+  joint.type = type->second;
+  joint.parent_model = spec.parent_model;
+  joint.parent_link = spec.parent_link;
+  joint.child_model = spec.child_model;
+  joint.child_link = spec.child_link;
+  joint.anchor = urdf::Vector3(spec.anchor.X(), spec.anchor.Y(), spec.anchor.Z());
+  joint.axis = urdf::Vector3(spec.axis.X(), spec.axis.Y(), spec.axis.Z());
+  joint.lower = spec.lower;
+  joint.upper = spec.upper;
+  joint.damping = spec.damping;
+  joint.effort_limit = spec.effort_limit;
+  const int id = context_->attach(joint);
+  if (id < 0)
+    return nullptr;
+  return std::make_unique<RunTimeJointBridge>(shared_from_this(), id, spec);
+}
 
 namespace
 {

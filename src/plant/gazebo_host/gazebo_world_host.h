@@ -42,6 +42,8 @@ public:
   std::shared_ptr<ContextModel> modelBridge(ModelPluginContext& context);
   std::shared_ptr<ContextModel> modelBridge(const std::string& name);
   WorldPluginContext& context() { return context_; }
+  // Held by each world update; what changes the physics from another thread takes it first.
+  boost::recursive_mutex& physicsMutex() { return *physics_mutex_; }
 
 private:
   WorldPluginContext& context_;

@@ -13,7 +13,6 @@
 #include <btBulletDynamicsCommon.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyFixedConstraint.h>
 
 #include "bullet_plant/gazebo_host.h"
 #include "bullet_plant/inertial_sensors.h"
@@ -22,6 +21,7 @@
 #include "bullet_plant/model_plugin.h"
 #include "hardware/joint_layer_sim.h"
 #include "physics/dense_row_solver.h"
+#include "physics/run_time_joint.h"
 #include "hardware/model_joint_sim.h"
 #include "rendering/frame_worker.h"
 #include "rendering/ray_caster.h"
@@ -173,18 +173,22 @@ struct World::Internals
   Lighting lighting() const;
 
   // Joints made at run time by Gazebo plugins (WorldPluginContext::attach): each holds a link of one
-  // robot to a link of another (or of the same) where they were, by its id.
+  // robot to a link of another, of the same, or to the world, by its id.
   struct Attachment
   {
-    std::unique_ptr<btMultiBodyFixedConstraint> constraint;
-    const Robot::Internals* parent = nullptr;
+    std::unique_ptr<RunTimeJointConstraint> constraint;
+    const Robot::Internals* parent = nullptr;  // null: the world
     const Robot::Internals* child = nullptr;
+    double damping = 0.0, effort_limit = 0.0;
+    double effort = 0.0;  // what Joint::SetForce gave for the coming step
   };
   std::map<int, Attachment> attachments;
   int next_attachment = 0;
-  int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
-             const std::string& child_link);
+  int attach(const RunTimeJoint& joint);
   void detach(int attachment);
+  const Attachment* attachment(int id) const;
+  // Each joint's effort for the coming step and its damping, as forces on its links; then none.
+  void applyAttachmentEfforts();
   // The attachments on a robot that leaves the world.
   void releaseAttachments(const Robot::Internals& robot);
 

@@ -505,6 +505,8 @@ void World::step(int n)
       for (auto& r : w.robots)
         if (!r->in_->disabled && !r->in_->wrench_watches.empty())
           r->in_->wrench_watches.beforeStep(r->in_->multibody);
+      if (!w.attachments.empty())
+        w.applyAttachmentEfforts();
       w.dynamics->stepSimulation(btScalar(w.step_s), 0, btScalar(w.step_s));
       for (auto& r : w.robots)
         if (!r->in_->disabled && !r->in_->wrench_watches.empty())
@@ -712,25 +714,27 @@ Robot::Internals* treeOfLink(Robot& model, const std::string& link, int& body)
 }
 }  // namespace
 
-int World::Internals::attach(const std::string& parent_model, const std::string& parent_link,
-                             const std::string& child_model, const std::string& child_link)
+int World::Internals::attach(const RunTimeJoint& joint)
 {
-  const std::string what = "a joint made at run time from " + parent_model + "::" + parent_link + " to " + child_model +
-                           "::" + child_link;
-  Robot* parent = self->robot(parent_model);
-  Robot* child = self->robot(child_model);
-  if (!parent || !child)
+  const bool to_world = joint.parent_model.empty();
+  const std::string parent_name = to_world ? "the world" : joint.parent_model + "::" + joint.parent_link;
+  const std::string what = "a joint made at run time from " + parent_name + " to " + joint.child_model + "::" +
+                           joint.child_link;
+  Robot* parent = to_world ? nullptr : self->robot(joint.parent_model);
+  Robot* child = self->robot(joint.child_model);
+  if ((!to_world && !parent) || !child)
   {
-    log.error(what + ": there is no model '" + (parent ? child_model : parent_model) + "' that moves; nothing is attached");
+    log.error(what + ": there is no model '" + (child ? joint.parent_model : joint.child_model) +
+              "' that moves; nothing is attached");
     return -1;
   }
   int parent_body = 0, child_body = 0;
-  Robot::Internals* a = treeOfLink(*parent, parent_link, parent_body);
-  Robot::Internals* b = treeOfLink(*child, child_link, child_body);
-  if (!a || !b)
+  Robot::Internals* a = to_world ? nullptr : treeOfLink(*parent, joint.parent_link, parent_body);
+  Robot::Internals* b = treeOfLink(*child, joint.child_link, child_body);
+  if ((!to_world && !a) || !b)
   {
-    log.error(what + ": model '" + (a ? child_model : parent_model) + "' has no link '" + (a ? child_link : parent_link) +
-              "'; nothing is attached");
+    log.error(what + ": model '" + (b ? joint.parent_model : joint.child_model) + "' has no link '" +
+              (b ? joint.parent_link : joint.child_link) + "'; nothing is attached");
     return -1;
   }
   if (a == b && parent_body == child_body)
@@ -738,23 +742,69 @@ int World::Internals::attach(const std::string& parent_model, const std::string&
     log.error(what + ": both links are one body; nothing is attached");
     return -1;
   }
-  // Held where they are now: the constraint's frame at the child body's centre of mass, in world
-  // axes, given in each body's own frame (Bullet's body frames are the centres of mass).
-  const btTransform ta = a->multibody.bodyWorldTransform(parent_body);
-  const btTransform tb = b->multibody.bodyWorldTransform(child_body);
-  const btVector3 pivot = tb.getOrigin();
+  const btVector3 anchor = toBullet(joint.anchor), axis = toBullet(joint.axis);
+  const bool moves = joint.type == RunTimeJoint::Type::Prismatic || joint.type == RunTimeJoint::Type::Revolute;
+  auto finite = [](const btVector3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); };
+  if (!finite(anchor))
+  {
+    log.error(what + ": its anchor is not finite; nothing is attached");
+    return -1;
+  }
+  if (moves && (!finite(axis) || axis.fuzzyZero()))
+  {
+    log.error(what + ": its axis is zero or not finite; nothing is attached");
+    return -1;
+  }
+  if (std::isnan(joint.lower) || std::isnan(joint.upper) || joint.lower > joint.upper || !(joint.damping >= 0) ||
+      !(joint.effort_limit >= 0))
+  {
+    log.error(what + ": its limits (" + std::to_string(joint.lower) + " to " + std::to_string(joint.upper) +
+              "), damping or effort limit are not a range, or negative; nothing is attached");
+    return -1;
+  }
+  // The child is the constraint's body A (Bullet's multibody constraints need one there), the
+  // parent B, or the world.
   Attachment attachment;
-  attachment.constraint.reset(new btMultiBodyFixedConstraint(
-      a->multibody.bullet.get(), parent_body - 1, b->multibody.bullet.get(), child_body - 1, ta.inverse() * pivot,
-      btVector3(0, 0, 0), ta.getBasis().transpose(), tb.getBasis().transpose()));
+  attachment.constraint.reset(new RunTimeJointConstraint(joint.type, b->multibody.bullet.get(), child_body - 1,
+                                                         a ? a->multibody.bullet.get() : nullptr, parent_body - 1,
+                                                         anchor, axis));
+  attachment.constraint->setLimits(btScalar(joint.lower), btScalar(joint.upper));
   attachment.parent = a;
   attachment.child = b;
+  attachment.damping = joint.damping;
+  attachment.effort_limit = joint.effort_limit;
   dynamics->addMultiBodyConstraint(attachment.constraint.get());
-  wakeUp(*a->multibody.bullet);
+  if (a)
+    wakeUp(*a->multibody.bullet);
   wakeUp(*b->multibody.bullet);
   const int id = next_attachment++;
   attachments[id] = std::move(attachment);
   return id;
+}
+
+const World::Internals::Attachment* World::Internals::attachment(int id) const
+{
+  auto found = attachments.find(id);
+  return found == attachments.end() ? nullptr : &found->second;
+}
+
+void World::Internals::applyAttachmentEfforts()
+{
+  for (auto& [id, joint] : attachments)
+  {
+    if (joint.effort == 0.0 && joint.damping == 0.0)
+      continue;
+    // Gazebo holds an effort set to the joint's effort limit; the damping, explicit, comes on top.
+    const double held = std::max(-joint.effort_limit, std::min(joint.effort_limit, joint.effort));
+    const double effort = held - joint.damping * joint.constraint->velocity();
+    joint.effort = 0.0;
+    if (effort == 0.0)
+      continue;
+    joint.constraint->applyEffort(btScalar(effort));
+    if (joint.parent)
+      wakeUp(*const_cast<Robot::Internals*>(joint.parent)->multibody.bullet);
+    wakeUp(*const_cast<Robot::Internals*>(joint.child)->multibody.bullet);
+  }
 }
 
 void World::Internals::detach(int attachment)
@@ -763,7 +813,8 @@ void World::Internals::detach(int attachment)
   if (found == attachments.end())
     return;  // released already, with a model that left the world
   dynamics->removeMultiBodyConstraint(found->second.constraint.get());
-  wakeUp(*const_cast<Robot::Internals*>(found->second.parent)->multibody.bullet);
+  if (found->second.parent)
+    wakeUp(*const_cast<Robot::Internals*>(found->second.parent)->multibody.bullet);
   wakeUp(*const_cast<Robot::Internals*>(found->second.child)->multibody.bullet);
   attachments.erase(found);
 }

@@ -1,5 +1,6 @@
 #include "simulation/world_plugin_context.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "bullet_plant/log.h"
@@ -58,13 +59,28 @@ void PlantWorldPluginContext::setPhysicsEnabled(bool enable) { w_.physics_enable
 
 void PlantWorldPluginContext::resetSimulation() { world_.resetSimulation(); }
 
-int PlantWorldPluginContext::attach(const std::string& parent_model, const std::string& parent_link,
-                                    const std::string& child_model, const std::string& child_link)
+int PlantWorldPluginContext::attach(const RunTimeJoint& joint) { return w_.attach(joint); }
+
+void PlantWorldPluginContext::detach(int joint) { w_.detach(joint); }
+
+double PlantWorldPluginContext::jointPosition(int joint) const
 {
-  return w_.attach(parent_model, parent_link, child_model, child_link);
+  const World::Internals::Attachment* held = w_.attachment(joint);
+  return held ? double(held->constraint->position()) : 0.0;
 }
 
-void PlantWorldPluginContext::detach(int attachment) { w_.detach(attachment); }
+double PlantWorldPluginContext::jointVelocity(int joint) const
+{
+  const World::Internals::Attachment* held = w_.attachment(joint);
+  return held ? double(held->constraint->velocity()) : 0.0;
+}
+
+void PlantWorldPluginContext::addJointEffort(int joint, double effort)
+{
+  auto found = w_.attachments.find(joint);
+  if (found != w_.attachments.end() && std::isfinite(effort))
+    found->second.effort += effort;
+}
 
 void PlantWorldPluginContext::insertModel(const std::string& sdf_xml) { world_.insertModel(sdf_xml); }
 

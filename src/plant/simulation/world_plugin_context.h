@@ -1,6 +1,6 @@
 // What Gazebo's physics::World reaches of the simulated world (WorldPluginContext, gazebo_host.h),
 // as its own object beside the robots' plugin contexts: the world's time, step and pace, its
-// robots as models, pause and reset, and joints made at run time between two robots' links.
+// robots as models, pause and reset, and joints made at run time between robots' links and the world.
 #pragma once
 
 #include <cstdint>
@@ -32,9 +32,11 @@ public:
   bool physicsEnabled() const override;
   void setPhysicsEnabled(bool enable) override;
   void resetSimulation() override;
-  int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
-             const std::string& child_link) override;
-  void detach(int attachment) override;
+  int attach(const RunTimeJoint& joint) override;
+  void detach(int joint) override;
+  double jointPosition(int joint) const override;
+  double jointVelocity(int joint) const override;
+  void addJointEffort(int joint, double effort) override;
   void insertModel(const std::string& sdf_xml) override;
   Log& log() override;
 

@@ -1,6 +1,7 @@
 // physics::Joint: a model's movable joint as a plugin drives it (its position and velocity, and an
 // effort, a velocity or a position set; axis 0, a joint of the plant having one axis), and a joint
-// made at run time (PhysicsEngine::CreateJoint) that holds two links together until detached.
+// made at run time (PhysicsEngine::CreateJoint): fixed, prismatic, revolute or ball, between two
+// links or a link and the world, until detached; a slide or turn with its position, rate and effort.
 #pragma once
 
 #include <limits>
@@ -9,6 +10,8 @@
 
 #include <boost/any.hpp>
 #include <ignition/math/Pose3.hh>
+#include <ignition/math/Vector3.hh>
+#include <sdf/Element.hh>
 
 #include "gazebo/physics/JointWrench.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
@@ -62,12 +65,19 @@ public:
   void SetLowerLimit(unsigned int index, double limit);
   void SetUpperLimit(unsigned int index, double limit);
 
-  // A joint made at run time: Load names its links (and its anchor, which a held joint does not
-  // need), Init or Attach holds the child to the parent where they are now, Detach lets go.
+  // A joint made at run time: Load names its links and its anchor (`pose` in the child link's
+  // frame), or reads them from a <joint> element as SDF has it (name, type, parent, child, pose,
+  // axis xyz, limit lower / upper / effort, dynamics damping; "world" for no parent link); Init or
+  // Attach holds the child to the parent (null: the world) from where they are now, Detach lets go.
   void Load(LinkPtr parent, LinkPtr child, const ignition::math::Pose3d& pose);
+  void Load(sdf::ElementPtr sdf);
   void Init();
   void Attach(LinkPtr parent, LinkPtr child);
   void Detach();
+  // Axis 0 in the joint's frame (a joint made at run time, before it is attached), and in the world.
+  void SetAxis(unsigned int index, const ignition::math::Vector3d& axis);
+  ignition::math::Vector3d LocalAxis(unsigned int index) const;
+  ignition::math::Vector3d GlobalAxis(unsigned int index) const;
   void SetModel(ModelPtr model);
   ModelPtr GetModel() const;
   LinkPtr GetParent() const;
@@ -75,17 +85,24 @@ public:
 
 private:
   bool axisZero(unsigned int index, const char* call) const;
-  // A model's joint answers through its bridge; a joint made at run time has none.
-  bool modelJoint(const char* call) const;
+  // A model's joint, and a joint made at run time while attached, answer through the bridge.
+  bool bridged(const char* call) const;
+  // A link of the joint's model by name, or of another model as MODEL::LINK; null with an error.
+  LinkPtr linkNamed(const std::string& name) const;
   std::string name_, type_, model_name_;
   std::unique_ptr<JointBridge> bridge_;
-  std::shared_ptr<WorldBridge> world_;
+  std::shared_ptr<WorldBridge> world_;  // a joint made at run time's world
   ModelPtr model_;
   LinkPtr parent_, child_;
-  int attachment_ = -1;
+  // A joint made at run time: its anchor in the child link's frame, its axis in the joint's frame
+  // (the model's where SDF says use_parent_model_frame), its damping and effort limit.
+  ignition::math::Pose3d pose_;
+  ignition::math::Vector3d axis_{0, 0, 1};
+  bool axis_in_model_frame_ = false;
+  double damping_ = 0.0;
+  double effort_limit_ = std::numeric_limits<double>::infinity();
   double lower_ = -std::numeric_limits<double>::infinity();
   double upper_ = std::numeric_limits<double>::infinity();
-  bool warned_type_ = false;
   double motor_velocity_ = 0.0, motor_max_force_ = 0.0;
 };
 }  // namespace physics

@@ -3,6 +3,7 @@
 // plugin never uses it. Poses and vectors are in the world frame.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -91,6 +92,21 @@ public:
   virtual std::unique_ptr<JointBridge> joint(const std::string& name) = 0;
 };
 
+// A joint made at run time as Joint::Attach asks for it: `child_link` of `child_model` held to
+// `parent_link` of `parent_model`, or to the world where `parent_model` is empty, from where they are.
+struct RunTimeJointSpec
+{
+  std::string name;  // for what the simulator says
+  std::string type;  // Gazebo's: "fixed", "prismatic", "revolute" or "ball"
+  std::string parent_model, parent_link, child_model, child_link;
+  ignition::math::Vector3d anchor;          // world
+  ignition::math::Vector3d axis{0, 0, 1};   // world, prismatic and revolute
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  double damping = 0.0;
+  double effort_limit = std::numeric_limits<double>::infinity();
+};
+
 class WorldBridge
 {
 public:
@@ -112,11 +128,9 @@ public:
   virtual bool physicsEnabled() const = 0;
   virtual void setPhysicsEnabled(bool enable) = 0;
   virtual void reset() = 0;
-  // A joint made at run time holding the child link to the parent link where they are now: an id
-  // for detach, or -1 (the simulator says why).
-  virtual int attach(const std::string& parent_model, const std::string& parent_link, const std::string& child_model,
-                     const std::string& child_link) = 0;
-  virtual void detach(int attachment) = 0;
+  // A joint made at run time: its bridge, which lets go when destroyed; null (the simulator says
+  // why) where it cannot be made.
+  virtual std::unique_ptr<JointBridge> attach(const RunTimeJointSpec& joint) = 0;
   // A model from SDF text, added between steps (World::InsertModelString and the others).
   virtual void insertModel(const std::string& sdf_xml) = 0;
 };
