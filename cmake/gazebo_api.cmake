@@ -107,19 +107,26 @@ gazebo_api_library(gazebo_transport VERSIONED SOURCES
 target_link_libraries(gazebo_transport PUBLIC gazebo_common protobuf::libprotobuf Threads::Threads)
 
 # Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
-# (gazebo_ros_elevator: ElevatorPlugin), in GAZEBO_LIBRARY_DIRS and GAZEBO_PLUGIN_PATH as Gazebo's.
-set(GAZEBO_API_PLUGINS ElevatorPlugin)
+# (gazebo_ros_elevator: ElevatorPlugin, gazebo_ros_harness: HarnessPlugin), in GAZEBO_LIBRARY_DIRS
+# and GAZEBO_PLUGIN_PATH as Gazebo's.
+set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
 endforeach()
 install(TARGETS ${GAZEBO_API_PLUGINS} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
-# gazebo_ros_pkgs' gazebo_ros_elevator over it, as upstream builds it (a ROS subscription on
-# ElevatorPlugin): libgazebo_ros_elevator.so in the ROS lib folder, where the plant finds plugin files.
-gazebo_api_library(gazebo_ros_elevator SOURCES src/gazebo/plugins/gazebo_ros_elevator.cpp)
-target_include_directories(gazebo_ros_elevator PRIVATE ${catkin_INCLUDE_DIRS})
-target_link_libraries(gazebo_ros_elevator ElevatorPlugin ${catkin_LIBRARIES})
-install(TARGETS gazebo_ros_elevator LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
+# gazebo_ros_pkgs' plugins over them, as upstream builds them (ROS subscriptions on Gazebo's
+# plugin): libgazebo_ros_elevator.so and libgazebo_ros_harness.so in the ROS lib folder, where the
+# plant finds plugin files.
+foreach(plugin_over_base gazebo_ros_elevator:ElevatorPlugin gazebo_ros_harness:HarnessPlugin)
+  string(REPLACE ":" ";" plugin_over_base ${plugin_over_base})
+  list(GET plugin_over_base 0 plugin)
+  list(GET plugin_over_base 1 base)
+  gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cpp)
+  target_include_directories(${plugin} PRIVATE ${catkin_INCLUDE_DIRS})
+  target_link_libraries(${plugin} ${base} ${catkin_LIBRARIES})
+endforeach()
+install(TARGETS gazebo_ros_elevator gazebo_ros_harness LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 
 set(GAZEBO_API_TARGETS gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
 set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs gazebo_common)

@@ -53,8 +53,10 @@ bool Joint::bridged(const char* call) const
 {
   if (bridge_)
     return true;
-  gzerr << "Joint::" << call << " on joint [" << name_ << "], made at run time: it is not attached (Init or "
-        << "Attach attaches it)" << std::endl;
+  if (!said_unattached_)  // once: a plugin asks every step
+    gzerr << "Joint::" << call << " on joint [" << name_ << "], made at run time: it is not attached (Init or "
+          << "Attach attaches it); it answers 0 and takes nothing until it is" << std::endl;
+  said_unattached_ = true;
   return false;
 }
 
@@ -252,8 +254,10 @@ void Joint::Load(sdf::ElementPtr sdf)
   // value is read where it is given, with joint.sdf's default where not.
   if (sdf->HasAttribute("name"))
     name_ = sdf->Get<std::string>("name");
-  if (sdf->HasAttribute("type"))
-    type_ = sdf->Get<std::string>("type");
+  // The type is CreateJoint's, as Gazebo's joint classes are.
+  if (sdf->HasAttribute("type") && sdf->Get<std::string>("type") != type_)
+    gzwarn << "Joint::Load on joint [" << name_ << "]: made as a " << type_ << " joint, it stays one (its "
+           << "<joint type> says " << sdf->Get<std::string>("type") << ")" << std::endl;
   pose_ = childValue(sdf, "pose", ignition::math::Pose3d::Zero);
   const std::string parent = childValue<std::string>(sdf, "parent", "world");
   parent_ = parent == "world" ? LinkPtr() : linkNamed(parent);

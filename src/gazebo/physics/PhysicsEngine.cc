@@ -30,6 +30,14 @@ double PhysicsEngine::GetTargetRealTimeFactor() const { return bridge_->realTime
 
 JointPtr PhysicsEngine::CreateJoint(const std::string& type, ModelPtr parent)
 {
+  // The types the plant makes at run time (the simulator's RunTimeJoint); Gazebo's ODE makes
+  // revolute2, universal, screw and gearbox joints as well.
+  if (type != "fixed" && type != "prismatic" && type != "revolute" && type != "ball")
+  {
+    gzerr << "PhysicsEngine::CreateJoint(\"" << type << "\"): the plant makes fixed, prismatic, revolute and ball "
+          << "joints at run time; no joint is made" << std::endl;
+    return JointPtr();
+  }
   return JointPtr(new Joint(type, std::move(parent), bridge_));
 }
 

@@ -935,8 +935,9 @@ void createSensors(Robot::Internals& r)
       r.sensors.push_back(std::move(sensor));
 }
 
-// 10. gazebo_plugins' model plugins that drive joints (model_plugin.h), after the handles: a joint
-// a transmission drives is refused to them. One that cannot load is left out, said by its Load.
+// 10. gazebo_plugins' model plugins that drive joints (model_plugin.h), once the robot is in the
+// world (loadModelPlugins), after the handles: a joint a transmission drives is refused to them.
+// One that cannot load is left out, said by its Load.
 void createModelPlugins(Robot::Internals& r)
 {
   for (const ModelPluginDescription& d : r.description.model_plugins)
@@ -1024,13 +1025,17 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
   createHandles(r);
   createControllerManager(r);
   createSensors(r);
-  createModelPlugins(r);
-  allowSleep(r);
   for (const std::string& w : r.description.warnings)
     r.world->log.warn(r.name + ": " + w);
   for (const std::string& e : r.description.errors)
     r.world->log.error(r.name + ": " + e);
   r.recovery.last_good.save(r.multibody);
+}
+
+void loadModelPlugins(Robot::Internals& r)
+{
+  createModelPlugins(r);
+  allowSleep(r);
 }
 
 void updateJointRows(Robot::Internals& r, MovableJoint& j)

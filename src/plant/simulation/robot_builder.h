@@ -26,6 +26,10 @@ ContactSurface contactSurface(const SurfaceDescription& surface, const btMatrix3
                               Log& log, bool& plain);
 
 void buildRobot(Robot::Internals& robot, const urdf::Pose& pose, const std::map<std::string, double>& initial_joints);
+// Its model plugins, once the robot is in the world, as Gazebo loads a model's plugins (so that they
+// find their model by name and may make joints on it), and whether it may sleep (one with plugins
+// never does).
+void loadModelPlugins(Robot::Internals& robot);
 void removeRobot(Robot::Internals& robot);
 // A movable joint's constraint rows as its dynamics need them now: the drive, an implicit damper or
 // spring where an explicit one would be unstable, the dry friction motor, the limits (disabled when

@@ -416,6 +416,7 @@ Robot& World::Internals::addTree(RobotDescription description, const std::string
   }
   warnIfSpawnedInside(*this, r);
   robots.push_back(std::move(robot));
+  loadModelPlugins(r);
   return *robots.back();
 }
 

@@ -1,5 +1,5 @@
 // The common library's handle types, as Gazebo 11 declares them (std::shared_ptr handles), for
-// the classes this API has.
+// the classes this API has, and the events' connection.
 #pragma once
 
 #include <memory>
@@ -16,4 +16,11 @@ typedef std::shared_ptr<Animation> AnimationPtr;
 typedef std::shared_ptr<PoseAnimation> PoseAnimationPtr;
 typedef std::shared_ptr<NumericAnimation> NumericAnimationPtr;
 }  // namespace common
+
+namespace event
+{
+class Connection;
+// What Connect* returns; the subscription lasts while one is held (common/Event.hh).
+typedef std::shared_ptr<Connection> ConnectionPtr;
+}  // namespace event
 }  // namespace gazebo

@@ -20,6 +20,7 @@
 #include <boost/bind.hpp>
 #include <boost/function.hpp>
 
+#include "gazebo/common/CommonTypes.hh"
 #include "gazebo/util/system.hh"
 
 namespace gazebo
@@ -56,8 +57,6 @@ private:
   std::weak_ptr<Event> event_;
   int id_;
 };
-
-using ConnectionPtr = std::shared_ptr<Connection>;
 
 template <typename T>
 class EventT

@@ -13,6 +13,7 @@
 #include <boost/shared_ptr.hpp>
 #include <sdf/sdf.hh>
 
+#include "gazebo/common/CommonTypes.hh"
 #include "gazebo/common/Console.hh"
 #include "gazebo/common/SystemPaths.hh"
 #include "gazebo/gazebo_config.h"

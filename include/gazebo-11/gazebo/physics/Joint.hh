@@ -104,6 +104,7 @@ private:
   double lower_ = -std::numeric_limits<double>::infinity();
   double upper_ = std::numeric_limits<double>::infinity();
   double motor_velocity_ = 0.0, motor_max_force_ = 0.0;
+  mutable bool said_unattached_ = false;
 };
 }  // namespace physics
 }  // namespace gazebo
