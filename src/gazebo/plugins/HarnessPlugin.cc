@@ -86,21 +86,27 @@ void HarnessPlugin::Load(physics::ModelPtr _model, sdf::ElementPtr _sdf)
     return;
   }
 
-  if (_sdf->HasElement("detach"))
-  {
-    const std::string jointName = _sdf->Get<std::string>("detach");
-    this->detachIndex = this->JointIndex(jointName);
-    if (this->detachIndex < 0)
+  // A joint named by `element`'s child `child`: its index, or the first joint with Gazebo's warning
+  // (`missing` where the child is absent; `invalid`, the name put at its %, where it names no joint).
+  auto jointNamed = [this](const sdf::ElementPtr& element, const char* child, const std::string& missing,
+                           const std::string& invalid) {
+    if (!element->HasElement(child))
     {
-      this->detachIndex = 0;
-      gzwarn << "Invalid <detach> joint name[" << jointName << "] in the harness plugin. The first joint will be "
-             << "used as the detach joint." << std::endl;
+      gzwarn << missing << std::endl;
+      return 0;
     }
-  }
-  else
-    gzwarn << "A <detach> element is missing from the harness plugin. The first joint will be used as the detach "
-           << "joint." << std::endl;
-
+    const std::string name = element->Get<std::string>(child);
+    const int index = this->JointIndex(name);
+    if (index < 0)
+      gzwarn << "Invalid " << invalid.substr(0, invalid.find('%')) << name << invalid.substr(invalid.find('%') + 1)
+             << std::endl;
+    return std::max(index, 0);
+  };
+  this->detachIndex = jointNamed(_sdf, "detach",
+                                 "A <detach> element is missing from the harness plugin. The first joint will be "
+                                 "used as the detach joint.",
+                                 "<detach> joint name[%] in the harness plugin. The first joint will be used as "
+                                 "the detach joint.");
   if (!_sdf->HasElement("winch"))
   {
     gzwarn << "A <winch> element is missing from the harness plugin. The first joint will be used as the winch."
@@ -108,20 +114,11 @@ void HarnessPlugin::Load(physics::ModelPtr _model, sdf::ElementPtr _sdf)
     return;
   }
   const sdf::ElementPtr winchElem = _sdf->GetElement("winch");
-  if (winchElem->HasElement("joint"))
-  {
-    const std::string winchJointName = winchElem->Get<std::string>("joint");
-    this->winchIndex = this->JointIndex(winchJointName);
-    if (this->winchIndex < 0)
-    {
-      this->winchIndex = 0;
-      gzwarn << "Invalid <joint> name[" << winchJointName << "] in the <winch> element of the harness plugin.\n"
-             << "The first joint will be used as the winch." << std::endl;
-    }
-  }
-  else
-    gzwarn << "A <winch><joint>joint_name</joint></winch> element is missing from the harness plugin.\n"
-           << "The first joint will be used as the winch." << std::endl;
+  this->winchIndex = jointNamed(winchElem, "joint",
+                                "A <winch><joint>joint_name</joint></winch> element is missing from the harness "
+                                "plugin.\nThe first joint will be used as the winch.",
+                                "<joint> name[%] in the <winch> element of the harness plugin.\nThe first joint "
+                                "will be used as the winch.");
   if (winchElem->HasElement("pos_pid"))
     loadPid(winchElem->GetElement("pos_pid"), this->winchPosPID);
   if (winchElem->HasElement("vel_pid"))

@@ -5,29 +5,18 @@
 // number (std::stoi, which ends the server), this says so on ROS's log and the elevator stays.
 #include <memory>
 #include <string>
-#include <thread>
 
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_msgs/String.h>
 
 #include "gazebo/plugins/ElevatorPlugin.hh"
+#include "ros_callback_thread.h"
 
 namespace gazebo
 {
 class GazeboRosElevator : public ElevatorPlugin
 {
 public:
-  ~GazeboRosElevator() override
-  {
-    queue_.clear();
-    queue_.disable();
-    if (node_)
-      node_->shutdown();
-    if (queue_thread_.joinable())
-      queue_thread_.join();
-  }
-
   void Load(physics::ModelPtr _parent, sdf::ElementPtr _sdf) override
   {
     const std::string robot_namespace =
@@ -41,15 +30,9 @@ public:
     }
     const std::string topic = _sdf && _sdf->HasElement("topic") ? _sdf->Get<std::string>("topic") : "elevator";
     ElevatorPlugin::Load(_parent, _sdf);
-    node_.reset(new ros::NodeHandle(robot_namespace));
-    ros::SubscribeOptions options = ros::SubscribeOptions::create<std_msgs::String>(
-        topic, 1, [this](const std_msgs::String::ConstPtr& message) { OnElevator(message); }, ros::VoidPtr(), &queue_);
-    subscriber_ = node_->subscribe(options);
-    // Its own queue and thread, as upstream's: a floor comes whatever the node's spinners do.
-    queue_thread_ = std::thread([this] {
-      while (node_->ok())
-        queue_.callAvailable(ros::WallDuration(0.01));
-    });
+    ros_.reset(new RosCallbackThread(robot_namespace));
+    subscriber_ = ros_->subscribe<std_msgs::String>(
+        topic, [this](const std_msgs::String::ConstPtr& message) { OnElevator(message); });
   }
 
 private:
@@ -66,10 +49,8 @@ private:
     }
   }
 
-  std::unique_ptr<ros::NodeHandle> node_;
   ros::Subscriber subscriber_;
-  ros::CallbackQueue queue_;
-  std::thread queue_thread_;
+  std::unique_ptr<RosCallbackThread> ros_;  // last: it goes first, its thread joined
 };
 
 GZ_REGISTER_MODEL_PLUGIN(GazeboRosElevator)

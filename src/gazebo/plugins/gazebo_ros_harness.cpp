@@ -4,31 +4,20 @@
 // lets go), served on their own queue and thread.
 #include <memory>
 #include <string>
-#include <thread>
 
-#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_msgs/Bool.h>
 #include <std_msgs/Float32.h>
 
 #include "gazebo/physics/Model.hh"
 #include "gazebo/plugins/HarnessPlugin.hh"
+#include "ros_callback_thread.h"
 
 namespace gazebo
 {
 class GazeboRosHarness : public HarnessPlugin
 {
 public:
-  ~GazeboRosHarness() override
-  {
-    queue_.clear();
-    queue_.disable();
-    if (node_)
-      node_->shutdown();
-    if (queue_thread_.joinable())
-      queue_thread_.join();
-  }
-
   void Load(physics::ModelPtr _parent, sdf::ElementPtr _sdf) override
   {
     HarnessPlugin::Load(_parent, _sdf);
@@ -42,31 +31,19 @@ public:
                                         "starting gazebo with ros plugin:\n  gazebo -s libgazebo_ros_api_plugin.so\n");
       return;
     }
-    node_.reset(new ros::NodeHandle(robot_namespace));
+    ros_.reset(new RosCallbackThread(robot_namespace));
     const std::string prefix = "/" + _parent->GetName() + "/harness/";
-    ros::SubscribeOptions velocity = ros::SubscribeOptions::create<std_msgs::Float32>(
-        prefix + "velocity", 1, [this](const std_msgs::Float32::ConstPtr& msg) { SetWinchVelocity(msg->data); },
-        ros::VoidPtr(), &queue_);
-    velocity_ = node_->subscribe(velocity);
-    ros::SubscribeOptions detach = ros::SubscribeOptions::create<std_msgs::Bool>(
-        prefix + "detach", 1,
-        [this](const std_msgs::Bool::ConstPtr& msg) {
-          if (msg->data)
-            Detach();
-        },
-        ros::VoidPtr(), &queue_);
-    detach_ = node_->subscribe(detach);
-    queue_thread_ = std::thread([this] {
-      while (node_->ok())
-        queue_.callAvailable(ros::WallDuration(0.01));
+    velocity_ = ros_->subscribe<std_msgs::Float32>(
+        prefix + "velocity", [this](const std_msgs::Float32::ConstPtr& msg) { SetWinchVelocity(msg->data); });
+    detach_ = ros_->subscribe<std_msgs::Bool>(prefix + "detach", [this](const std_msgs::Bool::ConstPtr& msg) {
+      if (msg->data)
+        Detach();
     });
   }
 
 private:
-  std::unique_ptr<ros::NodeHandle> node_;
   ros::Subscriber velocity_, detach_;
-  ros::CallbackQueue queue_;
-  std::thread queue_thread_;
+  std::unique_ptr<RosCallbackThread> ros_;  // last: it goes first, its thread joined
 };
 
 GZ_REGISTER_MODEL_PLUGIN(GazeboRosHarness)
