@@ -53,6 +53,8 @@ public:
   // slides nor turns.
   virtual double jointPosition(int joint) const = 0;
   virtual double jointVelocity(int joint) const = 0;
+  // Its axis in the world now, as its parent carries it (unit); zero for a joint released.
+  virtual urdf::Vector3 jointAxis(int joint) const = 0;
   // An effort along or about its axis for the coming step (Joint::SetForce), added to any before.
   virtual void addJointEffort(int joint, double effort) = 0;
   // World::InsertModelString / InsertModelFile / InsertModelSDF: a model as SDF text, added between

@@ -2,12 +2,16 @@
 // loaded from a model's <plugin> as Gazebo loads it, with the joint, winch gains and detach of
 // Gazebo's own harness world, and commanded as its documentation says: a speed in a GzString on
 // ~/<model>/harness/velocity, "true" on ~/<model>/harness/detach. The box hangs where it was, goes
-// down at the speed asked, holds where a speed of 0 finds it, and falls once let go.
+// down at the speed asked, holds where a speed of 0 finds it, and falls once let go. And the joints'
+// axes through Gazebo's physics::Joint: a model's, and one made at run time.
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include <cmath>
+
 #include <gazebo/msgs/msgs.hh>
+#include <gazebo/physics/physics.hh>
 #include <gazebo/transport/transport.hh>
 
 #include "bullet_plant/robot.h"
@@ -113,4 +117,39 @@ TEST(GazeboHarnessPlugin, AJointOfATypeThePlantDoesNotMakeIsRefusedByName)
             std::string::npos) << said;
   EXPECT_NE(said.find("Unable to create joint[joint1]"), std::string::npos) << said;
   EXPECT_NEAR(at(world).z, 2.0 - 0.5 * 9.8 * 0.09, 0.01);
+}
+
+TEST(GazeboJointAxes, AModelsJointAndAJointMadeAtRunTimeGiveTheirAxesInTheWorld)
+{
+  // A model turned a quarter about z: its hinge about its own y is about the world's -x.
+  World world;
+  urdf::Pose turned;
+  turned.position = urdf::Vector3(0, 0, 2);
+  turned.rotation.setFromRPY(0, 0, M_PI / 2);
+  world.spawn(R"(<sdf version='1.6'><model name='box'>
+  <link name='link'><inertial><mass>10</mass><inertia><ixx>0.4</ixx><iyy>0.4</iyy><izz>0.4</izz></inertia></inertial></link>
+  <link name='arm'><pose>0.5 0 0 0 0 0</pose><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial></link>
+  <joint name='hinge' type='revolute'><parent>link</parent><child>arm</child><axis><xyz>0 1 0</xyz></axis></joint>
+  <plugin name='harness' filename='libHarnessPlugin.so'>)" + std::string(kJoint) + R"(</plugin>
+</model></sdf>)",
+              "box", turned);
+  gazebo::physics::WorldPtr gazebo_world = gazebo::physics::get_world(world.description().name);
+  ASSERT_TRUE(gazebo_world);
+  gazebo::physics::ModelPtr model = gazebo_world->ModelByName("box");
+  ASSERT_TRUE(model);
+  gazebo::physics::JointPtr hinge = model->GetJoint("hinge");
+  ASSERT_TRUE(hinge);
+  EXPECT_NEAR((hinge->LocalAxis(0) - ignition::math::Vector3d(0, 1, 0)).Length(), 0.0, 1e-9);
+  EXPECT_NEAR((hinge->GlobalAxis(0) - ignition::math::Vector3d(-1, 0, 0)).Length(), 0.0, 1e-6);
+
+  // One made at run time about the link's x: the world's y, before and after it is attached.
+  gazebo::physics::JointPtr made = gazebo_world->Physics()->CreateJoint("revolute", model);
+  made->SetModel(model);
+  made->Load(gazebo::physics::LinkPtr(), model->GetLink("arm"), ignition::math::Pose3d::Zero);
+  made->SetAxis(0, ignition::math::Vector3d(1, 0, 0));
+  EXPECT_NEAR((made->GlobalAxis(0) - ignition::math::Vector3d(0, 1, 0)).Length(), 0.0, 1e-6);
+  made->Init();
+  world.step(10);
+  EXPECT_NEAR((made->GlobalAxis(0) - ignition::math::Vector3d(0, 1, 0)).Length(), 0.0, 1e-3);
+  EXPECT_NEAR((made->LocalAxis(0) - ignition::math::Vector3d(1, 0, 0)).Length(), 0.0, 1e-9);
 }

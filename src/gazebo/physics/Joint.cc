@@ -301,23 +301,21 @@ ignition::math::Vector3d Joint::LocalAxis(unsigned int index) const
 {
   if (!axisZero(index, "LocalAxis"))
     return ignition::math::Vector3d::Zero;
-  if (!world_)
-    gzerr << "Joint::LocalAxis on joint [" << name_ << "] of a model: the plant answers it for joints made at run "
-          << "time only" << std::endl;
-  return world_ ? axis_ : ignition::math::Vector3d::Zero;
+  return world_ || !bridge_ ? axis_ : bridge_->localAxis();
 }
 
 ignition::math::Vector3d Joint::GlobalAxis(unsigned int index) const
 {
   if (!axisZero(index, "GlobalAxis"))
     return ignition::math::Vector3d::Zero;
-  if (!world_ || !child_)
+  if (bridge_)
+    return bridge_->globalAxis();
+  if (!child_)
   {
-    gzerr << "Joint::GlobalAxis on joint [" << name_ << "]: the plant answers it for joints made at run time, "
-          << "with a child link, only" << std::endl;
+    gzerr << "Joint::GlobalAxis on joint [" << name_ << "]: no child link yet (Load names it)" << std::endl;
     return ignition::math::Vector3d::Zero;
   }
-  // The joint's frame turns with the child link; the model's frame with the model.
+  // Not attached yet: the joint's frame turns with the child link; the model's frame with the model.
   const ignition::math::Quaterniond frame = axis_in_model_frame_ && model_ ? model_->WorldPose().Rot()
                                                                            : child_->WorldPose().Rot() * pose_.Rot();
   return frame.RotateVector(axis_).Normalized();

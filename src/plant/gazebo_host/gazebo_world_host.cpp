@@ -137,6 +137,13 @@ public:
   double velocityLimit() const override { return std::numeric_limits<double>::infinity(); }
   std::string parentLink() const override { return spec_.parent_link; }
   std::string childLink() const override { return spec_.child_link; }
+  // Joint::LocalAxis answers from the joint itself, which keeps the axis it was loaded with.
+  ignition::math::Vector3d localAxis() const override { return ignition::math::Vector3d::Zero; }
+  ignition::math::Vector3d globalAxis() const override
+  {
+    const urdf::Vector3 axis = world_->context() ? world_->context()->jointAxis(id_) : urdf::Vector3();
+    return {axis.x, axis.y, axis.z};
+  }
   bool setMotorVelocity(double) override { return unsupported("SetParam(\"vel\")"); }
   bool setMotorMaxForce(double) override { return unsupported("SetParam(\"fmax\")"); }
   void childWrench(ignition::math::Vector3d& force, ignition::math::Vector3d& torque) override

@@ -81,6 +81,21 @@ public:
     const auto joint = urdfJoint();
     return joint ? joint->parent_link_name : "";
   }
+  ignition::math::Vector3d localAxis() const override
+  {
+    const auto joint = urdfJoint();
+    return joint ? ignition::math::Vector3d(joint->axis.x, joint->axis.y, joint->axis.z) : ignition::math::Vector3d::Zero;
+  }
+  ignition::math::Vector3d globalAxis() const override
+  {
+    // URDF's joint frame is the child link's frame: the axis turns with the child.
+    const auto joint = urdfJoint();
+    if (!joint || !reach_->context)
+      return ignition::math::Vector3d::Zero;
+    const urdf::Rotation child = reach_->context->linkMotion(joint->child_link_name).pose.rotation;
+    const urdf::Vector3 axis = child * joint->axis;
+    return ignition::math::Vector3d(axis.x, axis.y, axis.z);
+  }
   std::string childLink() const override
   {
     const auto joint = urdfJoint();

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "bullet_plant/log.h"
+#include "physics/bullet_conversions.h"
 #include "simulation/internals.h"
 
 namespace bullet_plant
@@ -73,6 +74,12 @@ double PlantWorldPluginContext::jointVelocity(int joint) const
 {
   const World::Internals::Attachment* held = w_.attachment(joint);
   return held ? double(held->constraint->velocity()) : 0.0;
+}
+
+urdf::Vector3 PlantWorldPluginContext::jointAxis(int joint) const
+{
+  const World::Internals::Attachment* held = w_.attachment(joint);
+  return held ? fromBullet(held->constraint->axisInWorld()) : urdf::Vector3();
 }
 
 void PlantWorldPluginContext::addJointEffort(int joint, double effort)

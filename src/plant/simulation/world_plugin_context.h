@@ -36,6 +36,7 @@ public:
   void detach(int joint) override;
   double jointPosition(int joint) const override;
   double jointVelocity(int joint) const override;
+  urdf::Vector3 jointAxis(int joint) const override;
   void addJointEffort(int joint, double effort) override;
   void insertModel(const std::string& sdf_xml) override;
   Log& log() override;

@@ -74,7 +74,8 @@ public:
   void Init();
   void Attach(LinkPtr parent, LinkPtr child);
   void Detach();
-  // Axis 0 in the joint's frame (a joint made at run time, before it is attached), and in the world.
+  // Axis 0: set in the joint's frame (a joint made at run time, before it is attached); as its model
+  // or its Load gives it (LocalAxis), and in the world now (GlobalAxis).
   void SetAxis(unsigned int index, const ignition::math::Vector3d& axis);
   ignition::math::Vector3d LocalAxis(unsigned int index) const;
   ignition::math::Vector3d GlobalAxis(unsigned int index) const;

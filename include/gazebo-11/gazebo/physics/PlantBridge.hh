@@ -45,6 +45,10 @@ public:
   // force, every step until told otherwise. False as setVelocity.
   virtual bool setMotorVelocity(double velocity) = 0;
   virtual bool setMotorMaxForce(double force) = 0;
+  // Its axis as its model gives it (in the joint's frame, which moves with the child link), and in
+  // the world now; zero for a joint that has none.
+  virtual ignition::math::Vector3d localAxis() const = 0;
+  virtual ignition::math::Vector3d globalAxis() const = 0;
   // The wrench the joint passed to its child over the last step, in the child link's frame (the
   // torque about the joint's origin), watched from the first call on: zero until a step has run.
   virtual void childWrench(ignition::math::Vector3d& force, ignition::math::Vector3d& torque) = 0;
