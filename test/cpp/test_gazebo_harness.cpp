@@ -104,17 +104,27 @@ TEST(GazeboHarnessPlugin, AHarnessWithoutJointsSaysSoAndTheModelRuns)
   EXPECT_NEAR(at(world).z, 2.0 - 0.5 * 9.8 * 0.09, 0.01);
 }
 
-TEST(GazeboHarnessPlugin, AJointOfATypeThePlantDoesNotMakeIsRefusedByName)
+TEST(GazeboHarnessPlugin, AGazeboJointTypeThePlantDoesNotMakeHoldsFixedAndANameThatIsNoTypeIsRefused)
 {
+  {
+    World world;
+    testing::internal::CaptureStderr();
+    std::string joint = kJoint;
+    joint.replace(joint.find("prismatic"), 9, "gearbox");
+    world.spawn(harnessedBox(joint), "box", urdf::Pose());
+    run(world, 0.3);
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_NE(said.find("Joint [joint1] of type gearbox made at run time"), std::string::npos) << said;
+    EXPECT_NEAR(at(world).z, 2.0, 0.002);  // held where it was
+  }
   World world;
   testing::internal::CaptureStderr();
   std::string joint = kJoint;
-  joint.replace(joint.find("prismatic"), 9, "gearbox");
+  joint.replace(joint.find("prismatic"), 9, "sliding");
   world.spawn(harnessedBox(joint), "box", urdf::Pose());
   run(world, 0.3);
   const std::string said = testing::internal::GetCapturedStderr();
-  EXPECT_NE(said.find("CreateJoint(\"gearbox\"): the plant makes fixed, prismatic, revolute and ball"),
-            std::string::npos) << said;
+  EXPECT_NE(said.find("Unable to create joint of type[sliding]"), std::string::npos) << said;
   EXPECT_NE(said.find("Unable to create joint[joint1]"), std::string::npos) << said;
   EXPECT_NEAR(at(world).z, 2.0 - 0.5 * 9.8 * 0.09, 0.01);
 }

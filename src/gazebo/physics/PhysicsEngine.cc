@@ -1,6 +1,9 @@
 // physics::PhysicsEngine (gazebo/physics/PhysicsEngine.hh), over the simulator's WorldBridge.
 #include "gazebo/physics/PhysicsEngine.hh"
 
+#include <algorithm>
+#include <iterator>
+
 #include "gazebo/common/Console.hh"
 #include "gazebo/physics/Joint.hh"
 #include "gazebo/physics/PlantBridge.hh"
@@ -30,12 +33,12 @@ double PhysicsEngine::GetTargetRealTimeFactor() const { return bridge_->realTime
 
 JointPtr PhysicsEngine::CreateJoint(const std::string& type, ModelPtr parent)
 {
-  // The types the plant makes at run time (the simulator's RunTimeJoint); Gazebo's ODE makes
-  // revolute2, universal, screw and gearbox joints as well.
-  if (type != "fixed" && type != "prismatic" && type != "revolute" && type != "ball")
+  // Gazebo's joint types (ODE makes them all); another name is Gazebo's error and no joint.
+  static const char* const kGazeboTypes[] = {"fixed", "prismatic", "revolute", "ball",
+                                             "revolute2", "universal", "screw", "gearbox"};
+  if (std::find(std::begin(kGazeboTypes), std::end(kGazeboTypes), type) == std::end(kGazeboTypes))
   {
-    gzerr << "PhysicsEngine::CreateJoint(\"" << type << "\"): the plant makes fixed, prismatic, revolute and ball "
-          << "joints at run time; no joint is made" << std::endl;
+    gzerr << "Unable to create joint of type[" << type << "]" << std::endl;
     return JointPtr();
   }
   return JointPtr(new Joint(type, std::move(parent), bridge_));

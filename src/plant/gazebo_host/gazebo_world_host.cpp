@@ -180,15 +180,14 @@ std::unique_ptr<gazebo::physics::JointBridge> HostWorld::attach(const gazebo::ph
   if (!context_ || !host_)
     return nullptr;
   auto type = types.find(spec.type);
+  // Gazebo's other types (revolute2, universal, screw, gearbox) hold their links fixed here, as
+  // every joint made at run time did before the plant made the four: a grasp still holds.
   if (type == types.end())
-  {
-    gzerr << "Joint [" << spec.name << "] of type " << spec.type << " made at run time: the plant makes fixed, "
-          << "prismatic, revolute and ball joints at run time; it is not attached" << std::endl;
-    return nullptr;
-  }
+    gzwarn << "Joint [" << spec.name << "] of type " << spec.type << " made at run time: the plant makes fixed, "
+           << "prismatic, revolute and ball joints at run time; this one holds its links fixed" << std::endl;
   std::lock_guard<boost::recursive_mutex> between_steps(host_->physicsMutex());
   RunTimeJoint joint;
-  joint.type = type->second;
+  joint.type = type == types.end() ? RunTimeJoint::Type::Fixed : type->second;
   joint.parent_model = spec.parent_model;
   joint.parent_link = spec.parent_link;
   joint.child_model = spec.child_model;
