@@ -42,11 +42,13 @@ target_link_libraries(gazebo_common PUBLIC sdformat12::sdformat12 ignition-math6
 # Gazebo's physics classes for plugins (World, Model, Link, Joint) over the simulator's bridge
 # (gazebo/physics/PlantBridge.hh), which the plant implements.
 gazebo_api_library(gazebo_physics VERSIONED SOURCES
+  src/gazebo/physics/Collision.cc
   src/gazebo/physics/Joint.cc
   src/gazebo/physics/JointController.cc
   src/gazebo/physics/Link.cc
   src/gazebo/physics/Model.cc
   src/gazebo/physics/PhysicsEngine.cc
+  src/gazebo/physics/Shape.cc
   src/gazebo/physics/World.cc)
 target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_common)
 # Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
@@ -57,7 +59,7 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
 # Gazebo's messages (gazebo::msgs, libgazebo_msgs): protobuf from the .proto files in
 # src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
-set(GAZEBO_MSGS gz_string:GzString)
+set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
@@ -87,10 +89,10 @@ foreach(entry ${GAZEBO_MSGS})
 endforeach()
 configure_file(cmake/MessageTypes.hh.in ${GAZEBO_MSGS_INCLUDE_DIR}/gazebo/msgs/MessageTypes.hh @ONLY)
 # Named as Gazebo's library; the target's own name leaves `gazebo_msgs` to the ROS package.
-gazebo_api_library(gazebo_msgs_protobuf VERSIONED SOURCES ${GAZEBO_MSGS_SOURCES})
+gazebo_api_library(gazebo_msgs_protobuf VERSIONED SOURCES ${GAZEBO_MSGS_SOURCES} src/gazebo/msgs/msgs.cc)
 target_include_directories(gazebo_msgs_protobuf PUBLIC include/gazebo-11 ${GAZEBO_MSGS_INCLUDE_DIR}
   ${GAZEBO_MSGS_GENERATED})
-target_link_libraries(gazebo_msgs_protobuf PUBLIC protobuf::libprotobuf)
+target_link_libraries(gazebo_msgs_protobuf PUBLIC protobuf::libprotobuf ignition-math6::ignition-math6)
 set_target_properties(gazebo_msgs_protobuf PROPERTIES OUTPUT_NAME gazebo_msgs)
 # protoc's code is not ours to warn about
 target_compile_options(gazebo_msgs_protobuf PRIVATE -w)
@@ -107,18 +109,20 @@ gazebo_api_library(gazebo_transport VERSIONED SOURCES
 target_link_libraries(gazebo_transport PUBLIC gazebo_common protobuf::libprotobuf Threads::Threads)
 
 # Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
-# (gazebo_ros_elevator: ElevatorPlugin, gazebo_ros_harness: HarnessPlugin), in GAZEBO_LIBRARY_DIRS
+# (gazebo_ros_elevator: ElevatorPlugin, gazebo_ros_harness: HarnessPlugin, gazebo_ros_wheel_slip:
+# WheelSlipPlugin), in GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
-set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin)
+set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
 endforeach()
 install(TARGETS ${GAZEBO_API_PLUGINS} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 # gazebo_ros_pkgs' plugins over them, as upstream builds them (ROS subscriptions on Gazebo's
-# plugin): libgazebo_ros_elevator.so and libgazebo_ros_harness.so in the ROS lib folder, where the
-# plant finds plugin files.
-foreach(plugin_over_base gazebo_ros_elevator:ElevatorPlugin gazebo_ros_harness:HarnessPlugin)
+# plugin): libgazebo_ros_elevator.so, libgazebo_ros_harness.so and libgazebo_ros_wheel_slip.so in the
+# ROS lib folder, where the plant finds plugin files.
+foreach(plugin_over_base gazebo_ros_elevator:ElevatorPlugin gazebo_ros_harness:HarnessPlugin
+                         gazebo_ros_wheel_slip:WheelSlipPlugin)
   string(REPLACE ":" ";" plugin_over_base ${plugin_over_base})
   list(GET plugin_over_base 0 plugin)
   list(GET plugin_over_base 1 base)
@@ -126,7 +130,11 @@ foreach(plugin_over_base gazebo_ros_elevator:ElevatorPlugin gazebo_ros_harness:H
   target_include_directories(${plugin} PRIVATE ${catkin_INCLUDE_DIRS})
   target_link_libraries(${plugin} ${base} ${catkin_LIBRARIES})
 endforeach()
-install(TARGETS gazebo_ros_elevator gazebo_ros_harness LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
+# gazebo_ros_wheel_slip's reconfigure header (cfg/WheelSlip.cfg).
+target_include_directories(gazebo_ros_wheel_slip PRIVATE ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION})
+add_dependencies(gazebo_ros_wheel_slip ${PROJECT_NAME}_gencfg)
+install(TARGETS gazebo_ros_elevator gazebo_ros_harness gazebo_ros_wheel_slip
+        LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 
 set(GAZEBO_API_TARGETS gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
 set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs gazebo_common)

@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <urdf_model/pose.h>
 
@@ -29,6 +30,23 @@ class Param;
 
 // A movable joint as Gazebo's physics::Joint offers it to a model plugin that drives it. A
 // non-finite value is ignored (the plant never takes NaN into its physics).
+// One collision of a link as its model gives it (Gazebo's physics::Collision): its SDF name
+// (sdformat's for a URDF's, lumped names included), its shape and pose in the link, its <surface>.
+struct LinkCollision
+{
+  std::string name;
+  urdf::GeometrySharedPtr geometry;
+  urdf::Pose origin;
+  SurfaceDescription surface;
+};
+
+// What a plugin changes of a collision's surface while the world runs: the friction coefficients
+// along the first friction direction and across it, and ODE's force-dependent slips (m/s per N).
+struct CollisionFriction
+{
+  double mu1 = 1.0, mu2 = 1.0, slip1 = 0.0, slip2 = 0.0;
+};
+
 class ModelJoint
 {
 public:
@@ -112,6 +130,12 @@ public:
   // link) and the link's own URDF <inertia ixx> (kg m^2); 0 for an unknown link.
   virtual double linkMass(const std::string& link) const = 0;
   virtual double linkIxx(const std::string& link) const = 0;
+  // The link's own collisions, in its <collision> order; empty for an unknown link.
+  virtual std::vector<LinkCollision> linkCollisions(const std::string& link) const = 0;
+  // The friction of `link`'s collision named `collision` from the next step on. False, changing
+  // nothing, for a collision the link lacks or a coefficient or slip that is negative or not finite.
+  virtual bool setCollisionFriction(const std::string& link, const std::string& collision,
+                                    const CollisionFriction& friction) = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.
   virtual double stepSize() const = 0;
   // The world's parameter tree (params.h): where the node has copied the ROS parameters a plugin

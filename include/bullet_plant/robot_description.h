@@ -168,6 +168,8 @@ struct SurfaceDescription
   // <friction><ode>: mu along fdir1 (or ODE's default first direction), mu2 across it.
   double mu1 = 1.0, mu2 = 1.0;  // Gazebo's defaults
   urdf::Vector3 fdir1{0, 0, 0};  // in the collision's frame; zero: not given (SDF's default)
+  // ODE's force-dependent slip (m/s per N of friction) along fdir1 and across it; SDF's 0: none.
+  double slip1 = 0.0, slip2 = 0.0;
   // <contact><ode>: negative where not given (the plant's own rigid contact then, see docs/sdf.md).
   double kp = -1.0, kd = -1.0;
   double max_vel = -1.0, min_depth = -1.0;

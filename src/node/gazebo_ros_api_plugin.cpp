@@ -659,21 +659,35 @@ bool GazeboRosApiPlugin::getModelProperties(gazebo_msgs::GetModelProperties::Req
 
 // Upstream's: the first model with a joint of that (unscoped) name; its type always REVOLUTE and
 // no damping (both marked FIXME upstream), its position and rate.
+Robot* GazeboRosApiPlugin::jointOwner(const std::string& requested, std::string& joint)
+{
+  // Upstream's: the first model with a joint of that name (Model::GetJoint: its name or its scoped
+  // name, model::joint).
+  for (Robot* robot : world_.robots())
+    for (const std::string& name : robot->jointNames())
+      if (name == requested || robot->name() + "::" + name == requested)
+      {
+        joint = name;
+        return robot;
+      }
+  return nullptr;
+}
+
 bool GazeboRosApiPlugin::getJointProperties(gazebo_msgs::GetJointProperties::Request& req,
                                             gazebo_msgs::GetJointProperties::Response& res)
 {
-  for (Robot* robot : world_.robots())
-  {
-    double position = 0, velocity = 0, effort = 0;
-    if (!robot->jointState(req.joint_name, position, velocity, effort))
-      continue;
-    res.type = gazebo_msgs::GetJointProperties::Response::REVOLUTE;
-    res.position.assign(1, position);
-    res.rate.assign(1, velocity);
-    res.success = true;
-    res.status_message = "GetJointProperties: got properties";
-    return true;
-  }
+  std::string joint;
+  double position = 0, velocity = 0, effort = 0;
+  if (Robot* robot = jointOwner(req.joint_name, joint))
+    if (robot->jointState(joint, position, velocity, effort))
+    {
+      res.type = gazebo_msgs::GetJointProperties::Response::REVOLUTE;
+      res.position.assign(1, position);
+      res.rate.assign(1, velocity);
+      res.success = true;
+      res.status_message = "GetJointProperties: got properties";
+      return true;
+    }
   res.success = false;
   res.status_message = "GetJointProperties: joint not found";
   return true;
@@ -844,22 +858,8 @@ void GazeboRosApiPlugin::physicsReconfigure(tianracer_description::PhysicsConfig
 bool GazeboRosApiPlugin::setJointProperties(gazebo_msgs::SetJointProperties::Request& req,
                                             gazebo_msgs::SetJointProperties::Response& res)
 {
-  // Upstream's: the first model with a joint of that name (Model::GetJoint: its name or its scoped
-  // name, model::joint).
-  Robot* owner = nullptr;
   std::string joint;
-  for (Robot* robot : world_.robots())
-  {
-    for (const std::string& name : robot->jointNames())
-      if (name == req.joint_name || robot->name() + "::" + name == req.joint_name)
-      {
-        owner = robot;
-        joint = name;
-        break;
-      }
-    if (owner)
-      break;
-  }
+  Robot* owner = jointOwner(req.joint_name, joint);
   if (!owner)
   {
     res.success = false;
@@ -1109,16 +1109,14 @@ bool GazeboRosApiPlugin::applyJointEffort(gazebo_msgs::ApplyJointEffort::Request
     res.status_message = "ApplyJointEffort: the effort on '" + req.joint_name + "' is not finite";
     return true;
   }
-  // gazebo_ros names joints without their model: the first model that has it.
-  for (Robot* robot : world_.robots())
-    for (const std::string& joint : robot->jointNames())
-      if (joint == req.joint_name)
-      {
-        robot->applyJointEffort(joint, req.effort, jobStart(req.start_time, world_.timeNs()), req.duration.toNSec());
-        res.success = true;
-        res.status_message = "ApplyJointEffort: effort set";
-        return true;
-      }
+  std::string joint;
+  if (Robot* robot = jointOwner(req.joint_name, joint))
+  {
+    robot->applyJointEffort(joint, req.effort, jobStart(req.start_time, world_.timeNs()), req.duration.toNSec());
+    res.success = true;
+    res.status_message = "ApplyJointEffort: effort set";
+    return true;
+  }
   res.status_message = "ApplyJointEffort: joint not found";
   return true;
 }

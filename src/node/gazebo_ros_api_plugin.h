@@ -106,6 +106,9 @@ private:
                              gazebo_msgs::SetModelConfiguration::Response& res);
   bool getWorldProperties(gazebo_msgs::GetWorldProperties::Request& req, gazebo_msgs::GetWorldProperties::Response& res);
   bool getModelProperties(gazebo_msgs::GetModelProperties::Request& req, gazebo_msgs::GetModelProperties::Response& res);
+  // The robot with the joint a service names (by its name or MODEL::JOINT), and that joint's name in
+  // it; null for none.
+  Robot* jointOwner(const std::string& requested, std::string& joint);
   bool getJointProperties(gazebo_msgs::GetJointProperties::Request& req, gazebo_msgs::GetJointProperties::Response& res);
   bool getPhysicsProperties(gazebo_msgs::GetPhysicsProperties::Request& req,
                             gazebo_msgs::GetPhysicsProperties::Response& res);

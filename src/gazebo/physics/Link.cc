@@ -2,6 +2,7 @@
 #include "gazebo/physics/Link.hh"
 
 #include "gazebo/common/Console.hh"
+#include "gazebo/physics/Collision.hh"
 #include "gazebo/physics/Inertial.hh"
 #include "gazebo/physics/Joint.hh"
 #include "gazebo/physics/Model.hh"
@@ -11,7 +12,36 @@ namespace gazebo
 {
 namespace physics
 {
-Link::Link(const std::string& name, std::shared_ptr<ModelBridge> bridge) : name_(name), bridge_(std::move(bridge)) {}
+Link::Link(const std::string& name, std::shared_ptr<ModelBridge> bridge) : name_(name), bridge_(std::move(bridge))
+{
+  AddType(LINK);
+}
+
+Collision_V Link::GetCollisions() const
+{
+  if (!collisions_made_)
+  {
+    collisions_made_ = true;
+    const LinkPtr self = boost::const_pointer_cast<Link>(shared_from_this());
+    for (const CollisionSpec& spec : bridge_->linkCollisions(name_))
+      collisions_.push_back(CollisionPtr(new Collision(self, bridge_, spec)));
+  }
+  return collisions_;
+}
+
+CollisionPtr Link::GetCollision(const std::string& name) const
+{
+  for (const CollisionPtr& collision : GetCollisions())
+    if (collision->GetName() == name)
+      return collision;
+  return nullptr;
+}
+
+CollisionPtr Link::GetCollision(unsigned int index) const
+{
+  const Collision_V collisions = GetCollisions();
+  return index < collisions.size() ? collisions[index] : nullptr;
+}
 
 std::string Link::GetName() const { return name_; }
 

@@ -17,6 +17,7 @@ namespace physics
 {
 Model::Model(std::shared_ptr<ModelBridge> bridge, WorldPtr world) : bridge_(std::move(bridge)), world_(std::move(world))
 {
+  AddType(MODEL);
   const std::string canonical = bridge_->canonicalLink();
   links_.push_back(LinkPtr(new Link(canonical, bridge_)));  // the canonical link first, as Gazebo's
   for (const std::string& link : bridge_->linkNames())

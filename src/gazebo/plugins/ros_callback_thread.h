@@ -19,6 +19,7 @@ class RosCallbackThread
 public:
   explicit RosCallbackThread(const std::string& robot_namespace) : node_(robot_namespace)
   {
+    node_.setCallbackQueue(&queue_);
     thread_ = std::thread([this] {
       while (node_.ok())
         queue_.callAvailable(ros::WallDuration(0.01));
@@ -43,6 +44,9 @@ public:
         ros::SubscribeOptions::create<Message>(topic, 1, callback, ros::VoidPtr(), &queue_);
     return node_.subscribe(options);
   }
+
+  // The node handle whose callbacks (a dynamic_reconfigure server's services among them) this thread serves.
+  ros::NodeHandle& node() { return node_; }
 
 private:
   ros::NodeHandle node_;

@@ -272,6 +272,8 @@ SurfaceDescription readSurface(const tinyxml2::XMLElement* collision, const std:
     const std::vector<double> d = xml::numbers(fdir1, 3, where + " <surface><friction><ode><fdir1>");
     s.fdir1 = urdf::Vector3(d[0], d[1], d[2]);
   }
+  s.slip1 = xml::childDouble(surface, "friction/ode/slip1", s.slip1);
+  s.slip2 = xml::childDouble(surface, "friction/ode/slip2", s.slip2);
   s.kp = xml::childDouble(surface, "contact/ode/kp", s.kp);
   s.kd = xml::childDouble(surface, "contact/ode/kd", s.kd);
   s.max_vel = xml::childDouble(surface, "contact/ode/max_vel", s.max_vel);

@@ -393,6 +393,10 @@ void PlantGazeboHost::beginStep()
     gazebo::event::Events::worldUpdateBegin(step_info_);
     gazebo::event::Events::beforePhysicsUpdate(step_info_);
   });
+  // What the plugins changed of the surfaces they hold goes to the solver for this step (Gazebo's
+  // ODE reads its surfaces as it makes the step's contacts).
+  for (auto& model : models_)
+    model.second->pushSurfaces();
 }
 
 void PlantGazeboHost::endStep()

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/make_shared.hpp>
 #include <gazebo/common/Console.hh>
+#include <gazebo/physics/Base.hh>
 
 #include "bullet_plant/log.h"
 
@@ -335,5 +337,128 @@ std::unique_ptr<gazebo::physics::JointBridge> ContextModel::joint(const std::str
   if (!context || !context->jointState(name, position, velocity))
     return nullptr;
   return std::make_unique<ContextJoint>(reach_, name);
+}
+}  // namespace bullet_plant
+
+namespace bullet_plant
+{
+namespace
+{
+CollisionFriction frictionOf(const gazebo::physics::ODESurfaceParams& surface)
+{
+  CollisionFriction friction;
+  friction.mu1 = surface.FrictionPyramid()->MuPrimary();
+  friction.mu2 = surface.FrictionPyramid()->MuSecondary();
+  friction.slip1 = surface.slip1;
+  friction.slip2 = surface.slip2;
+  return friction;
+}
+}  // namespace
+
+std::vector<gazebo::physics::CollisionSpec> ContextModel::linkCollisions(const std::string& link) const
+{
+  using gazebo::physics::Base;
+  std::vector<gazebo::physics::CollisionSpec> out;
+  ModelPluginContext* context = reach("GetCollisions");
+  if (!context)
+    return out;
+  for (const LinkCollision& collision : context->linkCollisions(link))
+  {
+    gazebo::physics::CollisionSpec spec;
+    spec.name = collision.name;
+    const urdf::Pose& o = collision.origin;
+    spec.pose = {o.position.x, o.position.y, o.position.z, o.rotation.w, o.rotation.x, o.rotation.y, o.rotation.z};
+    spec.shape_type = Base::SHAPE;
+    const urdf::Geometry& geometry = *collision.geometry;
+    switch (geometry.type)
+    {
+      case urdf::Geometry::BOX:
+        spec.shape_type = Base::BOX_SHAPE;
+        spec.size = toIgnition(static_cast<const urdf::Box&>(geometry).dim);
+        break;
+      case urdf::Geometry::CYLINDER:
+        spec.shape_type = Base::CYLINDER_SHAPE;
+        spec.radius = static_cast<const urdf::Cylinder&>(geometry).radius;
+        spec.length = static_cast<const urdf::Cylinder&>(geometry).length;
+        break;
+      case urdf::Geometry::SPHERE:
+        spec.shape_type = Base::SPHERE_SHAPE;
+        spec.radius = static_cast<const urdf::Sphere&>(geometry).radius;
+        break;
+      case urdf::Geometry::MESH:
+      {
+        const auto& mesh = static_cast<const urdf::Mesh&>(geometry);
+        if (!mesh.filename.empty())  // else SDF's capsule or ellipsoid (ShapeGeometry): no class here
+        {
+          spec.shape_type = Base::MESH_SHAPE;
+          spec.mesh_uri = mesh.filename;
+          spec.size = toIgnition(mesh.scale);
+        }
+        break;
+      }
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+gazebo::physics::SurfaceParamsPtr ContextModel::collisionSurface(const std::string& link, const std::string& collision)
+{
+  auto handed = surfaces_.find({link, collision});
+  if (handed != surfaces_.end())
+    return handed->second.surface;
+  ModelPluginContext* context = reach("GetSurface");
+  if (!context)
+    return nullptr;
+  for (const LinkCollision& c : context->linkCollisions(link))
+  {
+    if (c.name != collision)
+      continue;
+    // The model's <surface>, where SDF's defaults fill what it does not give.
+    const SurfaceDescription& d = c.surface;
+    auto surface = boost::make_shared<gazebo::physics::ODESurfaceParams>();
+    surface->FrictionPyramid()->SetMuPrimary(d.mu1);
+    surface->FrictionPyramid()->SetMuSecondary(d.mu2);
+    surface->FrictionPyramid()->direction1 = toIgnition(d.fdir1);
+    surface->slip1 = d.slip1;
+    surface->slip2 = d.slip2;
+    if (d.kp > 0)
+      surface->kp = d.kp;
+    if (d.kd >= 0)
+      surface->kd = d.kd;
+    if (d.max_vel >= 0)
+      surface->maxVel = d.max_vel;
+    if (d.min_depth >= 0)
+      surface->minDepth = d.min_depth;
+    surface->bounce = d.restitution;
+    surface->bounceThreshold = d.restitution_threshold;
+    HandedSurface& entry = surfaces_[{link, collision}];
+    entry.surface = surface;
+    entry.pushed = frictionOf(*surface);
+    return surface;
+  }
+  return nullptr;
+}
+
+void ContextModel::pushSurfaces()
+{
+  if (surfaces_.empty() || !reach_->context)
+    return;
+  for (auto& [key, handed] : surfaces_)
+  {
+    const CollisionFriction now = frictionOf(*handed.surface);
+    if (now.mu1 == handed.pushed.mu1 && now.mu2 == handed.pushed.mu2 && now.slip1 == handed.pushed.slip1 &&
+        now.slip2 == handed.pushed.slip2)
+      continue;
+    if (reach_->context->setCollisionFriction(key.first, key.second, now))
+      handed.pushed = now;
+    else if (!said_bad_surface_)
+    {
+      said_bad_surface_ = true;
+      gzerr << "collision [" << name_ << "::" << key.first << "::" << key.second << "]: a friction coefficient or "
+            << "slip that is negative or not a number (mu " << now.mu1 << ", mu2 " << now.mu2 << ", slip1 "
+            << now.slip1 << ", slip2 " << now.slip2 << ") is not taken; the surface keeps what it had" << std::endl;
+    }
+  }
 }
 }  // namespace bullet_plant

@@ -4,11 +4,14 @@
 // the bridge is released: the handles plugins still hold answer nothing and change nothing.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gazebo/physics/PlantBridge.hh>
+#include <gazebo/physics/ode/ODESurfaceParams.hh>
 
 #include "bullet_plant/model_plugin.h"
 
@@ -46,12 +49,25 @@ public:
   std::vector<std::string> linkJoints(const std::string& link, bool parent_side) const override;
   void setLinkWorldPose(const std::string& link, const ignition::math::Pose3d& pose) override;
   std::unique_ptr<gazebo::physics::JointBridge> joint(const std::string& name) override;
+  std::vector<gazebo::physics::CollisionSpec> linkCollisions(const std::string& link) const override;
+  gazebo::physics::SurfaceParamsPtr collisionSurface(const std::string& link, const std::string& collision) override;
+  // What plugins changed of the surfaces handed out (friction coefficients, slips), to the solver
+  // before the step: called once the world update's events have run.
+  void pushSurfaces();
 
 private:
   // The context while the model is in the world; null (and one error) after.
   ModelPluginContext* reach(const char* call) const;
   std::shared_ptr<ModelReach> reach_;
+  // The surfaces plugins hold, by (link, collision), and what the solver last took of each.
+  struct HandedSurface
+  {
+    boost::shared_ptr<gazebo::physics::ODESurfaceParams> surface;
+    CollisionFriction pushed;
+  };
+  std::map<std::pair<std::string, std::string>, HandedSurface> surfaces_;
   std::string name_;
   mutable bool said_gone_ = false;
+  bool said_bad_surface_ = false;
 };
 }  // namespace bullet_plant

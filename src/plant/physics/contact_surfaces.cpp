@@ -45,6 +45,18 @@ void ContactSurfaces::set(const btCollisionObject& object, std::vector<ContactSu
   entry.moving = moving;
 }
 
+std::vector<ContactSurface>& ContactSurfaces::edit(const btCollisionObject& object, size_t children,
+                                                  const ContactSurface& plain, bool moving)
+{
+  auto found = objects_.find(&object);
+  if (found != objects_.end())
+    return found->second.children;
+  Entry& entry = objects_[&object];
+  entry.children.assign(std::max<size_t>(children, 1), plain);
+  entry.moving = moving;
+  return entry.children;
+}
+
 bool ContactSurfaces::apply(btPersistentManifold& manifold, PointSurface* points) const
 {
   const btCollisionObject* objects[2] = {manifold.getBody0(), manifold.getBody1()};
@@ -83,6 +95,8 @@ bool ContactSurfaces::apply(btPersistentManifold& manifold, PointSurface* points
     // Friction: ODE's pyramid, mu along the first direction and mu2 along the second.
     point.m_combinedFriction = std::min(a.mu1, b.mu1);
     points[j].mu2 = std::min(a.mu2, b.mu2);
+    points[j].slip1 = std::max(a.slip1, b.slip1);
+    points[j].slip2 = std::max(a.slip2, b.slip2);
     btVector3 fdir(0, 0, 0);
     if (!a.fdir1.isZero())
       fdir = objects[0]->getWorldTransform().getBasis() * a.fdir1;

@@ -2,7 +2,10 @@
 // surfaces (ODEPhysics::Collide and ODE's contact joint): friction mu along the first friction
 // direction and mu2 across it, each the smaller of the two surfaces'; the first direction fdir1 of
 // the surface that gives one (the one with the smaller mu where both do), else ODE's default
-// (dPlaneSpace of the normal, Bullet's btPlaneSpace1: the same vectors); kp and kd as a
+// (dPlaneSpace of the normal, Bullet's btPlaneSpace1: the same vectors); ODE's force-dependent
+// slip (slip1 along the first direction, slip2 across it) the larger of the two surfaces', so that
+// a wheel's slip is felt on a ground that gives none (Gazebo's WheelSlipPlugin sets the wheel's);
+// kp and kd as a
 // spring-damper, kp in series (1 / (1/kp1 + 1/kp2)) and kd summed, a surface that does not say
 // taking SDF's defaults (1e12, 1); min_depth (the depth a contact is not pushed out of) and max_vel
 // (the speed it pushes out at most) the smaller of the two bodies' that move, as ODE keeps them per
@@ -25,6 +28,8 @@ struct ContactSurface
 {
   btScalar mu1 = 1, mu2 = 1;
   btVector3 fdir1{0, 0, 0};  // in the collision object's frame; zero: none
+  // ODE's force-dependent slip (m/s per N of friction) along fdir1 and across it; 0: none.
+  btScalar slip1 = 0, slip2 = 0;
   btScalar kp = -1, kd = -1;
   btScalar max_vel = -1, min_depth = -1;
 };
@@ -34,6 +39,8 @@ struct ContactSurface
 struct PointSurface
 {
   btScalar mu2 = 0;
+  // The slip of its friction rows along the first direction and the second (ContactSurface).
+  btScalar slip1 = 0, slip2 = 0;
   // The largest speed its depth is corrected at (max_vel): BT_LARGE_FLOAT where no body gives one,
   // and for a spring-damper contact, whose push its own law bounds (docs/sdf.md).
   btScalar max_vel = BT_LARGE_FLOAT;
@@ -47,6 +54,10 @@ public:
   // object is a body of its own (ODE keeps max_vel and min_depth per body; a static model has none).
   void set(const btCollisionObject& object, std::vector<ContactSurface> children, bool moving);
   void forget(const btCollisionObject* object) { objects_.erase(object); }
+  // The surfaces of an object, to change from the next step on (a plugin's SurfaceParams): its
+  // own, or, for an object that has none, `children` copies of `plain` made now.
+  std::vector<ContactSurface>& edit(const btCollisionObject& object, size_t children, const ContactSurface& plain,
+                                    bool moving);
   bool empty() const { return objects_.empty(); }
 
   // For every point of the manifold: its friction coefficient along the first direction

@@ -177,6 +177,31 @@ void DenseRowSolver::finishDeferredRows()
   }
 }
 
+// A friction row's constraint force mixing, in ODE's units (its rows divide it by the step): ODE's
+// force-dependent slip where the point's surfaces give one (ODE's contact joint takes slip1 and
+// slip2 as its friction rows' cfm: the contact slides at `slip` m/s per N of friction), else the
+// world's friction CFM.
+static btScalar frictionCfm(const btContactSolverInfo& info, btScalar slip)
+{
+  return slip > 0 ? slip : info.m_frictionCFM;
+}
+
+// A friction row of Bullet's setupMultiBodyContactConstraint given the cfm of `slip` in place of
+// the world's: its diagonal, right-hand side and cfm as that setup would have made them.
+static void setSlip(btMultiBodySolverConstraint& row, const btContactSolverInfo& info, btScalar slip,
+                    btScalar relaxation)
+{
+  if (!(slip > 0) || !(row.m_jacDiagABInv > 0))
+    return;
+  const btScalar old_cfm = info.m_frictionCFM / info.m_timeStep, cfm = slip / info.m_timeStep;
+  const btScalar denominator = relaxation / row.m_jacDiagABInv - old_cfm + cfm;
+  const btScalar diagonal = relaxation / denominator;
+  row.m_rhs *= diagonal / row.m_jacDiagABInv;
+  row.m_rhsPenetration *= diagonal / row.m_jacDiagABInv;
+  row.m_jacDiagABInv = diagonal;
+  row.m_cfm = cfm * diagonal;
+}
+
 // A friction row's coefficient, and the bounds its setup derives from it.
 static void setFriction(btMultiBodySolverConstraint& row, btScalar mu)
 {
@@ -278,7 +303,7 @@ btScalar DenseRowSolver::bounceThreshold(const btPersistentManifold& manifold) c
 // setupMultiBodyContactConstraint for a multibody on one side and the static world on the other.
 void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
                                      btManifoldPoint& point, const btContactSolverInfo& info, bool friction,
-                                     btScalar bounce_threshold)
+                                     btScalar slip, btScalar bounce_threshold)
 {
   btMultiBodySolverConstraint& row = rows[index];
   const bool on_a = row.m_multiBodyA != nullptr;
@@ -288,7 +313,7 @@ void DenseRowSolver::setupContactRow(btMultiBodyConstraintArray& rows, int index
   const btVector3 normal = on_a ? direction : -direction;  // the multibody's side of the row
   const int n = body->getNumDofs() + 6;
 
-  btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
+  btScalar cfm = friction ? frictionCfm(info, slip) : info.m_globalCfm;
   btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
   if (!friction)
     normalRowSoftness(point, info, erp, cfm);
@@ -410,7 +435,7 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
     btMultiBodySolverConstraint& normal = m_multiBodyNormalContactConstraints.expandNonInitializing();
     start(normal, point);
     normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
-    setupContactRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
+    setupContactRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false, 0,
                     bounce_threshold);
 
     if (!surfaces)
@@ -424,8 +449,9 @@ void DenseRowSolver::convertStaticContact(btPersistentManifold& manifold, const 
       btMultiBodySolverConstraint& row = m_multiBodyFrictionContactConstraints.expandNonInitializing();
       start(row, point);
       row.m_frictionIndex = normal_index;
+      const btScalar slip = surfaces ? (d == 0 ? surfaces[j].slip1 : surfaces[j].slip2) : 0;
       setupContactRow(m_multiBodyFrictionContactConstraints, m_multiBodyFrictionContactConstraints.size() - 1,
-                      d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, point, info, true);
+                      d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2, point, info, true, slip);
       if (surfaces && d == 1)
         setFriction(m_multiBodyFrictionContactConstraints[m_multiBodyFrictionContactConstraints.size() - 1],
                     surfaces[j].mu2);
@@ -485,12 +511,17 @@ void DenseRowSolver::convertMultiBodyContactWithSurfaces(btPersistentManifold& m
     setupMultiBodyContactConstraint(normal, point.m_normalWorldOnB, point.m_appliedImpulse, point, info, relaxation,
                                     false);
     normal.m_frictionIndex = m_multiBodyFrictionContactConstraints.size();
-    addMultiBodyFrictionConstraint(point.m_lateralFrictionDir1, point.m_appliedImpulseLateral1, &manifold,
-                                   normal_index, point, object_a, object_b, relaxation, info);
+    setSlip(addMultiBodyFrictionConstraint(point.m_lateralFrictionDir1, point.m_appliedImpulseLateral1, &manifold,
+                                           normal_index, point, object_a, object_b, relaxation, info),
+            info, surfaces[j].slip1, relaxation);
     if (two_directions)
-      setFriction(addMultiBodyFrictionConstraint(point.m_lateralFrictionDir2, point.m_appliedImpulseLateral2,
-                                                 &manifold, normal_index, point, object_a, object_b, relaxation, info),
-                  surfaces[j].mu2);
+    {
+      btMultiBodySolverConstraint& second =
+          addMultiBodyFrictionConstraint(point.m_lateralFrictionDir2, point.m_appliedImpulseLateral2, &manifold,
+                                         normal_index, point, object_a, object_b, relaxation, info);
+      setFriction(second, surfaces[j].mu2);
+      setSlip(second, info, surfaces[j].slip2, relaxation);
+    }
   }
 }
 
@@ -548,11 +579,11 @@ btScalar DenseRowSolver::finishPairRow(btMultiBodySolverConstraint& row, const b
 }
 
 void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
-                                  btManifoldPoint& point, const btContactSolverInfo& info, bool friction, int slot_a,
-                                  int slot_b)
+                                  btManifoldPoint& point, const btContactSolverInfo& info, bool friction, btScalar slip,
+                                  int slot_a, int slot_b)
 {
   btMultiBodySolverConstraint& row = rows[index];
-  btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
+  btScalar cfm = friction ? frictionCfm(info, slip) : info.m_globalCfm;
   btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
   if (!friction)
     normalRowSoftness(point, info, erp, cfm);
@@ -617,10 +648,10 @@ void DenseRowSolver::setupPairRow(btMultiBodyConstraintArray& rows, int index, c
 
 void DenseRowSolver::setupFreePairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction,
                                       btManifoldPoint& point, const btContactSolverInfo& info, bool friction,
-                                      const FreeSide (&sides)[2])
+                                      btScalar slip, const FreeSide (&sides)[2])
 {
   btMultiBodySolverConstraint& row = rows[index];
-  btScalar cfm = friction ? info.m_frictionCFM : info.m_globalCfm;
+  btScalar cfm = friction ? frictionCfm(info, slip) : info.m_globalCfm;
   btScalar erp = friction ? info.m_frictionERP : info.m_erp2;
   if (!friction)
     normalRowSoftness(point, info, erp, cfm);
@@ -712,9 +743,9 @@ void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const bt
         {&body_rows_[slot_b], collider_b->m_multiBody, point.getPositionWorldOnB() - collider_b->m_multiBody->getBasePos()}};
     if (free_pair)
       setupFreePairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
-                       sides);
+                       0, sides);
     else
-      setupPairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false,
+      setupPairRow(m_multiBodyNormalContactConstraints, normal_index, point.m_normalWorldOnB, point, info, false, 0,
                    slot_a, slot_b);
 
     if (!surfaces)  // with surfaces, ContactSurfaces::apply has set the point's directions
@@ -730,10 +761,11 @@ void DenseRowSolver::convertPairContact(btPersistentManifold& manifold, const bt
       row.m_frictionIndex = normal_index;
       const btVector3& direction = d == 0 ? point.m_lateralFrictionDir1 : point.m_lateralFrictionDir2;
       const int index = m_multiBodyFrictionContactConstraints.size() - 1;
+      const btScalar slip = surfaces ? (d == 0 ? surfaces[j].slip1 : surfaces[j].slip2) : 0;
       if (free_pair)
-        setupFreePairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, sides);
+        setupFreePairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, slip, sides);
       else
-        setupPairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, slot_a, slot_b);
+        setupPairRow(m_multiBodyFrictionContactConstraints, index, direction, point, info, true, slip, slot_a, slot_b);
       if (surfaces && d == 1)
         setFriction(m_multiBodyFrictionContactConstraints[index], surfaces[j].mu2);
     }

@@ -87,6 +87,12 @@ public:
   {
     surfaces_.set(object, std::move(children), moving);
   }
+  // An object's surfaces to change from the next step on (ContactSurfaces::edit).
+  std::vector<ContactSurface>& editSurfaces(const btCollisionObject& object, size_t children,
+                                            const ContactSurface& plain, bool moving)
+  {
+    return surfaces_.edit(object, children, plain, moving);
+  }
   // The world forgets what the solver keeps of an object (its bounce and surfaces) as it removes it.
   void forget(const btCollisionObject* object)
   {
@@ -237,7 +243,7 @@ private:
   // setupPairRow where both multibodies are free bodies: J, M^-1 J^T and the row's numbers in
   // closed form, from the point's lever arms.
   void setupFreePairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
-                        const btContactSolverInfo& info, bool friction, const FreeSide (&sides)[2]);
+                        const btContactSolverInfo& info, bool friction, btScalar slip, const FreeSide (&sides)[2]);
   // convertMultiBodyContact's rows for two multibodies, built by setupPairRow; with `surfaces`, along
   // the points' own friction directions, the second direction's rows with the points' mu2.
   void convertPairContact(btPersistentManifold& manifold, const btContactSolverInfo& info,
@@ -245,7 +251,7 @@ private:
   // setupMultiBodyContactConstraint for two multibodies: Bullet's rows (its restitution among them),
   // with J and M^-1 J^T from their states.
   void setupPairRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
-                    const btContactSolverInfo& info, bool friction, int slot_a, int slot_b);
+                    const btContactSolverInfo& info, bool friction, btScalar slip, int slot_a, int slot_b);
   // Room in m_data's arrays for the rows of the manifolds' points: Bullet grows them by each row's
   // size exactly, copying them whole, each time a step has more rows than any before.
   void reserveRowData(btPersistentManifold** manifolds, int numManifolds, const btContactSolverInfo& info);
@@ -254,8 +260,10 @@ private:
   // Bullet's convertMultiBodyContact with the points' own friction directions and coefficients.
   void convertMultiBodyContactWithSurfaces(btPersistentManifold& manifold, const btContactSolverInfo& info,
                                            const PointSurface* surfaces);
+  // `slip`: a friction row's ODE slip (frictionCfm); the normal row's, 0.
   void setupContactRow(btMultiBodyConstraintArray& rows, int index, const btVector3& direction, btManifoldPoint& point,
-                       const btContactSolverInfo& info, bool friction, btScalar bounce_threshold = BT_LARGE_FLOAT);
+                       const btContactSolverInfo& info, bool friction, btScalar slip,
+                       btScalar bounce_threshold = BT_LARGE_FLOAT);
   // The speed a manifold's points bounce above: the smaller of its two objects' (setBounce).
   btScalar bounceThreshold(const btPersistentManifold& manifold) const;
 

@@ -55,7 +55,16 @@ ContactSurface contactSurface(const SurfaceDescription& surface, const btMatrix3
   out.kd = contact(surface.kd, "kd", false);
   out.max_vel = contact(surface.max_vel, "max_vel", false);
   out.min_depth = contact(surface.min_depth, "min_depth", false);
-  plain = out.mu1 == out.mu2 && out.fdir1.isZero() && out.kp < 0 && out.kd < 0 && out.max_vel < 0 && out.min_depth < 0;
+  auto slip = [&](double value, const char* tag) {
+    if (value >= 0 && std::isfinite(value))
+      return btScalar(value);
+    log.warn(where + ": <" + tag + "> " + formatNumber(value) + " is not a slip (m/s per N, 0 or more); it is taken as 0");
+    return btScalar(0);
+  };
+  out.slip1 = slip(surface.slip1, "slip1");
+  out.slip2 = slip(surface.slip2, "slip2");
+  plain = out.mu1 == out.mu2 && out.fdir1.isZero() && out.kp < 0 && out.kd < 0 && out.max_vel < 0 &&
+          out.min_depth < 0 && out.slip1 == 0 && out.slip2 == 0;
   return out;
 }
 
@@ -390,7 +399,7 @@ void collisionShapes(Robot::Internals& r, const LinkPlacement& placement, const 
   const urdf::ModelInterface& model = *r.description.model;
   std::vector<Body>& bodies = r.multibody.bodies;
   std::vector<Shape> last_child(bodies.size());  // the last shape added to each body's compound
-  std::map<std::pair<std::string, size_t>, std::string> sdf_names;
+  std::map<std::pair<std::string, size_t>, std::string>& sdf_names = r.multibody.link_collision_names;
   for (const Body& body : bodies)
     if (urdf::LinkConstSharedPtr owner = model.getLink(body.link))
     {

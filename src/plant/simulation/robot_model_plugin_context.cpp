@@ -127,6 +127,70 @@ void RobotModelPluginContext::jointWrench(const std::string& joint, urdf::Vector
 
 urdf::Vector3 RobotModelPluginContext::gravity() const { return robot_.world->description.gravity; }
 
+std::vector<LinkCollision> RobotModelPluginContext::linkCollisions(const std::string& link) const
+{
+  std::vector<LinkCollision> out;
+  const urdf::LinkConstSharedPtr l = robot_.description.model->getLink(link);
+  if (!l)
+    return out;
+  const auto sdf_surfaces = robot_.description.collision_surfaces.find(link);
+  const auto urdf_surface = robot_.description.surfaces.find(link);
+  for (size_t c = 0; c < l->collision_array.size(); ++c)
+  {
+    const urdf::CollisionSharedPtr& collision = l->collision_array[c];
+    if (!collision || !collision->geometry)
+      continue;
+    LinkCollision entry;
+    auto name = robot_.multibody.link_collision_names.find({link, c});
+    entry.name = name != robot_.multibody.link_collision_names.end() ? name->second : collision->name;
+    entry.geometry = collision->geometry;
+    entry.origin = collision->origin;
+    if (sdf_surfaces != robot_.description.collision_surfaces.end() && c < sdf_surfaces->second.size())
+      entry.surface = sdf_surfaces->second[c];
+    else if (urdf_surface != robot_.description.surfaces.end())
+      entry.surface = urdf_surface->second;
+    out.push_back(std::move(entry));
+  }
+  return out;
+}
+
+bool RobotModelPluginContext::setCollisionFriction(const std::string& link, const std::string& collision,
+                                                   const CollisionFriction& friction)
+{
+  for (double value : {friction.mu1, friction.mu2, friction.slip1, friction.slip2})
+    if (!(value >= 0) || !std::isfinite(value))
+      return false;
+  RobotMultibody& multibody = robot_.multibody;
+  auto in_body = multibody.link_in_body.find(link);
+  if (in_body == multibody.link_in_body.end())
+    return false;
+  const int b = in_body->second.first;
+  const Body& body = multibody.bodies[size_t(b)];
+  btMultiBody& mb = *multibody.bullet;
+  const btCollisionObject* object = b == 0 ? mb.getBaseCollider() : mb.getLink(b - 1).m_collider;
+  if (!object)
+    return false;
+  std::vector<size_t> children;  // a mesh of convex pieces is several children under one name
+  for (size_t k = 0; k < body.collision_names.size(); ++k)
+    if (body.collision_names[k] == collision)
+      children.push_back(k);
+  if (children.empty())
+    return false;
+  ContactSurface plain;
+  plain.mu1 = plain.mu2 = object->getFriction();
+  std::vector<ContactSurface>& surfaces = robot_.world->solver->editSurfaces(
+      *object, body.collision_names.size(), plain, !(b == 0 && mb.hasFixedBase()));
+  for (size_t k : children)
+  {
+    ContactSurface& surface = surfaces[surfaces.size() > 1 ? k : 0];
+    surface.mu1 = btScalar(friction.mu1);
+    surface.mu2 = btScalar(friction.mu2);
+    surface.slip1 = btScalar(friction.slip1);
+    surface.slip2 = btScalar(friction.slip2);
+  }
+  return true;
+}
+
 double RobotModelPluginContext::linkMass(const std::string& link) const
 {
   auto it = robot_.multibody.link_in_body.find(link);

@@ -36,6 +36,9 @@ public:
   urdf::Vector3 gravity() const override;
   double linkMass(const std::string& link) const override;
   double linkIxx(const std::string& link) const override;
+  std::vector<LinkCollision> linkCollisions(const std::string& link) const override;
+  bool setCollisionFriction(const std::string& link, const std::string& collision,
+                            const CollisionFriction& friction) override;
   double stepSize() const override;
   const Param& params() const override;
   std::string pluginNamespace(const ModelPluginDescription& plugin) const override;

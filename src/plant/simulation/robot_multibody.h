@@ -71,6 +71,9 @@ struct RobotMultibody
 {
   std::vector<Body> bodies;                         // [0] is the base
   std::map<std::string, std::pair<int, btTransform>> link_in_body;  // link -> (body, link frame in COM frame)
+  // The SDF name of each link's collisions (Body::collision_names): (link, index in its
+  // collision_array) -> name.
+  std::map<std::pair<std::string, size_t>, std::string> link_collision_names;
   std::vector<MovableJoint> joints;                 // URDF order
   std::map<std::string, size_t> joint_index;
   std::vector<BallJoint> balls;                     // SDF's ball joints

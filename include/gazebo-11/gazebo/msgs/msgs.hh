@@ -8,4 +8,17 @@
 // it would cost each plugin file some 2 s to compile.
 #include <boost/thread.hpp>
 
+#include <ignition/math/Vector3.hh>
+
 #include "gazebo/msgs/MessageTypes.hh"
+
+namespace gazebo
+{
+namespace msgs
+{
+// ignition's vector as a message, and back; Set fills one in place.
+Vector3d Convert(const ignition::math::Vector3d& v);
+ignition::math::Vector3d ConvertIgn(const Vector3d& v);
+void Set(Vector3d* out, const ignition::math::Vector3d& v);
+}  // namespace msgs
+}  // namespace gazebo

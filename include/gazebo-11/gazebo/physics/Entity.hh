@@ -7,6 +7,7 @@
 #include <ignition/math/Pose3.hh>
 #include <ignition/math/Vector3.hh>
 
+#include "gazebo/physics/Base.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/util/system.hh"
 
@@ -14,10 +15,11 @@ namespace gazebo
 {
 namespace physics
 {
-class GZ_PHYSICS_VISIBLE Entity
+class GZ_PHYSICS_VISIBLE Entity : public Base
 {
 public:
-  virtual ~Entity();
+  Entity() { AddType(ENTITY); }
+  ~Entity() override;
   virtual std::string GetName() const = 0;
   virtual std::string GetScopedName(bool prependWorldName = false) const = 0;
   virtual ignition::math::Pose3d WorldPose() const = 0;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include <boost/enable_shared_from_this.hpp>
 #include <boost/weak_ptr.hpp>
 #include <ignition/math/Pose3.hh>
 #include <ignition/math/Vector3.hh>
@@ -19,7 +20,7 @@ namespace physics
 {
 class ModelBridge;
 
-class GZ_PHYSICS_VISIBLE Link : public Entity
+class GZ_PHYSICS_VISIBLE Link : public Entity, public boost::enable_shared_from_this<Link>
 {
 public:
   Link(const std::string& name, std::shared_ptr<ModelBridge> bridge);
@@ -65,6 +66,11 @@ public:
   ignition::math::Pose3d WorldCoGPose() const;
   // The link's own <inertial>; a copy.
   InertialPtr GetInertial() const;
+  // Its own collisions, in its <collision> order (made at the first call, the same ones after), and
+  // one by name or index (null for none).
+  Collision_V GetCollisions() const;
+  CollisionPtr GetCollision(const std::string& name) const;
+  CollisionPtr GetCollision(unsigned int index) const;
   // The movable joints whose child, or whose parent, the link is.
   Joint_V GetParentJoints() const;
   Joint_V GetChildJoints() const;
@@ -74,6 +80,8 @@ private:
   std::string name_;
   boost::weak_ptr<Model> model_;
   std::shared_ptr<ModelBridge> bridge_;
+  mutable Collision_V collisions_;
+  mutable bool collisions_made_ = false;
 };
 }  // namespace physics
 }  // namespace gazebo

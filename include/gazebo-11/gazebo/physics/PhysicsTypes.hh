@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,13 @@ class JointController;
 class Inertial;
 class PhysicsEngine;
 class Collision;
+class Shape;
+class BoxShape;
+class CylinderShape;
+class SphereShape;
+class MeshShape;
+class SurfaceParams;
+class FrictionPyramid;
 
 typedef boost::shared_ptr<Base> BasePtr;
 typedef boost::shared_ptr<Entity> EntityPtr;
@@ -33,6 +41,13 @@ typedef boost::shared_ptr<JointController> JointControllerPtr;
 typedef boost::shared_ptr<Inertial> InertialPtr;
 typedef boost::shared_ptr<PhysicsEngine> PhysicsEnginePtr;
 typedef boost::shared_ptr<Collision> CollisionPtr;
+typedef boost::shared_ptr<Shape> ShapePtr;
+typedef boost::shared_ptr<BoxShape> BoxShapePtr;
+typedef boost::shared_ptr<CylinderShape> CylinderShapePtr;
+typedef boost::shared_ptr<SphereShape> SphereShapePtr;
+typedef boost::shared_ptr<MeshShape> MeshShapePtr;
+typedef boost::shared_ptr<SurfaceParams> SurfaceParamsPtr;
+typedef std::shared_ptr<FrictionPyramid> FrictionPyramidPtr;
 
 typedef std::vector<WorldPtr> World_V;
 typedef std::vector<ModelPtr> Model_V;

@@ -12,6 +12,7 @@
 #include <ignition/math/Vector3.hh>
 
 #include "gazebo/common/Time.hh"
+#include "gazebo/physics/PhysicsTypes.hh"
 
 namespace gazebo
 {
@@ -63,6 +64,17 @@ struct LinkInertia
   double ixx = 0.0, iyy = 0.0, izz = 0.0, ixy = 0.0, ixz = 0.0, iyz = 0.0;
 };
 
+// One <collision> of a link as its model gives it (physics::Collision): its shape and its surface.
+struct CollisionSpec
+{
+  std::string name;
+  ignition::math::Pose3d pose;   // in its link
+  unsigned int shape_type = 0;   // Base::BOX_SHAPE, CYLINDER_SHAPE, SPHERE_SHAPE, MESH_SHAPE; SHAPE for another
+  ignition::math::Vector3d size;  // a box's sides, a mesh's scale
+  double radius = 0.0, length = 0.0;
+  std::string mesh_uri;
+};
+
 class ModelBridge
 {
 public:
@@ -94,6 +106,12 @@ public:
   virtual void setLinkWorldPose(const std::string& link, const ignition::math::Pose3d& pose) = 0;
   // Null for a joint the model lacks or a fixed one.
   virtual std::unique_ptr<JointBridge> joint(const std::string& name) = 0;
+  // The link's own collisions, in its <collision> order.
+  virtual std::vector<CollisionSpec> linkCollisions(const std::string& link) const = 0;
+  // The surface of `collision` of `link` (an ODESurfaceParams holding the model's <surface>): one
+  // object for the model's life, whose friction coefficients and slips the simulator takes as they
+  // are when each step starts; null for a collision the link lacks.
+  virtual SurfaceParamsPtr collisionSurface(const std::string& link, const std::string& collision) = 0;
 };
 
 // A joint made at run time as Joint::Attach asks for it: `child_link` of `child_model` held to

@@ -1,6 +1,8 @@
 // Gazebo's physics library, as a plugin includes it whole: the world, its physics engine, models, links and joints.
 #pragma once
 
+#include "gazebo/physics/Base.hh"
+#include "gazebo/physics/Collision.hh"
 #include "gazebo/physics/Entity.hh"
 #include "gazebo/physics/Inertial.hh"
 #include "gazebo/physics/Joint.hh"
@@ -10,4 +12,6 @@
 #include "gazebo/physics/PhysicsEngine.hh"
 #include "gazebo/physics/PhysicsIface.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
+#include "gazebo/physics/Shape.hh"
+#include "gazebo/physics/SurfaceParams.hh"
 #include "gazebo/physics/World.hh"

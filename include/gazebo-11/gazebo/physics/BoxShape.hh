@@ -1,0 +1,4 @@
+// physics::BoxShape (Shape.hh holds the shapes).
+#pragma once
+
+#include "gazebo/physics/Shape.hh"

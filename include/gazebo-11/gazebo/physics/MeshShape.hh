@@ -1,0 +1,4 @@
+// physics::MeshShape (Shape.hh holds the shapes).
+#pragma once
+
+#include "gazebo/physics/Shape.hh"

@@ -1,0 +1,4 @@
+// physics::SphereShape (Shape.hh holds the shapes).
+#pragma once
+
+#include "gazebo/physics/Shape.hh"
