@@ -50,7 +50,7 @@ gazebo_api_library(gazebo_physics VERSIONED SOURCES
   src/gazebo/physics/PhysicsEngine.cc
   src/gazebo/physics/Shape.cc
   src/gazebo/physics/World.cc)
-target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_common)
+target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_msgs_protobuf gazebo_common)
 # Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
 gazebo_api_library(gazebo_sensors VERSIONED SOURCES
   src/gazebo/sensors/Sensor.cc)
@@ -59,7 +59,7 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
 # Gazebo's messages (gazebo::msgs, libgazebo_msgs): protobuf from the .proto files in
 # src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
-set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d)
+set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)

@@ -33,6 +33,8 @@ public:
   virtual double realTimeUpdateRate() const = 0;
   virtual double realTimeFactor() const = 0;
   virtual urdf::Vector3 gravity() const = 0;
+  // From the next step on (m/s^2, world frame).
+  virtual void setGravity(const urdf::Vector3& gravity) = 0;
   // The models that move (the robots), in the order they came; the plugin context of one by name,
   // or null for a name that is none of them.
   virtual std::vector<std::string> modelNames() const = 0;

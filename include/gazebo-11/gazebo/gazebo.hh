@@ -1,5 +1,6 @@
-// Gazebo's top header, as a plugin includes it first: its version and the common library.
+// Gazebo's top header, as a plugin includes it first: its version and its core (the common library,
+// the messages and the transport: gazebo_core.hh), as Gazebo 11's.
 #pragma once
 
-#include "gazebo/common/common.hh"
 #include "gazebo/gazebo_config.h"
+#include "gazebo/gazebo_core.hh"

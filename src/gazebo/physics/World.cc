@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <mutex>
+#include <sstream>
 #include <vector>
+
+#include <sdf/sdf.hh>
 
 #include "gazebo/common/Console.hh"
 #include "gazebo/common/Exception.hh"
@@ -16,6 +19,8 @@
 #include "gazebo/physics/PhysicsEngine.hh"
 #include "gazebo/physics/PhysicsIface.hh"
 #include "gazebo/physics/PlantBridge.hh"
+#include "gazebo/msgs/msgs.hh"
+#include "gazebo/transport/Node.hh"
 #include "gazebo/transport/TopicManager.hh"
 
 namespace gazebo
@@ -44,12 +49,17 @@ World::World(std::shared_ptr<WorldBridge> bridge)
   // Its name is a transport namespace, as Gazebo's world's node makes it: a plugin's
   // transport::Node::Init() with no name takes the first world's ("~/x" is /gazebo/WORLD/x).
   transport::TopicManager::Instance()->RegisterTopicNamespace(this->Name());
+  node_.reset(new transport::Node());
+  node_->Init(this->Name());
+  factory_sub_ = node_->Subscribe("~/factory", &World::OnFactoryMsg, this);
   std::lock_guard<std::mutex> lock(worlds_mutex);
   worlds.push_back(this);
 }
 
 World::~World()
 {
+  factory_sub_.reset();  // no message may come to a world that is going
+  node_->Fini();
   std::lock_guard<std::mutex> lock(worlds_mutex);
   worlds.erase(std::remove(worlds.begin(), worlds.end(), this), worlds.end());
 }
@@ -88,6 +98,8 @@ common::Time World::RealTime() const
 uint32_t World::Iterations() const { return static_cast<uint32_t>(bridge_->iterations()); }
 
 ignition::math::Vector3d World::Gravity() const { return bridge_->gravity(); }
+
+void World::SetGravity(const ignition::math::Vector3d& gravity) { physics_->SetGravity(gravity); }
 
 PhysicsEnginePtr World::Physics() const { return physics_; }
 
@@ -142,9 +154,12 @@ bool World::IsPaused() const { return bridge_->paused(); }
 
 void World::Reset() { bridge_->reset(); }
 
-void World::InsertModelFile(const std::string& sdfFilename)
+namespace
 {
-  // gazebo_ros's model database request (spawn_model -database): the world's <include> of the URI
+// A world's <include> of the URI (a model:// URI or a path), at `pose` where given: what Gazebo's
+// factory makes of a file name.
+std::string includeOf(const std::string& sdfFilename, const ignition::math::Pose3d* pose)
+{
   std::string uri;
   for (const char c : sdfFilename)
     switch (c)
@@ -154,8 +169,63 @@ void World::InsertModelFile(const std::string& sdfFilename)
       case '>': uri += "&gt;"; break;
       default: uri += c;
     }
-  bridge_->insertModel("<sdf version='1.6'><world name='default'><include><uri>" + uri +
-                       "</uri></include></world></sdf>");
+  std::string placed;
+  if (pose)
+  {
+    const ignition::math::Vector3d rpy = pose->Rot().Euler();
+    std::ostringstream text;
+    text.precision(17);
+    text << "<pose>" << pose->Pos().X() << ' ' << pose->Pos().Y() << ' ' << pose->Pos().Z() << ' ' << rpy.X() << ' '
+         << rpy.Y() << ' ' << rpy.Z() << "</pose>";
+    placed = text.str();
+  }
+  return "<sdf version='1.6'><world name='default'><include><uri>" + uri + "</uri>" + placed +
+         "</include></world></sdf>";
+}
+}  // namespace
+
+void World::InsertModelFile(const std::string& sdfFilename)
+{
+  // gazebo_ros's model database request (spawn_model -database): the world's <include> of the URI
+  bridge_->insertModel(includeOf(sdfFilename, nullptr));
+}
+
+void World::OnFactoryMsg(const boost::shared_ptr<const msgs::Factory>& msg)
+{
+  if (msg->has_edit_name() || msg->has_clone_model_name())
+  {
+    gzerr << "~/factory on world [" << Name() << "]: "
+          << (msg->has_edit_name() ? "edit_name [" + msg->edit_name() : "clone_model_name [" + msg->clone_model_name())
+          << "]: the plant neither edits nor clones models from the factory; nothing is added" << std::endl;
+    return;
+  }
+  const ignition::math::Pose3d pose = msg->has_pose() ? msgs::ConvertIgn(msg->pose()) : ignition::math::Pose3d();
+  if (msg->has_sdf() && !msg->sdf().empty())
+  {
+    if (!msg->has_pose())
+    {
+      InsertModelString(msg->sdf());
+      return;
+    }
+    sdf::SDFPtr model(new sdf::SDF());
+    sdf::init(model);
+    sdf::ElementPtr found;
+    if (sdf::readString(msg->sdf(), model))
+      found = model->Root()->HasElement("model") ? model->Root()->GetElement("model") : sdf::ElementPtr();
+    if (!found)
+    {
+      gzerr << "~/factory on world [" << Name() << "]: its sdf is no <sdf><model> sdformat reads; nothing is added"
+            << std::endl;
+      return;
+    }
+    found->GetElement("pose")->Set(pose);
+    InsertModelSDF(*model);
+  }
+  else if (msg->has_sdf_filename() && !msg->sdf_filename().empty())
+    bridge_->insertModel(includeOf(msg->sdf_filename(), msg->has_pose() ? &pose : nullptr));
+  else
+    gzerr << "Unable to load sdf from factory message (world [" << Name() << "]): it has neither sdf nor sdf_filename"
+          << std::endl;
 }
 
 void World::InsertModelString(const std::string& sdfString) { bridge_->insertModel(sdfString); }

@@ -47,6 +47,15 @@ public:
     const urdf::Vector3 g = context_ ? context_->gravity() : urdf::Vector3();
     return {g.x, g.y, g.z};
   }
+  void setGravity(const ignition::math::Vector3d& g) override
+  {
+    if (!context_)
+      return;
+    if (std::isfinite(g.X()) && std::isfinite(g.Y()) && std::isfinite(g.Z()))
+      context_->setGravity(urdf::Vector3(g.X(), g.Y(), g.Z()));
+    else
+      context_->log().error("a Gazebo plugin's gravity is not finite; the world keeps its gravity");
+  }
   double stepSize() const override { return context_ ? context_->stepSize() : 0.0; }
   bool setStepSize(double seconds) override { return context_ && context_->setStepSize(seconds); }
   double realTimeUpdateRate() const override { return context_ ? context_->realTimeUpdateRate() : 0.0; }

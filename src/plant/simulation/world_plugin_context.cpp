@@ -36,6 +36,8 @@ double PlantWorldPluginContext::realTimeFactor() const { return w_.description.r
 
 urdf::Vector3 PlantWorldPluginContext::gravity() const { return world_.gravity(); }
 
+void PlantWorldPluginContext::setGravity(const urdf::Vector3& gravity) { world_.setGravity(gravity); }
+
 std::vector<std::string> PlantWorldPluginContext::modelNames() const
 {
   std::vector<std::string> names;

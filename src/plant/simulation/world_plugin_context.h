@@ -22,6 +22,7 @@ public:
   uint64_t iterations() const override;
   double stepSize() const override;
   bool setStepSize(double seconds) override;
+  void setGravity(const urdf::Vector3& gravity) override;
   double realTimeUpdateRate() const override;
   double realTimeFactor() const override;
   urdf::Vector3 gravity() const override;

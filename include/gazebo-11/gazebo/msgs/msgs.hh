@@ -8,6 +8,8 @@
 // it would cost each plugin file some 2 s to compile.
 #include <boost/thread.hpp>
 
+#include <ignition/math/Pose3.hh>
+#include <ignition/math/Quaternion.hh>
 #include <ignition/math/Vector3.hh>
 
 #include "gazebo/msgs/MessageTypes.hh"
@@ -16,9 +18,15 @@ namespace gazebo
 {
 namespace msgs
 {
-// ignition's vector as a message, and back; Set fills one in place.
+// ignition's vectors, quaternions and poses as messages, and back; Set fills one in place.
 Vector3d Convert(const ignition::math::Vector3d& v);
+Quaternion Convert(const ignition::math::Quaterniond& q);
+Pose Convert(const ignition::math::Pose3d& p);
 ignition::math::Vector3d ConvertIgn(const Vector3d& v);
+ignition::math::Quaterniond ConvertIgn(const Quaternion& q);
+ignition::math::Pose3d ConvertIgn(const Pose& p);
 void Set(Vector3d* out, const ignition::math::Vector3d& v);
+void Set(Quaternion* out, const ignition::math::Quaterniond& q);
+void Set(Pose* out, const ignition::math::Pose3d& p);
 }  // namespace msgs
 }  // namespace gazebo

@@ -136,6 +136,8 @@ public:
   virtual std::string name() const = 0;
   virtual common::Time simTime() const = 0;
   virtual ignition::math::Vector3d gravity() const = 0;
+  // From the next step on; a vector that is not finite is refused (the simulator says so).
+  virtual void setGravity(const ignition::math::Vector3d& gravity) = 0;
   virtual double stepSize() const = 0;
   // False (the simulator says why) for a step it cannot take.
   virtual bool setStepSize(double seconds) = 0;

@@ -12,10 +12,15 @@
 
 #include "gazebo/common/Time.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
+#include "gazebo/transport/TransportTypes.hh"
 #include "gazebo/util/system.hh"
 
 namespace gazebo
 {
+namespace msgs
+{
+class Factory;
+}
 namespace physics
 {
 class WorldBridge;
@@ -31,6 +36,8 @@ public:
   common::Time RealTime() const;
   uint32_t Iterations() const;
   ignition::math::Vector3d Gravity() const;
+  // From the next step on (PhysicsEngine::SetGravity).
+  void SetGravity(const ignition::math::Vector3d& gravity);
   PhysicsEnginePtr Physics() const;
   // The model of that name (its scoped name too), the same handle each time; null for none.
   ModelPtr ModelByName(const std::string& name) const;
@@ -56,15 +63,22 @@ public:
   void InsertModelFile(const std::string& sdfFilename);
   void InsertModelString(const std::string& sdfString);
   void InsertModelSDF(const sdf::SDF& sdf);
+  // The same from a msgs::Factory on ~/factory (Gazebo's factory topic): its sdf, else its
+  // sdf_filename, placed at its pose where it has one; clone_model_name and edit_name are an error
+  // naming them (the plant neither clones nor edits models).
   // The world's models let go (each holds the world): before the simulator drops the world.
   void Fini();
 
 private:
+  void OnFactoryMsg(const boost::shared_ptr<const msgs::Factory>& msg);
+
   std::shared_ptr<WorldBridge> bridge_;
   PhysicsEnginePtr physics_;
   int64_t started_ns_;  // the wall clock when it was made
   // One Model for each of the simulator's models, as Gazebo's world owns them (Fini lets them go).
   mutable std::map<std::string, ModelPtr> models_;
+  transport::NodePtr node_;
+  transport::SubscriberPtr factory_sub_;
 };
 }  // namespace physics
 }  // namespace gazebo
