@@ -253,8 +253,8 @@ def test_a_world_plugin_and_a_system_plugin_of_the_users_run_under_gzserver(catk
 
 
 # The world of the user's factory plugin and animated models: an arm whose joint the user's model
-# plugin swings through key frames, a box it slides along x (Gazebo's animate_joints and animate_pose
-# examples), and a world plugin that adds models in its Load as Gazebo's factory example does (a model
+# plugin swings through key frames, a static box it slides along x (Gazebo's animate_joints and
+# animate_pose examples; animate_pose's box is static too), and a world plugin that adds models in its Load as Gazebo's factory example does (a model
 # file by URI, SDF text twice under one name, sdformat's SDF renamed; and a model it cannot read).
 FACTORY_WORLD = """<?xml version="1.0"?>
 <sdf version="1.7">
@@ -274,7 +274,7 @@ FACTORY_WORLD = """<?xml version="1.0"?>
         <pose>-0.3 0 0 0 0 0</pose><axis><xyz>0 0 1</xyz></axis></joint>
       <plugin name="animate" filename="libanimate_model.so"><joint>swing</joint><swing>1.2</swing></plugin>
     </model>
-    <model name="slider"><pose>0 -2 0.1 0 0 0</pose>
+    <model name="slider"><static>true</static><pose>0 -2 0.1 0 0 0</pose>
       <link name="body">
         <inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
         <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>

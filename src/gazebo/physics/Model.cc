@@ -122,7 +122,7 @@ void Model::SetLinkWorldPose(const ignition::math::Pose3d& pose, const LinkPtr& 
     bridge_->setLinkWorldPose(link->GetName(), pose);
 }
 
-bool Model::IsStatic() const { return false; }
+bool Model::IsStatic() const { return bridge_->isStatic(); }
 
 unsigned int Model::GetJointCount() const { return static_cast<unsigned int>(GetJoints().size()); }
 

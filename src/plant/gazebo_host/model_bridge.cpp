@@ -291,6 +291,12 @@ gazebo::physics::LinkInertia ContextModel::linkInertia(const std::string& link) 
   return inertia;
 }
 
+bool ContextModel::isStatic() const
+{
+  ModelPluginContext* context = reach("IsStatic");
+  return context && context->robotDescription().is_static;
+}
+
 bool ContextModel::linkGravity(const std::string& link) const
 {
   ModelPluginContext* context = reach("GetGravityMode");

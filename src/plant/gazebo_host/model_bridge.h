@@ -45,6 +45,7 @@ public:
                        ignition::math::Vector3d& torque) const override;
   ignition::math::Vector3d bodyCentreOfMass(const std::string& link) const override;
   gazebo::physics::LinkInertia linkInertia(const std::string& link) const override;
+  bool isStatic() const override;
   bool linkGravity(const std::string& link) const override;
   std::vector<std::string> linkJoints(const std::string& link, bool parent_side) const override;
   void setLinkWorldPose(const std::string& link, const ignition::math::Pose3d& pose) override;

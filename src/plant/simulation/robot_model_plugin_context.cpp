@@ -106,7 +106,10 @@ bool RobotModelPluginContext::setJointPosition(const std::string& joint, double 
 
 void RobotModelPluginContext::setLinkWorldPose(const std::string& link, const urdf::Pose& pose)
 {
-  if (!robot_.multibody.link_in_body.count(link) || robot_.multibody.bullet->hasFixedBase())
+  // A static or kinematic model moves where it is put, as Gazebo's; one held by a joint to the
+  // world does not.
+  const bool placeable = !robot_.multibody.bullet->hasFixedBase() || robot_.description.is_static || robot_.kinematic;
+  if (!robot_.multibody.link_in_body.count(link) || !placeable)
     return;
   robot_.self->setLinkState(link, pose, Twist());
 }

@@ -52,12 +52,14 @@ public:
   const Joint_V& GetJoints() const;
   unsigned int GetJointCount() const;
   // The model moved so that its canonical link is at `pose` (world), its joints as they are, at
-  // rest; nothing for a model fixed to the world.
+  // rest (a static or kinematic model too); nothing for a model a joint holds to the world.
   void SetWorldPose(const ignition::math::Pose3d& pose, bool notify = true, bool publish = true);
   // The model moved so that the link (by name or handle) is at `pose` (world), as SetWorldPose.
   void SetLinkWorldPose(const ignition::math::Pose3d& pose, std::string link);
   void SetLinkWorldPose(const ignition::math::Pose3d& pose, const LinkPtr& link);
-  // False: a model that moves (a static model of the world is scenery here, not a Model).
+  // Its <static>: a static model with a plugin is a Model that forces and contacts never move but
+  // SetWorldPose (and SetAnimation) does, as Gazebo's; a static model without one is scenery, which
+  // World::ModelByName does not find.
   bool IsStatic() const;
   // The model's joint controller, made at the first call (its joints by scoped name).
   JointControllerPtr GetJointController();

@@ -98,6 +98,8 @@ public:
                                ignition::math::Vector3d& torque) const = 0;
   virtual ignition::math::Vector3d bodyCentreOfMass(const std::string& link) const = 0;
   virtual LinkInertia linkInertia(const std::string& link) const = 0;
+  // The model's <static>: it never moves but where it is put.
+  virtual bool isStatic() const = 0;
   // Whether gravity pulls the link (its model's <gravity>).
   virtual bool linkGravity(const std::string& link) const = 0;
   // The movable joints whose child (`parent_side` false: whose parent) the link is.
