@@ -1123,6 +1123,7 @@ bool GazeboRosApiPlugin::applyJointEffort(gazebo_msgs::ApplyJointEffort::Request
 
 bool GazeboRosApiPlugin::clearJointForces(gazebo_msgs::JointRequest::Request& req, gazebo_msgs::JointRequest::Response&)
 {
+  // Upstream's: every job on a joint of that name (Joint::GetName, the bare name), whichever model.
   for (Robot* robot : world_.robots())
     robot->clearJointEfforts(req.joint_name);
   return true;

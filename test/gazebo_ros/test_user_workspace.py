@@ -395,3 +395,54 @@ def test_models_a_world_plugin_inserts_come_after_the_first_step_in_the_plant_fr
     assert abs(out['x']['ball']) < 1e-3 and abs(out['x']['ball_0'] - 1.0) < 1e-3, out
     assert abs(out['x']['renamed_box'] - 2.0) < 1e-3 and abs(out['x']['crate'] + 2.0) < 1e-3, out
     assert 'nowhere' in done.stderr + done.stdout and 'the world goes on without it' in done.stderr + done.stdout, done
+
+
+# A checkout of roboticsgroup_upatras_gazebo_plugins (github.com/roboticsgroup/...), as GRP_REPO is one
+# of gazebo_ros_pkgs: its files stay out of this repository, so the test builds them where given.
+ROBOTICSGROUP_REPO = os.environ.get('ROBOTICSGROUP_REPO')
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not ROBOTICSGROUP_REPO,
+                    reason='ROBOTICSGROUP_REPO (a checkout of roboticsgroup_upatras_gazebo_plugins) is not set')
+def test_roboticsgroups_own_mimic_joint_plugin_built_unchanged_moves_the_gripper_as_the_plants_own(
+        install_space, tmp_path):
+    """roboticsgroup's package (control_toolbox's PID, gazebo_ros, find_package(gazebo)) built with
+    catkin_make on the install space, unchanged; its libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so,
+    found on the workspace's library path, is loaded in place of the plant's own of that name and moves
+    the gripper's second finger after the first by its PID, its gains from the parameter server, as
+    test_mimic_joint_ros.py checks of the plant's own."""
+    from plant_helpers import gripper
+    from ros_harness import spawn_urdf, start_plant
+    workspace = tmp_path / 'rg_ws'
+    status, output = run('git clone -q %s %s' % (ROBOTICSGROUP_REPO, workspace / 'src' / 'roboticsgroup_upatras_gazebo_plugins')
+                         if os.path.isdir(os.path.join(ROBOTICSGROUP_REPO, 'objects')) or
+                         os.path.isdir(os.path.join(ROBOTICSGROUP_REPO, '.git'))
+                         else 'mkdir -p src && cp -r %s src/' % ROBOTICSGROUP_REPO, cwd=tmp_path)
+    assert status == 0, output
+    status, output = run('source %s/setup.bash && catkin_make' % install_space, cwd=workspace)
+    assert status == 0, output
+    env = sourced(workspace / 'devel' / 'setup.bash')
+    urdf = gripper(hasPID='mimic_gains').replace('libroboticsgroup_gazebo_mimic_joint_plugin.so',
+                                                 'libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so')
+    (tmp_path / 'gripper.urdf').write_text(urdf)
+    ros = RosSystem(str(tmp_path), base_env=env)
+    try:
+        plant = start_plant(ros)
+        ros.set_param('/gripper/robot_description', textfile=str(tmp_path / 'gripper.urdf'))
+        ros.set_param('/mimic_gains', {'p': 100.0, 'i': 0.0, 'd': 4.0})
+        ros.set_param('/gripper/finger_controller', {'type': 'position_controllers/JointPositionController',
+                                                     'joint': 'finger_joint'})
+        spawn_urdf(ros, plant, '/gripper/robot_description', 'gripper')
+        spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/gripper', 'finger_controller'],
+                            'spawner')
+        ros.wait_for_controllers(1, namespace='/gripper')
+        seen = ros.probe(
+            'model_plugins/probes/the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server.py', timeout=60)
+        spawner.stop()
+        log = plant.log()
+    finally:
+        ros.close()
+    assert 'MimicJointPlugin loaded! Joint: "finger_joint", Mimic joint: "finger_mimic_joint"' in log, log
+    assert seen['finger_left'] == pytest.approx(0.01 + 0.03, abs=1e-3), 'the controller moved the first finger'
+    assert seen['finger_right'] == pytest.approx(-0.01 - 0.03, abs=1e-3), 'upstream\'s PID the second'

@@ -73,6 +73,13 @@ void Link::SetAngularVel(const ignition::math::Vector3d& velocity)
           << "canonical link [" << bridge_->canonicalLink() << "] only; nothing is changed" << std::endl;
 }
 
+void Link::SetEnabled(bool enable) const
+{
+  if (!enable)
+    gzwarn << "Link::SetEnabled(false) on link [" << GetScopedName() << "]: the plant keeps every link of a model "
+           << "in its simulation; nothing is changed" << std::endl;
+}
+
 void Link::SetGravityMode(bool mode)
 {
   gzwarn << "Link::SetGravityMode(" << (mode ? "true" : "false") << ") on link [" << GetScopedName()

@@ -37,6 +37,10 @@ public:
   void SetAngularVel(const ignition::math::Vector3d& velocity);
   // The model moved so that the link is at `pose` (world), its joints as they are, at rest.
   void SetWorldPose(const ignition::math::Pose3d& pose, bool notify = true, bool publish = true);
+  // ODE's body switch (dBodyDisable): the plant keeps every link of a model in its simulation, so
+  // SetEnabled(false) is one gzwarn naming the link and changes nothing; GetEnabled is true.
+  void SetEnabled(bool enable) const;
+  bool GetEnabled() const { return true; }
   // Whether gravity pulls it: its model's <gravity>, as built; setting it is one gzwarn.
   void SetGravityMode(bool mode);
   bool GetGravityMode() const;

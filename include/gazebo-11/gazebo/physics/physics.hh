@@ -1,6 +1,10 @@
 // Gazebo's physics library, as a plugin includes it whole: the world, its physics engine, models, links and joints.
 #pragma once
 
+// Gazebo 11's physics headers bring the world's events in: plugins that include no more than
+// physics.hh and Plugin.hh connect to event::Events (roboticsgroup's mimic joint plugin does).
+#include "gazebo/common/Events.hh"
+
 #include "gazebo/physics/Base.hh"
 #include "gazebo/physics/Collision.hh"
 #include "gazebo/physics/Entity.hh"
