@@ -413,7 +413,7 @@ def test_roboticsgroups_own_mimic_joint_plugin_built_unchanged_moves_the_gripper
     the gripper's second finger after the first by its PID, its gains from the parameter server, as
     test_mimic_joint_ros.py checks of the plant's own."""
     from plant_helpers import gripper
-    from ros_harness import spawn_urdf, start_plant
+    from ros_harness import drive_mimic_gripper, start_plant
     workspace = tmp_path / 'rg_ws'
     status, output = run('git clone -q %s %s' % (ROBOTICSGROUP_REPO, workspace / 'src' / 'roboticsgroup_upatras_gazebo_plugins')
                          if os.path.isdir(os.path.join(ROBOTICSGROUP_REPO, 'objects')) or
@@ -429,17 +429,7 @@ def test_roboticsgroups_own_mimic_joint_plugin_built_unchanged_moves_the_gripper
     ros = RosSystem(str(tmp_path), base_env=env)
     try:
         plant = start_plant(ros)
-        ros.set_param('/gripper/robot_description', textfile=str(tmp_path / 'gripper.urdf'))
-        ros.set_param('/mimic_gains', {'p': 100.0, 'i': 0.0, 'd': 4.0})
-        ros.set_param('/gripper/finger_controller', {'type': 'position_controllers/JointPositionController',
-                                                     'joint': 'finger_joint'})
-        spawn_urdf(ros, plant, '/gripper/robot_description', 'gripper')
-        spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/gripper', 'finger_controller'],
-                            'spawner')
-        ros.wait_for_controllers(1, namespace='/gripper')
-        seen = ros.probe(
-            'model_plugins/probes/the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server.py', timeout=60)
-        spawner.stop()
+        seen = drive_mimic_gripper(ros, plant, tmp_path / 'gripper.urdf')
         log = plant.log()
     finally:
         ros.close()

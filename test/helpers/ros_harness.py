@@ -569,3 +569,20 @@ class TopicRates:
                 span = arrivals[-1] - arrivals[0]
                 rates[topic] = (len(arrivals) - 1) / span if span > 0 else None
         return rates
+
+
+def drive_mimic_gripper(ros, plant, urdf_path):
+    """The test gripper (test/fixtures/urdf/gripper.urdf at `urdf_path`, its mimic joint plugin's PID
+    gains at /mimic_gains: p 100, d 4) spawned into `plant`, its first finger commanded to 0.03 m
+    through a position controller: the fingers' y where the plugin left them ({link: y})."""
+    ros.set_param('/gripper/robot_description', textfile=str(urdf_path))
+    ros.set_param('/mimic_gains', {'p': 100.0, 'i': 0.0, 'd': 4.0})
+    ros.set_param('/gripper/finger_controller', {'type': 'position_controllers/JointPositionController',
+                                                 'joint': 'finger_joint'})
+    spawn_urdf(ros, plant, '/gripper/robot_description', 'gripper')
+    spawner = ros.start(['rosrun', 'controller_manager', 'spawner', '__ns:=/gripper', 'finger_controller'], 'spawner')
+    ros.wait_for_controllers(1, namespace='/gripper')
+    seen = ros.probe('model_plugins/probes/the_mimic_joint_plugin_reads_its_pid_gains_from_the_parameter_server.py',
+                     timeout=60)
+    spawner.stop()
+    return seen
