@@ -70,7 +70,9 @@ double rigSpeed(World& world)
   spin->SetParam("fmax", 0, 100.0);
   spin->SetParam("vel", 0, 10.0);
   world.step(static_cast<int>(3.0 / world.timeStep()));
-  return gazebo::physics::get_world()->ModelByName("rig")->GetLink("slider")->WorldLinearVel().X();
+  const double speed = gazebo::physics::get_world()->ModelByName("rig")->GetLink("slider")->WorldLinearVel().X();
+  testing::Test::RecordProperty("rig_speed", std::to_string(speed));  // in --gtest_output=xml's report
+  return speed;
 }
 }  // namespace
 

@@ -55,6 +55,8 @@ public:
       plugin_.reset();
       return false;
     }
+    // Which file it is (a file found on the paths wins over the plant's own plugin of the name).
+    context.log().info(label + ": loaded from " + d.library);
     return true;
   }
 

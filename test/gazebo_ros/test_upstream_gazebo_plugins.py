@@ -1,0 +1,74 @@
+"""gazebo_ros_pkgs' own gazebo_plugins package (noetic-devel), unchanged, built against the plant and
+run in the project's own tests of those plugins. Where GRP_REPO is set (the git directory of a
+snapshot of ros-simulation/gazebo_ros_pkgs; upstream's files stay out of this repository), the
+package is built with catkin_make on the install space (make -k: its sensor and camera plugins need
+Gazebo's sensors and rendering, which the plant does not offer yet); every model and world plugin
+library of it must build; then the project's ROS tests of those plugins run again with upstream's
+libraries first on GAZEBO_PLUGIN_PATH and the library path, so that the plant loads upstream's code
+in place of its own (the plant's log names each file it loaded: the tests' logs must name upstream's)."""
+import glob
+import os
+import subprocess
+
+import pytest
+
+from suite_paths import TEST_DIR
+from test_user_workspace import install_space, run  # noqa: F401 (the fixture)
+
+GRP_REPO = os.environ.get('GRP_REPO')
+
+# Upstream's model and world plugin libraries, each with the project's test of it through ROS.
+MODEL_AND_WORLD_PLUGINS = {
+    'gazebo_ros_diff_drive': 'model_plugins/test_diff_drive_ros.py',
+    'gazebo_ros_skid_steer_drive': 'model_plugins/test_skid_steer_and_planar_move_ros.py',
+    'gazebo_ros_planar_move': 'model_plugins/test_skid_steer_and_planar_move_ros.py',
+    'gazebo_ros_force': 'model_plugins/test_force_and_f3d_ros.py',
+    'gazebo_ros_f3d': 'model_plugins/test_force_and_f3d_ros.py',
+    'gazebo_ros_hand_of_god': 'model_plugins/test_hand_of_god_ros.py',
+    'gazebo_ros_joint_pose_trajectory': 'model_plugins/test_joint_pose_trajectory_ros.py',
+    'gazebo_ros_ft_sensor': 'model_plugins/test_ft_sensor_ros.py',
+    'gazebo_ros_elevator': 'model_plugins/test_elevator_ros.py',
+    'gazebo_ros_harness': 'model_plugins/test_harness_ros.py',
+    'gazebo_ros_wheel_slip': 'model_plugins/test_wheel_slip_ros.py',
+}
+# Built, with no test of the project's own through ROS yet.
+ALSO_BUILT = ['gazebo_ros_tricycle_drive', 'gazebo_ros_p3d', 'gazebo_ros_joint_state_publisher',
+              'gazebo_ros_vacuum_gripper', 'gazebo_ros_template', 'gazebo_ros_utils']
+
+pytestmark = [pytest.mark.ros, pytest.mark.slow,
+              pytest.mark.skipif(not GRP_REPO, reason='GRP_REPO (a gazebo_ros_pkgs snapshot) is not set')]
+
+
+@pytest.fixture(scope='module')
+def upstream_workspace(install_space, tmp_path_factory):  # noqa: F811
+    """Upstream's gazebo_plugins (the snapshot's noetic-devel) in a workspace of its own, built with
+    catkin_make -k on the install space: (its devel/lib, catkin_make's output)."""
+    workspace = tmp_path_factory.mktemp('upstream')
+    (workspace / 'src').mkdir()
+    status, output = run('git --git-dir=%s archive HEAD gazebo_plugins | tar -x -C src' % GRP_REPO, cwd=workspace)
+    assert status == 0, output
+    status, output = run('source %s/setup.bash && catkin_make -k' % install_space, cwd=workspace, timeout=3600)
+    return workspace / 'devel' / 'lib', output
+
+
+def test_every_model_and_world_plugin_library_of_upstreams_gazebo_plugins_builds(upstream_workspace):
+    lib, output = upstream_workspace
+    missing = [name for name in list(MODEL_AND_WORLD_PLUGINS) + ALSO_BUILT
+               if not os.path.isfile(os.path.join(lib, 'lib%s.so' % name))]
+    assert not missing, 'not built: %s\n%s' % (missing, output[-4000:])
+
+
+@pytest.mark.parametrize('test_file', sorted(set(MODEL_AND_WORLD_PLUGINS.values())))
+def test_the_projects_test_passes_with_upstreams_plugin_loaded(upstream_workspace, test_file, tmp_path):
+    lib, _ = upstream_workspace
+    plugins = [name for name, test in MODEL_AND_WORLD_PLUGINS.items() if test == test_file]
+    env = dict(os.environ, GAZEBO_PLUGIN_PATH=str(lib) + os.pathsep + os.environ.get('GAZEBO_PLUGIN_PATH', ''),
+               LD_LIBRARY_PATH=str(lib) + os.pathsep + os.environ.get('LD_LIBRARY_PATH', ''))
+    done = subprocess.run(['/usr/bin/python3', '-m', 'pytest', '-q', '-p', 'no:cacheprovider', '-p', 'no:xdist',
+                           '--basetemp', str(tmp_path / 'run'), os.path.join(TEST_DIR, test_file)],
+                          env=env, cwd=os.path.dirname(TEST_DIR), capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, done.stdout[-6000:] + done.stderr[-2000:]
+    logs = ''.join(open(path, errors='replace').read()
+                   for path in glob.glob(str(tmp_path / 'run' / '**' / '*.log'), recursive=True))
+    for name in plugins:
+        assert 'loaded from %s/lib%s.so' % (lib, name) in logs, 'upstream\'s lib%s.so was not the one loaded' % name
