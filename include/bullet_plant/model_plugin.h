@@ -80,6 +80,8 @@ public:
   virtual const RobotDescription& robotDescription() const = 0;
   // The model frame: Gazebo's model pose is that of its canonical (the URDF root) link.
   virtual const std::string& rootLink() const = 0;
+  // spawn_model's -robot_namespace, as given; empty for none.
+  virtual const std::string& spawnNamespace() const = 0;
   // A movable joint to drive; null (with the reason logged, naming `plugin`) for a joint the robot
   // does not have, a fixed one, or one a gazebo_ros_control handle drives.
   virtual ModelJoint* modelJoint(const std::string& joint, const std::string& plugin) = 0;
@@ -109,6 +111,8 @@ public:
   // Joint::SetPosition on any movable joint (a controller's too), the joint then at rest; false for
   // a joint the robot lacks or a fixed one. Within the URDF limits.
   virtual bool setJointPosition(const std::string& joint, double position) = 0;
+  // Whether a gazebo_ros_control transmission drives the joint (modelJoint refuses it then).
+  virtual bool transmissionDrives(const std::string& joint) const = 0;
   // Model::SetLinkWorldPose: the model moved, joints as they are and at rest, so that `link` is at
   // `pose` (world). Nothing for a model fixed to the world.
   virtual void setLinkWorldPose(const std::string& link, const urdf::Pose& pose) = 0;
@@ -136,6 +140,14 @@ public:
   // nothing, for a collision the link lacks or a coefficient or slip that is negative or not finite.
   virtual bool setCollisionFriction(const std::string& link, const std::string& collision,
                                     const CollisionFriction& friction) = 0;
+  // Whether gravity pulls `link` from the next step on (Gazebo's Link::SetGravityMode); false for a
+  // link the model lacks.
+  virtual bool setLinkGravity(const std::string& link, bool gravity) = 0;
+  // The inertial of `link` as Gazebo has it for a URDF robot, whose links fixed to it sdformat lumps
+  // into it: its body's mass, centre of mass and principal axes (in the link frame) and principal
+  // moments. False where that is the link's own <inertial> (an SDF model, whose fixed links Gazebo
+  // keeps apart, or a link lumped into another).
+  virtual bool lumpedInertia(const std::string& link, double& mass, urdf::Pose& com, urdf::Vector3& moments) const = 0;
   // The world's physics step (s): what plugins that integrate per update use as their period.
   virtual double stepSize() const = 0;
   // The world's parameter tree (params.h): where the node has copied the ROS parameters a plugin

@@ -23,7 +23,11 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
     ros::NodeHandle plugin_nh(requireValidRosName(ns, "plugin '" + d.name + "' robotNamespace"));
     model_plugin_topics_.emplace_back(new PortTopics(plant, plugin_nh, [plugin](const std::string&) { return plugin; }));
     model_plugin_topics_.back()->refresh({{"", plugin}});
-    plugin_odometry_ = plugin_odometry_ || plugin->output<OdometrySample>() || plugin->output<TransformSample>();
+    // A Gazebo plugin file of the user's own (upstream's diff drive built against the API ...) may
+    // publish odometry and tf the plant does not see: its robot publishes what its plugins do, as in
+    // Gazebo.
+    plugin_odometry_ = plugin_odometry_ || plugin->output<OdometrySample>() || plugin->output<TransformSample>() ||
+                       !d.library.empty();
   }
   // The plant's ground truth is for URDF robots; an SDF model publishes only what its plugins
   // publish, as in Gazebo: odom -> "link" of every box would fight on /tf.

@@ -27,7 +27,8 @@ MODEL_AND_WORLD_PLUGINS = {
     'gazebo_ros_hand_of_god': 'model_plugins/test_hand_of_god_ros.py',
     'gazebo_ros_joint_pose_trajectory': 'model_plugins/test_joint_pose_trajectory_ros.py',
     'gazebo_ros_ft_sensor': 'model_plugins/test_ft_sensor_ros.py',
-    'gazebo_ros_elevator': 'model_plugins/test_elevator_ros.py',
+    # the floor only: on a word that is no floor upstream's throws in its ROS thread and ends the server
+    'gazebo_ros_elevator': 'model_plugins/test_elevator_ros.py::test_a_floor_on_the_elevator_topic_takes_the_car_there',
     'gazebo_ros_harness': 'model_plugins/test_harness_ros.py',
     'gazebo_ros_wheel_slip': 'model_plugins/test_wheel_slip_ros.py',
 }
@@ -47,7 +48,10 @@ def upstream_workspace(install_space, tmp_path_factory):  # noqa: F811
     (workspace / 'src').mkdir()
     status, output = run('git --git-dir=%s archive HEAD gazebo_plugins | tar -x -C src' % GRP_REPO, cwd=workspace)
     assert status == 0, output
-    status, output = run('source %s/setup.bash && catkin_make -k' % install_space, cwd=workspace, timeout=3600)
+    # Boost 1.74 (Debian 12) keeps bind's placeholders _1, _2 out of the global namespace unless asked;
+    # upstream's files use them there, as Ubuntu 20.04's Boost 1.71 allowed.
+    status, output = run('source %s/setup.bash && catkin_make -k "-DCMAKE_CXX_FLAGS=-include boost/bind.hpp '
+                         '-DBOOST_BIND_GLOBAL_PLACEHOLDERS"' % install_space, cwd=workspace, timeout=3600)
     return workspace / 'devel' / 'lib', output
 
 
@@ -58,7 +62,18 @@ def test_every_model_and_world_plugin_library_of_upstreams_gazebo_plugins_builds
     assert not missing, 'not built: %s\n%s' % (missing, output[-4000:])
 
 
-@pytest.mark.parametrize('test_file', sorted(set(MODEL_AND_WORLD_PLUGINS.values())))
+# Where the plant's own plugin differs from upstream's, found by this module: the test of the plant's
+# own fails with upstream's, as it should until the plant's own is mended.
+KNOWN_DIFFERENCES = {
+    'model_plugins/test_diff_drive_ros.py':
+        "upstream's GazeboRos helper (noetic-devel gazebo_ros_utils.cpp) resolves frames against a tf_prefix "
+        "parameter only; the plant's own diff drive falls back to its namespace (tb3/odom where upstream's says odom)",
+}
+
+
+@pytest.mark.parametrize('test_file', [
+    pytest.param(test, marks=pytest.mark.xfail(reason=KNOWN_DIFFERENCES[test], strict=True))
+    if test in KNOWN_DIFFERENCES else test for test in sorted(set(MODEL_AND_WORLD_PLUGINS.values()))])
 def test_the_projects_test_passes_with_upstreams_plugin_loaded(upstream_workspace, test_file, tmp_path):
     lib, _ = upstream_workspace
     plugins = [name for name, test in MODEL_AND_WORLD_PLUGINS.items() if test == test_file]

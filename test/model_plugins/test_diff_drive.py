@@ -82,7 +82,7 @@ def test_world_odometry_is_the_models_pose_and_its_twist_in_the_base_frame():
     assert (tf['frame_id'], tf['child_frame_id']) == ('diff_bot/odom', 'diff_bot/base_footprint')
     assert list(tf['pose']) == list(odom['pose'])
     joints = robot.plugin_latest('diff_drive', 'joint_states')
-    assert joints['name'] == ['wheel_left_joint', 'wheel_right_joint'] and len(joints['position']) == 2
+    assert joints['name'] == ['wheel_right_joint', 'wheel_left_joint'] and len(joints['position']) == 2
     assert joints['velocity'] == [] and joints['effort'] == [], 'names and positions only, as upstream'
 
 

@@ -28,7 +28,7 @@ def test_diff_drive_drives_on_cmd_vel_and_publishes_odometry_tf_and_joint_states
     assert abs(moved[0]) + abs(moved[1]) > 0.2, 'the robot drove'
     assert seen['odom_xy'] == pytest.approx(seen['model_xy'], abs=0.05), 'world odometry: the model pose'
     assert abs(seen['tf_x'] - seen['odom_xy'][0]) < 0.1
-    assert seen['joints'] == ['wheel_left_joint', 'wheel_right_joint'] and seen['positions'] == 2
+    assert seen['joints'] == ['wheel_right_joint', 'wheel_left_joint'] and seen['positions'] == 2
 
 @pytest.mark.slow
 def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):

@@ -18,8 +18,11 @@ FOREARM, HAND = (0.6, np.array([0.15, 0, 0])), (0.2, np.array([0.3, 0, 0]))  # m
 
 def arm_with_ft_sensors_urdf(extra=''):
     """arm.urdf with ft sensors on the elbow ('ft_elbow', topic elbow_ft, every step) and the wrist
-    ('ft_wrist', wrist_ft, 100 Hz), gazebo_ros_force on the hand ('push', topic push), and `extra`."""
-    plugins = """<gazebo>
+    ('ft_wrist', wrist_ft, 100 Hz), gazebo_ros_force on the hand ('push', topic push), and `extra`;
+    both joints provideFeedback, as gazebo_ros_ft_sensor's users give them for Gazebo's ODE."""
+    plugins = """<gazebo reference="elbow"><provideFeedback>true</provideFeedback></gazebo>
+<gazebo reference="wrist"><provideFeedback>true</provideFeedback></gazebo>
+<gazebo>
   <plugin name="ft_elbow" filename="libgazebo_ros_ft_sensor.so"><jointName>elbow</jointName><topicName>elbow_ft</topicName></plugin>
   <plugin name="ft_wrist" filename="libgazebo_ros_ft_sensor.so"><jointName>wrist</jointName><topicName>wrist_ft</topicName>
     <updateRate>100</updateRate></plugin>

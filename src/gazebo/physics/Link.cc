@@ -80,11 +80,7 @@ void Link::SetEnabled(bool enable) const
            << "in its simulation; nothing is changed" << std::endl;
 }
 
-void Link::SetGravityMode(bool mode)
-{
-  gzwarn << "Link::SetGravityMode(" << (mode ? "true" : "false") << ") on link [" << GetScopedName()
-         << "]: the plant keeps the gravity the model was built with" << std::endl;
-}
+void Link::SetGravityMode(bool mode) { bridge_->setLinkGravity(name_, mode); }
 
 void Link::SetWorldPose(const ignition::math::Pose3d& pose, bool /*notify*/, bool /*publish*/)
 {

@@ -292,8 +292,10 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     std::string link = reference;
     if (!out.model->getLink(link))
     {
-      if (!out.model->getJoint(link))  // joint references carry joint tags we do not use
+      if (!out.model->getJoint(link))
         out.warnings.push_back("<gazebo reference=\"" + link + "\"> names no link of the robot; ignored");
+      else if (xml::childText(g, "provideFeedback", "") == "true" || xml::childText(g, "provideFeedback", "") == "1")
+        out.joint_feedback.insert(link);  // the joint's other tags (ODE's stops, CFM) are not used
       continue;
     }
     SurfaceDescription& surface = out.surfaces[link];

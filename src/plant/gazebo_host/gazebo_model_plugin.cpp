@@ -7,6 +7,8 @@
 #include <memory>
 #include <string>
 
+#include <tinyxml2.h>
+
 #include <gazebo/common/Plugin.hh>
 #include <gazebo/physics/Model.hh>
 #include <gazebo/physics/World.hh>
@@ -20,6 +22,22 @@ namespace bullet_plant
 namespace
 {
 constexpr const char* kNotLoaded = "; the plugin is not loaded";
+
+// gazebo_ros's spawn with -robot_namespace gives each <plugin> that names no <robotNamespace> one,
+// the spawn's (gazebo_ros_api_plugin's walkChildAddRobotNamespace): the plugin's XML with it.
+std::string withSpawnNamespace(const std::string& xml, const std::string& spawn_namespace)
+{
+  if (spawn_namespace.empty())
+    return xml;
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS || !doc.RootElement() ||
+      doc.RootElement()->FirstChildElement("robotNamespace"))
+    return xml;
+  doc.RootElement()->InsertNewChildElement("robotNamespace")->SetText(spawn_namespace.c_str());
+  tinyxml2::XMLPrinter printer(nullptr, true);
+  doc.Print(&printer);
+  return printer.CStr();
+}
 
 class GazeboModelPluginHost final : public ModelPlugin
 {
@@ -37,7 +55,7 @@ public:
     if (!plugin_)
       return false;
     std::string error;
-    sdf::ElementPtr element = pluginElement(d.xml, "model", error);
+    sdf::ElementPtr element = pluginElement(withSpawnNamespace(d.xml, context.spawnNamespace()), "model", error);
     if (!element)
     {
       context.log().error(label + ": its <plugin> element: " + error + kNotLoaded);

@@ -59,6 +59,11 @@ public:
   }
   bool setPosition(double position) override
   {
+    // Gazebo's SetPosition puts any joint there, one a gazebo_ros_control transmission drives too
+    // (its controller goes on from there): such a joint is set as the world sets joints
+    // (gazebo_ros_joint_pose_trajectory's), the others through their motor, cheaply, every step.
+    if (reach_->context && !asked_ && reach_->context->transmissionDrives(name_))
+      return reach_->context->setJointPosition(name_, position);
     ModelJoint* joint = driven();
     if (joint)
       joint->setPosition(position, 0.0);
@@ -275,6 +280,20 @@ gazebo::physics::LinkInertia ContextModel::linkInertia(const std::string& link) 
   ModelPluginContext* context = reach("GetInertial");
   if (!context)
     return inertia;
+  // A URDF robot's link as Gazebo has it: the links fixed to it lumped into it (its body).
+  double mass = 0.0;
+  urdf::Pose com;
+  urdf::Vector3 moments;
+  if (context->lumpedInertia(link, mass, com, moments))
+  {
+    inertia.mass = mass;
+    inertia.pose = {com.position.x, com.position.y, com.position.z, com.rotation.w, com.rotation.x, com.rotation.y,
+                    com.rotation.z};
+    inertia.ixx = moments.x;
+    inertia.iyy = moments.y;
+    inertia.izz = moments.z;
+    return inertia;
+  }
   const urdf::LinkConstSharedPtr l = context->robotDescription().model->getLink(link);
   if (!l || !l->inertial)
     return inertia;
@@ -289,6 +308,12 @@ gazebo::physics::LinkInertia ContextModel::linkInertia(const std::string& link) 
   inertia.ixz = i.ixz;
   inertia.iyz = i.iyz;
   return inertia;
+}
+
+void ContextModel::setLinkGravity(const std::string& link, bool gravity)
+{
+  if (ModelPluginContext* context = reach("SetGravityMode"))
+    context->setLinkGravity(link, gravity);
 }
 
 bool ContextModel::isStatic() const

@@ -47,6 +47,7 @@ public:
   gazebo::physics::LinkInertia linkInertia(const std::string& link) const override;
   bool isStatic() const override;
   bool linkGravity(const std::string& link) const override;
+  void setLinkGravity(const std::string& link, bool gravity) override;
   std::vector<std::string> linkJoints(const std::string& link, bool parent_side) const override;
   void setLinkWorldPose(const std::string& link, const ignition::math::Pose3d& pose) override;
   std::unique_ptr<gazebo::physics::JointBridge> joint(const std::string& name) override;

@@ -173,12 +173,12 @@ private:
     }
   }
 
-  // Names and positions only, as upstream's.
+  // Names and positions only, the right wheel first, as upstream's (its joints_[RIGHT] is index 0).
   void publishWheelJointState(int64_t time_ns)
   {
     JointStateSample s;
     s.stamp_ns = time_ns;
-    for (int side : {kLeft, kRight})
+    for (int side : {kRight, kLeft})
     {
       s.name.push_back(joint_names_[side]);
       s.position.push_back(motors_[side]->position());

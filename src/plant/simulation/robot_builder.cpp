@@ -1043,6 +1043,8 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
 
 void loadModelPlugins(Robot::Internals& r)
 {
+  for (const std::string& joint : r.description.joint_feedback)  // before a plugin asks for it
+    r.wrench_watches.watch(r.multibody, *r.description.model, joint);
   createModelPlugins(r);
   allowSleep(r);
 }

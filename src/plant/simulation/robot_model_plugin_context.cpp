@@ -4,6 +4,7 @@
 
 #include "bullet_plant/plugin_names.h"
 #include "physics/bullet_conversions.h"
+#include "physics/dynamics_world.h"
 #include "simulation/internals.h"
 #include "simulation/robot_builder.h"
 
@@ -12,6 +13,8 @@ namespace bullet_plant
 const std::string& RobotModelPluginContext::modelName() const { return robot_.name; }
 
 const RobotDescription& RobotModelPluginContext::robotDescription() const { return robot_.description; }
+
+const std::string& RobotModelPluginContext::spawnNamespace() const { return robot_.spawn_namespace; }
 
 const std::string& RobotModelPluginContext::rootLink() const { return robot_.description.model->getRoot()->name; }
 
@@ -94,6 +97,12 @@ urdf::Vector3 RobotModelPluginContext::bodyCentreOfMass(const std::string& link)
   if (it == robot_.multibody.link_in_body.end())
     return urdf::Vector3();
   return fromBullet(robot_.multibody.bodyWorldTransform(it->second.first).getOrigin());
+}
+
+bool RobotModelPluginContext::transmissionDrives(const std::string& joint) const
+{
+  auto index = robot_.multibody.joint_index.find(joint);
+  return index != robot_.multibody.joint_index.end() && robot_.joint_layer.drives(index->second);
 }
 
 bool RobotModelPluginContext::setJointPosition(const std::string& joint, double position)
@@ -191,6 +200,31 @@ bool RobotModelPluginContext::setCollisionFriction(const std::string& link, cons
     surface.slip1 = btScalar(friction.slip1);
     surface.slip2 = btScalar(friction.slip2);
   }
+  return true;
+}
+
+bool RobotModelPluginContext::setLinkGravity(const std::string& link, bool gravity)
+{
+  if (!robot_.multibody.link_in_body.count(link))
+    return false;
+  robot_.description.link_physics[link].gravity = gravity;
+  updatePartialGravity(robot_);
+  wakeUp(*robot_.multibody.bullet);
+  return true;
+}
+
+bool RobotModelPluginContext::lumpedInertia(const std::string& link, double& mass, urdf::Pose& com,
+                                            urdf::Vector3& moments) const
+{
+  auto in_body = robot_.multibody.link_in_body.find(link);
+  if (robot_.description.format != RobotDescription::Format::Urdf || in_body == robot_.multibody.link_in_body.end())
+    return false;
+  const Body& body = robot_.multibody.bodies[size_t(in_body->second.first)];
+  if (body.link != link)
+    return false;
+  mass = body.mass;
+  com = fromBullet(body.urdf_from_com);
+  moments = fromBullet(body.inertia_diagonal);
   return true;
 }
 

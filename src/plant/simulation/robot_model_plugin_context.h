@@ -19,6 +19,7 @@ public:
   const std::string& modelName() const override;
   const RobotDescription& robotDescription() const override;
   const std::string& rootLink() const override;
+  const std::string& spawnNamespace() const override;
   ModelJoint* modelJoint(const std::string& joint, const std::string& plugin) override;
   bool jointState(const std::string& joint, double& position, double& velocity) const override;
   LinkMotion linkMotion(const std::string& link) const override;
@@ -28,6 +29,7 @@ public:
   void addedLinkWrench(const std::string& link, urdf::Vector3& force, urdf::Vector3& torque) const override;
   urdf::Vector3 bodyCentreOfMass(const std::string& link) const override;
   bool setJointPosition(const std::string& joint, double position) override;
+  bool transmissionDrives(const std::string& joint) const override;
   void setLinkWorldPose(const std::string& link, const urdf::Pose& pose) override;
   void setPhysicsEnabled(bool enabled) override;
   bool physicsEnabled() const override;
@@ -39,6 +41,8 @@ public:
   std::vector<LinkCollision> linkCollisions(const std::string& link) const override;
   bool setCollisionFriction(const std::string& link, const std::string& collision,
                             const CollisionFriction& friction) override;
+  bool setLinkGravity(const std::string& link, bool gravity) override;
+  bool lumpedInertia(const std::string& link, double& mass, urdf::Pose& com, urdf::Vector3& moments) const override;
   double stepSize() const override;
   const Param& params() const override;
   std::string pluginNamespace(const ModelPluginDescription& plugin) const override;

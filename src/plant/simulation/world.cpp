@@ -482,15 +482,17 @@ void World::step(int n)
   Internals& w = *in_;
   for (int i = 0; i < n; ++i)
   {
+    // gazebo_ros's wrench and effort jobs first: its system plugin's world update begin callback
+    // runs before any model's, so gazebo_ros_f3d (the plant's own or a Gazebo plugin built over
+    // Link::WorldForce) sees apply_body_wrench's force.
+    for (auto& r : w.robots)
+      if (!r->in_->disabled && !r->in_->external_efforts.empty())
+        r->in_->external_efforts.apply(r->in_->multibody, w.time_ns);
     if (w.gazebo_host)
       w.gazebo_host->beginStep();
     for (auto& r : w.robots)
       if (!r->in_->disabled)
       {
-        // gazebo_ros's wrench and effort jobs first: its system plugin's world update begin
-        // callback runs before any model's, so gazebo_ros_f3d sees apply_body_wrench's force.
-        if (!r->in_->external_efforts.empty())
-          r->in_->external_efforts.apply(r->in_->multibody, w.time_ns);
         r->in_->updateControllers(w.time_ns);
         r->in_->updateModelPlugins(w.time_ns);
       }

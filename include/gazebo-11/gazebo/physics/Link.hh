@@ -41,7 +41,8 @@ public:
   // SetEnabled(false) is one gzwarn naming the link and changes nothing; GetEnabled is true.
   void SetEnabled(bool enable) const;
   bool GetEnabled() const { return true; }
-  // Whether gravity pulls it: its model's <gravity>, as built; setting it is one gzwarn.
+  // Whether gravity pulls it: its model's <gravity>, or what SetGravityMode made it (from the next
+  // step on; the links fixed to it in one body feel their own).
   void SetGravityMode(bool mode);
   bool GetGravityMode() const;
   ignition::math::Pose3d WorldPose() const override;
@@ -68,7 +69,8 @@ public:
   ignition::math::Vector3d WorldTorque() const;
   // The centre of mass where forces act (of the link and the links fixed to it), the link's axes.
   ignition::math::Pose3d WorldCoGPose() const;
-  // The link's own <inertial>; a copy.
+  // The link's <inertial>, a copy: for a URDF robot with the links fixed to it lumped in, as
+  // Gazebo's (sdformat lumps them); for an SDF model its own.
   InertialPtr GetInertial() const;
   // Its own collisions, in its <collision> order (made at the first call, the same ones after), and
   // one by name or index (null for none).

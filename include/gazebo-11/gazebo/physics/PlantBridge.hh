@@ -100,8 +100,10 @@ public:
   virtual LinkInertia linkInertia(const std::string& link) const = 0;
   // The model's <static>: it never moves but where it is put.
   virtual bool isStatic() const = 0;
-  // Whether gravity pulls the link (its model's <gravity>).
+  // Whether gravity pulls the link (its model's <gravity>, or what setLinkGravity made it).
   virtual bool linkGravity(const std::string& link) const = 0;
+  // From the next step on.
+  virtual void setLinkGravity(const std::string& link, bool gravity) = 0;
   // The movable joints whose child (`parent_side` false: whose parent) the link is.
   virtual std::vector<std::string> linkJoints(const std::string& link, bool parent_side) const = 0;
   // The model moved so that `link` is at `pose` (world), joints as they are, at rest.
