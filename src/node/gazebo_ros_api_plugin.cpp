@@ -676,18 +676,22 @@ Robot* GazeboRosApiPlugin::jointOwner(const std::string& requested, std::string&
 bool GazeboRosApiPlugin::getJointProperties(gazebo_msgs::GetJointProperties::Request& req,
                                             gazebo_msgs::GetJointProperties::Response& res)
 {
-  std::string joint;
-  double position = 0, velocity = 0, effort = 0;
-  if (Robot* robot = jointOwner(req.joint_name, joint))
-    if (robot->jointState(joint, position, velocity, effort))
-    {
-      res.type = gazebo_msgs::GetJointProperties::Response::REVOLUTE;
-      res.position.assign(1, position);
-      res.rate.assign(1, velocity);
-      res.success = true;
-      res.status_message = "GetJointProperties: got properties";
-      return true;
-    }
+  // The first model with a joint of that name or scoped name (ball joints too, whose position is NaN).
+  for (Robot* robot : world_.robots())
+  {
+    const std::string scope = robot->name() + "::";
+    const std::string joint =
+        req.joint_name.compare(0, scope.size(), scope) == 0 ? req.joint_name.substr(scope.size()) : req.joint_name;
+    double position = 0, velocity = 0, effort = 0;
+    if (!robot->jointState(joint, position, velocity, effort))
+      continue;
+    res.type = gazebo_msgs::GetJointProperties::Response::REVOLUTE;
+    res.position.assign(1, position);
+    res.rate.assign(1, velocity);
+    res.success = true;
+    res.status_message = "GetJointProperties: got properties";
+    return true;
+  }
   res.success = false;
   res.status_message = "GetJointProperties: joint not found";
   return true;
