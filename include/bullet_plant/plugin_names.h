@@ -5,11 +5,13 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "bullet_plant/robot_description.h"
 
 namespace bullet_plant
 {
+class Param;
 // tf::resolve(prefix, frame) of tf 1.13, as gazebo_ros's plugins use it for their frame ids: a
 // frame starting with '/' loses the '/', otherwise "prefix/frame" (the prefix without its leading
 // '/'), or the frame alone for an empty prefix.
@@ -44,8 +46,14 @@ std::string multicameraSide(const SensorDescription& d);
 // planar_move and the mimic joint plugin stay in the global namespace.
 std::string modelPluginNamespace(const ModelPluginDescription& d, const std::string& spawn_namespace,
                                  const std::string& model_name);
-// Its tf prefix: the namespace without trailing '/' for the GazeboRos helper's plugins; none for
-// the others, which would read a tf_prefix parameter (tf's, gone since Noetic; not read).
-std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace);
+// Its tf prefix, for the GazeboRos helper's plugins (diff_drive, tricycle_drive): the tf_prefix
+// parameter tf::getPrefixParam finds from the plugin's namespace up (`params`, where the node copies
+// them at spawn), as gazebo_ros_pkgs' noetic gazebo_ros_utils reads it; none where there is none, and
+// none for the others.
+std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace,
+                                const Param& params);
+// The keys tf::getPrefixParam would try for a node in `plugin_namespace`: NS/tf_prefix, then each
+// parent's, then /tf_prefix.
+std::vector<std::string> tfPrefixParamKeys(const std::string& plugin_namespace);
 
 }  // namespace bullet_plant

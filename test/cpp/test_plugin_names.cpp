@@ -4,6 +4,7 @@
 #include <map>
 #include <string>
 
+#include "bullet_plant/params.h"
 #include "bullet_plant/plugin_names.h"
 
 using namespace bullet_plant;
@@ -101,8 +102,18 @@ TEST(PluginNames, ModelPluginNamespacesByTheirKindsRules)
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "", "bot"), "") << "empty: the global namespace";
     EXPECT_EQ(modelPluginNamespace(plugin(kind, {}), "/r2", "bot"), "/r2");
   }
+  // The GazeboRos helper's tf prefix: the tf_prefix parameter found from its namespace up, as
+  // noetic's gazebo_ros_utils reads it (tf::getPrefixParam); none without one.
   const ModelPluginDescription diff = plugin("libgazebo_ros_diff_drive.so", {});
-  EXPECT_EQ(modelPluginTfPrefix(diff, "/r1/"), "/r1") << "the GazeboRos helper: its namespace";
-  EXPECT_EQ(modelPluginTfPrefix(plugin("libgazebo_ros_skid_steer_drive.so", {}), "/r1"), "") << "only a tf_prefix parameter";
-  EXPECT_EQ(resolveTfFrame(modelPluginTfPrefix(diff, "/r1"), "odom"), "r1/odom");
+  Param params;
+  EXPECT_EQ(modelPluginTfPrefix(diff, "/r1/", params), "") << "no tf_prefix parameter: no prefix";
+  EXPECT_EQ(tfPrefixParamKeys("/r1/a/"), (std::vector<std::string>{"/r1/a/tf_prefix", "/r1/tf_prefix", "/tf_prefix"}));
+  EXPECT_EQ(tfPrefixParamKeys(""), (std::vector<std::string>{"/tf_prefix"}));
+  params.set("/tf_prefix", Param::string("everyone"));
+  EXPECT_EQ(modelPluginTfPrefix(diff, "/r1", params), "everyone") << "a parent's";
+  params.set("/r1/tf_prefix", Param::string("r1"));
+  EXPECT_EQ(modelPluginTfPrefix(diff, "/r1", params), "r1") << "its own namespace's first";
+  EXPECT_EQ(modelPluginTfPrefix(plugin("libgazebo_ros_skid_steer_drive.so", {}), "/r1", params), "")
+      << "skid_steer_drive reads none";
+  EXPECT_EQ(resolveTfFrame(modelPluginTfPrefix(diff, "/r1", params), "odom"), "r1/odom");
 }

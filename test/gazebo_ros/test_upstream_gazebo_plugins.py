@@ -64,11 +64,7 @@ def test_every_model_and_world_plugin_library_of_upstreams_gazebo_plugins_builds
 
 # Where the plant's own plugin differs from upstream's, found by this module: the test of the plant's
 # own fails with upstream's, as it should until the plant's own is mended.
-KNOWN_DIFFERENCES = {
-    'model_plugins/test_diff_drive_ros.py':
-        "upstream's GazeboRos helper (noetic-devel gazebo_ros_utils.cpp) resolves frames against a tf_prefix "
-        "parameter only; the plant's own diff drive falls back to its namespace (tb3/odom where upstream's says odom)",
-}
+KNOWN_DIFFERENCES = {}
 
 
 @pytest.mark.parametrize('test_file', [

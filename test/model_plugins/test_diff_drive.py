@@ -72,14 +72,14 @@ def test_world_odometry_is_the_models_pose_and_its_twist_in_the_base_frame():
     world.step(34)  # one update period past the last publish at most
     odom = robot.plugin_latest('diff_drive', 'odom')
     assert world.time - odom['stamp'] <= 0.035, 'at updateRate 30'
-    assert (odom['frame_id'], odom['child_frame_id']) == ('diff_bot/odom', 'diff_bot/base_footprint'), \
-        'no namespace: the model name is the prefix'
+    assert (odom['frame_id'], odom['child_frame_id']) == ('odom', 'base_footprint'), \
+        'no tf_prefix parameter: no prefix (noetic gazebo_ros_utils)'
     pose = robot.base_pose()
     assert odom['pose'][:3] == pytest.approx(pose[:3], abs=0.01)
     assert odom['linear'] == pytest.approx(0.2, rel=0.05) and odom['angular'] == pytest.approx(0.5, rel=0.05)
     assert abs(odom['twist'][1]) < 0.01, 'the twist is in the base frame: no sideways speed'
     tf = robot.plugin_latest('diff_drive', '/tf')
-    assert (tf['frame_id'], tf['child_frame_id']) == ('diff_bot/odom', 'diff_bot/base_footprint')
+    assert (tf['frame_id'], tf['child_frame_id']) == ('odom', 'base_footprint')
     assert list(tf['pose']) == list(odom['pose'])
     joints = robot.plugin_latest('diff_drive', 'joint_states')
     assert joints['name'] == ['wheel_right_joint', 'wheel_left_joint'] and len(joints['position']) == 2
@@ -102,7 +102,15 @@ def test_namespaces_and_frames_as_gazebo_ros_gives_them():
     assert robot.plugin_latest('diff_drive', 'odom')['frame_id'] == 'odom', "spawn_model's '/': no prefix"
     world, robot = spawned(diff_bot(robotNamespace='/robot_1'))
     drive(world, robot, 0.1, 0.0, 0.1)
-    assert robot.plugin_latest('diff_drive', 'odom')['child_frame_id'] == 'robot_1/base_footprint'
+    assert robot.plugin_latest('diff_drive', 'odom')['child_frame_id'] == 'base_footprint', \
+        'a namespace is no prefix (noetic gazebo_ros_utils reads only a tf_prefix parameter)'
+    world, robot = spawned(diff_bot(robotNamespace='/robot_1'), params={'robot_1': {'tf_prefix': 'robot_1'}})
+    drive(world, robot, 0.1, 0.0, 0.1)
+    assert robot.plugin_latest('diff_drive', 'odom')['child_frame_id'] == 'robot_1/base_footprint', \
+        "the tf_prefix parameter found from the plugin's namespace"
+    world, robot = spawned(diff_bot(robotNamespace='/robot_1/left'), params={'robot_1': {'tf_prefix': 'fleet'}})
+    drive(world, robot, 0.1, 0.0, 0.1)
+    assert robot.plugin_latest('diff_drive', 'odom')['child_frame_id'] == 'fleet/base_footprint', 'or a parent\'s'
 
 
 def test_a_reset_stops_the_robot_and_zeroes_the_encoders():

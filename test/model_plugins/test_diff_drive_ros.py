@@ -38,6 +38,7 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
     ros.wait_for_controllers(len(TUTORIAL_CONTROLLERS))
     (tmp_path / 'diff_bot.urdf').write_text(open(DIFF_BOT).read())
     ros.set_param('/tb3/robot_description', textfile=str(tmp_path / 'diff_bot.urdf'))
+    ros.set_param('/tb3/tf_prefix', 'tb3')  # as turtlebot3's multi-robot launch files give each robot
     spawn_urdf(ros, car, '/tb3/robot_description', 'tb3', robot_namespace='/tb3', xyz=(-1, -1.5, 0))
     seen = ros.probe('model_plugins/probes/a_diff_drive_robot_and_the_tutorial_car_in_one_world.py', timeout=90)
     moved = {name: seen['after'][name][0] - seen['before'][name][0] for name in ('tianracer', 'tb3')}
@@ -47,4 +48,4 @@ def test_a_diff_drive_robot_and_the_tutorial_car_in_one_world(ros, tmp_path):
     assert seen['scan_frame'] == 'tb3/base_scan', "gazebo_ros_laser's frame resolves against its namespace"
     assert seen['scan_hits'] > 100, 'the arena walls and the car around it'
     assert seen['tb3_tf_x'] == pytest.approx(seen['after']['tb3'][0], abs=0.15), \
-        "the diff drive's frames carry its namespace: tb3/odom -> tb3/base_footprint"
+        "the diff drive's frames carry its tf_prefix parameter: tb3/odom -> tb3/base_footprint"

@@ -1,6 +1,8 @@
 // The gazebo_ros plugins' naming rules, by plugin (docs/interfaces.md section 11).
 #include "bullet_plant/plugin_names.h"
 
+#include "bullet_plant/params.h"
+
 namespace bullet_plant
 {
 namespace
@@ -164,10 +166,32 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
   }
 }
 
-std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace)
+std::vector<std::string> tfPrefixParamKeys(const std::string& plugin_namespace)
 {
-  // The GazeboRos helper falls back to its namespace; the others read only a tf_prefix parameter.
-  return namingOf(d) == PluginNaming::GazeboRos ? withoutTrailingSlashes(plugin_namespace) : "";
+  std::vector<std::string> keys;
+  std::string ns = withoutTrailingSlashes(plugin_namespace);
+  ns.erase(0, ns.find_first_not_of('/'));
+  if (!ns.empty())
+    ns = "/" + ns;
+  while (true)
+  {
+    keys.push_back(ns + "/tf_prefix");
+    if (ns.empty())
+      break;
+    ns = ns.substr(0, ns.rfind('/'));
+  }
+  return keys;
+}
+
+std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace,
+                                const Param& params)
+{
+  if (namingOf(d) != PluginNaming::GazeboRos)
+    return "";
+  for (const std::string& key : tfPrefixParamKeys(plugin_namespace))
+    if (const Param* found = params.find(key.substr(1)))  // the tree's paths are relative
+      return found->type() == Param::Type::String ? found->asString() : "";
+  return "";
 }
 
 std::string multicameraSide(const SensorDescription& d)

@@ -251,7 +251,7 @@ std::string RobotModelPluginContext::pluginNamespace(const ModelPluginDescriptio
 
 std::string RobotModelPluginContext::tfPrefix(const ModelPluginDescription& plugin) const
 {
-  return modelPluginTfPrefix(plugin, pluginNamespace(plugin));
+  return modelPluginTfPrefix(plugin, pluginNamespace(plugin), robot_.world->params);
 }
 
 Log& RobotModelPluginContext::log() { return robot_.world->log; }
