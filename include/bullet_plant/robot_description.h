@@ -248,8 +248,8 @@ struct RobotDescription
   urdf::ModelInterfaceSharedPtr model;
   bool is_static = false;  // <gazebo><static>true</static></gazebo>: the whole robot never moves
   // Joints whose wrench is measured from the start (URDF's <gazebo reference="JOINT">
-  // <provideFeedback>true</provideFeedback>): Joint::GetForceTorque answers from the first call,
-  // as Gazebo's ODE does for them.
+  // <provideFeedback>true</provideFeedback>, SDF's <physics><provide_feedback>): Joint::GetForceTorque
+  // answers from the first call, as Gazebo's ODE does for them.
   std::set<std::string> joint_feedback;
   ControlPluginDescription control;
   std::vector<TransmissionDescription> transmissions;

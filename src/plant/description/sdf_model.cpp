@@ -500,6 +500,9 @@ void readAxis(urdf::Joint& j, const JointPart& part, const char* axis_tag, const
               const std::string& model, RobotDescription& out)
 {
   j.axis = jointAxis(part, model, axis_tag);
+  // <physics><provide_feedback>: the joint's wrench measured from the start (Joint::GetForceTorque).
+  if (sdf::isTrue(xml::childText(part.element, "physics/provide_feedback", "false")))
+    out.joint_feedback.insert(part.name);
   const tinyxml2::XMLElement* axis = part.element->FirstChildElement(axis_tag);
   const std::string where = "model '" + model + "' joint '" + part.name + "' <" + axis_tag + ">";
   auto limits = std::make_shared<urdf::JointLimits>();
@@ -961,6 +964,9 @@ RobotDescription treeDescription(const RobotDescription& whole, const urdf::Mode
   for (const auto& spring : whole.joint_springs)
     if (tree->joints_.count(spring.first))
       out.joint_springs.insert(spring);
+  for (const std::string& joint : whole.joint_feedback)
+    if (tree->joints_.count(joint))
+      out.joint_feedback.insert(joint);
   for (const std::string& link : whole.frame_links)
     if (tree->links_.count(link))
       out.frame_links.insert(link);
