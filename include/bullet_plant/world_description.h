@@ -68,9 +68,6 @@ struct LightDescription
   double inner_angle = 0.0, outer_angle = 0.0, falloff = 0.0;          // <spot>: rad, full cone angles
   bool cast_shadows = false;  // only a directional light's are drawn, as in Gazebo
   bool lights() const { return kind == Kind::Directional || range > 0; }  // false: left dark (warned)
-  // Gazebo's sun (its model://sun): directional, diffuse 0.8, specular 0.2, from -0.5 0.1 -0.9,
-  // casting shadows.
-  static LightDescription sun();
 };
 
 // The physics step's range: below a nanosecond the step rounds to zero simulated nanoseconds and

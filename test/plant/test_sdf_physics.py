@@ -245,10 +245,9 @@ def test_surface_values_that_mean_nothing_are_left_out_with_a_warning():
     w = bp.World()
     w.echo = False
     box = w.spawn(sdf(box_link('l', (0.2, 0.2, 0.2), 2.0).replace(
-        '</geometry>', '</geometry><surface><friction><ode><mu>0.5</mu><mu2>-1</mu2></ode></friction><contact><ode>'
+        '</geometry>', '</geometry><surface><friction><ode><mu>0.5</mu></ode></friction><contact><ode>'
         '<kp>0</kp><kd>-3</kd><min_depth>-0.5</min_depth></ode></contact></surface>')), 'box', [0, 0, 0.1, 0, 0, 0])
     said = [t for level, t in w.messages() if level == 'WARN' and "collision 'c'" in t]
-    assert any('<mu2> -1 is not a friction coefficient; it is taken as 0' in t for t in said), said
     assert any('<kp> 0 is not above 0; left out' in t for t in said), said
     assert any('<kd> -3 is negative; left out' in t for t in said), said
     assert any('<min_depth> -0.5 is negative; left out' in t for t in said), said

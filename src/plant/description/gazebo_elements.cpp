@@ -6,24 +6,25 @@
 #include <sstream>
 
 #include "bullet_plant/geometry.h"
+#include "description/sdf_elements.h"
 #include "description/xml_util.h"
 
 namespace bullet_plant
 {
 namespace
 {
-void readControlPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
+void readControlPlugin(const sdf::ElementPtr& plugin, RobotDescription& out)
 {
   ControlPluginDescription& c = out.control;
   c.present = true;
-  c.robot_namespace = xml::childText(plugin, "robotNamespace", "");
-  c.robot_param = xml::childText(plugin, "robotParam", "robot_description");
-  c.control_period = xml::childDouble(plugin, "controlPeriod", 0.0);
-  c.e_stop_topic = xml::childText(plugin, "eStopTopic", "");
-  c.legacy_mode_ns_given = plugin->FirstChildElement("legacyModeNS") != nullptr;
-  const std::string legacy = xml::childText(plugin, "legacyModeNS", "true");
+  c.robot_namespace = sdf::childText(plugin, "robotNamespace", "");
+  c.robot_param = sdf::childText(plugin, "robotParam", "robot_description");
+  c.control_period = sdf::childDouble(plugin, "controlPeriod", 0.0);
+  c.e_stop_topic = sdf::childText(plugin, "eStopTopic", "");
+  c.legacy_mode_ns_given = sdf::child(plugin, "legacyModeNS") != nullptr;
+  const std::string legacy = sdf::childText(plugin, "legacyModeNS", "true");
   c.legacy_mode_ns = legacy == "true" || legacy == "1";
-  c.sim_type = xml::childText(plugin, "robotSimType", c.sim_type);
+  c.sim_type = sdf::childText(plugin, "robotSimType", c.sim_type);
   if (c.sim_type != ControlPluginDescription().sim_type)
   {
     // gazebo_ros_control cannot load such a class and leaves the robot without a controller manager.
@@ -34,14 +35,14 @@ void readControlPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out
   }
 }
 
-void readPluginBlock(const tinyxml2::XMLElement* plugin, SensorDescription& d)
+void readPluginBlock(const sdf::ElementPtr& plugin, SensorDescription& d)
 {
-  d.plugin_name = plugin->Attribute("name") ? plugin->Attribute("name") : "";
-  d.plugin_filename = plugin->Attribute("filename") ? plugin->Attribute("filename") : "";
+  d.plugin_name = sdf::attribute(plugin, "name");
+  d.plugin_filename = sdf::attribute(plugin, "filename");
   d.plugin_given = true;
   d.plugin_file = findPluginFile(d.plugin_filename);
-  for (auto* p = plugin->FirstChildElement(); p; p = p->NextSiblingElement())
-    d.plugin[p->Name()] = p->GetText() ? xml::trimmed(p->GetText()) : "";
+  for (sdf::ElementPtr p = plugin->GetFirstElement(); p; p = p->GetNextElement())
+    d.plugin[p->GetName()] = sdf::text(p);
 }
 
 std::string unknownPluginWarning(const std::string& name, const std::string& filename, const std::string& where)
@@ -51,7 +52,7 @@ std::string unknownPluginWarning(const std::string& name, const std::string& fil
 }
 
 // gazebo_ros_imu and gazebo_ros_p3d: model plugins that follow one link (bodyName).
-void readLinkSensorPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out)
+void readLinkSensorPlugin(const sdf::ElementPtr& plugin, RobotDescription& out)
 {
   SensorDescription d;
   readPluginBlock(plugin, d);
@@ -81,14 +82,14 @@ void readLinkSensorPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& 
   out.sensors.push_back(d);
 }
 
-void readNoise(const tinyxml2::XMLElement* parent, Noise& noise)
+void readNoise(const sdf::ElementPtr& parent, Noise& noise)
 {
-  auto* n = parent ? parent->FirstChildElement("noise") : nullptr;
+  sdf::ElementPtr n = sdf::child(parent, "noise");
   if (!n)
     return;
-  noise.gaussian = xml::childText(n, "type", "gaussian") == "gaussian";
-  noise.mean = xml::childDouble(n, "mean", 0.0);
-  noise.stddev = xml::childDouble(n, "stddev", 0.0);
+  noise.gaussian = sdf::childText(n, "type", "gaussian") == "gaussian";
+  noise.mean = sdf::childDouble(n, "mean", 0.0);
+  noise.stddev = sdf::childDouble(n, "stddev", 0.0);
 }
 
 // A count (samples, pixels) as written, in an int: beyond its range the nearest int (converting
@@ -102,9 +103,9 @@ int countOf(double written)
 
 // A <camera>'s <distortion>. A coefficient or centre that is not a finite number is 0 (0.5 for
 // the centre), named in `problems`: Gazebo would warp the frame into nothing.
-void readDistortion(const tinyxml2::XMLElement* cam, CameraDistortion& out, std::vector<std::string>& problems)
+void readDistortion(const sdf::ElementPtr& cam, CameraDistortion& out, std::vector<std::string>& problems)
 {
-  auto* d = cam->FirstChildElement("distortion");
+  sdf::ElementPtr d = sdf::child(cam, "distortion");
   if (!d)
     return;
   out.given = true;
@@ -112,14 +113,14 @@ void readDistortion(const tinyxml2::XMLElement* cam, CameraDistortion& out, std:
   double* values[] = {&out.k1, &out.k2, &out.k3, &out.p1, &out.p2};
   for (int i = 0; i < 5; ++i)
   {
-    *values[i] = xml::childDouble(d, names[i], 0.0);
+    *values[i] = sdf::childDouble(d, names[i], 0.0);
     if (!std::isfinite(*values[i]))
     {
       problems.push_back(std::string("<distortion><") + names[i] + "> is not a finite number; it is taken as 0");
       *values[i] = 0.0;
     }
   }
-  std::istringstream center(xml::childText(d, "center", "0.5 0.5"));
+  std::istringstream center(sdf::childText(d, "center", "0.5 0.5"));
   double x = 0.5, y = 0.5;
   if (!(center >> x >> y) || !std::isfinite(x) || !std::isfinite(y))
   {
@@ -131,69 +132,69 @@ void readDistortion(const tinyxml2::XMLElement* cam, CameraDistortion& out, std:
 }
 
 // A <camera>: its field of view, image, clip, noise and distortion.
-void readCamera(const tinyxml2::XMLElement* cam, SensorDescription& d)
+void readCamera(const sdf::ElementPtr& cam, SensorDescription& d)
 {
-  d.horizontal_fov = xml::childDouble(cam, "horizontal_fov", 1.047);
-  if (auto* image = cam->FirstChildElement("image"))
+  d.horizontal_fov = sdf::childDouble(cam, "horizontal_fov", 1.047);
+  if (sdf::ElementPtr image = sdf::child(cam, "image"))
   {
-    d.image_width = countOf(xml::childDouble(image, "width", 320));
-    d.image_height = countOf(xml::childDouble(image, "height", 240));
-    d.image_format = xml::childText(image, "format", "R8G8B8");
+    d.image_width = countOf(sdf::childDouble(image, "width", 320));
+    d.image_height = countOf(sdf::childDouble(image, "height", 240));
+    d.image_format = sdf::childText(image, "format", "R8G8B8");
   }
-  if (auto* clip = cam->FirstChildElement("clip"))
+  if (sdf::ElementPtr clip = sdf::child(cam, "clip"))
   {
-    d.clip_near = xml::childDouble(clip, "near", 0.1);
-    d.clip_far = xml::childDouble(clip, "far", 100.0);
+    d.clip_near = sdf::childDouble(clip, "near", 0.1);
+    d.clip_far = sdf::childDouble(clip, "far", 100.0);
   }
   readNoise(cam, d.noise);
   readDistortion(cam, d.distortion, d.description_problems);
 }
 
-SensorDescription readSensor(const tinyxml2::XMLElement* s, const std::string& link)
+SensorDescription readSensor(const sdf::ElementPtr& s, const std::string& link)
 {
   SensorDescription d;
   d.link = link;
-  d.name = s->Attribute("name") ? s->Attribute("name") : "";
-  d.type = s->Attribute("type") ? s->Attribute("type") : "";
-  d.update_rate = xml::childDouble(s, "update_rate", 0.0);
-  d.pose = xml::parseSdfPose(xml::childText(s, "pose", ""));
-  if (auto* ray = s->FirstChildElement("ray"))
+  d.name = sdf::attribute(s, "name");
+  d.type = sdf::attribute(s, "type");
+  d.update_rate = sdf::childDouble(s, "update_rate", 0.0);
+  d.pose = sdf::pose(s);
+  if (sdf::ElementPtr ray = sdf::child(s, "ray"))
   {
-    if (auto* h = xml::child(ray, "scan/horizontal"))
+    if (sdf::ElementPtr h = sdf::child(ray, "scan/horizontal"))
     {
-      d.horizontal_samples = countOf(xml::childDouble(h, "samples", 1));
-      d.horizontal_min_angle = xml::childDouble(h, "min_angle", 0.0);
-      d.horizontal_max_angle = xml::childDouble(h, "max_angle", 0.0);
+      d.horizontal_samples = countOf(sdf::childDouble(h, "samples", 1));
+      d.horizontal_min_angle = sdf::childDouble(h, "min_angle", 0.0);
+      d.horizontal_max_angle = sdf::childDouble(h, "max_angle", 0.0);
     }
-    if (auto* v = xml::child(ray, "scan/vertical"))
+    if (sdf::ElementPtr v = sdf::child(ray, "scan/vertical"))
     {
-      d.vertical_samples = countOf(xml::childDouble(v, "samples", 1));
-      d.vertical_min_angle = xml::childDouble(v, "min_angle", 0.0);
-      d.vertical_max_angle = xml::childDouble(v, "max_angle", 0.0);
+      d.vertical_samples = countOf(sdf::childDouble(v, "samples", 1));
+      d.vertical_min_angle = sdf::childDouble(v, "min_angle", 0.0);
+      d.vertical_max_angle = sdf::childDouble(v, "max_angle", 0.0);
     }
-    if (auto* r = ray->FirstChildElement("range"))
+    if (sdf::ElementPtr r = sdf::child(ray, "range"))
     {
-      d.range_min = xml::childDouble(r, "min", 0.0);
-      d.range_max = xml::childDouble(r, "max", 0.0);
-      d.range_resolution = xml::childDouble(r, "resolution", 0.0);
+      d.range_min = sdf::childDouble(r, "min", 0.0);
+      d.range_max = sdf::childDouble(r, "max", 0.0);
+      d.range_resolution = sdf::childDouble(r, "resolution", 0.0);
     }
     readNoise(ray, d.noise);
   }
-  if (auto* cam = s->FirstChildElement("camera"))
+  if (sdf::ElementPtr cam = sdf::child(s, "camera"))
     readCamera(cam, d);
-  if (auto* contact = s->FirstChildElement("contact"))
-    for (auto* c = contact->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
-      d.contact_collisions.push_back(xml::trimmed(c->GetText() ? c->GetText() : ""));
-  if (auto* plugin = s->FirstChildElement("plugin"))
+  if (sdf::ElementPtr contact = sdf::child(s, "contact"))
+    for (sdf::ElementPtr c = sdf::child(contact, "collision"); c; c = c->GetNextElement("collision"))
+      d.contact_collisions.push_back(sdf::text(c));
+  if (sdf::ElementPtr plugin = sdf::child(s, "plugin"))
     readPluginBlock(plugin, d);
   return d;
 }
 
 // A <sensor type="multicamera">: one camera per <camera>, sharing the sensor's rate and plugin.
-std::vector<SensorDescription> readMulticamera(const tinyxml2::XMLElement* s, const std::string& link)
+std::vector<SensorDescription> readMulticamera(const sdf::ElementPtr& s, const std::string& link)
 {
   std::vector<SensorDescription> cameras;
-  for (auto* cam = s->FirstChildElement("camera"); cam; cam = cam->NextSiblingElement("camera"))
+  for (sdf::ElementPtr cam = sdf::child(s, "camera"); cam; cam = cam->GetNextElement("camera"))
   {
     SensorDescription d = readSensor(s, link);
     const SensorDescription defaults;
@@ -207,9 +208,9 @@ std::vector<SensorDescription> readMulticamera(const tinyxml2::XMLElement* s, co
     d.distortion = defaults.distortion;
     d.description_problems = defaults.description_problems;
     readCamera(cam, d);
-    d.multicamera_camera = cam->Attribute("name") ? cam->Attribute("name") : "";
+    d.multicamera_camera = sdf::attribute(cam, "name");
     d.name += "::" + d.multicamera_camera;
-    d.pose = compose(d.pose, xml::parseSdfPose(xml::childText(cam, "pose", "")));
+    d.pose = compose(d.pose, sdf::pose(cam));
     cameras.push_back(std::move(d));
   }
   return cameras;
@@ -217,12 +218,12 @@ std::vector<SensorDescription> readMulticamera(const tinyxml2::XMLElement* s, co
 
 }  // namespace
 
-void readSensors(const tinyxml2::XMLElement* parent, const std::string& link, RobotDescription& out)
+void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDescription& out)
 {
   std::vector<SensorDescription> sensors;
-  for (auto* s = parent->FirstChildElement("sensor"); s; s = s->NextSiblingElement("sensor"))
+  for (sdf::ElementPtr s = sdf::child(parent, "sensor"); s; s = s->GetNextElement("sensor"))
   {
-    if (!s->Attribute("type", "multicamera"))
+    if (sdf::attribute(s, "type") != "multicamera")
       sensors.push_back(readSensor(s, link));
     else
       for (SensorDescription& camera : readMulticamera(s, link))
@@ -248,9 +249,9 @@ void readSensors(const tinyxml2::XMLElement* parent, const std::string& link, Ro
   }
 }
 
-void readModelPlugin(const tinyxml2::XMLElement* p, RobotDescription& out)
+void readModelPlugin(const sdf::ElementPtr& p, RobotDescription& out)
 {
-  const std::string filename = p->Attribute("filename") ? p->Attribute("filename") : "";
+  const std::string filename = sdf::attribute(p, "filename");
   const PluginFile* file = findPluginFile(filename);
   // A library found on the plugin paths is loaded as Gazebo would, even where the plant has its own
   // plugin of that name: whoever built upstream's runs upstream's (gazebo_ros_control stays the
@@ -263,19 +264,19 @@ void readModelPlugin(const tinyxml2::XMLElement* p, RobotDescription& out)
   else if (!library.empty() || (file && file->role == PluginRole::Model))
   {
     ModelPluginDescription d;
-    d.name = p->Attribute("name") ? p->Attribute("name") : "";
+    d.name = sdf::attribute(p, "name");
     d.filename = filename;
-    for (auto* e = p->FirstChildElement(); e; e = e->NextSiblingElement())
-      d.params[e->Name()] = e->GetText() ? xml::trimmed(e->GetText()) : "";
+    for (sdf::ElementPtr e = p->GetFirstElement(); e; e = e->GetNextElement())
+      d.params[e->GetName()] = sdf::text(e);
     if (!library.empty())
     {
       d.library = library;
-      d.xml = xml::printed(p);
+      d.xml = sdf::printed(p);
     }
     out.model_plugins.push_back(std::move(d));
   }
   else
-    out.warnings.push_back(unknownPluginWarning(p->Attribute("name") ? p->Attribute("name") : "", filename, ""));
+    out.warnings.push_back(unknownPluginWarning(sdf::attribute(p, "name"), filename, ""));
 }
 
 }  // namespace bullet_plant

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include <tinyxml2.h>
+#include "description/sdf_elements.h"
 
 #include "bullet_plant/robot_description.h"
 
@@ -13,11 +13,11 @@ namespace bullet_plant
 {
 // The <sensor>s among `parent`'s children, of link `link`, into out.sensors; a sensor plugin the
 // plant does not simulate is warned about, one refused on its sensor is an error (out.errors).
-void readSensors(const tinyxml2::XMLElement* parent, const std::string& link, RobotDescription& out);
+void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDescription& out);
 
 // One model-level <plugin>: gazebo_ros_control, a model plugin following a link (gazebo_ros_imu,
 // gazebo_ros_p3d: out.sensors), one acting on the physics (out.model_plugins); any other file is
 // warned about and ignored. Its link names must already be in out.model.
-void readModelPlugin(const tinyxml2::XMLElement* plugin, RobotDescription& out);
+void readModelPlugin(const sdf::ElementPtr& plugin, RobotDescription& out);
 
 }  // namespace bullet_plant

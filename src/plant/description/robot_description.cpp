@@ -18,6 +18,7 @@
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/registry.h"
 #include "description/gazebo_elements.h"
+#include "description/sdf_elements.h"
 #include "description/xml_util.h"
 
 namespace bullet_plant
@@ -274,6 +275,54 @@ void readTransmissions(const tinyxml2::XMLElement* robot, RobotDescription& out)
   }
 }
 
+// The sensors and plugins of the robot's <gazebo> blocks, read by sdformat as Gazebo reads them (its
+// URDF converter puts a block's <sensor>s in the link it references and the others' <plugin>s in the
+// model): one SDF model of them, a link per block in the blocks' order.
+void readGazeboSensorsAndPlugins(const tinyxml2::XMLElement* robot, RobotDescription& out)
+{
+  std::string text = "<sdf version=\"1.6\"><model name=\"urdf\">";
+  std::vector<std::string> links;  // the link each SDF link stands for, in order
+  bool any = false;
+  for (auto* g = robot->FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo"))
+  {
+    const char* reference = g->Attribute("reference");
+    const char* tag = reference ? "sensor" : "plugin";
+    if (reference && !out.model->getLink(reference))
+      continue;
+    std::string children;
+    for (auto* e = g->FirstChildElement(tag); e; e = e->NextSiblingElement(tag))
+      children += xml::printed(e);
+    if (children.empty())
+      continue;
+    any = true;
+    if (reference)
+    {
+      text += "<link name=\"block" + std::to_string(links.size()) + "\">" + children + "</link>";
+      links.push_back(reference);
+    }
+    else
+      text += children;
+  }
+  if (!any)
+    return;
+  sdf::Document doc;
+  try
+  {
+    doc = sdf::readDocument(text + "</model></sdf>", sdf::Source{"", out.base_dir});
+  }
+  catch (const DescriptionError& e)
+  {
+    throw DescriptionError(std::string("the <sensor>s and <plugin>s of the URDF's <gazebo> blocks: ") + e.what());
+  }
+  const sdf::ElementPtr model = sdf::child(doc.root(), "model");
+  size_t link = 0;
+  for (sdf::ElementPtr e = model->GetFirstElement(); e; e = e->GetNextElement())
+    if (e->GetName() == "plugin")
+      readModelPlugin(e, out);
+    else if (e->GetName() == "link" && link < links.size())
+      readSensors(e, links[link++], out);
+}
+
 void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& out)
 {
   for (auto* g = robot->FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo"))
@@ -285,8 +334,6 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
       const std::string is_static = xml::childText(g, "static", "");
       if (!is_static.empty())
         out.is_static = is_static == "true" || is_static == "1";
-      for (auto* p = g->FirstChildElement("plugin"); p; p = p->NextSiblingElement("plugin"))
-        readModelPlugin(p, out);
       continue;
     }
     std::string link = reference;
@@ -307,8 +354,8 @@ void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& o
     surface.mu2 = xml::childDouble(g, "mu2", surface.mu2);
     surface.kp = xml::childDouble(g, "kp", surface.kp);
     surface.kd = xml::childDouble(g, "kd", surface.kd);
-    readSensors(g, link, out);
   }
+  readGazeboSensorsAndPlugins(robot, out);
 }
 
 }  // namespace

@@ -5,7 +5,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <regex>
+#include <set>
 #include <sstream>
+
+#include <sdf/Console.hh>
+#include <sdf/ParserConfig.hh>
+#include <sdf/parser.hh>
+#include <tinyxml2.h>
 
 #include "bullet_plant/log.h"
 #include "description/resource_uri.h"
@@ -15,11 +23,287 @@ namespace bullet_plant
 {
 namespace sdf
 {
-void parseXml(tinyxml2::XMLDocument& doc, const std::string& text, const Source& source)
+namespace
 {
+namespace fs = std::filesystem;
+
+// The plant's own copies of the two models every Gazebo world includes (model://ground_plane,
+// model://sun), where this package was built and where it is installed: found before the model path,
+// so a world runs the same whether or not Gazebo's model database is installed.
+std::vector<std::string> plantModelDirs()
+{
+  std::vector<std::string> dirs;
+  for (const char* dir : {BULLET_PLANT_SOURCE_MODELS, BULLET_PLANT_INSTALLED_MODELS})
+  {
+    std::error_code ec;
+    if (fs::is_directory(dir, ec))
+      dirs.push_back(dir);
+  }
+  return dirs;
+}
+
+// What sdformat asks when a URI is none it finds itself: model://NAME[/rest] through the model path
+// (GAZEBO_MODEL_PATH and the packages' gazebo_model_path exports), file:// as a path.
+std::string findUri(const std::string& uri)
+{
+  if (uri.rfind("model://", 0) == 0)
+  {
+    const std::string rest = uri.substr(8);
+    const size_t slash = rest.find('/');
+    std::string reason;
+    const std::string dir = findModelDir(rest.substr(0, slash), reason);
+    if (dir.empty() || slash == std::string::npos || slash + 1 == rest.size())
+      return dir;
+    std::error_code ec;
+    const std::string path = dir + rest.substr(slash);
+    return fs::exists(path, ec) ? path : "";
+  }
+  std::error_code ec;
+  if (uri.rfind("file://", 0) == 0 && fs::exists(uri.substr(7), ec))
+    return uri.substr(7);
+  return "";
+}
+
+// sdformat reads an included file with its global configuration (parser.cc's readFile), so the
+// plant sets that one, once: Gazebo sets its own finder there too.
+::sdf::ParserConfig& parserConfig()
+{
+  static std::once_flag configured;
+  std::call_once(configured, [] {
+    ::sdf::ParserConfig& config = ::sdf::ParserConfig::GlobalConfig();
+    for (const std::string& dir : plantModelDirs())
+      config.AddURIPath("model://", dir);
+    config.SetFindCallback(findUri);
+    // Elements SDF does not define (a plugin's own, a robot maker's extensions) are kept, as Gazebo
+    // keeps them, and not reported on the terminal for every document.
+    config.SetUnrecognizedElementsPolicy(::sdf::EnforcementPolicy::LOG);
+  });
+  return ::sdf::ParserConfig::GlobalConfig();
+}
+
+// The file an <include><uri> names, as sdformat finds it (a model directory: its model.config's
+// SDF file); "" when it finds none.
+std::string includedFile(const std::string& uri)
+{
+  const std::string path = ::sdf::findFile(uri, true, true, parserConfig());
+  std::error_code ec;
+  if (path.empty() || !fs::is_directory(path, ec))
+    return path;
+  return ::sdf::getModelFilePath(path);
+}
+
+// sdformat follows <include>s without a limit, so a model that includes itself (through others)
+// would recurse until the stack ends: the include graph is walked first, each file once, and a loop
+// or nesting deeper than kMaxModelDepth refused, naming the chain.
+void checkIncludes(const tinyxml2::XMLElement* e, std::vector<std::string>& chain, std::set<std::string>& checked)
+{
+  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+  {
+    if (std::string(c->Name()) != "include")
+    {
+      checkIncludes(c, chain, checked);
+      continue;
+    }
+    const tinyxml2::XMLElement* uri = c->FirstChildElement("uri");
+    const std::string uri_text = uri && uri->GetText() ? xml::trimmed(uri->GetText()) : "";
+    if (uri_text.empty())  // (sdformat 12 would read a null text)
+      throw DescriptionError("<include> at line " + std::to_string(c->GetLineNum()) + " has no <uri>: name the model "
+                             "it includes (model://NAME, or a file or directory)");
+    const std::string file = includedFile(uri_text);
+    if (file.empty())
+      continue;  // sdformat says so (a warning: the include is skipped)
+    std::error_code ec;
+    const std::string canonical = fs::weakly_canonical(file, ec).string();
+    auto describe = [&] {
+      std::string text;
+      for (const std::string& link : chain)
+        text += "'" + link + "' -> ";
+      return text + "'" + canonical + "'";
+    };
+    if (std::find(chain.begin(), chain.end(), canonical) != chain.end())
+      throw DescriptionError("an include loop (" + describe() + "): a model cannot include itself; break the loop");
+    if (chain.size() >= size_t(kMaxModelDepth))
+      throw DescriptionError("models included " + std::to_string(chain.size() + 1) + " deep (" + describe() +
+                             "); the plant reads at most " + std::to_string(kMaxModelDepth));
+    if (!checked.insert(canonical).second)
+      continue;
+    tinyxml2::XMLDocument doc;
+    if (doc.LoadFile(file.c_str()) != tinyxml2::XML_SUCCESS)
+      throw DescriptionError("SDF '" + file + "' (included as '" + uri_text + "') is not "
+                             "well-formed XML: line " + std::to_string(doc.ErrorLineNum()) + ": " + doc.ErrorStr());
+    chain.push_back(canonical);
+    checkIncludes(doc.RootElement(), chain, checked);
+    chain.pop_back();
+  }
+}
+
+// A fresh SDF object with the spec loaded: sdformat's spec files are parsed once, then cloned.
+::sdf::SDFPtr emptyDocument()
+{
+  static const ::sdf::SDFPtr spec = [] {
+    auto sdf = std::make_shared<::sdf::SDF>();
+    ::sdf::init(sdf);
+    return sdf;
+  }();
+  auto sdf = std::make_shared<::sdf::SDF>();
+  sdf->Root(spec->Root()->Clone());
+  return sdf;
+}
+
+// The element at `line` named `name` in `e` or below it, as the reader of the document's XML saw it.
+const tinyxml2::XMLElement* elementAt(const tinyxml2::XMLNode* e, const std::string& name, int line)
+{
+  for (const tinyxml2::XMLElement* c = e ? e->FirstChildElement() : nullptr; c; c = c->NextSiblingElement())
+  {
+    if (c->GetLineNum() == line && name == c->Name())
+      return c;
+    if (const tinyxml2::XMLElement* found = elementAt(c, name, line))
+      return found;
+  }
+  return nullptr;
+}
+
+// What sdformat said (its console's error lines, without colours and source locations), one line.
+std::string consoleErrors(const std::string& said)
+{
+  std::string out;
+  std::istringstream lines(said);
+  for (std::string line; std::getline(lines, line);)
+  {
+    std::string plain;
+    for (size_t i = 0; i < line.size(); ++i)
+      if (line[i] == '\x1b')
+        i = line.find('m', i);  // an ANSI colour
+      else
+        plain += line[i];
+    const size_t located = plain.find("] ");
+    if (plain.rfind("Error [", 0) != 0 || located == std::string::npos)
+      continue;
+    const std::string message = xml::trimmed(plain.substr(located + 2));
+    if (message.rfind("parse as ", 0) == 0 || out.find(message) != std::string::npos)
+      continue;
+    out += (out.empty() ? "" : "; ") + message;
+  }
+  return out;
+}
+
+// sdformat's refusal, naming the innermost element it could not read in the document (its named
+// ancestors, its text and line: "model 'm' link 'l' <gravity> 'maybe' (line 4)") and what it said.
+std::string refusal(const tinyxml2::XMLDocument& doc, const ::sdf::Errors& errors, const std::string& said)
+{
+  std::string where;
+  for (const ::sdf::Error& error : errors)
+  {
+    const std::string message = error.Message();
+    const std::string prefix = "Error reading element <";
+    if (message.rfind(prefix, 0) != 0 || !error.LineNumber())
+    {
+      if (where.empty() && error.Code() != ::sdf::ErrorCode::ELEMENT_INVALID)
+        where = xml::trimmed(message) + (error.FilePath() ? " in '" + *error.FilePath() + "'" : "") +
+                (error.LineNumber() ? " (line " + std::to_string(*error.LineNumber()) + ")" : "");
+      continue;
+    }
+    const std::string name = message.substr(prefix.size(), message.find('>') - prefix.size());
+    const tinyxml2::XMLElement* e = elementAt(&doc, name, *error.LineNumber());
+    where = "<" + name + ">";
+    if (e && e->GetText())
+      where += " '" + xml::trimmed(e->GetText()) + "'";
+    where += " (line " + std::to_string(*error.LineNumber()) + ")";
+    for (const tinyxml2::XMLElement* up = e ? e->Parent()->ToElement() : nullptr; up;
+         up = up->Parent() ? up->Parent()->ToElement() : nullptr)
+      if (up->Attribute("name"))
+        where = std::string(up->Name()) + " '" + up->Attribute("name") + "' " + where;
+    break;
+  }
+  const std::string reason = consoleErrors(said);
+  return where + (reason.empty() ? "" : ": " + reason);
+}
+
+// sdformat reports through its console and keeps global state (the parser configuration, the
+// console's stream): one document at a time, its messages kept for the refusal.
+std::mutex sdformat_mutex;
+}  // namespace
+
+Document readDocument(const std::string& text, const Source& source)
+{
+  tinyxml2::XMLDocument doc;
   if (doc.Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS)
     throw DescriptionError("SDF " + source.describe() + " is not well-formed XML: line " +
                            std::to_string(doc.ErrorLineNum()) + ": " + doc.ErrorStr());
+  const tinyxml2::XMLElement* root = doc.RootElement();
+  const std::string root_name = root ? root->Name() : "";
+  // The text as sdformat reads it, line for line: a bare <model> or <world> inside an <sdf> of
+  // version 1.6 (an XML declaration before it blanked), an <sdf> without a version given 1.6.
+  std::string sdf_text = text;
+  if (root_name == "model" || root_name == "world")
+  {
+    const size_t declaration = sdf_text.find("<?xml"), end = sdf_text.find("?>");
+    if (declaration != std::string::npos && end != std::string::npos && end < sdf_text.find('<' + root_name))
+      for (size_t i = declaration; i < end + 2; ++i)
+        if (sdf_text[i] != '\n')
+          sdf_text[i] = ' ';
+    sdf_text = "<sdf version=\"1.6\">" + sdf_text + "</sdf>";
+  }
+  else if (root_name != "sdf")
+    throw DescriptionError("SDF " + source.describe() + " has no <sdf> root element (it has <" + root_name + ">)");
+  else if (!root->Attribute("version"))
+  {
+    const size_t open = sdf_text.find("<sdf");
+    sdf_text.insert(open + 4, " version=\"1.6\"");
+  }
+  else if (!std::regex_match(root->Attribute("version"), std::regex("[0-9]+\\.[0-9]+")))
+    throw DescriptionError("SDF " + source.describe() + ": <sdf version=\"" + root->Attribute("version") +
+                           "\"> is not an SDF version: give one as 1.6 is written (sdformat reads 1.0 to " +
+                           ::sdf::SDF::Version() + ")");
+  std::vector<std::string> chain;
+  if (!source.file.empty())
+  {
+    std::error_code ec;
+    chain.push_back(fs::weakly_canonical(source.file, ec).string());
+  }
+  std::set<std::string> checked;
+  checkIncludes(doc.RootElement(), chain, checked);
+
+  Document out;
+  out.sdf = emptyDocument();
+  ::sdf::Errors errors;
+  std::ostringstream said;
+  bool read = false;
+  {
+    std::lock_guard<std::mutex> lock(sdformat_mutex);
+    ::sdf::Console::ConsoleStream& console = ::sdf::Console::Instance()->GetMsgStream();
+    std::ostream* terminal = console.GetStream();
+    console.SetStream(&said);
+    try
+    {
+      read = ::sdf::readString(sdf_text, parserConfig(), out.sdf->Root(), errors);
+    }
+    catch (const std::exception& e)  // sdformat's own (a conversion's std::stoi ...)
+    {
+      said << "Error [sdformat] " << e.what() << "\n";
+    }
+    console.SetStream(terminal);
+  }
+  bool refused = !read;
+  for (const ::sdf::Error& error : errors)
+    if (error.Code() == ::sdf::ErrorCode::URI_LOOKUP)
+    {
+      std::string looked_in;
+      for (const std::string& dir : plantModelDirs())
+        looked_in += dir + ", ";
+      for (const std::string& dir : modelSearchPath())
+        looked_in += dir + ", ";
+      out.warnings.push_back("<include> in " + source.describe() + ": " + xml::trimmed(error.Message()) +
+                             (error.LineNumber() ? " (line " + std::to_string(*error.LineNumber()) + ")" : "") +
+                             "; looked in the plant's models, GAZEBO_MODEL_PATH and the gazebo_model_path exports "
+                             "of the packages on ROS_PACKAGE_PATH: " + looked_in.substr(0, looked_in.size() - 2) +
+                             "; skipped");
+    }
+    else
+      refused = true;
+  if (refused)
+    throw DescriptionError("SDF " + source.describe() + ": sdformat cannot read " + refusal(doc, errors, said.str()));
+  return out;
 }
 
 std::string readFile(const std::string& path, const std::string& what)
@@ -32,34 +316,115 @@ std::string readFile(const std::string& path, const std::string& what)
   return text.str();
 }
 
-std::string directoryOf(const std::string& path) { return std::filesystem::absolute(path).parent_path().string(); }
+std::string directoryOf(const std::string& path) { return fs::absolute(path).parent_path().string(); }
+
+Source sourceOf(const ElementPtr& element, const Source& text)
+{
+  const std::string& file = element ? element->FilePath() : std::string();
+  if (file.empty() || file[0] == '<' || file == text.file)
+    return text;
+  return Source{file, directoryOf(file)};
+}
+
+namespace
+{
+// An element sdformat added because the spec requires it (with the spec's defaults), not written in
+// the document: the plant's readers take it as absent, as they take any element not written (a
+// <surface><contact> without <ode> keeps the plant's own contact, not ODE's defaults).
+bool addedBySpec(const ElementPtr& e) { return !e->GetExplicitlySetInFile(); }
+}  // namespace
+
+ElementPtr child(const ElementPtr& e, const std::string& path)
+{
+  std::stringstream parts(path);
+  ElementPtr found = e;
+  for (std::string part; found && std::getline(parts, part, '/');)
+  {
+    found = found->HasElement(part) ? found->GetElementImpl(part) : ElementPtr();
+    if (found && addedBySpec(found))
+      found = nullptr;
+  }
+  return found;
+}
+
+std::string text(const ElementPtr& e)
+{
+  const ::sdf::ParamPtr value = e ? e->GetValue() : ::sdf::ParamPtr();
+  return value ? xml::trimmed(value->GetAsString()) : "";
+}
+
+std::string childText(const ElementPtr& e, const std::string& path, const std::string& fallback)
+{
+  const ElementPtr c = child(e, path);
+  return c && c->GetValue() ? text(c) : fallback;
+}
+
+double childDouble(const ElementPtr& e, const std::string& path, double fallback)
+{
+  const ElementPtr c = child(e, path);
+  const std::string value = c ? text(c) : "";
+  if (value.empty())
+    return fallback;
+  return xml::numbers(value, 1, "<" + path + ">")[0];
+}
+
+std::string attribute(const ElementPtr& e, const std::string& name, const std::string& fallback)
+{
+  const ::sdf::ParamPtr value = e ? e->GetAttribute(name) : ::sdf::ParamPtr();
+  return value ? value->GetAsString() : fallback;
+}
 
 bool isTrue(const std::string& text) { return text == "true" || text == "1"; }
 
-bool readFlag(const tinyxml2::XMLElement* parent, const char* tag, bool fallback, const std::string& where)
+bool readFlag(const ElementPtr& parent, const char* tag, bool fallback, const std::string& where)
 {
-  const tinyxml2::XMLElement* e = parent ? parent->FirstChildElement(tag) : nullptr;
+  const ElementPtr e = child(parent, tag);
   if (!e)
     return fallback;
-  const std::string text = xml::trimmed(e->GetText() ? e->GetText() : "");
-  std::string lower = text;
+  const std::string value = text(e);
+  std::string lower = value;
   for (char& c : lower)
     c = char(std::tolower(static_cast<unsigned char>(c)));
   if (lower == "true" || lower == "1")
     return true;
   if (lower == "false" || lower == "0")
     return false;
-  throw DescriptionError(where + ": <" + tag + "> '" + text + "' is not a boolean: give true or false (1 or 0)");
+  throw DescriptionError(where + ": <" + tag + "> '" + value + "' is not a boolean: give true or false (1 or 0)");
 }
 
+urdf::Pose pose(const ElementPtr& e, std::string& relative_to)
+{
+  const ElementPtr p = child(e, "pose");
+  relative_to = attribute(p, "relative_to");
+  if (!p)
+    return urdf::Pose();
+  // SDF 1.9's degrees and quaternions: sdformat's own reading of them.
+  if (isTrue(attribute(p, "degrees", "false")) || attribute(p, "rotation_format", "euler_rpy") != "euler_rpy")
+  {
+    const ignition::math::Pose3d value = p->Get<ignition::math::Pose3d>();
+    urdf::Pose out;
+    out.position = urdf::Vector3(value.Pos().X(), value.Pos().Y(), value.Pos().Z());
+    out.rotation = urdf::Rotation(value.Rot().X(), value.Rot().Y(), value.Rot().Z(), value.Rot().W());
+    return out;
+  }
+  return xml::parseSdfPose(text(p));
+}
+
+urdf::Pose pose(const ElementPtr& e)
+{
+  std::string relative_to;
+  return pose(e, relative_to);
+}
+
+std::string printed(const ElementPtr& e) { return e ? e->ToString("") : ""; }
 namespace
 {
-bool readMesh(const tinyxml2::XMLElement* mesh, const std::string& where, const Source& source, Shape& shape,
+bool readMesh(const ElementPtr& mesh, const std::string& where, const Source& source, Shape& shape,
               std::vector<std::string>& warnings, const std::string& left_out)
 {
   shape.kind = Shape::Kind::Mesh;
-  shape.mesh_uri = xml::childText(mesh, "uri", "");
-  std::vector<double> scale = xml::numbers(xml::childText(mesh, "scale", "1 1 1"), 3, where + " <mesh><scale>");
+  shape.mesh_uri = childText(mesh, "uri", "");
+  std::vector<double> scale = xml::numbers(childText(mesh, "scale", "1 1 1"), 3, where + " <mesh><scale>");
   shape.scale = urdf::Vector3(scale[0], scale[1], scale[2]);
   std::string reason;
   shape.mesh_file = resolveUri(shape.mesh_uri, source.dir, reason);
@@ -69,45 +434,45 @@ bool readMesh(const tinyxml2::XMLElement* mesh, const std::string& where, const 
 }
 }  // namespace
 
-bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,
+bool readGeometry(const ElementPtr& geometry, const std::string& where, const Source& source, Shape& shape,
                   std::vector<std::string>& warnings, const std::string& left_out)
 {
-  if (auto* box = geometry->FirstChildElement("box"))
+  if (ElementPtr box = child(geometry, "box"))
   {
     shape.kind = Shape::Kind::Box;
-    std::vector<double> size = xml::numbers(xml::childText(box, "size", "1 1 1"), 3, where + " <box><size>");
+    std::vector<double> size = xml::numbers(childText(box, "size", "1 1 1"), 3, where + " <box><size>");
     for (int i = 0; i < 3; ++i)
     {
       if (!(size[i] > 0 && size[i] <= kMaxLength))
-        throw DescriptionError(where + ": <box><size> " + xml::childText(box, "size", "") +
+        throw DescriptionError(where + ": <box><size> " + childText(box, "size", "") +
                                ": box sizes must be positive and at most " + formatNumber(kMaxLength) + " m");
       shape.box_size[i] = size[i];
     }
   }
-  else if (auto* cylinder = geometry->FirstChildElement("cylinder"))
+  else if (ElementPtr cylinder = child(geometry, "cylinder"))
   {
     shape.kind = Shape::Kind::Cylinder;
-    shape.radius = xml::childDouble(cylinder, "radius", 1.0);
-    shape.length = xml::childDouble(cylinder, "length", 1.0);
+    shape.radius = childDouble(cylinder, "radius", 1.0);
+    shape.length = childDouble(cylinder, "length", 1.0);
     if (!(shape.radius > 0 && shape.length > 0 && shape.radius <= kMaxLength && shape.length <= kMaxLength))
       throw DescriptionError(where + ": <cylinder> radius " + formatNumber(shape.radius) + " length " +
                              formatNumber(shape.length) + ": both must be positive and at most " +
                              formatNumber(kMaxLength) + " m");
   }
-  else if (auto* sphere = geometry->FirstChildElement("sphere"))
+  else if (ElementPtr sphere = child(geometry, "sphere"))
   {
     shape.kind = Shape::Kind::Sphere;
-    shape.radius = xml::childDouble(sphere, "radius", 1.0);
+    shape.radius = childDouble(sphere, "radius", 1.0);
     if (!(shape.radius > 0 && shape.radius <= kMaxLength))
       throw DescriptionError(where + ": <sphere><radius> " + formatNumber(shape.radius) +
                              " must be positive and at most " + formatNumber(kMaxLength) + " m");
   }
-  else if (auto* capsule = geometry->FirstChildElement("capsule"))
+  else if (ElementPtr capsule = child(geometry, "capsule"))
   {
     // SDF 1.8's (sdformat 11); defaults radius 0.5, length 1.
     shape.kind = Shape::Kind::Capsule;
     auto size = [&](const char* tag, double fallback) {
-      const std::string text = xml::childText(capsule, tag, "");
+      const std::string text = childText(capsule, tag, "");
       return text.empty() ? fallback : xml::numbers(text, 1, where + ": <capsule><" + tag + ">")[0];
     };
     shape.radius = size("radius", 0.5);
@@ -117,11 +482,11 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
                              formatNumber(shape.length) + ": the radius must be positive, the length at least 0, "
                              "both at most " + formatNumber(kMaxLength) + " m");
   }
-  else if (auto* ellipsoid = geometry->FirstChildElement("ellipsoid"))
+  else if (ElementPtr ellipsoid = child(geometry, "ellipsoid"))
   {
     // SDF 1.8's (sdformat 11); default radii 1 1 1.
     shape.kind = Shape::Kind::Ellipsoid;
-    const std::string text = xml::childText(ellipsoid, "radii", "1 1 1");
+    const std::string text = childText(ellipsoid, "radii", "1 1 1");
     std::vector<double> radii = xml::numbers(text, 3, where + " <ellipsoid><radii>");
     for (int i = 0; i < 3; ++i)
     {
@@ -131,21 +496,21 @@ bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where
       shape.radii[i] = radii[i];
     }
   }
-  else if (auto* plane = geometry->FirstChildElement("plane"))
+  else if (ElementPtr plane = child(geometry, "plane"))
   {
     shape.kind = Shape::Kind::Plane;
-    std::vector<double> n = xml::numbers(xml::childText(plane, "normal", "0 0 1"), 3, where + " <plane><normal>");
+    std::vector<double> n = xml::numbers(childText(plane, "normal", "0 0 1"), 3, where + " <plane><normal>");
     double norm = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(norm >= 1e-9 && std::isfinite(norm)))
       throw DescriptionError(where + ": <plane><normal> must be a finite vector that is not zero");
     shape.normal = urdf::Vector3(n[0] / norm, n[1] / norm, n[2] / norm);
   }
-  else if (auto* mesh = geometry->FirstChildElement("mesh"))
+  else if (ElementPtr mesh = child(geometry, "mesh"))
     return readMesh(mesh, where, source, shape, warnings, left_out);
   else
   {
-    const tinyxml2::XMLElement* first = geometry->FirstChildElement();
-    warnings.push_back(where + " in " + source.describe() + ": geometry <" + std::string(first ? first->Name() : "") +
+    const ElementPtr first = geometry->GetFirstElement();
+    warnings.push_back(where + " in " + source.describe() + ": geometry <" + std::string(first ? first->GetName() : "") +
                        "> is not supported (box, cylinder, sphere, capsule, ellipsoid, plane, mesh); " + left_out);
     return false;
   }
@@ -192,9 +557,9 @@ const GazeboMaterial kGazeboMaterials[] = {
     {"Gazebo/RedTransparent", {0, 0, 0}, {0, 0, 0, .5f}, {0, 0, 0}, 0, {1, 0, 0}},
 };
 
-Rgba colourOf(const tinyxml2::XMLElement* material, const char* tag, const std::string& where)
+Rgba colourOf(const ElementPtr& material, const char* tag, const std::string& where)
 {
-  const std::string text = xml::childText(material, tag, "");
+  const std::string text = childText(material, tag, "");
   std::istringstream words(text);
   size_t count = 0;
   for (std::string word; words >> word;)
@@ -219,18 +584,18 @@ bool gazeboMaterial(const std::string& name, Material& out)
   return false;
 }
 
-VisualMaterial readMaterial(const tinyxml2::XMLElement* visual, const std::string& where,
+VisualMaterial readMaterial(const ElementPtr& visual, const std::string& where,
                             std::vector<std::string>& warnings)
 {
   VisualMaterial out;
   if (!visual)
     return out;
-  if (visual->FirstChildElement("transparency"))
-    out.transparency = std::max(0.0, std::min(1.0, xml::childDouble(visual, "transparency", 0.0)));
-  const tinyxml2::XMLElement* material = visual->FirstChildElement("material");
+  if (child(visual, "transparency"))
+    out.transparency = std::max(0.0, std::min(1.0, childDouble(visual, "transparency", 0.0)));
+  const ElementPtr material = child(visual, "material");
   if (!material)
     return out;
-  const std::string script = xml::trimmed(xml::childText(material, "script/name", ""));
+  const std::string script = xml::trimmed(childText(material, "script/name", ""));
   if (!script.empty())
   {
     out.has_replace = gazeboMaterial(script, out.replace);
@@ -248,146 +613,39 @@ VisualMaterial readMaterial(const tinyxml2::XMLElement* visual, const std::strin
   for (const Given& g : {Given{"ambient", &out.has_ambient, &out.ambient}, Given{"diffuse", &out.has_diffuse, &out.diffuse},
                          Given{"specular", &out.has_specular, &out.specular},
                          Given{"emissive", &out.has_emissive, &out.emissive}})
-    if (material->FirstChildElement(g.tag))
+    if (child(material, g.tag))
     {
       *g.has = true;
       *g.colour = colourOf(material, g.tag, where);
     }
-  out.shininess = std::max(0.0, xml::childDouble(material, "shininess", 0.0));
+  out.shininess = std::max(0.0, childDouble(material, "shininess", 0.0));
   return out;
 }
 
-SurfaceDescription readSurface(const tinyxml2::XMLElement* collision, const std::string& where)
+SurfaceDescription readSurface(const ElementPtr& collision, const std::string& where)
 {
   SurfaceDescription s;
-  const tinyxml2::XMLElement* surface = collision ? collision->FirstChildElement("surface") : nullptr;
+  const ElementPtr surface = child(collision, "surface");
   if (!surface)
     return s;
   s.given = true;
-  s.mu1 = xml::childDouble(surface, "friction/ode/mu", s.mu1);
-  s.mu2 = xml::childDouble(surface, "friction/ode/mu2", s.mu2);
-  const std::string fdir1 = xml::childText(surface, "friction/ode/fdir1", "");
+  s.mu1 = childDouble(surface, "friction/ode/mu", s.mu1);
+  s.mu2 = childDouble(surface, "friction/ode/mu2", s.mu2);
+  const std::string fdir1 = childText(surface, "friction/ode/fdir1", "");
   if (!fdir1.empty())
   {
     const std::vector<double> d = xml::numbers(fdir1, 3, where + " <surface><friction><ode><fdir1>");
     s.fdir1 = urdf::Vector3(d[0], d[1], d[2]);
   }
-  s.slip1 = xml::childDouble(surface, "friction/ode/slip1", s.slip1);
-  s.slip2 = xml::childDouble(surface, "friction/ode/slip2", s.slip2);
-  s.kp = xml::childDouble(surface, "contact/ode/kp", s.kp);
-  s.kd = xml::childDouble(surface, "contact/ode/kd", s.kd);
-  s.max_vel = xml::childDouble(surface, "contact/ode/max_vel", s.max_vel);
-  s.min_depth = xml::childDouble(surface, "contact/ode/min_depth", s.min_depth);
-  s.restitution = xml::childDouble(surface, "bounce/restitution_coefficient", s.restitution);
-  s.restitution_threshold = xml::childDouble(surface, "bounce/threshold", s.restitution_threshold);
+  s.slip1 = childDouble(surface, "friction/ode/slip1", s.slip1);
+  s.slip2 = childDouble(surface, "friction/ode/slip2", s.slip2);
+  s.kp = childDouble(surface, "contact/ode/kp", s.kp);
+  s.kd = childDouble(surface, "contact/ode/kd", s.kd);
+  s.max_vel = childDouble(surface, "contact/ode/max_vel", s.max_vel);
+  s.min_depth = childDouble(surface, "contact/ode/min_depth", s.min_depth);
+  s.restitution = childDouble(surface, "bounce/restitution_coefficient", s.restitution);
+  s.restitution_threshold = childDouble(surface, "bounce/threshold", s.restitution_threshold);
   return s;
-}
-
-std::string modelFile(const std::string& model_dir)
-{
-  tinyxml2::XMLDocument config;
-  const std::string config_path = model_dir + "/model.config";
-  if (config.LoadFile(config_path.c_str()) != tinyxml2::XML_SUCCESS)
-  {
-    if (config.ErrorID() == tinyxml2::XML_ERROR_FILE_NOT_FOUND)
-      return model_dir + "/model.sdf";
-    throw DescriptionError("model config '" + config_path + "' is not well-formed XML: line " +
-                           std::to_string(config.ErrorLineNum()) + ": " + config.ErrorStr());
-  }
-  const tinyxml2::XMLElement* root = config.FirstChildElement("model");
-  std::string best = "model.sdf";
-  std::vector<double> best_version;
-  for (auto* sdf = root ? root->FirstChildElement("sdf") : nullptr; sdf; sdf = sdf->NextSiblingElement("sdf"))
-  {
-    std::vector<double> version;
-    std::stringstream parts(sdf->Attribute("version") ? sdf->Attribute("version") : "0");
-    for (std::string part; std::getline(parts, part, '.');)
-      version.push_back(std::atof(part.c_str()));
-    if (sdf->GetText() && (best_version.empty() || version > best_version))
-    {
-      best = xml::trimmed(sdf->GetText());
-      best_version = version;
-    }
-  }
-  return model_dir + "/" + best;
-}
-
-std::string includedModelDir(const std::string& uri, const Source& source, std::string& reason)
-{
-  if (uri.rfind("model://", 0) == 0)
-  {
-    std::string name = uri.substr(8);
-    while (!name.empty() && name.back() == '/')
-      name.pop_back();
-    return findModelDir(name, reason);
-  }
-  std::string dir = uri.rfind("file://", 0) == 0 ? uri.substr(7) : uri;
-  if (!dir.empty() && dir[0] != '/' && !source.dir.empty())
-    dir = source.dir + "/" + dir;
-  std::error_code ec;
-  if (std::filesystem::is_directory(dir, ec))
-    return dir;
-  reason = "no model directory at '" + dir + "'";
-  return "";
-}
-
-Source includedSource(const std::string& model_file, const std::string& model_dir, const Source& from,
-                      std::string& loop)
-{
-  Source source{model_file, model_dir, from.includers};
-  if (!from.file.empty())
-    source.includers.push_back(from.file);
-  loop.clear();
-  std::error_code ec;
-  const std::filesystem::path canonical = std::filesystem::weakly_canonical(model_file, ec);
-  for (size_t i = 0; i < source.includers.size(); ++i)
-  {
-    std::error_code other_ec;
-    if (std::filesystem::weakly_canonical(source.includers[i], other_ec) != canonical)
-      continue;
-    for (size_t j = i; j < source.includers.size(); ++j)
-      loop += "'" + source.includers[j] + "' -> ";
-    loop += "'" + model_file + "'";
-    break;
-  }
-  return source;
-}
-
-const tinyxml2::XMLElement* readIncludedModel(const std::string& uri, const Source& from, int depth,
-                                              tinyxml2::XMLDocument& doc, Source& model_source, std::string& why)
-{
-  if (depth > kMaxModelDepth)
-  {
-    why = "models nested too deep (an include loop?)";
-    return nullptr;
-  }
-  const std::string dir = includedModelDir(uri, from, why);
-  if (dir.empty())
-    return nullptr;
-  std::string loop;
-  model_source = includedSource(modelFile(dir), dir, from, loop);
-  if (!loop.empty())
-  {
-    why = "an include loop (" + loop + ")";
-    return nullptr;
-  }
-  parseXml(doc, readFile(model_source.file, "model file"), model_source);
-  const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
-  const tinyxml2::XMLElement* model = sdf ? sdf->FirstChildElement("model") : nullptr;
-  if (!model)
-    why = model_source.describe() + " has no <sdf><model>";
-  return model;
-}
-
-int versionOf(const tinyxml2::XMLElement* element)
-{
-  const tinyxml2::XMLElement* root = element ? element->GetDocument()->FirstChildElement("sdf") : nullptr;
-  const char* version = root ? root->Attribute("version") : nullptr;
-  if (!version)
-    return 106;
-  const std::string text = version;
-  const size_t dot = text.find('.');
-  return std::atoi(text.substr(0, dot).c_str()) * 100 + (dot == std::string::npos ? 0 : std::atoi(text.c_str() + dot + 1));
 }
 
 }  // namespace sdf

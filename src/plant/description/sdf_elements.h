@@ -1,12 +1,15 @@
-// The SDF elements a world's static scenery and a simulated model both read, in one place: where an
-// element came from, <geometry>, <material>s (and gazebo.material's plain colours), <surface>, 1.7's <pose relative_to>, and
-// finding the file of an <include>d model. Private to the plant.
+// SDF as the plant reads it, in one place: every world and model document read once by sdformat
+// (readDocument: its version conversion, <include>s and defaults are Gazebo's own), then the
+// elements a world's static scenery and a simulated model both read from sdformat's tree: where an
+// element came from, <geometry>, <material>s (and gazebo.material's plain colours), <surface>, <pose>.
+// Private to the plant.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include <tinyxml2.h>
+#include <sdf/Element.hh>
+#include <sdf/SDFImpl.hh>
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/robot_description.h"
@@ -15,6 +18,8 @@ namespace bullet_plant
 {
 namespace sdf
 {
+using ElementPtr = ::sdf::ElementPtr;
+
 // Where SDF elements come from: the file messages name, and the directory their relative URIs
 // resolve against (the world file's, or the included model's).
 struct Source
@@ -22,66 +27,78 @@ struct Source
   std::string file;  // "" for SDF given as text
   std::string dir;
   std::string describe() const { return file.empty() ? "the SDF text" : "'" + file + "'"; }
-  // The model files whose <include>s led here, outermost first: an include of one of them (or of
-  // `file`) is a loop.
-  std::vector<std::string> includers;
 };
 
-// Nested includes deeper than this are a loop (a model including itself).
+// Nested includes deeper than this are refused (sdformat itself follows them without a limit).
 constexpr int kMaxModelDepth = 16;
 
-// Throws DescriptionError with the line for XML that is not well-formed.
-void parseXml(tinyxml2::XMLDocument& doc, const std::string& text, const Source& source);
+// An SDF document as sdformat reads it: converted to the newest SDF version sdformat knows (so a
+// 1.4 joint axis or a 1.6 <pose frame> reads as 1.9 writes it), each <include> replaced by the model
+// or light it names (its <name>, <pose>, <static> and <plugin>s applied), elements the spec
+// requires added with the spec's defaults. `warnings`: each <include> that was not found (skipped, as
+// Gazebo skips one).
+struct Document
+{
+  ::sdf::SDFPtr sdf;
+  std::vector<std::string> warnings;
+  ElementPtr root() const { return sdf->Root(); }
+};
+
+// Reads the SDF text `text` (`source`: where it came from). A bare <model> or <world>, or an <sdf>
+// without a version, is read as SDF 1.6 (gazebo_ros's spawn_model sends such). model:// URIs are
+// found through the model path (resource_uri.h), the plant's own ground_plane and sun first.
+// Throws DescriptionError for XML that is not well-formed, an include loop or nesting deeper than
+// kMaxModelDepth, and anything sdformat refuses (naming its errors).
+Document readDocument(const std::string& text, const Source& source);
 std::string readFile(const std::string& path, const std::string& what);
 std::string directoryOf(const std::string& path);
+
+// The Source of `element`: the file sdformat read it from (an included model's file), else `text`,
+// the document's own.
+Source sourceOf(const ElementPtr& element, const Source& text);
+
+// --- Reading sdformat's elements. Each takes a null element as one that is not there. ---
+
+// The first child element along the relative path "a/b"; null when one is missing.
+ElementPtr child(const ElementPtr& e, const std::string& path);
+// The element's value as written (trimmed), or the spec's default where it was not written; "" for
+// an element without a value.
+std::string text(const ElementPtr& e);
+std::string childText(const ElementPtr& e, const std::string& path, const std::string& fallback);
+// A number child; throws DescriptionError naming the element when its text is not a finite number.
+double childDouble(const ElementPtr& e, const std::string& path, double fallback);
+// The attribute `name` as written, or the spec's default; `fallback` where the element has none.
+std::string attribute(const ElementPtr& e, const std::string& name, const std::string& fallback = "");
 bool isTrue(const std::string& text);
 // A boolean child element as sdformat reads one (true, false, 1, 0, any case; `fallback` without the
 // element). Throws DescriptionError naming `where`, the element and its text for anything else.
-bool readFlag(const tinyxml2::XMLElement* parent, const char* tag, bool fallback, const std::string& where);
+bool readFlag(const ElementPtr& parent, const char* tag, bool fallback, const std::string& where);
+// `e`'s <pose> (identity where it has none) and the frame it is relative_to ("" when not given).
+urdf::Pose pose(const ElementPtr& e, std::string& relative_to);
+urdf::Pose pose(const ElementPtr& e);
+// The element as XML text, as a plugin's Load reads it again.
+std::string printed(const ElementPtr& e);
 
 // The shape of a <geometry> (box, cylinder, sphere, plane, mesh with its <scale>, and SDF 1.8's capsule
 // and ellipsoid); false with a
 // warning ending in `left_out` for a geometry the plant does not have or a mesh not found. Throws
 // DescriptionError for a size that is not positive.
-bool readGeometry(const tinyxml2::XMLElement* geometry, const std::string& where, const Source& source, Shape& shape,
+bool readGeometry(const ElementPtr& geometry, const std::string& where, const Source& source, Shape& shape,
                   std::vector<std::string>& warnings, const std::string& left_out = "collision left out");
 
 // A <visual>'s <material> and <transparency> (VisualMaterial): its colours, <shininess>, and a
 // <script> naming one of gazebo.material's plain materials (gazeboMaterial). A script the plant does
 // not know (its own file's, or a textured Gazebo/* one) is said in `warnings` and left out. Throws
 // DescriptionError naming `where` for a colour that is not three or four numbers.
-VisualMaterial readMaterial(const tinyxml2::XMLElement* visual, const std::string& where,
-                            std::vector<std::string>& warnings);
+VisualMaterial readMaterial(const ElementPtr& visual, const std::string& where, std::vector<std::string>& warnings);
 // The material of a Gazebo/* script (media/materials/scripts/gazebo.material) that is colours
 // alone: false for a name that is not one of them.
 bool gazeboMaterial(const std::string& name, Material& out);
 
-// A <collision>'s <surface>: friction (ode mu, mu2, fdir1), bounce and contact (ode kp, kd, max_vel,
-// min_depth), SDF's defaults where absent (the contact's: negative, not given). Throws
-// DescriptionError naming `where` for an fdir1 that is not three numbers.
-SurfaceDescription readSurface(const tinyxml2::XMLElement* collision, const std::string& where);
-
-// The model file model.config names: the <sdf> of the newest version; model.sdf without a config.
-std::string modelFile(const std::string& model_dir);
-// The directory an <include><uri> names: model://NAME through the model path, or a path (relative to
-// the including file's directory); "" with `reason` when there is none.
-std::string includedModelDir(const std::string& uri, const Source& source, std::string& reason);
-
-// The Source of the model file `model_file` in `model_dir` included from `from`; "" in `loop` unless
-// that file is `from`'s own or one of its includers' (an include loop: the chain, "a -> b -> a").
-Source includedSource(const std::string& model_file, const std::string& model_dir, const Source& from,
-                      std::string& loop);
-
-// An <include>'s model, found as Gazebo finds it (includedModelDir, modelFile) and read into `doc`:
-// its <model> element, `model_source` saying where it came from; null with `why` when there is none
-// to read (nested deeper than kMaxModelDepth, not found, an include loop, no <sdf><model> in the
-// file). Throws DescriptionError for a file that is not well-formed XML.
-const tinyxml2::XMLElement* readIncludedModel(const std::string& uri, const Source& from, int depth,
-                                              tinyxml2::XMLDocument& doc, Source& model_source, std::string& why);
-
-// The <sdf version="..."> of the document holding `element`, as major * 100 + minor (1.6 -> 106);
-// 106 when not given.
-int versionOf(const tinyxml2::XMLElement* element);
+// A <collision>'s <surface>: friction (ode mu, mu2, fdir1, slip1, slip2), bounce and contact (ode
+// kp, kd, max_vel, min_depth), SDF's defaults where absent (the contact's: negative, not given).
+// Throws DescriptionError naming `where` for an fdir1 that is not three numbers.
+SurfaceDescription readSurface(const ElementPtr& collision, const std::string& where);
 
 }  // namespace sdf
 }  // namespace bullet_plant
@@ -93,7 +110,7 @@ namespace bullet_plant
 namespace sdf
 {
 // A <model> element read as the plant simulates it (sdf_model.cpp): what parseSdfModel gives, for the
-// world's reader too. `depth`: how deep in includes it is.
-ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& source, int depth = 0);
+// world's reader too. `source`: the document's.
+ModelDescription readModel(const ElementPtr& model, const Source& source);
 }  // namespace sdf
 }  // namespace bullet_plant

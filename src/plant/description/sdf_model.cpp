@@ -26,10 +26,9 @@ constexpr double kSdfUnlimited = 1e16;
 const std::string kModelFrame = "__model__";
 const std::string kWorld = "world";
 
-std::string attribute(const tinyxml2::XMLElement* e, const char* name, const std::string& fallback = "")
+std::string attribute(const sdf::ElementPtr& e, const char* name, const std::string& fallback = "")
 {
-  const char* value = e ? e->Attribute(name) : nullptr;
-  return value ? value : fallback;
+  return sdf::attribute(e, name, fallback);
 }
 
 // A refusal from a shared reader (a number that is not one, "<mass>: 'nan' is not a finite number")
@@ -108,20 +107,12 @@ private:
   std::map<std::string, std::shared_ptr<const FrameGraph>> nested_;
 };
 
-// A <pose>'s text and the frame it is relative to ("" when not given).
-urdf::Pose poseOf(const tinyxml2::XMLElement* e, std::string& relative_to)
-{
-  const tinyxml2::XMLElement* pose = e->FirstChildElement("pose");
-  relative_to = attribute(pose, "relative_to", attribute(pose, "frame"));
-  return xml::parseSdfPose(pose && pose->GetText() ? pose->GetText() : "");
-}
-
 struct LinkPart
 {
   std::string name;  // scoped: "nested::link"
   urdf::Pose pose;   // in the top model's frame
-  const tinyxml2::XMLElement* element;
-  Source source;
+  sdf::ElementPtr element;
+  Source source;  // the file it was read from (an included model's)
   bool model_self_collide;  // the <self_collide> of the model declaring it: the link's default
 };
 
@@ -129,8 +120,7 @@ struct JointPart
 {
   std::string name, type, parent, child;  // scoped names; parent may be "world"
   urdf::Pose pose;                        // the joint frame in the top model's frame
-  const tinyxml2::XMLElement* element;
-  int version;
+  sdf::ElementPtr element;
   urdf::Pose model_frame;  // the frame of the model that declares it, in the top model's frame
   // 1.7's <axis><xyz expressed_in> and <axis2><xyz expressed_in> naming a frame of the declaring model
   // (not __model__): that frame, in the top model's frame.
@@ -142,48 +132,18 @@ struct ModelParts
   std::string name;
   std::vector<LinkPart> links;
   std::vector<JointPart> joints;
-  std::vector<const tinyxml2::XMLElement*> plugins;
-  std::vector<std::unique_ptr<tinyxml2::XMLDocument>> included;  // documents the parts point into
+  std::vector<sdf::ElementPtr> plugins;
 };
-
-std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model, const std::string& scope,
-                                               const urdf::Pose& in_top, const Source& source, int depth,
-                                               ModelParts& parts, RobotDescription& out);
-
-// An <include> inside a model: the included model read as if nested here, its frame added to `frames`
-// under the include's name.
-void collectInclude(const tinyxml2::XMLElement* include, const std::string& scope, const urdf::Pose& in_top,
-                    FrameGraph& frames, const Source& source, int depth, ModelParts& parts, RobotDescription& out)
-{
-  const std::string uri = xml::childText(include, "uri", "");
-  parts.included.emplace_back(new tinyxml2::XMLDocument);
-  Source model_source;
-  std::string why;
-  const tinyxml2::XMLElement* nested =
-      sdf::readIncludedModel(uri, source, depth, *parts.included.back(), model_source, why);
-  if (!nested)
-  {
-    out.warnings.push_back("model '" + parts.name + "': <include> of '" + uri + "': " + why + "; skipped");
-    return;
-  }
-  const std::string name = xml::childText(include, "name", attribute(nested, "name", "model"));
-  std::string relative_to;
-  urdf::Pose pose = include->FirstChildElement("pose") ? poseOf(include, relative_to) : poseOf(nested, relative_to);
-  frames.add(name, FrameGraph::kModel, relative_to, pose);
-  frames.nest(name, collectModel(nested, scope + name + "::", compose(in_top, frames.resolve(relative_to, pose)),
-                                 model_source, depth + 1, parts, out));
-}
 
 // One model's links, joints, plugins and nested models into `parts`, `in_top` being its frame in the
 // top model's; its frames, for the model holding it.
-std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model, const std::string& scope,
+std::shared_ptr<const FrameGraph> collectModel(const sdf::ElementPtr& model, const std::string& scope,
                                                const urdf::Pose& in_top, const Source& source, int depth,
                                                ModelParts& parts, RobotDescription& out)
 {
   if (depth > sdf::kMaxModelDepth * 4)
     throw DescriptionError("model '" + parts.name + "': models nested " + std::to_string(depth) + " deep at '" + scope +
                            "'; the plant reads at most " + std::to_string(sdf::kMaxModelDepth * 4));
-  const int version = sdf::versionOf(model);
   const std::string in_model = "model '" + parts.name + "'" + (scope.empty() ? "" : " (its model '" + scope + "')");
   const bool self_collide = sdf::readFlag(model, "self_collide", false, in_model);
   if (!sdf::readFlag(model, "allow_auto_disable", true, in_model))
@@ -191,11 +151,11 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
   auto graph = std::make_shared<FrameGraph>(parts.name);
   FrameGraph& frames = *graph;
   // Every named frame first: a pose may be relative to one declared after it.
-  for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
+  for (sdf::ElementPtr e = model->GetFirstElement(); e; e = e->GetNextElement())
   {
-    const std::string tag = e->Name(), name = attribute(e, "name");
+    const std::string tag = e->GetName(), name = attribute(e, "name");
     std::string relative_to;
-    const urdf::Pose pose = poseOf(e, relative_to);
+    const urdf::Pose pose = sdf::pose(e, relative_to);
     if (tag == "link")
       frames.add(name, FrameGraph::kLink, relative_to, pose);
     else if (tag == "model")
@@ -206,21 +166,20 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
       frames.add(name, FrameGraph::kFrame, relative_to.empty() ? attached_to : relative_to, pose);
     }
     else if (tag == "joint")
-      frames.add(name, FrameGraph::kJoint, relative_to.empty() ? xml::childText(e, "child", "") : relative_to, pose);
+      frames.add(name, FrameGraph::kJoint, relative_to.empty() ? sdf::childText(e, "child", "") : relative_to, pose);
   }
-  // Nested and included models next: the joints below may name their frames ("inner::link").
-  for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
+  // Nested models next (an <include>d one is one, sdformat having read it in): the joints below may
+  // name their frames ("inner::link").
+  for (sdf::ElementPtr e = model->GetFirstElement(); e; e = e->GetNextElement())
   {
-    const std::string tag = e->Name(), name = attribute(e, "name");
+    const std::string tag = e->GetName(), name = attribute(e, "name");
     if (tag == "model")
-      frames.nest(name, collectModel(e, scope + name + "::", compose(in_top, frames.resolve(name)), source, depth + 1,
-                                     parts, out));
-    else if (tag == "include")
-      collectInclude(e, scope, in_top, frames, source, depth + 1, parts, out);
+      frames.nest(name, collectModel(e, scope + name + "::", compose(in_top, frames.resolve(name)),
+                                     sdf::sourceOf(e, source), depth + 1, parts, out));
   }
-  for (auto* e = model->FirstChildElement(); e; e = e->NextSiblingElement())
+  for (sdf::ElementPtr e = model->GetFirstElement(); e; e = e->GetNextElement())
   {
-    const std::string tag = e->Name(), name = attribute(e, "name");
+    const std::string tag = e->GetName(), name = attribute(e, "name");
     if (tag == "link")
     {
       for (const LinkPart& link : parts.links)
@@ -228,7 +187,7 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
           throw DescriptionError("model '" + parts.name + "': link '" + scope + name + "' is given twice; link names "
                                  "must be unique in a model");
       std::string relative_to;
-      const urdf::Pose pose = poseOf(e, relative_to);
+      const urdf::Pose pose = sdf::pose(e, relative_to);
       parts.links.push_back({scope + name, compose(in_top, frames.resolve(relative_to, pose)), e, source, self_collide});
     }
     else if (tag == "joint")
@@ -237,21 +196,20 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
       joint.name = scope + name;
       joint.type = attribute(e, "type");
       joint.element = e;
-      joint.version = version;
       joint.model_frame = in_top;
-      const std::string parent = xml::childText(e, "parent", ""), child = xml::childText(e, "child", "");
+      const std::string parent = sdf::childText(e, "parent", ""), child = sdf::childText(e, "child", "");
       joint.parent = parent == kWorld ? kWorld : scope + parent;
       joint.child = scope + child;
       if (!frames.has(child) || child == kWorld || child.empty())
         throw DescriptionError("model '" + parts.name + "' joint '" + joint.name + "': <child> '" + child +
                                "' is no link of the model; name one of its links");
       std::string relative_to;
-      const urdf::Pose pose = poseOf(e, relative_to);
+      const urdf::Pose pose = sdf::pose(e, relative_to);
       joint.pose = compose(in_top, frames.resolve(relative_to.empty() ? child : relative_to, pose));
       for (const char* axis_tag : {"axis", "axis2"})
       {
-        const tinyxml2::XMLElement* axis = e->FirstChildElement(axis_tag);
-        const std::string expressed_in = attribute(axis ? axis->FirstChildElement("xyz") : nullptr, "expressed_in");
+        const sdf::ElementPtr axis = sdf::child(e, axis_tag);
+        const std::string expressed_in = attribute(sdf::child(axis, "xyz"), "expressed_in");
         if (expressed_in.empty() || expressed_in == kModelFrame)
           continue;
         if (!frames.has(expressed_in))
@@ -264,7 +222,7 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
     }
     else if (tag == "plugin")
       parts.plugins.push_back(e);
-    else if (tag == "enable_wind" && sdf::isTrue(xml::trimmed(e->GetText() ? e->GetText() : "")))
+    else if (tag == "enable_wind" && sdf::isTrue(sdf::text(e)))
       out.warnings.push_back("model '" + parts.name + "': <enable_wind> is ignored (the plant has no wind)");
   }
   return graph;
@@ -272,24 +230,24 @@ std::shared_ptr<const FrameGraph> collectModel(const tinyxml2::XMLElement* model
 
 // <inertial>: SDF's defaults (mass 1 kg, unit moments) where absent; the mass and inertia checked as
 // a physics engine needs them.
-urdf::InertialSharedPtr readInertial(const tinyxml2::XMLElement* link, const std::string& model, const std::string& name)
+urdf::InertialSharedPtr readInertial(const sdf::ElementPtr& link, const std::string& model, const std::string& name)
 {
   auto inertial = std::make_shared<urdf::Inertial>();
   inertial->mass = 1.0;
   inertial->ixx = inertial->iyy = inertial->izz = 1.0;
   inertial->ixy = inertial->ixz = inertial->iyz = 0.0;
-  const tinyxml2::XMLElement* e = link->FirstChildElement("inertial");
+  const sdf::ElementPtr e = sdf::child(link, "inertial");
   const std::string where = "model '" + model + "' link '" + name + "': <inertial>";
   if (e)
   {
-    inertial->mass = xml::childDouble(e, "mass", 1.0);
-    inertial->origin = xml::parseSdfPose(xml::childText(e, "pose", ""));
-    inertial->ixx = xml::childDouble(e, "inertia/ixx", 1.0);
-    inertial->iyy = xml::childDouble(e, "inertia/iyy", 1.0);
-    inertial->izz = xml::childDouble(e, "inertia/izz", 1.0);
-    inertial->ixy = xml::childDouble(e, "inertia/ixy", 0.0);
-    inertial->ixz = xml::childDouble(e, "inertia/ixz", 0.0);
-    inertial->iyz = xml::childDouble(e, "inertia/iyz", 0.0);
+    inertial->mass = sdf::childDouble(e, "mass", 1.0);
+    inertial->origin = sdf::pose(e);
+    inertial->ixx = sdf::childDouble(e, "inertia/ixx", 1.0);
+    inertial->iyy = sdf::childDouble(e, "inertia/iyy", 1.0);
+    inertial->izz = sdf::childDouble(e, "inertia/izz", 1.0);
+    inertial->ixy = sdf::childDouble(e, "inertia/ixy", 0.0);
+    inertial->ixz = sdf::childDouble(e, "inertia/ixz", 0.0);
+    inertial->iyz = sdf::childDouble(e, "inertia/iyz", 0.0);
   }
   if (!(inertial->mass > 0) || inertial->mass > kMaxLinkMass)
     throw DescriptionError(where + "<mass> " + formatNumber(inertial->mass) + " is not a mass the plant can simulate: "
@@ -381,11 +339,11 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
   link->name = part.name;
   link->inertial = readInertial(part.element, model, part.name);
   const std::string in_link = "model '" + model + "' link '" + part.name + "'";
-  for (auto* c = part.element->FirstChildElement("collision"); c; c = c->NextSiblingElement("collision"))
+  for (sdf::ElementPtr c = sdf::child(part.element, "collision"); c; c = c->GetNextElement("collision"))
   {
     const std::string name = attribute(c, "name", "collision");
     const std::string where = in_link + " collision '" + name + "'";
-    const tinyxml2::XMLElement* geometry = c->FirstChildElement("geometry");
+    const sdf::ElementPtr geometry = sdf::child(c, "geometry");
     Shape shape;
     if (!geometry)
     {
@@ -401,7 +359,7 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
     }
     auto collision = std::make_shared<urdf::Collision>();
     collision->name = name;
-    collision->origin = xml::parseSdfPose(xml::childText(c, "pose", ""));
+    collision->origin = sdf::pose(c);
     collision->geometry = toUrdfGeometry(shape);
     link->collision_array.push_back(collision);
     SurfaceDescription surface = sdf::readSurface(c, where);
@@ -411,10 +369,10 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
   }
   if (!link->collision_array.empty())
     link->collision = link->collision_array.front();
-  for (auto* v = part.element->FirstChildElement("visual"); v; v = v->NextSiblingElement("visual"))
+  for (sdf::ElementPtr v = sdf::child(part.element, "visual"); v; v = v->GetNextElement("visual"))
   {
     const std::string name = attribute(v, "name", "visual");
-    const tinyxml2::XMLElement* geometry = v->FirstChildElement("geometry");
+    const sdf::ElementPtr geometry = sdf::child(v, "geometry");
     Shape shape;
     if (!geometry || !sdf::readGeometry(geometry, in_link + " visual '" + name + "'", part.source, shape, out.warnings,
                                         "cameras do not see it") ||
@@ -422,7 +380,7 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
       continue;
     auto visual = std::make_shared<urdf::Visual>();
     visual->name = name;
-    visual->origin = xml::parseSdfPose(xml::childText(v, "pose", ""));
+    visual->origin = sdf::pose(v);
     visual->geometry = toUrdfGeometry(shape);
     const VisualMaterial material = sdf::readMaterial(v, in_link + " visual '" + name + "'", out.warnings);
     out.visual_materials[part.name].push_back(material);
@@ -445,15 +403,15 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
   return link;
 }
 
-// The joint's axis (`axis_tag`: axis or axis2) in the joint frame: SDF 1.4 gives it in the model
-// frame (sdformat's 1.4 to 1.5 converter adds <use_parent_model_frame>true), 1.5 and 1.6 where
-// <use_parent_model_frame> says (default: the joint frame), 1.7 where <xyz expressed_in> says (1.7's
-// converter turns use_parent_model_frame into expressed_in="__model__"; default: the joint frame).
+// The joint's axis (`axis_tag`: axis or axis2) in the joint frame: in the frame <xyz expressed_in>
+// names (default: the joint frame). sdformat's converters bring older files there: 1.4 gave the axis
+// in the model frame, 1.5 and 1.6 where <use_parent_model_frame> said, which becomes
+// expressed_in="__model__".
 urdf::Vector3 jointAxis(const JointPart& joint, const std::string& model, const char* axis_tag = "axis")
 {
-  const tinyxml2::XMLElement* axis = joint.element->FirstChildElement(axis_tag);
-  const tinyxml2::XMLElement* xyz_element = axis ? axis->FirstChildElement("xyz") : nullptr;
-  const std::string text = xyz_element && xyz_element->GetText() ? xyz_element->GetText() : "0 0 1";
+  const sdf::ElementPtr axis = sdf::child(joint.element, axis_tag);
+  const sdf::ElementPtr xyz_element = sdf::child(axis, "xyz");
+  const std::string text = xyz_element ? sdf::text(xyz_element) : "0 0 1";
   const std::string where = "model '" + model + "' joint '" + joint.name + "': <" + axis_tag + "><xyz>";
   const std::vector<double> xyz = xml::numbers(text, 3, where);
   const double norm = std::sqrt(xyz[0] * xyz[0] + xyz[1] * xyz[1] + xyz[2] * xyz[2]);
@@ -462,9 +420,7 @@ urdf::Vector3 jointAxis(const JointPart& joint, const std::string& model, const 
                            "not zero");
   urdf::Vector3 v(xyz[0] / norm, xyz[1] / norm, xyz[2] / norm);
   const std::string expressed_in = attribute(xyz_element, "expressed_in");
-  const bool in_model = joint.version < 105 ||
-                        (joint.version < 107 && sdf::isTrue(xml::childText(axis, "use_parent_model_frame", "false"))) ||
-                        expressed_in == kModelFrame;
+  const bool in_model = expressed_in == kModelFrame;
   const auto named = joint.axis_frames.find(axis_tag);
   if (in_model || named != joint.axis_frames.end())
   {
@@ -501,15 +457,15 @@ void readAxis(urdf::Joint& j, const JointPart& part, const char* axis_tag, const
 {
   j.axis = jointAxis(part, model, axis_tag);
   // <physics><provide_feedback>: the joint's wrench measured from the start (Joint::GetForceTorque).
-  if (sdf::isTrue(xml::childText(part.element, "physics/provide_feedback", "false")))
+  if (sdf::isTrue(sdf::childText(part.element, "physics/provide_feedback", "false")))
     out.joint_feedback.insert(part.name);
-  const tinyxml2::XMLElement* axis = part.element->FirstChildElement(axis_tag);
+  const sdf::ElementPtr axis = sdf::child(part.element, axis_tag);
   const std::string where = "model '" + model + "' joint '" + part.name + "' <" + axis_tag + ">";
   auto limits = std::make_shared<urdf::JointLimits>();
-  limits->lower = xml::childDouble(axis, "limit/lower", -kSdfUnlimited);
-  limits->upper = xml::childDouble(axis, "limit/upper", kSdfUnlimited);
-  limits->effort = xml::childDouble(axis, "limit/effort", -1.0);
-  limits->velocity = xml::childDouble(axis, "limit/velocity", -1.0);
+  limits->lower = sdf::childDouble(axis, "limit/lower", -kSdfUnlimited);
+  limits->upper = sdf::childDouble(axis, "limit/upper", kSdfUnlimited);
+  limits->effort = sdf::childDouble(axis, "limit/effort", -1.0);
+  limits->velocity = sdf::childDouble(axis, "limit/velocity", -1.0);
   if (std::isnan(limits->lower) || std::isnan(limits->upper))
     throw DescriptionError(where + "<limit>: lower and upper must be numbers");
   // SDF: a negative effort or velocity limit is none.
@@ -529,18 +485,18 @@ void readAxis(urdf::Joint& j, const JointPart& part, const char* axis_tag, const
   j.type = type == "prismatic" ? urdf::Joint::PRISMATIC
            : type == "continuous" || unlimited ? urdf::Joint::CONTINUOUS
                                                : urdf::Joint::REVOLUTE;
-  if (const tinyxml2::XMLElement* dynamics = axis ? axis->FirstChildElement("dynamics") : nullptr)
+  if (const sdf::ElementPtr dynamics = sdf::child(axis, "dynamics"))
   {
     j.dynamics = std::make_shared<urdf::JointDynamics>();
-    j.dynamics->damping = xml::childDouble(dynamics, "damping", 0.0);
-    j.dynamics->friction = xml::childDouble(dynamics, "friction", 0.0);
+    j.dynamics->damping = sdf::childDouble(dynamics, "damping", 0.0);
+    j.dynamics->friction = sdf::childDouble(dynamics, "friction", 0.0);
     if (!(j.dynamics->damping >= 0 && std::isfinite(j.dynamics->damping)) ||
         !(j.dynamics->friction >= 0 && std::isfinite(j.dynamics->friction)))
       throw DescriptionError(where + "<dynamics>: damping " + formatNumber(j.dynamics->damping) + " and friction " +
                              formatNumber(j.dynamics->friction) + " must be finite numbers >= 0");
     JointSpring spring;
-    spring.stiffness = xml::childDouble(dynamics, "spring_stiffness", 0.0);
-    spring.reference = xml::childDouble(dynamics, "spring_reference", 0.0);
+    spring.stiffness = sdf::childDouble(dynamics, "spring_stiffness", 0.0);
+    spring.reference = sdf::childDouble(dynamics, "spring_reference", 0.0);
     if (!(spring.stiffness >= 0) || !std::isfinite(spring.stiffness) || !std::isfinite(spring.reference))
       throw DescriptionError(where + "<dynamics>: spring_stiffness " + formatNumber(spring.stiffness) +
                              " must be a finite number >= 0, spring_reference finite");
@@ -594,11 +550,11 @@ urdf::Joint& splitJoint(urdf::ModelInterface& tree, urdf::Joint& first, const st
 // advances more than kMaxLength a turn.
 double screwAdvancePerRadian(const JointPart& part, const std::string& model)
 {
-  const tinyxml2::XMLElement* e = part.element;
+  const sdf::ElementPtr e = part.element;
   const std::string where = "model '" + model + "' joint '" + part.name + "' (screw)";
-  const bool per_turn = !e->FirstChildElement("thread_pitch") && e->FirstChildElement("screw_thread_pitch");
+  const bool per_turn = !sdf::child(e, "thread_pitch") && sdf::child(e, "screw_thread_pitch");
   const char* tag = per_turn ? "screw_thread_pitch" : "thread_pitch";
-  const double value = xml::childDouble(e, tag, 1.0);  // sdformat's default for either
+  const double value = sdf::childDouble(e, tag, 1.0);  // sdformat's default for either
   const double advance = per_turn ? value / (2 * M_PI) : -1.0 / value;
   if (!(value != 0) || !std::isfinite(value) || !(std::abs(advance) * 2 * M_PI <= kMaxLength))
     throw DescriptionError(where + ": <" + tag + "> " + formatNumber(value) + " is no thread: give " +
@@ -633,7 +589,7 @@ void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pos
     readAxis(*j, part, "axis", type, model, out);
   else if (type == "universal" || type == "revolute2")
   {
-    if (!part.element->FirstChildElement("axis2"))
+    if (!sdf::child(part.element, "axis2"))
       throw DescriptionError(where + " of type '" + type + "' has no <axis2>: give its second axis");
     readAxis(*j, part, "axis", "revolute", model, out);
     urdf::Joint& second = splitJoint(tree, *j, part.name + "::__axis2_frame__", part.name + "::axis2", model, out);
@@ -645,7 +601,7 @@ void addJoint(urdf::ModelInterface& tree, const JointPart& part, const urdf::Pos
   {
     j->type = urdf::Joint::FLOATING;
     out.ball_joints.insert(part.name);
-    if (part.element->FirstChildElement("axis") || part.element->FirstChildElement("axis2"))
+    if (sdf::child(part.element, "axis") || sdf::child(part.element, "axis2"))
       out.warnings.push_back(where + " (ball): its <axis> is ignored: a ball joint turns freely about its origin, "
                              "without an axis, limits, damping or friction, as Gazebo's");
   }
@@ -697,14 +653,14 @@ std::string rigidRoot(std::string link, const std::map<std::string, const JointP
 // world). In the plant's tree that ties the two revolute joints' positions, q_child = m q_parent
 // with m = -ratio times the signs of the joints' axes along the gearbox's: a coupling
 // (RobotDescription::joint_couplings). A gearbox the plant cannot tie so is left out with an error,
-// the model moving on without it; a ratio that is no number refuses the model (xml::childDouble).
+// the model moving on without it; a ratio that is no number refuses the model (sdf::childDouble).
 void coupleGears(const JointPart& gearbox, const std::map<std::string, const LinkPart*>& links,
                  const std::map<std::string, const JointPart*>& hangs_from, const std::string& model,
                  RobotDescription& out)
 {
   const std::string where = "model '" + model + "' joint '" + gearbox.name + "' (gearbox)";
-  const double ratio = xml::childDouble(gearbox.element, "gearbox_ratio", 1.0);
-  const std::string reference = xml::trimmed(xml::childText(gearbox.element, "gearbox_reference_body", ""));
+  const double ratio = sdf::childDouble(gearbox.element, "gearbox_ratio", 1.0);
+  const std::string reference = xml::trimmed(sdf::childText(gearbox.element, "gearbox_reference_body", ""));
   auto leaveOut = [&](const std::string& why) {
     out.errors.push_back(where + ": " + why + "; the gears are not coupled");
   };
@@ -986,21 +942,20 @@ RobotDescription treeDescription(const RobotDescription& whole, const urdf::Mode
 
 namespace sdf
 {
-ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& source, int depth)
+ModelDescription readModel(const ElementPtr& model, const Source& source)
 {
   ModelDescription out;
   out.name = attribute(model, "name", "model");
 
   out.robot.base_dir = source.dir;
   out.robot.format = RobotDescription::Format::Sdf;
-  out.robot.is_static = isTrue(xml::childText(model, "static", "false"));
+  out.robot.is_static = isTrue(childText(model, "static", "false"));
   ModelParts parts;
   parts.name = out.name;
   try
   {
-    std::string relative_to;
-    out.pose = poseOf(model, relative_to);
-    collectModel(model, "", urdf::Pose(), source, depth, parts, out.robot);
+    out.pose = pose(model);
+    collectModel(model, "", urdf::Pose(), source, 0, parts, out.robot);
   }
   catch (const DescriptionError& e)
   {
@@ -1008,7 +963,7 @@ ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& sour
   }
   std::vector<urdf::ModelInterfaceSharedPtr> other_trees;
   buildTree(parts, out.robot, other_trees);
-  for (const tinyxml2::XMLElement* plugin : parts.plugins)
+  for (const ElementPtr& plugin : parts.plugins)
     readModelPlugin(plugin, out.robot);
   if (!other_trees.empty())
   {
@@ -1023,23 +978,16 @@ ModelDescription readModel(const tinyxml2::XMLElement* model, const Source& sour
 
 ModelDescription parseSdfModel(const std::string& sdf_xml, const std::string& base_dir)
 {
-  const Source source{"", base_dir};
-  tinyxml2::XMLDocument doc;
-  sdf::parseXml(doc, sdf_xml, source);
-  const tinyxml2::XMLElement* root = doc.RootElement();
-  const tinyxml2::XMLElement* model = nullptr;
-  if (root && std::string(root->Name()) == "model")
-    model = root;
-  else if (root && std::string(root->Name()) == "sdf")
-  {
-    model = root->FirstChildElement("model");
-    if (!model)
-      if (const tinyxml2::XMLElement* world = root->FirstChildElement("world"))
-        model = world->FirstChildElement("model");
-  }
+  const sdf::Source source{"", base_dir};
+  const sdf::Document doc = sdf::readDocument(sdf_xml, source);
+  sdf::ElementPtr model = sdf::child(doc.root(), "model");
+  if (!model)
+    model = sdf::child(doc.root(), "world/model");
   if (!model)
     throw DescriptionError("SDF has no <model> (an <sdf> with a <model> in it)");
-  return sdf::readModel(model, source);
+  ModelDescription out = sdf::readModel(model, source);
+  out.robot.warnings.insert(out.robot.warnings.end(), doc.warnings.begin(), doc.warnings.end());
+  return out;
 }
 
 ModelDescription parseModelXml(const std::string& xml, const std::string& base_dir)
