@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <sdf/Element.hh>
 #include <urdf_model/model.h>
 #include <urdf_world/types.h>
 
@@ -100,8 +101,11 @@ struct ModelPluginDescription
   std::map<std::string, std::string> params;  // child element -> its text
   // A Gazebo plugin library of the user's own: the file `filename` found on the plugin paths
   // (findGazeboPluginLibrary), loaded as Gazebo loads it (src/plant/gazebo_host/); "" for the
-  // plant's own plugin of that name. `xml`: the <plugin> element as written, for its Load.
-  std::string library, xml;
+  // plant's own plugin of that name.
+  std::string library;
+  // The <plugin> element as sdformat read it, for its Load, and the root of the document it is in,
+  // which keeps its ancestors (its model, the world) for its GetParent().
+  ::sdf::ElementPtr element, document;
 
   bool has(const std::string& key) const { return params.count(key) > 0; }
   std::string text(const std::string& key, const std::string& fallback) const;

@@ -81,7 +81,9 @@ constexpr int kMaxSolverIterations = 1000;
 struct WorldPluginDescription
 {
   std::string name, filename, library;
-  std::string xml;  // the <plugin> element as written, for its Load
+  // The <plugin> element as sdformat read it, for its Load, and the root of the world's document,
+  // which keeps its ancestors for its GetParent().
+  ::sdf::ElementPtr element, document;
 };
 
 struct WorldDescription

@@ -86,6 +86,8 @@ def sim(tmp_path_factory):
     (models / 'tiny_box' / 'tiny.sdf').write_text(sdf(box_sdf('tiny_box', size=0.1, pose='0 0 0.05 0 0 0')))
     (models / 'tiny_post').mkdir()
     (models / 'tiny_post' / 'model.sdf').write_text(sdf(box_sdf('tiny_post', size=0.1, static=True)))
+    (models / 'tiny_post' / 'model.config').write_text(  # which Gazebo's include needs (sdformat's rule)
+        '<model><name>tiny_post</name><sdf version="1.6">model.sdf</sdf></model>')
     (work / 'box.sdf').write_text(sdf(box_sdf('from_file', pose='0.5 0 0.1 0 0 0')))
     world = work / 'falling.world'
     world.write_text(sdf_world(box_sdf('crate', pose='0 -3 1 0 0 0') + PENDULUM + SWIVEL + PAIR + BAD_TOPIC))

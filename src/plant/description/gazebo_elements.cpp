@@ -271,7 +271,8 @@ void readModelPlugin(const sdf::ElementPtr& p, RobotDescription& out)
     if (!library.empty())
     {
       d.library = library;
-      d.xml = sdf::printed(p);
+      d.element = p;
+      d.document = sdf::root(p);
     }
     out.model_plugins.push_back(std::move(d));
   }

@@ -280,7 +280,12 @@ void readTransmissions(const tinyxml2::XMLElement* robot, RobotDescription& out)
 // model): one SDF model of them, a link per block in the blocks' order.
 void readGazeboSensorsAndPlugins(const tinyxml2::XMLElement* robot, RobotDescription& out)
 {
-  std::string text = "<sdf version=\"1.6\"><model name=\"urdf\">";
+  // (the model named as the robot, which a plugin's GetParent() finds)
+  std::string name;
+  for (const char c : out.model->getName())
+    name += c == '"' ? std::string("&quot;") : c == '&' ? std::string("&amp;") : c == '<' ? std::string("&lt;")
+                                                                                         : std::string(1, c);
+  std::string text = "<sdf version=\"1.6\"><model name=\"" + name + "\">";
   std::vector<std::string> links;  // the link each SDF link stands for, in order
   bool any = false;
   for (auto* g = robot->FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo"))

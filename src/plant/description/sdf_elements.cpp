@@ -293,9 +293,12 @@ Document readDocument(const std::string& text, const Source& source)
         looked_in += dir + ", ";
       for (const std::string& dir : modelSearchPath())
         looked_in += dir + ", ";
-      out.warnings.push_back("<include> in " + source.describe() + ": " + xml::trimmed(error.Message()) +
-                             (error.LineNumber() ? " (line " + std::to_string(*error.LineNumber()) + ")" : "") +
-                             "; looked in the plant's models, GAZEBO_MODEL_PATH and the gazebo_model_path exports "
+      const std::string message = xml::trimmed(error.Message());
+      const size_t uri = message.find("uri["), end = message.find(']', uri);
+      out.warnings.push_back("<include> of '" + (uri == std::string::npos ? "" : message.substr(uri + 4, end - uri - 4)) +
+                             "' in " + source.describe() +
+                             (error.LineNumber() ? " (line " + std::to_string(*error.LineNumber()) + ")" : "") + ": " +
+                             message + "; looked in the plant's models, GAZEBO_MODEL_PATH and the gazebo_model_path exports "
                              "of the packages on ROS_PACKAGE_PATH: " + looked_in.substr(0, looked_in.size() - 2) +
                              "; skipped");
     }
@@ -416,7 +419,13 @@ urdf::Pose pose(const ElementPtr& e)
   return pose(e, relative_to);
 }
 
-std::string printed(const ElementPtr& e) { return e ? e->ToString("") : ""; }
+ElementPtr root(const ElementPtr& e)
+{
+  ElementPtr up = e;
+  while (up && up->GetParent())
+    up = up->GetParent();
+  return up;
+}
 namespace
 {
 bool readMesh(const ElementPtr& mesh, const std::string& where, const Source& source, Shape& shape,

@@ -76,8 +76,8 @@ bool readFlag(const ElementPtr& parent, const char* tag, bool fallback, const st
 // `e`'s <pose> (identity where it has none) and the frame it is relative_to ("" when not given).
 urdf::Pose pose(const ElementPtr& e, std::string& relative_to);
 urdf::Pose pose(const ElementPtr& e);
-// The element as XML text, as a plugin's Load reads it again.
-std::string printed(const ElementPtr& e);
+// The root of the document `e` is in (its elements hold their parents weakly).
+ElementPtr root(const ElementPtr& e);
 
 // The shape of a <geometry> (box, cylinder, sphere, plane, mesh with its <scale>, and SDF 1.8's capsule
 // and ellipsoid); false with a

@@ -266,7 +266,8 @@ void addWorldPlugin(const sdf::ElementPtr& e, const Source& source, WorldDescrip
                              " is not run: no such file on GAZEBO_PLUGIN_PATH or LD_LIBRARY_PATH; skipped");
     return;
   }
-  plugin.xml = sdf::printed(e);
+  plugin.element = e;
+  plugin.document = sdf::root(e);
   world.plugins.push_back(std::move(plugin));
 }
 
@@ -601,7 +602,7 @@ ModelDescription readModelRequest(const std::string& model_xml, bool include_at_
   {
     // Not found: the world reader's warning names the URI and where it looked.
     for (const std::string& warning : found.warnings)
-      if (warning.find("uri[" + uri + "]") != std::string::npos)
+      if (warning.rfind("<include> of '" + uri + "'", 0) == 0)
         throw DescriptionError(warning);
     // Found, but <static>: scenery to a world; spawned, a model fixed where it is put, as Gazebo's.
     tinyxml2::XMLElement* static_element = include->FirstChildElement("static");

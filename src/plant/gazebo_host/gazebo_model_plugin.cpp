@@ -7,8 +7,6 @@
 #include <memory>
 #include <string>
 
-#include <tinyxml2.h>
-
 #include <gazebo/common/Plugin.hh>
 #include <gazebo/physics/Model.hh>
 #include <gazebo/physics/World.hh>
@@ -24,19 +22,17 @@ namespace
 constexpr const char* kNotLoaded = "; the plugin is not loaded";
 
 // gazebo_ros's spawn with -robot_namespace gives each <plugin> that names no <robotNamespace> one,
-// the spawn's (gazebo_ros_api_plugin's walkChildAddRobotNamespace): the plugin's XML with it.
-std::string withSpawnNamespace(const std::string& xml, const std::string& spawn_namespace)
+// the spawn's (gazebo_ros_api_plugin's walkChildAddRobotNamespace): added to the plugin's element.
+void addSpawnNamespace(const sdf::ElementPtr& plugin, const std::string& spawn_namespace)
 {
-  if (spawn_namespace.empty())
-    return xml;
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS || !doc.RootElement() ||
-      doc.RootElement()->FirstChildElement("robotNamespace"))
-    return xml;
-  doc.RootElement()->InsertNewChildElement("robotNamespace")->SetText(spawn_namespace.c_str());
-  tinyxml2::XMLPrinter printer(nullptr, true);
-  doc.Print(&printer);
-  return printer.CStr();
+  if (spawn_namespace.empty() || plugin->HasElement("robotNamespace"))
+    return;
+  // (as sdformat keeps a plugin's own elements: a string value, no description)
+  sdf::ElementPtr ns(new sdf::Element);
+  ns->SetName("robotNamespace");
+  ns->AddValue("string", spawn_namespace, true);
+  ns->SetParent(plugin);
+  plugin->InsertElement(ns);
 }
 
 class GazeboModelPluginHost final : public ModelPlugin
@@ -54,14 +50,15 @@ public:
                                                 kNotLoaded);
     if (!plugin_)
       return false;
-    std::string error;
-    sdf::ElementPtr element = pluginElement(withSpawnNamespace(d.xml, context.spawnNamespace()), "model", error);
+    sdf::ElementPtr element = pluginElement(d.element);
     if (!element)
     {
-      context.log().error(label + ": its <plugin> element: " + error + kNotLoaded);
+      context.log().error(label + ": no <plugin> element was read for it" + kNotLoaded);
       plugin_.reset();
       return false;
     }
+    addSpawnNamespace(element, context.spawnNamespace());
+    document_ = d.document;
     auto& host = static_cast<PlantGazeboHost&>(context.gazeboHost());
     host.modelBridge(context);  // the world knows the model from now on, though its spawn is not done
     model_ = host.world()->ModelByName(context.modelName());
@@ -91,6 +88,7 @@ public:
 private:
   gazebo::ModelPlugin::TPtr plugin_;
   gazebo::physics::ModelPtr model_;
+  sdf::ElementPtr document_;  // its element's ancestors, for GetParent()
 };
 }  // namespace
 

@@ -264,25 +264,13 @@ const char* pluginRegistration(gazebo::PluginType kind)
   return "GZ_REGISTER_*_PLUGIN";
 }
 
-sdf::ElementPtr pluginElement(const std::string& xml, const std::string& parent, std::string& error)
+sdf::ElementPtr pluginElement(const sdf::ElementPtr& read)
 {
-  sdf::SDFPtr sdf(new sdf::SDF());
-  sdf::init(sdf);
-  sdf::Errors errors;
-  const std::string body = parent == "model" ? "<link name='__link__'/>" + xml : xml;
-  const std::string text = "<sdf version='1.7'><" + parent + " name='__plugin_host__'>" + body + "</" + parent + "></sdf>";
-  if (!sdf::readString(text, sdf, errors) || !sdf->Root()->HasElement(parent))
-  {
-    error = errors.empty() ? "sdformat could not read it" : errors.front().Message();
+  if (!read)
     return sdf::ElementPtr();
-  }
-  sdf::ElementPtr element = sdf->Root()->GetElement(parent);
-  if (!element->HasElement("plugin"))
-  {
-    error = "sdformat found no <plugin> in it";
-    return sdf::ElementPtr();
-  }
-  return element->GetElement("plugin");
+  sdf::ElementPtr copy = read->Clone();
+  copy->SetParent(read->GetParent());
+  return copy;
 }
 
 PlantGazeboHost::PlantGazeboHost(WorldPluginContext& world)
@@ -340,11 +328,10 @@ bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
       createPlugin<gazebo::WorldPlugin>(log, label, d.library, d.name, gazebo::WORLD_PLUGIN, kWithout);
   if (!plugin)
     return false;
-  std::string error;
-  sdf::ElementPtr element = pluginElement(d.xml, "world", error);
+  sdf::ElementPtr element = pluginElement(d.element);
   if (!element)
   {
-    log.error(label + ": its <plugin> element: " + error + kWithout);
+    log.error(label + ": no <plugin> element was read for it" + kWithout);
     return false;
   }
   if (!pluginCall(log, [&] { return label + ": its Load threw"; }, kWithout, [&] {
@@ -353,6 +340,7 @@ bool PlantGazeboHost::loadWorldPlugin(const WorldPluginDescription& d)
       }))
     return false;
   world_plugins_.push_back(plugin);
+  world_plugin_documents_.push_back(d.document);
   return true;
 }
 

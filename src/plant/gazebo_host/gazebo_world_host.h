@@ -51,6 +51,7 @@ private:
   gazebo::physics::WorldPtr world_;
   std::map<std::string, std::shared_ptr<ContextModel>> models_;
   std::vector<gazebo::WorldPlugin::TPtr> world_plugins_;
+  std::vector<sdf::ElementPtr> world_plugin_documents_;  // their elements' ancestors, for GetParent()
   std::vector<gazebo::SystemPlugin::TPtr> system_plugins_;
   std::vector<std::vector<char>> system_arguments_;  // argv's strings outlive Load, as Gazebo's do
   bool stepping_ = false;  // the physics update mutex is held from beginStep to endStep
@@ -117,8 +118,9 @@ typename Plugin::TPtr createPlugin(Log& log, const std::string& label, const std
   return nullptr;
 }
 
-// The <plugin> element `xml` as sdformat reads it inside a `parent` ("world" or "model"), for the
-// plugin's Load; null with sdformat's reason in `error`.
-sdf::ElementPtr pluginElement(const std::string& xml, const std::string& parent, std::string& error);
+// A plugin's own copy of the <plugin> element sdformat read (`read`), for its Load: a plugin may add
+// to its element (sdformat's GetElement adds what is missing), and a description is loaded again at
+// each reset of a world made from it. Its parent is the element's (the model, the world).
+sdf::ElementPtr pluginElement(const sdf::ElementPtr& read);
 
 }  // namespace bullet_plant
