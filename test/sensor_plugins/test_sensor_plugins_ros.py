@@ -61,8 +61,10 @@ SCANNING = {
 REFUSED = {
     'no_samples': (ray_sensor('no_samples', 0, -1, 1, 0.1, 10), "<scan> has 0 horizontal and 1 vertical <samples>"),
     'no_range': (ray_sensor('no_range', 5, -1, 1, 0, 0), '<range><max> is 0'),
-    'zero_fov': (camera_sensor('zero_fov', 0, 8, 6), '<horizontal_fov> is 0'),
-    'negative_fov': (camera_sensor('negative_fov', -1, 8, 6), '<horizontal_fov> is -1'),
+    # (below SDF's 0.1 rad, which sdformat 12 enforces: it reads no such camera)
+    'zero_fov': (camera_sensor('zero_fov', 0, 8, 6), "<horizontal_fov> '0': The value [0] is less than the minimum"),
+    'negative_fov': (camera_sensor('negative_fov', -1, 8, 6),
+                     "<horizontal_fov> '-1': The value [-1] is less than the minimum"),
     'huge_image': (camera_sensor('huge_image', 1, 100000, 100000), '100000 x 100000 pixels is more than'),
 }
 # held where it is spawned: its sensors look 0.5 rad down from 0.3 m

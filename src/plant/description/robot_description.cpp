@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <limits>
 #include <mutex>
+#include <regex>
 #include <sstream>
 
 #include <sys/stat.h>
@@ -275,57 +276,103 @@ void readTransmissions(const tinyxml2::XMLElement* robot, RobotDescription& out)
   }
 }
 
+// One <sensor> of a <gazebo reference="LINK"> block, or one <plugin> of a block without a reference.
+struct GazeboBlockItem
+{
+  std::string link;  // the sensor's link; "" for a model plugin
+  std::string xml;   // as written
+  std::string what;  // "sensor 'NAME' of link 'LINK'", "plugin 'NAME' (FILE)"
+};
+
+// The items as one SDF model named as the robot (which a plugin's GetParent() finds): the model's
+// plugins, and a link per sensor named as its URDF link, in the blocks' order.
+std::string gazeboItemsAsSdf(const std::string& robot, const std::vector<const GazeboBlockItem*>& items)
+{
+  tinyxml2::XMLDocument doc;
+  tinyxml2::XMLElement* sdf = doc.NewElement("sdf");
+  sdf->SetAttribute("version", "1.6");
+  doc.InsertEndChild(sdf);
+  tinyxml2::XMLElement* model = sdf->InsertNewChildElement("model");
+  model->SetAttribute("name", robot.c_str());
+  std::string text;
+  for (const GazeboBlockItem* item : items)
+  {
+    tinyxml2::XMLDocument piece;
+    piece.Parse(item->xml.c_str());
+    tinyxml2::XMLNode* parent = model;
+    if (!item->link.empty())
+    {
+      parent = model->InsertNewChildElement("link");
+      parent->ToElement()->SetAttribute("name", item->link.c_str());
+    }
+    parent->InsertEndChild(piece.RootElement()->DeepClone(&doc));
+  }
+  tinyxml2::XMLPrinter printer;  // an element a line: sdformat's line numbers tell them apart
+  doc.Print(&printer);
+  return printer.CStr();
+}
+
 // The sensors and plugins of the robot's <gazebo> blocks, read by sdformat as Gazebo reads them (its
 // URDF converter puts a block's <sensor>s in the link it references and the others' <plugin>s in the
-// model): one SDF model of them, a link per block in the blocks' order.
+// model). One that sdformat cannot read (a camera's <horizontal_fov> of 0, below the spec's 0.1) is
+// left out with an error naming it, the robot going on without it.
 void readGazeboSensorsAndPlugins(const tinyxml2::XMLElement* robot, RobotDescription& out)
 {
-  // (the model named as the robot, which a plugin's GetParent() finds)
-  std::string name;
-  for (const char c : out.model->getName())
-    name += c == '"' ? std::string("&quot;") : c == '&' ? std::string("&amp;") : c == '<' ? std::string("&lt;")
-                                                                                         : std::string(1, c);
-  std::string text = "<sdf version=\"1.6\"><model name=\"" + name + "\">";
-  std::vector<std::string> links;  // the link each SDF link stands for, in order
-  bool any = false;
+  std::vector<GazeboBlockItem> items;
   for (auto* g = robot->FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo"))
   {
     const char* reference = g->Attribute("reference");
-    const char* tag = reference ? "sensor" : "plugin";
     if (reference && !out.model->getLink(reference))
       continue;
-    std::string children;
+    const char* tag = reference ? "sensor" : "plugin";
     for (auto* e = g->FirstChildElement(tag); e; e = e->NextSiblingElement(tag))
-      children += xml::printed(e);
-    if (children.empty())
-      continue;
-    any = true;
-    if (reference)
     {
-      text += "<link name=\"block" + std::to_string(links.size()) + "\">" + children + "</link>";
-      links.push_back(reference);
+      const std::string name = e->Attribute("name") ? e->Attribute("name") : "";
+      items.push_back({reference ? reference : "", xml::printed(e),
+                       reference ? "sensor '" + name + "' of link '" + reference + "'"
+                                 : "plugin '" + name + "' (" + (e->Attribute("filename") ? e->Attribute("filename") : "") +
+                                       ")"});
     }
-    else
-      text += children;
   }
-  if (!any)
+  if (items.empty())
     return;
+  const sdf::Source source{"", out.base_dir};
+  std::vector<const GazeboBlockItem*> read;
+  for (const GazeboBlockItem& item : items)
+    read.push_back(&item);
   sdf::Document doc;
   try
   {
-    doc = sdf::readDocument(text + "</model></sdf>", sdf::Source{"", out.base_dir});
+    doc = sdf::readDocument(gazeboItemsAsSdf(out.model->getName(), read), source);
   }
-  catch (const DescriptionError& e)
+  catch (const DescriptionError&)
   {
-    throw DescriptionError(std::string("the <sensor>s and <plugin>s of the URDF's <gazebo> blocks: ") + e.what());
+    read.clear();
+    for (const GazeboBlockItem& item : items)
+      try
+      {
+        sdf::readDocument(gazeboItemsAsSdf(out.model->getName(), {&item}), source);
+        read.push_back(&item);
+      }
+      catch (const DescriptionError& e)
+      {
+        // (the lines are those of the item read alone: left out)
+        std::string reason = std::regex_replace(e.what(), std::regex(" \\(line [0-9]+\\)"), "");
+        const size_t said = reason.find("sdformat cannot read");
+        out.errors.push_back(item.what + " in the URDF's <gazebo>: " +
+                             (said == std::string::npos ? reason : reason.substr(said)) +
+                             (item.link.empty() ? "; it is not loaded" : "; it publishes nothing"));
+      }
+    if (read.empty())
+      return;
+    doc = sdf::readDocument(gazeboItemsAsSdf(out.model->getName(), read), source);
   }
   const sdf::ElementPtr model = sdf::child(doc.root(), "model");
-  size_t link = 0;
   for (sdf::ElementPtr e = model->GetFirstElement(); e; e = e->GetNextElement())
     if (e->GetName() == "plugin")
       readModelPlugin(e, out);
-    else if (e->GetName() == "link" && link < links.size())
-      readSensors(e, links[link++], out);
+    else if (e->GetName() == "link")
+      readSensors(e, sdf::attribute(e, "name"), out);
 }
 
 void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& out)
