@@ -288,6 +288,32 @@ def test_malformed_model_file_names_the_model_file_and_line(tmp_path, model_path
     assert len(errors) == 1 and re.search(r"model://broken.*broken/model\.sdf.* line 3", errors[0]), errors
 
 
+def test_an_include_loop_leaves_out_its_include_and_the_world_runs(tmp_path, model_path):
+    make_model(model_path, 'post', wall(pose='3 0 0 0 0 0'))
+    loop_a = write(model_path / 'ring_a' / 'model.sdf', '<sdf version="1.6"><model name="ring_a">'
+                   '<include><uri>model://ring_b</uri></include></model></sdf>')
+    write(model_path / 'ring_b' / 'model.sdf', '<sdf version="1.6"><model name="ring_b">'
+          '<include><uri>model://ring_a</uri></include></model></sdf>')
+    for name in ('ring_a', 'ring_b'):
+        write(model_path / name / 'model.config', f'<model><name>{name}</name><sdf version="1.6">model.sdf</sdf></model>')
+    world = load(write(tmp_path / 'w.world', world_sdf(include('model://ring_a') + include('model://post'))))
+    errors = logged(world, 'ERROR')
+    assert len(errors) == 1 and 'model://ring_a' in errors[0] and 'include loop' in errors[0], errors
+    assert str(loop_a) in errors[0] and 'ring_b' in errors[0]  # the chain of files
+    assert range_along_x(world) == pytest.approx(2.95, abs=1e-3)  # the post is there
+
+
+def test_a_world_read_again_reads_its_included_models_as_they_are_now(tmp_path, model_path):
+    # (sdformat's reading is kept for a document read again, unless a file it includes changed)
+    model_dir = make_model(model_path, 'post', wall(pose='3 0 0 0 0 0'))
+    text = world_sdf(include('model://post'))
+    assert range_along_x(bullet_plant.World.from_sdf(text)) == pytest.approx(2.95, abs=1e-3)
+    assert range_along_x(bullet_plant.World.from_sdf(text)) == pytest.approx(2.95, abs=1e-3)
+    write(model_dir / 'model.sdf', WALL_SDF.format(version='1.6', name='post', static='true', pose='0 0 0 0 0 0',
+                                                   collisions=wall(pose='1.5 0 0 0 0 0')))
+    assert range_along_x(bullet_plant.World.from_sdf(text)) == pytest.approx(1.45, abs=1e-3)
+
+
 def test_shipped_worlds_read_by_file_as_by_text():
     import os
     for name in ('compat/gazebo_ros/worlds/empty.world', 'worlds/race_track.world'):

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <list>
 #include <mutex>
 #include <regex>
 #include <set>
@@ -94,26 +95,34 @@ std::string includedFile(const std::string& uri)
 
 // sdformat follows <include>s without a limit, so a model that includes itself (through others)
 // would recurse until the stack ends: the include graph is walked first, each file once, and a loop
-// or nesting deeper than kMaxModelDepth refused, naming the chain.
-void checkIncludes(const tinyxml2::XMLElement* e, std::vector<std::string>& chain, std::set<std::string>& checked)
+// or nesting deeper than kMaxModelDepth refused, naming the chain. `found`: each include's URI and
+// the file it names with its modification time and size ("" where none), which the document's
+// reading depends on. What is refused is a Refusal at the document's own <include> that leads to it
+// (`top_line`: its line; 0 while walking the document itself).
+void checkIncludes(const tinyxml2::XMLElement* e, std::vector<std::string>& chain, std::set<std::string>& checked,
+                   std::string& found, int top_line = 0)
 {
   for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
   {
     if (std::string(c->Name()) != "include")
     {
-      checkIncludes(c, chain, checked);
+      checkIncludes(c, chain, checked, found, top_line);
       continue;
     }
     const tinyxml2::XMLElement* uri = c->FirstChildElement("uri");
     const std::string uri_text = uri && uri->GetText() ? xml::trimmed(uri->GetText()) : "";
+    const int line = top_line ? top_line : c->GetLineNum();
     if (uri_text.empty())  // (sdformat 12 would read a null text)
-      throw DescriptionError("<include> at line " + std::to_string(c->GetLineNum()) + " has no <uri>: name the model "
-                             "it includes (model://NAME, or a file or directory)");
+      throw Refusal("<include> at line " + std::to_string(c->GetLineNum()) + " has no <uri>: name the model it "
+                    "includes (model://NAME, or a file or directory)", "include", line);
     const std::string file = includedFile(uri_text);
+    found += uri_text + '\n' + file + '\n';
     if (file.empty())
       continue;  // sdformat says so (a warning: the include is skipped)
     std::error_code ec;
     const std::string canonical = fs::weakly_canonical(file, ec).string();
+    found += std::to_string(fs::last_write_time(file, ec).time_since_epoch().count()) + ' ' +
+             std::to_string(fs::file_size(file, ec)) + '\n';
     auto describe = [&] {
       std::string text;
       for (const std::string& link : chain)
@@ -121,18 +130,19 @@ void checkIncludes(const tinyxml2::XMLElement* e, std::vector<std::string>& chai
       return text + "'" + canonical + "'";
     };
     if (std::find(chain.begin(), chain.end(), canonical) != chain.end())
-      throw DescriptionError("an include loop (" + describe() + "): a model cannot include itself; break the loop");
+      throw Refusal("an include loop (" + describe() + "): a model cannot include itself; break the loop", "include",
+                    line);
     if (chain.size() >= size_t(kMaxModelDepth))
-      throw DescriptionError("models included " + std::to_string(chain.size() + 1) + " deep (" + describe() +
-                             "); the plant reads at most " + std::to_string(kMaxModelDepth));
+      throw Refusal("models included " + std::to_string(chain.size() + 1) + " deep (" + describe() +
+                    "); the plant reads at most " + std::to_string(kMaxModelDepth), "include", line);
     if (!checked.insert(canonical).second)
       continue;
     tinyxml2::XMLDocument doc;
     if (doc.LoadFile(file.c_str()) != tinyxml2::XML_SUCCESS)
-      throw DescriptionError("SDF '" + file + "' (included as '" + uri_text + "') is not "
-                             "well-formed XML: line " + std::to_string(doc.ErrorLineNum()) + ": " + doc.ErrorStr());
+      throw Refusal("SDF '" + file + "' (included as '" + uri_text + "') is not well-formed XML: line " +
+                    std::to_string(doc.ErrorLineNum()) + ": " + doc.ErrorStr(), "include", line);
     chain.push_back(canonical);
-    checkIncludes(doc.RootElement(), chain, checked);
+    checkIncludes(doc.RootElement(), chain, checked, found, line);
     chain.pop_back();
   }
 }
@@ -187,41 +197,90 @@ std::string consoleErrors(const std::string& said)
   return out;
 }
 
-// sdformat's refusal, naming the innermost element it could not read in the document (its named
-// ancestors, its text and line: "model 'm' link 'l' <gravity> 'maybe' (line 4)") and what it said.
-std::string refusal(const tinyxml2::XMLDocument& doc, const ::sdf::Errors& errors, const std::string& said)
+// sdformat's refusal: the innermost element of the document it could not read (sdformat's errors
+// run from the innermost out; an error in an included file is named by the <include>'s <uri>),
+// named with its named ancestors, its text and line ("model 'm' link 'l' <gravity> 'maybe' (line
+// 4)"), and what sdformat said.
+Refusal refusal(const std::string& prefix, const tinyxml2::XMLDocument& doc, const ::sdf::Errors& errors,
+                const std::string& said)
 {
-  std::string where;
+  std::string where, name;
+  int line = 0;
   for (const ::sdf::Error& error : errors)
   {
-    const std::string message = error.Message();
-    const std::string prefix = "Error reading element <";
-    if (message.rfind(prefix, 0) != 0 || !error.LineNumber())
+    const std::string message = xml::trimmed(error.Message());
+    const std::string reading = "Error reading element <";
+    const bool in_document = !error.FilePath() || error.FilePath()->empty() || (*error.FilePath())[0] == '<';
+    if (!error.LineNumber() || !in_document)
     {
       if (where.empty() && error.Code() != ::sdf::ErrorCode::ELEMENT_INVALID)
-        where = xml::trimmed(message) + (error.FilePath() ? " in '" + *error.FilePath() + "'" : "") +
+        where = message + (error.FilePath() ? " in '" + *error.FilePath() + "'" : "") +
                 (error.LineNumber() ? " (line " + std::to_string(*error.LineNumber()) + ")" : "");
       continue;
     }
-    const std::string name = message.substr(prefix.size(), message.find('>') - prefix.size());
-    const tinyxml2::XMLElement* e = elementAt(&doc, name, *error.LineNumber());
-    where = "<" + name + ">";
+    if (message.rfind(reading, 0) == 0)
+      name = message.substr(reading.size(), message.find('>') - reading.size());
+    else  // named by its XML path's last step: ".../include[0]/uri"
+    {
+      const std::string path = error.XmlPath() ? *error.XmlPath() : "";
+      name = path.substr(path.rfind('/') + 1);
+      name = name.substr(0, name.find('['));
+    }
+    line = *error.LineNumber();
+    const tinyxml2::XMLElement* e = elementAt(&doc, name, line);
+    std::string element = "<" + name + ">";
     if (e && e->GetText())
-      where += " '" + xml::trimmed(e->GetText()) + "'";
-    where += " (line " + std::to_string(*error.LineNumber()) + ")";
+      element += " '" + xml::trimmed(e->GetText()) + "'";
     for (const tinyxml2::XMLElement* up = e ? e->Parent()->ToElement() : nullptr; up;
          up = up->Parent() ? up->Parent()->ToElement() : nullptr)
       if (up->Attribute("name"))
-        where = std::string(up->Name()) + " '" + up->Attribute("name") + "' " + where;
+        element = std::string(up->Name()) + " '" + up->Attribute("name") + "' " + element;
+    where = element + " (line " + std::to_string(line) + ")" +
+            (message.rfind(reading, 0) == 0 ? "" : ": " + message);
     break;
   }
   const std::string reason = consoleErrors(said);
-  return where + (reason.empty() ? "" : ": " + reason);
+  return Refusal(prefix + where + (reason.empty() ? "" : ": " + reason), name, line);
 }
 
 // sdformat reports through its console and keeps global state (the parser configuration, the
 // console's stream): one document at a time, its messages kept for the refusal.
 std::mutex sdformat_mutex;
+
+// The documents read lately, by their text, source and includes (checkIncludes' `found`): a
+// document is read again only when one of those changed. sdformat 12.3 spends about 5 ms on each
+// model a document holds (Element::Clone re-parses every parameter of the spec it copies), and the
+// same document comes again and again: a car spawned many times, a world at each node start. What
+// sdformat read is never changed after (the readers read, a plugin's Load gets a copy).
+class DocumentCache
+{
+public:
+  bool find(const std::string& key, Document& out)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto it = entries_.begin(); it != entries_.end(); ++it)
+      if (it->first == key)
+      {
+        out = it->second;
+        entries_.splice(entries_.begin(), entries_, it);  // most recent first
+        return true;
+      }
+    return false;
+  }
+  void add(const std::string& key, const Document& document)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    entries_.emplace_front(key, document);
+    if (entries_.size() > kEntries)
+      entries_.pop_back();
+  }
+
+private:
+  static constexpr size_t kEntries = 32;
+  std::mutex mutex_;
+  std::list<std::pair<std::string, Document>> entries_;
+};
+DocumentCache document_cache;
 }  // namespace
 
 Document readDocument(const std::string& text, const Source& source)
@@ -262,9 +321,13 @@ Document readDocument(const std::string& text, const Source& source)
     chain.push_back(fs::weakly_canonical(source.file, ec).string());
   }
   std::set<std::string> checked;
-  checkIncludes(doc.RootElement(), chain, checked);
-
+  std::string key = source.file + '\n' + source.dir + '\n';
+  checkIncludes(doc.RootElement(), chain, checked, key);
+  key += sdf_text;
   Document out;
+  if (document_cache.find(key, out))
+    return out;
+
   out.sdf = emptyDocument();
   ::sdf::Errors errors;
   std::ostringstream said;
@@ -305,7 +368,8 @@ Document readDocument(const std::string& text, const Source& source)
     else
       refused = true;
   if (refused)
-    throw DescriptionError("SDF " + source.describe() + ": sdformat cannot read " + refusal(doc, errors, said.str()));
+    throw refusal("SDF " + source.describe() + ": sdformat cannot read ", doc, errors, said.str());
+  document_cache.add(key, out);
   return out;
 }
 

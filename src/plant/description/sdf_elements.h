@@ -44,11 +44,24 @@ struct Document
   ElementPtr root() const { return sdf->Root(); }
 };
 
+// What sdformat refused in a document: the innermost element of the document itself it could not
+// read (its name and line in the text read; "" and 0 where the refusal is not at an element of it).
+class Refusal : public DescriptionError
+{
+public:
+  Refusal(const std::string& what, std::string element, int line)
+    : DescriptionError(what), element(std::move(element)), line(line)
+  {
+  }
+  std::string element;
+  int line;
+};
+
 // Reads the SDF text `text` (`source`: where it came from). A bare <model> or <world>, or an <sdf>
 // without a version, is read as SDF 1.6 (gazebo_ros's spawn_model sends such). model:// URIs are
 // found through the model path (resource_uri.h), the plant's own ground_plane and sun first.
 // Throws DescriptionError for XML that is not well-formed, an include loop or nesting deeper than
-// kMaxModelDepth, and anything sdformat refuses (naming its errors).
+// kMaxModelDepth; Refusal for what sdformat refuses.
 Document readDocument(const std::string& text, const Source& source);
 std::string readFile(const std::string& path, const std::string& what);
 std::string directoryOf(const std::string& path);

@@ -366,60 +366,75 @@ bool isUnsupportedWorldElement(const std::string& tag)
   return tag == "actor" || tag == "population" || tag == "road";
 }
 
+// Whether `e` or an element below it is the element `name` at `line`.
+bool holds(const tinyxml2::XMLElement* e, const std::string& name, int line)
+{
+  if (e->GetLineNum() == line && name == e->Name())
+    return true;
+  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+    if (holds(c, name, line))
+      return true;
+  return false;
+}
+
+// The world's <model> or <include> (counted among the world's element children) holding the
+// element `name` at `line` of `doc`; -1 where that is the world's own element, or none.
+int topLevelIndex(const tinyxml2::XMLDocument& doc, const std::string& name, int line)
+{
+  const tinyxml2::XMLElement* root = doc.RootElement();
+  const tinyxml2::XMLElement* w = std::string(root->Name()) == "world" ? root : root->FirstChildElement("world");
+  int index = 0;
+  for (const tinyxml2::XMLElement* e = w ? w->FirstChildElement() : nullptr; e; e = e->NextSiblingElement(), ++index)
+    if ((std::string(e->Name()) == "model" || std::string(e->Name()) == "include") && holds(e, name, line))
+      return index;
+  return -1;
+}
+
 // The world document as sdformat reads it. sdformat refuses a whole document for one value it
-// cannot read (Gazebo then loads no world); the plant keeps the world's other models: each of the
-// world's <model>s and <include>s that sdformat cannot read on its own is left out, named in
-// `errors` with sdformat's reason, and the rest read. A world whose own elements sdformat refuses
-// is refused.
+// cannot read (Gazebo then loads no world); the plant keeps the world's other models: the
+// <model> or <include> holding what sdformat refused is left out, named in `errors` with
+// sdformat's reason, and the rest read again, until sdformat reads it. A world whose own elements
+// sdformat refuses is refused.
 sdf::Document readWorldDocument(const std::string& text, const Source& source, std::vector<std::string>& errors)
 {
-  try
+  tinyxml2::XMLDocument original;  // the elements left out go from it, their lines as written
+  std::string current = text;
+  for (;;)
   {
-    return sdf::readDocument(text, source);
-  }
-  catch (const DescriptionError&)
-  {
-    tinyxml2::XMLDocument doc;
-    doc.Parse(text.c_str(), text.size());
-    tinyxml2::XMLElement* root = doc.RootElement();
-    tinyxml2::XMLElement* w = !root ? nullptr : std::string(root->Name()) == "world" ? root : root->FirstChildElement("world");
-    if (!w)
-      throw;
-    const std::string version = root->Attribute("version") ? root->Attribute("version") : "1.6";
-    std::vector<tinyxml2::XMLElement*> left_out;
-    for (tinyxml2::XMLElement* e = w->FirstChildElement(); e; e = e->NextSiblingElement())
+    try
     {
-      const std::string tag = e->Name();
-      if (tag != "model" && tag != "include")
-        continue;
-      tinyxml2::XMLPrinter printer(nullptr, true);
-      e->Accept(&printer);
-      try
-      {
-        sdf::readDocument("<sdf version=\"" + version + "\"><world name=\"w\">" + printer.CStr() + "</world></sdf>",
-                          source);
-      }
-      catch (const DescriptionError& e_alone)
-      {
-        // (its lines are those of the element read alone: the element's own line said instead)
-        std::string reason = std::regex_replace(e_alone.what(), std::regex(" \\(line [0-9]+\\)"), "");
-        const size_t said = reason.find("sdformat cannot read");
-        if (said != std::string::npos)
-          reason = reason.substr(said);
-        const char* name = e->Attribute("name");
-        const std::string uri = xml::childText(e, "uri", "");
-        errors.push_back("<" + tag + "> " + (name ? "'" + std::string(name) + "'" : "of '" + uri + "'") + " in " +
-                         source.describe() + " (line " + std::to_string(e->GetLineNum()) + ") is left out: " + reason);
-        left_out.push_back(e);
-      }
+      return sdf::readDocument(current, source);
     }
-    if (left_out.empty())
-      throw;
-    for (tinyxml2::XMLElement* e : left_out)
-      w->DeleteChild(e);
-    tinyxml2::XMLPrinter printer;
-    doc.Print(&printer);
-    return sdf::readDocument(printer.CStr(), source);
+    catch (const sdf::Refusal& refused)
+    {
+      tinyxml2::XMLDocument shown;
+      if (refused.element.empty() || shown.Parse(current.c_str(), current.size()) != tinyxml2::XML_SUCCESS)
+        throw;
+      const int index = topLevelIndex(shown, refused.element, refused.line);
+      if (current == text)
+        original.Parse(text.c_str(), text.size());
+      tinyxml2::XMLElement* root = original.RootElement();
+      tinyxml2::XMLElement* w = std::string(root->Name()) == "world" ? root : root->FirstChildElement("world");
+      tinyxml2::XMLElement* culprit = w && index >= 0 ? w->FirstChildElement() : nullptr;
+      for (int i = 0; culprit && i < index; ++i)
+        culprit = culprit->NextSiblingElement();
+      if (!culprit)
+        throw;
+      // (its elements' lines are those of the text sdformat read, the world printed again after the
+      // first left out: the element left out is named by its own line as written)
+      std::string reason = std::regex_replace(refused.what(), std::regex(" \\(line [0-9]+\\)"), "");
+      const size_t said = reason.find("sdformat cannot read");
+      reason = said == std::string::npos ? reason : reason.substr(said);
+      const char* name = culprit->Attribute("name");
+      errors.push_back("<" + std::string(culprit->Name()) + "> " +
+                       (name ? "'" + std::string(name) + "'" : "of '" + xml::childText(culprit, "uri", "") + "'") +
+                       " in " + source.describe() + " (line " + std::to_string(culprit->GetLineNum()) +
+                       ") is left out: " + reason);
+      w->DeleteChild(culprit);
+      tinyxml2::XMLPrinter printer;
+      original.Print(&printer);
+      current = printer.CStr();
+    }
   }
 }
 
