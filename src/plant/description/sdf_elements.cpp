@@ -90,6 +90,9 @@ std::string includedFile(const std::string& uri)
   std::error_code ec;
   if (path.empty() || !fs::is_directory(path, ec))
     return path;
+  // (without a config sdformat says so on its console, which is heard only while it reads)
+  if (!fs::exists(path + "/model.config", ec) && !fs::exists(path + "/manifest.xml", ec))
+    return "";
   return ::sdf::getModelFilePath(path);
 }
 
