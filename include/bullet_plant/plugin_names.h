@@ -52,8 +52,9 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
 // none for the others.
 std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace,
                                 const Param& params);
-// The keys tf::getPrefixParam would try for a node in `plugin_namespace`: NS/tf_prefix, then each
-// parent's, then /tf_prefix.
-std::vector<std::string> tfPrefixParamKeys(const std::string& plugin_namespace);
+// The keys tf::getPrefixParam would try for plugin `d` in `plugin_namespace`: NS/tf_prefix, then each
+// parent's, then /tf_prefix; none but for the plant's own GazeboRos helper plugins (a Gazebo plugin
+// library of the user's asks the parameter server itself).
+std::vector<std::string> tfPrefixParamKeys(const ModelPluginDescription& d, const std::string& plugin_namespace);
 
 }  // namespace bullet_plant

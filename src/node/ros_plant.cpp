@@ -226,8 +226,8 @@ RosPlant::SpawnRequest RosPlant::prepareSpawn(const std::string& name, ModelDesc
   copyParams("/gazebo_ros_control");  // where legacyModeNS (the default) has Gazebo look for pid_gains
   for (const ModelPluginDescription& plugin : request.description.model_plugins)
   {
-    // The tf_prefix parameter the GazeboRos helper's plugins look up from their namespace.
-    for (const std::string& key : tfPrefixParamKeys(modelPluginNamespace(plugin, ns, request.name)))
+    // The tf_prefix parameter the plant's GazeboRos helper plugins look up from their namespace.
+    for (const std::string& key : tfPrefixParamKeys(plugin, modelPluginNamespace(plugin, ns, request.name)))
       copyParams(key);
     // The mimic joint plugin's pid gains, wherever its <hasPID> puts them.
     const std::string& gains_element = findPluginFile(plugin.filename)->pid_gains_element;

@@ -107,8 +107,15 @@ TEST(PluginNames, ModelPluginNamespacesByTheirKindsRules)
   const ModelPluginDescription diff = plugin("libgazebo_ros_diff_drive.so", {});
   Param params;
   EXPECT_EQ(modelPluginTfPrefix(diff, "/r1/", params), "") << "no tf_prefix parameter: no prefix";
-  EXPECT_EQ(tfPrefixParamKeys("/r1/a/"), (std::vector<std::string>{"/r1/a/tf_prefix", "/r1/tf_prefix", "/tf_prefix"}));
-  EXPECT_EQ(tfPrefixParamKeys(""), (std::vector<std::string>{"/tf_prefix"}));
+  EXPECT_EQ(tfPrefixParamKeys(diff, "/r1/a/"),
+            (std::vector<std::string>{"/r1/a/tf_prefix", "/r1/tf_prefix", "/tf_prefix"}));
+  EXPECT_EQ(tfPrefixParamKeys(diff, ""), (std::vector<std::string>{"/tf_prefix"}));
+  EXPECT_EQ(tfPrefixParamKeys(plugin("libgazebo_ros_skid_steer_drive.so", {}), "/r1"), std::vector<std::string>())
+      << "only the GazeboRos helper's plugins read it";
+  ModelPluginDescription upstream = diff;
+  upstream.library = "/ws/devel/lib/libgazebo_ros_diff_drive.so";
+  EXPECT_EQ(tfPrefixParamKeys(upstream, "/r1"), std::vector<std::string>())
+      << "a Gazebo plugin library asks the parameter server itself: nothing to copy for it";
   params.set("/tf_prefix", Param::string("everyone"));
   EXPECT_EQ(modelPluginTfPrefix(diff, "/r1", params), "everyone") << "a parent's";
   params.set("/r1/tf_prefix", Param::string("r1"));

@@ -166,9 +166,11 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
   }
 }
 
-std::vector<std::string> tfPrefixParamKeys(const std::string& plugin_namespace)
+std::vector<std::string> tfPrefixParamKeys(const ModelPluginDescription& d, const std::string& plugin_namespace)
 {
   std::vector<std::string> keys;
+  if (!d.library.empty() || namingOf(d) != PluginNaming::GazeboRos)
+    return keys;
   std::string ns = withoutTrailingSlashes(plugin_namespace);
   ns.erase(0, ns.find_first_not_of('/'));
   if (!ns.empty())
@@ -186,9 +188,7 @@ std::vector<std::string> tfPrefixParamKeys(const std::string& plugin_namespace)
 std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace,
                                 const Param& params)
 {
-  if (namingOf(d) != PluginNaming::GazeboRos)
-    return "";
-  for (const std::string& key : tfPrefixParamKeys(plugin_namespace))
+  for (const std::string& key : tfPrefixParamKeys(d, plugin_namespace))
     if (const Param* found = params.find(key.substr(1)))  // the tree's paths are relative
       return found->type() == Param::Type::String ? found->asString() : "";
   return "";
