@@ -163,19 +163,6 @@ void checkIncludes(const tinyxml2::XMLElement* e, std::vector<std::string>& chai
   return sdf;
 }
 
-// The element at `line` named `name` in `e` or below it, as the reader of the document's XML saw it.
-const tinyxml2::XMLElement* elementAt(const tinyxml2::XMLNode* e, const std::string& name, int line)
-{
-  for (const tinyxml2::XMLElement* c = e ? e->FirstChildElement() : nullptr; c; c = c->NextSiblingElement())
-  {
-    if (c->GetLineNum() == line && name == c->Name())
-      return c;
-    if (const tinyxml2::XMLElement* found = elementAt(c, name, line))
-      return found;
-  }
-  return nullptr;
-}
-
 // What sdformat said (its console's error lines, without colours and source locations), one line.
 std::string consoleErrors(const std::string& said)
 {
@@ -285,6 +272,18 @@ private:
 };
 DocumentCache document_cache;
 }  // namespace
+
+const tinyxml2::XMLElement* elementAt(const tinyxml2::XMLNode* e, const std::string& name, int line)
+{
+  for (const tinyxml2::XMLElement* c = e ? e->FirstChildElement() : nullptr; c; c = c->NextSiblingElement())
+  {
+    if (c->GetLineNum() == line && name == c->Name())
+      return c;
+    if (const tinyxml2::XMLElement* found = elementAt(c, name, line))
+      return found;
+  }
+  return nullptr;
+}
 
 Document readDocument(const std::string& text, const Source& source)
 {

@@ -10,6 +10,7 @@
 
 #include <sdf/Element.hh>
 #include <sdf/SDFImpl.hh>
+#include <tinyxml2.h>
 
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/robot_description.h"
@@ -65,6 +66,10 @@ public:
 Document readDocument(const std::string& text, const Source& source);
 std::string readFile(const std::string& path, const std::string& what);
 std::string directoryOf(const std::string& path);
+
+// The element named `name` at `line` below `e` (a document or an element) in XML as tinyxml2 read
+// it, the first in document order; null for none. sdformat's errors name elements so.
+const tinyxml2::XMLElement* elementAt(const tinyxml2::XMLNode* e, const std::string& name, int line);
 
 // The Source of `element`: the file sdformat read it from (an included model's file), else `text`,
 // the document's own.

@@ -366,17 +366,6 @@ bool isUnsupportedWorldElement(const std::string& tag)
   return tag == "actor" || tag == "population" || tag == "road";
 }
 
-// Whether `e` or an element below it is the element `name` at `line`.
-bool holds(const tinyxml2::XMLElement* e, const std::string& name, int line)
-{
-  if (e->GetLineNum() == line && name == e->Name())
-    return true;
-  for (const tinyxml2::XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
-    if (holds(c, name, line))
-      return true;
-  return false;
-}
-
 // The world's <model> or <include> (counted among the world's element children) holding the
 // element `name` at `line` of `doc`; -1 where that is the world's own element, or none.
 int topLevelIndex(const tinyxml2::XMLDocument& doc, const std::string& name, int line)
@@ -385,7 +374,8 @@ int topLevelIndex(const tinyxml2::XMLDocument& doc, const std::string& name, int
   const tinyxml2::XMLElement* w = std::string(root->Name()) == "world" ? root : root->FirstChildElement("world");
   int index = 0;
   for (const tinyxml2::XMLElement* e = w ? w->FirstChildElement() : nullptr; e; e = e->NextSiblingElement(), ++index)
-    if ((std::string(e->Name()) == "model" || std::string(e->Name()) == "include") && holds(e, name, line))
+    if ((std::string(e->Name()) == "model" || std::string(e->Name()) == "include") &&
+        ((e->GetLineNum() == line && name == e->Name()) || sdf::elementAt(e, name, line)))
       return index;
   return -1;
 }
