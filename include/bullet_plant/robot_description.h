@@ -163,7 +163,14 @@ struct SensorDescription
   // sensor and the element when the text is not a number.
   double pluginNumber(const std::string& key, double fallback) const;
   // The plugin block with a model plugin's typed readers (hector's sensor plugins share them).
-  ModelPluginDescription pluginBlock() const { return {plugin_name, plugin_filename, plugin}; }
+  ModelPluginDescription pluginBlock() const
+  {
+    ModelPluginDescription block;
+    block.name = plugin_name;
+    block.filename = plugin_filename;
+    block.params = plugin;
+    return block;
+  }
 };
 
 // A collision's <surface> (SDF), or a link's <gazebo reference> friction tags (URDF: `urdf`).

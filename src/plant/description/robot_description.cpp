@@ -7,7 +7,6 @@
 #include <cstdlib>
 #include <limits>
 #include <mutex>
-#include <regex>
 #include <sstream>
 
 #include <sys/stat.h>
@@ -357,10 +356,7 @@ void readGazeboSensorsAndPlugins(const tinyxml2::XMLElement* robot, RobotDescrip
       catch (const DescriptionError& e)
       {
         // (the lines are those of the item read alone: left out)
-        std::string reason = std::regex_replace(e.what(), std::regex(" \\(line [0-9]+\\)"), "");
-        const size_t said = reason.find("sdformat cannot read");
-        out.errors.push_back(item.what + " in the URDF's <gazebo>: " +
-                             (said == std::string::npos ? reason : reason.substr(said)) +
+        out.errors.push_back(item.what + " in the URDF's <gazebo>: " + sdf::reasonLeftOut(e) +
                              (item.link.empty() ? "; it is not loaded" : "; it publishes nothing"));
       }
     if (read.empty())

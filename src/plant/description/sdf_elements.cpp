@@ -387,6 +387,13 @@ std::string readFile(const std::string& path, const std::string& what)
 
 std::string directoryOf(const std::string& path) { return fs::absolute(path).parent_path().string(); }
 
+std::string reasonLeftOut(const DescriptionError& refused)
+{
+  const std::string reason = std::regex_replace(refused.what(), std::regex(" \\(line [0-9]+\\)"), "");
+  const size_t said = reason.find("sdformat cannot read");
+  return said == std::string::npos ? reason : reason.substr(said);
+}
+
 Source sourceOf(const ElementPtr& element, const Source& text)
 {
   const std::string& file = element ? element->FilePath() : std::string();
@@ -445,20 +452,11 @@ std::string attribute(const ElementPtr& e, const std::string& name, const std::s
 
 bool isTrue(const std::string& text) { return text == "true" || text == "1"; }
 
-bool readFlag(const ElementPtr& parent, const char* tag, bool fallback, const std::string& where)
+bool flag(const ElementPtr& parent, const char* tag, bool fallback)
 {
+  // sdformat has read the spec's booleans (true, false, 1, 0) and refused anything else.
   const ElementPtr e = child(parent, tag);
-  if (!e)
-    return fallback;
-  const std::string value = text(e);
-  std::string lower = value;
-  for (char& c : lower)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == "true" || lower == "1")
-    return true;
-  if (lower == "false" || lower == "0")
-    return false;
-  throw DescriptionError(where + ": <" + tag + "> '" + value + "' is not a boolean: give true or false (1 or 0)");
+  return e ? e->Get<bool>() : fallback;
 }
 
 urdf::Pose pose(const ElementPtr& e, std::string& relative_to)

@@ -58,6 +58,11 @@ public:
   int line;
 };
 
+// A refusal's reason for an error about a piece of a document left out: from "sdformat cannot read"
+// on (the whole message where it has none), without the line numbers, which are those of the text
+// sdformat read (a document printed again), not of what the user wrote.
+std::string reasonLeftOut(const DescriptionError& refused);
+
 // Reads the SDF text `text` (`source`: where it came from). A bare <model> or <world>, or an <sdf>
 // without a version, is read as SDF 1.6 (gazebo_ros's spawn_model sends such). model:// URIs are
 // found through the model path (resource_uri.h), the plant's own ground_plane and sun first.
@@ -88,9 +93,8 @@ double childDouble(const ElementPtr& e, const std::string& path, double fallback
 // The attribute `name` as written, or the spec's default; `fallback` where the element has none.
 std::string attribute(const ElementPtr& e, const std::string& name, const std::string& fallback = "");
 bool isTrue(const std::string& text);
-// A boolean child element as sdformat reads one (true, false, 1, 0, any case; `fallback` without the
-// element). Throws DescriptionError naming `where`, the element and its text for anything else.
-bool readFlag(const ElementPtr& parent, const char* tag, bool fallback, const std::string& where);
+// A boolean child element of the spec's, as sdformat read it; `fallback` without the element.
+bool flag(const ElementPtr& parent, const char* tag, bool fallback);
 // `e`'s <pose> (identity where it has none) and the frame it is relative_to ("" when not given).
 urdf::Pose pose(const ElementPtr& e, std::string& relative_to);
 urdf::Pose pose(const ElementPtr& e);

@@ -144,9 +144,8 @@ std::shared_ptr<const FrameGraph> collectModel(const sdf::ElementPtr& model, con
   if (depth > sdf::kMaxModelDepth * 4)
     throw DescriptionError("model '" + parts.name + "': models nested " + std::to_string(depth) + " deep at '" + scope +
                            "'; the plant reads at most " + std::to_string(sdf::kMaxModelDepth * 4));
-  const std::string in_model = "model '" + parts.name + "'" + (scope.empty() ? "" : " (its model '" + scope + "')");
-  const bool self_collide = sdf::readFlag(model, "self_collide", false, in_model);
-  if (!sdf::readFlag(model, "allow_auto_disable", true, in_model))
+  const bool self_collide = sdf::flag(model, "self_collide", false);
+  if (!sdf::flag(model, "allow_auto_disable", true))
     out.allow_auto_disable = false;
   auto graph = std::make_shared<FrameGraph>(parts.name);
   FrameGraph& frames = *graph;
@@ -395,9 +394,9 @@ urdf::LinkSharedPtr readLink(const LinkPart& part, const std::string& model, Rob
   if (!link->visual_array.empty())
     link->visual = link->visual_array.front();
   LinkPhysics physics;
-  physics.gravity = sdf::readFlag(part.element, "gravity", true, in_link);
-  physics.kinematic = sdf::readFlag(part.element, "kinematic", false, in_link);
-  physics.self_collide = sdf::readFlag(part.element, "self_collide", part.model_self_collide, in_link);
+  physics.gravity = sdf::flag(part.element, "gravity", true);
+  physics.kinematic = sdf::flag(part.element, "kinematic", false);
+  physics.self_collide = sdf::flag(part.element, "self_collide", part.model_self_collide);
   out.link_physics[part.name] = physics;
   readSensors(part.element, part.name, out);
   return link;

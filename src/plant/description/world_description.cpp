@@ -5,7 +5,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include <tinyxml2.h>
@@ -222,7 +221,7 @@ LightDescription readLight(const sdf::ElementPtr& light, const urdf::Pose& paren
     const std::vector<double> v = colourNumbers(text, where + " <" + c.first + ">");
     *c.second = {float(v[0]), float(v[1]), float(v[2]), 1.0f};
   }
-  out.cast_shadows = sdf::readFlag(light, "cast_shadows", false, where);
+  out.cast_shadows = sdf::flag(light, "cast_shadows", false);
   out.range = sdf::childDouble(light, "attenuation/range", out.range);
   out.constant = sdf::childDouble(light, "attenuation/constant", out.constant);
   out.linear = sdf::childDouble(light, "attenuation/linear", out.linear);
@@ -412,14 +411,11 @@ sdf::Document readWorldDocument(const std::string& text, const Source& source, s
         throw;
       // (its elements' lines are those of the text sdformat read, the world printed again after the
       // first left out: the element left out is named by its own line as written)
-      std::string reason = std::regex_replace(refused.what(), std::regex(" \\(line [0-9]+\\)"), "");
-      const size_t said = reason.find("sdformat cannot read");
-      reason = said == std::string::npos ? reason : reason.substr(said);
       const char* name = culprit->Attribute("name");
       errors.push_back("<" + std::string(culprit->Name()) + "> " +
                        (name ? "'" + std::string(name) + "'" : "of '" + xml::childText(culprit, "uri", "") + "'") +
                        " in " + source.describe() + " (line " + std::to_string(culprit->GetLineNum()) +
-                       ") is left out: " + reason);
+                       ") is left out: " + sdf::reasonLeftOut(refused));
       w->DeleteChild(culprit);
       tinyxml2::XMLPrinter printer;
       original.Print(&printer);
