@@ -47,19 +47,23 @@ gazebo_api_library(gazebo_physics VERSIONED SOURCES
   src/gazebo/physics/JointController.cc
   src/gazebo/physics/Link.cc
   src/gazebo/physics/Model.cc
+  src/gazebo/physics/MultiRayShape.cc
   src/gazebo/physics/PhysicsEngine.cc
   src/gazebo/physics/Shape.cc
   src/gazebo/physics/World.cc)
 target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_msgs_protobuf gazebo_common)
 # Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
 gazebo_api_library(gazebo_sensors VERSIONED SOURCES
-  src/gazebo/sensors/Sensor.cc)
+  src/gazebo/sensors/RaySensor.cc
+  src/gazebo/sensors/Sensor.cc
+  src/gazebo/sensors/SensorManager.cc)
 target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
 
 # Gazebo's messages (gazebo::msgs, libgazebo_msgs): protobuf from the .proto files in
 # src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
-set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics)
+set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
+  time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
@@ -92,7 +96,7 @@ configure_file(cmake/MessageTypes.hh.in ${GAZEBO_MSGS_INCLUDE_DIR}/gazebo/msgs/M
 gazebo_api_library(gazebo_msgs_protobuf VERSIONED SOURCES ${GAZEBO_MSGS_SOURCES} src/gazebo/msgs/msgs.cc)
 target_include_directories(gazebo_msgs_protobuf PUBLIC include/gazebo-11 ${GAZEBO_MSGS_INCLUDE_DIR}
   ${GAZEBO_MSGS_GENERATED})
-target_link_libraries(gazebo_msgs_protobuf PUBLIC protobuf::libprotobuf ignition-math6::ignition-math6)
+target_link_libraries(gazebo_msgs_protobuf PUBLIC gazebo_common protobuf::libprotobuf ignition-math6::ignition-math6)
 set_target_properties(gazebo_msgs_protobuf PROPERTIES OUTPUT_NAME gazebo_msgs)
 # protoc's code is not ours to warn about
 target_compile_options(gazebo_msgs_protobuf PRIVATE -w)
@@ -106,16 +110,17 @@ gazebo_api_library(gazebo_transport VERSIONED SOURCES
   src/gazebo/transport/Publisher.cc
   src/gazebo/transport/Subscriber.cc
   src/gazebo/transport/TopicManager.cc)
-target_link_libraries(gazebo_transport PUBLIC gazebo_common protobuf::libprotobuf Threads::Threads)
+target_link_libraries(gazebo_transport PUBLIC gazebo_msgs_protobuf gazebo_common protobuf::libprotobuf Threads::Threads)
 
 # Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
 # (gazebo_ros_elevator: ElevatorPlugin, gazebo_ros_harness: HarnessPlugin, gazebo_ros_wheel_slip:
-# WheelSlipPlugin), in GAZEBO_LIBRARY_DIRS
+# WheelSlipPlugin; gazebo_ros_laser, _range and _block_laser: RayPlugin), in GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
-set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin)
+set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
-  target_link_libraries(${plugin} PUBLIC gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
+  target_link_libraries(${plugin} PUBLIC gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf
+    gazebo_common)
 endforeach()
 install(TARGETS ${GAZEBO_API_PLUGINS} LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 # gazebo_ros_pkgs' plugins over them, as upstream builds them (ROS subscriptions on Gazebo's

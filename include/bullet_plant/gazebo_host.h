@@ -19,6 +19,7 @@ namespace bullet_plant
 {
 class Log;
 class ModelPluginContext;
+class Sensor;
 
 // What Gazebo's physics::World, and the joints plugins make at run time, reach of the world.
 class WorldPluginContext
@@ -76,10 +77,14 @@ public:
   // False, with Gazebo's error naming the plugin, the file and why, where it cannot be; the world
   // runs without it.
   virtual bool loadWorldPlugin(const WorldPluginDescription& plugin) = 0;
+  // SensorPlugin (a <sensor>'s <plugin> whose file was found: the description's `library`): Gazebo's
+  // sensor of its type over `sensor`, the plant's simulation of it (gazebo_host/gazebo_sensor_host.h),
+  // then Load(that sensor, its <plugin> element), Init. False as above; the robot runs without it.
+  virtual bool loadSensorPlugin(const SensorDescription& d, Sensor& sensor, ModelPluginContext& model) = 0;
   // SystemPlugin (gzserver -s FILE): found on the plugin paths, Load(argc, argv), Init. False as above.
   virtual bool loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments) = 0;
   // Each step: event::Events::worldUpdateBegin and beforePhysicsUpdate before the plugins' and the
-  // controllers' updates, worldUpdateEnd after the physics.
+  // controllers' updates, worldUpdateEnd after the physics, then the Gazebo sensors' new readings.
   virtual void beginStep() = 0;
   virtual void endStep() = 0;
   // reset_world / reset_simulation: the world plugins' Reset and Events::worldReset (timeReset too

@@ -156,6 +156,12 @@ struct SensorDescription
   // plant does not simulate as a sensor plugin (warned about), or with one refused (an error): then
   // it publishes nothing on ROS.
   const PluginFile* plugin_file = nullptr;
+  // A Gazebo sensor plugin library of the user's own: the file plugin_filename found on the plugin
+  // paths (findGazeboPluginLibrary), loaded as Gazebo loads it over Gazebo's sensor of this one
+  // (GazeboHost::loadSensorPlugin); plugin_file is then null. "" otherwise. With it, the <sensor> and
+  // <plugin> elements as sdformat read them and their document's root, which keeps their ancestors.
+  std::string library;
+  ::sdf::ElementPtr element, plugin_element, document;
   bool model_plugin = false;  // from <gazebo><plugin>, not from a <sensor>
   std::string pluginParam(const std::string& key, const std::string& fallback = "") const;
   bool hasPluginParam(const std::string& key) const { return plugin.count(key) > 0; }

@@ -58,6 +58,8 @@ public:
   void updateIfDue(SensorContext& context, int64_t time_ns);
   // Whether a reading is due by `time_ns`: it is active and its rate lets it update by then.
   bool dueBy(int64_t time_ns) const { return active_ && gate_.wouldOpen(time_ns); }
+  // Whether its rate lets it update by `time_ns`, active or not.
+  bool rateDueBy(int64_t time_ns) const { return gate_.wouldOpen(time_ns); }
   // A reading made elsewhere (a camera frame rendering while the simulation goes on) becomes the
   // latest once it is done; with `wait`, this waits for it. The robot asks every step.
   virtual void collect(bool wait) {}

@@ -1,5 +1,5 @@
 // Gazebo 11's transport over the plant's process (include/gazebo-11/gazebo/transport/): what a
-// plugin sees of a topic: a subscriber's callback gets each message once, a copy of its own, in the
+// plugin sees of a topic: a subscriber's callback gets each message once (the publisher's copy, shared read-only), in the
 // order published, on the transport's thread; "~/" names the node's world namespace; a latching
 // subscriber gets the last message; an unsubscribed one nothing more; a wrong type is refused as
 // Gazebo refuses it; a rate-limited publisher drops what comes too soon; a callback that throws

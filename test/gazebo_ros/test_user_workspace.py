@@ -295,6 +295,73 @@ CRATE_MODEL = """<?xml version="1.0"?>
 """
 
 
+# A box with two sensors running the user's sensor plugin (nearest_ray, a RayPlugin) before a wall
+# whose face is 1.4 m ahead of the lidar: on a ray sensor, and on a camera, which a RayPlugin cannot
+# take.
+SENSOR_WORLD = """<?xml version="1.0"?>
+<sdf version="1.7">
+  <world name="default">
+    <include><uri>model://ground_plane</uri></include>
+    <model name="wall"><static>true</static><pose>1.6 0 0.5 0 0 0</pose><link name="body">
+      <collision name="c"><geometry><box><size>0.2 3 1</size></box></geometry></collision></link></model>
+    <model name="probe"><pose>0 0 0.1 0 0 0</pose><link name="base">
+      <inertial><mass>2</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
+      <collision name="c"><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
+      <sensor type="ray" name="lidar"><pose>0.1 0 0.05 0 0 0</pose><update_rate>10</update_rate>
+        <ray><scan><horizontal><samples>5</samples><min_angle>-0.3</min_angle><max_angle>0.3</max_angle></horizontal>
+          </scan><range><min>0.1</min><max>5</max></range></ray>
+        <plugin name="nearest" filename="libnearest_ray.so"><report>/nearest_ray</report></plugin>
+      </sensor>
+      <sensor type="camera" name="eye"><update_rate>5</update_rate>
+        <camera><image><width>8</width><height>6</height></image></camera>
+        <plugin name="wrong" filename="libnearest_ray.so"/>
+      </sensor>
+    </link></model>
+  </world>
+</sdf>
+"""
+
+
+@pytest.mark.slow
+def test_a_sensor_plugin_of_the_users_reads_its_ray_sensor_under_gzserver(catkin_make_workspace, tmp_path):
+    """The user's RayPlugin on a ray sensor of a world file under gzserver: OnNewLaserScans after each
+    scan at the sensor's 10 Hz, the laser shape's nearest ray the wall's face, the sensor's
+    LaserScanStamped messages on its Gazebo topic reaching the plugin's own subscriber (which keeps
+    the sensor measuring), SensorManager finding it by name; on a camera it is refused, naming the
+    sensor and the plugin, and the world runs."""
+    workspace, env, _ = catkin_make_workspace
+    world = tmp_path / 'sensor.world'
+    world.write_text(SENSOR_WORLD)
+    ros = RosSystem(str(tmp_path), base_env=env)
+    try:
+        ros.set_param('/use_sim_time', True)
+        server = ros.start(['rosrun', 'gazebo_ros', 'gzserver', '-u', '--verbose', str(world)], 'gzserver')
+        ros.service('/gazebo/get_world_properties', wait=True, timeout=60)
+        ros.service('/gazebo/unpause_physics')
+        ros.wait_until(lambda: ros.service('/gazebo/get_world_properties')['sim_time'] >= 2.0, 60, '2 s simulated')
+        ros.service('/gazebo/pause_physics')
+        sim_time = ros.service('/gazebo/get_world_properties')['sim_time']
+        report = yaml.safe_load(ros.run(['rostopic', 'echo', '-n', '1', '/nearest_ray'],
+                                        timeout=30).stdout.split('\n---')[0])['data'].split()
+        log = server.log()
+    finally:
+        ros.close()
+    seen = dict(zip(report[0::2], report[1::2]))
+    assert seen['topic'] == '~/probe/base/lidar/scan', 'RaySensor::Topic(): ~/PARENT/SENSOR/scan, :: as /'
+    assert seen['found'] == '1', 'SensorManager::GetSensor("lidar") is its sensor'
+    assert seen['ranges'] == '5'
+    assert float(seen['nearest']) == pytest.approx(1.6 - 0.1 - 0.1, abs=5e-3), 'the wall face, 1.4 m ahead'
+    scans = int(seen['scans'])
+    assert abs(scans - 10 * sim_time) <= 2, (scans, sim_time)
+    # its own subscriber has had each scan but perhaps the last, still on its way
+    assert scans - 2 <= int(seen['messages']) <= scans, seen
+    assert float(seen['stamp']) == pytest.approx(round(float(seen['stamp']) * 10) / 10, abs=1e-6), 'on the 10 Hz grid'
+    assert "sensor 'lidar' plugin 'nearest' (libnearest_ray.so): loaded from" in log, log
+    errors = [line for line in log.splitlines() if 'ERROR' in line or '[Err]' in line]
+    assert any("sensor 'eye' plugin 'wrong' (libnearest_ray.so)" in line and 'the plugin is not loaded' in line
+               for line in errors), log
+
+
 def factory_world(root):
     """FACTORY_WORLD written in `root`, and a model folder with the crate its plugin inserts by URI:
     (the world file, the folder for GAZEBO_MODEL_PATH)."""

@@ -52,5 +52,19 @@ void Set(Pose* out, const ignition::math::Pose3d& p)
   Set(out->mutable_position(), p.Pos());
   Set(out->mutable_orientation(), p.Rot());
 }
+Time Convert(const common::Time& t)
+{
+  Time out;
+  Set(&out, t);
+  return out;
+}
+
+common::Time Convert(const Time& t) { return common::Time(t.sec(), t.nsec()); }
+
+void Set(Time* out, const common::Time& t)
+{
+  out->set_sec(t.sec);
+  out->set_nsec(t.nsec);
+}
 }  // namespace msgs
 }  // namespace gazebo

@@ -7,6 +7,7 @@
 #include "gazebo/common/Exception.hh"
 #include "gazebo/physics/PhysicsIface.hh"
 #include "gazebo/physics/World.hh"
+#include "gazebo/transport/Node.hh"
 
 namespace gazebo
 {
@@ -30,7 +31,10 @@ sdf::ElementPtr sensorSpec()
 }
 }  // namespace
 
-Sensor::Sensor(SensorCategory category) : sdf(sensorSpec()), category_(category), id_(next_sensor_id++) {}
+Sensor::Sensor(SensorCategory category)
+  : sdf(sensorSpec()), node(new transport::Node()), category_(category), id_(next_sensor_id++)
+{
+}
 
 Sensor::~Sensor() = default;
 
@@ -53,6 +57,7 @@ void Sensor::Load(const std::string& worldName)
   try
   {
     world = physics::get_world(worldName);
+    node->Init(world->Name());
   }
   catch (const common::Exception&)
   {
@@ -67,6 +72,8 @@ void Sensor::Fini()
   connections.clear();
   active = false;
   world.reset();
+  if (node)
+    node->Fini();
 }
 
 void Sensor::SetParent(const std::string& name, uint32_t id)
@@ -113,7 +120,11 @@ double Sensor::UpdateRate() const
 void Sensor::SetUpdateRate(double hz)
 {
   updatePeriod = hz > 0.0 ? common::Time(1.0 / hz) : common::Time::Zero;
+  if (bridge)
+    bridge->setUpdateRate(hz > 0.0 ? hz : 0.0);
 }
+
+void Sensor::SetBridge(std::shared_ptr<SensorBridge> value) { bridge = std::move(value); }
 
 void Sensor::ResetLastUpdateTime()
 {

@@ -66,7 +66,7 @@ void Publisher::SetPublication(PublicationPtr) {}
 
 void Publisher::PublishImpl(const google::protobuf::Message& _message, bool _block)
 {
-  if (_message.GetTypeName() != this->msgType)
+  if (_message.GetDescriptor()->full_name() != this->msgType)
     gzthrow("Invalid message type[" << _message.GetTypeName() << "] published on topic[" << this->topic
                                     << "], which was advertised with type[" << this->msgType << "]");
   if (!_message.IsInitialized())
@@ -77,6 +77,19 @@ void Publisher::PublishImpl(const google::protobuf::Message& _message, bool _blo
   }
   MessagePtr copy(_message.New());
   copy->CopyFrom(_message);
+  this->Send(std::move(copy), _block);
+}
+
+void Publisher::PublishOwned(MessagePtr _message)
+{
+  if (_message->GetDescriptor()->full_name() != this->msgType)
+    gzthrow("Invalid message type[" << _message->GetTypeName() << "] published on topic[" << this->topic
+                                    << "], which was advertised with type[" << this->msgType << "]");
+  this->Send(std::move(_message), false);
+}
+
+void Publisher::Send(MessagePtr copy, bool _block)
+{
   {
     std::lock_guard<std::mutex> lock(this->mutex);
     // Gazebo's rate limit, by the wall clock as Gazebo's.

@@ -186,7 +186,19 @@ SensorDescription readSensor(const sdf::ElementPtr& s, const std::string& link)
     for (sdf::ElementPtr c = sdf::child(contact, "collision"); c; c = c->GetNextElement("collision"))
       d.contact_collisions.push_back(sdf::text(c));
   if (sdf::ElementPtr plugin = sdf::child(s, "plugin"))
+  {
     readPluginBlock(plugin, d);
+    // A file found on the plugin paths is loaded as Gazebo would, even where the plant has its own
+    // plugin of that name (readModelPlugin's rule).
+    d.library = findGazeboPluginLibrary(d.plugin_filename);
+    if (!d.library.empty())
+    {
+      d.plugin_file = nullptr;
+      d.element = s;
+      d.plugin_element = plugin;
+      d.document = sdf::root(s);
+    }
+  }
   return d;
 }
 
@@ -235,7 +247,7 @@ void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDe
     SensorDescription& d = out.sensors.back();
     for (const std::string& problem : d.description_problems)
       out.warnings.push_back("sensor '" + d.name + "': " + problem);
-    if (d.plugin_given && (!d.plugin_file || d.plugin_file->role != PluginRole::Sensor))
+    if (d.plugin_given && d.library.empty() && (!d.plugin_file || d.plugin_file->role != PluginRole::Sensor))
     {
       out.warnings.push_back(unknownPluginWarning(d.plugin_name, d.plugin_filename, " of sensor '" + d.name + "'"));
       d.plugin_file = nullptr;  // a model plugin's file in a <sensor> is no sensor plugin

@@ -278,6 +278,7 @@ PlantGazeboHost::PlantGazeboHost(WorldPluginContext& world)
 {
   physics_mutex_ = world_->Physics()->GetPhysicsUpdateMutex();
   step_info_.worldName = world_->Name();
+  sensors_ = std::make_unique<GazeboSensorHost>(*this);
 }
 
 PlantGazeboHost::~PlantGazeboHost()
@@ -285,6 +286,7 @@ PlantGazeboHost::~PlantGazeboHost()
   if (stepping_)
     physics_mutex_->unlock();
   // The plugins go before the models and the world they hold, as Gazebo's world unloads them.
+  sensors_.reset();
   world_plugins_.clear();
   system_plugins_.clear();
   for (auto& model : models_)
@@ -312,6 +314,7 @@ std::shared_ptr<ContextModel> PlantGazeboHost::modelBridge(const std::string& na
 
 void PlantGazeboHost::modelRemoved(const std::string& name)
 {
+  sensors_->modelRemoved(name);
   auto known = models_.find(name);
   if (known == models_.end())
     return;
@@ -405,6 +408,13 @@ void PlantGazeboHost::endStep()
     stepping_ = false;
     physics_mutex_->unlock();
   }
+  // Gazebo's sensors update outside the world update, in threads of their own; here after it.
+  sensors_->update();
+}
+
+bool PlantGazeboHost::loadSensorPlugin(const SensorDescription& d, Sensor& sensor, ModelPluginContext& model)
+{
+  return sensors_->load(d, sensor, model);
 }
 
 void PlantGazeboHost::reset(bool simulation)
@@ -416,6 +426,7 @@ void PlantGazeboHost::reset(bool simulation)
       gazebo::event::Events::timeReset();
     gazebo::event::Events::worldReset();
   });
+  sensors_->reset();
 }
 
 std::unique_ptr<GazeboHost> createGazeboHost(WorldPluginContext& world) { return std::make_unique<PlantGazeboHost>(world); }

@@ -17,6 +17,7 @@
 
 #include "bullet_plant/gazebo_host.h"
 #include "bullet_plant/log.h"
+#include "gazebo_host/gazebo_sensor_host.h"
 #include "gazebo_host/model_bridge.h"
 
 namespace bullet_plant
@@ -30,6 +31,7 @@ public:
   ~PlantGazeboHost() override;
 
   bool loadWorldPlugin(const WorldPluginDescription& plugin) override;
+  bool loadSensorPlugin(const SensorDescription& d, Sensor& sensor, ModelPluginContext& model) override;
   bool loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments) override;
   void beginStep() override;
   void endStep() override;
@@ -54,6 +56,7 @@ private:
   std::vector<sdf::ElementPtr> world_plugin_documents_;  // their elements' ancestors, for GetParent()
   std::vector<gazebo::SystemPlugin::TPtr> system_plugins_;
   std::vector<std::vector<char>> system_arguments_;  // argv's strings outlive Load, as Gazebo's do
+  std::unique_ptr<GazeboSensorHost> sensors_;
   bool stepping_ = false;  // the physics update mutex is held from beginStep to endStep
   boost::recursive_mutex* physics_mutex_ = nullptr;
   gazebo::common::UpdateInfo step_info_;  // the world's name once, the times each step

@@ -966,6 +966,25 @@ void createModelPlugins(Robot::Internals& r)
     }
   }
 }
+// 11. The sensor plugins of the user's own (a <sensor>'s <plugin> file found on the plugin paths),
+// over the sensors made in step 9, hosted by the world's Gazebo host as Gazebo's sensors.
+void loadGazeboSensorPlugins(Robot::Internals& r)
+{
+  for (const SensorDescription& d : r.description.sensors)
+  {
+    if (d.library.empty())
+      continue;
+    Sensor* sensor = nullptr;
+    for (const std::unique_ptr<Sensor>& s : r.sensors)
+      if (s->name() == d.name)
+        sensor = s.get();
+    if (!sensor)
+      r.world->log.error(r.name + ": sensor '" + d.name + "' plugin '" + d.plugin_name + "' (" + d.plugin_filename +
+                         "): its sensor is not simulated; the plugin is not loaded");
+    else
+      r.model_plugin_context.gazeboHost().loadSensorPlugin(d, *sensor, r.model_plugin_context);
+  }
+}
 }  // namespace
 
 namespace
@@ -1046,6 +1065,7 @@ void loadModelPlugins(Robot::Internals& r)
   for (const std::string& joint : r.description.joint_feedback)  // before a plugin asks for it
     r.wrench_watches.watch(r.multibody, *r.description.model, joint);
   createModelPlugins(r);
+  loadGazeboSensorPlugins(r);
   allowSleep(r);
 }
 

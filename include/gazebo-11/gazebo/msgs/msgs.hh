@@ -12,6 +12,7 @@
 #include <ignition/math/Quaternion.hh>
 #include <ignition/math/Vector3.hh>
 
+#include "gazebo/common/Time.hh"
 #include "gazebo/msgs/MessageTypes.hh"
 
 namespace gazebo
@@ -28,5 +29,9 @@ ignition::math::Pose3d ConvertIgn(const Pose& p);
 void Set(Vector3d* out, const ignition::math::Vector3d& v);
 void Set(Quaternion* out, const ignition::math::Quaterniond& q);
 void Set(Pose* out, const ignition::math::Pose3d& p);
+// Times (a sensor's measurement's stamp) as messages, and back.
+Time Convert(const common::Time& t);
+common::Time Convert(const Time& t);
+void Set(Time* out, const common::Time& t);
 }  // namespace msgs
 }  // namespace gazebo

@@ -28,6 +28,7 @@ class BoxShape;
 class CylinderShape;
 class SphereShape;
 class MeshShape;
+class MultiRayShape;
 class SurfaceParams;
 class FrictionPyramid;
 
@@ -46,6 +47,7 @@ typedef boost::shared_ptr<BoxShape> BoxShapePtr;
 typedef boost::shared_ptr<CylinderShape> CylinderShapePtr;
 typedef boost::shared_ptr<SphereShape> SphereShapePtr;
 typedef boost::shared_ptr<MeshShape> MeshShapePtr;
+typedef boost::shared_ptr<MultiRayShape> MultiRayShapePtr;
 typedef boost::shared_ptr<SurfaceParams> SurfaceParamsPtr;
 typedef std::shared_ptr<FrictionPyramid> FrictionPyramidPtr;
 

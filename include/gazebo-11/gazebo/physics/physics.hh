@@ -13,6 +13,7 @@
 #include "gazebo/physics/JointController.hh"
 #include "gazebo/physics/Link.hh"
 #include "gazebo/physics/Model.hh"
+#include "gazebo/physics/MultiRayShape.hh"
 #include "gazebo/physics/PhysicsEngine.hh"
 #include "gazebo/physics/PhysicsIface.hh"
 #include "gazebo/physics/PhysicsTypes.hh"

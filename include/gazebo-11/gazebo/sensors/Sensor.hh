@@ -17,6 +17,7 @@
 #include "gazebo/common/Event.hh"
 #include "gazebo/common/Time.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
+#include "gazebo/sensors/SensorBridge.hh"
 #include "gazebo/sensors/SensorTypes.hh"
 #include "gazebo/transport/TransportTypes.hh"
 #include "gazebo/util/system.hh"
@@ -72,6 +73,10 @@ public:
 
   event::ConnectionPtr ConnectUpdated(std::function<void()> subscriber);
 
+  // Not Gazebo's: the simulator's sensor this one is (set by the simulator before Load); its rate
+  // follows SetUpdateRate. Null for a sensor that is no simulation's (it then measures nothing).
+  void SetBridge(std::shared_ptr<SensorBridge> bridge);
+
 protected:
   // What a sensor type measures; true where it made a measurement.
   virtual bool UpdateImpl(bool /*force*/) { return false; }
@@ -82,7 +87,9 @@ protected:
   sdf::ElementPtr sdf;
   ignition::math::Pose3d pose;
   std::vector<event::ConnectionPtr> connections;
+  // Initialized in the sensor's world by Load, as Gazebo's ("~/" is /gazebo/WORLD/).
   transport::NodePtr node;
+  std::shared_ptr<SensorBridge> bridge;
   std::string parentName;
   uint32_t parentId = 0;
   physics::WorldPtr world;

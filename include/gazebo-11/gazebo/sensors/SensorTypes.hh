@@ -10,7 +10,9 @@ namespace gazebo
 namespace sensors
 {
 class Sensor;
+class RaySensor;
 typedef std::shared_ptr<Sensor> SensorPtr;
+typedef std::shared_ptr<RaySensor> RaySensorPtr;
 typedef std::vector<SensorPtr> Sensor_V;
 
 // Gazebo updates the sensors of each category in a thread of their own.

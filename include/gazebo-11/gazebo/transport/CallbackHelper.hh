@@ -67,7 +67,14 @@ public:
     this->SetLatching(false);
     if (!_newMsg || _newMsg->GetDescriptor() != M::descriptor())
       return false;
-    // Each subscriber a message of its own, as Gazebo's (which copies it into a new M).
+    // The published message itself, read-only (the callback takes it const), shared by every
+    // subscriber: Gazebo's gives each its own copy, which a const message makes no different to
+    // read; a sensor's scan then costs one copy (the publisher's) however many listen.
+    if (boost::shared_ptr<M const> shared = boost::dynamic_pointer_cast<M const>(_newMsg))
+    {
+      this->callback(shared);
+      return true;
+    }
     boost::shared_ptr<M> message = boost::make_shared<M>();
     message->CopyFrom(*_newMsg);
     this->callback(message);

@@ -36,7 +36,7 @@ public:
   // _block: returns once every subscriber's callback has had it (except from inside a callback).
   void Publish(const google::protobuf::Message& _message, bool _block = false) { this->PublishImpl(_message, _block); }
   template <typename M>
-  void Publish(M _message, bool _block = false)
+  void Publish(const M& _message, bool _block = false)
   {
     this->PublishImpl(_message, _block);
   }
@@ -58,8 +58,13 @@ public:
   // The transport's own: a message of this publisher's has reached its subscribers.
   void OnDelivered();
 
+  // Not Gazebo's: publishes `_message` itself, which the caller gives up (it must not change it
+  // after): the simulator's sensors publish each measurement so, without Publish's copy.
+  void PublishOwned(MessagePtr _message);
+
 private:
   void PublishImpl(const google::protobuf::Message& _message, bool _block);
+  void Send(MessagePtr _message, bool _block);
 
   std::string topic;
   std::string msgType;

@@ -17,6 +17,9 @@
 
 #include <boost/weak_ptr.hpp>
 
+// as Gazebo's: every node's user has the messages (gazebo_ros_block_laser converts a msgs::Time
+// having included only Node.hh)
+#include "gazebo/msgs/msgs.hh"
 #include "gazebo/transport/TransportTypes.hh"
 
 namespace gazebo

@@ -1,0 +1,39 @@
+// The simulator's side of the sensor classes: the one simulation of a sensor that its
+// sensors::Sensor object reads and drives (its rate, whether it measures). The Bullet plant
+// implements it over its own sensors (src/plant/gazebo_host/sensor_host.cpp); a plugin never uses it.
+#pragma once
+
+#include <vector>
+
+#include <ignition/math/Pose3.hh>
+
+#include "gazebo/common/Time.hh"
+
+namespace gazebo
+{
+namespace sensors
+{
+class SensorBridge
+{
+public:
+  virtual ~SensorBridge() = default;
+  // Whether the simulation measures (Sensor::IsActive, handed over each step).
+  virtual void setActive(bool active) = 0;
+  // Sensor::SetUpdateRate (0: every step).
+  virtual void setUpdateRate(double hz) = 0;
+  // The sensor's pose in the world now.
+  virtual ignition::math::Pose3d worldPose() const = 0;
+  // The simulated time of the latest measurement.
+  virtual common::Time measurementTime() const = 0;
+};
+
+class RayBridge : public SensorBridge
+{
+public:
+  // The latest scan's ranges, row (vertical sample) after row, as the simulation measured them
+  // (its noise applied): +inf where nothing is within the range, -inf for a hit nearer than its
+  // minimum; empty before the first scan.
+  virtual const std::vector<float>& ranges() const = 0;
+};
+}  // namespace sensors
+}  // namespace gazebo

@@ -1,0 +1,8 @@
+// Gazebo's sensors library, as a plugin includes it whole.
+#pragma once
+
+#include "gazebo/sensors/RaySensor.hh"
+#include "gazebo/sensors/Sensor.hh"
+#include "gazebo/sensors/SensorManager.hh"
+#include "gazebo/sensors/SensorTypes.hh"
+#include "gazebo/sensors/SensorsIface.hh"

@@ -1,0 +1,193 @@
+#include "gazebo_host/gazebo_sensor_host.h"
+
+#include <cmath>
+
+#include <gazebo/physics/World.hh>
+#include <gazebo/sensors/RaySensor.hh>
+#include <gazebo/sensors/SensorManager.hh>
+#include <gazebo/transport/TopicManager.hh>
+
+#include "bullet_plant/log.h"
+#include "bullet_plant/model_plugin.h"
+#include "bullet_plant/sensors.h"
+#include "gazebo_host/gazebo_world_host.h"
+
+namespace bullet_plant
+{
+namespace
+{
+constexpr const char* kNotLoaded = "; the plugin is not loaded";
+
+// A plant sensor as Gazebo's sensors see it: its activity and rate, its pose in the world (its
+// link's, which the model's bridge answers while the model is in the world), its latest reading's
+// time. The host removes the Gazebo sensor before the plant's goes.
+class PlantSensorBridge
+{
+public:
+  PlantSensorBridge(Sensor& sensor, std::shared_ptr<ContextModel> model)
+    : sensor_(sensor), model_(std::move(model)), link_(sensor.description().link)
+  {
+    const urdf::Pose& p = sensor.description().pose;
+    pose_ = {p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+  }
+  void setActive(bool active) { sensor_.setActive(active); }
+  void setUpdateRate(double hz) { sensor_.setUpdatePeriodNs(hz > 0.0 ? static_cast<int64_t>(1e9 / hz) : 0); }
+  ignition::math::Pose3d worldPose() const { return pose_ + model_->linkPose(link_); }
+  static gazebo::common::Time time(int64_t ns)
+  {
+    gazebo::common::Time t;
+    t.sec = static_cast<int32_t>(ns / 1000000000);
+    t.nsec = static_cast<int32_t>(ns % 1000000000);
+    return t;
+  }
+
+private:
+  Sensor& sensor_;
+  std::shared_ptr<ContextModel> model_;
+  std::string link_;
+  ignition::math::Pose3d pose_;  // in its link's frame
+};
+
+class LidarBridge final : public gazebo::sensors::RayBridge
+{
+public:
+  LidarBridge(Lidar& lidar, std::shared_ptr<ContextModel> model) : lidar_(lidar), plant_(lidar, std::move(model)) {}
+  void setActive(bool active) override { plant_.setActive(active); }
+  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
+  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
+  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(lidar_.latest().stamp_ns); }
+  const std::vector<float>& ranges() const override { return lidar_.latest().ranges; }
+
+private:
+  Lidar& lidar_;
+  PlantSensorBridge plant_;
+};
+
+// The Gazebo sensor of the plant's sensor's kind over it; null where the plant has none yet (the
+// reason in `why`).
+gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextModel> model, std::string& why)
+{
+  if (auto* lidar = dynamic_cast<Lidar*>(&sensor))
+  {
+    if (sensor.description().type == "ray")
+    {
+      auto ray = std::make_shared<gazebo::sensors::RaySensor>();
+      ray->SetBridge(std::make_shared<LidarBridge>(*lidar, std::move(model)));
+      return ray;
+    }
+  }
+  why = "Gazebo's sensor of type '" + sensor.description().type +
+        "' is not offered to plugins yet (RaySensor, type \"ray\", is: docs/gazebo_api.md)";
+  return nullptr;
+}
+}  // namespace
+
+GazeboSensorHost::~GazeboSensorHost()
+{
+  for (Hosted& hosted : hosted_)
+    remove(hosted);
+}
+
+bool GazeboSensorHost::load(const SensorDescription& d, Sensor& plant, ModelPluginContext& model)
+{
+  Log& log = model.log();
+  const std::string label = model.modelName() + ": sensor '" + d.name + "' plugin '" + d.plugin_name + "' (" +
+                            d.plugin_filename + ")";
+  std::string why;
+  Hosted hosted;
+  hosted.model = model.modelName();
+  hosted.plant = &plant;
+  hosted.sensor = gazeboSensor(plant, host_.modelBridge(model), why);
+  if (!hosted.sensor)
+  {
+    log.error(label + ": " + why + kNotLoaded);
+    return false;
+  }
+  hosted.plugin = createPlugin<gazebo::SensorPlugin>(log, label, d.library, d.plugin_name, gazebo::SENSOR_PLUGIN,
+                                                     kNotLoaded);
+  if (!hosted.plugin)
+    return false;
+  hosted.document = d.document;
+  const sdf::ElementPtr element = pluginElement(d.plugin_element);
+  // Gazebo's sensor is loaded from its <sensor> element and named in its link as Gazebo scopes it
+  // (MODEL::LINK): the plugin's topics and SensorManager's names are Gazebo's.
+  hosted.sensor->SetParent(model.modelName() + "::" + d.link, 0);
+  const std::string world = host_.world()->Name();
+  if (!pluginCall(log, [&] { return label + ": its Load threw"; }, kNotLoaded, [&] {
+        hosted.sensor->Load(world, d.element);
+        hosted.sensor->Init();
+        gazebo::sensors::SensorManager::Instance()->AddSensor(hosted.sensor);
+        hosted.plugin->Load(hosted.sensor, element);
+        hosted.plugin->Init();
+      }))
+  {
+    remove(hosted);
+    return false;
+  }
+  hosted.readings_seen = plant.updates();
+  plant.setActive(hosted.sensor->IsActive());
+  log.info(label + ": loaded from " + d.library);
+  hosted_.push_back(std::move(hosted));
+  return true;
+}
+
+void GazeboSensorHost::update()
+{
+  const int64_t next_step_ns =
+      host_.context().timeNs() + static_cast<int64_t>(std::llround(host_.context().stepSize() * 1e9));
+  for (Hosted& hosted : hosted_)
+  {
+    if (hosted.plant->updates() != hosted.readings_seen)
+    {
+      hosted.readings_seen = hosted.plant->updates();
+      pluginCall(host_.context().log(),
+                 [&] { return hosted.model + ": sensor '" + hosted.sensor->Name() + "': a callback on its update threw"; },
+                 "", [&] { hosted.sensor->Update(true); });
+    }
+    // Whether the plant measures at the next step it may (asked then only: a RaySensor's IsActive
+    // looks its topic's subscribers up).
+    if (hosted.plant->rateDueBy(next_step_ns))
+      hosted.plant->setActive(hosted.sensor->IsActive());
+  }
+}
+
+void GazeboSensorHost::reset()
+{
+  for (Hosted& hosted : hosted_)
+  {
+    hosted.sensor->ResetLastUpdateTime();
+    pluginCall(host_.context().log(), [&] { return hosted.model + ": sensor '" + hosted.sensor->Name() + "' plugin's Reset threw"; },
+               "", [&] { hosted.plugin->Reset(); });
+  }
+}
+
+void GazeboSensorHost::modelRemoved(const std::string& model)
+{
+  for (auto it = hosted_.begin(); it != hosted_.end();)
+    if (it->model == model)
+    {
+      remove(*it);
+      it = hosted_.erase(it);
+    }
+    else
+      ++it;
+}
+
+void GazeboSensorHost::remove(Hosted& hosted)
+{
+  // The sensor stops publishing (Fini), and what it published is handed over, before its plugin
+  // goes: a plugin's destructor shuts its ROS publishers before its transport subscriber goes
+  // (upstream's gazebo_ros_laser does), and a scan delivered in between would publish on one shut.
+  if (hosted.sensor)
+  {
+    gazebo::sensors::SensorManager& manager = *gazebo::sensors::SensorManager::Instance();
+    if (manager.GetSensor(hosted.sensor->ScopedName()) == hosted.sensor)
+      manager.RemoveSensor(hosted.sensor->ScopedName());  // Fini
+    else
+      hosted.sensor->Fini();  // its Load failed before it was added
+    gazebo::transport::TopicManager::Instance()->WaitForAll();
+  }
+  hosted.plugin.reset();
+  hosted.sensor.reset();
+}
+}  // namespace bullet_plant
