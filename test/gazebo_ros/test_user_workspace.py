@@ -355,7 +355,7 @@ def test_a_sensor_plugin_of_the_users_reads_its_ray_sensor_under_gzserver(catkin
     assert abs(scans - 10 * sim_time) <= 2, (scans, sim_time)
     # its own subscriber has had each scan but perhaps the last, still on its way
     assert scans - 2 <= int(seen['messages']) <= scans, seen
-    assert float(seen['stamp']) == pytest.approx(round(float(seen['stamp']) * 10) / 10, abs=1e-6), 'on the 10 Hz grid'
+    assert sim_time - 0.1 - 1e-6 <= float(seen['stamp']) <= sim_time, (seen, sim_time)  # the last scan's time
     assert "sensor 'lidar' plugin 'nearest' (libnearest_ray.so): loaded from" in log, log
     errors = [line for line in log.splitlines() if 'ERROR' in line or '[Err]' in line]
     assert any("sensor 'eye' plugin 'wrong' (libnearest_ray.so)" in line and 'the plugin is not loaded' in line

@@ -21,20 +21,6 @@ namespace
 {
 constexpr const char* kNotLoaded = "; the plugin is not loaded";
 
-// gazebo_ros's spawn with -robot_namespace gives each <plugin> that names no <robotNamespace> one,
-// the spawn's (gazebo_ros_api_plugin's walkChildAddRobotNamespace): added to the plugin's element.
-void addSpawnNamespace(const sdf::ElementPtr& plugin, const std::string& spawn_namespace)
-{
-  if (spawn_namespace.empty() || plugin->HasElement("robotNamespace"))
-    return;
-  // (as sdformat keeps a plugin's own elements: a string value, no description)
-  sdf::ElementPtr ns(new sdf::Element);
-  ns->SetName("robotNamespace");
-  ns->AddValue("string", spawn_namespace, true);
-  ns->SetParent(plugin);
-  plugin->InsertElement(ns);
-}
-
 class GazeboModelPluginHost final : public ModelPlugin
 {
 public:

@@ -109,6 +109,8 @@ bool GazeboSensorHost::load(const SensorDescription& d, Sensor& plant, ModelPlug
     return false;
   hosted.document = d.document;
   const sdf::ElementPtr element = pluginElement(d.plugin_element);
+  if (element)
+    addSpawnNamespace(element, model.spawnNamespace());
   // Gazebo's sensor is loaded from its <sensor> element and named in its link as Gazebo scopes it
   // (MODEL::LINK): the plugin's topics and SensorManager's names are Gazebo's.
   hosted.sensor->SetParent(model.modelName() + "::" + d.link, 0);

@@ -273,6 +273,18 @@ sdf::ElementPtr pluginElement(const sdf::ElementPtr& read)
   return copy;
 }
 
+void addSpawnNamespace(const sdf::ElementPtr& plugin, const std::string& spawn_namespace)
+{
+  if (spawn_namespace.empty() || plugin->HasElement("robotNamespace"))
+    return;
+  // (as sdformat keeps a plugin's own elements: a string value, no description)
+  sdf::ElementPtr ns(new sdf::Element);
+  ns->SetName("robotNamespace");
+  ns->AddValue("string", spawn_namespace, true);
+  ns->SetParent(plugin);
+  plugin->InsertElement(ns);
+}
+
 PlantGazeboHost::PlantGazeboHost(WorldPluginContext& world)
   : context_(world), bridge_(std::make_shared<HostWorld>(*this)), world_(new gazebo::physics::World(bridge_))
 {

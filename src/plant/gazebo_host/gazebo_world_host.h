@@ -126,4 +126,9 @@ typename Plugin::TPtr createPlugin(Log& log, const std::string& label, const std
 // each reset of a world made from it. Its parent is the element's (the model, the world).
 sdf::ElementPtr pluginElement(const sdf::ElementPtr& read);
 
+// gazebo_ros's spawn with -robot_namespace gives each <plugin> of the model that names no
+// <robotNamespace> one, the spawn's (gazebo_ros_api_plugin's walkChildAddRobotNamespace walks the
+// whole model, its sensors' plugins too): added to a plugin's own element.
+void addSpawnNamespace(const sdf::ElementPtr& plugin, const std::string& spawn_namespace);
+
 }  // namespace bullet_plant
