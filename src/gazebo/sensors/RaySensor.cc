@@ -90,21 +90,32 @@ double RaySensor::VerticalAngleResolution() const
   return (VerticalAngleMax() - VerticalAngleMin()).Radian() / (VerticalRangeCount() - 1);
 }
 
+namespace
+{
+// Element `index` of the last scan's `values` (its ranges or intensities), with Gazebo's warning for
+// a scan not made yet and its error for an index past the end (0 for both).
+double scanValue(const google::protobuf::RepeatedField<double>& values, unsigned int index, const char* empty,
+                 const char* invalid)
+{
+  if (values.empty())
+  {
+    gzwarn << empty << "\n";
+    return 0.0;
+  }
+  if (static_cast<int>(index) >= values.size())
+  {
+    gzerr << invalid << "[" << index << "]\n";
+    return 0.0;
+  }
+  return values.Get(static_cast<int>(index));
+}
+}  // namespace
+
 double RaySensor::Range(unsigned int index) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  const auto& ranges = laser_msg_->scan().ranges();
-  if (ranges.empty())
-  {
-    gzwarn << "ranges not constructed yet (zero sized)\n";
-    return 0.0;
-  }
-  if (static_cast<int>(index) >= ranges.size())
-  {
-    gzerr << "Invalid range index[" << index << "]\n";
-    return 0.0;
-  }
-  return ranges.Get(static_cast<int>(index));
+  return scanValue(laser_msg_->scan().ranges(), index, "ranges not constructed yet (zero sized)",
+                   "Invalid range index");
 }
 
 void RaySensor::Ranges(std::vector<double>& out) const
@@ -116,18 +127,8 @@ void RaySensor::Ranges(std::vector<double>& out) const
 double RaySensor::Retro(unsigned int index) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  const auto& intensities = laser_msg_->scan().intensities();
-  if (intensities.empty())
-  {
-    gzwarn << "Intensities not constructed yet (zero size)\n";
-    return 0.0;
-  }
-  if (static_cast<int>(index) >= intensities.size())
-  {
-    gzerr << "Invalid intensity index[" << index << "]\n";
-    return 0.0;
-  }
-  return intensities.Get(static_cast<int>(index));
+  return scanValue(laser_msg_->scan().intensities(), index, "Intensities not constructed yet (zero size)",
+                   "Invalid intensity index");
 }
 
 int RaySensor::Fiducial(unsigned int index) const
