@@ -21,10 +21,6 @@ std::string resolveTfFrame(const std::string& prefix, const std::string& frame);
 // (gazebo_ros writes it into every plugin), else the plugin's own default.
 std::string pluginNamespace(const SensorDescription& d, const std::string& spawn_namespace, const std::string& model_name);
 
-// The prefix its frame ids resolve against before a tf_prefix parameter replaces it (the node reads
-// that): the namespace without trailing '/' for the laser and camera plugins, none for the others.
-std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugin_namespace);
-
 // The frame id of what it publishes, each plugin with its own rule.
 std::string pluginFrameId(const SensorDescription& d, const std::string& tf_prefix);
 
@@ -56,5 +52,10 @@ std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::stri
 // parent's, then /tf_prefix; none but for the plant's own GazeboRos helper plugins (a Gazebo plugin
 // library of the user's asks the parameter server itself).
 std::vector<std::string> tfPrefixParamKeys(const ModelPluginDescription& d, const std::string& plugin_namespace);
+// The tf_prefix parameter tf::getPrefixParam finds in `params` from `plugin_namespace` up (the
+// nearest of NS/tf_prefix, its parents', /tf_prefix); "" where there is none. gazebo_ros_pkgs
+// 2.9.2's sensor plugins take no other prefix (its "Leave empty tf_prefix values unset": before it,
+// the laser and camera plugins fell back to their namespace).
+std::string searchedTfPrefix(const std::string& plugin_namespace, const Param& params);
 
 }  // namespace bullet_plant

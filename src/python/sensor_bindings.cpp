@@ -9,16 +9,16 @@ namespace python
 {
 namespace
 {
-// What its gazebo_ros plugin calls things (plugin_names.h); the tf_prefix is the plugin's default,
-// as there is no parameter server to override it.
+// What its gazebo_ros plugin calls things (plugin_names.h); its frame as without a tf_prefix
+// parameter (there is no parameter server), as gazebo_ros_pkgs 2.9.2's plugins resolve it then.
 std::string namespaceOf(const Robot& r, const Sensor& s)
 {
   return pluginNamespace(s.description(), r.spawnNamespace(), r.name());
 }
 
-std::string frameOf(const Robot& r, const Sensor& s)
+std::string frameOf(const Sensor& s)
 {
-  return pluginFrameId(s.description(), defaultTfPrefix(s.description(), namespaceOf(r, s)));
+  return pluginFrameId(s.description(), "");
 }
 }  // namespace
 
@@ -39,14 +39,14 @@ void init_sensors(py::class_<RobotRef>& robot)
       .def("sensor_topic", onRobot([](Robot& r, const std::string& name) { return pluginTopic(sensorOf(r, name).description()); }))
       .def("sensor_namespace", onRobot([](Robot& r, const std::string& name) { return namespaceOf(r, sensorOf(r, name)); }),
            "the namespace the sensor's gazebo_ros plugin publishes in")
-      .def("sensor_frame", onRobot([](Robot& r, const std::string& name) { return frameOf(r, sensorOf(r, name)); }),
-           "the frame id the sensor's plugin publishes (tf_prefix resolved)")
+      .def("sensor_frame", onRobot([](Robot& r, const std::string& name) { return frameOf(sensorOf(r, name)); }),
+           "the frame id the sensor's plugin publishes where no tf_prefix parameter is set")
       .def("imu", onRobot([](Robot& r, const std::string& name) -> py::object {
         Imu& imu = sensorAs<Imu>(r, name, "an IMU");
         if (!imu.hasReading())
           return py::none();
         const ImuReading& m = imu.latest();
-        py::dict d = stampedDict(m.stamp_ns, frameOf(r, imu));
+        py::dict d = stampedDict(m.stamp_ns, frameOf(imu));
         d["orientation"] = xyzwList(m.orientation);
         d["angular_velocity"] = xyzList(m.angular_velocity);
         d["linear_acceleration"] = xyzList(m.linear_acceleration);
@@ -57,7 +57,7 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!odometry.hasReading())
           return py::none();
         const GroundTruthReading& m = odometry.latest();
-        py::dict d = stampedDict(m.stamp_ns, frameOf(r, odometry));
+        py::dict d = stampedDict(m.stamp_ns, frameOf(odometry));
         d["child_frame_id"] = pluginChildFrameId(odometry.description());
         d["position"] = std::vector<double>{m.pose.position.x, m.pose.position.y, m.pose.position.z};
         d["orientation"] = std::vector<double>{m.pose.rotation.x, m.pose.rotation.y, m.pose.rotation.z, m.pose.rotation.w};
@@ -70,7 +70,7 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!sensor.hasReading())
           return py::none();
         const ContactReading& m = sensor.latest();
-        py::dict d = stampedDict(m.stamp_ns, frameOf(r, sensor));
+        py::dict d = stampedDict(m.stamp_ns, frameOf(sensor));
         py::list states;
         for (const ContactState& s : m.states)
         {
@@ -103,7 +103,7 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!lidar.hasScan())
           return py::none();
         const LaserScan& s = lidar.latest();
-        py::dict d = stampedDict(s.stamp_ns, frameOf(r, lidar));
+        py::dict d = stampedDict(s.stamp_ns, frameOf(lidar));
         d["angle_min"] = s.angle_min;
         d["angle_max"] = s.angle_max;
         d["angle_increment"] = s.angle_increment;
@@ -119,7 +119,7 @@ void init_sensors(py::class_<RobotRef>& robot)
         if (!camera.hasFrame())
           return py::none();
         const CameraFrame& f = camera.latest();
-        py::dict d = stampedDict(f.stamp_ns, frameOf(r, camera));
+        py::dict d = stampedDict(f.stamp_ns, frameOf(camera));
         d["width"] = f.width;
         d["height"] = f.height;
         d["K"] = std::vector<double>{f.fx, 0, f.cx, 0, f.fy, f.cy, 0, 0, 1};

@@ -48,10 +48,10 @@ TEST(PluginNames, ImuNamespacesAsTheirPluginsTakeThem)
 TEST(PluginNames, ImuFramesAsGivenButForTheLeadingSlash)
 {
   const SensorDescription sensor_plugin = sensor("imu", "imu_link", {{"frameName", "/car1/imu_link"}});
-  EXPECT_EQ(pluginFrameId(sensor_plugin, defaultTfPrefix(sensor_plugin, "/car1")), "car1/imu_link")
+  EXPECT_EQ(pluginFrameId(sensor_plugin, ""), "car1/imu_link")
       << "frameName verbatim but for the leading '/'";
   const SensorDescription model_plugin = sensor("imu", "imu_link", {{"bodyName", "imu_link"}}, true);
-  EXPECT_EQ(pluginFrameId(model_plugin, defaultTfPrefix(model_plugin, "/car1")), "imu_link")
+  EXPECT_EQ(pluginFrameId(model_plugin, ""), "imu_link")
       << "frameName defaults to bodyName";
 }
 
@@ -61,21 +61,21 @@ TEST(PluginNames, P3dFrameResolvesOnlyAgainstATfPrefixParameter)
                                        {{"bodyName", "base_footprint"}, {"topicName", "ground_truth"}}, true);
   EXPECT_EQ(pluginNamespace(p3d, "/car1", "car1"), "/car1");
   EXPECT_EQ(pluginTopic(p3d), "ground_truth");
-  EXPECT_EQ(defaultTfPrefix(p3d, "/car1"), "");
   EXPECT_EQ(pluginFrameId(p3d, ""), "world") << "no tf_prefix parameter: the frame as given";
   EXPECT_EQ(pluginFrameId(p3d, "car1"), "car1/world");
   EXPECT_EQ(pluginChildFrameId(p3d), "base_footprint");
 }
 
-TEST(PluginNames, LaserAndCameraResolveAgainstTheirNamespace)
+TEST(PluginNames, LaserAndCameraResolveOnlyAgainstATfPrefixParameter)
 {
   const SensorDescription laser = sensor("ray", "laser_link", {});
   EXPECT_EQ(pluginTopic(laser), "/world") << "gazebo_ros_laser's default, sic";
-  EXPECT_EQ(pluginFrameId(laser, defaultTfPrefix(laser, "/car1/")), "world") << "frameName defaults to /world";
+  EXPECT_EQ(pluginFrameId(laser, ""), "world") << "frameName defaults to /world";
   const SensorDescription camera =
       sensor("depth", "camera_link", {{"cameraName", "front"}, {"frameName", "optical"}, {"robotNamespace", ""}});
   EXPECT_EQ(pluginNamespace(camera, "/car1", "car"), "car") << "an empty robotNamespace: the model's name";
-  EXPECT_EQ(pluginFrameId(camera, defaultTfPrefix(camera, "/car1/")), "car1/optical");
+  EXPECT_EQ(pluginFrameId(camera, ""), "optical") << "no tf_prefix parameter: the frame as given (2.9.2)";
+  EXPECT_EQ(pluginFrameId(camera, "car1"), "car1/optical");
   EXPECT_EQ(pluginTopic(camera), "front/image_raw");
   EXPECT_EQ(pluginTopic(camera, PluginTopic::Points), "front/points");
   EXPECT_EQ(pluginTopic(camera, PluginTopic::DepthCameraInfo), "front/depth/camera_info");

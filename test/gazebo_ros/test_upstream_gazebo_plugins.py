@@ -74,12 +74,7 @@ def test_every_model_and_world_plugin_library_and_the_ray_sensor_ones_of_upstrea
 
 # Where the plant's own plugin differs from upstream's, found by this module: the test of the plant's
 # own fails with upstream's, as it should until the plant's own is mended.
-KNOWN_DIFFERENCES = {
-    'sensor_plugins/test_sdf_model_sensors_ros.py':
-        "the plant's own gazebo_ros_laser and gazebo_ros_camera prefix their frame with the plugin's "
-        "namespace where no tf_prefix parameter is set (twin/base); upstream noetic's read only "
-        "tf::getPrefixParam (gazebo_ros_laser.cpp:133, gazebo_ros_camera_utils.cpp:297): base",
-}
+KNOWN_DIFFERENCES = {}
 
 
 @pytest.mark.parametrize('test_file', [

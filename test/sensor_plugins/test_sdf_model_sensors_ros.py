@@ -1,8 +1,7 @@
 """A world file's SDF model with a camera (gazebo_ros_camera), a ray sensor (gazebo_ros_laser), a range
 sensor (gazebo_ros_range), an IMU sensor (gazebo_ros_imu_sensor) and a gazebo_ros_p3d model plugin publishes from the node's start as
 its URDF twin, spawned by spawn_model, does: the same topic names (the twin's under its
--robot_namespace), frame ids (the twin's laser and camera frames under its namespace's tf prefix,
-as upstream's plugins resolve them), sizes and values; so does the same SDF spawned by spawn_model
+-robot_namespace), frame ids (as given: no tf_prefix parameter is set), sizes and values; so does the same SDF spawned by spawn_model
 -sdf -robot_namespace. Each stands 1.5 m before a wall of its own, 20 m apart."""
 import pytest
 
@@ -57,12 +56,12 @@ URDF_TWIN = f"""<robot name="twin">
 </robot>"""
 
 # the world-file model's topic and frame id, its twin's: the laser and the camera resolve their
-# frameName against the namespace's tf prefix, as upstream's do (the twin's is /twin); the range
-# plugin only against a tf_prefix parameter of its own namespace (none here) and the IMU sensor
-# keeps it as given; p3d publishes in `world`.
-TOPICS = [('/scan', 'base', '/twin/scan', 'twin/base'),
-          ('/cam/image_raw', 'base', '/twin/cam/image_raw', 'twin/base'),
-          ('/cam/camera_info', 'base', '/twin/cam/camera_info', 'twin/base'),
+# frameName against a tf_prefix parameter found from their namespace, the range plugin against one of
+# its own namespace only (none here: each as given, as gazebo_ros_pkgs 2.9.2's plugins); the IMU
+# sensor keeps it as given; p3d publishes in `world`.
+TOPICS = [('/scan', 'base', '/twin/scan', 'base'),
+          ('/cam/image_raw', 'base', '/twin/cam/image_raw', 'base'),
+          ('/cam/camera_info', 'base', '/twin/cam/camera_info', 'base'),
           ('/range', 'base', '/twin/range', 'base'),
           ('/probe/imu', 'base', '/twin/imu', 'base'),
           ('/ground_truth', 'world', '/twin/ground_truth', 'world')]

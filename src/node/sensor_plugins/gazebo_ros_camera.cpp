@@ -74,7 +74,7 @@ void GazeboRosCamera::Load(Sensor& sensor)
   nh_ = nodeHandle(sensor);
   const SensorDescription& d = sensor.description();
   const std::string camera_name = d.pluginParam("cameraName");
-  frame_id_ = pluginFrameId(d, searchedTfPrefix(sensor, camera_name.empty() ? nh_ : ros::NodeHandle(nh_, camera_name)));
+  frame_id_ = pluginFrameId(d, searchedTfPrefix(camera_name.empty() ? nh_ : ros::NodeHandle(nh_, camera_name)));
   image_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(pluginTopic(d), owner()), 2);
   info_pub_ = nh_.advertise<sensor_msgs::CameraInfo>(requireValidRosName(pluginTopic(d, PluginTopic::CameraInfo), owner()), 2);
   hack_baseline_ = zero_baseline_ ? 0.0 : d.pluginNumber("hackBaseline", 0.0);

@@ -16,7 +16,7 @@ public:
   void Load(Sensor& sensor) override
   {
     imu_ = &sensorAs<Imu>(sensor, "gazebo_ros_imu");
-    frame_id_ = pluginFrameId(sensor.description(), defaultTfPrefix(sensor.description(), robotNamespace()));
+    frame_id_ = pluginFrameId(sensor.description(), "");  // neither IMU plugin takes a tf_prefix
     imu_pub_ = nodeHandle(sensor).advertise<sensor_msgs::Imu>(
         requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"), 10);
   }

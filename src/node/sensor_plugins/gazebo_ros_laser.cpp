@@ -15,7 +15,7 @@ public:
   {
     lidar_ = &sensorAs<Lidar>(sensor, "gazebo_ros_laser");
     ros::NodeHandle nh = nodeHandle(sensor);
-    frame_id_ = pluginFrameId(sensor.description(), searchedTfPrefix(sensor, nh));
+    frame_id_ = pluginFrameId(sensor.description(), searchedTfPrefix(nh));
     scan_pub_ = nh.advertise<sensor_msgs::LaserScan>(
         requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"), 5);
   }

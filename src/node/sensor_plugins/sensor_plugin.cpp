@@ -25,12 +25,12 @@ ros::NodeHandle SensorPlugin::nodeHandle(const Sensor& sensor) const
   return ros::NodeHandle(ns.empty() ? "/" : requireValidRosName(ns, "sensor '" + sensor.name() + "' robotNamespace"));
 }
 
-std::string SensorPlugin::searchedTfPrefix(const Sensor& sensor, const ros::NodeHandle& nh) const
+std::string SensorPlugin::searchedTfPrefix(const ros::NodeHandle& nh)
 {
   std::string key, prefix;
-  if (nh.searchParam("tf_prefix", key) && nh.getParam(key, prefix) && !prefix.empty())
+  if (nh.searchParam("tf_prefix", key) && nh.getParam(key, prefix))
     return prefix;
-  return defaultTfPrefix(sensor.description(), namespace_);
+  return "";
 }
 
 bool SensorPlugin::takeUpdate(const Sensor& sensor)

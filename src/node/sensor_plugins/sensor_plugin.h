@@ -57,8 +57,8 @@ protected:
   // The node handle of the plugin, in its namespace.
   ros::NodeHandle nodeHandle(const Sensor& sensor) const;
   // tf::getPrefixParam, as the laser and camera plugins call it: a tf_prefix parameter found by
-  // searching up from `nh`'s namespace, else the plugin's default (defaultTfPrefix).
-  std::string searchedTfPrefix(const Sensor& sensor, const ros::NodeHandle& nh) const;
+  // searching up from `nh`'s namespace; "" where there is none (gazebo_ros_pkgs 2.9.2).
+  static std::string searchedTfPrefix(const ros::NodeHandle& nh);
   // True once per update of the sensor: whether it computed something since the last call.
   bool takeUpdate(const Sensor& sensor);
 

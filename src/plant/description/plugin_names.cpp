@@ -109,24 +109,6 @@ std::string pluginNamespace(const SensorDescription& d, const std::string& spawn
   }
 }
 
-std::string defaultTfPrefix(const SensorDescription& d, const std::string& plugin_namespace)
-{
-  switch (familyOf(d))
-  {
-    case Family::ImuSensor:
-    case Family::ImuModel:  // neither IMU plugin resolves its frame against a tf_prefix
-    case Family::P3d:       // only a tf_prefix parameter prefixes its frame
-    case Family::Range:
-    case Family::Velodyne:
-    case Family::BlockLaser:
-    case Family::HectorSonar:  // frameId verbatim
-    case Family::Bumper:
-      return "";
-    default:
-      return withoutTrailingSlashes(plugin_namespace);
-  }
-}
-
 std::string pluginFrameId(const SensorDescription& d, const std::string& tf_prefix)
 {
   switch (familyOf(d))
@@ -166,11 +148,12 @@ std::string modelPluginNamespace(const ModelPluginDescription& d, const std::str
   }
 }
 
-std::vector<std::string> tfPrefixParamKeys(const ModelPluginDescription& d, const std::string& plugin_namespace)
+namespace
+{
+// NS/tf_prefix, then each parent's, then /tf_prefix: where ROS's searchParam looks from NS.
+std::vector<std::string> tfPrefixSearchKeys(const std::string& plugin_namespace)
 {
   std::vector<std::string> keys;
-  if (!d.library.empty() || namingOf(d) != PluginNaming::GazeboRos)
-    return keys;
   std::string ns = withoutTrailingSlashes(plugin_namespace);
   ns.erase(0, ns.find_first_not_of('/'));
   if (!ns.empty())
@@ -184,14 +167,27 @@ std::vector<std::string> tfPrefixParamKeys(const ModelPluginDescription& d, cons
   }
   return keys;
 }
+}  // namespace
+
+std::vector<std::string> tfPrefixParamKeys(const ModelPluginDescription& d, const std::string& plugin_namespace)
+{
+  if (!d.library.empty() || namingOf(d) != PluginNaming::GazeboRos)
+    return {};
+  return tfPrefixSearchKeys(plugin_namespace);
+}
+
+std::string searchedTfPrefix(const std::string& plugin_namespace, const Param& params)
+{
+  for (const std::string& key : tfPrefixSearchKeys(plugin_namespace))
+    if (const Param* found = params.find(key.substr(1)))  // the tree's paths are relative
+      return found->type() == Param::Type::String ? found->asString() : "";
+  return "";
+}
 
 std::string modelPluginTfPrefix(const ModelPluginDescription& d, const std::string& plugin_namespace,
                                 const Param& params)
 {
-  for (const std::string& key : tfPrefixParamKeys(d, plugin_namespace))
-    if (const Param* found = params.find(key.substr(1)))  // the tree's paths are relative
-      return found->type() == Param::Type::String ? found->asString() : "";
-  return "";
+  return tfPrefixParamKeys(d, plugin_namespace).empty() ? "" : searchedTfPrefix(plugin_namespace, params);
 }
 
 std::string multicameraSide(const SensorDescription& d)
