@@ -54,6 +54,8 @@ gazebo_api_library(gazebo_physics VERSIONED SOURCES
 target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_msgs_protobuf gazebo_common)
 # Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
 gazebo_api_library(gazebo_sensors VERSIONED SOURCES
+  src/gazebo/sensors/GpuRaySensor.cc
+  src/gazebo/sensors/LaserScanSensor.cc
   src/gazebo/sensors/RaySensor.cc
   src/gazebo/sensors/Sensor.cc
   src/gazebo/sensors/SensorManager.cc)
@@ -114,9 +116,10 @@ target_link_libraries(gazebo_transport PUBLIC gazebo_msgs_protobuf gazebo_common
 
 # Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
 # (gazebo_ros_elevator: ElevatorPlugin, gazebo_ros_harness: HarnessPlugin, gazebo_ros_wheel_slip:
-# WheelSlipPlugin; gazebo_ros_laser, _range and _block_laser: RayPlugin), in GAZEBO_LIBRARY_DIRS
+# WheelSlipPlugin; gazebo_ros_laser, _range and _block_laser: RayPlugin; gazebo_ros_gpu_laser:
+# GpuRayPlugin), in GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
-set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin)
+set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf

@@ -4,7 +4,7 @@
 // counts, angles and ranges; each scan the plant makes is its laser shape's ranges and a
 // LaserScanStamped on ~/MODEL/LINK/SENSOR/scan (only while subscribed, which keeps it measuring);
 // the model's removal takes it out of SensorManager. A wall's face stands 1.4 m before the lidar,
-// which rests on the ground.
+// which rests on the ground (its visual too: a gpu_ray lidar sees visuals, as Gazebo's renders them).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -27,7 +27,8 @@ const char* kWorld = R"(<sdf version='1.7'><world name='ray_world'>
   <physics type='ode'><max_step_size>0.001</max_step_size></physics>
   <include><uri>model://ground_plane</uri></include>
   <model name='wall'><static>true</static><pose>1.6 0 0.5 0 0 0</pose>
-    <link name='body'><collision name='c'><geometry><box><size>0.2 3 1</size></box></geometry></collision></link></model>
+    <link name='body'><collision name='c'><geometry><box><size>0.2 3 1</size></box></geometry></collision>
+      <visual name='v'><geometry><box><size>0.2 3 1</size></box></geometry></visual></link></model>
   <model name='probe'><pose>0 0 0.1 0 0 0</pose><link name='base'>
     <inertial><mass>2</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia></inertial>
     <collision name='c'><geometry><box><size>0.2 0.2 0.2</size></box></geometry></collision>
@@ -145,4 +146,49 @@ TEST(GazeboRaySensor, LeavesSensorManagerWithItsModel)
   EXPECT_TRUE(world.remove("probe"));
   EXPECT_FALSE(gazebo::sensors::SensorManager::Instance()->GetSensor("ray_world::probe::base::lidar"));
   world.step(10);
+}
+
+// The same lidar as type gpu_ray, with Gazebo's own libGpuRayPlugin.so: a GpuRaySensor (no
+// RaySensor), active once its plugin loaded (GpuRayPlugin sets it), each scan a laser frame of 3
+// floats a ray and the same message; the camera geometry as Gazebo's Init derives it.
+TEST(GazeboGpuRaySensor, IsThePlantsLidarWithGazebosLaserFrames)
+{
+  std::string world_text(kWorld);
+  world_text.replace(world_text.find("type='ray'"), 10, "type='gpu_ray'");
+  world_text.replace(world_text.find("libRayPlugin.so"), 15, "libGpuRayPlugin.so");
+  World world(parseWorldDescription(world_text));
+  gazebo::sensors::SensorPtr sensor = gazebo::sensors::SensorManager::Instance()->GetSensor("lidar");
+  auto gpu = std::dynamic_pointer_cast<gazebo::sensors::GpuRaySensor>(sensor);
+  ASSERT_TRUE(gpu);
+  EXPECT_FALSE(std::dynamic_pointer_cast<gazebo::sensors::RaySensor>(sensor)) << "Gazebo's two are apart";
+  EXPECT_EQ(gpu->Category(), gazebo::sensors::IMAGE);
+  EXPECT_EQ(gpu->Topic(), "~/probe/base/lidar/scan");
+  EXPECT_TRUE(gpu->IsActive()) << "GpuRayPlugin::Load sets its sensor active";
+  EXPECT_EQ(gpu->CameraCount(), 1u);
+  EXPECT_DOUBLE_EQ(gpu->HorzFOV(), 0.6);
+  EXPECT_DOUBLE_EQ(gpu->HorzHalfAngle(), 0.0);
+  EXPECT_DOUBLE_EQ(gpu->RayCountRatio(), 2048.0) << "one vertical ray: the camera's width";
+  EXPECT_DOUBLE_EQ(gpu->Retro(0), 0.0);
+  EXPECT_EQ(gpu->Fiducial(0), -1);
+
+  std::mutex mutex;
+  std::vector<std::vector<float>> frames;
+  unsigned int width = 0, height = 0, depth = 0;
+  gazebo::event::ConnectionPtr on_frame = gpu->ConnectNewLaserFrame(
+      [&](const float* image, unsigned int w, unsigned int h, unsigned int d, const std::string&) {
+        std::lock_guard<std::mutex> lock(mutex);
+        width = w, height = h, depth = d;
+        frames.emplace_back(image, image + w * h * d);
+      });
+  world.step(1000);
+  std::lock_guard<std::mutex> lock(mutex);
+  EXPECT_NEAR(static_cast<int>(frames.size()), 10, 1);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(width, 5u);
+  EXPECT_EQ(height, 1u);
+  EXPECT_EQ(depth, 3u);
+  EXPECT_NEAR(frames.back()[2 * 3], 1.4, 5e-3) << "the middle ray's range";
+  EXPECT_EQ(frames.back()[2 * 3 + 1], 0.0f) << "its intensity";
+  EXPECT_NEAR(gpu->Range(2), 1.4, 5e-3);
+  EXPECT_NEAR(gpu->Range(0), 1.4 / std::cos(0.3), 5e-3);
 }

@@ -41,11 +41,14 @@ def sdf_world(models='', step=0.001):
 </world></sdf>"""
 
 
-def box_model(name, size, xyz, yaw=0.0):
+def box_model(name, size, xyz, yaw=0.0, visual=False):
+    """A static box; with `visual`, seen by cameras and gpu_ray lidars too (they see visuals)."""
     sx, sy, sz = size
     x, y, z = xyz
+    box = f'<geometry><box><size>{sx} {sy} {sz}</size></box></geometry>'
+    seen = f'<visual name="visual">{box}</visual>' if visual else ''
     return f"""<model name="{name}"><static>true</static><pose>{x} {y} {z} 0 0 {yaw}</pose>
-  <link name="link"><collision name="collision"><geometry><box><size>{sx} {sy} {sz}</size></box></geometry></collision></link>
+  <link name="link"><collision name="collision">{box}</collision>{seen}</link>
 </model>"""
 
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <gazebo/physics/World.hh>
+#include <gazebo/sensors/GpuRaySensor.hh>
 #include <gazebo/sensors/RaySensor.hh>
 #include <gazebo/sensors/SensorManager.hh>
 #include <gazebo/transport/TopicManager.hh>
@@ -67,17 +68,22 @@ private:
 // reason in `why`).
 gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextModel> model, std::string& why)
 {
+  const std::string& type = sensor.description().type;
   if (auto* lidar = dynamic_cast<Lidar*>(&sensor))
   {
-    if (sensor.description().type == "ray")
+    gazebo::sensors::SensorPtr scanner;
+    if (type == "ray")
+      scanner = std::make_shared<gazebo::sensors::RaySensor>();
+    else if (type == "gpu_ray")
+      scanner = std::make_shared<gazebo::sensors::GpuRaySensor>();
+    if (scanner)
     {
-      auto ray = std::make_shared<gazebo::sensors::RaySensor>();
-      ray->SetBridge(std::make_shared<LidarBridge>(*lidar, std::move(model)));
-      return ray;
+      scanner->SetBridge(std::make_shared<LidarBridge>(*lidar, std::move(model)));
+      return scanner;
     }
   }
-  why = "Gazebo's sensor of type '" + sensor.description().type +
-        "' is not offered to plugins yet (RaySensor, type \"ray\", is: docs/gazebo_api.md)";
+  why = "Gazebo's sensor of type '" + type +
+        "' is not offered to plugins yet (those of types ray and gpu_ray are: docs/gazebo_api.md)";
   return nullptr;
 }
 }  // namespace
