@@ -55,6 +55,7 @@ target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_msgs_protobu
 # Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
 gazebo_api_library(gazebo_sensors VERSIONED SOURCES
   src/gazebo/sensors/GpuRaySensor.cc
+  src/gazebo/sensors/ImuSensor.cc
   src/gazebo/sensors/LaserScanSensor.cc
   src/gazebo/sensors/RaySensor.cc
   src/gazebo/sensors/Sensor.cc
@@ -65,7 +66,7 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
 # src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
-  time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics)
+  time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
@@ -119,7 +120,7 @@ target_link_libraries(gazebo_transport PUBLIC gazebo_msgs_protobuf gazebo_common
 # WheelSlipPlugin; gazebo_ros_laser, _range and _block_laser: RayPlugin; gazebo_ros_gpu_laser:
 # GpuRayPlugin), in GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
-set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin)
+set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin ImuSensorPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf

@@ -37,9 +37,20 @@ public:
   Imu(const SensorDescription& d, uint32_t noise_seed);
   bool update(SensorContext& context, int64_t time_ns) override;
   bool modelPlugin() const { return description_.model_plugin; }
-  // gazebo_ros_imu_sensor reports the orientation relative to the IMU's orientation at spawn, as
-  // Gazebo's ImuSensor does; gazebo_ros_imu the world orientation.
-  void setReference(const urdf::Rotation& spawn_orientation) { reference_ = spawn_orientation.GetInverse(); }
+  // A sensor plugin file of the user's own reads it through Gazebo's ImuSensor (upstream's
+  // gazebo_ros_imu_sensor built from source, say): it measures as Gazebo's sensor does, in the
+  // world's orientation, at its <update_rate>, and leaves gaussianNoise, rpyOffset and updateRateHZ
+  // to that plugin, which applies them itself.
+  bool readByGazeboSensor() const { return !description_.library.empty(); }
+  // The IMU's orientation at spawn, which gazebo_ros_imu_sensor reports its orientation relative to
+  // where <initialOrientationAsReference> is true (Gazebo's ImuSensor's own reference; deprecated
+  // upstream); by default it reports the world orientation, as REP 145 and gazebo_ros_pkgs 2.9 do
+  // (so do gazebo_ros_imu and an IMU read by Gazebo's ImuSensor, which applies its reference itself).
+  void setReference(const urdf::Rotation& spawn_orientation)
+  {
+    if (initial_orientation_as_reference_)
+      reference_ = spawn_orientation.GetInverse();
+  }
   // An update: the accelerometer differentiates the velocity since the previous sample (none
   // before the first one after a pause in sampling: then only gravity's reaction).
   void sample(const LinkMotion& motion, const urdf::Vector3& gravity, int64_t time_ns);
@@ -48,6 +59,7 @@ public:
 
 private:
   double noise();
+  bool initial_orientation_as_reference_ = false;
   urdf::Rotation reference_, offset_;
   double stddev_ = 0.0;
   ImuReading reading_;

@@ -62,15 +62,20 @@ TEST(Imu, DifferentiatesVelocityBetweenConsecutiveSamplesOnly)
   EXPECT_NEAR(imu.latest().linear_acceleration.x, 0.0, 1e-12) << "after a pause in sampling: a fresh start";
 }
 
-TEST(Imu, RatesInTheImuFrameAndOrientationRelativeToSpawn)
+TEST(Imu, RatesInTheImuFrameAndOrientationInTheWorldOrRelativeToSpawnWhereAsked)
 {
-  Imu imu(imuSensor({{"frameName", "/car1/imu_link"}}), 1);
   const urdf::Pose spawn = poseFromXyzRpy(0, 0, 0, 0, 0, 0.3);
+  Imu imu(imuSensor({{"frameName", "/car1/imu_link"}}), 1);
   imu.setReference(spawn.rotation);
   imu.sample(at(poseFromXyzRpy(0, 0, 0, 0, 0, 0.8), urdf::Vector3(), urdf::Vector3(0, 0, 1.5)), kGravity, 0);
   const ImuReading& r = imu.latest();
   EXPECT_NEAR(r.angular_velocity.z, 1.5, 1e-12);
-  EXPECT_NEAR(2 * std::atan2(r.orientation.z, r.orientation.w), 0.5, 1e-9) << "gazebo_ros_imu_sensor: since spawn";
+  EXPECT_NEAR(2 * std::atan2(r.orientation.z, r.orientation.w), 0.8, 1e-9) << "gazebo_ros_imu_sensor: REP 145's world";
+  Imu since_spawn(imuSensor({{"frameName", "imu_link"}, {"initialOrientationAsReference", "true"}}), 1);
+  since_spawn.setReference(spawn.rotation);
+  since_spawn.sample(at(poseFromXyzRpy(0, 0, 0, 0, 0, 0.8)), kGravity, 0);
+  EXPECT_NEAR(2 * std::atan2(since_spawn.latest().orientation.z, since_spawn.latest().orientation.w), 0.5, 1e-9)
+      << "initialOrientationAsReference: since spawn";
 
   Imu model(imuSensor({{"bodyName", "imu_link"}}, true), 1);
   model.sample(at(poseFromXyzRpy(0, 0, 0, 0, 0, 0.8)), kGravity, 0);

@@ -4,6 +4,8 @@ sensor (gazebo_ros_range), an IMU sensor (gazebo_ros_imu_sensor) and a gazebo_ro
 its URDF twin, spawned by spawn_model, does: the same topic names (the twin's under its
 -robot_namespace), frame ids (as given: no tf_prefix parameter is set), sizes and values; so does the same SDF spawned by spawn_model
 -sdf -robot_namespace. Each stands 1.5 m before a wall of its own, 20 m apart."""
+import math
+
 import pytest
 
 from plant_helpers import box_model, sdf_world
@@ -35,7 +37,7 @@ SENSORS = """
       <plugin name="sonar_plugin" filename="libgazebo_ros_range.so"><topicName>range</topicName>
         <frameName>base</frameName><radiation>ultrasound</radiation><fov>0.2</fov></plugin>
     </sensor>
-    <sensor type="imu" name="imu"><update_rate>50</update_rate>
+    <sensor type="imu" name="imu"><pose>0 0 0 0 0 0.3</pose><update_rate>50</update_rate>
       <plugin name="imu_plugin" filename="libgazebo_ros_imu_sensor.so"><topicName>imu</topicName>
         <frameName>base</frameName><updateRateHZ>50</updateRateHZ></plugin>
     </sensor>"""
@@ -120,6 +122,8 @@ def test_a_world_file_sdf_model_publishes_as_its_urdf_twin(ros, tmp_path):
     assert imu['acceleration'] == pytest.approx(twin_imu['acceleration'], abs=0.05)
     assert imu['acceleration'][2] == pytest.approx(9.8, abs=0.1)
     assert imu['orientation'] == pytest.approx(twin_imu['orientation'], abs=1e-3)
+    # turned 0.3 rad in its link: its orientation in the world (REP 145, gazebo_ros_pkgs 2.9's default)
+    assert 2 * math.atan2(imu['orientation'][2], imu['orientation'][3]) == pytest.approx(0.3, abs=1e-3)
     truth, twin_truth = seen['/ground_truth'], seen['/twin/ground_truth']
     assert truth['child'] == twin_truth['child'] == 'base'
     assert truth['position'] == pytest.approx([0.0, 0.0, 0.1], abs=2e-3)

@@ -90,7 +90,7 @@ def test_imu_at_rest_reads_gravity_up_and_zero_rates(car_with_imu):
     assert np.abs(imu['linear_acceleration'][:2]).max() < 0.01
     assert np.abs(imu['angular_velocity']).max() < 1e-3
     qx, qy, qz, qw = imu['orientation']
-    assert abs(2 * math.atan2(qz, qw)) < 1e-3, 'relative to the orientation at spawn, as Gazebo reports it'
+    assert 2 * math.atan2(qz, qw) == pytest.approx(0.4, abs=1e-3), 'in the world frame (REP 145), as gazebo_ros_pkgs 2.9'
 
 
 def test_imu_yaw_rate_on_a_circle_equals_odometrys(car_with_imu):

@@ -4,10 +4,12 @@
 
 #include <gazebo/physics/World.hh>
 #include <gazebo/sensors/GpuRaySensor.hh>
+#include <gazebo/sensors/ImuSensor.hh>
 #include <gazebo/sensors/RaySensor.hh>
 #include <gazebo/sensors/SensorManager.hh>
 #include <gazebo/transport/TopicManager.hh>
 
+#include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/log.h"
 #include "bullet_plant/model_plugin.h"
 #include "bullet_plant/sensors.h"
@@ -64,6 +66,28 @@ private:
   PlantSensorBridge plant_;
 };
 
+class ImuBridge final : public gazebo::sensors::ImuBridge
+{
+public:
+  ImuBridge(Imu& imu, std::shared_ptr<ContextModel> model) : imu_(imu), plant_(imu, std::move(model)) {}
+  void setActive(bool active) override { plant_.setActive(active); }
+  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
+  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
+  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(imu_.latest().stamp_ns); }
+  ignition::math::Quaterniond orientation() const override
+  {
+    const urdf::Rotation& q = imu_.latest().orientation;
+    return {q.w, q.x, q.y, q.z};
+  }
+  ignition::math::Vector3d angularVelocity() const override { return vector(imu_.latest().angular_velocity); }
+  ignition::math::Vector3d linearAcceleration() const override { return vector(imu_.latest().linear_acceleration); }
+
+private:
+  static ignition::math::Vector3d vector(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+  Imu& imu_;
+  PlantSensorBridge plant_;
+};
+
 // The Gazebo sensor of the plant's sensor's kind over it; null where the plant has none yet (the
 // reason in `why`).
 gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextModel> model, std::string& why)
@@ -82,8 +106,15 @@ gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextM
       return scanner;
     }
   }
+  if (auto* imu = dynamic_cast<Imu*>(&sensor))
+    if (type == "imu" && !imu->modelPlugin())
+    {
+      auto gazebo_imu = std::make_shared<gazebo::sensors::ImuSensor>();
+      gazebo_imu->SetBridge(std::make_shared<ImuBridge>(*imu, std::move(model)));
+      return gazebo_imu;
+    }
   why = "Gazebo's sensor of type '" + type +
-        "' is not offered to plugins yet (those of types ray and gpu_ray are: docs/gazebo_api.md)";
+        "' is not offered to plugins yet (those of types ray, gpu_ray and imu are: docs/gazebo_api.md)";
   return nullptr;
 }
 }  // namespace

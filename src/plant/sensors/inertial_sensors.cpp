@@ -6,6 +6,7 @@
 #include <random>
 
 #include "bullet_plant/geometry.h"
+#include "description/sdf_elements.h"
 #include "description/xml_util.h"
 #include "sensors/sensor_context.h"
 
@@ -36,8 +37,11 @@ urdf::Rotation rpyParam(const SensorDescription& d, const std::string& key)
 
 Imu::Imu(const SensorDescription& d, uint32_t noise_seed) : Sensor(d, noise_seed)
 {
+  if (readByGazeboSensor())
+    return;  // the sensor's own rate, no noise, no offset
   stddev_ = std::abs(d.pluginNumber("gaussianNoise", 0.0));
   offset_ = rpyParam(d, "rpyOffset");
+  initial_orientation_as_reference_ = !d.model_plugin && sdf::isTrue(d.pluginParam("initialOrientationAsReference"));
   if (d.model_plugin)  // gazebo_ros_imu: <updateRate>, 0 = every step (updateRateHZ accepted too)
     gate_.setPeriodNs(periodNsOfRate(d.pluginNumber("updateRate", d.pluginNumber("updateRateHZ", 0.0))));
   else  // gazebo_ros_imu_sensor: <updateRateHZ>, default 1 Hz, within the sensor's <update_rate>

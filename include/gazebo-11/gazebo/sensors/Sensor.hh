@@ -15,7 +15,9 @@
 #include <sdf/sdf.hh>
 
 #include "gazebo/common/Event.hh"
+#include "gazebo/common/Events.hh"  // as Gazebo's: sensor plugins connect to the world's events through it
 #include "gazebo/common/Time.hh"
+#include "gazebo/msgs/msgs.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/sensors/SensorBridge.hh"
 #include "gazebo/sensors/SensorTypes.hh"

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include <ignition/math/Pose3.hh>
+#include <ignition/math/Quaternion.hh>
+#include <ignition/math/Vector3.hh>
 
 #include "gazebo/common/Time.hh"
 
@@ -34,6 +36,16 @@ public:
   // (its noise applied): +inf where nothing is within the range, -inf for a hit nearer than its
   // minimum; empty before the first scan.
   virtual const std::vector<float>& ranges() const = 0;
+};
+
+class ImuBridge : public SensorBridge
+{
+public:
+  // The latest measurement: the IMU frame's orientation in the world, its angular velocity and its
+  // linear acceleration (the reaction to gravity included: +9.8 up at rest) in its own frame.
+  virtual ignition::math::Quaterniond orientation() const = 0;
+  virtual ignition::math::Vector3d angularVelocity() const = 0;
+  virtual ignition::math::Vector3d linearAcceleration() const = 0;
 };
 }  // namespace sensors
 }  // namespace gazebo

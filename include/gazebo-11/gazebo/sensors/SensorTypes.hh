@@ -12,9 +12,11 @@ namespace sensors
 class Sensor;
 class RaySensor;
 class GpuRaySensor;
+class ImuSensor;
 typedef std::shared_ptr<Sensor> SensorPtr;
 typedef std::shared_ptr<RaySensor> RaySensorPtr;
 typedef std::shared_ptr<GpuRaySensor> GpuRaySensorPtr;
+typedef std::shared_ptr<ImuSensor> ImuSensorPtr;
 typedef std::vector<SensorPtr> Sensor_V;
 
 // Gazebo updates the sensors of each category in a thread of their own.

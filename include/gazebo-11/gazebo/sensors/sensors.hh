@@ -2,6 +2,7 @@
 #pragma once
 
 #include "gazebo/sensors/GpuRaySensor.hh"
+#include "gazebo/sensors/ImuSensor.hh"
 #include "gazebo/sensors/RaySensor.hh"
 #include "gazebo/sensors/Sensor.hh"
 #include "gazebo/sensors/SensorManager.hh"
