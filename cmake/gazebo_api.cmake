@@ -43,6 +43,7 @@ target_link_libraries(gazebo_common PUBLIC sdformat12::sdformat12 ignition-math6
 # (gazebo/physics/PlantBridge.hh), which the plant implements.
 gazebo_api_library(gazebo_physics VERSIONED SOURCES
   src/gazebo/physics/Collision.cc
+  src/gazebo/physics/Contact.cc
   src/gazebo/physics/Joint.cc
   src/gazebo/physics/JointController.cc
   src/gazebo/physics/Link.cc
@@ -54,6 +55,7 @@ gazebo_api_library(gazebo_physics VERSIONED SOURCES
 target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_msgs_protobuf gazebo_common)
 # Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
 gazebo_api_library(gazebo_sensors VERSIONED SOURCES
+  src/gazebo/sensors/ContactSensor.cc
   src/gazebo/sensors/GpuRaySensor.cc
   src/gazebo/sensors/ImuSensor.cc
   src/gazebo/sensors/LaserScanSensor.cc
@@ -66,7 +68,8 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
 # src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
-  time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU)
+  time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU
+  wrench:Wrench joint_wrench:JointWrench contact:Contact contacts:Contacts)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
@@ -118,9 +121,10 @@ target_link_libraries(gazebo_transport PUBLIC gazebo_msgs_protobuf gazebo_common
 # Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
 # (gazebo_ros_elevator: ElevatorPlugin, gazebo_ros_harness: HarnessPlugin, gazebo_ros_wheel_slip:
 # WheelSlipPlugin; gazebo_ros_laser, _range and _block_laser: RayPlugin; gazebo_ros_gpu_laser:
-# GpuRayPlugin), in GAZEBO_LIBRARY_DIRS
+# GpuRayPlugin; gazebo_ros_bumper: ContactPlugin), in GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
-set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin ImuSensorPlugin)
+set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin ImuSensorPlugin
+  ContactPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf

@@ -1,10 +1,10 @@
 """gazebo_ros_pkgs' own gazebo_plugins package (noetic-devel), unchanged, built against the plant and
 run in the project's own tests of those plugins. Where GRP_REPO is set (the git directory of a
 snapshot of ros-simulation/gazebo_ros_pkgs; upstream's files stay out of this repository), the
-package is built with catkin_make on the install space (make -k: its camera and contact plugins need
-Gazebo's sensors and rendering the plant does not offer yet); every model and world plugin library of
-it must build, and its sensor plugins over ray and IMU sensors (laser, GPU laser, range, block laser,
-IMU sensor); then the project's ROS tests of those plugins run again with upstream's
+package is built with catkin_make on the install space (make -k: its camera plugins need Gazebo's
+rendering and camera sensors, which the plant does not offer yet); every model and world plugin library
+of it must build, and its sensor plugins over ray, IMU and contact sensors (laser, GPU laser, range,
+block laser, IMU sensor, bumper); then the project's ROS tests of those plugins run again with upstream's
 libraries first on GAZEBO_PLUGIN_PATH and the library path, so that the plant loads upstream's code
 in place of its own (the plant's log names each file it loaded: the tests' logs must name upstream's)."""
 import glob
@@ -34,13 +34,14 @@ MODEL_AND_WORLD_PLUGINS = {
     'gazebo_ros_wheel_slip': 'model_plugins/test_wheel_slip_ros.py',
 }
 # Upstream's sensor plugin libraries that build on Gazebo's sensors as the plant offers them so far
-# (RaySensor and RayPlugin, GpuRaySensor and GpuRayPlugin, ImuSensor), each with the project's test of
-# it through ROS; the camera and contact ones need sensors the plant does not offer to plugins yet
-# (make -k leaves them).
+# (RaySensor and RayPlugin, GpuRaySensor and GpuRayPlugin, ImuSensor, ContactSensor and ContactPlugin),
+# each with the project's test of it through ROS; the camera ones need sensors the plant does not offer
+# to plugins yet (make -k leaves them).
 SENSOR_PLUGINS = {
     'gazebo_ros_laser': 'sensor_plugins/test_sdf_model_sensors_ros.py',
-    'gazebo_ros_gpu_laser': 'sensor_plugins/test_sdf_model_sensors_ros.py',
+    'gazebo_ros_gpu_laser': 'sensor_plugins/test_gpu_laser_ros.py',
     'gazebo_ros_imu_sensor': 'sensor_plugins/test_sdf_model_sensors_ros.py',
+    'gazebo_ros_bumper': 'sensor_plugins/test_bumper_ros.py',
     'gazebo_ros_range': 'sensor_plugins/test_sdf_model_sensors_ros.py',
     'gazebo_ros_block_laser': 'sensor_plugins/test_ranger_plugins_ros.py',
 }

@@ -295,9 +295,9 @@ CRATE_MODEL = """<?xml version="1.0"?>
 """
 
 
-# A box with two sensors running the user's sensor plugin (nearest_ray, a RayPlugin) before a wall
-# whose face is 1.4 m ahead of the lidar: on a ray sensor, and on a camera, which a RayPlugin cannot
-# take.
+# A box resting on the ground before a wall whose face is 1.4 m ahead of its lidar, with the user's
+# sensor plugins: nearest_ray (a RayPlugin) on its ray sensor and on its camera, which a RayPlugin
+# cannot take; touch_report on its contact sensor.
 SENSOR_WORLD = """<?xml version="1.0"?>
 <sdf version="1.7">
   <world name="default">
@@ -312,6 +312,10 @@ SENSOR_WORLD = """<?xml version="1.0"?>
           </scan><range><min>0.1</min><max>5</max></range></ray>
         <plugin name="nearest" filename="libnearest_ray.so"><report>/nearest_ray</report></plugin>
       </sensor>
+      <sensor type="contact" name="bumper"><update_rate>20</update_rate>
+        <contact><collision>c</collision></contact>
+        <plugin name="touch" filename="libtouch_report.so"><report>/touch_report</report></plugin>
+      </sensor>
       <sensor type="camera" name="eye"><update_rate>5</update_rate>
         <camera><image><width>8</width><height>6</height></image></camera>
         <plugin name="wrong" filename="libnearest_ray.so"/>
@@ -323,12 +327,15 @@ SENSOR_WORLD = """<?xml version="1.0"?>
 
 
 @pytest.mark.slow
-def test_a_sensor_plugin_of_the_users_reads_its_ray_sensor_under_gzserver(catkin_make_workspace, tmp_path):
+def test_sensor_plugins_of_the_users_read_their_ray_and_contact_sensors_under_gzserver(catkin_make_workspace,
+                                                                                        tmp_path):
     """The user's RayPlugin on a ray sensor of a world file under gzserver: OnNewLaserScans after each
     scan at the sensor's 10 Hz, the laser shape's nearest ray the wall's face, the sensor's
     LaserScanStamped messages on its Gazebo topic reaching the plugin's own subscriber (which keeps
     the sensor measuring), SensorManager finding it by name; on a camera it is refused, naming the
-    sensor and the plugin, and the world runs."""
+    sensor and the plugin, and the world runs. The user's contact plugin on the same box: each 20 Hz
+    measurement, the box's collision touching the ground's with the box's weight, msgs::Contacts on
+    the sensor's Gazebo topic."""
     workspace, env, _ = catkin_make_workspace
     world = tmp_path / 'sensor.world'
     world.write_text(SENSOR_WORLD)
@@ -341,8 +348,9 @@ def test_a_sensor_plugin_of_the_users_reads_its_ray_sensor_under_gzserver(catkin
         ros.wait_until(lambda: ros.service('/gazebo/get_world_properties')['sim_time'] >= 2.0, 60, '2 s simulated')
         ros.service('/gazebo/pause_physics')
         sim_time = ros.service('/gazebo/get_world_properties')['sim_time']
-        report = yaml.safe_load(ros.run(['rostopic', 'echo', '-n', '1', '/nearest_ray'],
-                                        timeout=30).stdout.split('\n---')[0])['data'].split()
+        report, touch = [yaml.safe_load(ros.run(['rostopic', 'echo', '-n', '1', topic],
+                                                timeout=30).stdout.split('\n---')[0])['data'].split()
+                         for topic in ('/nearest_ray', '/touch_report')]
         log = server.log()
     finally:
         ros.close()
@@ -357,6 +365,14 @@ def test_a_sensor_plugin_of_the_users_reads_its_ray_sensor_under_gzserver(catkin
     assert scans - 2 <= int(seen['messages']) <= scans, seen
     assert sim_time - 0.1 - 1e-6 <= float(seen['stamp']) <= sim_time, (seen, sim_time)  # the last scan's time
     assert "sensor 'lidar' plugin 'nearest' (libnearest_ray.so): loaded from" in log, log
+    touched = dict(zip(touch[0::2], touch[1::2]))
+    assert touched['collision'] == 'probe::base::c'
+    assert touched['touching'] == 'ground_plane::link::collision'
+    assert int(touched['points']) >= 1
+    assert abs(float(touched['force'])) == pytest.approx(2 * 9.8, abs=0.3), 'the 2 kg box rests on the ground'
+    updates = int(touched['updates'])
+    assert abs(updates - 20 * sim_time) <= 2, (updates, sim_time)
+    assert updates - 2 <= int(touched['messages']) <= updates, touched
     errors = [line for line in log.splitlines() if 'ERROR' in line or '[Err]' in line]
     assert any("sensor 'eye' plugin 'wrong' (libnearest_ray.so)" in line and 'the plugin is not loaded' in line
                for line in errors), log

@@ -1,5 +1,4 @@
-"""A world file's SDF model with a camera (gazebo_ros_camera), a ray sensor (gazebo_ros_laser), a gpu_ray
-sensor (gazebo_ros_gpu_laser), a range
+"""A world file's SDF model with a camera (gazebo_ros_camera), a ray sensor (gazebo_ros_laser), a range
 sensor (gazebo_ros_range), an IMU sensor (gazebo_ros_imu_sensor) and a gazebo_ros_p3d model plugin publishes from the node's start as
 its URDF twin, spawned by spawn_model, does: the same topic names (the twin's under its
 -robot_namespace), frame ids (as given: no tf_prefix parameter is set), sizes and values; so does the same SDF spawned by spawn_model
@@ -18,12 +17,6 @@ SENSORS = """
       <ray><scan><horizontal><samples>9</samples><min_angle>-0.4</min_angle><max_angle>0.4</max_angle></horizontal></scan>
         <range><min>0.1</min><max>5</max></range></ray>
       <plugin name="lidar_plugin" filename="libgazebo_ros_laser.so"><topicName>scan</topicName><frameName>base</frameName></plugin>
-    </sensor>
-    <sensor type="gpu_ray" name="gpu_lidar"><pose>0.1 0 0.05 0 0 0</pose><update_rate>20</update_rate>
-      <ray><scan><horizontal><samples>9</samples><min_angle>-0.4</min_angle><max_angle>0.4</max_angle></horizontal></scan>
-        <range><min>0.1</min><max>5</max></range></ray>
-      <plugin name="gpu_lidar_plugin" filename="libgazebo_ros_gpu_laser.so"><topicName>gpu_scan</topicName>
-        <frameName>base</frameName></plugin>
     </sensor>
     <sensor type="camera" name="eye"><pose>0.1 0 0.05 0 0 0</pose><update_rate>10</update_rate>
       <camera><horizontal_fov>1.0</horizontal_fov><image><width>16</width><height>12</height></image>
@@ -69,7 +62,6 @@ URDF_TWIN = f"""<robot name="twin">
 # its own namespace only (none here: each as given, as gazebo_ros_pkgs 2.9.2's plugins); the IMU
 # sensor keeps it as given; p3d publishes in `world`.
 TOPICS = [('/scan', 'base', '/twin/scan', 'base'),
-          ('/gpu_scan', 'base', '/twin/gpu_scan', 'base'),
           ('/cam/image_raw', 'base', '/twin/cam/image_raw', 'base'),
           ('/cam/camera_info', 'base', '/twin/cam/camera_info', 'base'),
           ('/range', 'base', '/twin/range', 'base'),
@@ -78,7 +70,7 @@ TOPICS = [('/scan', 'base', '/twin/scan', 'base'),
 
 
 def test_a_world_file_sdf_model_publishes_as_its_urdf_twin(ros, tmp_path):
-    walls = ''.join(box_model(name, (0.2, 2.0, 1.0), (1.5, y, 0.5), visual=True)
+    walls = ''.join(box_model(name, (0.2, 2.0, 1.0), (1.5, y, 0.5))
                     for name, y in (('wall', 0.0), ('twin_wall', 20.0), ('sdf_twin_wall', -20.0)))
     (tmp_path / 'probe.world').write_text(sdf_world(SDF_MODEL + walls))
     (tmp_path / 'twin.urdf').write_text(URDF_TWIN)
@@ -106,9 +98,6 @@ def test_a_world_file_sdf_model_publishes_as_its_urdf_twin(ros, tmp_path):
     assert len(scan['ranges']) == len(twin_scan['ranges']) == 9
     assert scan['ranges'] == pytest.approx(twin_scan['ranges'], abs=2e-3)
     assert scan['ranges'][4] == pytest.approx(1.5 - 0.1 - 0.1, abs=5e-3), 'the wall face 1.3 m before the lidar'
-    # the gpu_ray lidar sees the wall's visual, the same box
-    assert seen['/gpu_scan']['ranges'] == pytest.approx(scan['ranges'], abs=2e-3)
-    assert seen['/twin/gpu_scan']['ranges'] == pytest.approx(twin_scan['ranges'], abs=2e-3)
     sonar, twin_sonar = seen['/range'], seen['/twin/range']
     assert sonar['range'] == pytest.approx(twin_sonar['range'], abs=2e-3)
     assert sonar['range'] == pytest.approx(1.5 - 0.1 - 0.1, abs=5e-3), 'the nearest ray: the wall face 1.3 m ahead'

@@ -14,6 +14,7 @@
 #include "gazebo/common/Console.hh"
 #include "gazebo/common/Exception.hh"
 
+#include "gazebo/physics/Collision.hh"
 #include "gazebo/physics/Link.hh"
 #include "gazebo/physics/Model.hh"
 #include "gazebo/physics/PhysicsEngine.hh"
@@ -138,8 +139,11 @@ EntityPtr World::EntityByName(const std::string& name) const
   const size_t split = name.rfind("::");
   if (split == std::string::npos)
     return EntityPtr();
-  const ModelPtr model = ModelByName(name.substr(0, split));
-  return model ? EntityPtr(model->GetLink(name.substr(split + 2))) : EntityPtr();
+  const std::string parent = name.substr(0, split), own = name.substr(split + 2);
+  if (const ModelPtr model = ModelByName(parent))
+    return model->GetLink(own);
+  const LinkPtr link = boost::dynamic_pointer_cast<Link>(EntityByName(parent));
+  return link ? EntityPtr(link->GetCollision(own)) : EntityPtr();
 }
 
 unsigned int World::ModelCount() const { return static_cast<unsigned int>(bridge_->modelNames().size()); }

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include <gazebo/physics/World.hh>
+#include <gazebo/msgs/msgs.hh>
+#include <gazebo/sensors/ContactSensor.hh>
 #include <gazebo/sensors/GpuRaySensor.hh>
 #include <gazebo/sensors/ImuSensor.hh>
 #include <gazebo/sensors/RaySensor.hh>
@@ -66,6 +68,54 @@ private:
   PlantSensorBridge plant_;
 };
 
+ignition::math::Vector3d vector(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+
+class ContactBridge final : public gazebo::sensors::ContactBridge
+{
+public:
+  ContactBridge(ContactSensor& contact, std::shared_ptr<ContextModel> model)
+    : contact_(contact), plant_(contact, std::move(model))
+  {
+  }
+  void setActive(bool active) override { plant_.setActive(active); }
+  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
+  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
+  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(contact_.latest().stamp_ns); }
+  // Gazebo's msgs::Contact of each state: body 1 is the sensor's (its wrench as the plant measures
+  // it, in its link frame); body 2's wrench is not measured (zero).
+  void contacts(google::protobuf::RepeatedPtrField<gazebo::msgs::Contact>& out) const override
+  {
+    const std::vector<ContactState>& states = contact_.latest().states;
+    out.Clear();
+    out.Reserve(static_cast<int>(states.size()));
+    for (const ContactState& state : states)
+    {
+      gazebo::msgs::Contact& contact = *out.Add();
+      contact.set_collision1(state.collision1);
+      contact.set_collision2(state.collision2);
+      for (const ContactPoint& point : state.points)
+      {
+        gazebo::msgs::Set(contact.add_position(), vector(point.position));
+        gazebo::msgs::Set(contact.add_normal(), vector(point.normal));
+        contact.add_depth(point.depth);
+        gazebo::msgs::JointWrench& wrench = *contact.add_wrench();
+        wrench.set_body_1_name(state.collision1);
+        wrench.set_body_1_id(0);
+        wrench.set_body_2_name(state.collision2);
+        wrench.set_body_2_id(0);
+        gazebo::msgs::Set(wrench.mutable_body_1_wrench()->mutable_force(), vector(point.force));
+        gazebo::msgs::Set(wrench.mutable_body_1_wrench()->mutable_torque(), vector(point.torque));
+        gazebo::msgs::Set(wrench.mutable_body_2_wrench()->mutable_force(), ignition::math::Vector3d::Zero);
+        gazebo::msgs::Set(wrench.mutable_body_2_wrench()->mutable_torque(), ignition::math::Vector3d::Zero);
+      }
+    }
+  }
+
+private:
+  ContactSensor& contact_;
+  PlantSensorBridge plant_;
+};
+
 class ImuBridge final : public gazebo::sensors::ImuBridge
 {
 public:
@@ -83,7 +133,6 @@ public:
   ignition::math::Vector3d linearAcceleration() const override { return vector(imu_.latest().linear_acceleration); }
 
 private:
-  static ignition::math::Vector3d vector(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
   Imu& imu_;
   PlantSensorBridge plant_;
 };
@@ -113,8 +162,14 @@ gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextM
       gazebo_imu->SetBridge(std::make_shared<ImuBridge>(*imu, std::move(model)));
       return gazebo_imu;
     }
+  if (auto* contact = dynamic_cast<ContactSensor*>(&sensor))
+  {
+    auto gazebo_contact = std::make_shared<gazebo::sensors::ContactSensor>();
+    gazebo_contact->SetBridge(std::make_shared<ContactBridge>(*contact, std::move(model)));
+    return gazebo_contact;
+  }
   why = "Gazebo's sensor of type '" + type +
-        "' is not offered to plugins yet (those of types ray, gpu_ray and imu are: docs/gazebo_api.md)";
+        "' is not offered to plugins yet (those of types ray, gpu_ray, imu and contact are: docs/gazebo_api.md)";
   return nullptr;
 }
 }  // namespace

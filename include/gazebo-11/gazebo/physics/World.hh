@@ -42,7 +42,8 @@ public:
   // The model of that name (its scoped name too), the same handle each time; null for none.
   ModelPtr ModelByName(const std::string& name) const;
   Model_V Models() const;
-  // A model by name, or a link by its scoped name (MODEL::LINK); null for neither.
+  // A model by name, a link by its scoped name (MODEL::LINK), a collision by its own
+  // (MODEL::LINK::COLLISION); null for none.
   EntityPtr EntityByName(const std::string& name) const;
   unsigned int ModelCount() const;
   void SetPaused(bool paused);

@@ -10,6 +10,7 @@
 #include <ignition/math/Vector3.hh>
 
 #include "gazebo/common/Time.hh"
+#include "gazebo/msgs/MessageTypes.hh"
 
 namespace gazebo
 {
@@ -36,6 +37,15 @@ public:
   // (its noise applied): +inf where nothing is within the range, -inf for a hit nearer than its
   // minimum; empty before the first scan.
   virtual const std::vector<float>& ranges() const = 0;
+};
+
+class ContactBridge : public SensorBridge
+{
+public:
+  // The latest measurement's contacts, one msgs::Contact for each pair of its collision
+  // (collision1) and another touching it (collision2), both MODEL::LINK::COLLISION; its `time` and
+  // `world` are left to the sensor.
+  virtual void contacts(google::protobuf::RepeatedPtrField<msgs::Contact>& out) const = 0;
 };
 
 class ImuBridge : public SensorBridge

@@ -11,13 +11,18 @@ namespace sensors
 {
 class Sensor;
 class RaySensor;
+class ContactSensor;
 class GpuRaySensor;
 class ImuSensor;
 typedef std::shared_ptr<Sensor> SensorPtr;
 typedef std::shared_ptr<RaySensor> RaySensorPtr;
+typedef std::shared_ptr<ContactSensor> ContactSensorPtr;
 typedef std::shared_ptr<GpuRaySensor> GpuRaySensorPtr;
 typedef std::shared_ptr<ImuSensor> ImuSensorPtr;
 typedef std::vector<SensorPtr> Sensor_V;
+
+// What Gazebo 11 casts sensor handles with (std::shared_ptr's).
+#define GAZEBO_SENSORS_USING_DYNAMIC_POINTER_CAST using std::dynamic_pointer_cast
 
 // Gazebo updates the sensors of each category in a thread of their own.
 enum SensorCategory
