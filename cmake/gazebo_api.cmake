@@ -53,23 +53,32 @@ gazebo_api_library(gazebo_physics VERSIONED SOURCES
   src/gazebo/physics/Shape.cc
   src/gazebo/physics/World.cc)
 target_link_libraries(gazebo_physics PUBLIC gazebo_transport gazebo_msgs_protobuf gazebo_common)
-# Gazebo's sensors library: the Sensor base class (the plant's sensors as Gazebo's: issue 55's).
+# Gazebo's rendering library as camera sensors give it to plugins: their cameras, whose frames the
+# simulator renders.
+gazebo_api_library(gazebo_rendering VERSIONED SOURCES
+  src/gazebo/rendering/Camera.cc
+  src/gazebo/rendering/DepthCamera.cc
+  src/gazebo/rendering/Distortion.cc)
+target_link_libraries(gazebo_rendering PUBLIC gazebo_common)
+# Gazebo's sensors library: the Sensor base class and the sensor types, over the simulator's sensors.
 gazebo_api_library(gazebo_sensors VERSIONED SOURCES
+  src/gazebo/sensors/CameraSensor.cc
   src/gazebo/sensors/ContactSensor.cc
+  src/gazebo/sensors/DepthCameraSensor.cc
   src/gazebo/sensors/GpuRaySensor.cc
   src/gazebo/sensors/ImuSensor.cc
   src/gazebo/sensors/LaserScanSensor.cc
   src/gazebo/sensors/RaySensor.cc
   src/gazebo/sensors/Sensor.cc
   src/gazebo/sensors/SensorManager.cc)
-target_link_libraries(gazebo_sensors PUBLIC gazebo_physics gazebo_common)
+target_link_libraries(gazebo_sensors PUBLIC gazebo_rendering gazebo_physics gazebo_common)
 
 # Gazebo's messages (gazebo::msgs, libgazebo_msgs): protobuf from the .proto files in
 # src/gazebo/msgs/proto, each named FILE:MESSAGE (the message its file defines, whose handles
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
   time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU
-  wrench:Wrench joint_wrench:JointWrench contact:Contact contacts:Contacts)
+  wrench:Wrench joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
@@ -121,10 +130,12 @@ target_link_libraries(gazebo_transport PUBLIC gazebo_msgs_protobuf gazebo_common
 # Gazebo's own plugins that gazebo_ros_pkgs' plugins derive from and link by their bare names
 # (gazebo_ros_elevator: ElevatorPlugin, gazebo_ros_harness: HarnessPlugin, gazebo_ros_wheel_slip:
 # WheelSlipPlugin; gazebo_ros_laser, _range and _block_laser: RayPlugin; gazebo_ros_gpu_laser:
-# GpuRayPlugin; gazebo_ros_bumper: ContactPlugin), in GAZEBO_LIBRARY_DIRS
+# GpuRayPlugin; gazebo_ros_bumper: ContactPlugin; gazebo_ros_camera and the cameras over it:
+# CameraPlugin; gazebo_ros_depth_camera and gazebo_ros_openni_kinect: DepthCameraPlugin), in
+# GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
 set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin ImuSensorPlugin
-  ContactPlugin)
+  ContactPlugin CameraPlugin DepthCameraPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf
@@ -149,8 +160,8 @@ add_dependencies(gazebo_ros_wheel_slip ${PROJECT_NAME}_gencfg)
 install(TARGETS gazebo_ros_elevator gazebo_ros_harness gazebo_ros_wheel_slip
         LIBRARY DESTINATION ${CATKIN_GLOBAL_LIB_DESTINATION})
 
-set(GAZEBO_API_TARGETS gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
-set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs gazebo_common)
+set(GAZEBO_API_TARGETS gazebo_sensors gazebo_rendering gazebo_physics gazebo_transport gazebo_msgs_protobuf gazebo_common)
+set(GAZEBO_API_LIBRARIES gazebo_sensors gazebo_rendering gazebo_physics gazebo_transport gazebo_msgs gazebo_common)
 list(TRANSFORM GAZEBO_API_LIBRARIES PREPEND -l OUTPUT_VARIABLE GAZEBO_API_PKG_LIBS)
 list(JOIN GAZEBO_API_PKG_LIBS " " GAZEBO_API_PKG_LIBS)
 

@@ -64,7 +64,6 @@ enum class PluginNaming
   Velodyne,
   BlockLaser,
   HectorSonar,
-  DepthCamera,     // the depth plugins: the camera's image defaults to the infrared one
   MultiCamera,     // topics under <cameraName>/left and /right
   GazeboRos,       // model plugins on gazebo_ros's GazeboRos helper: an empty namespace is the model's name, the namespace the tf prefix
   ModelNamespace,  // an empty namespace is the model's name, no tf prefix (joint_state_publisher)
@@ -141,7 +140,7 @@ struct SensorDescription
   double horizontal_fov = 0.0;
   int image_width = 0, image_height = 0;
   std::string image_format;
-  double clip_near = 0.0, clip_far = 0.0;
+  double clip_near = 0.1, clip_far = 100.0;  // SDF's (camera.sdf) where a <camera> has no <clip>
   CameraDistortion distortion;
   // What was wrong in its elements and what the plant took instead, for one warning each at spawn.
   std::vector<std::string> description_problems;

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <urdf_model/pose.h>
+
 #include "bullet_plant/rate_gate.h"
 #include "bullet_plant/robot_description.h"
 
@@ -29,6 +31,7 @@ struct LaserScan
   float range_min = 0, range_max = 0;
   int vertical_samples = 1;  // rows of `ranges` (1 for a planar lidar)
   std::vector<float> ranges;
+  urdf::Pose origin;  // the sensor's frame in the world, where the rays were cast from
 };
 
 class Sensor

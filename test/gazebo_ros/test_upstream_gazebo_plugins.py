@@ -1,10 +1,10 @@
 """gazebo_ros_pkgs' own gazebo_plugins package (noetic-devel), unchanged, built against the plant and
 run in the project's own tests of those plugins. Where GRP_REPO is set (the git directory of a
 snapshot of ros-simulation/gazebo_ros_pkgs; upstream's files stay out of this repository), the
-package is built with catkin_make on the install space (make -k: its camera plugins need Gazebo's
-rendering and camera sensors, which the plant does not offer yet); every model and world plugin library
-of it must build, and its sensor plugins over ray, IMU and contact sensors (laser, GPU laser, range,
-block laser, IMU sensor, bumper); then the project's ROS tests of those plugins run again with upstream's
+package is built with catkin_make on the install space (make -k: its multi and triggered camera plugins
+need Gazebo's sensors the plant does not offer yet); every model and world plugin library of it
+must build, and its sensor plugins over ray, IMU, contact and camera sensors (laser, GPU laser, range,
+block laser, IMU sensor, bumper, camera, depth camera, Kinect); then the project's ROS tests of those plugins run again with upstream's
 libraries first on GAZEBO_PLUGIN_PATH and the library path, so that the plant loads upstream's code
 in place of its own (the plant's log names each file it loaded: the tests' logs must name upstream's)."""
 import glob
@@ -34,21 +34,26 @@ MODEL_AND_WORLD_PLUGINS = {
     'gazebo_ros_wheel_slip': 'model_plugins/test_wheel_slip_ros.py',
 }
 # Upstream's sensor plugin libraries that build on Gazebo's sensors as the plant offers them so far
-# (RaySensor and RayPlugin, GpuRaySensor and GpuRayPlugin, ImuSensor, ContactSensor and ContactPlugin),
-# each with the project's test of it through ROS; the camera ones need sensors the plant does not offer
-# to plugins yet (make -k leaves them).
+# (RaySensor and RayPlugin, GpuRaySensor and GpuRayPlugin, ImuSensor, ContactSensor and ContactPlugin,
+# CameraSensor and CameraPlugin, DepthCameraSensor and DepthCameraPlugin), each with the project's test of
+# it through ROS; the multi and triggered cameras need sensors the plant does not offer to plugins yet
+# (make -k leaves them).
+KINECT_AND_DEPTH_CAMERA = 'sensor_plugins/test_depth_cameras_ros.py::test_kinect_and_depth_camera_before_a_wall'
 SENSOR_PLUGINS = {
     'gazebo_ros_laser': 'sensor_plugins/test_sdf_model_sensors_ros.py',
     'gazebo_ros_gpu_laser': 'sensor_plugins/test_gpu_laser_ros.py',
     'gazebo_ros_imu_sensor': 'sensor_plugins/test_sdf_model_sensors_ros.py',
     'gazebo_ros_bumper': 'sensor_plugins/test_bumper_ros.py',
+    'gazebo_ros_camera': 'sensor_plugins/test_camera_options_ros.py',
+    'gazebo_ros_openni_kinect': KINECT_AND_DEPTH_CAMERA,
+    'gazebo_ros_depth_camera': KINECT_AND_DEPTH_CAMERA,
     'gazebo_ros_range': 'sensor_plugins/test_sdf_model_sensors_ros.py',
     'gazebo_ros_block_laser': 'sensor_plugins/test_ranger_plugins_ros.py',
 }
 TESTED = dict(MODEL_AND_WORLD_PLUGINS, **SENSOR_PLUGINS)
 # Built, with no test of the project's own through ROS yet.
 ALSO_BUILT = ['gazebo_ros_tricycle_drive', 'gazebo_ros_p3d', 'gazebo_ros_joint_state_publisher',
-              'gazebo_ros_vacuum_gripper', 'gazebo_ros_template', 'gazebo_ros_utils']
+              'gazebo_ros_vacuum_gripper', 'gazebo_ros_template', 'gazebo_ros_utils', 'gazebo_ros_camera_utils']
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow,
               pytest.mark.skipif(not GRP_REPO, reason='GRP_REPO (a gazebo_ros_pkgs snapshot) is not set')]
@@ -69,7 +74,7 @@ def upstream_workspace(install_space, tmp_path_factory):  # noqa: F811
     return workspace / 'devel' / 'lib', output
 
 
-def test_every_model_and_world_plugin_library_and_the_ray_sensor_ones_of_upstreams_gazebo_plugins_build(
+def test_every_model_and_world_plugin_library_and_the_offered_sensor_ones_of_upstreams_gazebo_plugins_build(
         upstream_workspace):
     lib, output = upstream_workspace
     missing = [name for name in list(TESTED) + ALSO_BUILT
@@ -79,7 +84,12 @@ def test_every_model_and_world_plugin_library_and_the_ray_sensor_ones_of_upstrea
 
 # Where the plant's own plugin differs from upstream's, found by this module: the test of the plant's
 # own fails with upstream's, as it should until the plant's own is mended.
-KNOWN_DIFFERENCES = {}
+KNOWN_DIFFERENCES = {
+    KINECT_AND_DEPTH_CAMERA: "upstream's gazebo_ros_depth_camera copies Gazebo's RGB points column by column (its "
+                             "loop runs over columns first) into a cloud it marks dense whatever it holds; the "
+                             "plant's own publishes them row by row, NaN ones making it not dense (found this "
+                             "stop; the plant's own to follow upstream's)",
+}
 
 
 @pytest.mark.parametrize('test_file', [

@@ -297,7 +297,8 @@ CRATE_MODEL = """<?xml version="1.0"?>
 
 # A box resting on the ground before a wall whose face is 1.4 m ahead of its lidar, with the user's
 # sensor plugins: nearest_ray (a RayPlugin) on its ray sensor and on its camera, which a RayPlugin
-# cannot take; touch_report on its contact sensor.
+# cannot take; touch_report on its contact sensor; frame_report (a CameraPlugin) on a camera facing
+# the wall.
 SENSOR_WORLD = """<?xml version="1.0"?>
 <sdf version="1.7">
   <world name="default">
@@ -316,6 +317,11 @@ SENSOR_WORLD = """<?xml version="1.0"?>
         <contact><collision>c</collision></contact>
         <plugin name="touch" filename="libtouch_report.so"><report>/touch_report</report></plugin>
       </sensor>
+      <sensor type="camera" name="look"><pose>0.1 0 0.05 0 0 0</pose><update_rate>5</update_rate>
+        <camera><horizontal_fov>0.8</horizontal_fov><image><width>8</width><height>6</height><format>L8</format></image>
+        </camera>
+        <plugin name="frames" filename="libframe_report.so"><report>/frame_report</report></plugin>
+      </sensor>
       <sensor type="camera" name="eye"><update_rate>5</update_rate>
         <camera><image><width>8</width><height>6</height></image></camera>
         <plugin name="wrong" filename="libnearest_ray.so"/>
@@ -327,15 +333,16 @@ SENSOR_WORLD = """<?xml version="1.0"?>
 
 
 @pytest.mark.slow
-def test_sensor_plugins_of_the_users_read_their_ray_and_contact_sensors_under_gzserver(catkin_make_workspace,
-                                                                                        tmp_path):
+def test_sensor_plugins_of_the_users_read_their_ray_contact_and_camera_sensors_under_gzserver(
+        catkin_make_workspace, tmp_path):
     """The user's RayPlugin on a ray sensor of a world file under gzserver: OnNewLaserScans after each
     scan at the sensor's 10 Hz, the laser shape's nearest ray the wall's face, the sensor's
     LaserScanStamped messages on its Gazebo topic reaching the plugin's own subscriber (which keeps
     the sensor measuring), SensorManager finding it by name; on a camera it is refused, naming the
     sensor and the plugin, and the world runs. The user's contact plugin on the same box: each 20 Hz
     measurement, the box's collision touching the ground's with the box's weight, msgs::Contacts on
-    the sensor's Gazebo topic."""
+    the sensor's Gazebo topic. The user's CameraPlugin on a camera facing the wall: each 5 Hz frame in
+    its L8 format, 8 x 6 x 1, its field of view, msgs::ImageStamped on the sensor's topic."""
     workspace, env, _ = catkin_make_workspace
     world = tmp_path / 'sensor.world'
     world.write_text(SENSOR_WORLD)
@@ -348,9 +355,9 @@ def test_sensor_plugins_of_the_users_read_their_ray_and_contact_sensors_under_gz
         ros.wait_until(lambda: ros.service('/gazebo/get_world_properties')['sim_time'] >= 2.0, 60, '2 s simulated')
         ros.service('/gazebo/pause_physics')
         sim_time = ros.service('/gazebo/get_world_properties')['sim_time']
-        report, touch = [yaml.safe_load(ros.run(['rostopic', 'echo', '-n', '1', topic],
+        report, touch, look = [yaml.safe_load(ros.run(['rostopic', 'echo', '-n', '1', topic],
                                                 timeout=30).stdout.split('\n---')[0])['data'].split()
-                         for topic in ('/nearest_ray', '/touch_report')]
+                         for topic in ('/nearest_ray', '/touch_report', '/frame_report')]
         log = server.log()
     finally:
         ros.close()
@@ -373,6 +380,13 @@ def test_sensor_plugins_of_the_users_read_their_ray_and_contact_sensors_under_gz
     updates = int(touched['updates'])
     assert abs(updates - 20 * sim_time) <= 2, (updates, sim_time)
     assert updates - 2 <= int(touched['messages']) <= updates, touched
+    looked = dict(zip(look[0::2], look[1::2]))
+    assert [looked['size'], looked['format'], looked['topic']] == ['8x6x1', 'L8', '~/probe/base/look/image']
+    assert float(looked['hfov']) == pytest.approx(0.8)
+    frames = int(looked['frames'])
+    assert abs(frames - 5 * sim_time) <= 2, (frames, sim_time)
+    assert frames - 2 <= int(looked['messages']) <= frames, looked
+    assert 0 < float(looked['mean']) < 255, 'a rendered frame: the wall and the sky'
     errors = [line for line in log.splitlines() if 'ERROR' in line or '[Err]' in line]
     assert any("sensor 'eye' plugin 'wrong' (libnearest_ray.so)" in line and 'the plugin is not loaded' in line
                for line in errors), log

@@ -2,7 +2,11 @@
 mast (test/fixtures/urdf/depth_mast.urdf) 2.95 m before a wall, both given pointCloudCutoffMax 2.0:
 the Kinect drops the wall (beyond its far cutoff) and keeps an organized cloud; the depth camera,
 which reads no far cutoff, sees the wall, in one row of points as Noetic's publishes it. Neither
-names its image topics: both take upstream's infrared defaults (ir/image_raw, ir/camera_info)."""
+names its image topics: both publish them where upstream's do, image_raw and camera_info (their
+infrared defaults, ir/image_raw and ir/camera_info, are overwritten by GazeboRosCameraUtils::Load).
+The depth camera's CameraInfos (its depth's and its image's), which Noetic's never publishes
+(gazebo_ros_pkgs #1174), the plant's own does, on purpose (image_pipeline needs them): a test of
+its own."""
 import math
 import os
 
@@ -27,10 +31,12 @@ def test_kinect_and_depth_camera_before_a_wall(ros, tmp_path):
     assert kinect['shape'][:2] == [24, 32], 'openni_kinect: organized, as the image'
     assert depth_camera['shape'][:2] == [1, 32 * 24], 'the depth camera: one row of every pixel'
     assert kinect['frame'] == 'kinect_optical' and depth_camera['frame'] == 'depth_optical'
+    assert kinect['info'] == [24, 32]
     for camera in (kinect, depth_camera):
-        assert camera['image'] == [24, 32, '32FC1'] and camera['info'] == [24, 32]
+        assert camera['image'] == [24, 32, '32FC1']
         assert camera['shape'][2] is False, 'NaN points: not dense'
-        assert camera['ir'] == [24, 32, 'rgb8', 32]
+        assert camera['ir'][:3] == [24, 32, 'rgb8']
+    assert kinect['ir'][3] == 32
     # The middle rows look at the wall, square on: depth (z in the optical frame) 2.95 m.
     centre = 12 * 32 + 16
     assert depth_camera['depths'][centre] == pytest.approx(WALL_X, abs=1e-3)
@@ -43,3 +49,13 @@ def test_kinect_and_depth_camera_before_a_wall(ros, tmp_path):
     near = [k for k, d in enumerate(kinect['depths']) if d is not None]
     assert near and all(0.5 < kinect['depths'][k] < 2.0 for k in near)
     assert all(depth_camera['depths'][k] == pytest.approx(kinect['depths'][k], abs=1e-5) for k in near)
+
+
+def test_the_plants_depth_camera_publishes_its_camera_infos(ros, tmp_path):
+    (tmp_path / 'wall.world').write_text(sdf_world(wall()))
+    plant = start_plant(ros, str(tmp_path / 'wall.world'))
+    ros.set_param('/robot_description', textfile=os.path.join(FIXTURES, 'urdf', 'depth_mast.urdf'))
+    spawn_urdf(ros, plant, '/robot_description', 'depth_mast')
+    for topic in ('/depth_camera/depth/camera_info', '/depth_camera/camera_info'):
+        info = ros.probe('sensor_plugins/probes/first_message.py', topic, timeout=60)
+        assert info == {'frame': 'depth_optical', 'type': 'sensor_msgs/CameraInfo'}, topic

@@ -145,8 +145,8 @@ bool LaserScanSensor::UpdateImpl(bool /*force*/)
   {
     msgs::Set(message->mutable_time(), lastMeasurementTime);
     msgs::LaserScan* scan = message->mutable_scan();
-    scan->set_frame(ParentName());
-    msgs::Set(scan->mutable_world_pose(), rays->worldPose());
+    scan->set_frame(parentName);
+    msgs::Set(scan->mutable_world_pose(), rays->scanOrigin());
     scan->set_angle_min(AngleMin().Radian());
     scan->set_angle_max(AngleMax().Radian());
     scan->set_angle_step(AngleResolution());

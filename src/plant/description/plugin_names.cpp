@@ -222,12 +222,13 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
     default:
       break;
   }
-  // The depth plugins default their camera's image to the infrared one: "ir/image_raw".
-  const bool depth_plugin = namingOf(d) == PluginNaming::DepthCamera;
+  // The depth plugins set their image's defaults to the infrared one's ("ir/image_raw",
+  // "ir/camera_info") and then call GazeboRosCameraUtils::Load, which sets the camera's again: as
+  // published, the depth plugins' image defaults are every camera's.
   switch (which)
   {
     case PluginTopic::CameraInfo:
-      return underCameraName(d, d.pluginParam("cameraInfoTopicName", depth_plugin ? "ir/camera_info" : "camera_info"));
+      return underCameraName(d, d.pluginParam("cameraInfoTopicName", "camera_info"));
     case PluginTopic::DepthImage:
       return underCameraName(d, d.pluginParam("depthImageTopicName", "depth/image_raw"));
     case PluginTopic::DepthCameraInfo:
@@ -235,7 +236,7 @@ std::string pluginTopic(const SensorDescription& d, PluginTopic which)
     case PluginTopic::Points:
       return underCameraName(d, d.pluginParam("pointCloudTopicName", "points"));
     default:
-      return underCameraName(d, d.pluginParam("imageTopicName", depth_plugin ? "ir/image_raw" : "image_raw"));
+      return underCameraName(d, d.pluginParam("imageTopicName", "image_raw"));
   }
 }
 

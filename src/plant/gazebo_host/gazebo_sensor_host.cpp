@@ -1,16 +1,20 @@
 #include "gazebo_host/gazebo_sensor_host.h"
 
 #include <cmath>
+#include <cstring>
 
 #include <gazebo/physics/World.hh>
 #include <gazebo/msgs/msgs.hh>
+#include <gazebo/sensors/CameraSensor.hh>
 #include <gazebo/sensors/ContactSensor.hh>
+#include <gazebo/sensors/DepthCameraSensor.hh>
 #include <gazebo/sensors/GpuRaySensor.hh>
 #include <gazebo/sensors/ImuSensor.hh>
 #include <gazebo/sensors/RaySensor.hh>
 #include <gazebo/sensors/SensorManager.hh>
 #include <gazebo/transport/TopicManager.hh>
 
+#include "bullet_plant/image_encoding.h"
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/log.h"
 #include "bullet_plant/model_plugin.h"
@@ -62,6 +66,11 @@ public:
   ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
   gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(lidar_.latest().stamp_ns); }
   const std::vector<float>& ranges() const override { return lidar_.latest().ranges; }
+  ignition::math::Pose3d scanOrigin() const override
+  {
+    const urdf::Pose& p = lidar_.latest().origin;
+    return {p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+  }
 
 private:
   Lidar& lidar_;
@@ -69,6 +78,60 @@ private:
 };
 
 ignition::math::Vector3d vector(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+
+// A camera's frames in Gazebo's bytes of its format (and, for a depth camera, Gazebo's depths and RGB
+// points), as its camera reads the render target back.
+class CameraBridge final : public gazebo::sensors::DepthCameraBridge
+{
+public:
+  CameraBridge(Camera& camera, std::shared_ptr<ContextModel> model)
+    : camera_(camera), plant_(camera, std::move(model)), encoding_(imageEncodingOf(camera.description().image_format))
+  {
+  }
+  void setActive(bool active) override { plant_.setActive(active); }
+  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
+  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
+  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(camera_.latest().stamp_ns); }
+  const unsigned char* image() override
+  {
+    const CameraFrame& frame = camera_.latest();
+    if (!camera_.hasFrame() || frame.rgb.empty())
+      return nullptr;
+    image_.resize(size_t(frame.width) * frame.height * encoding_.bytes_per_pixel);
+    encodeImage(encoding_, frame.rgb.data(), frame.rgb16.empty() ? nullptr : frame.rgb16.data(), frame.width,
+                frame.height, image_.data());
+    return image_.data();
+  }
+  void setDistortionCrop(bool crop) override { camera_.setDistortionCrop(crop); }
+  const float* depths() override
+  {
+    const CameraFrame& frame = camera_.latest();
+    return camera_.hasFrame() && !frame.depth.empty() ? frame.depth.data() : nullptr;
+  }
+  const float* rgbPoints() override
+  {
+    const CameraFrame& frame = camera_.latest();
+    const size_t pixels = size_t(frame.width) * frame.height;
+    if (!camera_.hasFrame() || frame.points.size() != 3 * pixels || frame.rgb.size() != 3 * pixels)
+      return nullptr;
+    points_.resize(4 * pixels);
+    for (size_t i = 0; i < pixels; ++i)
+    {
+      const uint8_t* c = &frame.rgb[3 * i];
+      const uint32_t packed = uint32_t(c[0]) << 16 | uint32_t(c[1]) << 8 | uint32_t(c[2]);
+      std::memcpy(&points_[4 * i], &frame.points[3 * i], 3 * sizeof(float));
+      std::memcpy(&points_[4 * i + 3], &packed, sizeof(float));
+    }
+    return points_.data();
+  }
+
+private:
+  Camera& camera_;
+  PlantSensorBridge plant_;
+  ImageEncoding encoding_;
+  std::vector<uint8_t> image_;
+  std::vector<float> points_;
+};
 
 class ContactBridge final : public gazebo::sensors::ContactBridge
 {
@@ -162,6 +225,19 @@ gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextM
       gazebo_imu->SetBridge(std::make_shared<ImuBridge>(*imu, std::move(model)));
       return gazebo_imu;
     }
+  if (auto* camera = dynamic_cast<Camera*>(&sensor))
+  {
+    std::shared_ptr<gazebo::sensors::CameraSensor> gazebo_camera;
+    if (type == "camera")
+      gazebo_camera = std::make_shared<gazebo::sensors::CameraSensor>();
+    else if (type == "depth")
+      gazebo_camera = std::make_shared<gazebo::sensors::DepthCameraSensor>();
+    if (gazebo_camera)
+    {
+      gazebo_camera->SetBridge(std::make_shared<CameraBridge>(*camera, std::move(model)));
+      return gazebo_camera;
+    }
+  }
   if (auto* contact = dynamic_cast<ContactSensor*>(&sensor))
   {
     auto gazebo_contact = std::make_shared<gazebo::sensors::ContactSensor>();
@@ -169,7 +245,8 @@ gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextM
     return gazebo_contact;
   }
   why = "Gazebo's sensor of type '" + type +
-        "' is not offered to plugins yet (those of types ray, gpu_ray, imu and contact are: docs/gazebo_api.md)";
+        "' is not offered to plugins yet (those of types ray, gpu_ray, imu, contact, camera and depth are: "
+        "docs/gazebo_api.md)";
   return nullptr;
 }
 }  // namespace

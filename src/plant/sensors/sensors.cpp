@@ -7,6 +7,7 @@
 
 #include <boost/random/normal_distribution.hpp>
 
+#include "bullet_plant/geometry.h"
 #include "bullet_plant/image_encoding.h"
 #include "sensors/sensor_context.h"
 #include "sensors/sensor_rendering.h"
@@ -42,7 +43,10 @@ Frame sensorPose(const SensorContext& context, const SensorDescription& d)
 
 bool Lidar::update(SensorContext& context, int64_t time_ns)
 {
-  detail::SensorRendering::scan(*this, context.lidarScene(), sensorPose(context, description_), time_ns);
+  const urdf::Pose link = context.linkPose(description_.link);
+  scan_.origin = compose(link, description_.pose);
+  detail::SensorRendering::scan(*this, context.lidarScene(), Frame::fromPose(link) * Frame::fromPose(description_.pose),
+                                time_ns);
   return true;
 }
 

@@ -37,6 +37,28 @@ public:
   // (its noise applied): +inf where nothing is within the range, -inf for a hit nearer than its
   // minimum; empty before the first scan.
   virtual const std::vector<float>& ranges() const = 0;
+  // The sensor's pose in the world the latest scan was cast from.
+  virtual ignition::math::Pose3d scanOrigin() const = 0;
+};
+
+class CameraBridge : public SensorBridge
+{
+public:
+  // The latest frame in its <image><format>'s bytes (width x height pixels of the format's bytes,
+  // row after row, as Gazebo's camera gives them); null before the first.
+  virtual const unsigned char* image() = 0;
+  // Whether a barrel distortion's black border is cropped away, from the next frame on.
+  virtual void setDistortionCrop(bool crop) = 0;
+};
+
+class DepthCameraBridge : public CameraBridge
+{
+public:
+  // The latest frame's depths (metres along the optical axis, NaN where nothing is seen) and its
+  // points (x, y, z in the optical frame, NaN where nothing is seen, and the pixel's colour packed
+  // r << 16 | g << 8 | b in a float's bits); null before the first.
+  virtual const float* depths() = 0;
+  virtual const float* rgbPoints() = 0;
 };
 
 class ContactBridge : public SensorBridge

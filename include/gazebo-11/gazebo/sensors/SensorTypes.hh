@@ -11,12 +11,16 @@ namespace sensors
 {
 class Sensor;
 class RaySensor;
+class CameraSensor;
 class ContactSensor;
+class DepthCameraSensor;
 class GpuRaySensor;
 class ImuSensor;
 typedef std::shared_ptr<Sensor> SensorPtr;
 typedef std::shared_ptr<RaySensor> RaySensorPtr;
+typedef std::shared_ptr<CameraSensor> CameraSensorPtr;
 typedef std::shared_ptr<ContactSensor> ContactSensorPtr;
+typedef std::shared_ptr<DepthCameraSensor> DepthCameraSensorPtr;
 typedef std::shared_ptr<GpuRaySensor> GpuRaySensorPtr;
 typedef std::shared_ptr<ImuSensor> ImuSensorPtr;
 typedef std::vector<SensorPtr> Sensor_V;

@@ -1,7 +1,9 @@
 // Gazebo's sensors library, as a plugin includes it whole.
 #pragma once
 
+#include "gazebo/sensors/CameraSensor.hh"
 #include "gazebo/sensors/ContactSensor.hh"
+#include "gazebo/sensors/DepthCameraSensor.hh"
 #include "gazebo/sensors/GpuRaySensor.hh"
 #include "gazebo/sensors/ImuSensor.hh"
 #include "gazebo/sensors/RaySensor.hh"

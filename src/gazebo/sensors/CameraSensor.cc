@@ -1,0 +1,115 @@
+// sensors::CameraSensor (gazebo/sensors/CameraSensor.hh).
+#include "gazebo/sensors/CameraSensor.hh"
+
+#include <boost/algorithm/string/replace.hpp>
+
+#include "gazebo/msgs/msgs.hh"
+#include "gazebo/rendering/Camera.hh"
+#include "gazebo/transport/Node.hh"
+#include "gazebo/transport/Publisher.hh"
+
+namespace gazebo
+{
+namespace sensors
+{
+namespace
+{
+// common::Image::PixelFormat's number of an <image><format> (Gazebo's ConvertPixelFormat).
+uint32_t pixelFormat(const std::string& format)
+{
+  static const char* const kNames[][2] = {
+      {"L8", "L_INT8"},           {"L16", "L_INT16"},         {"R8G8B8", "RGB_INT8"},     {"R8G8B8A8", "RGBA_INT8"},
+      {"B8G8R8A8", "BGRA_INT8"},  {"R16G16B16", "RGB_INT16"}, {"R32G32B32", "RGB_INT32"}, {"B8G8R8", "BGR_INT8"},
+      {"B16G16R16", "BGR_INT16"}, {"B32G32R32", "BGR_INT32"}, {"R_FLOAT16", "R_FLOAT16"}, {"RGB_FLOAT16", "RGB_FLOAT16"},
+      {"R_FLOAT32", "R_FLOAT32"}, {"RGB_FLOAT32", "RGB_FLOAT32"}, {"BAYER_RGGB8", "BAYER_RGGB8"},
+      {"BAYER_BGGR8", "BAYER_BGGR8"}, {"BAYER_GBRG8", "BAYER_GBRG8"}, {"BAYER_GRBG8", "BAYER_GRBG8"}};
+  for (uint32_t i = 0; i < sizeof(kNames) / sizeof(kNames[0]); ++i)
+    if (format == kNames[i][0] || format == kNames[i][1])
+      return i + 1;
+  return 0;  // UNKNOWN_PIXEL_FORMAT
+}
+}  // namespace
+
+CameraSensor::CameraSensor() : Sensor(IMAGE) {}
+
+CameraSensor::~CameraSensor() = default;
+
+rendering::CameraPtr CameraSensor::MakeCamera()
+{
+  // Gazebo's camera is named PARENT::SENSOR and follows the sensor's pose.
+  std::shared_ptr<SensorBridge> simulated = bridge;
+  return std::make_shared<rendering::Camera>(ParentName() + "::" + Name(), [simulated] {
+    return simulated ? simulated->worldPose() : ignition::math::Pose3d::Zero;
+  });
+}
+
+std::string CameraSensor::Topic() const
+{
+  std::string topic = "~/" + ParentName() + "/" + Name() + "/image";
+  boost::replace_all(topic, "::", "/");
+  return topic;
+}
+
+void CameraSensor::Load(const std::string& worldName)
+{
+  Sensor::Load(worldName);
+  if (world)
+    image_pub_ = node->Advertise<msgs::ImageStamped>(Topic(), 50);
+}
+
+void CameraSensor::Init()
+{
+  camera = MakeCamera();
+  camera->Load(sdf->GetElement("camera"));
+  camera->Init();
+  if (auto* frames = dynamic_cast<CameraBridge*>(bridge.get()))
+    if (const rendering::DistortionPtr lens = camera->LensDistortion())
+      frames->setDistortionCrop(lens->Crop());
+  Sensor::Init();
+}
+
+void CameraSensor::Fini()
+{
+  image_pub_.reset();
+  if (camera)
+    camera->Fini();
+  Sensor::Fini();
+}
+
+unsigned int CameraSensor::ImageWidth() const { return camera ? camera->ImageWidth() : 0; }
+
+unsigned int CameraSensor::ImageHeight() const { return camera ? camera->ImageHeight() : 0; }
+
+const unsigned char* CameraSensor::ImageData() const { return camera ? camera->ImageData() : nullptr; }
+
+bool CameraSensor::IsActive() const { return Sensor::IsActive() || (image_pub_ && image_pub_->HasConnections()); }
+
+bool CameraSensor::UpdateImpl(bool /*force*/)
+{
+  auto* frames = dynamic_cast<CameraBridge*>(bridge.get());
+  if (!frames || !camera)
+    return false;
+  const unsigned char* image = frames->image();
+  if (!image)
+    return false;
+  lastMeasurementTime = frames->measurementTime();
+  // the crop a plugin set (gazebo_ros_camera_utils' <borderCrop>) applies from the next frame
+  if (const rendering::DistortionPtr lens = camera->LensDistortion())
+    frames->setDistortionCrop(lens->Crop());
+  camera->TakeFrame(image);
+  if (image_pub_ && image_pub_->HasConnections())
+  {
+    msgs::ImageStamped message;
+    msgs::Set(message.mutable_time(), lastMeasurementTime);
+    msgs::Image& out = *message.mutable_image();
+    out.set_width(camera->ImageWidth());
+    out.set_height(camera->ImageHeight());
+    out.set_pixel_format(pixelFormat(camera->ImageFormat()));
+    out.set_step(camera->ImageWidth() * camera->ImageDepth());
+    out.set_data(image, camera->ImageByteSize());
+    image_pub_->Publish(message);
+  }
+  return true;
+}
+}  // namespace sensors
+}  // namespace gazebo
