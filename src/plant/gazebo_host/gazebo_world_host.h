@@ -75,7 +75,10 @@ bool pluginCall(Log& log, What&& what, const char* consequence, Call&& call)
   }
   catch (const std::exception& e)
   {
-    log.error(what() + ": " + e.what() + consequence);
+    // one line: Gazebo's exceptions end their text with a newline (gzthrow)
+    std::string why = e.what();
+    why.erase(why.find_last_not_of(" \t\r\n") + 1);
+    log.error(what() + ": " + why + consequence);
   }
   catch (...)
   {

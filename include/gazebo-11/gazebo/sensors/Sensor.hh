@@ -19,6 +19,7 @@
 #include "gazebo/common/Time.hh"
 #include "gazebo/msgs/msgs.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
+#include "gazebo/rendering/RenderTypes.hh"  // as Gazebo's: camera plugins name rendering::CameraPtr through it
 #include "gazebo/sensors/SensorBridge.hh"
 #include "gazebo/sensors/SensorTypes.hh"
 #include "gazebo/transport/TransportTypes.hh"
