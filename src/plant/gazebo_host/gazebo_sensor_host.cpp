@@ -27,92 +27,84 @@ namespace
 {
 constexpr const char* kNotLoaded = "; the plugin is not loaded";
 
-// A plant sensor as Gazebo's sensors see it: its activity and rate, its pose in the world (its
-// link's, which the model's bridge answers while the model is in the world), its latest reading's
-// time. The host removes the Gazebo sensor before the plant's goes.
-class PlantSensorBridge
+ignition::math::Vector3d vector(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+
+ignition::math::Pose3d pose3d(const urdf::Pose& p)
+{
+  return {p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+}
+
+// A plant sensor as Gazebo's sensor of its kind sees it (`GazeboBridge`, gazebo/sensors/SensorBridge.hh):
+// its activity and rate, its pose in the world (its link's, which the model's bridge answers while
+// the model is in the world), its latest reading's time; the kind's readings in the classes below.
+// The host removes the Gazebo sensor before the plant's goes.
+template <class GazeboBridge, class PlantSensor>
+class PlantSensorBridge : public GazeboBridge
 {
 public:
-  PlantSensorBridge(Sensor& sensor, std::shared_ptr<ContextModel> model)
-    : sensor_(sensor), model_(std::move(model)), link_(sensor.description().link)
+  PlantSensorBridge(PlantSensor& sensor, std::shared_ptr<ContextModel> model)
+    : sensor_(sensor), model_(std::move(model)), link_(sensor.description().link), pose_(pose3d(sensor.description().pose))
   {
-    const urdf::Pose& p = sensor.description().pose;
-    pose_ = {p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
   }
-  void setActive(bool active) { sensor_.setActive(active); }
-  void setUpdateRate(double hz) { sensor_.setUpdatePeriodNs(hz > 0.0 ? static_cast<int64_t>(1e9 / hz) : 0); }
-  ignition::math::Pose3d worldPose() const { return pose_ + model_->linkPose(link_); }
-  static gazebo::common::Time time(int64_t ns)
+  void setActive(bool active) final { sensor_.setActive(active); }
+  void setUpdateRate(double hz) final { sensor_.setUpdatePeriodNs(hz > 0.0 ? static_cast<int64_t>(1e9 / hz) : 0); }
+  ignition::math::Pose3d worldPose() const final { return pose_ + model_->linkPose(link_); }
+  gazebo::common::Time measurementTime() const final
   {
+    const int64_t ns = sensor_.latest().stamp_ns;
     gazebo::common::Time t;
     t.sec = static_cast<int32_t>(ns / 1000000000);
     t.nsec = static_cast<int32_t>(ns % 1000000000);
     return t;
   }
 
+protected:
+  PlantSensor& sensor_;
+
 private:
-  Sensor& sensor_;
   std::shared_ptr<ContextModel> model_;
   std::string link_;
   ignition::math::Pose3d pose_;  // in its link's frame
 };
 
-class LidarBridge final : public gazebo::sensors::RayBridge
+class LidarBridge final : public PlantSensorBridge<gazebo::sensors::RayBridge, Lidar>
 {
 public:
-  LidarBridge(Lidar& lidar, std::shared_ptr<ContextModel> model) : lidar_(lidar), plant_(lidar, std::move(model)) {}
-  void setActive(bool active) override { plant_.setActive(active); }
-  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
-  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
-  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(lidar_.latest().stamp_ns); }
-  const std::vector<float>& ranges() const override { return lidar_.latest().ranges; }
-  ignition::math::Pose3d scanOrigin() const override
-  {
-    const urdf::Pose& p = lidar_.latest().origin;
-    return {p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
-  }
-
-private:
-  Lidar& lidar_;
-  PlantSensorBridge plant_;
+  using PlantSensorBridge::PlantSensorBridge;
+  const std::vector<float>& ranges() const override { return sensor_.latest().ranges; }
+  ignition::math::Pose3d scanOrigin() const override { return pose3d(sensor_.latest().origin); }
 };
-
-ignition::math::Vector3d vector(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
 
 // A camera's frames in Gazebo's bytes of its format (and, for a depth camera, Gazebo's depths and RGB
 // points), as its camera reads the render target back.
-class CameraBridge final : public gazebo::sensors::DepthCameraBridge
+class CameraBridge final : public PlantSensorBridge<gazebo::sensors::DepthCameraBridge, Camera>
 {
 public:
   CameraBridge(Camera& camera, std::shared_ptr<ContextModel> model)
-    : camera_(camera), plant_(camera, std::move(model)), encoding_(imageEncodingOf(camera.description().image_format))
+    : PlantSensorBridge(camera, std::move(model)), encoding_(imageEncodingOf(camera.description().image_format))
   {
   }
-  void setActive(bool active) override { plant_.setActive(active); }
-  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
-  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
-  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(camera_.latest().stamp_ns); }
   const unsigned char* image() override
   {
-    const CameraFrame& frame = camera_.latest();
-    if (!camera_.hasFrame() || frame.rgb.empty())
+    const CameraFrame& frame = sensor_.latest();
+    if (!sensor_.hasFrame() || frame.rgb.empty())
       return nullptr;
     image_.resize(size_t(frame.width) * frame.height * encoding_.bytes_per_pixel);
     encodeImage(encoding_, frame.rgb.data(), frame.rgb16.empty() ? nullptr : frame.rgb16.data(), frame.width,
                 frame.height, image_.data());
     return image_.data();
   }
-  void setDistortionCrop(bool crop) override { camera_.setDistortionCrop(crop); }
+  void setDistortionCrop(bool crop) override { sensor_.setDistortionCrop(crop); }
   const float* depths() override
   {
-    const CameraFrame& frame = camera_.latest();
-    return camera_.hasFrame() && !frame.depth.empty() ? frame.depth.data() : nullptr;
+    const CameraFrame& frame = sensor_.latest();
+    return sensor_.hasFrame() && !frame.depth.empty() ? frame.depth.data() : nullptr;
   }
   const float* rgbPoints() override
   {
-    const CameraFrame& frame = camera_.latest();
+    const CameraFrame& frame = sensor_.latest();
     const size_t pixels = size_t(frame.width) * frame.height;
-    if (!camera_.hasFrame() || frame.points.size() != 3 * pixels || frame.rgb.size() != 3 * pixels)
+    if (!sensor_.hasFrame() || frame.points.size() != 3 * pixels || frame.rgb.size() != 3 * pixels)
       return nullptr;
     points_.resize(4 * pixels);
     for (size_t i = 0; i < pixels; ++i)
@@ -126,29 +118,20 @@ public:
   }
 
 private:
-  Camera& camera_;
-  PlantSensorBridge plant_;
   ImageEncoding encoding_;
   std::vector<uint8_t> image_;
   std::vector<float> points_;
 };
 
-class ContactBridge final : public gazebo::sensors::ContactBridge
+class ContactBridge final : public PlantSensorBridge<gazebo::sensors::ContactBridge, ContactSensor>
 {
 public:
-  ContactBridge(ContactSensor& contact, std::shared_ptr<ContextModel> model)
-    : contact_(contact), plant_(contact, std::move(model))
-  {
-  }
-  void setActive(bool active) override { plant_.setActive(active); }
-  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
-  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
-  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(contact_.latest().stamp_ns); }
+  using PlantSensorBridge::PlantSensorBridge;
   // Gazebo's msgs::Contact of each state: body 1 is the sensor's (its wrench as the plant measures
   // it, in its link frame); body 2's wrench is not measured (zero).
   void contacts(google::protobuf::RepeatedPtrField<gazebo::msgs::Contact>& out) const override
   {
-    const std::vector<ContactState>& states = contact_.latest().states;
+    const std::vector<ContactState>& states = sensor_.latest().states;
     out.Clear();
     out.Reserve(static_cast<int>(states.size()));
     for (const ContactState& state : states)
@@ -173,31 +156,19 @@ public:
       }
     }
   }
-
-private:
-  ContactSensor& contact_;
-  PlantSensorBridge plant_;
 };
 
-class ImuBridge final : public gazebo::sensors::ImuBridge
+class ImuBridge final : public PlantSensorBridge<gazebo::sensors::ImuBridge, Imu>
 {
 public:
-  ImuBridge(Imu& imu, std::shared_ptr<ContextModel> model) : imu_(imu), plant_(imu, std::move(model)) {}
-  void setActive(bool active) override { plant_.setActive(active); }
-  void setUpdateRate(double hz) override { plant_.setUpdateRate(hz); }
-  ignition::math::Pose3d worldPose() const override { return plant_.worldPose(); }
-  gazebo::common::Time measurementTime() const override { return PlantSensorBridge::time(imu_.latest().stamp_ns); }
+  using PlantSensorBridge::PlantSensorBridge;
   ignition::math::Quaterniond orientation() const override
   {
-    const urdf::Rotation& q = imu_.latest().orientation;
+    const urdf::Rotation& q = sensor_.latest().orientation;
     return {q.w, q.x, q.y, q.z};
   }
-  ignition::math::Vector3d angularVelocity() const override { return vector(imu_.latest().angular_velocity); }
-  ignition::math::Vector3d linearAcceleration() const override { return vector(imu_.latest().linear_acceleration); }
-
-private:
-  Imu& imu_;
-  PlantSensorBridge plant_;
+  ignition::math::Vector3d angularVelocity() const override { return vector(sensor_.latest().angular_velocity); }
+  ignition::math::Vector3d linearAcceleration() const override { return vector(sensor_.latest().linear_acceleration); }
 };
 
 // The Gazebo sensor of the plant's sensor's kind over it; null where the plant has none yet (the
