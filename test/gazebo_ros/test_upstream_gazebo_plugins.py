@@ -53,7 +53,8 @@ SENSOR_PLUGINS = {
 TESTED = dict(MODEL_AND_WORLD_PLUGINS, **SENSOR_PLUGINS)
 # Built, with no test of the project's own through ROS yet.
 ALSO_BUILT = ['gazebo_ros_tricycle_drive', 'gazebo_ros_p3d', 'gazebo_ros_joint_state_publisher',
-              'gazebo_ros_vacuum_gripper', 'gazebo_ros_template', 'gazebo_ros_utils', 'gazebo_ros_camera_utils']
+              'gazebo_ros_vacuum_gripper', 'gazebo_ros_template', 'gazebo_ros_utils', 'gazebo_ros_camera_utils',
+              'gazebo_ros_prosilica']
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow,
               pytest.mark.skipif(not GRP_REPO, reason='GRP_REPO (a gazebo_ros_pkgs snapshot) is not set')]
