@@ -27,13 +27,6 @@ namespace
 {
 constexpr const char* kNotLoaded = "; the plugin is not loaded";
 
-ignition::math::Vector3d vector(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
-
-ignition::math::Pose3d pose3d(const urdf::Pose& p)
-{
-  return {p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
-}
-
 // A plant sensor as Gazebo's sensor of its kind sees it (`GazeboBridge`, gazebo/sensors/SensorBridge.hh):
 // its activity and rate, its pose in the world (its link's, which the model's bridge answers while
 // the model is in the world), its latest reading's time; the kind's readings in the classes below.
@@ -43,7 +36,7 @@ class PlantSensorBridge : public GazeboBridge
 {
 public:
   PlantSensorBridge(PlantSensor& sensor, std::shared_ptr<ContextModel> model)
-    : sensor_(sensor), model_(std::move(model)), link_(sensor.description().link), pose_(pose3d(sensor.description().pose))
+    : sensor_(sensor), model_(std::move(model)), link_(sensor.description().link), pose_(toIgnition(sensor.description().pose))
   {
   }
   void setActive(bool active) final { sensor_.setActive(active); }
@@ -72,7 +65,7 @@ class LidarBridge final : public PlantSensorBridge<gazebo::sensors::RayBridge, L
 public:
   using PlantSensorBridge::PlantSensorBridge;
   const std::vector<float>& ranges() const override { return sensor_.latest().ranges; }
-  ignition::math::Pose3d scanOrigin() const override { return pose3d(sensor_.latest().origin); }
+  ignition::math::Pose3d scanOrigin() const override { return toIgnition(sensor_.latest().origin); }
 };
 
 // A camera's frames in Gazebo's bytes of its format (and, for a depth camera, Gazebo's depths and RGB
@@ -141,16 +134,16 @@ public:
       contact.set_collision2(state.collision2);
       for (const ContactPoint& point : state.points)
       {
-        gazebo::msgs::Set(contact.add_position(), vector(point.position));
-        gazebo::msgs::Set(contact.add_normal(), vector(point.normal));
+        gazebo::msgs::Set(contact.add_position(), toIgnition(point.position));
+        gazebo::msgs::Set(contact.add_normal(), toIgnition(point.normal));
         contact.add_depth(point.depth);
         gazebo::msgs::JointWrench& wrench = *contact.add_wrench();
         wrench.set_body_1_name(state.collision1);
         wrench.set_body_1_id(0);
         wrench.set_body_2_name(state.collision2);
         wrench.set_body_2_id(0);
-        gazebo::msgs::Set(wrench.mutable_body_1_wrench()->mutable_force(), vector(point.force));
-        gazebo::msgs::Set(wrench.mutable_body_1_wrench()->mutable_torque(), vector(point.torque));
+        gazebo::msgs::Set(wrench.mutable_body_1_wrench()->mutable_force(), toIgnition(point.force));
+        gazebo::msgs::Set(wrench.mutable_body_1_wrench()->mutable_torque(), toIgnition(point.torque));
         gazebo::msgs::Set(wrench.mutable_body_2_wrench()->mutable_force(), ignition::math::Vector3d::Zero);
         gazebo::msgs::Set(wrench.mutable_body_2_wrench()->mutable_torque(), ignition::math::Vector3d::Zero);
       }
@@ -167,8 +160,8 @@ public:
     const urdf::Rotation& q = sensor_.latest().orientation;
     return {q.w, q.x, q.y, q.z};
   }
-  ignition::math::Vector3d angularVelocity() const override { return vector(sensor_.latest().angular_velocity); }
-  ignition::math::Vector3d linearAcceleration() const override { return vector(sensor_.latest().linear_acceleration); }
+  ignition::math::Vector3d angularVelocity() const override { return toIgnition(sensor_.latest().angular_velocity); }
+  ignition::math::Vector3d linearAcceleration() const override { return toIgnition(sensor_.latest().linear_acceleration); }
 };
 
 // The Gazebo sensor of the plant's sensor's kind over it; null where the plant has none yet (the

@@ -13,8 +13,6 @@ namespace bullet_plant
 {
 namespace
 {
-ignition::math::Vector3d toIgnition(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
-
 urdf::Vector3 toUrdf(const ignition::math::Vector3d& v) { return urdf::Vector3(v.X(), v.Y(), v.Z()); }
 
 bool finite(const ignition::math::Vector3d& v) { return std::isfinite(v.X()) && std::isfinite(v.Y()) && std::isfinite(v.Z()); }
@@ -218,9 +216,7 @@ ignition::math::Pose3d ContextModel::linkPose(const std::string& link) const
   ModelPluginContext* context = reach("WorldPose");
   if (!context)
     return ignition::math::Pose3d::Zero;
-  const urdf::Pose pose = context->linkMotion(link).pose;
-  return {pose.position.x, pose.position.y, pose.position.z, pose.rotation.w, pose.rotation.x, pose.rotation.y,
-          pose.rotation.z};
+  return toIgnition(context->linkMotion(link).pose);
 }
 
 ignition::math::Vector3d ContextModel::linkLinearVel(const std::string& link) const

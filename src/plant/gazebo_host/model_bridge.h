@@ -17,6 +17,13 @@
 
 namespace bullet_plant
 {
+// The plant's vectors and poses in Gazebo's API's ignition types.
+inline ignition::math::Vector3d toIgnition(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+inline ignition::math::Pose3d toIgnition(const urdf::Pose& p)
+{
+  return {p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+}
+
 // The model a bridge reaches while it is in the world: null once it left.
 struct ModelReach
 {
