@@ -32,6 +32,7 @@ gazebo_api_library(gazebo_common VERSIONED SOURCES
   src/gazebo/common/Console.cc
   src/gazebo/common/Events.cc
   src/gazebo/common/Exception.cc
+  src/gazebo/common/Image.cc
   src/gazebo/common/KeyFrame.cc
   src/gazebo/common/PID.cc
   src/gazebo/common/SystemPaths.cc
@@ -67,6 +68,7 @@ gazebo_api_library(gazebo_sensors VERSIONED SOURCES
   src/gazebo/sensors/DepthCameraSensor.cc
   src/gazebo/sensors/GpuRaySensor.cc
   src/gazebo/sensors/ImuSensor.cc
+  src/gazebo/sensors/MultiCameraSensor.cc
   src/gazebo/sensors/LaserScanSensor.cc
   src/gazebo/sensors/RaySensor.cc
   src/gazebo/sensors/Sensor.cc
@@ -78,7 +80,8 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_rendering gazebo_physics gaze
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
   time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU
-  wrench:Wrench joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped)
+  wrench:Wrench joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped
+  images_stamped:ImagesStamped)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)

@@ -78,9 +78,11 @@ public:
   // runs without it.
   virtual bool loadWorldPlugin(const WorldPluginDescription& plugin) = 0;
   // SensorPlugin (a <sensor>'s <plugin> whose file was found: the description's `library`): Gazebo's
-  // sensor of its type over `sensor`, the plant's simulation of it (gazebo_host/gazebo_sensor_host.h),
-  // then Load(that sensor, its <plugin> element), Init. False as above; the robot runs without it.
-  virtual bool loadSensorPlugin(const SensorDescription& d, Sensor& sensor, ModelPluginContext& model) = 0;
+  // sensor of its type over `sensors`, the plant's simulation of it (gazebo_host/gazebo_sensor_host.h:
+  // the sensor, or a multicamera's cameras in their order, `d` the first one's description), then
+  // Load(that sensor, its <plugin> element), Init. False as above; the robot runs without it.
+  virtual bool loadSensorPlugin(const SensorDescription& d, const std::vector<Sensor*>& sensors,
+                                ModelPluginContext& model) = 0;
   // SystemPlugin (gzserver -s FILE): found on the plugin paths, Load(argc, argv), Init. False as above.
   virtual bool loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments) = 0;
   // Each step: event::Events::worldUpdateBegin and beforePhysicsUpdate before the plugins' and the

@@ -5,13 +5,19 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace bullet_plant
 {
 // The period of `rate_hz` in nanoseconds, rounded; 0 (no throttling) for a rate of 0 or below.
 inline int64_t periodNsOfRate(double rate_hz)
 {
-  return rate_hz > 0 ? static_cast<int64_t>(std::llround(1e9 / rate_hz)) : 0;
+  if (!(rate_hz > 0))
+    return 0;
+  // a rate so low its period passes int64's nanoseconds (DBL_MIN, gazebo_ros_triggered_camera's
+  // "never"): the longest period
+  const double period_ns = 1e9 / rate_hz;
+  return period_ns < 9.2e18 ? static_cast<int64_t>(std::llround(period_ns)) : std::numeric_limits<int64_t>::max();
 }
 
 // Open at the first call, then once `period_ns` has passed since it last opened, and at once when

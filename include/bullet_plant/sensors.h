@@ -128,6 +128,8 @@ public:
   double pointCloudCutoff() const;
   double pointCloudCutoffMax() const;
   bool hasFrame() const { return updates_ > 0; }
+  // Whether a frame it rendered is still to be collected (its reading not yet counted).
+  bool frameInFlight() const;
   const CameraFrame& latest() const { return frame_; }
   // Pinhole intrinsics from the horizontal field of view and the image size (square pixels).
   void intrinsics(double& fx, double& fy, double& cx, double& cy) const;

@@ -15,5 +15,9 @@ EventT<void()> Events::worldUpdateEnd;
 EventT<void(const common::UpdateInfo&)> Events::beforePhysicsUpdate;
 EventT<void()> Events::worldReset;
 EventT<void()> Events::timeReset;
+EventT<void()> Events::preRender;
+EventT<void()> Events::preRenderEnded;
+EventT<void()> Events::render;
+EventT<void()> Events::postRender;
 }  // namespace event
 }  // namespace gazebo

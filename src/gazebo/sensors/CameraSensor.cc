@@ -3,6 +3,7 @@
 
 #include <boost/algorithm/string/replace.hpp>
 
+#include "gazebo/common/Image.hh"
 #include "gazebo/msgs/msgs.hh"
 #include "gazebo/rendering/Camera.hh"
 #include "gazebo/transport/Node.hh"
@@ -12,24 +13,6 @@ namespace gazebo
 {
 namespace sensors
 {
-namespace
-{
-// common::Image::PixelFormat's number of an <image><format> (Gazebo's ConvertPixelFormat).
-uint32_t pixelFormat(const std::string& format)
-{
-  static const char* const kNames[][2] = {
-      {"L8", "L_INT8"},           {"L16", "L_INT16"},         {"R8G8B8", "RGB_INT8"},     {"R8G8B8A8", "RGBA_INT8"},
-      {"B8G8R8A8", "BGRA_INT8"},  {"R16G16B16", "RGB_INT16"}, {"R32G32B32", "RGB_INT32"}, {"B8G8R8", "BGR_INT8"},
-      {"B16G16R16", "BGR_INT16"}, {"B32G32R32", "BGR_INT32"}, {"R_FLOAT16", "R_FLOAT16"}, {"RGB_FLOAT16", "RGB_FLOAT16"},
-      {"R_FLOAT32", "R_FLOAT32"}, {"RGB_FLOAT32", "RGB_FLOAT32"}, {"BAYER_RGGB8", "BAYER_RGGB8"},
-      {"BAYER_BGGR8", "BAYER_BGGR8"}, {"BAYER_GBRG8", "BAYER_GBRG8"}, {"BAYER_GRBG8", "BAYER_GRBG8"}};
-  for (uint32_t i = 0; i < sizeof(kNames) / sizeof(kNames[0]); ++i)
-    if (format == kNames[i][0] || format == kNames[i][1])
-      return i + 1;
-  return 0;  // UNKNOWN_PIXEL_FORMAT
-}
-}  // namespace
-
 CameraSensor::CameraSensor() : Sensor(IMAGE) {}
 
 CameraSensor::~CameraSensor() = default;
@@ -104,7 +87,7 @@ bool CameraSensor::UpdateImpl(bool /*force*/)
     msgs::Image& out = *message.mutable_image();
     out.set_width(camera->ImageWidth());
     out.set_height(camera->ImageHeight());
-    out.set_pixel_format(pixelFormat(camera->ImageFormat()));
+    out.set_pixel_format(common::Image::ConvertPixelFormat(camera->ImageFormat()));
     out.set_step(camera->ImageWidth() * camera->ImageDepth());
     out.set_data(image, camera->ImageByteSize());
     image_pub_->Publish(message);

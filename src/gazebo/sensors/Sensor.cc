@@ -119,7 +119,11 @@ double Sensor::UpdateRate() const
 
 void Sensor::SetUpdateRate(double hz)
 {
-  updatePeriod = hz > 0.0 ? common::Time(1.0 / hz) : common::Time::Zero;
+  // (a rate whose period passes common::Time's seconds, DBL_MIN as gazebo_ros_triggered_camera sets
+  // it for "never": the longest time)
+  updatePeriod = !(hz > 0.0)                  ? common::Time::Zero
+                 : 1.0 / hz < double(INT32_MAX) ? common::Time(1.0 / hz)
+                                                : common::Time(INT32_MAX, 0);
   if (bridge)
     bridge->setUpdateRate(hz > 0.0 ? hz : 0.0);
 }

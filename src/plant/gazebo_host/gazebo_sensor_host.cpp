@@ -10,6 +10,7 @@
 #include <gazebo/sensors/DepthCameraSensor.hh>
 #include <gazebo/sensors/GpuRaySensor.hh>
 #include <gazebo/sensors/ImuSensor.hh>
+#include <gazebo/sensors/MultiCameraSensor.hh>
 #include <gazebo/sensors/RaySensor.hh>
 #include <gazebo/sensors/SensorManager.hh>
 #include <gazebo/transport/TopicManager.hh>
@@ -18,6 +19,7 @@
 #include "bullet_plant/inertial_sensors.h"
 #include "bullet_plant/log.h"
 #include "bullet_plant/model_plugin.h"
+#include "bullet_plant/rate_gate.h"
 #include "bullet_plant/sensors.h"
 #include "gazebo_host/gazebo_world_host.h"
 
@@ -40,7 +42,7 @@ public:
   {
   }
   void setActive(bool active) final { sensor_.setActive(active); }
-  void setUpdateRate(double hz) final { sensor_.setUpdatePeriodNs(hz > 0.0 ? static_cast<int64_t>(1e9 / hz) : 0); }
+  void setUpdateRate(double hz) final { sensor_.setUpdatePeriodNs(periodNsOfRate(hz)); }
   ignition::math::Pose3d worldPose() const final { return pose_ + model_->linkPose(link_); }
   gazebo::common::Time measurementTime() const final
   {
@@ -116,6 +118,35 @@ private:
   std::vector<float> points_;
 };
 
+// A multicamera's cameras (the plant's camera of each <camera>, in their order); its pose is the
+// <sensor>'s, the first camera's with that camera's own pose in the sensor taken away.
+class MultiCameraBridge final : public gazebo::sensors::MultiCameraBridge
+{
+public:
+  MultiCameraBridge(std::vector<std::unique_ptr<CameraBridge>> cameras, const ignition::math::Pose3d& first_in_sensor)
+    : cameras_(std::move(cameras)), sensor_in_first_(first_in_sensor.Inverse())
+  {
+  }
+  void setActive(bool active) override
+  {
+    for (auto& camera : cameras_)
+      camera->setActive(active);
+  }
+  void setUpdateRate(double hz) override
+  {
+    for (auto& camera : cameras_)
+      camera->setUpdateRate(hz);
+  }
+  ignition::math::Pose3d worldPose() const override { return sensor_in_first_ + cameras_.front()->worldPose(); }
+  gazebo::common::Time measurementTime() const override { return cameras_.front()->measurementTime(); }
+  unsigned int cameraCount() const override { return static_cast<unsigned int>(cameras_.size()); }
+  gazebo::sensors::CameraBridge& camera(unsigned int index) override { return *cameras_.at(index); }
+
+private:
+  std::vector<std::unique_ptr<CameraBridge>> cameras_;
+  ignition::math::Pose3d sensor_in_first_;
+};
+
 class ContactBridge final : public PlantSensorBridge<gazebo::sensors::ContactBridge, ContactSensor>
 {
 public:
@@ -164,6 +195,30 @@ public:
   ignition::math::Vector3d linearAcceleration() const override { return toIgnition(sensor_.latest().linear_acceleration); }
 };
 
+// Gazebo's MultiCameraSensor over the plant's camera of each of a multicamera's <camera> elements
+// (`d` the first one's description); null where one is no camera.
+gazebo::sensors::SensorPtr gazeboMultiCamera(const SensorDescription& d, const std::vector<Sensor*>& plant,
+                                             const std::shared_ptr<ContextModel>& model, std::string& why)
+{
+  std::vector<std::unique_ptr<CameraBridge>> cameras;
+  for (Sensor* sensor : plant)
+  {
+    auto* camera = dynamic_cast<Camera*>(sensor);
+    if (!camera)
+    {
+      why = "its camera '" + sensor->name() + "' is not simulated as a camera";
+      return nullptr;
+    }
+    cameras.push_back(std::make_unique<CameraBridge>(*camera, model));
+  }
+  const sdf::ElementPtr first = d.element && d.element->HasElement("camera") ? d.element->GetElement("camera") : nullptr;
+  const ignition::math::Pose3d first_in_sensor =
+      first && first->HasElement("pose") ? first->Get<ignition::math::Pose3d>("pose") : ignition::math::Pose3d::Zero;
+  auto multicamera = std::make_shared<gazebo::sensors::MultiCameraSensor>();
+  multicamera->SetBridge(std::make_shared<MultiCameraBridge>(std::move(cameras), first_in_sensor));
+  return multicamera;
+}
+
 // The Gazebo sensor of the plant's sensor's kind over it; null where the plant has none yet (the
 // reason in `why`).
 gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextModel> model, std::string& why)
@@ -209,8 +264,8 @@ gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextM
     return gazebo_contact;
   }
   why = "Gazebo's sensor of type '" + type +
-        "' is not offered to plugins yet (those of types ray, gpu_ray, imu, contact, camera and depth are: "
-        "docs/gazebo_api.md)";
+        "' is not offered to plugins yet (those of types ray, gpu_ray, imu, contact, camera, depth and multicamera "
+        "are: docs/gazebo_api.md)";
   return nullptr;
 }
 }  // namespace
@@ -221,16 +276,19 @@ GazeboSensorHost::~GazeboSensorHost()
     remove(hosted);
 }
 
-bool GazeboSensorHost::load(const SensorDescription& d, Sensor& plant, ModelPluginContext& model)
+bool GazeboSensorHost::load(const SensorDescription& d, const std::vector<Sensor*>& plant, ModelPluginContext& model)
 {
   Log& log = model.log();
-  const std::string label = model.modelName() + ": sensor '" + d.name + "' plugin '" + d.plugin_name + "' (" +
+  // a multicamera by its <sensor>'s name (its cameras' descriptions are SENSOR::CAMERA)
+  const std::string name = d.multicamera_camera.empty() ? d.name : d.name.substr(0, d.name.rfind("::"));
+  const std::string label = model.modelName() + ": sensor '" + name + "' plugin '" + d.plugin_name + "' (" +
                             d.plugin_filename + ")";
   std::string why;
   Hosted hosted;
   hosted.model = model.modelName();
-  hosted.plant = &plant;
-  hosted.sensor = gazeboSensor(plant, host_.modelBridge(model), why);
+  hosted.plant = plant;
+  hosted.sensor = d.multicamera_camera.empty() ? gazeboSensor(*plant.front(), host_.modelBridge(model), why)
+                                               : gazeboMultiCamera(d, plant, host_.modelBridge(model), why);
   if (!hosted.sensor)
   {
     log.error(label + ": " + why + kNotLoaded);
@@ -259,8 +317,9 @@ bool GazeboSensorHost::load(const SensorDescription& d, Sensor& plant, ModelPlug
     remove(hosted);
     return false;
   }
-  hosted.readings_seen = plant.updates();
-  plant.setActive(hosted.sensor->IsActive());
+  for (Sensor* sensor : plant)
+    hosted.readings_seen.push_back(sensor->updates());
+  handActivityBack(hosted);
   log.info(label + ": loaded from " + d.library);
   hosted_.push_back(std::move(hosted));
   return true;
@@ -270,19 +329,50 @@ void GazeboSensorHost::update()
 {
   const int64_t next_step_ns =
       host_.context().timeNs() + static_cast<int64_t>(std::llround(host_.context().stepSize() * 1e9));
+  bool rendering = false;
   for (Hosted& hosted : hosted_)
   {
-    if (hosted.plant->updates() != hosted.readings_seen)
-    {
-      hosted.readings_seen = hosted.plant->updates();
+    if (takeNewReadings(hosted))
       pluginCall(host_.context().log(),
                  [&] { return hosted.model + ": sensor '" + hosted.sensor->Name() + "': a callback on its update threw"; },
                  "", [&] { hosted.sensor->Update(true); });
-    }
-    // Whether the plant measures at the next step it may (asked then only: a RaySensor's IsActive
-    // looks its topic's subscribers up).
-    if (hosted.plant->rateDueBy(next_step_ns))
-      hosted.plant->setActive(hosted.sensor->IsActive());
+    rendering = rendering || hosted.sensor->Category() == gazebo::sensors::IMAGE;
+  }
+  if (rendering)
+    pluginCall(host_.context().log(), [] { return std::string("a callback on the render events threw"); }, "", [] {
+      gazebo::event::Events::preRender();
+      gazebo::event::Events::preRenderEnded();
+      gazebo::event::Events::render();
+      gazebo::event::Events::postRender();
+    });
+  // Whether the plant measures at the next step it may (asked then only: a RaySensor's IsActive
+  // looks its topic's subscribers up).
+  for (Hosted& hosted : hosted_)
+    if (hosted.plant.front()->rateDueBy(next_step_ns))
+      handActivityBack(hosted);
+}
+
+bool GazeboSensorHost::takeNewReadings(Hosted& hosted)
+{
+  for (size_t i = 0; i < hosted.plant.size(); ++i)
+    if (hosted.plant[i]->updates() == hosted.readings_seen[i])
+      return false;
+  for (size_t i = 0; i < hosted.plant.size(); ++i)
+    hosted.readings_seen[i] = hosted.plant[i]->updates();
+  return true;
+}
+
+void GazeboSensorHost::handActivityBack(Hosted& hosted)
+{
+  const bool active = hosted.sensor->IsActive();
+  for (Sensor* sensor : hosted.plant)
+  {
+    // Gazebo renders a camera and hands its frame over before it renders the next; the plant's
+    // frames come a step or more after it renders them, so a camera rendering every step (a
+    // triggered camera's, once triggered) waits for the last one: one frame per trigger.
+    const auto* camera = dynamic_cast<const Camera*>(sensor);
+    const bool waits = camera && sensor->periodNs() == 0 && camera->frameInFlight();
+    sensor->setActive(active && !waits);
   }
 }
 

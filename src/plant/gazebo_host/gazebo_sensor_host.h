@@ -30,11 +30,13 @@ public:
   explicit GazeboSensorHost(PlantGazeboHost& host) : host_(host) {}
   ~GazeboSensorHost();
 
-  // False, with the error naming the sensor, the file and why, where the plugin cannot be loaded
-  // (a sensor type without a Gazebo sensor here, a file that is not a sensor plugin, a Load that
-  // throws); the robot runs, the sensor measuring nothing for it.
-  bool load(const SensorDescription& d, Sensor& sensor, ModelPluginContext& model);
-  // After each step's sensors: new readings to the Gazebo sensors, activity back to the plant.
+  // `plant`: the plant's simulation of the <sensor> (one sensor; a multicamera's cameras in their
+  // order, `d` the first one's description). False, with the error naming the sensor, the file and
+  // why, where the plugin cannot be loaded (a sensor type without a Gazebo sensor here, a file that
+  // is not a sensor plugin, a Load that throws); the robot runs, the sensor measuring nothing for it.
+  bool load(const SensorDescription& d, const std::vector<Sensor*>& plant, ModelPluginContext& model);
+  // After each step's sensors: new readings to the Gazebo sensors, the render events where an image
+  // sensor is hosted (event::Events::preRender ...), then activity back to the plant.
   void update();
   // reset_world / reset_simulation: the plugins' Reset, the sensors' last update times.
   void reset();
@@ -45,12 +47,17 @@ private:
   struct Hosted
   {
     std::string model;
-    Sensor* plant = nullptr;
-    uint64_t readings_seen = 0;
+    std::vector<Sensor*> plant;
+    std::vector<uint64_t> readings_seen;  // each plant sensor's updates() when last handed over
     gazebo::sensors::SensorPtr sensor;
     gazebo::SensorPlugin::TPtr plugin;
     sdf::ElementPtr document;  // the elements' ancestors, for GetParent()
   };
+  // Whether each of its plant sensors has measured since the last hand-over (counted as seen).
+  static bool takeNewReadings(Hosted& hosted);
+  // What the plant's sensors measure at the next step the rate allows: while the Gazebo sensor is
+  // active; a camera rendering every step renders its next frame once the last was handed over.
+  static void handActivityBack(Hosted& hosted);
   void remove(Hosted& hosted);
   PlantGazeboHost& host_;
   std::vector<Hosted> hosted_;

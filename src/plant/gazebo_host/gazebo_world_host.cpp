@@ -424,9 +424,10 @@ void PlantGazeboHost::endStep()
   sensors_->update();
 }
 
-bool PlantGazeboHost::loadSensorPlugin(const SensorDescription& d, Sensor& sensor, ModelPluginContext& model)
+bool PlantGazeboHost::loadSensorPlugin(const SensorDescription& d, const std::vector<Sensor*>& sensors,
+                                       ModelPluginContext& model)
 {
-  return sensors_->load(d, sensor, model);
+  return sensors_->load(d, sensors, model);
 }
 
 void PlantGazeboHost::reset(bool simulation)

@@ -31,7 +31,8 @@ public:
   ~PlantGazeboHost() override;
 
   bool loadWorldPlugin(const WorldPluginDescription& plugin) override;
-  bool loadSensorPlugin(const SensorDescription& d, Sensor& sensor, ModelPluginContext& model) override;
+  bool loadSensorPlugin(const SensorDescription& d, const std::vector<Sensor*>& sensors,
+                        ModelPluginContext& model) override;
   bool loadSystemPlugin(const std::string& filename, const std::vector<std::string>& arguments) override;
   void beginStep() override;
   void endStep() override;

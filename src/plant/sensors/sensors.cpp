@@ -88,6 +88,8 @@ void Camera::collect(bool wait)
   ++updates_;
 }
 
+bool Camera::frameInFlight() const { return rendering_->pending; }
+
 Camera::~Camera()
 {
   if (rendering_->pending && rendering_->worker)

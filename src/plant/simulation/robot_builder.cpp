@@ -967,22 +967,30 @@ void createModelPlugins(Robot::Internals& r)
   }
 }
 // 11. The sensor plugins of the user's own (a <sensor>'s <plugin> file found on the plugin paths),
-// over the sensors made in step 9, hosted by the world's Gazebo host as Gazebo's sensors.
+// over the sensors made in step 9, hosted by the world's Gazebo host as Gazebo's sensors: one for
+// each <sensor> (a multicamera's cameras, consecutive descriptions of one element, together).
 void loadGazeboSensorPlugins(Robot::Internals& r)
 {
-  for (const SensorDescription& d : r.description.sensors)
+  const std::vector<SensorDescription>& described = r.description.sensors;
+  for (size_t first = 0, end = 0; first < described.size(); first = end)
   {
+    end = first + 1;
+    const SensorDescription& d = described[first];
+    if (!d.multicamera_camera.empty() && d.element)
+      while (end < described.size() && described[end].element == d.element)
+        ++end;
     if (d.library.empty())
       continue;
-    Sensor* sensor = nullptr;
-    for (const std::unique_ptr<Sensor>& s : r.sensors)
-      if (s->name() == d.name)
-        sensor = s.get();
-    if (!sensor)
+    std::vector<Sensor*> simulated;
+    for (size_t i = first; i < end; ++i)
+      for (const std::unique_ptr<Sensor>& s : r.sensors)
+        if (s->name() == described[i].name)
+          simulated.push_back(s.get());
+    if (simulated.size() != end - first)
       r.world->log.error(r.name + ": sensor '" + d.name + "' plugin '" + d.plugin_name + "' (" + d.plugin_filename +
                          "): its sensor is not simulated; the plugin is not loaded");
     else
-      r.model_plugin_context.gazeboHost().loadSensorPlugin(d, *sensor, r.model_plugin_context);
+      r.model_plugin_context.gazeboHost().loadSensorPlugin(d, simulated, r.model_plugin_context);
   }
 }
 }  // namespace

@@ -36,6 +36,19 @@ public:
   static ConnectionPtr ConnectWorldReset(T subscriber) { return worldReset.Connect(subscriber); }
   template <typename T>
   static ConnectionPtr ConnectTimeReset(T subscriber) { return timeReset.Connect(subscriber); }
+  // The rendering sensors' cycle, as Gazebo's sensor manager runs it while the world has one (a
+  // camera, depth, multicamera or GPU ray sensor): preRender, preRenderEnded, render, postRender,
+  // then the sensors' updates. The plant signals it after each step, before it decides which
+  // sensors measure in the next (a plugin that activates its camera in PreRender gets the next
+  // frame: gazebo_ros_triggered_camera's trigger).
+  template <typename T>
+  static ConnectionPtr ConnectPreRender(T subscriber) { return preRender.Connect(subscriber); }
+  template <typename T>
+  static ConnectionPtr ConnectPreRenderEnded(T subscriber) { return preRenderEnded.Connect(subscriber); }
+  template <typename T>
+  static ConnectionPtr ConnectRender(T subscriber) { return render.Connect(subscriber); }
+  template <typename T>
+  static ConnectionPtr ConnectPostRender(T subscriber) { return postRender.Connect(subscriber); }
 
   static EventT<void(bool)> pause;
   static EventT<void()> step;
@@ -47,6 +60,10 @@ public:
   static EventT<void(const common::UpdateInfo&)> beforePhysicsUpdate;
   static EventT<void()> worldReset;
   static EventT<void()> timeReset;
+  static EventT<void()> preRender;
+  static EventT<void()> preRenderEnded;
+  static EventT<void()> render;
+  static EventT<void()> postRender;
 };
 }  // namespace event
 }  // namespace gazebo

@@ -1,4 +1,4 @@
-// Gazebo's common library, as a plugin includes it whole: time, the console, events, exceptions, PID,
+// Gazebo's common library, as a plugin includes it whole: time, the console, events, exceptions, images, PID,
 // plugins, animations.
 #pragma once
 
@@ -8,6 +8,7 @@
 #include "gazebo/common/Event.hh"
 #include "gazebo/common/Events.hh"
 #include "gazebo/common/Exception.hh"
+#include "gazebo/common/Image.hh"
 #include "gazebo/common/KeyFrame.hh"
 #include "gazebo/common/PID.hh"
 #include "gazebo/common/Plugin.hh"

@@ -51,6 +51,15 @@ public:
   virtual void setDistortionCrop(bool crop) = 0;
 };
 
+// A <sensor type="multicamera">: the simulator's camera of each of its <camera> elements, in their
+// order; its activity and rate are all of theirs, its pose the <sensor>'s.
+class MultiCameraBridge : public SensorBridge
+{
+public:
+  virtual unsigned int cameraCount() const = 0;
+  virtual CameraBridge& camera(unsigned int index) = 0;
+};
+
 class DepthCameraBridge : public CameraBridge
 {
 public:

@@ -16,6 +16,7 @@ class ContactSensor;
 class DepthCameraSensor;
 class GpuRaySensor;
 class ImuSensor;
+class MultiCameraSensor;
 typedef std::shared_ptr<Sensor> SensorPtr;
 typedef std::shared_ptr<RaySensor> RaySensorPtr;
 typedef std::shared_ptr<CameraSensor> CameraSensorPtr;
@@ -23,6 +24,7 @@ typedef std::shared_ptr<ContactSensor> ContactSensorPtr;
 typedef std::shared_ptr<DepthCameraSensor> DepthCameraSensorPtr;
 typedef std::shared_ptr<GpuRaySensor> GpuRaySensorPtr;
 typedef std::shared_ptr<ImuSensor> ImuSensorPtr;
+typedef std::shared_ptr<MultiCameraSensor> MultiCameraSensorPtr;
 typedef std::vector<SensorPtr> Sensor_V;
 
 // What Gazebo 11 casts sensor handles with (std::shared_ptr's).

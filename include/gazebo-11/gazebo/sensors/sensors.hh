@@ -6,6 +6,7 @@
 #include "gazebo/sensors/DepthCameraSensor.hh"
 #include "gazebo/sensors/GpuRaySensor.hh"
 #include "gazebo/sensors/ImuSensor.hh"
+#include "gazebo/sensors/MultiCameraSensor.hh"
 #include "gazebo/sensors/RaySensor.hh"
 #include "gazebo/sensors/Sensor.hh"
 #include "gazebo/sensors/SensorManager.hh"
