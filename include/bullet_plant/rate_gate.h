@@ -42,6 +42,9 @@ public:
   // whether calls from now until `time_ns` will.
   bool wouldOpen(int64_t time_ns) const
   {
+    // the longest period (periodNsOfRate's for a rate of ~0) never opens, its first time included
+    if (period_ns_ == std::numeric_limits<int64_t>::max())
+      return false;
     return last_ns_ < 0 || time_ns - last_ns_ >= period_ns_ || time_ns < last_ns_;
   }
 

@@ -2,6 +2,7 @@
 // CatchUpRateGate: the `last += period` form of gazebo_plugins' drives and ros_controllers.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 #include "bullet_plant/rate_gate.h"
@@ -34,6 +35,19 @@ TEST(RateGate, ANonDividingPeriodOpensAtTheFirstStepPastIt)
     if (gate.due(t))
       opened.push_back(t);
   EXPECT_EQ(opened, (std::vector<int64_t>{0, 34000000, 68000000}));
+}
+
+// gazebo_ros_triggered_camera sets its sensor's rate to DBL_MIN for "never" (Gazebo's period then
+// wraps to some 68 years): the longest period, which never opens, not even first.
+TEST(RateGate, ARateOfAlmostNothingNeverOpens)
+{
+  EXPECT_EQ(periodNsOfRate(2.2250738585072014e-308), std::numeric_limits<int64_t>::max());
+  EXPECT_EQ(periodNsOfRate(1e-10), std::numeric_limits<int64_t>::max());
+  RateGate gate(periodNsOfRate(2.2250738585072014e-308));
+  EXPECT_FALSE(gate.due(0));
+  EXPECT_FALSE(gate.due(std::numeric_limits<int64_t>::max() / 2));
+  gate.setPeriodNs(0);
+  EXPECT_TRUE(gate.due(1));
 }
 
 TEST(RateGate, WithoutAPeriodOpensEveryCall)

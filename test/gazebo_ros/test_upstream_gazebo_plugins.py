@@ -1,10 +1,10 @@
 """gazebo_ros_pkgs' own gazebo_plugins package (noetic-devel), unchanged, built against the plant and
 run in the project's own tests of those plugins. Where GRP_REPO is set (the git directory of a
 snapshot of ros-simulation/gazebo_ros_pkgs; upstream's files stay out of this repository), the
-package is built with catkin_make on the install space (make -k: its multi and triggered camera plugins
-need Gazebo's sensors the plant does not offer yet); every model and world plugin library of it
-must build, and its sensor plugins over ray, IMU, contact and camera sensors (laser, GPU laser, range,
-block laser, IMU sensor, bumper, camera, depth camera, Kinect); then the project's ROS tests of those plugins run again with upstream's
+package is built with catkin_make on the install space (make -k: its video and projector plugins need
+OGRE's own objects); every model and world plugin library of it must build, and its sensor plugins
+over ray, IMU, contact, camera and multicamera sensors (laser, GPU laser, range, block laser, IMU
+sensor, bumper, camera, triggered camera, depth camera, Kinect, multicamera, triggered multicamera); then the project's ROS tests of those plugins run again with upstream's
 libraries first on GAZEBO_PLUGIN_PATH and the library path, so that the plant loads upstream's code
 in place of its own (the plant's log names each file it loaded: the tests' logs must name upstream's)."""
 import glob
@@ -33,11 +33,10 @@ MODEL_AND_WORLD_PLUGINS = {
     'gazebo_ros_harness': 'model_plugins/test_harness_ros.py',
     'gazebo_ros_wheel_slip': 'model_plugins/test_wheel_slip_ros.py',
 }
-# Upstream's sensor plugin libraries that build on Gazebo's sensors as the plant offers them so far
-# (RaySensor and RayPlugin, GpuRaySensor and GpuRayPlugin, ImuSensor, ContactSensor and ContactPlugin,
-# CameraSensor and CameraPlugin, DepthCameraSensor and DepthCameraPlugin), each with the project's test of
-# it through ROS; the multi and triggered cameras need sensors the plant does not offer to plugins yet
-# (make -k leaves them).
+# Upstream's sensor plugin libraries that build on Gazebo's sensors as the plant offers them (RaySensor
+# and RayPlugin, GpuRaySensor and GpuRayPlugin, ImuSensor, ContactSensor and ContactPlugin, CameraSensor
+# and CameraPlugin, DepthCameraSensor and DepthCameraPlugin, MultiCameraSensor and upstream's own
+# MultiCameraPlugin, the render events), each with the project's test of it through ROS.
 KINECT_AND_DEPTH_CAMERA = 'sensor_plugins/test_depth_cameras_ros.py::test_kinect_and_depth_camera_before_a_wall'
 SENSOR_PLUGINS = {
     'gazebo_ros_laser': 'sensor_plugins/test_sdf_model_sensors_ros.py',
@@ -49,12 +48,14 @@ SENSOR_PLUGINS = {
     'gazebo_ros_depth_camera': KINECT_AND_DEPTH_CAMERA,
     'gazebo_ros_range': 'sensor_plugins/test_sdf_model_sensors_ros.py',
     'gazebo_ros_block_laser': 'sensor_plugins/test_ranger_plugins_ros.py',
+    'gazebo_ros_multicamera': 'sensor_plugins/test_multicamera_ros.py',
+    'gazebo_ros_triggered_camera': 'sensor_plugins/test_triggered_camera_ros.py',
 }
 TESTED = dict(MODEL_AND_WORLD_PLUGINS, **SENSOR_PLUGINS)
 # Built, with no test of the project's own through ROS yet.
 ALSO_BUILT = ['gazebo_ros_tricycle_drive', 'gazebo_ros_p3d', 'gazebo_ros_joint_state_publisher',
               'gazebo_ros_vacuum_gripper', 'gazebo_ros_template', 'gazebo_ros_utils', 'gazebo_ros_camera_utils',
-              'gazebo_ros_prosilica']
+              'gazebo_ros_prosilica', 'MultiCameraPlugin', 'gazebo_ros_triggered_multicamera']
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow,
               pytest.mark.skipif(not GRP_REPO, reason='GRP_REPO (a gazebo_ros_pkgs snapshot) is not set')]
