@@ -255,13 +255,16 @@ struct Serializer<bullet_plant::PointCloudOf>
     uint8_t* out = s.advance(uint32_t(bullet_plant::kPointStep * pixels));
     static const float kNaN[3] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::quiet_NaN(),
                                   std::numeric_limits<float>::quiet_NaN()};
+    bool dense = true;  // upstream's: until a point is NaN (beyond the cutoffs, nothing seen)
     for (size_t p = 0; p < pixels; ++p, out += bullet_plant::kPointStep)
     {
-      std::memcpy(out, m.cutoff.within(f.depth[p]) ? &f.points[3 * p] : kNaN, 12);
+      const bool seen = m.cutoff.within(f.depth[p]);
+      dense = dense && seen;
+      std::memcpy(out, seen ? &f.points[3 * p] : kNaN, 12);
       const uint32_t rgb = bullet_plant::frame_messages::cloudColour(m.encoding, f.rgb.data(), p, f.width);
       std::memcpy(out + 12, &rgb, 4);
     }
-    s.next(uint8_t(0));  // is_dense: NaN points
+    s.next(uint8_t(dense));  // is_dense
   }
   static uint32_t serializedLength(const bullet_plant::PointCloudOf& m)
   {

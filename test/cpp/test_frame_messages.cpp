@@ -71,7 +71,7 @@ sensor_msgs::PointCloud2 builtCloud(const CameraFrame& f, DepthCutoff cutoff)
   cloud.header = frameHeader(f, kFrameId);
   cloud.width = f.width;
   cloud.height = f.height;
-  cloud.is_dense = false;
+  cloud.is_dense = true;  // until a point is NaN, as upstream's fill theirs
   cloud.point_step = 16;
   cloud.row_step = 16 * f.width;
   cloud.fields = pointCloudFields();
@@ -79,6 +79,7 @@ sensor_msgs::PointCloud2 builtCloud(const CameraFrame& f, DepthCutoff cutoff)
   for (size_t p = 0; p < size_t(f.width) * f.height; ++p)
   {
     const float nan3[3] = {kNaN, kNaN, kNaN};
+    cloud.is_dense = cloud.is_dense && cutoff.within(f.depth[p]);
     std::memcpy(&cloud.data[16 * p], cutoff.within(f.depth[p]) ? &f.points[3 * p] : nan3, 12);
     const uint32_t rgb = (uint32_t(f.rgb[3 * p]) << 16) | (uint32_t(f.rgb[3 * p + 1]) << 8) | f.rgb[3 * p + 2];
     std::memcpy(&cloud.data[16 * p + 12], &rgb, 4);
@@ -166,7 +167,7 @@ TEST(FrameMessages, PointCloudHasCutoffNaNsAndPackedRgb)
   EXPECT_EQ(cloud.height, 3u);
   EXPECT_EQ(cloud.point_step, 16u);
   EXPECT_EQ(cloud.row_step, 64u);
-  EXPECT_FALSE(cloud.is_dense);
+  EXPECT_FALSE(cloud.is_dense) << "NaN points";
   ASSERT_EQ(cloud.fields.size(), 4u);
   EXPECT_EQ(cloud.fields[3].name, "rgb");
   EXPECT_EQ(cloud.fields[3].offset, 12u);
@@ -178,6 +179,16 @@ TEST(FrameMessages, PointCloudHasCutoffNaNsAndPackedRgb)
   uint32_t rgb;
   std::memcpy(&rgb, &cloud.data[6 * 16 + 12], 4);
   EXPECT_EQ(rgb, (125u << 16) | (195u << 8) | 9u);  // pixel 6's colour: 125, 195, 265 wrapped to 9
+}
+
+TEST(FrameMessages, APointCloudWithoutNaNPointsIsDense)
+{
+  CameraFrame f = testFrame();
+  for (float& depth : f.depth)
+    depth = 1.0f;  // every pixel within the cutoff
+  const std::vector<uint8_t> serialized = bytes(PointCloudOf{f, frameHeader(f, kFrameId), kCutoff});
+  EXPECT_EQ(serialized, bytes(builtCloud(f, kCutoff)));
+  EXPECT_TRUE(deserialized<sensor_msgs::PointCloud2>(serialized).is_dense);
 }
 
 }  // namespace

@@ -123,11 +123,22 @@ TEST(GazeboCameraSensor, PublishesImagesWhileSubscribedAndKeepsItsLens)
 }
 
 // A <sensor type="depth"> with Gazebo's own libDepthCameraPlugin.so facing a wall 2 m ahead: a
-// DepthCameraSensor whose DepthCamera hands each frame's depths and RGB points over after its image.
-// Its <camera> has no <clip>: SDF's 0.1 to 100 m (a near plane of 0 left the depths empty).
-TEST(GazeboDepthCameraSensor, HandsDepthsAndPointsOverAfterTheImage)
+// DepthCameraSensor whose DepthCamera hands each frame over after its image as its
+// <depth_camera><output> asks, as Gazebo's reads one render target back: depths by default, RGB
+// points (and no depths) for "points". Its <camera> has no <clip>: SDF's 0.1 to 100 m (a near plane
+// of 0 left the depths empty).
+namespace
 {
-  std::string text = world("R8G8B8", "");
+struct DepthFrames
+{
+  std::vector<std::string> order;
+  std::vector<float> depths, points;
+  const float* depth_data = nullptr;
+};
+
+DepthFrames depthCameraFrames(const std::string& depth_camera)
+{
+  std::string text = world("R8G8B8", depth_camera);
   text.replace(text.find("type='camera'"), 13, "type='depth'");
   text.replace(text.find("libCameraPlugin.so"), 18, "libDepthCameraPlugin.so");
   text.replace(text.find("<model name='probe'>"), 0,
@@ -137,39 +148,62 @@ TEST(GazeboDepthCameraSensor, HandsDepthsAndPointsOverAfterTheImage)
   World plant(parseWorldDescription(text));
   auto sensor = std::dynamic_pointer_cast<gazebo::sensors::DepthCameraSensor>(
       gazebo::sensors::SensorManager::Instance()->GetSensor("eye"));
-  ASSERT_TRUE(sensor);
+  EXPECT_TRUE(sensor);
+  if (!sensor)
+    return {};
   EXPECT_TRUE(sensor->IsActive()) << "DepthCameraPlugin::Load sets its sensor active";
   gazebo::rendering::DepthCameraPtr camera = sensor->DepthCamera();
-  ASSERT_TRUE(camera);
+  EXPECT_TRUE(camera);
   std::mutex mutex;
-  std::vector<std::string> order;
-  std::vector<float> depths, points;
+  DepthFrames seen;
   gazebo::event::ConnectionPtr on_image = camera->ConnectNewImageFrame(
       [&](const unsigned char*, unsigned int, unsigned int, unsigned int, const std::string&) {
         std::lock_guard<std::mutex> lock(mutex);
-        order.push_back("image");
+        seen.order.push_back("image");
       });
   gazebo::event::ConnectionPtr on_depth = camera->ConnectNewDepthFrame(
       [&](const float* image, unsigned int w, unsigned int h, unsigned int d, const std::string& format) {
         std::lock_guard<std::mutex> lock(mutex);
-        order.push_back("depth " + format);
-        depths.assign(image, image + w * h * d);
+        seen.order.push_back("depth " + format);
+        seen.depths.assign(image, image + w * h * d);
       });
   gazebo::event::ConnectionPtr on_points = camera->ConnectNewRGBPointCloud(
       [&](const float* pcd, unsigned int w, unsigned int h, unsigned int, const std::string& format) {
         std::lock_guard<std::mutex> lock(mutex);
-        order.push_back("points " + format);
-        points.assign(pcd, pcd + 4 * w * h);
+        seen.order.push_back("points " + format);
+        seen.points.assign(pcd, pcd + 4 * w * h);
       });
   plant.step(500);
   std::lock_guard<std::mutex> lock(mutex);
-  ASSERT_GE(order.size(), 3u);
-  EXPECT_EQ(std::vector<std::string>(order.begin(), order.begin() + 3),
-            (std::vector<std::string>{"image", "depth FLOAT32", "points RGBPOINTS"}));
-  ASSERT_EQ(depths.size(), 16u * 12);
-  ASSERT_EQ(points.size(), 4u * 16 * 12);
+  if (sensor->DepthData())
+    seen.depth_data = sensor->DepthData() + 6 * 16 + 8;
+  if (seen.depth_data)
+    seen.depths.push_back(*seen.depth_data);  // the sensor's own copy of the centre, last
+  return seen;
+}
+}  // namespace
+
+TEST(GazeboDepthCameraSensor, HandsDepthsOverAfterTheImageByDefault)
+{
+  const DepthFrames seen = depthCameraFrames("");
+  ASSERT_GE(seen.order.size(), 2u);
+  EXPECT_EQ(std::vector<std::string>(seen.order.begin(), seen.order.begin() + 2),
+            (std::vector<std::string>{"image", "depth FLOAT32"}));
+  EXPECT_TRUE(seen.points.empty()) << "Gazebo's output \"depths\": no points";
+  ASSERT_EQ(seen.depths.size(), 16u * 12 + 1);
   const size_t centre = 6 * 16 + 8;
-  EXPECT_NEAR(depths[centre], 2.0, 0.02) << "the wall's face, along the optical axis";
-  EXPECT_NEAR(points[4 * centre + 2], depths[centre], 1e-5) << "z forward in the optical frame";
-  EXPECT_EQ(sensor->DepthData()[centre], depths[centre]);
+  EXPECT_NEAR(seen.depths[centre], 2.0, 0.02) << "the wall's face, along the optical axis";
+  EXPECT_EQ(seen.depths.back(), seen.depths[centre]) << "DepthData: the latest frame's";
+}
+
+TEST(GazeboDepthCameraSensor, HandsRGBPointsOverInsteadWhereItsOutputIsPoints)
+{
+  const DepthFrames seen = depthCameraFrames("<depth_camera><output>points</output></depth_camera>");
+  ASSERT_GE(seen.order.size(), 2u);
+  EXPECT_EQ(std::vector<std::string>(seen.order.begin(), seen.order.begin() + 2),
+            (std::vector<std::string>{"image", "points RGBPOINTS"}));
+  EXPECT_TRUE(seen.depths.empty()) << "no depths, nor DepthData, as Gazebo's";
+  ASSERT_EQ(seen.points.size(), 4u * 16 * 12);
+  const size_t centre = 6 * 16 + 8;
+  EXPECT_NEAR(seen.points[4 * centre + 2], 2.0, 0.02) << "z forward in the optical frame: the wall's face";
 }

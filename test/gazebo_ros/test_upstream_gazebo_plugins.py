@@ -86,12 +86,9 @@ def test_every_model_and_world_plugin_library_and_the_offered_sensor_ones_of_ups
 
 # Where the plant's own plugin differs from upstream's, found by this module: the test of the plant's
 # own fails with upstream's, as it should until the plant's own is mended.
-KNOWN_DIFFERENCES = {
-    KINECT_AND_DEPTH_CAMERA: "upstream's gazebo_ros_depth_camera copies Gazebo's RGB points column by column (its "
-                             "loop runs over columns first) into a cloud it marks dense whatever it holds; the "
-                             "plant's own publishes them row by row, NaN ones making it not dense (found this "
-                             "stop; the plant's own to follow upstream's)",
-}
+# (None today: the depth cameras' one, upstream's cloud column by column, was the API's DepthCamera
+# firing both its depth and its point events where Gazebo's fires the one its <output> asks for.)
+KNOWN_DIFFERENCES = {}
 
 
 @pytest.mark.parametrize('test_file', [

@@ -34,8 +34,10 @@ def test_kinect_and_depth_camera_before_a_wall(ros, tmp_path):
     assert kinect['info'] == [24, 32]
     for camera in (kinect, depth_camera):
         assert camera['image'] == [24, 32, '32FC1']
-        assert camera['shape'][2] is False, 'NaN points: not dense'
         assert camera['ir'][:3] == [24, 32, 'rgb8']
+    # dense until a point is NaN, as upstream's fill their clouds: the Kinect's beyond its 2 m are
+    assert kinect['shape'][2] is False, 'NaN points beyond the cutoff: not dense'
+    assert depth_camera['shape'][2] is True, 'every pixel sees the wall or the ground: dense'
     assert kinect['ir'][3] == 32
     # The middle rows look at the wall, square on: depth (z in the optical frame) 2.95 m.
     centre = 12 * 32 + 16

@@ -7,6 +7,15 @@ namespace rendering
 {
 DepthCamera::~DepthCamera() = default;
 
+void DepthCamera::Load(sdf::ElementPtr _sdf)
+{
+  Camera::Load(_sdf);
+  const std::string output = _sdf && _sdf->HasElement("depth_camera")
+                                 ? _sdf->GetElement("depth_camera")->Get<std::string>("output")
+                                 : std::string("depths");
+  output_points_ = output.find("points") != std::string::npos;
+}
+
 const float* DepthCamera::DepthData() const { return depths_.empty() ? nullptr : depths_.data(); }
 
 event::ConnectionPtr DepthCamera::ConnectNewDepthFrame(FloatFrame _subscriber)
@@ -29,12 +38,15 @@ event::ConnectionPtr DepthCamera::ConnectNewNormalsPointCloud(FloatFrame _subscr
   return never_.Connect(_subscriber);
 }
 
-void DepthCamera::TakeDepthFrame(const float* _depths, const float* _rgbPoints)
+void DepthCamera::TakeDepthFrame(const float* _depths)
 {
-  const size_t pixels = size_t(ImageWidth()) * ImageHeight();
-  depths_.assign(_depths, _depths + pixels);
-  points_.assign(_rgbPoints, _rgbPoints + 4 * pixels);
+  depths_.assign(_depths, _depths + size_t(ImageWidth()) * ImageHeight());
   new_depth_frame_(depths_.data(), ImageWidth(), ImageHeight(), 1, "FLOAT32");
+}
+
+void DepthCamera::TakeRGBPointCloud(const float* _rgbPoints)
+{
+  points_.assign(_rgbPoints, _rgbPoints + 4 * size_t(ImageWidth()) * ImageHeight());
   new_rgb_point_cloud_(points_.data(), ImageWidth(), ImageHeight(), 1, "RGBPOINTS");
 }
 }  // namespace rendering

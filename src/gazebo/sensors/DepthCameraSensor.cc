@@ -36,8 +36,16 @@ bool DepthCameraSensor::UpdateImpl(bool force)
     return false;
   auto* frames = dynamic_cast<DepthCameraBridge*>(bridge.get());
   const rendering::DepthCameraPtr depth = DepthCamera();
-  if (frames && depth && frames->depths() && frames->rgbPoints())
-    depth->TakeDepthFrame(frames->depths(), frames->rgbPoints());
+  if (!frames || !depth)
+    return true;
+  // Gazebo's camera reads one of the two back from its render targets, as its <output> asks
+  if (depth->OutputsPoints())
+  {
+    if (const float* points = frames->rgbPoints())
+      depth->TakeRGBPointCloud(points);
+  }
+  else if (const float* depths = frames->depths())
+    depth->TakeDepthFrame(depths);
   return true;
 }
 }  // namespace sensors
