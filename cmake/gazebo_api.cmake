@@ -35,6 +35,7 @@ gazebo_api_library(gazebo_common VERSIONED SOURCES
   src/gazebo/common/Image.cc
   src/gazebo/common/KeyFrame.cc
   src/gazebo/common/PID.cc
+  src/gazebo/common/SphericalCoordinates.cc
   src/gazebo/common/SystemPaths.cc
   src/gazebo/common/Time.cc)
 target_include_directories(gazebo_common PUBLIC
@@ -63,12 +64,16 @@ gazebo_api_library(gazebo_rendering VERSIONED SOURCES
 target_link_libraries(gazebo_rendering PUBLIC gazebo_common)
 # Gazebo's sensors library: the Sensor base class and the sensor types, over the simulator's sensors.
 gazebo_api_library(gazebo_sensors VERSIONED SOURCES
+  src/gazebo/sensors/AltimeterSensor.cc
   src/gazebo/sensors/CameraSensor.cc
   src/gazebo/sensors/ContactSensor.cc
   src/gazebo/sensors/DepthCameraSensor.cc
+  src/gazebo/sensors/GpsSensor.cc
   src/gazebo/sensors/GpuRaySensor.cc
   src/gazebo/sensors/ImuSensor.cc
+  src/gazebo/sensors/MagnetometerSensor.cc
   src/gazebo/sensors/MultiCameraSensor.cc
+  src/gazebo/sensors/Noise.cc
   src/gazebo/sensors/LaserScanSensor.cc
   src/gazebo/sensors/RaySensor.cc
   src/gazebo/sensors/Sensor.cc
@@ -81,7 +86,7 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_rendering gazebo_physics gaze
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
   time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU
   wrench:Wrench joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped
-  images_stamped:ImagesStamped)
+  images_stamped:ImagesStamped altimeter:Altimeter magnetometer:Magnetometer gps:GPS)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)

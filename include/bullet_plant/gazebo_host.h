@@ -22,6 +22,14 @@ class ModelPluginContext;
 class Sensor;
 
 // What Gazebo's physics::World, and the joints plugins make at run time, reach of the world.
+// The sensor types Gazebo's API measures itself from the sensor's link, as Gazebo's own classes do
+// (AltimeterSensor, MagnetometerSensor, GpsSensor read the link's pose and velocity): the plant
+// makes no sensor of its own under them, and measures them only for a sensor plugin of the user's.
+inline bool measuredFromItsLink(const std::string& sensor_type)
+{
+  return sensor_type == "altimeter" || sensor_type == "magnetometer" || sensor_type == "gps";
+}
+
 class WorldPluginContext
 {
 public:
@@ -36,6 +44,9 @@ public:
   virtual urdf::Vector3 gravity() const = 0;
   // From the next step on (m/s^2, world frame).
   virtual void setGravity(const urdf::Vector3& gravity) = 0;
+  // The world file's <magnetic_field> and <spherical_coordinates> (world_description.h).
+  virtual urdf::Vector3 magneticField() const = 0;
+  virtual const WorldDescription::SphericalCoordinates& sphericalCoordinates() const = 0;
   // The models that move (the robots), in the order they came; the plugin context of one by name,
   // or null for a name that is none of them.
   virtual std::vector<std::string> modelNames() const = 0;

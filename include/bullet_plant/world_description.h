@@ -109,6 +109,12 @@ struct WorldDescription
   urdf::Vector3 gravity{0, 0, -9.8};
   // <magnetic_field> (tesla, world frame): SDF's default, Gazebo's for its magnetometer sensors.
   urdf::Vector3 magnetic_field{5.5645e-6, 22.8758e-6, -42.3884e-6};
+  // <spherical_coordinates>: where the world's origin is on the earth (WGS84) and the heading of its
+  // x axis, for Gazebo's GPS sensors (SDF's defaults: all 0).
+  struct SphericalCoordinates
+  {
+    double latitude_deg = 0.0, longitude_deg = 0.0, elevation = 0.0, heading_deg = 0.0;
+  } spherical_coordinates;
   // <scene>: what cameras see where nothing is hit, and the ambient light (SDF's default 0.4 grey).
   Rgba background{0.70f, 0.80f, 0.95f, 1.0f};
   Rgba ambient{0.4f, 0.4f, 0.4f, 1.0f};

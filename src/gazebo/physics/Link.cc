@@ -93,6 +93,17 @@ ignition::math::Pose3d Link::WorldPose() const { return bridge_->linkPose(name_)
 
 ignition::math::Vector3d Link::WorldLinearVel() const { return bridge_->linkLinearVel(name_); }
 
+ignition::math::Vector3d Link::WorldLinearVel(const ignition::math::Vector3d& _offset) const
+{
+  return WorldLinearVel(_offset, WorldPose().Rot());
+}
+
+ignition::math::Vector3d Link::WorldLinearVel(const ignition::math::Vector3d& _offset,
+                                              const ignition::math::Quaterniond& _q) const
+{
+  return WorldLinearVel() + WorldAngularVel().Cross(_q.RotateVector(_offset));
+}
+
 ignition::math::Vector3d Link::WorldAngularVel() const { return bridge_->linkAngularVel(name_); }
 
 ignition::math::Pose3d Link::RelativePose() const

@@ -13,6 +13,7 @@
 
 #include "gazebo/common/Console.hh"
 #include "gazebo/common/Exception.hh"
+#include "gazebo/common/SphericalCoordinates.hh"
 
 #include "gazebo/physics/Collision.hh"
 #include "gazebo/physics/Link.hh"
@@ -99,6 +100,20 @@ common::Time World::RealTime() const
 uint32_t World::Iterations() const { return static_cast<uint32_t>(bridge_->iterations()); }
 
 ignition::math::Vector3d World::Gravity() const { return bridge_->gravity(); }
+
+ignition::math::Vector3d World::MagneticField() const { return bridge_->magneticField(); }
+
+common::SphericalCoordinatesPtr World::SphericalCoords() const
+{
+  if (!spherical_)
+  {
+    const ignition::math::Vector3d origin = bridge_->sphericalOrigin();
+    spherical_.reset(new common::SphericalCoordinates(
+        common::SphericalCoordinates::EARTH_WGS84, IGN_DTOR(origin.X()), IGN_DTOR(origin.Y()), origin.Z(),
+        IGN_DTOR(bridge_->headingDeg())));
+  }
+  return spherical_;
+}
 
 void World::SetGravity(const ignition::math::Vector3d& gravity) { physics_->SetGravity(gravity); }
 

@@ -7,6 +7,7 @@
 #include "gazebo/common/Exception.hh"
 #include "gazebo/physics/PhysicsIface.hh"
 #include "gazebo/physics/World.hh"
+#include "gazebo/sensors/Noise.hh"
 #include "gazebo/transport/Node.hh"
 
 namespace gazebo
@@ -69,6 +70,10 @@ void Sensor::Init() {}
 
 void Sensor::Fini()
 {
+  for (auto& noise : noises)
+    if (noise.second)
+      noise.second->Fini();
+  noises.clear();
   connections.clear();
   active = false;
   world.reset();
@@ -166,6 +171,15 @@ void Sensor::SetPose(const ignition::math::Pose3d& value) { pose = value; }
 void Sensor::SetActive(bool value) { active = value; }
 
 bool Sensor::IsActive() const { return active; }
+
+NoisePtr Sensor::Noise(const SensorNoiseType _type) const
+{
+  const auto found = noises.find(_type);
+  if (found != noises.end())
+    return found->second;
+  gzerr << "Get noise index not valid\n";
+  return NoisePtr();
+}
 
 event::ConnectionPtr Sensor::ConnectUpdated(std::function<void()> subscriber)
 {

@@ -488,6 +488,18 @@ WorldDescription parseWorld(const std::string& sdf_xml, const Source& source)
                                "(tesla, world frame)");
     world.magnetic_field = urdf::Vector3(b[0], b[1], b[2]);
   }
+  if (const sdf::ElementPtr spherical = sdf::child(w, "spherical_coordinates"))
+  {
+    WorldDescription::SphericalCoordinates& s = world.spherical_coordinates;
+    s.latitude_deg = sdf::childDouble(spherical, "latitude_deg", 0.0);
+    s.longitude_deg = sdf::childDouble(spherical, "longitude_deg", 0.0);
+    s.elevation = sdf::childDouble(spherical, "elevation", 0.0);
+    s.heading_deg = sdf::childDouble(spherical, "heading_deg", 0.0);
+    const std::string surface = sdf::childText(spherical, "surface_model", "EARTH_WGS84");
+    if (surface != "EARTH_WGS84")
+      world.warnings.push_back("<spherical_coordinates><surface_model> " + surface +
+                               ": the plant knows EARTH_WGS84 only, as Gazebo 11; taken as that");
+  }
   // The lights in file order, the world's own and its includes' (model://sun) as they come.
   auto addLight = [&](const sdf::ElementPtr& light) {
     const std::string type = sdf::attribute(light, "type", "point");

@@ -5,11 +5,14 @@
 
 #include <gazebo/physics/World.hh>
 #include <gazebo/msgs/msgs.hh>
+#include <gazebo/sensors/AltimeterSensor.hh>
 #include <gazebo/sensors/CameraSensor.hh>
 #include <gazebo/sensors/ContactSensor.hh>
 #include <gazebo/sensors/DepthCameraSensor.hh>
+#include <gazebo/sensors/GpsSensor.hh>
 #include <gazebo/sensors/GpuRaySensor.hh>
 #include <gazebo/sensors/ImuSensor.hh>
+#include <gazebo/sensors/MagnetometerSensor.hh>
 #include <gazebo/sensors/MultiCameraSensor.hh>
 #include <gazebo/sensors/RaySensor.hh>
 #include <gazebo/sensors/SensorManager.hh>
@@ -195,6 +198,29 @@ public:
   ignition::math::Vector3d linearAcceleration() const override { return toIgnition(sensor_.latest().linear_acceleration); }
 };
 
+// Gazebo's sensor of a type it measures itself from its link (measuredFromItsLink): no bridge, its
+// link found in the world by its parent's name, as Gazebo's.
+gazebo::sensors::SensorPtr gazeboLinkSensor(const std::string& type)
+{
+  if (type == "altimeter")
+    return std::make_shared<gazebo::sensors::AltimeterSensor>();
+  if (type == "magnetometer")
+    return std::make_shared<gazebo::sensors::MagnetometerSensor>();
+  if (type == "gps")
+    return std::make_shared<gazebo::sensors::GpsSensor>();
+  return nullptr;
+}
+
+// A multicamera's first <camera>'s own pose in its <sensor> (`d` that camera's description, whose
+// pose is the sensor's composed with it); identity for any other sensor.
+ignition::math::Pose3d firstCameraInSensor(const SensorDescription& d)
+{
+  if (d.multicamera_camera.empty() || !d.element || !d.element->HasElement("camera"))
+    return ignition::math::Pose3d::Zero;
+  const sdf::ElementPtr first = d.element->GetElement("camera");
+  return first->HasElement("pose") ? first->Get<ignition::math::Pose3d>("pose") : ignition::math::Pose3d::Zero;
+}
+
 // Gazebo's MultiCameraSensor over the plant's camera of each of a multicamera's <camera> elements
 // (`d` the first one's description); null where one is no camera.
 gazebo::sensors::SensorPtr gazeboMultiCamera(const SensorDescription& d, const std::vector<Sensor*>& plant,
@@ -211,11 +237,8 @@ gazebo::sensors::SensorPtr gazeboMultiCamera(const SensorDescription& d, const s
     }
     cameras.push_back(std::make_unique<CameraBridge>(*camera, model));
   }
-  const sdf::ElementPtr first = d.element && d.element->HasElement("camera") ? d.element->GetElement("camera") : nullptr;
-  const ignition::math::Pose3d first_in_sensor =
-      first && first->HasElement("pose") ? first->Get<ignition::math::Pose3d>("pose") : ignition::math::Pose3d::Zero;
   auto multicamera = std::make_shared<gazebo::sensors::MultiCameraSensor>();
-  multicamera->SetBridge(std::make_shared<MultiCameraBridge>(std::move(cameras), first_in_sensor));
+  multicamera->SetBridge(std::make_shared<MultiCameraBridge>(std::move(cameras), firstCameraInSensor(d)));
   return multicamera;
 }
 
@@ -287,8 +310,12 @@ bool GazeboSensorHost::load(const SensorDescription& d, const std::vector<Sensor
   Hosted hosted;
   hosted.model = model.modelName();
   hosted.plant = plant;
-  hosted.sensor = d.multicamera_camera.empty() ? gazeboSensor(*plant.front(), host_.modelBridge(model), why)
-                                               : gazeboMultiCamera(d, plant, host_.modelBridge(model), why);
+  if (measuredFromItsLink(d.type))
+    hosted.sensor = gazeboLinkSensor(d.type);
+  else if (!d.multicamera_camera.empty())
+    hosted.sensor = gazeboMultiCamera(d, plant, host_.modelBridge(model), why);
+  else
+    hosted.sensor = gazeboSensor(*plant.front(), host_.modelBridge(model), why);
   if (!hosted.sensor)
   {
     log.error(label + ": " + why + kNotLoaded);
@@ -308,6 +335,9 @@ bool GazeboSensorHost::load(const SensorDescription& d, const std::vector<Sensor
   const std::string world = host_.world()->Name();
   if (!pluginCall(log, [&] { return label + ": its Load threw"; }, kNotLoaded, [&] {
         hosted.sensor->Load(world, d.element);
+        // in its link as the plant has it (a link fixed to its parent is one body with it, the
+        // sensor's pose composed with the joint's, as sdformat's URDF reading does)
+        hosted.sensor->SetPose(firstCameraInSensor(d).Inverse() + toIgnition(d.pose));
         hosted.sensor->Init();
         gazebo::sensors::SensorManager::Instance()->AddSensor(hosted.sensor);
         hosted.plugin->Load(hosted.sensor, element);
@@ -332,10 +362,13 @@ void GazeboSensorHost::update()
   bool rendering = false;
   for (Hosted& hosted : hosted_)
   {
-    if (takeNewReadings(hosted))
+    // a sensor over the plant's takes its new readings; one Gazebo's measures from its link
+    // measures at its own rate, as Gazebo's sensor manager updates it
+    const bool measured_here = hosted.plant.empty();
+    if (measured_here || takeNewReadings(hosted))
       pluginCall(host_.context().log(),
                  [&] { return hosted.model + ": sensor '" + hosted.sensor->Name() + "': a callback on its update threw"; },
-                 "", [&] { hosted.sensor->Update(true); });
+                 "", [&] { hosted.sensor->Update(!measured_here); });
     rendering = rendering || hosted.sensor->Category() == gazebo::sensors::IMAGE;
   }
   if (rendering)
@@ -348,7 +381,7 @@ void GazeboSensorHost::update()
   // Whether the plant measures at the next step it may (asked then only: a RaySensor's IsActive
   // looks its topic's subscribers up).
   for (Hosted& hosted : hosted_)
-    if (hosted.plant.front()->rateDueBy(next_step_ns))
+    if (!hosted.plant.empty() && hosted.plant.front()->rateDueBy(next_step_ns))
       handActivityBack(hosted);
 }
 

@@ -56,6 +56,18 @@ public:
     else
       context_->log().error("a Gazebo plugin's gravity is not finite; the world keeps its gravity");
   }
+  ignition::math::Vector3d magneticField() const override
+  {
+    return context_ ? toIgnition(context_->magneticField()) : ignition::math::Vector3d::Zero;
+  }
+  ignition::math::Vector3d sphericalOrigin() const override
+  {
+    if (!context_)
+      return ignition::math::Vector3d::Zero;
+    const WorldDescription::SphericalCoordinates& s = context_->sphericalCoordinates();
+    return {s.latitude_deg, s.longitude_deg, s.elevation};
+  }
+  double headingDeg() const override { return context_ ? context_->sphericalCoordinates().heading_deg : 0.0; }
   double stepSize() const override { return context_ ? context_->stepSize() : 0.0; }
   bool setStepSize(double seconds) override { return context_ && context_->setStepSize(seconds); }
   double realTimeUpdateRate() const override { return context_ ? context_->realTimeUpdateRate() : 0.0; }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "bullet_plant/gazebo_host.h"
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/params.h"
 #include "physics/bullet_conversions.h"
@@ -932,8 +933,11 @@ std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescriptio
     return std::unique_ptr<Sensor>(new GroundTruthOdometry(s, seed));
   if (s.type == "contact")
     return std::unique_ptr<Sensor>(new ContactSensor(s, seed));
+  if (!s.library.empty() && measuredFromItsLink(s.type))
+    return nullptr;  // Gazebo's sensor of the user's plugin measures it (loadGazeboSensorPlugins)
   log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name +
-           "' is not simulated (ray, gpu_ray, camera, depth, imu, contact are)");
+           "' is not simulated (ray, gpu_ray, camera, depth, imu, contact are; altimeter, magnetometer and gps "
+           "with a sensor plugin of the user's own)");
   return nullptr;
 }
 
@@ -981,12 +985,12 @@ void loadGazeboSensorPlugins(Robot::Internals& r)
         ++end;
     if (d.library.empty())
       continue;
-    std::vector<Sensor*> simulated;
-    for (size_t i = first; i < end; ++i)
+    std::vector<Sensor*> simulated;  // none for a type Gazebo's sensor measures from its link
+    for (size_t i = first; i < end && !measuredFromItsLink(d.type); ++i)
       for (const std::unique_ptr<Sensor>& s : r.sensors)
         if (s->name() == described[i].name)
           simulated.push_back(s.get());
-    if (simulated.size() != end - first)
+    if (!measuredFromItsLink(d.type) && simulated.size() != end - first)
       r.world->log.error(r.name + ": sensor '" + d.name + "' plugin '" + d.plugin_name + "' (" + d.plugin_filename +
                          "): its sensor is not simulated; the plugin is not loaded");
     else

@@ -36,6 +36,13 @@ double PlantWorldPluginContext::realTimeFactor() const { return w_.description.r
 
 urdf::Vector3 PlantWorldPluginContext::gravity() const { return world_.gravity(); }
 
+urdf::Vector3 PlantWorldPluginContext::magneticField() const { return w_.description.magnetic_field; }
+
+const WorldDescription::SphericalCoordinates& PlantWorldPluginContext::sphericalCoordinates() const
+{
+  return w_.description.spherical_coordinates;
+}
+
 void PlantWorldPluginContext::setGravity(const urdf::Vector3& gravity) { world_.setGravity(gravity); }
 
 std::vector<std::string> PlantWorldPluginContext::modelNames() const

@@ -26,6 +26,8 @@ public:
   double realTimeUpdateRate() const override;
   double realTimeFactor() const override;
   urdf::Vector3 gravity() const override;
+  urdf::Vector3 magneticField() const override;
+  const WorldDescription::SphericalCoordinates& sphericalCoordinates() const override;
   std::vector<std::string> modelNames() const override;
   ModelPluginContext* model(const std::string& name) override;
   bool paused() const override;

@@ -4,6 +4,8 @@
 
 #include <memory>
 
+#include <boost/shared_ptr.hpp>
+
 namespace gazebo
 {
 namespace common
@@ -11,10 +13,13 @@ namespace common
 class Animation;
 class PoseAnimation;
 class NumericAnimation;
+class SphericalCoordinates;
 
 typedef std::shared_ptr<Animation> AnimationPtr;
 typedef std::shared_ptr<PoseAnimation> PoseAnimationPtr;
 typedef std::shared_ptr<NumericAnimation> NumericAnimationPtr;
+// (boost's, as Gazebo 11 declares it)
+typedef boost::shared_ptr<SphericalCoordinates> SphericalCoordinatesPtr;
 }  // namespace common
 
 namespace event

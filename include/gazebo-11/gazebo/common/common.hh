@@ -11,6 +11,7 @@
 #include "gazebo/common/Image.hh"
 #include "gazebo/common/KeyFrame.hh"
 #include "gazebo/common/PID.hh"
+#include "gazebo/common/SphericalCoordinates.hh"
 #include "gazebo/common/Plugin.hh"
 #include "gazebo/common/SystemPaths.hh"
 #include "gazebo/common/Time.hh"

@@ -47,7 +47,13 @@ public:
   bool GetGravityMode() const;
   ignition::math::Pose3d WorldPose() const override;
   ignition::math::Pose3d RelativePose() const override;
+  // Of its frame's origin, world axes.
   ignition::math::Vector3d WorldLinearVel() const override;
+  // Of the point at `_offset` from its frame's origin, given in its frame, or in the frame `_q`
+  // rotates to the world's.
+  ignition::math::Vector3d WorldLinearVel(const ignition::math::Vector3d& _offset) const;
+  ignition::math::Vector3d WorldLinearVel(const ignition::math::Vector3d& _offset,
+                                          const ignition::math::Quaterniond& _q) const;
   ignition::math::Vector3d WorldAngularVel() const override;
   ignition::math::Vector3d RelativeLinearVel() const;
   ignition::math::Vector3d RelativeAngularVel() const;

@@ -142,6 +142,11 @@ public:
   virtual ignition::math::Vector3d gravity() const = 0;
   // From the next step on; a vector that is not finite is refused (the simulator says so).
   virtual void setGravity(const ignition::math::Vector3d& gravity) = 0;
+  virtual ignition::math::Vector3d magneticField() const = 0;
+  // <spherical_coordinates>: latitude and longitude of the origin (degrees), its elevation (m), the
+  // heading of the world's x axis (degrees), on WGS84.
+  virtual ignition::math::Vector3d sphericalOrigin() const = 0;  // latitude, longitude, elevation
+  virtual double headingDeg() const = 0;
   virtual double stepSize() const = 0;
   // False (the simulator says why) for a step it cannot take.
   virtual bool setStepSize(double seconds) = 0;

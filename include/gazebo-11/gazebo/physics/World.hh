@@ -10,6 +10,7 @@
 #include <ignition/math/Vector3.hh>
 #include <sdf/SDFImpl.hh>
 
+#include "gazebo/common/CommonTypes.hh"
 #include "gazebo/common/Time.hh"
 #include "gazebo/physics/PhysicsTypes.hh"
 #include "gazebo/transport/TransportTypes.hh"
@@ -38,6 +39,11 @@ public:
   ignition::math::Vector3d Gravity() const;
   // From the next step on (PhysicsEngine::SetGravity).
   void SetGravity(const ignition::math::Vector3d& gravity);
+  // The world's <magnetic_field> (tesla, world frame; SDF's default where it gives none).
+  ignition::math::Vector3d MagneticField() const;
+  // The world's <spherical_coordinates> (SDF's: latitude, longitude, elevation and heading 0 on
+  // WGS84 where it gives none), the same object each time.
+  common::SphericalCoordinatesPtr SphericalCoords() const;
   PhysicsEnginePtr Physics() const;
   // The model of that name (its scoped name too), the same handle each time; null for none.
   ModelPtr ModelByName(const std::string& name) const;
@@ -78,6 +84,7 @@ private:
   int64_t started_ns_;  // the wall clock when it was made
   // One Model for each of the simulator's models, as Gazebo's world owns them (Fini lets them go).
   mutable std::map<std::string, ModelPtr> models_;
+  mutable common::SphericalCoordinatesPtr spherical_;  // made at the first SphericalCoords
   transport::NodePtr node_;
   transport::SubscriberPtr factory_sub_;
 };

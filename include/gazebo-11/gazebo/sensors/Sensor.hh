@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,6 +77,10 @@ public:
 
   event::ConnectionPtr ConnectUpdated(std::function<void()> subscriber);
 
+  // Its noise model of that type (the sensor made it from its <noise> elements); null, with
+  // Gazebo's error, where it has none.
+  NoisePtr Noise(const SensorNoiseType _type) const;
+
   // Not Gazebo's: the simulator's sensor this one is (set by the simulator before Load); its rate
   // follows SetUpdateRate. Null for a sensor that is no simulation's (it then measures nothing).
   void SetBridge(std::shared_ptr<SensorBridge> bridge);
@@ -99,6 +104,7 @@ protected:
   common::Time updatePeriod;
   common::Time lastUpdateTime;
   common::Time lastMeasurementTime;
+  std::map<SensorNoiseType, NoisePtr> noises;
 
 private:
   SensorCategory category_;
