@@ -39,6 +39,7 @@ void MultiCameraSensor::Load(const std::string& worldName)
 void MultiCameraSensor::Init()
 {
   auto* simulated = dynamic_cast<MultiCameraBridge*>(bridge.get());
+  // (each camera holds the bridge, whose camera `frames` points into, for as long as a plugin holds it)
   std::shared_ptr<SensorBridge> keep = bridge;
   unsigned int index = 0;
   for (sdf::ElementPtr element = sdf->HasElement("camera") ? sdf->GetElement("camera") : nullptr; element;
