@@ -3,11 +3,11 @@
 
 #include <boost/algorithm/string/replace.hpp>
 
-#include "gazebo/common/Image.hh"
 #include "gazebo/msgs/msgs.hh"
 #include "gazebo/rendering/Camera.hh"
 #include "gazebo/transport/Node.hh"
 #include "gazebo/transport/Publisher.hh"
+#include "camera_frames.h"
 
 namespace gazebo
 {
@@ -46,8 +46,7 @@ void CameraSensor::Init()
   camera->Load(sdf->GetElement("camera"));
   camera->Init();
   if (auto* frames = dynamic_cast<CameraBridge*>(bridge.get()))
-    if (const rendering::DistortionPtr lens = camera->LensDistortion())
-      frames->setDistortionCrop(lens->Crop());
+    detail::handLensCrop(*camera, *frames);
   Sensor::Init();
 }
 
@@ -76,19 +75,14 @@ bool CameraSensor::UpdateImpl(bool /*force*/)
   if (!image)
     return false;
   lastMeasurementTime = frames->measurementTime();
-  // the crop a plugin set (gazebo_ros_camera_utils' <borderCrop>) applies from the next frame
-  if (const rendering::DistortionPtr lens = camera->LensDistortion())
-    frames->setDistortionCrop(lens->Crop());
+  detail::handLensCrop(*camera, *frames);
   camera->TakeFrame(image);
   if (image_pub_ && image_pub_->HasConnections())
   {
     msgs::ImageStamped message;
     msgs::Set(message.mutable_time(), lastMeasurementTime);
     msgs::Image& out = *message.mutable_image();
-    out.set_width(camera->ImageWidth());
-    out.set_height(camera->ImageHeight());
-    out.set_pixel_format(common::Image::ConvertPixelFormat(camera->ImageFormat()));
-    out.set_step(camera->ImageWidth() * camera->ImageDepth());
+    detail::describeFrames(*camera, out);
     out.set_data(image, camera->ImageByteSize());
     image_pub_->Publish(message);
   }

@@ -4,11 +4,11 @@
 #include <boost/algorithm/string/replace.hpp>
 
 #include "gazebo/common/Console.hh"
-#include "gazebo/common/Image.hh"
 #include "gazebo/msgs/msgs.hh"
 #include "gazebo/rendering/Camera.hh"
 #include "gazebo/transport/Node.hh"
 #include "gazebo/transport/Publisher.hh"
+#include "camera_frames.h"
 
 namespace gazebo
 {
@@ -54,13 +54,8 @@ void MultiCameraSensor::Init()
     camera->Load(element);
     camera->Init();
     if (frames)
-      if (const rendering::DistortionPtr lens = camera->LensDistortion())
-        frames->setDistortionCrop(lens->Crop());
-    msgs::Image& image = *message_.add_image();
-    image.set_width(camera->ImageWidth());
-    image.set_height(camera->ImageHeight());
-    image.set_pixel_format(common::Image::ConvertPixelFormat(camera->ImageFormat()));
-    image.set_step(camera->ImageWidth() * camera->ImageDepth());
+      detail::handLensCrop(*camera, *frames);
+    detail::describeFrames(*camera, *message_.add_image());
     cameras_.push_back(std::move(camera));
   }
   Sensor::Init();
@@ -121,9 +116,7 @@ bool MultiCameraSensor::UpdateImpl(bool /*force*/)
   for (size_t i = 0; i < cameras_.size(); ++i)
   {
     rendering::Camera& camera = *cameras_[i];
-    // the crop a plugin set applies from the next frame
-    if (const rendering::DistortionPtr lens = camera.LensDistortion())
-      simulated->camera(static_cast<unsigned int>(i)).setDistortionCrop(lens->Crop());
+    detail::handLensCrop(camera, simulated->camera(static_cast<unsigned int>(i)));
     camera.TakeFrame(images[i]);
     if (publish)
       message_.mutable_image(static_cast<int>(i))->set_data(images[i], camera.ImageByteSize());
