@@ -68,6 +68,7 @@ gazebo_api_library(gazebo_sensors VERSIONED SOURCES
   src/gazebo/sensors/CameraSensor.cc
   src/gazebo/sensors/ContactSensor.cc
   src/gazebo/sensors/DepthCameraSensor.cc
+  src/gazebo/sensors/ForceTorqueSensor.cc
   src/gazebo/sensors/GpsSensor.cc
   src/gazebo/sensors/GpuRaySensor.cc
   src/gazebo/sensors/ImuSensor.cc
@@ -85,7 +86,7 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_rendering gazebo_physics gaze
 # MessageTypes.hh declares). Their headers are generated into the devel space's include folder.
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
   time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU
-  wrench:Wrench joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped
+  wrench:Wrench wrench_stamped:WrenchStamped joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped
   images_stamped:ImagesStamped altimeter:Altimeter magnetometer:Magnetometer gps:GPS)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
@@ -143,7 +144,7 @@ target_link_libraries(gazebo_transport PUBLIC gazebo_msgs_protobuf gazebo_common
 # GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
 set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin ImuSensorPlugin
-  ContactPlugin CameraPlugin DepthCameraPlugin)
+  ContactPlugin CameraPlugin DepthCameraPlugin ForceTorquePlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf

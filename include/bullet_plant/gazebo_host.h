@@ -22,12 +22,14 @@ class ModelPluginContext;
 class Sensor;
 
 // What Gazebo's physics::World, and the joints plugins make at run time, reach of the world.
-// The sensor types Gazebo's API measures itself from the sensor's link, as Gazebo's own classes do
-// (AltimeterSensor, MagnetometerSensor, GpsSensor read the link's pose and velocity): the plant
-// makes no sensor of its own under them, and measures them only for a sensor plugin of the user's.
-inline bool measuredFromItsLink(const std::string& sensor_type)
+// The sensor types Gazebo's API measures itself from the physics, as Gazebo's own classes do
+// (AltimeterSensor, MagnetometerSensor, GpsSensor read their link's pose and velocity,
+// ForceTorqueSensor its joint's wrench): the plant makes no sensor of its own under them, and
+// measures them only for a sensor plugin of the user's.
+inline bool measuredByGazeboApi(const std::string& sensor_type)
 {
-  return sensor_type == "altimeter" || sensor_type == "magnetometer" || sensor_type == "gps";
+  return sensor_type == "altimeter" || sensor_type == "magnetometer" || sensor_type == "gps" ||
+         sensor_type == "force_torque";
 }
 
 class WorldPluginContext

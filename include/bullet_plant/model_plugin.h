@@ -122,9 +122,10 @@ public:
   virtual bool physicsEnabled() const = 0;
   // Joint::GetForceTorque(0) as gazebo_ros_ft_sensor reads it: watch a movable joint once (at
   // Load; false for a joint the robot lacks or a fixed one), then after each step the wrench the
-  // joint transmitted to its child over that step: the force on the child's side of the robot
-  // and the torque about the child link's origin (the joint's), both in the child link's frame. It
-  // is what the child's subtree needed for its motion less gravity, contacts and the forces added
+  // child's side of the robot passed to the joint over that step, with Gazebo's sign (JointWrench's
+  // body2: a joint holding a load up reads its weight, pointing down): the force and the torque
+  // about the child link's origin (the joint's), both in the child link's frame. It is the negation
+  // of what the child's subtree needed for its motion less gravity, contacts and the forces added
   // to it: everything the parent passed on, the joint's own drive and limits included.
   virtual bool watchJointWrench(const std::string& joint) = 0;
   virtual void jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const = 0;

@@ -124,7 +124,10 @@ struct SensorDescription
   std::string name;
   std::string type;  // "ray", "gpu_ray", "camera", "depth", "imu", "p3d", "contact"
   std::string link;
-  urdf::Pose pose;   // in the link frame (<pose>)
+  urdf::Pose pose;   // in the link frame (<pose>); in the joint's frame for a joint's sensor
+  // A sensor in a <joint> (force_torque: SDF's, or a URDF's <gazebo reference="JOINT">): its joint,
+  // `link` being the joint's child link; "" for a link's sensor.
+  std::string joint;
   // A <sensor type="multicamera"> is one "camera" description per <camera>, named
   // "<sensor>::<camera>", its pose the sensor's composed with the camera's: this is the <camera>'s
   // name ("left"); empty for every other sensor.

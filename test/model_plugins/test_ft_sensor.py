@@ -1,9 +1,10 @@
 """gazebo_plugins' libgazebo_ros_ft_sensor.so on the plant: the three-joint arm
 (test/fixtures/urdf/arm.urdf, held by its position trajectory controller) with force/torque sensors
 on the elbow and the wrist, as UR and Robotiq users put one on a wrist joint. Held still, each joint
-carries the weight of what hangs below it and the moment of that weight about the joint, in the
-child link's frame; a push on the hand by gazebo_ros_force adds its force and its moment; the
-elbow's reading turns with the forearm. Values computed here from the URDF's masses and centres."""
+reads the weight of what hangs below it, pointing down, and the moment of that weight about the
+joint, in the child link's frame (Gazebo 11's sign: JointWrench body2 is what the child passes to
+the joint); a push on the hand by gazebo_ros_force adds its force and its moment; the elbow's
+reading turns with the forearm. Values computed here from the URDF's masses and centres."""
 import math
 
 import numpy as np
@@ -46,14 +47,15 @@ def arm_with_ft_sensors(extra=''):
 
 
 def expected(push=np.zeros(3), bodies=(FOREARM, HAND)):
-    """The joint's force and torque on what hangs below it, world axes, about the joint."""
+    """What hangs below the joint passes to it, held still: its weight and the push, and their
+    moments about the joint, world axes."""
     force, torque = np.zeros(3), np.zeros(3)
     for mass, centre in bodies:
         weight = np.array([0, 0, -mass * G])
-        force -= weight
-        torque -= np.cross(centre, weight)
-    force -= push
-    torque -= np.cross(HAND[1] if len(bodies) == 2 else np.zeros(3), push)
+        force += weight
+        torque += np.cross(centre, weight)
+    force += push
+    torque += np.cross(HAND[1] if len(bodies) == 2 else np.zeros(3), push)
     return force, torque
 
 
@@ -64,14 +66,14 @@ def test_held_still_each_joint_carries_what_hangs_below_it_and_a_push():
     assert elbow['frame_id'] == 'forearm' and wrist['frame_id'] == 'hand', "the child link's frame"
     force, torque = expected()
     assert elbow['force'] == pytest.approx(force, abs=0.02) and elbow['torque'] == pytest.approx(torque, abs=0.01)
-    assert wrist['force'] == pytest.approx([0, 0, HAND[0] * G], abs=0.02) and wrist['torque'] == pytest.approx([0, 0, 0], abs=0.01)
+    assert wrist['force'] == pytest.approx([0, 0, -HAND[0] * G], abs=0.02) and wrist['torque'] == pytest.approx([0, 0, 0], abs=0.01)
     push = np.array([0, 5.0, 0])
     assert robot.plugin_send('push', 'push', (*push, 0, 0, 0))
     world.step(500)
     force, torque = expected(push)
     elbow, wrist = robot.plugin_latest('ft_elbow', 'elbow_ft'), robot.plugin_latest('ft_wrist', 'wrist_ft')
     assert elbow['force'] == pytest.approx(force, abs=0.02) and elbow['torque'] == pytest.approx(torque, abs=0.01)
-    assert wrist['force'] == pytest.approx([0, -5.0, HAND[0] * G], abs=0.02)
+    assert wrist['force'] == pytest.approx([0, 5.0, -HAND[0] * G], abs=0.02)
 
 
 def test_the_reading_is_in_the_child_frame_and_the_wrist_reports_at_its_update_rate():

@@ -1,5 +1,6 @@
 """gazebo_ros_ft_sensor through the node: the arm with its force/torque sensors (test_ft_sensor.py's
-URDF) spawned and held by its controllers; /elbow_ft carries the weight hanging below the elbow as
+URDF) spawned and held by its controllers; /elbow_ft carries the weight hanging below the elbow
+(pointing down: Gazebo's sign) as
 geometry_msgs/WrenchStamped in the forearm's frame, stamped with sim time, and a Wrench on /push
 shows in it."""
 import pytest
@@ -17,6 +18,6 @@ def test_wrench_stamped_of_the_elbow_with_a_push(ros, tmp_path):
     held, pushed = seen['held'], seen['pushed']
     weight = (FOREARM[0] + HAND[0]) * G
     assert held['frame'] == 'forearm' and held['stamp'] > 0.5
-    assert held['force'] == pytest.approx([0, 0, weight], abs=0.05)
-    assert pushed['force'] == pytest.approx([0, -5.0, weight], abs=0.05)
-    assert pushed['torque'][2] == pytest.approx(-5.0 * HAND[1][0], abs=0.02), 'the push about the elbow'
+    assert held['force'] == pytest.approx([0, 0, -weight], abs=0.05)
+    assert pushed['force'] == pytest.approx([0, 5.0, -weight], abs=0.05)
+    assert pushed['torque'][2] == pytest.approx(5.0 * HAND[1][0], abs=0.02), 'the push about the elbow'

@@ -203,14 +203,30 @@ JointWrench Joint::GetForceTorque(unsigned int index)
   if (!axisZero(index, "GetForceTorque") || !bridged("GetForceTorque"))
     return wrench;
   bridge_->childWrench(wrench.body2Force, wrench.body2Torque);
-  if (parent_ && child_)
+  if (child_)
   {
-    // The reaction on the parent, turned into the parent link's axes.
-    const ignition::math::Quaterniond child_in_parent = parent_->WorldPose().Rot().Inverse() * child_->WorldPose().Rot();
+    // The joint's push on the child, turned into the parent link's axes (the world's for a joint
+    // to the world).
+    const ignition::math::Quaterniond parent_rotation = parent_ ? parent_->WorldPose().Rot() : ignition::math::Quaterniond::Identity;
+    const ignition::math::Quaterniond child_in_parent = parent_rotation.Inverse() * child_->WorldPose().Rot();
     wrench.body1Force = -child_in_parent.RotateVector(wrench.body2Force);
     wrench.body1Torque = -child_in_parent.RotateVector(wrench.body2Torque);
   }
   return wrench;
+}
+
+void Joint::SetProvideFeedback(bool enable)
+{
+  if (!enable || !bridged("SetProvideFeedback"))
+    return;
+  ignition::math::Vector3d force, torque;
+  bridge_->childWrench(force, torque);  // the first call starts the watch
+}
+
+ignition::math::Pose3d Joint::InitialAnchorPose() const
+{
+  // a joint made at run time keeps the anchor it was loaded with
+  return world_ || !bridge_ ? pose_ : bridge_->anchorPose();
 }
 
 void Joint::Load(LinkPtr parent, LinkPtr child, const ignition::math::Pose3d& pose)

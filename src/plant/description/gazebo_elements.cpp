@@ -230,7 +230,8 @@ std::vector<SensorDescription> readMulticamera(const sdf::ElementPtr& s, const s
 
 }  // namespace
 
-void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDescription& out)
+void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDescription& out,
+                 const std::string& joint)
 {
   std::vector<SensorDescription> sensors;
   for (sdf::ElementPtr s = sdf::child(parent, "sensor"); s; s = s->GetNextElement("sensor"))
@@ -245,6 +246,7 @@ void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDe
   {
     out.sensors.push_back(std::move(sensor));
     SensorDescription& d = out.sensors.back();
+    d.joint = joint;
     for (const std::string& problem : d.description_problems)
       out.warnings.push_back("sensor '" + d.name + "': " + problem);
     if (d.plugin_given && d.library.empty() && (!d.plugin_file || d.plugin_file->role != PluginRole::Sensor))

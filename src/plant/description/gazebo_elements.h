@@ -11,9 +11,11 @@
 
 namespace bullet_plant
 {
-// The <sensor>s among `parent`'s children, of link `link`, into out.sensors; a sensor plugin the
-// plant does not simulate is warned about, one refused on its sensor is an error (out.errors).
-void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDescription& out);
+// The <sensor>s among `parent`'s children, of link `link` (of joint `joint`, `link` its child, where
+// `parent` is a <joint>), into out.sensors; a sensor plugin the plant does not simulate is warned
+// about, one refused on its sensor is an error (out.errors).
+void readSensors(const sdf::ElementPtr& parent, const std::string& link, RobotDescription& out,
+                 const std::string& joint = "");
 
 // One model-level <plugin>: gazebo_ros_control, a model plugin following a link (gazebo_ros_imu,
 // gazebo_ros_p3d: out.sensors), one acting on the physics (out.model_plugins); any other file is

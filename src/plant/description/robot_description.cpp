@@ -275,16 +275,35 @@ void readTransmissions(const tinyxml2::XMLElement* robot, RobotDescription& out)
   }
 }
 
-// One <sensor> of a <gazebo reference="LINK"> block, or one <plugin> of a block without a reference.
+// One <sensor> of a <gazebo reference="LINK"> or <gazebo reference="JOINT"> block, or one <plugin>
+// of a block without a reference.
 struct GazeboBlockItem
 {
-  std::string link;  // the sensor's link; "" for a model plugin
+  std::string link;  // the sensor's link (a joint's sensor: the joint's child); "" for a model plugin
   std::string xml;   // as written
   std::string what;  // "sensor 'NAME' of link 'LINK'", "plugin 'NAME' (FILE)"
+  urdf::JointConstSharedPtr joint;  // a joint's sensor: that joint
 };
 
+// SDF's name of a URDF joint's type, as sdformat's URDF converter writes it.
+const char* sdfJointType(const urdf::Joint& joint)
+{
+  switch (joint.type)
+  {
+    case urdf::Joint::REVOLUTE:
+      return "revolute";
+    case urdf::Joint::CONTINUOUS:
+      return "continuous";
+    case urdf::Joint::PRISMATIC:
+      return "prismatic";
+    default:
+      return "fixed";
+  }
+}
+
 // The items as one SDF model named as the robot (which a plugin's GetParent() finds): the model's
-// plugins, and a link per sensor named as its URDF link, in the blocks' order.
+// plugins, and a link per sensor named as its URDF link (a joint per joint's sensor, named as its
+// URDF joint, between its links), in the blocks' order.
 std::string gazeboItemsAsSdf(const std::string& robot, const std::vector<const GazeboBlockItem*>& items)
 {
   tinyxml2::XMLDocument doc;
@@ -299,7 +318,16 @@ std::string gazeboItemsAsSdf(const std::string& robot, const std::vector<const G
     tinyxml2::XMLDocument piece;
     piece.Parse(item->xml.c_str());
     tinyxml2::XMLNode* parent = model;
-    if (!item->link.empty())
+    if (item->joint)
+    {
+      tinyxml2::XMLElement* joint = model->InsertNewChildElement("joint");
+      joint->SetAttribute("name", item->joint->name.c_str());
+      joint->SetAttribute("type", sdfJointType(*item->joint));
+      joint->InsertNewChildElement("parent")->SetText(item->joint->parent_link_name.c_str());
+      joint->InsertNewChildElement("child")->SetText(item->joint->child_link_name.c_str());
+      parent = joint;
+    }
+    else if (!item->link.empty())
     {
       parent = model->InsertNewChildElement("link");
       parent->ToElement()->SetAttribute("name", item->link.c_str());
@@ -321,16 +349,19 @@ void readGazeboSensorsAndPlugins(const tinyxml2::XMLElement* robot, RobotDescrip
   for (auto* g = robot->FirstChildElement("gazebo"); g; g = g->NextSiblingElement("gazebo"))
   {
     const char* reference = g->Attribute("reference");
-    if (reference && !out.model->getLink(reference))
+    // a joint's sensors are Gazebo's where it names no link (a link's name wins, as sdformat's)
+    const urdf::JointConstSharedPtr joint =
+        reference && !out.model->getLink(reference) ? out.model->getJoint(reference) : nullptr;
+    if (reference && !out.model->getLink(reference) && !joint)
       continue;
     const char* tag = reference ? "sensor" : "plugin";
     for (auto* e = g->FirstChildElement(tag); e; e = e->NextSiblingElement(tag))
     {
       const std::string name = e->Attribute("name") ? e->Attribute("name") : "";
-      items.push_back({reference ? reference : "", xml::printed(e),
-                       reference ? "sensor '" + name + "' of link '" + reference + "'"
-                                 : "plugin '" + name + "' (" + (e->Attribute("filename") ? e->Attribute("filename") : "") +
-                                       ")"});
+      const std::string what =
+          !reference ? "plugin '" + name + "' (" + (e->Attribute("filename") ? e->Attribute("filename") : "") + ")"
+                     : "sensor '" + name + "' of " + (joint ? "joint '" : "link '") + reference + "'";
+      items.push_back({joint ? joint->child_link_name : reference ? reference : "", xml::printed(e), what, joint});
     }
   }
   if (items.empty())
@@ -369,6 +400,8 @@ void readGazeboSensorsAndPlugins(const tinyxml2::XMLElement* robot, RobotDescrip
       readModelPlugin(e, out);
     else if (e->GetName() == "link")
       readSensors(e, sdf::attribute(e, "name"), out);
+    else if (e->GetName() == "joint")
+      readSensors(e, sdf::childText(e, "child", ""), out, sdf::attribute(e, "name"));
 }
 
 void readGazeboExtensions(const tinyxml2::XMLElement* robot, RobotDescription& out)

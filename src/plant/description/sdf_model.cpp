@@ -811,6 +811,7 @@ void buildTree(const ModelParts& parts, RobotDescription& out, std::vector<urdf:
       gearboxes.push_back(&part);  // once the tree is known: a constraint between two of its joints
     else
       addTreeJoint(part);
+    readSensors(part.element, part.child, out, part.name);
   }
   for (const JointPart* gearbox : gearboxes)
   {

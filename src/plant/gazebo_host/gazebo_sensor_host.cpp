@@ -9,6 +9,7 @@
 #include <gazebo/sensors/CameraSensor.hh>
 #include <gazebo/sensors/ContactSensor.hh>
 #include <gazebo/sensors/DepthCameraSensor.hh>
+#include <gazebo/sensors/ForceTorqueSensor.hh>
 #include <gazebo/sensors/GpsSensor.hh>
 #include <gazebo/sensors/GpuRaySensor.hh>
 #include <gazebo/sensors/ImuSensor.hh>
@@ -198,9 +199,9 @@ public:
   ignition::math::Vector3d linearAcceleration() const override { return toIgnition(sensor_.latest().linear_acceleration); }
 };
 
-// Gazebo's sensor of a type it measures itself from its link (measuredFromItsLink): no bridge, its
-// link found in the world by its parent's name, as Gazebo's.
-gazebo::sensors::SensorPtr gazeboLinkSensor(const std::string& type)
+// Gazebo's sensor of a type it measures itself (measuredByGazeboApi): no bridge, its link or joint
+// found in the world by its parent's name, as Gazebo's.
+gazebo::sensors::SensorPtr gazeboPhysicsSensor(const std::string& type)
 {
   if (type == "altimeter")
     return std::make_shared<gazebo::sensors::AltimeterSensor>();
@@ -208,6 +209,8 @@ gazebo::sensors::SensorPtr gazeboLinkSensor(const std::string& type)
     return std::make_shared<gazebo::sensors::MagnetometerSensor>();
   if (type == "gps")
     return std::make_shared<gazebo::sensors::GpsSensor>();
+  if (type == "force_torque")
+    return std::make_shared<gazebo::sensors::ForceTorqueSensor>();
   return nullptr;
 }
 
@@ -287,8 +290,8 @@ gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextM
     return gazebo_contact;
   }
   why = "Gazebo's sensor of type '" + type +
-        "' is not offered to plugins yet (those of types ray, gpu_ray, imu, contact, camera, depth and multicamera "
-        "are: docs/gazebo_api.md)";
+        "' is not offered to plugins yet (those of types ray, gpu_ray, imu, contact, camera, depth, multicamera, "
+        "altimeter, magnetometer, gps and force_torque are: docs/gazebo_api.md)";
   return nullptr;
 }
 }  // namespace
@@ -310,8 +313,8 @@ bool GazeboSensorHost::load(const SensorDescription& d, const std::vector<Sensor
   Hosted hosted;
   hosted.model = model.modelName();
   hosted.plant = plant;
-  if (measuredFromItsLink(d.type))
-    hosted.sensor = gazeboLinkSensor(d.type);
+  if (measuredByGazeboApi(d.type))
+    hosted.sensor = gazeboPhysicsSensor(d.type);
   else if (!d.multicamera_camera.empty())
     hosted.sensor = gazeboMultiCamera(d, plant, host_.modelBridge(model), why);
   else
@@ -329,9 +332,9 @@ bool GazeboSensorHost::load(const SensorDescription& d, const std::vector<Sensor
   const sdf::ElementPtr element = pluginElement(d.plugin_element);
   if (element)
     addSpawnNamespace(element, model.spawnNamespace());
-  // Gazebo's sensor is loaded from its <sensor> element and named in its link as Gazebo scopes it
-  // (MODEL::LINK): the plugin's topics and SensorManager's names are Gazebo's.
-  hosted.sensor->SetParent(model.modelName() + "::" + d.link, 0);
+  // Gazebo's sensor is loaded from its <sensor> element and named in its link or joint as Gazebo
+  // scopes it (MODEL::LINK, MODEL::JOINT): the plugin's topics and SensorManager's names are Gazebo's.
+  hosted.sensor->SetParent(model.modelName() + "::" + (d.joint.empty() ? d.link : d.joint), 0);
   const std::string world = host_.world()->Name();
   if (!pluginCall(log, [&] { return label + ": its Load threw"; }, kNotLoaded, [&] {
         hosted.sensor->Load(world, d.element);

@@ -158,6 +158,8 @@ public:
   double velocityLimit() const override { return std::numeric_limits<double>::infinity(); }
   std::string parentLink() const override { return spec_.parent_link; }
   std::string childLink() const override { return spec_.child_link; }
+  // Joint::InitialAnchorPose answers from the joint itself, which keeps the anchor it was loaded with.
+  ignition::math::Pose3d anchorPose() const override { return ignition::math::Pose3d::Zero; }
   // Joint::LocalAxis answers from the joint itself, which keeps the axis it was loaded with.
   ignition::math::Vector3d localAxis() const override { return ignition::math::Vector3d::Zero; }
   ignition::math::Vector3d globalAxis() const override

@@ -103,8 +103,17 @@ public:
   }
   std::string childLink() const override
   {
+    const auto frame = jointFrameToChild();
+    if (frame)
+      return frame->child_link_name;
     const auto joint = urdfJoint();
     return joint ? joint->child_link_name : "";
+  }
+  ignition::math::Pose3d anchorPose() const override
+  {
+    // the frame link's joint holds the child at its pose in the joint frame
+    const auto frame = jointFrameToChild();
+    return frame ? toIgnition(frame->parent_to_joint_origin_transform).Inverse() : ignition::math::Pose3d::Zero;
   }
   bool setMotorVelocity(double velocity) override
   {
@@ -150,6 +159,20 @@ private:
   urdf::JointConstSharedPtr urdfJoint() const
   {
     return reach_->context ? reach_->context->robotDescription().model->getJoint(name_) : nullptr;
+  }
+  // An SDF joint whose frame is not its child link's hangs a frame link between them (sdf_model.cpp),
+  // fixed to the child: that fixed joint; null where the joint's child is its link itself (URDF's
+  // rule).
+  urdf::JointConstSharedPtr jointFrameToChild() const
+  {
+    const auto joint = urdfJoint();
+    if (!joint)
+      return nullptr;
+    const RobotDescription& robot = reach_->context->robotDescription();
+    if (!robot.frame_links.count(joint->child_link_name))
+      return nullptr;
+    const auto frame = robot.model->getLink(joint->child_link_name);
+    return frame && frame->child_joints.size() == 1 ? frame->child_joints.front() : nullptr;
   }
   double limit(bool upper) const
   {

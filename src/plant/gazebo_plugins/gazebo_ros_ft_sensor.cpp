@@ -1,6 +1,6 @@
-// gazebo_plugins' libgazebo_ros_ft_sensor.so (ROS 1 Noetic): the wrench a joint transmits to its
-// child (Joint::GetForceTorque(0): body2Force and body2Torque, in the child link's frame, the torque
-// about the joint) as geometry_msgs/WrenchStamped on <topicName>, frame the child link's name, at
+// gazebo_plugins' libgazebo_ros_ft_sensor.so (ROS 1 Noetic): the wrench a joint's child passes to
+// it (Joint::GetForceTorque(0): body2Force and body2Torque, with Gazebo's sign: a joint holding a
+// load up reads its weight, pointing down; in the child link's frame, the torque about the joint) as geometry_msgs/WrenchStamped on <topicName>, frame the child link's name, at
 // <updateRate> (0: every step), each component plus <gaussianNoise>. <jointName> and <topicName>
 // are required, as upstream (docs/model_plugins.md).
 #include "bullet_plant/gaussian_kernel.h"

@@ -34,10 +34,10 @@ void bodyMomenta(const RobotMultibody& m, std::vector<btVector3>& momentum, std:
 }
 }  // namespace
 
-bool JointWrenchWatches::watch(const RobotMultibody& multibody, const urdf::ModelInterface& model, const std::string& joint)
+bool JointWrenchWatches::watch(const RobotMultibody& multibody, const RobotDescription& robot, const std::string& joint)
 {
   auto index = multibody.joint_index.find(joint);
-  urdf::JointConstSharedPtr described = model.getJoint(joint);
+  urdf::JointConstSharedPtr described = robot.model->getJoint(joint);
   if (index == multibody.joint_index.end() || !described)
     return false;
   for (const Watch& w : watches_)
@@ -46,7 +46,11 @@ bool JointWrenchWatches::watch(const RobotMultibody& multibody, const urdf::Mode
   const btMultiBody& mb = *multibody.bullet;
   Watch w;
   w.joint = joint;
-  w.child_link = described->child_link_name;
+  w.child_link = w.axes_link = described->child_link_name;
+  // an SDF joint's frame apart from its child link's is a frame link fixed to the child (sdf_model.cpp)
+  const urdf::LinkConstSharedPtr child_link = robot.model->getLink(w.child_link);
+  if (robot.frame_links.count(w.child_link) && child_link && child_link->child_joints.size() == 1)
+    w.axes_link = child_link->child_joints.front()->child_link_name;
   const int child = multibody.joints[index->second].link;  // Bullet link index
   for (int i = 0; i < mb.getNumLinks(); ++i)
   {
@@ -94,7 +98,8 @@ void JointWrenchWatches::beforeStep(const RobotMultibody& multibody)
 
 // Newton and Euler for the child's subtree over the step: the joint passed on what its momentum
 // change needed beyond gravity, the forces added to it and the contacts' impulses (the step's, as
-// the bumper reads them). Forces between bodies of the subtree cancel in the sums.
+// the bumper reads them); the subtree pushed back with the opposite, which is what is kept. Forces
+// between bodies of the subtree cancel in the sums.
 void JointWrenchWatches::afterStep(const RobotMultibody& multibody, const std::string& robot, btScalar dt,
                                    const btVector3& gravity, btDispatcher& dispatcher)
 {
@@ -139,9 +144,10 @@ void JointWrenchWatches::afterStep(const RobotMultibody& multibody, const std::s
         }
       }
     }
-    const btMatrix3x3 to_child = frame.getBasis().transpose();
-    w.force = fromBullet(to_child * force);
-    w.torque = fromBullet(to_child * torque);
+    // Gazebo's sign (JointWrench body2): what the child passes back to the joint
+    const btMatrix3x3 to_child = multibody.linkWorldTransform(w.axes_link, robot).getBasis().transpose();
+    w.force = fromBullet(to_child * -force);
+    w.torque = fromBullet(to_child * -torque);
   }
 }
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
-#include <urdf_model/model.h>
+#include "bullet_plant/robot_description.h"
 
 #include "simulation/robot_multibody.h"
 
@@ -20,8 +20,10 @@ class JointWrenchWatches
 public:
   // Watch a movable joint from now on (once; again is a no-op); false for a joint the robot lacks
   // or a fixed one.
-  bool watch(const RobotMultibody& multibody, const urdf::ModelInterface& model, const std::string& joint);
-  // The last step's wrench of a watched joint, in the child link's frame; zero for one not watched.
+  bool watch(const RobotMultibody& multibody, const RobotDescription& robot, const std::string& joint);
+  // The last step's wrench of a watched joint as Gazebo's JointWrench body2 has it: what the child
+  // passed to the joint (the joint's push on the child, negated), in the child link's frame, the
+  // torque about its origin; zero for one not watched.
   void wrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const;
   bool empty() const { return watches_.empty(); }
 
@@ -37,6 +39,8 @@ private:
   struct Watch
   {
     std::string joint, child_link;
+    // whose axes the wrench is in: the child link's (below an SDF joint's frame link, the link it holds)
+    std::string axes_link;
     std::vector<int> bodies;                  // the child's body and every body below it
     std::vector<btVector3> momentum, angular_momentum, force_added, torque_added;  // per body, before
     urdf::Vector3 force, torque;              // the last step's, in the child link frame

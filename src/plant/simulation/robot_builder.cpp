@@ -933,11 +933,11 @@ std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescriptio
     return std::unique_ptr<Sensor>(new GroundTruthOdometry(s, seed));
   if (s.type == "contact")
     return std::unique_ptr<Sensor>(new ContactSensor(s, seed));
-  if (!s.library.empty() && measuredFromItsLink(s.type))
+  if (!s.library.empty() && measuredByGazeboApi(s.type))
     return nullptr;  // Gazebo's sensor of the user's plugin measures it (loadGazeboSensorPlugins)
   log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name +
-           "' is not simulated (ray, gpu_ray, camera, depth, imu, contact are; altimeter, magnetometer and gps "
-           "with a sensor plugin of the user's own)");
+           "' is not simulated (ray, gpu_ray, camera, depth, imu, contact are; altimeter, magnetometer, gps and "
+           "force_torque with a sensor plugin of the user's own)");
   return nullptr;
 }
 
@@ -985,12 +985,12 @@ void loadGazeboSensorPlugins(Robot::Internals& r)
         ++end;
     if (d.library.empty())
       continue;
-    std::vector<Sensor*> simulated;  // none for a type Gazebo's sensor measures from its link
-    for (size_t i = first; i < end && !measuredFromItsLink(d.type); ++i)
+    std::vector<Sensor*> simulated;  // none for a type Gazebo's API measures itself
+    for (size_t i = first; i < end && !measuredByGazeboApi(d.type); ++i)
       for (const std::unique_ptr<Sensor>& s : r.sensors)
         if (s->name() == described[i].name)
           simulated.push_back(s.get());
-    if (!measuredFromItsLink(d.type) && simulated.size() != end - first)
+    if (!measuredByGazeboApi(d.type) && simulated.size() != end - first)
       r.world->log.error(r.name + ": sensor '" + d.name + "' plugin '" + d.plugin_name + "' (" + d.plugin_filename +
                          "): its sensor is not simulated; the plugin is not loaded");
     else
@@ -1075,7 +1075,7 @@ void buildRobot(Robot::Internals& r, const urdf::Pose& pose, const std::map<std:
 void loadModelPlugins(Robot::Internals& r)
 {
   for (const std::string& joint : r.description.joint_feedback)  // before a plugin asks for it
-    r.wrench_watches.watch(r.multibody, *r.description.model, joint);
+    r.wrench_watches.watch(r.multibody, r.description, joint);
   createModelPlugins(r);
   loadGazeboSensorPlugins(r);
   allowSleep(r);

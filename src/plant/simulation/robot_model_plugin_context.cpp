@@ -129,7 +129,7 @@ bool RobotModelPluginContext::physicsEnabled() const { return robot_.world->phys
 
 bool RobotModelPluginContext::watchJointWrench(const std::string& joint)
 {
-  return robot_.wrench_watches.watch(robot_.multibody, *robot_.description.model, joint);
+  return robot_.wrench_watches.watch(robot_.multibody, robot_.description, joint);
 }
 
 void RobotModelPluginContext::jointWrench(const std::string& joint, urdf::Vector3& force, urdf::Vector3& torque) const

@@ -62,6 +62,11 @@ public:
   // What the joint passed between its links over the last step (JointWrench.hh); watched from the
   // first call, so that call answers zeros.
   JointWrench GetForceTorque(unsigned int index);
+  // Its wrench watched from now on (true), as a ForceTorqueSensor asks; false is a no-op (a watch
+  // costs only while the step runs).
+  void SetProvideFeedback(bool enable);
+  // The joint's frame in its child link's frame, where its model (or Load) put it.
+  ignition::math::Pose3d InitialAnchorPose() const;
   void SetLowerLimit(unsigned int index, double limit);
   void SetUpperLimit(unsigned int index, double limit);
 

@@ -1,6 +1,8 @@
-// physics::JointWrench as Joint::GetForceTorque gives it: what the joint passes between its two
-// links over the last step (body2: on the child, in the child link's frame, the torque about the
-// joint's origin; body1: the same wrench's reaction on the parent, in the parent link's axes).
+// physics::JointWrench as Joint::GetForceTorque gives it, with Gazebo 11's signs: what passed
+// through the joint over the last step. body2: what the child passed to the joint (the joint's
+// push on the child, negated), in the child link's frame, the torque about the joint's origin;
+// body1: the joint's push on the child, in the parent link's axes. A joint holding a 2 kg load up
+// reads body2Force (0, 0, -19.6) N and body1Force (0, 0, 19.6) N (Gazebo's joint_force_torque test).
 #pragma once
 
 #include <ignition/math/Vector3.hh>

@@ -42,6 +42,8 @@ public:
   virtual double velocityLimit() const = 0;
   virtual std::string parentLink() const = 0;
   virtual std::string childLink() const = 0;
+  // The joint's frame in its child link's frame as its model gives it (Joint::InitialAnchorPose).
+  virtual ignition::math::Pose3d anchorPose() const = 0;
   // SetParam("vel") and ("fmax"): a motor that drives the joint to the velocity with at most the
   // force, every step until told otherwise. False as setVelocity.
   virtual bool setMotorVelocity(double velocity) = 0;
@@ -50,8 +52,9 @@ public:
   // the world now; zero for a joint that has none.
   virtual ignition::math::Vector3d localAxis() const = 0;
   virtual ignition::math::Vector3d globalAxis() const = 0;
-  // The wrench the joint passed to its child over the last step, in the child link's frame (the
-  // torque about the joint's origin), watched from the first call on: zero until a step has run.
+  // What the child passed to the joint over the last step (the joint's push on it, negated: Gazebo's
+  // body2), in the child link's frame (the torque about the joint's origin), watched from the first
+  // call on: zero until a step has run.
   virtual void childWrench(ignition::math::Vector3d& force, ignition::math::Vector3d& torque) = 0;
 };
 

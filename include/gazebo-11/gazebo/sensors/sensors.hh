@@ -5,6 +5,7 @@
 #include "gazebo/sensors/CameraSensor.hh"
 #include "gazebo/sensors/ContactSensor.hh"
 #include "gazebo/sensors/DepthCameraSensor.hh"
+#include "gazebo/sensors/ForceTorqueSensor.hh"
 #include "gazebo/sensors/GaussianNoiseModel.hh"
 #include "gazebo/sensors/GpsSensor.hh"
 #include "gazebo/sensors/GpuRaySensor.hh"
