@@ -21,7 +21,7 @@ using namespace bullet_plant;
 
 namespace
 {
-const char* kWorld = R"(<sdf version='1.7'><world name='imu_world'>
+const char* const kWorld = R"(<sdf version='1.7'><world name='imu_world'>
   <physics type='ode'><max_step_size>0.001</max_step_size></physics>
   <include><uri>model://ground_plane</uri></include>
   <model name='probe'><pose>0 0 0.1 0 0 0.5</pose><link name='base'>
@@ -91,4 +91,31 @@ TEST(GazeboImuSensor, PublishesEachMeasurementWhileSubscribed)
   for (size_t i = 1; i < received.size(); ++i)
     EXPECT_NEAR(gazebo::msgs::Convert(received[i].stamp()).Double() - gazebo::msgs::Convert(received[i - 1].stamp()).Double(),
                 0.02, 1e-9);
+}
+
+// Its <imu>'s noise models, Gazebo's: a mean of 0.2 rad/s on z's rate and -0.5 m/s^2 on z's
+// acceleration (no spread, so the values are exact) on the noisy values, none on the noise-free ones.
+TEST(GazeboImuSensor, AppliesItsImuElementsNoiseModels)
+{
+  std::string noisy = kWorld;
+  const std::string plain = "<sensor type='imu' name='imu'><update_rate>50</update_rate>";
+  noisy.replace(noisy.find(plain), plain.size(),
+                plain + "<imu><angular_velocity><z><noise type='gaussian'><mean>0.2</mean><stddev>0</stddev></noise></z>"
+                        "</angular_velocity><linear_acceleration><z><noise type='gaussian'><mean>-0.5</mean>"
+                        "<stddev>0</stddev></noise></z></linear_acceleration></imu>");
+  World world(parseWorldDescription(noisy));
+  std::shared_ptr<gazebo::sensors::ImuSensor> sensor = imu();
+  ASSERT_TRUE(sensor);
+  auto rate_noise = std::dynamic_pointer_cast<gazebo::sensors::GaussianNoiseModel>(
+      sensor->Noise(gazebo::sensors::IMU_ANGVEL_Z_NOISE_RADIANS_PER_S));
+  ASSERT_TRUE(rate_noise);
+  EXPECT_DOUBLE_EQ(rate_noise->GetMean(), 0.2);
+  sensor->SetActive(true);
+  world.step(500);
+  EXPECT_NEAR(sensor->AngularVelocity().Z(), 0.2, 1e-3);
+  EXPECT_NEAR(sensor->AngularVelocity(true).Z(), 0.0, 1e-3);
+  EXPECT_NEAR(sensor->AngularVelocity().X(), 0.0, 1e-3) << "x has no noise model";
+  EXPECT_NEAR(sensor->LinearAcceleration().Z(), 9.8 - 0.5, 0.05);
+  EXPECT_NEAR(sensor->LinearAcceleration(true).Z(), 9.8, 0.05);
+  EXPECT_NEAR(sensor->ImuMessage().angular_velocity().z(), 0.2, 1e-3) << "the message carries the noisy values";
 }

@@ -23,7 +23,7 @@ using namespace bullet_plant;
 
 namespace
 {
-const char* kWorld = R"(<sdf version='1.7'><world name='ray_world'>
+const char* const kWorld = R"(<sdf version='1.7'><world name='ray_world'>
   <physics type='ode'><max_step_size>0.001</max_step_size></physics>
   <include><uri>model://ground_plane</uri></include>
   <model name='wall'><static>true</static><pose>1.6 0 0.5 0 0 0</pose>
@@ -191,4 +191,20 @@ TEST(GazeboGpuRaySensor, IsThePlantsLidarWithGazebosLaserFrames)
   EXPECT_EQ(frames.back()[2 * 3 + 1], 0.0f) << "its intensity";
   EXPECT_NEAR(gpu->Range(2), 1.4, 5e-3);
   EXPECT_NEAR(gpu->Range(0), 1.4 / std::cos(0.3), 5e-3);
+}
+
+// Its <ray><noise> is Gazebo's model for a plugin to read (Sensor::Noise(RAY_NOISE)); the plant's
+// lidar applies it (one simulation of the sensor).
+TEST(GazeboRaySensor, ItsNoiseModelIsItsRayElementsNoise)
+{
+  std::string noisy = kWorld;
+  const std::string range = "<range><min>0.1</min>";
+  noisy.replace(noisy.find(range), 0, "<noise><type>gaussian</type><mean>0.0</mean><stddev>0.01</stddev></noise>");
+  World world(parseWorldDescription(noisy));
+  std::shared_ptr<gazebo::sensors::RaySensor> ray = lidar();
+  ASSERT_TRUE(ray);
+  auto noise = std::dynamic_pointer_cast<gazebo::sensors::GaussianNoiseModel>(ray->Noise(gazebo::sensors::RAY_NOISE));
+  ASSERT_TRUE(noise);
+  EXPECT_DOUBLE_EQ(noise->GetStdDev(), 0.01);
+  EXPECT_DOUBLE_EQ(noise->GetMean(), 0.0);
 }

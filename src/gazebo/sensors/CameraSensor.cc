@@ -8,6 +8,7 @@
 #include "gazebo/transport/Node.hh"
 #include "gazebo/transport/Publisher.hh"
 #include "camera_frames.h"
+#include "link_sensor.h"
 
 namespace gazebo
 {
@@ -38,6 +39,9 @@ void CameraSensor::Load(const std::string& worldName)
   Sensor::Load(worldName);
   if (world)
     image_pub_ = node->Advertise<msgs::ImageStamped>(Topic(), 50);
+  // its <camera><noise> as Gazebo's model, for a plugin that reads it; the simulator's camera applies
+  // it (one simulation of the sensor), so the model is not applied again here
+  detail::loadNoise(noises, CAMERA_NOISE, sdf, "camera");
 }
 
 void CameraSensor::Init()

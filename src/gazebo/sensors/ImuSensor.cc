@@ -6,6 +6,7 @@
 #include "gazebo/msgs/msgs.hh"
 #include "gazebo/transport/Node.hh"
 #include "gazebo/transport/Publisher.hh"
+#include "link_sensor.h"
 
 namespace gazebo
 {
@@ -34,6 +35,15 @@ void ImuSensor::Load(const std::string& worldName)
     boost::replace_all(topic, "::", "/");
   }
   imu_pub_ = node->Advertise<msgs::IMU>(topic, 500);
+  const sdf::ElementPtr rates = imu && imu->HasElement("angular_velocity") ? imu->GetElement("angular_velocity") : nullptr;
+  detail::loadNoise(noises, IMU_ANGVEL_X_NOISE_RADIANS_PER_S, rates, "x");
+  detail::loadNoise(noises, IMU_ANGVEL_Y_NOISE_RADIANS_PER_S, rates, "y");
+  detail::loadNoise(noises, IMU_ANGVEL_Z_NOISE_RADIANS_PER_S, rates, "z");
+  const sdf::ElementPtr accelerations =
+      imu && imu->HasElement("linear_acceleration") ? imu->GetElement("linear_acceleration") : nullptr;
+  detail::loadNoise(noises, IMU_LINACC_X_NOISE_METERS_PER_S_SQR, accelerations, "x");
+  detail::loadNoise(noises, IMU_LINACC_Y_NOISE_METERS_PER_S_SQR, accelerations, "y");
+  detail::loadNoise(noises, IMU_LINACC_Z_NOISE_METERS_PER_S_SQR, accelerations, "z");
 }
 
 void ImuSensor::Init() { Sensor::Init(); }
@@ -50,16 +60,16 @@ msgs::IMU ImuSensor::ImuMessage() const
   return imu_msg_;
 }
 
-ignition::math::Vector3d ImuSensor::AngularVelocity(bool /*_noiseFree*/) const
+ignition::math::Vector3d ImuSensor::AngularVelocity(bool _noiseFree) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return msgs::ConvertIgn(imu_msg_.angular_velocity());
+  return _noiseFree ? angular_velocity_ : msgs::ConvertIgn(imu_msg_.angular_velocity());
 }
 
-ignition::math::Vector3d ImuSensor::LinearAcceleration(bool /*_noiseFree*/) const
+ignition::math::Vector3d ImuSensor::LinearAcceleration(bool _noiseFree) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return msgs::ConvertIgn(imu_msg_.linear_acceleration());
+  return _noiseFree ? linear_acceleration_ : msgs::ConvertIgn(imu_msg_.linear_acceleration());
 }
 
 ignition::math::Quaterniond ImuSensor::Orientation() const
@@ -90,13 +100,24 @@ bool ImuSensor::UpdateImpl(bool /*force*/)
   const common::Time stamp = imu->measurementTime();
   if (stamp == lastMeasurementTime)  // Gazebo's: no new link data, no measurement
     return false;
+  const double dt = (stamp - lastMeasurementTime).Double();
   lastMeasurementTime = stamp;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     imu_msg_.set_entity_name(ParentName());
     msgs::Set(imu_msg_.mutable_stamp(), stamp);
-    msgs::Set(imu_msg_.mutable_angular_velocity(), imu->angularVelocity());
-    msgs::Set(imu_msg_.mutable_linear_acceleration(), imu->linearAcceleration());
+    angular_velocity_ = imu->angularVelocity();
+    linear_acceleration_ = imu->linearAcceleration();
+    // each axis with its noise model, where it has one
+    const auto noisy = [&](SensorNoiseType type, double value) { return detail::withNoise(noises, type, value, dt); };
+    msgs::Set(imu_msg_.mutable_angular_velocity(),
+              {noisy(IMU_ANGVEL_X_NOISE_RADIANS_PER_S, angular_velocity_.X()),
+               noisy(IMU_ANGVEL_Y_NOISE_RADIANS_PER_S, angular_velocity_.Y()),
+               noisy(IMU_ANGVEL_Z_NOISE_RADIANS_PER_S, angular_velocity_.Z())});
+    msgs::Set(imu_msg_.mutable_linear_acceleration(),
+              {noisy(IMU_LINACC_X_NOISE_METERS_PER_S_SQR, linear_acceleration_.X()),
+               noisy(IMU_LINACC_Y_NOISE_METERS_PER_S_SQR, linear_acceleration_.Y()),
+               noisy(IMU_LINACC_Z_NOISE_METERS_PER_S_SQR, linear_acceleration_.Z())});
     msgs::Set(imu_msg_.mutable_orientation(), world_to_reference_.Inverse() * imu->orientation());
   }
   if (imu_pub_ && imu_pub_->HasConnections())

@@ -12,6 +12,7 @@
 #include "gazebo/msgs/msgs.hh"
 #include "gazebo/transport/Node.hh"
 #include "gazebo/transport/Publisher.hh"
+#include "link_sensor.h"
 
 namespace gazebo
 {
@@ -40,6 +41,9 @@ void LaserScanSensor::Load(const std::string& worldName)
   laserShape->Init();
   if (world)
     scan_pub_ = node->Advertise<msgs::LaserScanStamped>(Topic(), 50);
+  // its <ray><noise> as Gazebo's model, for a plugin that reads it; the simulator's lidar applies it
+  // (one simulation of the sensor), so the model is not applied again here
+  detail::loadNoise(noises, Category() == IMAGE ? GPU_RAY_NOISE : RAY_NOISE, sdf, "ray");
 }
 
 void LaserScanSensor::Init()

@@ -1,5 +1,6 @@
 // What the sensors that read their link's motion (AltimeterSensor, MagnetometerSensor, GpsSensor)
-// share, as Gazebo 11 spells it in each: their topic and their link. Private to the library.
+// share, as Gazebo 11 spells it in each: their topic, their link and their noise models (which
+// ImuSensor reads and applies the same way). Private to the library.
 #pragma once
 
 #include <map>
@@ -48,11 +49,13 @@ inline void loadNoise(std::map<SensorNoiseType, NoisePtr>& noises, SensorNoiseTy
     noises[type] = NoiseFactory::NewNoiseModel(parent->GetElement(child)->GetElement("noise"));
 }
 
-// The value with its noise, where the sensor has that model.
-inline double withNoise(const std::map<SensorNoiseType, NoisePtr>& noises, SensorNoiseType type, double value)
+// The value with its noise, where the sensor has that model (`dt` the time since the last value,
+// for the model's dynamic bias).
+inline double withNoise(const std::map<SensorNoiseType, NoisePtr>& noises, SensorNoiseType type, double value,
+                        double dt = 0.0)
 {
   const auto found = noises.find(type);
-  return found != noises.end() && found->second ? found->second->Apply(value) : value;
+  return found != noises.end() && found->second ? found->second->Apply(value, dt) : value;
 }
 }  // namespace detail
 }  // namespace sensors
