@@ -78,7 +78,8 @@ gazebo_api_library(gazebo_sensors VERSIONED SOURCES
   src/gazebo/sensors/LaserScanSensor.cc
   src/gazebo/sensors/RaySensor.cc
   src/gazebo/sensors/Sensor.cc
-  src/gazebo/sensors/SensorManager.cc)
+  src/gazebo/sensors/SensorManager.cc
+  src/gazebo/sensors/SonarSensor.cc)
 target_link_libraries(gazebo_sensors PUBLIC gazebo_rendering gazebo_physics gazebo_common)
 
 # Gazebo's messages (gazebo::msgs, libgazebo_msgs): protobuf from the .proto files in
@@ -87,7 +88,8 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_rendering gazebo_physics gaze
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
   time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU
   wrench:Wrench wrench_stamped:WrenchStamped joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped
-  images_stamped:ImagesStamped altimeter:Altimeter magnetometer:Magnetometer gps:GPS)
+  images_stamped:ImagesStamped altimeter:Altimeter magnetometer:Magnetometer gps:GPS sonar:Sonar
+  sonar_stamped:SonarStamped)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
 set(GAZEBO_MSGS_INCLUDE_DIR ${CATKIN_DEVEL_PREFIX}/${CATKIN_GLOBAL_INCLUDE_DESTINATION}/gazebo-11)
@@ -144,7 +146,7 @@ target_link_libraries(gazebo_transport PUBLIC gazebo_msgs_protobuf gazebo_common
 # GAZEBO_LIBRARY_DIRS
 # and GAZEBO_PLUGIN_PATH as Gazebo's.
 set(GAZEBO_API_PLUGINS ElevatorPlugin HarnessPlugin WheelSlipPlugin RayPlugin GpuRayPlugin ImuSensorPlugin
-  ContactPlugin CameraPlugin DepthCameraPlugin ForceTorquePlugin)
+  ContactPlugin CameraPlugin DepthCameraPlugin ForceTorquePlugin SonarPlugin)
 foreach(plugin ${GAZEBO_API_PLUGINS})
   gazebo_api_library(${plugin} SOURCES src/gazebo/plugins/${plugin}.cc)
   target_link_libraries(${plugin} PUBLIC gazebo_sensors gazebo_physics gazebo_transport gazebo_msgs_protobuf

@@ -138,7 +138,10 @@ struct SensorDescription
   double horizontal_min_angle = 0.0, horizontal_max_angle = 0.0;
   int vertical_samples = 1;
   double vertical_min_angle = 0.0, vertical_max_angle = 0.0;
-  double range_min = 0.0, range_max = 0.0, range_resolution = 0.0;
+  double range_min = 0.0, range_max = 0.0, range_resolution = 0.0;  // a sonar's <min> and <max> too
+  // sonar: its <radius> and <geometry> ("cone" or "sphere")
+  double sonar_radius = 0.0;
+  std::string sonar_geometry;
   // camera and depth
   double horizontal_fov = 0.0;
   int image_width = 0, image_height = 0;

@@ -180,6 +180,13 @@ SensorDescription readSensor(const sdf::ElementPtr& s, const std::string& link)
     }
     readNoise(ray, d.noise);
   }
+  if (sdf::ElementPtr sonar = sdf::child(s, "sonar"))
+  {
+    d.range_min = sdf::childDouble(sonar, "min", 0.0);  // sonar.sdf's defaults
+    d.range_max = sdf::childDouble(sonar, "max", 1.0);
+    d.sonar_radius = sdf::childDouble(sonar, "radius", 0.5);
+    d.sonar_geometry = sdf::childText(sonar, "geometry", "cone");
+  }
   if (sdf::ElementPtr cam = sdf::child(s, "camera"))
     readCamera(cam, d);
   if (sdf::ElementPtr contact = sdf::child(s, "contact"))

@@ -17,6 +17,7 @@
 #include <gazebo/sensors/MultiCameraSensor.hh>
 #include <gazebo/sensors/RaySensor.hh>
 #include <gazebo/sensors/SensorManager.hh>
+#include <gazebo/sensors/SonarSensor.hh>
 #include <gazebo/transport/TopicManager.hh>
 
 #include "bullet_plant/image_encoding.h"
@@ -72,6 +73,52 @@ public:
   using PlantSensorBridge::PlantSensorBridge;
   const std::vector<float>& ranges() const override { return sensor_.latest().ranges; }
   ignition::math::Pose3d scanOrigin() const override { return toIgnition(sensor_.latest().origin); }
+};
+
+// A sonar over the plant's lidar that samples its shape (robot_builder's sonarSampling: rings of rays
+// about the sensor's -z axis, or all round, in the sonar's own frame): the nearest hit within the
+// cone (or sphere), `sonar` the sonar's description.
+class SonarBridge final : public PlantSensorBridge<gazebo::sensors::SonarBridge, Lidar>
+{
+public:
+  SonarBridge(Lidar& rays, std::shared_ptr<ContextModel> model, const SensorDescription& sonar)
+    : PlantSensorBridge(rays, std::move(model)), height_(sonar.range_max - sonar.range_min),
+      sphere_(sonar.sonar_geometry == "sphere")
+  {
+  }
+  bool nearest(double& range, ignition::math::Vector3d& point) const override
+  {
+    const SensorDescription& d = sensor_.description();
+    const std::vector<float>& ranges = sensor_.latest().ranges;
+    const int across = d.horizontal_samples, rings = d.vertical_samples;
+    bool seen = false;
+    for (int v = 0; v < rings && size_t(v + 1) * across <= ranges.size(); ++v)
+    {
+      const double elevation =
+          d.vertical_min_angle + (rings > 1 ? v * (d.vertical_max_angle - d.vertical_min_angle) / (rings - 1) : 0.0);
+      for (int h = 0; h < across; ++h)
+      {
+        const double distance = ranges[size_t(v) * across + h];
+        if (!std::isfinite(distance) || (seen && distance >= range))
+          continue;
+        const double azimuth = d.horizontal_min_angle + h * (d.horizontal_max_angle - d.horizontal_min_angle) /
+                                                            std::max(1, across - 1);
+        const ignition::math::Vector3d direction(std::cos(elevation) * std::cos(azimuth),
+                                                 std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+        // within the cone: no farther down its axis (-z) than its height; the sphere: its radius
+        if (sphere_ ? distance > height_ : -direction.Z() * distance > height_)
+          continue;
+        range = distance;
+        point = distance * direction;
+        seen = true;
+      }
+    }
+    return seen;
+  }
+
+private:
+  double height_;
+  bool sphere_;
 };
 
 // A camera's frames in Gazebo's bytes of its format (and, for a depth camera, Gazebo's depths and RGB
@@ -214,6 +261,21 @@ gazebo::sensors::SensorPtr gazeboPhysicsSensor(const std::string& type)
   return nullptr;
 }
 
+// Gazebo's SonarSensor over the plant's lidar sampling its shape; null where it is no lidar.
+gazebo::sensors::SensorPtr gazeboSonar(const SensorDescription& d, Sensor& plant, const std::shared_ptr<ContextModel>& model,
+                                       std::string& why)
+{
+  auto* rays = dynamic_cast<Lidar*>(&plant);
+  if (!rays)
+  {
+    why = "its sonar is not sampled by the plant's rays";
+    return nullptr;
+  }
+  auto sonar = std::make_shared<gazebo::sensors::SonarSensor>();
+  sonar->SetBridge(std::make_shared<SonarBridge>(*rays, model, d));
+  return sonar;
+}
+
 // A multicamera's first <camera>'s own pose in its <sensor> (`d` that camera's description, whose
 // pose is the sensor's composed with it); identity for any other sensor.
 ignition::math::Pose3d firstCameraInSensor(const SensorDescription& d)
@@ -291,7 +353,7 @@ gazebo::sensors::SensorPtr gazeboSensor(Sensor& sensor, std::shared_ptr<ContextM
   }
   why = "Gazebo's sensor of type '" + type +
         "' is not offered to plugins yet (those of types ray, gpu_ray, imu, contact, camera, depth, multicamera, "
-        "altimeter, magnetometer, gps and force_torque are: docs/gazebo_api.md)";
+        "altimeter, magnetometer, gps, force_torque and sonar are: docs/gazebo_api.md)";
   return nullptr;
 }
 }  // namespace
@@ -315,6 +377,8 @@ bool GazeboSensorHost::load(const SensorDescription& d, const std::vector<Sensor
   hosted.plant = plant;
   if (measuredByGazeboApi(d.type))
     hosted.sensor = gazeboPhysicsSensor(d.type);
+  else if (d.type == "sonar")
+    hosted.sensor = gazeboSonar(d, *plant.front(), host_.modelBridge(model), why);
   else if (!d.multicamera_camera.empty())
     hosted.sensor = gazeboMultiCamera(d, plant, host_.modelBridge(model), why);
   else

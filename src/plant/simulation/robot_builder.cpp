@@ -890,6 +890,32 @@ std::string lidarProblem(const SensorDescription& s)
   return "";
 }
 
+// A sonar (Gazebo's: the nearest thing in a cone from its origin along its -z axis, <radius> wide at
+// <max> - <min> along it, or in a sphere of that radius) as the plant's lidar samples it: rings of
+// rays about -z out to the cone's rim (kSonarRings from straight down, kSonarRaysARing round), or
+// rays all round; SonarBridge (gazebo_host) takes the nearest hit within the shape. Rays collide
+// with collisions, as Gazebo's sonar shape does.
+constexpr int kSonarRings = 8, kSonarRaysARing = 32;
+SensorDescription sonarSampling(const SensorDescription& sonar)
+{
+  SensorDescription rays = sonar;
+  rays.type = "ray";
+  const double height = sonar.range_max - sonar.range_min;
+  const bool sphere = sonar.sonar_geometry == "sphere";
+  const double half_angle = sphere ? M_PI : std::atan2(std::max(0.0, sonar.sonar_radius), height);
+  rays.horizontal_samples = kSonarRaysARing;
+  rays.horizontal_min_angle = -M_PI;
+  rays.horizontal_max_angle = M_PI - 2 * M_PI / kSonarRaysARing;
+  rays.vertical_samples = sphere ? 2 * kSonarRings + 1 : kSonarRings;
+  rays.vertical_min_angle = -M_PI / 2;
+  rays.vertical_max_angle = sphere ? M_PI / 2 : -M_PI / 2 + half_angle;
+  rays.range_min = 0.0;
+  rays.range_max = sphere ? height : height / std::cos(half_angle);  // to the cone's rim
+  rays.range_resolution = 0.0;
+  rays.noise = Noise();
+  return rays;
+}
+
 // What keeps a camera from rendering, or empty.
 std::string cameraProblem(const SensorDescription& s)
 {
@@ -933,11 +959,23 @@ std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescriptio
     return std::unique_ptr<Sensor>(new GroundTruthOdometry(s, seed));
   if (s.type == "contact")
     return std::unique_ptr<Sensor>(new ContactSensor(s, seed));
+  if (s.type == "sonar" && !s.library.empty())
+  {
+    // the plant has no sonar of its own to publish: one is sampled for a sensor plugin of the user's
+    const SensorDescription rays = sonarSampling(s);
+    const std::string problem = !(rays.range_max > 0) ? "its <max> is not above its <min>" : "";
+    if (!problem.empty())
+    {
+      log.error("sensor '" + s.name + "' (sonar) of '" + r.name + "': " + problem + "; it measures nothing");
+      return nullptr;
+    }
+    return std::unique_ptr<Sensor>(new Lidar(rays, seed));
+  }
   if (!s.library.empty() && measuredByGazeboApi(s.type))
     return nullptr;  // Gazebo's sensor of the user's plugin measures it (loadGazeboSensorPlugins)
   log.warn("sensor '" + s.name + "' of type '" + s.type + "' of '" + r.name +
-           "' is not simulated (ray, gpu_ray, camera, depth, imu, contact are; altimeter, magnetometer, gps and "
-           "force_torque with a sensor plugin of the user's own)");
+           "' is not simulated (ray, gpu_ray, camera, depth, imu, contact are; altimeter, magnetometer, gps, "
+           "force_torque and sonar with a sensor plugin of the user's own)");
   return nullptr;
 }
 

@@ -41,6 +41,15 @@ public:
   virtual ignition::math::Pose3d scanOrigin() const = 0;
 };
 
+class SonarBridge : public SensorBridge
+{
+public:
+  // The nearest thing in the sonar's cone (or sphere) in its latest measurement: true, with its
+  // distance from the sensor's origin (m) and where it is in the sensor's frame; false where
+  // nothing is.
+  virtual bool nearest(double& range, ignition::math::Vector3d& point) const = 0;
+};
+
 class CameraBridge : public SensorBridge
 {
 public:

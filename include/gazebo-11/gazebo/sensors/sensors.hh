@@ -16,5 +16,6 @@
 #include "gazebo/sensors/RaySensor.hh"
 #include "gazebo/sensors/Sensor.hh"
 #include "gazebo/sensors/SensorManager.hh"
+#include "gazebo/sensors/SonarSensor.hh"
 #include "gazebo/sensors/SensorTypes.hh"
 #include "gazebo/sensors/SensorsIface.hh"
