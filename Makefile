@@ -34,7 +34,7 @@ export CCACHE_SLOPPINESS := pch_defines,time_macros,include_file_mtime,include_f
 # make sim: the browser viewer in gzclient's place (the tutorial's default), or false for headless.
 GUI ?= true
 
-.PHONY: help setup build install test test-quick sim demo bench bench-ros bench-drive bench-viewer bench-racing bench-meshes bench-lights figures step-cost soak clean
+.PHONY: help setup build install test test-quick sim demo bench bench-ros bench-drive bench-fleet bench-viewer bench-racing bench-meshes bench-lights figures step-cost soak clean
 
 help:
 	@echo "make sim    install what is missing, build, start the simulation; open the address it prints first (GUI=false: headless)"
@@ -46,6 +46,7 @@ help:
 	@echo "make bench  build, time the plant against MuJoCo and PyBullet (installs them from PyPI if missing)"
 	@echo "make bench-ros  build, time the ROS node: launch to running, real time factor, CPU, fastest"
 	@echo "make bench-drive  build, the CPU a turtlebot3-like robot (diff drive, 360-ray lidar, IMU) costs the node"
+	@echo "make bench-fleet  build, a fleet of 1 to 100 turtlebot3-like robots through ROS: RTF, plant CPU, physics-only cost"
 	@echo "make bench-viewer  build, the plant's CPU with a browser page open and the page's frame rate"
 	@echo "make bench-racing  build, env steps a second of the Gymnasium environments (single, vector on 1 and 2 threads)"
 	@echo "make figures  build, print what the plant's acceptance tests measure (settling times, drift, radius)"
@@ -117,6 +118,10 @@ bench-ros: build
 # A turtlebot3-like robot (diff drive plugin, 360-ray lidar at 5 Hz, IMU) through the node: its CPU.
 bench-drive: build
 	@$(ROS_ENV) $(PYTHON) bench/diff_drive_cost.py
+
+# A fleet of turtlebot3-like robots in their namespaces through ROS (issue 56's measure): FLEET_SIZES=1,10 to choose.
+bench-fleet: build
+	@$(ROS_ENV) $(PYTHON) bench/fleet_cost.py
 
 # The browser viewer: the plant's CPU with a page open, the page's frames a second in headless chromium.
 bench-viewer: build

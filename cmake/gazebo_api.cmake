@@ -88,7 +88,7 @@ target_link_libraries(gazebo_sensors PUBLIC gazebo_rendering gazebo_physics gaze
 set(GAZEBO_MSGS gz_string:GzString vector3d:Vector3d quaternion:Quaternion pose:Pose factory:Factory physics:Physics
   time:Time laserscan:LaserScan laserscan_stamped:LaserScanStamped world_stats:WorldStatistics imu:IMU
   wrench:Wrench wrench_stamped:WrenchStamped joint_wrench:JointWrench contact:Contact contacts:Contacts image:Image image_stamped:ImageStamped
-  images_stamped:ImagesStamped altimeter:Altimeter magnetometer:Magnetometer gps:GPS sonar:Sonar
+  images_stamped:ImagesStamped altimeter:Altimeter magnetometer:Magnetometer gps:GPS sonar:Sonar pointcloud:PointCloud
   sonar_stamped:SonarStamped)
 set(GAZEBO_MSGS_PROTO_DIR ${PROJECT_SOURCE_DIR}/src/gazebo/msgs/proto)
 set(GAZEBO_MSGS_GENERATED ${CMAKE_CURRENT_BINARY_DIR}/gazebo_msgs)
