@@ -74,10 +74,13 @@ build: setup
 		> build.log 2>&1 || { tail -n 60 build.log; echo "make build: catkin_make failed; full log in $(WS)/build.log"; exit 1; }
 	@# The browser viewer's page: three.js from the npm registry (web/package-lock.json), bundled by
 	@# esbuild into web/dist/viewer.js; the modules stay in $(WS)/web, out of the package's tree.
+	@# Packages already in npm's cache are taken from it (--prefer-offline: a fresh clone needs no
+	@# download), and a download that stalls is retried after a minute rather than npm's five.
 	@mkdir -p $(WS)/web
 	@cmp -s web/package-lock.json $(WS)/web/package-lock.json && [ -d $(WS)/web/node_modules ] || { \
 		cp web/package.json web/package-lock.json $(WS)/web/ && \
-		(cd $(WS)/web && npm ci --no-audit --no-fund --loglevel=error) > $(WS)/web/npm.log 2>&1 || \
+		(cd $(WS)/web && npm ci --prefer-offline --fetch-timeout=60000 --fetch-retries=4 --no-audit --no-fund \
+			--loglevel=error) > $(WS)/web/npm.log 2>&1 || \
 		{ cat $(WS)/web/npm.log; rm -f $(WS)/web/package-lock.json; echo "make build: npm ci failed"; exit 1; }; }
 	@NODE_PATH=$(WS)/web/node_modules $(WS)/web/node_modules/.bin/esbuild web/src/viewer.js --bundle --minify \
 		--format=iife --outfile=web/dist/viewer.js --log-level=warning
