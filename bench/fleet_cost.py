@@ -11,13 +11,16 @@ its cmd_vel once a second (the diff drive keeps the last command).
 For each N: the real time factor from /clock and the plant process's user + system CPU from /proc
 over WINDOW s of wall time, beside the physics-only cost of the same world and robots stepped from
 Python without ROS (bullet_plant.World, PHYSICS_SECONDS simulated, the process's CPU time): what a
-robot costs the node around its physics and sensors is the difference.
+robot costs the node around its physics and sensors is the difference. Each figure is the median of
+ROUNDS rounds, the two measured one after the other in each (the machine's load moves both).
 
-FLEET_SIZES=1,10 and FLEET_WINDOW=20 in the environment change the sizes and the window.
+FLEET_SIZES=1,10, FLEET_WINDOW=20 and FLEET_ROUNDS=3 in the environment change the sizes, the window
+and the rounds.
 """
 import math
 import os
 import platform
+import statistics
 import sys
 import tempfile
 import time
@@ -29,7 +32,8 @@ from ros_harness import RosSystem, start_plant  # noqa: E402
 
 SIZES = [int(n) for n in os.environ.get('FLEET_SIZES', '1,10,25,50,100').split(',')]
 WINDOW = float(os.environ.get('FLEET_WINDOW', '20'))
-PHYSICS_SECONDS = 2.0
+ROUNDS = int(os.environ.get('FLEET_ROUNDS', '3'))
+PHYSICS_SECONDS = 3.0
 SPACING = 1.5  # m between robots on the grid
 LINEAR, ANGULAR = 0.1, 0.5  # the issue's slow circle (m/s, rad/s)
 
@@ -168,8 +172,8 @@ def main():
     urdf = fleet_robot()
     cpu_model = next((line.split(':', 1)[1].strip() for line in open('/proc/cpuinfo') if line.startswith('model name')),
                      platform.processor())
-    print('CPU: %s, %d cores; the fleet through ROS over %g s of wall time, physics only over %g s simulated'
-          % (cpu_model, os.cpu_count(), WINDOW, PHYSICS_SECONDS), flush=True)
+    print('CPU: %s, %d cores; the fleet through ROS over %g s of wall time, physics only over %g s simulated; '
+          'medians of %d rounds' % (cpu_model, os.cpu_count(), WINDOW, PHYSICS_SECONDS, ROUNDS), flush=True)
     print('%5s %7s %12s %12s %12s %9s %12s %12s' % ('N', 'RTF', 'plant CPU', 'per robot', 'physics only', 'ratio',
                                                      'scan/robot', 'odom/robot'), flush=True)
     with tempfile.TemporaryDirectory() as workdir:
@@ -180,13 +184,19 @@ def main():
             world_path = os.path.join(workdir, 'fleet_%d.world' % n)
             with open(world_path, 'w') as f:
                 f.write(arena(n))
-            physics = physics_only(n, world_path, urdf)
-            ros = through_ros(n, world_path, urdf_path)
+            physics, rounds = [], []
+            for _ in range(ROUNDS):
+                physics.append(physics_only(n, world_path, urdf))
+                rounds.append(through_ros(n, world_path, urdf_path))
+            rtf = statistics.median(r['rtf'] for r in rounds)
+            cpu = statistics.median(r['cpu'] for r in rounds)
             # per robot: the plant's CPU a simulated second, over n
-            per_robot = ros['cpu'] / ros['rtf'] / n
+            per_robot = statistics.median(r['cpu'] / r['rtf'] for r in rounds) / n
+            physics_per_robot = statistics.median(physics) / n
             print('%5d %7.3f %11.1f%% %11.2f%% %11.2f%% %9.2f %12.2f %12.2f' % (
-                n, ros['rtf'], 100 * ros['cpu'], 100 * per_robot, 100 * physics / n, per_robot / (physics / n),
-                ros['rates'].get('scan', 0.0), ros['rates'].get('odom', 0.0)), flush=True)
+                n, rtf, 100 * cpu, 100 * per_robot, 100 * physics_per_robot, per_robot / physics_per_robot,
+                statistics.median(r['rates'].get('scan', 0.0) for r in rounds),
+                statistics.median(r['rates'].get('odom', 0.0) for r in rounds)), flush=True)
     print('target (issue 56): 50 robots at RTF >= 0.99 with the node\'s cost a robot within 1.5x the '
           'physics-only cost; 100 robots run')
 

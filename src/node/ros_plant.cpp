@@ -444,6 +444,13 @@ void RosPlant::pace()
   const ros::WallDuration slice(0.01);
   ros::WallTime target = pace_start_wall_ + ros::WallDuration((world_->timeNs() - pace_start_sim_ns_) * 1e-9 / real_time_factor_);
   ros::WallTime now = ros::WallTime::now();
+  // Steps go on without a sleep until the simulation is kPaceSlack ahead of the wall clock: a sleep
+  // and its wake-up cost the kernel more than a light step (with a sleep after every 1 ms step the
+  // scheduler was a sixth of the node's CPU with 50 robots, make bench-fleet), and the simulated
+  // time keeps to the wall clock within that slack.
+  static const ros::WallDuration kPaceSlack(0.002);
+  if (target > now && target - now < kPaceSlack)
+    return;
   while (target > now && ros::ok() && stepping())
   {
     std::min(target - now, slice).sleep();
