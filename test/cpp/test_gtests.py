@@ -29,7 +29,7 @@ from suite_paths import TEST_DIR
 PACKAGE = 'tianracer_description'
 SOURCES = sorted(glob.glob(os.path.join(TEST_DIR, 'cpp', 'test_*.cpp')))
 CASE_TIMEOUT = 300  # s; a case that hangs fails instead of stalling the suite
-RAY_CASTING_SOURCES = {'test_ray_caster', 'test_world_meshes'}
+RAY_CASTING_SOURCES = {'test_ray_caster', 'test_world_meshes', 'test_gazebo_sonar_sensor'}
 GL_SOURCES = {'test_gl_renderer'}
 LLVMPIPE_WIDTH = 'LP_NATIVE_VECTOR_WIDTH'
 

@@ -12,6 +12,7 @@
 #include <sdf/sdf.hh>
 
 #include "gazebo/common/Console.hh"
+#include "gazebo/common/Events.hh"
 #include "gazebo/common/Exception.hh"
 #include "gazebo/common/SphericalCoordinates.hh"
 
@@ -54,12 +55,16 @@ World::World(std::shared_ptr<WorldBridge> bridge)
   node_.reset(new transport::Node());
   node_->Init(this->Name());
   factory_sub_ = node_->Subscribe("~/factory", &World::OnFactoryMsg, this);
+  // (else a world whose models come and go under new names keeps every one's handle: its links and
+  // joints with it)
+  delete_entity_ = event::Events::ConnectDeleteEntity([this](const std::string& name) { models_.erase(name); });
   std::lock_guard<std::mutex> lock(worlds_mutex);
   worlds.push_back(this);
 }
 
 World::~World()
 {
+  delete_entity_.reset();
   factory_sub_.reset();  // no message may come to a world that is going
   node_->Fini();
   std::lock_guard<std::mutex> lock(worlds_mutex);

@@ -86,6 +86,7 @@ void TopicManager::Unadvertise(const std::string& _topic, uint32_t _publisherId)
     return;
   dropHandles(found->second.publishers,
               [_publisherId](const PublisherPtr& publisher) { return publisher->Id() == _publisherId; });
+  this->forgetIfUnused(found);
 }
 
 void TopicManager::Subscribe(const std::string& _topic, const NodePtr& _node, unsigned int _callbackId,
@@ -117,6 +118,17 @@ void TopicManager::Unsubscribe(const std::string& _topic, const NodePtr& _node)
   if (found == this->topics.end())
     return;
   dropHandles(found->second.subscribers, [&](const NodePtr& node) { return node == _node; });
+  this->forgetIfUnused(found);
+}
+
+void TopicManager::forgetIfUnused(std::map<std::string, Topic>::iterator _topic)
+{
+  // a topic nobody publishes on or listens to any more goes, as Gazebo's publication does: models
+  // spawned under new names would otherwise leave their sensors' topics behind for good
+  dropExpired(_topic->second.publishers);
+  dropExpired(_topic->second.subscribers);
+  if (_topic->second.publishers.empty() && _topic->second.subscribers.empty())
+    this->topics.erase(_topic);
 }
 
 uint64_t TopicManager::Publish(const std::string& _topic, MessagePtr _message, const PublisherPtr& _publisher)

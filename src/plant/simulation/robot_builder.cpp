@@ -963,13 +963,11 @@ std::unique_ptr<Sensor> createSensor(Robot::Internals& r, const SensorDescriptio
   {
     // the plant has no sonar of its own to publish: one is sampled for a sensor plugin of the user's
     const SensorDescription rays = sonarSampling(s);
-    const std::string problem = !(rays.range_max > 0) ? "its <max> is not above its <min>" : "";
-    if (!problem.empty())
-    {
-      log.error("sensor '" + s.name + "' (sonar) of '" + r.name + "': " + problem + "; it measures nothing");
-      return nullptr;
-    }
-    return std::unique_ptr<Sensor>(new Lidar(rays, seed));
+    if (rays.range_max > 0)
+      return std::unique_ptr<Sensor>(new Lidar(rays, seed));
+    log.error("sensor '" + s.name + "' (sonar) of '" + r.name + "': its <max> is not above its <min>; it measures "
+              "nothing");
+    return nullptr;
   }
   if (!s.library.empty() && measuredByGazeboApi(s.type))
     return nullptr;  // Gazebo's sensor of the user's plugin measures it (loadGazeboSensorPlugins)

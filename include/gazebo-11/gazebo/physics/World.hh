@@ -87,6 +87,7 @@ private:
   mutable common::SphericalCoordinatesPtr spherical_;  // made at the first SphericalCoords
   transport::NodePtr node_;
   transport::SubscriberPtr factory_sub_;
+  event::ConnectionPtr delete_entity_;  // a model gone from the simulation: its handle goes from models_
 };
 }  // namespace physics
 }  // namespace gazebo

@@ -85,6 +85,8 @@ private:
   };
   void run();
   uint64_t enqueue(Delivery delivery);
+  // Erases the topic where it has no publisher and no subscriber left (the mutex held).
+  void forgetIfUnused(std::map<std::string, Topic>::iterator _topic);
 
   mutable std::mutex mutex;
   std::condition_variable queued;
