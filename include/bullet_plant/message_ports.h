@@ -92,6 +92,15 @@ public:
     out.swap(queue_);
     return out;
   }
+  // Each queued message to `visit`, oldest first, then none queued; the queue keeps its storage (a
+  // port drained after every step allocates nothing).
+  template <class Visit>
+  void drain(Visit visit)
+  {
+    for (const Msg& m : queue_)
+      visit(m);
+    queue_.clear();
+  }
   const Msg* latest() const { return has_latest_ ? &latest_ : nullptr; }
 
 private:

@@ -158,8 +158,8 @@ GazeboRosApiPlugin::GazeboRosApiPlugin(RosPlant& plant, ros::NodeHandle& private
     physics_reconfigure_->setCallback(
         [this](tianracer_description::PhysicsConfig& config, uint32_t level) { physicsReconfigure(config, level); });
     advertiseServices();
-    model_states_pub_ = nh_.advertise<gazebo_msgs::ModelStates>("model_states", 1);
-    link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("link_states", 1);
+    model_states_pub_ = CountedPublisher::advertise<gazebo_msgs::ModelStates>(nh_, "model_states", 1);
+    link_states_pub_ = CountedPublisher::advertise<gazebo_msgs::LinkStates>(nh_, "link_states", 1);
   }
   else
     ROS_INFO("ROS gazebo topics/services are disabled (~enable_ros_network false)");
@@ -232,9 +232,9 @@ void GazeboRosApiPlugin::advertiseViewerTopics()
 {
   scene_pub_ = nh_.advertise<std_msgs::String>("scene", 1, true);
   // What viewers pose the scene by (gzclient gets poses throttled too): link_states at ~scene_rate.
-  scene_link_states_pub_ = nh_.advertise<gazebo_msgs::LinkStates>("scene_link_states", 1);
+  scene_link_states_pub_ = CountedPublisher::advertise<gazebo_msgs::LinkStates>(nh_, "scene_link_states", 1);
   // And every contact (gzclient's contact view) on ~scene_contacts at the same rate.
-  scene_contacts_pub_ = nh_.advertise<gazebo_msgs::ContactsState>("scene_contacts", 1);
+  scene_contacts_pub_ = CountedPublisher::advertise<gazebo_msgs::ContactsState>(nh_, "scene_contacts", 1);
   // gzclient's step button, which Gazebo serves over its own transport (WorldControl's multi_step):
   // that many physics iterations, while paused.
   subscribers_.push_back(nh_.subscribe<std_msgs::UInt32>("step_physics", 10, [this](const std_msgs::UInt32::ConstPtr& msg) {
@@ -242,7 +242,7 @@ void GazeboRosApiPlugin::advertiseViewerTopics()
     plant_.post([this, iterations] { plant_.requestSteps(iterations); });
   }));
   ROS_INFO("a viewer asked: %s, %s, %s and %s are up", scene_pub_.getTopic().c_str(),
-           scene_link_states_pub_.getTopic().c_str(), scene_contacts_pub_.getTopic().c_str(),
+           scene_link_states_pub_.publisher().getTopic().c_str(), scene_contacts_pub_.publisher().getTopic().c_str(),
            subscribers_.back().getTopic().c_str());
   publishScene();  // the world's; again after each model that comes or goes (connectModelsChanged)
 }
@@ -1137,7 +1137,7 @@ bool GazeboRosApiPlugin::clearJointForces(gazebo_msgs::JointRequest::Request& re
 
 void GazeboRosApiPlugin::publishModelStates()
 {
-  if (model_states_pub_.getNumSubscribers() == 0)
+  if (!model_states_pub_.subscribed())
     return;
   gazebo_msgs::ModelStates states;
   for (const StaticModelDescription& fixed : world_.staticModels())  // at rest where they are
@@ -1152,7 +1152,7 @@ void GazeboRosApiPlugin::publishModelStates()
     states.pose.push_back(toMsg(robot->basePose()));
     states.twist.push_back(toMsg(robot->baseTwist()));
   }
-  model_states_pub_.publish(states);
+  plant_.outbox().publish(model_states_pub_.publisher(), std::move(states));
 }
 
 gazebo_msgs::LinkStates GazeboRosApiPlugin::linkStates()
@@ -1177,27 +1177,26 @@ gazebo_msgs::LinkStates GazeboRosApiPlugin::linkStates()
 
 void GazeboRosApiPlugin::publishLinkStates()
 {
-  const bool every_step = link_states_pub_.getNumSubscribers() > 0;
-  const bool for_scene = scene_link_states_pub_.getNumSubscribers() > 0 &&
+  const bool every_step = link_states_pub_.subscribed();
+  const bool for_scene = scene_link_states_pub_.subscribed() &&
                          (scene_link_states_gate_.due(world_.timeNs()) || plant_.lastRequestedStep());
   if (!every_step && !for_scene)
     return;
-  const gazebo_msgs::LinkStates states = linkStates();
-  if (every_step)
-    link_states_pub_.publish(states);
-  if (for_scene)
-    scene_link_states_pub_.publish(states);
+  gazebo_msgs::LinkStates states = linkStates();
+  if (every_step && for_scene)
+    plant_.outbox().publish(scene_link_states_pub_.publisher(), states);
+  plant_.outbox().publish((every_step ? link_states_pub_ : scene_link_states_pub_).publisher(), std::move(states));
 }
 
 void GazeboRosApiPlugin::publishScenePoses()
 {
-  if (scene_link_states_pub_.getNumSubscribers() > 0)
-    scene_link_states_pub_.publish(linkStates());
+  if (scene_link_states_pub_.subscribed())
+    plant_.outbox().publish(scene_link_states_pub_.publisher(), linkStates());
 }
 
 void GazeboRosApiPlugin::publishSceneContacts()
 {
-  if (scene_contacts_pub_.getNumSubscribers() == 0 || !scene_contacts_gate_.due(world_.timeNs()))
+  if (!scene_contacts_pub_.subscribed() || !scene_contacts_gate_.due(world_.timeNs()))
     return;
   gazebo_msgs::ContactsState contacts;
   contacts.header.stamp = rosTime(world_.timeNs());
@@ -1214,7 +1213,7 @@ void GazeboRosApiPlugin::publishSceneContacts()
     // the force on collision1 at the point: about the point itself it has no torque
     addContactPoint(contacts.states.back(), c.position, c.normal, c.depth, c.force, urdf::Vector3());
   }
-  scene_contacts_pub_.publish(contacts);
+  plant_.outbox().publish(scene_contacts_pub_.publisher(), std::move(contacts));
 }
 
 void GazeboRosApiPlugin::publishScene()
@@ -1223,7 +1222,7 @@ void GazeboRosApiPlugin::publishScene()
     return;
   std_msgs::String scene;
   scene.data = sceneJson(sceneOf(world_));
-  scene_pub_.publish(scene);
+  plant_.outbox().publish(scene_pub_, std::move(scene));
 }
 
 }  // namespace bullet_plant

@@ -49,6 +49,7 @@
 #include <tianracer_description/PhysicsConfig.h>
 
 #include "bullet_plant/rate_gate.h"
+#include "counted_publisher.h"
 
 namespace bullet_plant
 {
@@ -162,7 +163,9 @@ private:
   std::vector<ros::Subscriber> subscribers_;
   gazebo_msgs::LinkStates linkStates();
   static constexpr double kDefaultSceneRate = 30.0;  // Hz
-  ros::Publisher model_states_pub_, link_states_pub_, scene_pub_, scene_link_states_pub_, scene_contacts_pub_;
+  // Asked after every step whether anyone subscribes: counted (counted_publisher.h).
+  CountedPublisher model_states_pub_, link_states_pub_, scene_link_states_pub_, scene_contacts_pub_;
+  ros::Publisher scene_pub_;
   RateGate scene_link_states_gate_, scene_contacts_gate_;
   std::map<std::string, uint32_t> get_model_state_calls_;  // get_model_state's header.seq, per model
 };

@@ -26,6 +26,8 @@ int main(int argc, char** argv)
           "  ~pub_clock_frequency  /clock rate in Hz (default 100)\n"
           "  ~paused               start paused (default false)\n"
           "  ~iterations           simulate this many steps, then stop (default 0: until shut down)\n"
+          "  ~publishing_threads   threads that publish what each step built (default 1; 0: the simulation\n"
+          "                        thread publishes); the simulation is the same with any number\n"
           "  ~enable_ros_network   false: none of gazebo_ros's services and topics, as Gazebo (default true)\n"
           "  ~system_plugins       Gazebo system plugin files of the user's own to load (gzserver -s FILE): a list,\n"
           "                        or one file a line\n"

@@ -5,10 +5,11 @@
 #include "bullet_plant/geometry.h"
 #include "bullet_plant/robot.h"
 #include "msg_conversions.h"
+#include "outbox.h"
 
 namespace bullet_plant
 {
-OdometryPublisher::OdometryPublisher(Robot& robot, ros::NodeHandle& nh) : robot_(robot)
+OdometryPublisher::OdometryPublisher(Robot& robot, ros::NodeHandle& nh, Outbox& outbox) : robot_(robot), outbox_(outbox)
 {
   odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
   tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
@@ -30,12 +31,12 @@ void OdometryPublisher::publishNow(int64_t time_ns, bool tf)
       time_ns, "odom", robot_.description().model->getRoot()->name, pose,
       rotate(to_body, urdf::Vector3(twist.linear[0], twist.linear[1], twist.linear[2])),
       rotate(to_body, urdf::Vector3(twist.angular[0], twist.angular[1], twist.angular[2])));
-  odom_pub_.publish(odom);
-  if (!tf)
-    return;
-  tf2_msgs::TFMessage msg;
-  msg.transforms.push_back(odometryTransform(odom));
-  tf_pub_.publish(msg);
+  tf2_msgs::TFMessage transform;
+  if (tf)
+    transform.transforms.push_back(odometryTransform(odom));
+  outbox_.publish(odom_pub_, std::move(odom));
+  if (tf)
+    outbox_.publish(tf_pub_, std::move(transform));
 }
 
 }  // namespace bullet_plant

@@ -10,12 +10,13 @@
 
 namespace bullet_plant
 {
+class Outbox;
 class Robot;
 
 class OdometryPublisher
 {
 public:
-  OdometryPublisher(Robot& robot, ros::NodeHandle& nh);
+  OdometryPublisher(Robot& robot, ros::NodeHandle& nh, Outbox& outbox);
   // After a step: publishes when the period has passed (or time went back, after a reset); the
   // transform only with `tf` (false while a controller of the robot publishes its odometry's).
   void publish(int64_t time_ns, bool tf = true);
@@ -24,6 +25,7 @@ private:
   void publishNow(int64_t time_ns, bool tf);
 
   Robot& robot_;
+  Outbox& outbox_;
   ros::Publisher odom_pub_, tf_pub_;
   RateGate gate_{periodNsOfRate(50.0)};
 };

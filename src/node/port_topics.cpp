@@ -18,8 +18,9 @@ struct PortTransport
   using Delivery = std::function<bool(Port&)>;  // hands one message to the port it runs on
   using Post = std::function<void(Delivery, std::string rejected)>;
   std::function<ros::Subscriber(ros::NodeHandle&, const std::string& topic, Post)> subscribe;
-  std::function<ros::Publisher(ros::NodeHandle&, const std::string& topic)> advertise;
-  std::function<void(Port&, const ros::Publisher&)> drain;
+  std::function<CountedPublisher(ros::NodeHandle&, const std::string& topic)> advertise;
+  // What the output port holds, published (or, nobody subscribing, let go unbuilt).
+  std::function<void(Port&, const CountedPublisher&, Outbox&)> drain;
   // An action (action_messages.h): its goal port's transport serves it; the cancel, result and
   // feedback ports are carried by that server (`by_action`).
   std::function<std::shared_ptr<ActionChannel>(ros::NodeHandle&, const std::string& action, RosPlant&,
@@ -54,10 +55,15 @@ template <class Msg, class RosMsg>
 PortTransport output(uint32_t queue_size)
 {
   PortTransport t;
-  t.advertise = [queue_size](ros::NodeHandle& nh, const std::string& topic) { return nh.advertise<RosMsg>(topic, queue_size); };
-  t.drain = [](Port& p, const ros::Publisher& pub) {
-    for (const Msg& m : static_cast<OutputPort<Msg>&>(p).take())
-      pub.publish(toMsg(m));
+  t.advertise = [queue_size](ros::NodeHandle& nh, const std::string& topic) {
+    return CountedPublisher::advertise<RosMsg>(nh, topic, queue_size);
+  };
+  t.drain = [](Port& p, const CountedPublisher& pub, Outbox& outbox) {
+    auto& port = static_cast<OutputPort<Msg>&>(p);
+    if (pub.subscribed())
+      port.drain([&](const Msg& m) { outbox.publish(pub.publisher(), toMsg(m)); });
+    else
+      port.drain([](const Msg&) {});
   };
   return t;
 }
@@ -181,7 +187,7 @@ std::string PortTopics::topicOf(const std::string& owner, const Port& port) cons
 void PortTopics::refresh(const std::vector<std::pair<std::string, const MessagePorts*>>& owners)
 {
   std::map<std::string, ros::Subscriber> subscribers;
-  std::map<std::string, ros::Publisher> publishers;
+  std::map<std::string, CountedPublisher> publishers;
   std::map<std::string, std::shared_ptr<ActionChannel>> actions;
   std::map<std::string, ros::ServiceServer> services;
   std::vector<std::pair<Port*, std::string>> action_outputs;
@@ -292,7 +298,7 @@ ros::Subscriber PortTopics::subscribe(const std::string& owner, const Port& port
 void PortTopics::publish()
 {
   for (Output& out : outputs_)
-    out.transport->drain(*out.port, out.publisher);
+    out.transport->drain(*out.port, out.publisher, plant_.outbox());
   for (auto& out : action_outputs_)
     out.second->drain(*out.first);
 }

@@ -2,8 +2,8 @@
 // controllers, a model plugin), a subscriber per input and a publisher per output topic, each
 // port's message type mapped to its ROS message once (port_topics.cpp). Messages that arrive are
 // posted to the simulation thread and handed to the port found again there (its owner may be gone
-// by then); outputs are drained after each step; a service call waits for its answer from the
-// simulation thread.
+// by then); outputs are drained after each step into the plant's outbox (outbox.h), or let go unbuilt
+// while nobody subscribes; a service call waits for its answer from the simulation thread.
 #pragma once
 
 #include <functional>
@@ -17,6 +17,7 @@
 
 #include "action_channel.h"
 #include "bullet_plant/message_ports.h"
+#include "counted_publisher.h"
 
 namespace bullet_plant
 {
@@ -42,7 +43,7 @@ private:
   {
     Port* port;
     const PortTransport* transport;
-    ros::Publisher publisher;
+    CountedPublisher publisher;
   };
   std::string topicOf(const std::string& owner, const Port& port) const;
   ros::Subscriber subscribe(const std::string& owner, const Port& port, const PortTransport& transport);
@@ -55,7 +56,7 @@ private:
   FindOwner find_owner_;
   std::shared_ptr<bool> alive_;  // posted work finds it false once this is gone
   std::map<std::string, ros::Subscriber> subscribers_;  // by owner and topic
-  std::map<std::string, ros::Publisher> publishers_;    // by topic, shared by the owners on it
+  std::map<std::string, CountedPublisher> publishers_;  // by topic, shared by the owners on it
   std::vector<Output> outputs_;                         // owners' order, ports' order
   std::map<std::string, std::shared_ptr<ActionChannel>> actions_;       // by action name (topic)
   std::map<std::string, ros::ServiceServer> services_;                  // by service name

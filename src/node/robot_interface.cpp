@@ -32,9 +32,9 @@ RobotInterface::RobotInterface(RosPlant& plant, Robot& robot)
   // The plant's ground truth is for URDF robots; an SDF model publishes only what its plugins
   // publish, as in Gazebo: odom -> "link" of every box would fight on /tf.
   if (!plugin_odometry_ && robot.description().format == RobotDescription::Format::Urdf)
-    odometry_.reset(new OdometryPublisher(robot, nh_));
+    odometry_.reset(new OdometryPublisher(robot, nh_, plant.outbox()));
   for (Sensor* sensor : robot.sensors())
-    if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor, robot, plant.world().timeStep()))
+    if (std::unique_ptr<SensorPlugin> plugin = SensorPlugin::create(*sensor, robot, plant.world().timeStep(), plant.outbox()))
       sensor_plugins_.push_back({sensor, std::move(plugin)});
   const std::string& estop = robot.description().control.e_stop_topic;
   if (!estop.empty())

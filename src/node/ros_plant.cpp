@@ -124,6 +124,15 @@ std::vector<std::string> readListParam(ros::NodeHandle& private_nh, const std::s
 RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPluginLoader load_model_plugins)
   : nh_(nh), private_nh_(private_nh), load_model_plugins_(std::move(load_model_plugins))
 {
+  // Publishing on threads of its own by default: the simulation thread steps while they serialize
+  // and write (outbox.h); 0 publishes on the simulation thread, as before.
+  int publishing_threads = 1;
+  private_nh_.param("publishing_threads", publishing_threads, publishing_threads);
+  if (publishing_threads < 0 || publishing_threads > 64)
+    throw std::runtime_error("parameter " + private_nh_.resolveName("publishing_threads") + " = " +
+                             std::to_string(publishing_threads) +
+                             ": give 0 (publish on the simulation thread) or a number of threads up to 64 (default 1)");
+  outbox_.reset(new Outbox(static_cast<unsigned>(publishing_threads)));
   std::string world_file;
   private_nh_.param<std::string>("world_name", world_file, "");
   bool verbose = false;
@@ -193,6 +202,7 @@ RosPlant::~RosPlant()
 {
   world_->setModelInserter(nullptr);  // a plugin going with the world inserts into it, not into this
   robots_.clear();
+  outbox_.reset();  // what the plugins queued, published
 }
 
 void RosPlant::copyParams(const std::string& key)
@@ -410,7 +420,7 @@ void RosPlant::publishClock(bool force)
     return;
   rosgraph_msgs::Clock clock;
   clock.clock = rosTime(world_->timeNs());
-  clock_pub_.publish(clock);
+  outbox_->publish(clock_pub_, clock);
 }
 
 void RosPlant::stepAndPublish()
@@ -429,6 +439,7 @@ void RosPlant::stepAndPublish()
   }
   for (const std::function<void()>& callback : world_update_end_)
     callback();
+  outbox_->endOfStep();
 }
 
 void RosPlant::connectWorldUpdateEnd(std::function<void()> callback)
@@ -451,6 +462,7 @@ void RosPlant::pace()
   static const ros::WallDuration kPaceSlack(0.002);
   if (target > now && target - now < kPaceSlack)
     return;
+  outbox_->handOver();  // nothing waits while the simulation sleeps
   while (target > now && ros::ok() && stepping())
   {
     std::min(target - now, slice).sleep();
@@ -501,6 +513,7 @@ void RosPlant::run()
     runQueuedWork();
     if (!stepping())
     {
+      outbox_->handOver();  // the last step's messages (a stepper waits for them)
       std::unique_lock<std::mutex> lock(queue_mutex_);
       queue_cv_.wait_for(lock, std::chrono::milliseconds(10), [this] { return !queue_.empty(); });
       last_status_ = ros::WallTime();
@@ -518,6 +531,7 @@ void RosPlant::run()
   }
   // Anyone still waiting on the sim thread gets an answer.
   runQueuedWork();
+  outbox_->handOver();
 }
 
 }  // namespace bullet_plant

@@ -24,6 +24,7 @@
 #include "bullet_plant/rate_gate.h"
 #include "bullet_plant/sdf_model.h"
 #include "bullet_plant/world.h"
+#include "outbox.h"
 
 namespace bullet_plant
 {
@@ -63,6 +64,8 @@ public:
 
   // On the simulation thread (the services' work, posted there).
   World& world() { return *world_; }
+  // Where everything the node publishes after a step goes (~publishing_threads).
+  Outbox& outbox() { return *outbox_; }
   // Paused, /clock says at once where the simulation stopped.
   void applyPaused(bool paused);
   // gzclient's step button (Gazebo's WorldControl multi_step): while paused, `iterations` more
@@ -119,6 +122,7 @@ private:
   void pace();
 
   ros::NodeHandle nh_, private_nh_;
+  std::unique_ptr<Outbox> outbox_;  // before the plugins that publish into it: it goes after them
   std::unique_ptr<World> world_;
   ModelPluginLoader load_model_plugins_;
   std::map<std::string, std::unique_ptr<ModelPlugins>> robots_;

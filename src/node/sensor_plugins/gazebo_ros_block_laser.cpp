@@ -81,7 +81,7 @@ public:
         intensities[k] = float(0.0 + gaussian_kernel_(0.0, gaussian_noise_));
       }
     }
-    cloud_pub_.publish(cloud_);
+    outbox().publish(cloud_pub_, cloud_);
   }
 
 private:

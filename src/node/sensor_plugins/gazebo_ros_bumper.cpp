@@ -54,7 +54,7 @@ public:
         addContactPoint(state, point.position, point.normal, point.depth, point.force, point.torque);
       contacts_.states.push_back(std::move(state));
     }
-    contact_pub_.publish(contacts_);
+    outbox().publish(contact_pub_, contacts_);
   }
 
 private:

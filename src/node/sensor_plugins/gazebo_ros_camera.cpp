@@ -111,7 +111,9 @@ void GazeboRosCamera::OnUpdate()
 void GazeboRosCamera::publish(const CameraFrame& frame)
 {
   // Images are serialized from the frame as roscpp sends them, only for topics with subscribers
-  // (frame_messages.h).
+  // (frame_messages.h). Published here, not through the outbox: the message is a view of the
+  // frame's pixels, which the camera's next frame overwrites, and queuing a copy would cost what
+  // serializing it does. Camera frames are rare beside a fleet's odometry and scans.
   const std_msgs::Header header = frameHeader(frame, frame_id_);
   image_pub_.publish(EncodedImageOf{frame, header, encoding_});
   info_pub_.publish(cameraInfo(frame, header));

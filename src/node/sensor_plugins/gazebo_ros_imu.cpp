@@ -26,7 +26,7 @@ public:
   void OnUpdate() override
   {
     if (takeUpdate(*imu_) && imu_->hasReading())
-      imu_pub_.publish(toMsg(imu_->latest(), frame_id_));
+      outbox().publish(imu_pub_, toMsg(imu_->latest(), frame_id_));
   }
 
 private:

@@ -25,7 +25,7 @@ public:
   void OnUpdate() override
   {
     if (takeUpdate(*lidar_))
-      scan_pub_.publish(toMsg(lidar_->latest(), frame_id_));
+      outbox().publish(scan_pub_, toMsg(lidar_->latest(), frame_id_));
   }
 
 private:

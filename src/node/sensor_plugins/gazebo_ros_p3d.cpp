@@ -29,7 +29,7 @@ public:
   void OnUpdate() override
   {
     if (takeUpdate(*odometry_) && odometry_->hasReading())
-      odometry_pub_.publish(toMsg(odometry_->latest(), frame_id_, child_frame_id_));
+      outbox().publish(odometry_pub_, toMsg(odometry_->latest(), frame_id_, child_frame_id_));
   }
 
 private:

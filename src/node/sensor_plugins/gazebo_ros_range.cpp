@@ -54,7 +54,7 @@ public:
     if (shortest < range_.max_range)
       shortest = float(std::min(shortest + gaussian_kernel_(0.0, gaussian_noise_), double(range_.max_range)));
     range_.range = shortest;
-    range_pub_.publish(range_);
+    outbox().publish(range_pub_, range_);
   }
 
 private:

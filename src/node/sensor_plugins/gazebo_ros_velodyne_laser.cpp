@@ -99,7 +99,7 @@ public:
       cloud_.row_step = uint32_t(bytes);
       cloud_.is_dense = true;
     }
-    cloud_pub_.publish(cloud_);
+    outbox().publish(cloud_pub_, cloud_);
   }
 
 private:

@@ -63,7 +63,7 @@ public:
       shortest = float(std::max(double(range_.min_range),
                                 std::min(sensor_model_(double(shortest), dt, rng_), double(range_.max_range))));
     range_.range = shortest;
-    range_pub_.publish(range_);
+    outbox().publish(range_pub_, range_);
   }
 
 private:

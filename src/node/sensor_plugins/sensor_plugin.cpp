@@ -5,7 +5,7 @@
 
 namespace bullet_plant
 {
-std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& robot, double step_size)
+std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& robot, double step_size, Outbox& outbox)
 {
   if (!sensor.publishesOnRos())
     return nullptr;
@@ -15,6 +15,7 @@ std::unique_ptr<SensorPlugin> SensorPlugin::create(Sensor& sensor, const Robot& 
   std::unique_ptr<SensorPlugin> plugin = (*make)();
   plugin->namespace_ = pluginNamespace(sensor.description(), robot.spawnNamespace(), robot.name());
   plugin->step_size_ = step_size;
+  plugin->outbox_ = &outbox;
   plugin->Load(sensor);
   return plugin;
 }

@@ -5,7 +5,8 @@
 // computed since the last call (the sensor itself keeps <update_rate>: Sensor::due). A plugin
 // registers itself under its library's file names with GAZEBO_ROS_SENSOR_PLUGIN in its own file; its
 // ROS-free half (the <sensor> it loads in, its naming rules), which the plant and Python read too, is
-// its file of the same name in src/plant/gazebo_plugins/. Everything runs on the simulation thread.
+// its file of the same name in src/plant/gazebo_plugins/. Everything runs on the simulation thread;
+// what a plugin publishes goes through the plant's outbox (outbox.h), which publishing threads empty.
 #pragma once
 
 #include <cmath>
@@ -18,6 +19,7 @@
 
 #include <ros/ros.h>
 
+#include "outbox.h"
 #include "bullet_plant/gaussian_kernel.h"
 #include "bullet_plant/plugin_names.h"
 #include "bullet_plant/registry.h"
@@ -39,8 +41,8 @@ public:
   // The plugin for `sensor`'s <plugin filename>; null for a sensor without one, or with a file no
   // plugin registered (the plant warned about that at spawn).
   // `robot` is the model it belongs to: its name and spawn namespace name the plugin's namespace.
-  // `step_size` is the world's step (s).
-  static std::unique_ptr<SensorPlugin> create(Sensor& sensor, const Robot& robot, double step_size);
+  // `step_size` is the world's step (s); `outbox` where its messages go.
+  static std::unique_ptr<SensorPlugin> create(Sensor& sensor, const Robot& robot, double step_size, Outbox& outbox);
 
   // After each step at simulated time `time_ns`: OnUpdate with simTimeNs() set.
   void update(int64_t time_ns)
@@ -52,6 +54,8 @@ public:
 protected:
   int64_t simTimeNs() const { return sim_time_ns_; }
   double stepSize() const { return step_size_; }
+  // Where the plugin's messages go: outbox().publish(publisher, message).
+  Outbox& outbox() const { return *outbox_; }
   // The plugin's namespace (pluginNamespace), set before Load.
   const std::string& robotNamespace() const { return namespace_; }
   // The node handle of the plugin, in its namespace.
@@ -67,6 +71,7 @@ private:
   uint64_t seen_updates_ = 0;
   int64_t sim_time_ns_ = 0;
   double step_size_ = 0.001;
+  Outbox* outbox_ = nullptr;
 };
 
 // The publisher of a plugin's point cloud topic, or none for an empty <topicName>: upstream
