@@ -195,7 +195,8 @@ RosPlant::RosPlant(ros::NodeHandle& nh, ros::NodeHandle& private_nh, ModelPlugin
                              std::to_string(iterations) + ": give a number of steps, or 0 to run until stopped");
   iterations_ = static_cast<uint64_t>(iterations);
   const unsigned threads = outbox_->threads();
-  const std::string publishing = threads == 0 ? "the simulation thread" : std::to_string(threads) + (threads == 1 ? " thread" : " threads");
+  const std::string publishing =
+      threads == 0 ? "the simulation thread" : std::to_string(threads) + (threads == 1 ? " thread" : " threads");
   ROS_INFO("Bullet plant ready: world '%s', %.4f s steps, real time factor %g%s, publishing on %s",
            description.name.c_str(), world_->timeStep(), real_time_factor_, paused ? " (paused)" : "", publishing.c_str());
 }
