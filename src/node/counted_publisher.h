@@ -20,7 +20,7 @@ public:
   CountedPublisher() = default;
 
   template <class Msg>
-  static CountedPublisher advertise(ros::NodeHandle& nh, const std::string& topic, uint32_t queue_size,
+  static CountedPublisher advertise(ros::NodeHandle nh, const std::string& topic, uint32_t queue_size,
                                     bool latch = false)
   {
     CountedPublisher counted;

@@ -44,6 +44,7 @@ private:
     Port* port;
     const PortTransport* transport;
     CountedPublisher publisher;
+    uint64_t drained = ~uint64_t(0);  // the port's published() when last drained
   };
   std::string topicOf(const std::string& owner, const Port& port) const;
   ros::Subscriber subscribe(const std::string& owner, const Port& port, const PortTransport& transport);

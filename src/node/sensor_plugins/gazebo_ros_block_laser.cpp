@@ -39,7 +39,7 @@ public:
     cloud_pub_ = advertiseUnlessEmpty<sensor_msgs::PointCloud>(nh, sensor, pluginTopic(d), 1);
   }
 
-  bool subscribed() const override { return cloud_pub_ && cloud_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return cloud_pub_.subscribed(); }
 
   void OnUpdate() override
   {
@@ -81,7 +81,7 @@ public:
         intensities[k] = float(0.0 + gaussian_kernel_(0.0, gaussian_noise_));
       }
     }
-    outbox().publish(cloud_pub_, cloud_);
+    outbox().publish(cloud_pub_.publisher(), cloud_);
   }
 
 private:
@@ -101,7 +101,7 @@ private:
   sensor_msgs::PointCloud cloud_;
   double gaussian_noise_ = 0.0;
   GaussianKernel gaussian_kernel_;
-  ros::Publisher cloud_pub_;
+  CountedPublisher cloud_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosBlockLaser, "libgazebo_ros_block_laser.so");

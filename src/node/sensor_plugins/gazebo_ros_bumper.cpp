@@ -25,11 +25,11 @@ public:
     std::string prefix;
     nh.getParam("tf_prefix", prefix);  // its own namespace only, no search
     contacts_.header.frame_id = pluginFrameId(d, prefix);
-    contact_pub_ = nh.advertise<gazebo_msgs::ContactsState>(
-        requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' bumperTopicName"), 1);
+    contact_pub_ = CountedPublisher::advertise<gazebo_msgs::ContactsState>(
+        nh, requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' bumperTopicName"), 1);
   }
 
-  bool subscribed() const override { return contact_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return contact_pub_.subscribed(); }
 
   void OnUpdate() override
   {
@@ -54,13 +54,13 @@ public:
         addContactPoint(state, point.position, point.normal, point.depth, point.force, point.torque);
       contacts_.states.push_back(std::move(state));
     }
-    outbox().publish(contact_pub_, contacts_);
+    outbox().publish(contact_pub_.publisher(), contacts_);
   }
 
 private:
   ContactSensor* contact_sensor_ = nullptr;
   gazebo_msgs::ContactsState contacts_;
-  ros::Publisher contact_pub_;
+  CountedPublisher contact_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosBumper, "libgazebo_ros_bumper.so");

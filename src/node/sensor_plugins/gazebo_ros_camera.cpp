@@ -75,8 +75,9 @@ void GazeboRosCamera::Load(Sensor& sensor)
   const SensorDescription& d = sensor.description();
   const std::string camera_name = d.pluginParam("cameraName");
   frame_id_ = pluginFrameId(d, searchedTfPrefix(camera_name.empty() ? nh_ : ros::NodeHandle(nh_, camera_name)));
-  image_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(pluginTopic(d), owner()), 2);
-  info_pub_ = nh_.advertise<sensor_msgs::CameraInfo>(requireValidRosName(pluginTopic(d, PluginTopic::CameraInfo), owner()), 2);
+  image_pub_ = CountedPublisher::advertise<sensor_msgs::Image>(nh_, requireValidRosName(pluginTopic(d), owner()), 2);
+  info_pub_ = CountedPublisher::advertise<sensor_msgs::CameraInfo>(
+      nh_, requireValidRosName(pluginTopic(d, PluginTopic::CameraInfo), owner()), 2);
   hack_baseline_ = zero_baseline_ ? 0.0 : d.pluginNumber("hackBaseline", 0.0);
   encoding_ = imageEncodingOf(d.image_format);
   if (!encoding_.known)
@@ -98,7 +99,7 @@ void GazeboRosCamera::computeCameraInfo()
 
 bool GazeboRosCamera::subscribed() const
 {
-  return image_pub_.getNumSubscribers() + info_pub_.getNumSubscribers() > 0;
+  return image_pub_.subscribed() || info_pub_.subscribed();
 }
 
 void GazeboRosCamera::OnUpdate()
@@ -115,8 +116,8 @@ void GazeboRosCamera::publish(const CameraFrame& frame)
   // frame's pixels, which the camera's next frame overwrites, and queuing a copy would cost what
   // serializing it does. Camera frames are rare beside a fleet's odometry and scans.
   const std_msgs::Header header = frameHeader(frame, frame_id_);
-  image_pub_.publish(EncodedImageOf{frame, header, encoding_});
-  info_pub_.publish(cameraInfo(frame, header));
+  image_pub_.publisher().publish(EncodedImageOf{frame, header, encoding_});
+  info_pub_.publisher().publish(cameraInfo(frame, header));
   publishFrame(frame, header);
 }
 

@@ -54,7 +54,7 @@ protected:
   sensor_msgs::CameraInfo info_;  // all but the header
 
 private:
-  ros::Publisher image_pub_, info_pub_;
+  CountedPublisher image_pub_, info_pub_;
 };
 
 // The CameraInfo fields upstream fills (width, height, plumb_bob D, K, R, P) for a camera of the

@@ -17,22 +17,23 @@ public:
   {
     imu_ = &sensorAs<Imu>(sensor, "gazebo_ros_imu");
     frame_id_ = pluginFrameId(sensor.description(), "");  // neither IMU plugin takes a tf_prefix
-    imu_pub_ = nodeHandle(sensor).advertise<sensor_msgs::Imu>(
-        requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"), 10);
+    imu_pub_ = CountedPublisher::advertise<sensor_msgs::Imu>(
+        nodeHandle(sensor), requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"),
+        10);
   }
 
-  bool subscribed() const override { return imu_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return imu_pub_.subscribed(); }
 
   void OnUpdate() override
   {
     if (takeUpdate(*imu_) && imu_->hasReading())
-      outbox().publish(imu_pub_, toMsg(imu_->latest(), frame_id_));
+      outbox().publish(imu_pub_.publisher(), toMsg(imu_->latest(), frame_id_));
   }
 
 private:
   Imu* imu_ = nullptr;
   std::string frame_id_;
-  ros::Publisher imu_pub_;
+  CountedPublisher imu_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosImu, "libgazebo_ros_imu_sensor.so", "libgazebo_ros_imu.so");

@@ -16,22 +16,22 @@ public:
     lidar_ = &sensorAs<Lidar>(sensor, "gazebo_ros_laser");
     ros::NodeHandle nh = nodeHandle(sensor);
     frame_id_ = pluginFrameId(sensor.description(), searchedTfPrefix(nh));
-    scan_pub_ = nh.advertise<sensor_msgs::LaserScan>(
-        requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"), 5);
+    scan_pub_ = CountedPublisher::advertise<sensor_msgs::LaserScan>(
+        nh, requireValidRosName(pluginTopic(sensor.description()), "sensor '" + sensor.name() + "' topic"), 5);
   }
 
-  bool subscribed() const override { return scan_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return scan_pub_.subscribed(); }
 
   void OnUpdate() override
   {
     if (takeUpdate(*lidar_))
-      outbox().publish(scan_pub_, toMsg(lidar_->latest(), frame_id_));
+      outbox().publish(scan_pub_.publisher(), toMsg(lidar_->latest(), frame_id_));
   }
 
 private:
   Lidar* lidar_ = nullptr;
   std::string frame_id_;
-  ros::Publisher scan_pub_;
+  CountedPublisher scan_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosLaser, "libgazebo_ros_laser.so", "libgazebo_ros_gpu_laser.so");

@@ -25,18 +25,19 @@ public:
       return;
     }
     const SensorDescription& d = sensor.description();
-    depth_pub_ = nh_.advertise<sensor_msgs::Image>(requireValidRosName(pluginTopic(d, PluginTopic::DepthImage), owner()), 2);
-    depth_info_pub_ = nh_.advertise<sensor_msgs::CameraInfo>(
-        requireValidRosName(pluginTopic(d, PluginTopic::DepthCameraInfo), owner()), 2);
-    points_pub_ =
-        nh_.advertise<sensor_msgs::PointCloud2>(requireValidRosName(pluginTopic(d, PluginTopic::Points), owner()), 2);
+    depth_pub_ = CountedPublisher::advertise<sensor_msgs::Image>(
+        nh_, requireValidRosName(pluginTopic(d, PluginTopic::DepthImage), owner()), 2);
+    depth_info_pub_ = CountedPublisher::advertise<sensor_msgs::CameraInfo>(
+        nh_, requireValidRosName(pluginTopic(d, PluginTopic::DepthCameraInfo), owner()), 2);
+    points_pub_ = CountedPublisher::advertise<sensor_msgs::PointCloud2>(
+        nh_, requireValidRosName(pluginTopic(d, PluginTopic::Points), owner()), 2);
     cutoff_ = DepthCutoff{camera_->pointCloudCutoff(), camera_->pointCloudCutoffMax()};
   }
 
   bool subscribed() const override
   {
-    return GazeboRosCamera::subscribed() || depth_pub_.getNumSubscribers() + depth_info_pub_.getNumSubscribers() +
-                                                    points_pub_.getNumSubscribers() > 0;
+    return GazeboRosCamera::subscribed() || depth_pub_.subscribed() || depth_info_pub_.subscribed() ||
+           points_pub_.subscribed();
   }
 
 protected:
@@ -48,12 +49,12 @@ private:
   {
     if (!camera_->depthSensor())
       return;
-    depth_pub_.publish(DepthImageOf{frame, header, cutoff_});
-    depth_info_pub_.publish(cameraInfo(frame, header));
-    points_pub_.publish(PointCloudOf{frame, header, cutoff_, organized_cloud_, &encoding_});
+    depth_pub_.publisher().publish(DepthImageOf{frame, header, cutoff_});
+    depth_info_pub_.publisher().publish(cameraInfo(frame, header));
+    points_pub_.publisher().publish(PointCloudOf{frame, header, cutoff_, organized_cloud_, &encoding_});
   }
 
-  ros::Publisher depth_pub_, depth_info_pub_, points_pub_;
+  CountedPublisher depth_pub_, depth_info_pub_, points_pub_;
 };
 
 class GazeboRosDepthCamera : public GazeboRosOpenniKinect

@@ -20,22 +20,22 @@ public:
     nh.getParam("tf_prefix", prefix);
     frame_id_ = pluginFrameId(sensor.description(), prefix);
     child_frame_id_ = pluginChildFrameId(sensor.description());
-    odometry_pub_ = nh.advertise<nav_msgs::Odometry>(
-        requireValidRosName(pluginTopic(sensor.description()), "plugin '" + sensor.name() + "' topicName"), 10);
+    odometry_pub_ = CountedPublisher::advertise<nav_msgs::Odometry>(
+        nh, requireValidRosName(pluginTopic(sensor.description()), "plugin '" + sensor.name() + "' topicName"), 10);
   }
 
-  bool subscribed() const override { return odometry_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return odometry_pub_.subscribed(); }
 
   void OnUpdate() override
   {
     if (takeUpdate(*odometry_) && odometry_->hasReading())
-      outbox().publish(odometry_pub_, toMsg(odometry_->latest(), frame_id_, child_frame_id_));
+      outbox().publish(odometry_pub_.publisher(), toMsg(odometry_->latest(), frame_id_, child_frame_id_));
   }
 
 private:
   GroundTruthOdometry* odometry_ = nullptr;
   std::string frame_id_, child_frame_id_;
-  ros::Publisher odometry_pub_;
+  CountedPublisher odometry_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosP3d, "libgazebo_ros_p3d.so");

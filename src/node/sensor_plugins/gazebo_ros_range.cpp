@@ -33,11 +33,11 @@ public:
     range_.max_range = float(d.range_max);
     gaussian_noise_ = d.pluginNumber("gaussianNoise", 0.0);
     publish_gate_.setPeriodNs(periodNsOfRate(d.pluginNumber("updateRate", 0.0)));
-    range_pub_ = nh.advertise<sensor_msgs::Range>(
-        requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' topicName"), 1);
+    range_pub_ = CountedPublisher::advertise<sensor_msgs::Range>(
+        nh, requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' topicName"), 1);
   }
 
-  bool subscribed() const override { return range_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return range_pub_.subscribed(); }
 
   void OnUpdate() override
   {
@@ -54,7 +54,7 @@ public:
     if (shortest < range_.max_range)
       shortest = float(std::min(shortest + gaussian_kernel_(0.0, gaussian_noise_), double(range_.max_range)));
     range_.range = shortest;
-    outbox().publish(range_pub_, range_);
+    outbox().publish(range_pub_.publisher(), range_);
   }
 
 private:
@@ -63,7 +63,7 @@ private:
   double gaussian_noise_ = 0.0;
   RateGate publish_gate_;  // updateRate
   GaussianKernel gaussian_kernel_;
-  ros::Publisher range_pub_;
+  CountedPublisher range_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosRange, "libgazebo_ros_range.so");

@@ -43,7 +43,7 @@ public:
     cloud_pub_ = advertiseUnlessEmpty<sensor_msgs::PointCloud2>(nh, sensor, pluginTopic(d), 10);
   }
 
-  bool subscribed() const override { return cloud_pub_ && cloud_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return cloud_pub_.subscribed(); }
 
   void OnUpdate() override
   {
@@ -99,7 +99,7 @@ public:
       cloud_.row_step = uint32_t(bytes);
       cloud_.is_dense = true;
     }
-    outbox().publish(cloud_pub_, cloud_);
+    outbox().publish(cloud_pub_.publisher(), cloud_);
   }
 
 private:
@@ -123,7 +123,7 @@ private:
   bool organize_cloud_ = false;
   double min_range_ = 0, max_range_ = 0, min_intensity_ = 0, gaussian_noise_ = 0;
   GaussianKernel gaussian_kernel_;
-  ros::Publisher cloud_pub_;
+  CountedPublisher cloud_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(GazeboRosVelodyneLaser, "libgazebo_ros_velodyne_laser.so",

@@ -37,11 +37,11 @@ public:
     update_timer_.load(block, 10.0, stepSize());
     rng_.seed(sensor.noiseSeed());
     sensor_model_.reset(rng_);
-    range_pub_ = nodeHandle(sensor).advertise<sensor_msgs::Range>(
-        requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' topicName"), 1);
+    range_pub_ = CountedPublisher::advertise<sensor_msgs::Range>(
+        nodeHandle(sensor), requireValidRosName(pluginTopic(d), "sensor '" + sensor.name() + "' topicName"), 1);
   }
 
-  bool subscribed() const override { return range_pub_.getNumSubscribers() > 0; }
+  bool subscribed() const override { return range_pub_.subscribed(); }
 
   void OnUpdate() override
   {
@@ -63,7 +63,7 @@ public:
       shortest = float(std::max(double(range_.min_range),
                                 std::min(sensor_model_(double(shortest), dt, rng_), double(range_.max_range))));
     range_.range = shortest;
-    outbox().publish(range_pub_, range_);
+    outbox().publish(range_pub_.publisher(), range_);
   }
 
 private:
@@ -72,7 +72,7 @@ private:
   HectorSensorModel sensor_model_;
   HectorUpdateTimer update_timer_;
   std::mt19937 rng_;
-  ros::Publisher range_pub_;
+  CountedPublisher range_pub_;
 };
 
 GAZEBO_ROS_SENSOR_PLUGIN(HectorGazeboRosSonar, "libhector_gazebo_ros_sonar.so");

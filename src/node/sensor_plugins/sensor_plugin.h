@@ -19,6 +19,7 @@
 
 #include <ros/ros.h>
 
+#include "counted_publisher.h"
 #include "outbox.h"
 #include "bullet_plant/gaussian_kernel.h"
 #include "bullet_plant/plugin_names.h"
@@ -77,11 +78,11 @@ private:
 // The publisher of a plugin's point cloud topic, or none for an empty <topicName>: upstream
 // advertises nothing then (velodyne_simulator, gazebo_ros_block_laser).
 template <class Msg>
-ros::Publisher advertiseUnlessEmpty(ros::NodeHandle& nh, const Sensor& sensor, const std::string& topic, uint32_t queue)
+CountedPublisher advertiseUnlessEmpty(ros::NodeHandle& nh, const Sensor& sensor, const std::string& topic, uint32_t queue)
 {
   if (topic.empty())
-    return ros::Publisher();
-  return nh.advertise<Msg>(requireValidRosName(topic, "sensor '" + sensor.name() + "' topicName"), queue);
+    return CountedPublisher();
+  return CountedPublisher::advertise<Msg>(nh, requireValidRosName(topic, "sensor '" + sensor.name() + "' topicName"), queue);
 }
 
 using SensorPluginFactory = std::function<std::unique_ptr<SensorPlugin>()>;
