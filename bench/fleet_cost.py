@@ -8,19 +8,26 @@ namespace tb3_I, as multi_turtlebot3 launches do. A probe subscribes to every ro
 (counting the messages, without deserializing them: rospy.AnyMsg) and sends each a slow circle on
 its cmd_vel once a second (the diff drive keeps the last command).
 
-For each N: the real time factor from /clock and the plant process's user + system CPU from /proc
-over WINDOW s of wall time, beside the physics-only cost of the same world and robots stepped from
-Python without ROS (bullet_plant.World, PHYSICS_SECONDS simulated, the process's CPU time): what a
-robot costs the node around its physics and sensors is the difference. Each figure is the median of
-ROUNDS rounds, the two measured one after the other in each (the machine's load moves both).
+For each N, ROUNDS rounds, each two measurements one right after the other: the physics-only cost
+of the same world and robots stepped from Python without ROS (bullet_plant.World in a process of its
+own, PHYSICS_SECONDS simulated, the process's CPU time), while the node is paused; then, the node
+running again, the real time factor from /clock and the plant process's user + system CPU from /proc
+over WINDOW s of wall time. What a robot costs the node around its physics and sensors is the
+difference. The ratio is taken in each round and its median reported: on a shared machine the speed
+of a core moves by half between one minute and the next (the host's other tenants), both sides of a
+round see the same machine, and two measurements minutes apart do not. Both fleets have driven their
+circles for SETTLE s before the first round.
 
-FLEET_SIZES=1,10, FLEET_WINDOW=20 and FLEET_ROUNDS=3 in the environment change the sizes, the window
+FLEET_SIZES=1,10, FLEET_WINDOW=8 and FLEET_ROUNDS=5 in the environment change the sizes, the window
 and the rounds.
 """
+import json
 import math
 import os
 import platform
+import select
 import statistics
+import subprocess
 import sys
 import tempfile
 import time
@@ -28,12 +35,13 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'test', 'helpers'))
 from plant_helpers import DIFF_BOT  # noqa: E402  (the test fixture is the benchmark's robot)
 from ros_plant_bench import cpu_seconds, plant_pid  # noqa: E402
-from ros_harness import RosSystem, start_plant  # noqa: E402
+from ros_harness import PYTHON, Process, RosSystem, start_plant  # noqa: E402
 
 SIZES = [int(n) for n in os.environ.get('FLEET_SIZES', '1,10,25,50,100').split(',')]
-WINDOW = float(os.environ.get('FLEET_WINDOW', '20'))
-ROUNDS = int(os.environ.get('FLEET_ROUNDS', '3'))
+WINDOW = float(os.environ.get('FLEET_WINDOW', '8'))
+ROUNDS = int(os.environ.get('FLEET_ROUNDS', '5'))
 PHYSICS_SECONDS = 3.0
+SETTLE = 3.0  # s both fleets drive before the first round
 SPACING = 1.5  # m between robots on the grid
 LINEAR, ANGULAR = 0.1, 0.5  # the issue's slow circle (m/s, rad/s)
 LIDAR = 'lds_lfcd_sensor'  # diff_bot.urdf's lidar: its scan is subscribed (the IMU's is not: it idles)
@@ -100,10 +108,11 @@ for i, (x, y) in enumerate({places!r}):
 print(json.dumps(dict(failed=failed)))
 """
 
-# Subscribes to every robot's scan and odom (counted, not deserialized), drives each on a slow circle
-# (its twist sent once a second), waits `settle` s, then measures over `window` s of wall time.
+# Subscribes to every robot's scan and odom (counted, not deserialized) and drives each on a slow
+# circle (its twist sent once a second); then, for each line `window S` on its input, measures S s of
+# wall time and prints one JSON line.
 FLEET_PROBE = """
-import json, threading, time, rospy
+import json, sys, threading, time, rospy
 from geometry_msgs.msg import Twist
 from rosgraph_msgs.msg import Clock
 rospy.init_node('fleet_probe', anonymous=True)
@@ -123,18 +132,68 @@ def keep_driving():
             drive.publish(twist)
         time.sleep(1.0)
 threading.Thread(target=keep_driving, daemon=True).start()
-time.sleep({settle!r})
-start_wall, start_sim, start_counts = time.monotonic(), clock[-1], dict(counts)
-time.sleep({window!r})
-wall, sim = time.monotonic() - start_wall, clock[-1] - start_sim
-print(json.dumps(dict(rtf=sim / wall, sim=sim,
-                      rates={{k: (c - start_counts.get(k, 0)) / sim / {n} for k, c in counts.items()}})))
+print(json.dumps('driving'), flush=True)
+for line in sys.stdin:
+    window = float(line.split()[1])
+    start_wall, start_sim, start_counts = time.monotonic(), clock[-1], dict(counts)
+    time.sleep(window)
+    wall, sim = time.monotonic() - start_wall, clock[-1] - start_sim
+    print(json.dumps(dict(rtf=sim / wall, sim=sim,
+                          rates={{k: (c - start_counts.get(k, 0)) / sim / {n} for k, c in counts.items()}})),
+          flush=True)
+"""
+
+# The same world and fleet stepped from Python without ROS, each robot on the probe's circle; for each
+# line `step K` on its input, K steps and one JSON line: the process's CPU seconds for them. What
+# computes is what computes through ROS: the physics, the model plugins, and the sensors whose topics
+# the probe subscribes (the lidars; a sensor computes only while subscribed).
+PHYSICS_WORKER = """
+import json, sys
+sys.path.insert(0, {bench!r})
+import time
+import fleet_cost
+from tianracer_description import bullet_plant
+world = bullet_plant.World.from_file({world_path!r})
+world.echo = False
+urdf = open({urdf_path!r}).read()
+places, _ = fleet_cost.grid({n})
+robots = [world.spawn(urdf, 'tb3_%d' % i, [x, y, 0, 0, 0, 0], '/tb3_%d' % i) for i, (x, y) in enumerate(places)]
+for robot in robots:
+    robot.plugin_send('diff_drive', 'cmd_vel', (fleet_cost.LINEAR, fleet_cost.ANGULAR))
+    robot.enable_sensor(fleet_cost.LIDAR, True)
+world.step(int({settle!r} / 0.001))
+print(json.dumps('driving'), flush=True)
+for line in sys.stdin:
+    steps = int(line.split()[1])
+    start = time.process_time()
+    world.step(steps)
+    print(json.dumps(time.process_time() - start), flush=True)
 """
 
 
-def through_ros(n, world_path, urdf_path):
-    """The fleet of n through the node: real time factor, plant CPU (share of one core), the
-    probe's per-robot message rates."""
+def conversing(args, env, log_path):
+    """A process that answers each line it is given with one JSON line."""
+    return Process(args, env, log_path, stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+
+
+def answer(process, line, timeout):
+    """Sends `line` (None: none, waits for what it says unasked) and returns its JSON answer."""
+    if line is not None:
+        process.popen.stdin.write(line + '\n')
+        process.popen.stdin.flush()
+    if not select.select([process.popen.stdout], [], [], timeout)[0]:
+        raise RuntimeError('%s: no answer to %r within %g s; its log:\n%s' % (
+            process.popen.args, line, timeout, process.log()[-2000:]))
+    text = process.popen.stdout.readline()
+    if not text:
+        raise RuntimeError('%s ended; its log:\n%s' % (process.popen.args, process.log()[-2000:]))
+    return json.loads(text)
+
+
+def fleet_rounds(n, world_path, urdf_path):
+    """ROUNDS rounds of the fleet of n: in each, the physics-only CPU a simulated second (the node
+    paused meanwhile), then through the node over WINDOW s: the real time factor, the plant's CPU (share
+    of one core) and the probe's per-robot message rates."""
     places, _ = grid(n)
     with tempfile.TemporaryDirectory() as workdir:
         ros = RosSystem(workdir)
@@ -144,32 +203,31 @@ def through_ros(n, world_path, urdf_path):
             if spawned['failed']:
                 raise RuntimeError('spawning the fleet failed: %s' % spawned['failed'][:3])
             pid = plant_pid(plant.pid)
-            cpu_before, wall_before = cpu_seconds(pid), time.monotonic()
-            probe = ros.python(FLEET_PROBE.format(n=n, linear=LINEAR, angular=ANGULAR, settle=3.0, window=WINDOW),
-                               timeout=WINDOW + 120)
-            probe['cpu'] = (cpu_seconds(pid) - cpu_before) / (time.monotonic() - wall_before)
-            return probe
+            physics = conversing([PYTHON, '-c', PHYSICS_WORKER.format(
+                bench=os.path.dirname(os.path.abspath(__file__)), world_path=world_path, urdf_path=urdf_path, n=n,
+                settle=SETTLE)], ros.env, os.path.join(workdir, 'physics_only.log'))
+            ros.processes.append(physics)
+            probe = conversing([PYTHON, '-c', FLEET_PROBE.format(n=n, linear=LINEAR, angular=ANGULAR)], ros.env,
+                               os.path.join(workdir, 'fleet_probe.log'))
+            ros.processes.append(probe)
+            answer(physics, None, 60 + n)
+            answer(probe, None, 60)
+            time.sleep(SETTLE)
+            rounds = []
+            steps = int(PHYSICS_SECONDS / 0.001)
+            for _ in range(ROUNDS):
+                ros.service('/gazebo/pause_physics')
+                physics_cpu = answer(physics, 'step %d' % steps, 60 + 2 * n) / PHYSICS_SECONDS
+                ros.service('/gazebo/unpause_physics')
+                time.sleep(1.0)  # the pace and the probe's subscriptions running again
+                cpu_before, wall_before = cpu_seconds(pid), time.monotonic()
+                measured = answer(probe, 'window %g' % WINDOW, WINDOW + 60)
+                measured['cpu'] = (cpu_seconds(pid) - cpu_before) / (time.monotonic() - wall_before)
+                measured['physics'] = physics_cpu
+                rounds.append(measured)
+            return rounds
         finally:
             ros.close()
-
-
-def physics_only(n, world_path, urdf):
-    """The same world and robots stepped from Python, no ROS: the process's CPU a simulated second.
-    What computes is what computes through ROS: the physics, the model plugins, and the sensors whose
-    topics the probe subscribes (the lidars; a sensor computes only while subscribed)."""
-    from tianracer_description import bullet_plant
-    world = bullet_plant.World.from_file(world_path)
-    world.echo = False
-    places, _ = grid(n)
-    robots = [world.spawn(urdf, 'tb3_%d' % i, [x, y, 0, 0, 0, 0], '/tb3_%d' % i) for i, (x, y) in enumerate(places)]
-    for robot in robots:
-        robot.plugin_send('diff_drive', 'cmd_vel', (LINEAR, ANGULAR))
-        robot.enable_sensor(LIDAR)  # computing, as its subscribed scan makes it through ROS
-    world.step(200)  # settled, sensors started
-    steps = int(PHYSICS_SECONDS / 0.001)
-    start = time.process_time()
-    world.step(steps)
-    return (time.process_time() - start) / PHYSICS_SECONDS
 
 
 def main():
@@ -177,9 +235,9 @@ def main():
     cpu_model = next((line.split(':', 1)[1].strip() for line in open('/proc/cpuinfo') if line.startswith('model name')),
                      platform.processor())
     print('CPU: %s, %d cores; the fleet through ROS over %g s of wall time, physics only over %g s simulated; '
-          'medians of %d rounds' % (cpu_model, os.cpu_count(), WINDOW, PHYSICS_SECONDS, ROUNDS), flush=True)
-    print('%5s %7s %12s %12s %12s %9s %12s %12s' % ('N', 'RTF', 'plant CPU', 'per robot', 'physics only', 'ratio',
-                                                     'scan/robot', 'odom/robot'), flush=True)
+          'medians of %d rounds, the ratio taken in each' % (cpu_model, os.cpu_count(), WINDOW, PHYSICS_SECONDS, ROUNDS), flush=True)
+    print('%5s %7s %12s %12s %12s %9s %12s %12s %12s' % ('N', 'RTF', 'plant CPU', 'per robot', 'physics only', 'ratio',
+                                                          'ratio range', 'scan/robot', 'odom/robot'), flush=True)
     with tempfile.TemporaryDirectory() as workdir:
         urdf_path = os.path.join(workdir, 'fleet_robot.urdf')
         with open(urdf_path, 'w') as f:
@@ -188,17 +246,16 @@ def main():
             world_path = os.path.join(workdir, 'fleet_%d.world' % n)
             with open(world_path, 'w') as f:
                 f.write(arena(n))
-            physics, rounds = [], []
-            for _ in range(ROUNDS):
-                physics.append(physics_only(n, world_path, urdf))
-                rounds.append(through_ros(n, world_path, urdf_path))
+            rounds = fleet_rounds(n, world_path, urdf_path)
             rtf = statistics.median(r['rtf'] for r in rounds)
             cpu = statistics.median(r['cpu'] for r in rounds)
             # per robot: the plant's CPU a simulated second, over n
-            per_robot = statistics.median(r['cpu'] / r['rtf'] for r in rounds) / n
-            physics_per_robot = statistics.median(physics) / n
-            print('%5d %7.3f %11.1f%% %11.2f%% %11.2f%% %9.2f %12.2f %12.2f' % (
-                n, rtf, 100 * cpu, 100 * per_robot, 100 * physics_per_robot, per_robot / physics_per_robot,
+            per_robot = [r['cpu'] / r['rtf'] / n for r in rounds]
+            physics_per_robot = [r['physics'] / n for r in rounds]
+            ratios = sorted(node / physics for node, physics in zip(per_robot, physics_per_robot))
+            print('%5d %7.3f %11.1f%% %11.2f%% %11.2f%% %9.2f %12s %12.2f %12.2f' % (
+                n, rtf, 100 * cpu, 100 * statistics.median(per_robot), 100 * statistics.median(physics_per_robot),
+                statistics.median(ratios), '%.2f-%.2f' % (ratios[0], ratios[-1]),
                 statistics.median(r['rates'].get('scan', 0.0) for r in rounds),
                 statistics.median(r['rates'].get('odom', 0.0) for r in rounds)), flush=True)
     print('target (issue 56): 50 robots at RTF >= 0.99 with the node\'s cost a robot within 1.5x the '
