@@ -11,8 +11,8 @@ namespace bullet_plant
 {
 OdometryPublisher::OdometryPublisher(Robot& robot, ros::NodeHandle& nh, Outbox& outbox) : robot_(robot), outbox_(outbox)
 {
-  odom_pub_ = nh.advertise<nav_msgs::Odometry>("odom", 10);
-  tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", 100);
+  odom_pub_ = CountedPublisher::advertise<nav_msgs::Odometry>(nh, "odom", 10);
+  tf_pub_ = CountedPublisher::advertise<tf2_msgs::TFMessage>(nh, "/tf", 100);
 }
 
 void OdometryPublisher::publish(int64_t time_ns, bool tf)
@@ -23,6 +23,9 @@ void OdometryPublisher::publish(int64_t time_ns, bool tf)
 
 void OdometryPublisher::publishNow(int64_t time_ns, bool tf)
 {
+  tf = tf && tf_pub_.subscribed();
+  if (!tf && !odom_pub_.subscribed())
+    return;
   urdf::Pose pose = robot_.basePose();
   Twist twist = robot_.baseTwist();
   // nav_msgs/Odometry's twist is in the child frame.
@@ -34,9 +37,10 @@ void OdometryPublisher::publishNow(int64_t time_ns, bool tf)
   tf2_msgs::TFMessage transform;
   if (tf)
     transform.transforms.push_back(odometryTransform(odom));
-  outbox_.publish(odom_pub_, std::move(odom));
+  if (odom_pub_.subscribed())
+    outbox_.publish(odom_pub_.publisher(), std::move(odom));
   if (tf)
-    outbox_.publish(tf_pub_, std::move(transform));
+    outbox_.publish(tf_pub_.publisher(), std::move(transform));
 }
 
 }  // namespace bullet_plant

@@ -1,5 +1,6 @@
 // Ground-truth odometry of one robot: nav_msgs/Odometry on `odom` and the odom -> root link
-// transform on /tf, every 20 ms of simulated time. Runs on the simulation thread.
+// transform on /tf, every 20 ms of simulated time; neither built while nobody subscribes to it.
+// Runs on the simulation thread.
 #pragma once
 
 #include <cstdint>
@@ -7,6 +8,7 @@
 #include <ros/ros.h>
 
 #include "bullet_plant/rate_gate.h"
+#include "counted_publisher.h"
 
 namespace bullet_plant
 {
@@ -26,7 +28,7 @@ private:
 
   Robot& robot_;
   Outbox& outbox_;
-  ros::Publisher odom_pub_, tf_pub_;
+  CountedPublisher odom_pub_, tf_pub_;
   RateGate gate_{periodNsOfRate(50.0)};
 };
 
