@@ -1,5 +1,6 @@
 """The tutorial end to end on the plant: tianracer.launch, the rostopic pub line, the dead man's
 switch of cmdvel2gazebo.py, and teleop.py in a pseudo-terminal. Each test has its own ROS master."""
+import fcntl
 import math
 import os
 import pty
@@ -85,8 +86,12 @@ def test_teleop_in_a_terminal(ros):
     sane = termios.tcgetattr(slave)
     probe = subprocess.Popen([PYTHON, os.path.join(TEST_DIR, 'tutorial', 'probes', 'teleop_commands.py'), '30'],
                              env=ros.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+    # The pty is teleop.py's controlling terminal, as a user's terminal is: a Ctrl-C that comes while
+    # teleop.py is between two polls (its terminal cooked again) is SIGINT then, as for the user.
+    # Without one that Ctrl-C went nowhere and teleop.py ran on (a CI run at 6efa13f).
     teleop = subprocess.Popen(['rosrun', 'tianracer_description', 'teleop.py'], env=ros.env,
-                              stdin=slave, stdout=slave, stderr=slave, start_new_session=True)
+                              stdin=slave, stdout=slave, stderr=slave, start_new_session=True,
+                              preexec_fn=lambda: fcntl.ioctl(0, termios.TIOCSCTTY, 0))
     try:
         # Keys count from when teleop polls them: wait for its banner's speed line (rospy's start
         # took over 3 s in CI on a loaded 2-core VM, and 'i' then ramped for half its time).
