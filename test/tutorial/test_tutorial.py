@@ -88,7 +88,8 @@ def test_teleop_in_a_terminal(ros):
                              env=ros.env, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
     # The pty is teleop.py's controlling terminal, as a user's terminal is: a Ctrl-C that comes while
     # teleop.py is between two polls (its terminal cooked again) is SIGINT then, as for the user.
-    # Without one that Ctrl-C went nowhere and teleop.py ran on (a CI run at 6efa13f).
+    # Without one, teleop.py once ran on 30 s past the Ctrl-C (CI at 6efa13f); that this was the
+    # cause is not confirmed: a Ctrl-C written into the cooked window by hand still stopped it.
     teleop = subprocess.Popen(['rosrun', 'tianracer_description', 'teleop.py'], env=ros.env,
                               stdin=slave, stdout=slave, stderr=slave, start_new_session=True,
                               preexec_fn=lambda: fcntl.ioctl(0, termios.TIOCSCTTY, 0))
